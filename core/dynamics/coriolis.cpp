@@ -1,0 +1,46 @@
+#include "core/dynamics/coriolis.hpp"
+
+#include <algorithm>
+
+namespace ll {
+
+void computeMassMatrixDerivatives(const RobotModel&, RobotData& data) {
+    const int n = data.n;
+    for (int k = 0; k < n; ++k)
+        for (int i = 0; i < n; ++i) data.crossS[k * n + i] = crossMotion(data.S[k], data.S[i]);
+    for (int b = 0; b < n; ++b)
+        for (int j = 0; j < n; ++j) data.IcS[b * n + j] = data.Ic[b] * data.S[j];
+
+    for (int k = 0; k < n; ++k) {
+        Eigen::MatrixXd& dB = data.dB_dq[k];
+        for (int j = 0; j < n; ++j) {
+            for (int i = 0; i <= j; ++i) {
+                const int a = j;  // max(i, j)
+                const int b = std::max(a, k);
+                const Vector6d& X_ki = data.crossS[k * n + i];
+                const Vector6d& X_kj = data.crossS[k * n + j];
+                // Moving the axes S_i, S_j ...
+                double value = 0.0;
+                if (k < i) value += X_ki.dot(data.IcS[a * n + j]);
+                if (k < j) value += data.IcS[a * n + i].dot(X_kj);
+                // ... and the links b..n that joint k carries.
+                value -= X_ki.dot(data.IcS[b * n + j]) + data.IcS[b * n + i].dot(X_kj);
+                dB(i, j) = value;
+                dB(j, i) = value;
+            }
+        }
+    }
+}
+
+void computeCoriolisMatrix(const RobotModel& model, RobotData& data, const Eigen::VectorXd& qd) {
+    computeMassMatrixDerivatives(model, data);
+    const int n = data.n;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            double c = 0.0;
+            for (int k = 0; k < n; ++k) c += christoffel(data, i, j, k) * qd[k];
+            data.C(i, j) = c;
+        }
+}
+
+}  // namespace ll

@@ -1,0 +1,21 @@
+#include "core/dynamics/energy.hpp"
+
+namespace ll {
+
+double kineticEnergy(const RobotData& data, const Eigen::VectorXd& qd) {
+    return 0.5 * qd.dot(data.B.selfadjointView<Eigen::Upper>() * qd);
+}
+
+double potentialEnergy(const RobotModel& model, const RobotData& data, const Effects& effects,
+                       const Eigen::VectorXd& q) {
+    double E = 0.0;
+    if (effects.gravity)
+        for (int i = 0; i < data.n; ++i) E -= model.joints[i].link.mass * effects.gravity->dot(data.p_ci[i]);
+    for (const JointSpring& spring : effects.springs) {
+        const double stretch = q[spring.joint] - spring.rest;
+        E += 0.5 * spring.stiffness * stretch * stretch;
+    }
+    return E;
+}
+
+}  // namespace ll

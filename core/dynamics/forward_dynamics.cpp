@@ -1,0 +1,48 @@
+#include "core/dynamics/forward_dynamics.hpp"
+
+#include <cmath>
+
+#include "core/dynamics/inverse_dynamics.hpp"
+#include "core/dynamics/mass_matrix.hpp"
+#include "core/kinematics/forward_kinematics.hpp"
+
+namespace ll {
+
+int firstSingularJoint(const Eigen::MatrixXd& B, double relTol) {
+    const int n = static_cast<int>(B.rows());
+    const double scale = B.diagonal().cwiseAbs().maxCoeff();
+    Eigen::MatrixXd L = Eigen::MatrixXd::Zero(n, n);
+    Eigen::VectorXd D = Eigen::VectorXd::Zero(n);
+    for (int j = 0; j < n; ++j) {
+        double dj = B(j, j);
+        for (int k = 0; k < j; ++k) dj -= L(j, k) * L(j, k) * D[k];
+        if (!(dj > relTol * scale)) return j;
+        D[j] = dj;
+        for (int i = j + 1; i < n; ++i) {
+            double lij = B(i, j);
+            for (int k = 0; k < j; ++k) lij -= L(i, k) * L(j, k) * D[k];
+            L(i, j) = lij / dj;
+        }
+    }
+    return -1;
+}
+
+const Eigen::VectorXd& forwardDynamics(const RobotModel& model, RobotData& data, const Effects& effects,
+                                       const Eigen::VectorXd& q, const Eigen::VectorXd& qd,
+                                       const Eigen::VectorXd& Q) {
+    forwardKinematics(model, data, q);
+    computeMassMatrix(model, data);
+    data.qdd.setZero();
+    data.h = rnea(model, data, effects, q, qd, data.qdd);  // C q̇ + g
+    data.rhs = Q - data.h;
+    data.B_llt.compute(data.B);
+    if (data.B_llt.info() != Eigen::Success) {
+        const int joint = firstSingularJoint(data.B);
+        throw SingularMassMatrix(joint, "mass matrix B(q) is singular: joint " + std::to_string(joint + 1) +
+                                            " moves no mass or inertia that earlier joints do not already move");
+    }
+    data.qdd = data.B_llt.solve(data.rhs);
+    return data.qdd;
+}
+
+}  // namespace ll

@@ -1,0 +1,35 @@
+#include "core/dynamics/mass_matrix.hpp"
+
+#include "core/kinematics/jacobians.hpp"
+
+namespace ll {
+
+void computeMassMatrix(const RobotModel&, RobotData& data) {
+    const int n = data.n;
+    // Composite inertias: in one frame they are plain sums, tip to base.
+    for (int i = n - 1; i >= 0; --i) {
+        data.Ic[i] = data.I[i];
+        if (i + 1 < n) data.Ic[i] += data.Ic[i + 1];
+    }
+    for (int j = 0; j < n; ++j) {
+        const Vector6d F = data.Ic[j] * data.S[j];  // force to accelerate links j..n with joint j
+        for (int i = 0; i <= j; ++i) {
+            data.B(i, j) = data.S[i].dot(F);
+            data.B(j, i) = data.B(i, j);
+        }
+    }
+}
+
+Eigen::MatrixXd massMatrixFromJacobians(const RobotModel& model, const RobotData& data) {
+    Eigen::MatrixXd B = Eigen::MatrixXd::Zero(data.n, data.n);
+    Jacobian J;
+    for (int i = 0; i < data.n; ++i) {
+        comJacobian(data, i, J);
+        const auto Jv = J.topRows<3>();
+        const auto Jw = J.bottomRows<3>();
+        B += model.joints[i].link.mass * Jv.transpose() * Jv + Jw.transpose() * data.Ic_0i[i] * Jw;
+    }
+    return B;
+}
+
+}  // namespace ll

@@ -1,0 +1,48 @@
+#include "core/kinematics/forward_kinematics.hpp"
+
+#include <cassert>
+#include <cmath>
+
+#include "core/kinematics/dh_transform.hpp"
+
+namespace ll {
+
+Eigen::Isometry3d linkTransform(const RobotModel& model, int i, double q_i) {
+    const DhRow& row = model.joints[i].dh;
+    const bool revolute = row.type == JointType::Revolute;
+    const double theta = row.theta + (revolute ? q_i : 0.0);
+    const double d = row.d + (revolute ? 0.0 : q_i);
+    Eigen::Isometry3d A;
+    dhTransform(model.convention, row.a, d, std::cos(theta), std::sin(theta), std::cos(row.alpha),
+                std::sin(row.alpha), A.matrix());
+    return A;
+}
+
+void forwardKinematics(const RobotModel& model, RobotData& data, const Eigen::VectorXd& q) {
+    assert(q.size() == data.n);
+    const bool standard = model.convention == DhConvention::Standard;
+    data.T_0i[0] = model.base;
+    for (int i = 0; i < data.n; ++i) {
+        const Joint& joint = model.joints[i];
+        Eigen::Isometry3d& T = data.T_0i[i + 1];
+        T = data.T_0i[i] * linkTransform(model, i, q[i]);
+
+        // Joint i moves about/along z_{i-1} (standard) or z_i (modified); neither
+        // moves under q_i itself, which the Christoffel derivatives rely on.
+        const Eigen::Isometry3d& jointFrame = standard ? data.T_0i[i] : T;
+        data.axis[i] = jointFrame.linear().col(2);
+        data.axisPoint[i] = jointFrame.translation();
+        if (joint.dh.type == JointType::Revolute) {
+            data.S[i] << data.axis[i], data.axisPoint[i].cross(data.axis[i]);
+        } else {
+            data.S[i] << Eigen::Vector3d::Zero(), data.axis[i];
+        }
+
+        const Eigen::Matrix3d& R = T.linear();
+        data.p_ci[i] = T * joint.link.com;
+        data.Ic_0i[i] = R * joint.link.inertia * R.transpose();
+        data.I[i] = spatialInertiaAtOrigin(joint.link.mass, data.p_ci[i], data.Ic_0i[i]);
+    }
+}
+
+}  // namespace ll

@@ -1,0 +1,30 @@
+#include "core/model/robot_data.hpp"
+
+namespace ll {
+
+RobotData::RobotData(const RobotModel& model)
+    : n(model.dof()),
+      T_0i(n + 1, Eigen::Isometry3d::Identity()),
+      p_ci(n, Eigen::Vector3d::Zero()),
+      Ic_0i(n, Eigen::Matrix3d::Zero()),
+      axis(n, Eigen::Vector3d::UnitZ()),
+      axisPoint(n, Eigen::Vector3d::Zero()),
+      S(n, Vector6d::Zero()),
+      I(n),
+      Ic(n),
+      B(Eigen::MatrixXd::Zero(n, n)),
+      dB_dq(n, Eigen::MatrixXd::Zero(n, n)),
+      crossS(n * n, Vector6d::Zero()),
+      IcS(n * n, Vector6d::Zero()),
+      C(Eigen::MatrixXd::Zero(n, n)),
+      g(Eigen::VectorXd::Zero(n)),
+      V(n, Vector6d::Zero()),
+      A(n, Vector6d::Zero()),
+      F(n, Vector6d::Zero()),
+      tau(Eigen::VectorXd::Zero(n)),
+      h(Eigen::VectorXd::Zero(n)),
+      rhs(Eigen::VectorXd::Zero(n)),
+      qdd(Eigen::VectorXd::Zero(n)),
+      B_llt(n) {}
+
+}  // namespace ll

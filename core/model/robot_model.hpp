@@ -1,0 +1,30 @@
+#pragma once
+// The immutable description of a serial manipulator: DH table, link inertials,
+// base placement. Algorithms never write into it; they write into RobotData.
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "core/model/dh_row.hpp"
+#include "core/model/link_inertia.hpp"
+
+namespace ll {
+
+struct Joint {
+    DhRow dh;
+    LinkInertia link;  // the link this joint moves (link i for joint i)
+};
+
+struct RobotModel {
+    std::string name;
+    DhConvention convention = DhConvention::Standard;
+    // Pose of DH frame 0 in the world frame in which gravity is given. Identity
+    // (the default) makes world = base frame, as in the course notes.
+    Eigen::Isometry3d base = Eigen::Isometry3d::Identity();
+    std::vector<Joint> joints;
+
+    int dof() const { return static_cast<int>(joints.size()); }
+};
+
+}  // namespace ll

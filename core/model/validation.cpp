@@ -1,0 +1,181 @@
+#include "core/model/validation.hpp"
+
+#include <cmath>
+#include <random>
+#include <sstream>
+
+#include <Eigen/Eigenvalues>
+
+#include "core/dynamics/forward_dynamics.hpp"
+#include "core/dynamics/mass_matrix.hpp"
+#include "core/kinematics/forward_kinematics.hpp"
+
+namespace ll {
+namespace {
+
+std::string fmt(double v) {
+    std::ostringstream s;
+    s.precision(6);
+    s << v;
+    return s.str();
+}
+
+void error(std::vector<Diagnostic>& out, std::string field, std::string message) {
+    out.push_back({Severity::Error, std::move(field), std::move(message)});
+}
+
+void warning(std::vector<Diagnostic>& out, std::string field, std::string message) {
+    out.push_back({Severity::Warning, std::move(field), std::move(message)});
+}
+
+void requireFinite(std::vector<Diagnostic>& out, const std::string& field, double value) {
+    if (!std::isfinite(value)) error(out, field, "value is not finite (" + fmt(value) + ")");
+}
+
+void validateInertia(std::vector<Diagnostic>& out, int j, const Eigen::Matrix3d& I) {
+    const std::string field = jointField(j, "inertia");
+    const double scale = std::max(I.cwiseAbs().maxCoeff(), 1e-300);
+    if ((I - I.transpose()).cwiseAbs().maxCoeff() > 1e-12 * scale) {
+        error(out, field, "inertia tensor is not symmetric");
+        return;
+    }
+    const Eigen::Vector3d moments = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(I).eigenvalues();
+    if (moments.minCoeff() < -1e-12 * scale) {
+        error(out, field,
+              "inertia tensor is not positive semi-definite: principal moments " + fmt(moments[0]) + ", " +
+                  fmt(moments[1]) + ", " + fmt(moments[2]) +
+                  " (off-diagonal entries are the tensor's own, i.e. minus the products of inertia)");
+        return;
+    }
+    const double tol = 1e-9 * scale;
+    const double a = moments[0], b = moments[1], c = moments[2];
+    if (a + b < c - tol)
+        warning(out, field,
+                "principal moments " + fmt(a) + ", " + fmt(b) + ", " + fmt(c) + " violate the triangle inequality (" +
+                    fmt(a) + " + " + fmt(b) + " < " + fmt(c) +
+                    "): no physical body has this inertia; the model is simulated as given");
+}
+
+// B(q) must be positive definite wherever the robot may go. A structurally massless
+// joint shows at (almost) every configuration, so test the start and a few random ones.
+void validateMassMatrix(std::vector<Diagnostic>& out, const RobotModel& model, const Eigen::VectorXd& q0) {
+    RobotData data(model);
+    std::mt19937 rng(12345);
+    std::uniform_real_distribution<double> angle(-3.0, 3.0);
+    std::vector<int> singularCount(model.dof(), 0);
+    const int trials = 4;
+    for (int trial = 0; trial < trials; ++trial) {
+        Eigen::VectorXd q = q0;
+        if (trial > 0)
+            for (int i = 0; i < q.size(); ++i) q[i] = angle(rng) * (model.joints[i].dh.type == JointType::Revolute ? 1.0 : 0.1);
+        forwardKinematics(model, data, q);
+        computeMassMatrix(model, data);
+        const int joint = firstSingularJoint(data.B);
+        if (joint >= 0) ++singularCount[joint];
+    }
+    for (int j = 0; j < model.dof(); ++j)
+        if (singularCount[j] == trials)
+            error(out, jointField(j, ""),
+                  "joint " + std::to_string(j + 1) +
+                      " moves no mass or inertia that the joints before it do not already move, so the mass "
+                      "matrix B(q) is singular; give link " + std::to_string(j + 1) +
+                      " (or a link after it) mass off the joint axis or inertia about it");
+}
+
+}  // namespace
+
+std::vector<Diagnostic> validateRobot(const RobotModel& model) {
+    std::vector<Diagnostic> out;
+    if (model.joints.empty()) error(out, "robot.joints", "a robot needs at least one joint");
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 4; ++c) requireFinite(out, "robot.base", model.base.matrix()(r, c));
+    for (int j = 0; j < model.dof(); ++j) {
+        const Joint& joint = model.joints[j];
+        requireFinite(out, jointField(j, "a"), joint.dh.a);
+        requireFinite(out, jointField(j, "alpha"), joint.dh.alpha);
+        requireFinite(out, jointField(j, "d"), joint.dh.d);
+        requireFinite(out, jointField(j, "theta"), joint.dh.theta);
+        requireFinite(out, jointField(j, "mass"), joint.link.mass);
+        for (int k = 0; k < 3; ++k)
+            requireFinite(out, jointField(j, "com[" + std::to_string(k + 1) + "]"), joint.link.com[k]);
+        const bool inertiaFinite = joint.link.inertia.allFinite();
+        if (!inertiaFinite) error(out, jointField(j, "inertia"), "inertia tensor has a non-finite entry");
+        if (std::isfinite(joint.link.mass) && joint.link.mass < 0)
+            error(out, jointField(j, "mass"), "mass is negative (" + fmt(joint.link.mass) + " kg); it must be >= 0");
+        if (inertiaFinite) validateInertia(out, j, joint.link.inertia);
+    }
+    if (!hasErrors(out) && model.dof() > 0) validateMassMatrix(out, model, Eigen::VectorXd::Zero(model.dof()));
+    return out;
+}
+
+std::vector<Diagnostic> validateScene(const Scene& scene) {
+    std::vector<Diagnostic> out = validateRobot(scene.robot);
+    const int n = scene.robot.dof();
+    const auto checkJoint = [&](const std::string& field, int joint) {
+        if (joint < 0 || joint >= n)
+            error(out, field + ".joint",
+                  "joint " + std::to_string(joint + 1) + " does not exist (the robot has joints 1.." +
+                      std::to_string(n) + ")");
+    };
+    const auto checkNonNegative = [&](const std::string& field, double value) {
+        requireFinite(out, field, value);
+        if (value < 0) error(out, field, "must be >= 0, got " + fmt(value));
+    };
+    const Effects& e = scene.effects;
+    if (e.gravity)
+        for (int k = 0; k < 3; ++k) requireFinite(out, "effects.gravity[" + std::to_string(k + 1) + "]", (*e.gravity)[k]);
+    for (size_t s = 0; s < e.springs.size(); ++s) {
+        const std::string f = "effects.springs[" + std::to_string(s + 1) + "]";
+        checkJoint(f, e.springs[s].joint);
+        checkNonNegative(f + ".stiffness", e.springs[s].stiffness);
+        requireFinite(out, f + ".rest", e.springs[s].rest);
+    }
+    for (size_t s = 0; s < e.viscous.size(); ++s) {
+        const std::string f = "effects.viscous[" + std::to_string(s + 1) + "]";
+        checkJoint(f, e.viscous[s].joint);
+        checkNonNegative(f + ".coefficient", e.viscous[s].coefficient);
+    }
+    for (size_t s = 0; s < e.coulomb.size(); ++s) {
+        const std::string f = "effects.coulomb[" + std::to_string(s + 1) + "]";
+        checkJoint(f, e.coulomb[s].joint);
+        checkNonNegative(f + ".force", e.coulomb[s].force);
+        requireFinite(out, f + ".smoothing", e.coulomb[s].smoothing);
+        if (!(e.coulomb[s].smoothing > 0)) error(out, f + ".smoothing", "must be > 0, got " + fmt(e.coulomb[s].smoothing));
+    }
+    for (size_t s = 0; s < e.torques.size(); ++s) {
+        const std::string f = "effects.torques[" + std::to_string(s + 1) + "]";
+        const JointTorque& t = e.torques[s];
+        checkJoint(f, t.joint);
+        for (double v : {t.value, t.at, t.amplitude, t.frequency, t.phase, t.slope, t.start}) requireFinite(out, f, v);
+    }
+    const auto checkState = [&](const std::string& field, const Eigen::VectorXd& v) {
+        if (v.size() != n) {
+            error(out, field, "has " + std::to_string(v.size()) + " entries, the robot has " + std::to_string(n) + " joints");
+            return;
+        }
+        for (int i = 0; i < n; ++i) requireFinite(out, field + "[" + std::to_string(i + 1) + "]", v[i]);
+    };
+    checkState("initial.q", scene.initial.q);
+    checkState("initial.qd", scene.initial.qd);
+    const SimulationSettings& sim = scene.simulation;
+    const auto checkPositive = [&](const std::string& field, double value) {
+        if (!(std::isfinite(value) && value > 0)) error(out, field, "must be a finite number > 0, got " + fmt(value));
+    };
+    checkPositive("simulation.duration", sim.duration);
+    checkPositive("simulation.abs_tol", sim.absTol);
+    checkPositive("simulation.rel_tol", sim.relTol);
+    checkPositive("simulation.dt", sim.dt);
+    checkPositive("simulation.output_rate", sim.outputRate);
+    return out;
+}
+
+std::vector<Diagnostic> requireValidScene(const Scene& scene) {
+    std::vector<Diagnostic> diagnostics = validateScene(scene);
+    if (hasErrors(diagnostics)) throw InputError(diagnostics);
+    std::vector<Diagnostic> warnings;
+    for (const Diagnostic& d : diagnostics)
+        if (d.severity == Severity::Warning) warnings.push_back(d);
+    return warnings;
+}
+
+}  // namespace ll

@@ -1,0 +1,65 @@
+// B(q): textbook closed form (planar 2R), CRBA against the independent Jacobian sum,
+// and symmetric positive definiteness.
+#include <QtTest>
+
+#include <Eigen/Eigenvalues>
+
+#include "core/dynamics/mass_matrix.hpp"
+#include "core/kinematics/forward_kinematics.hpp"
+#include "test_support.hpp"
+
+using namespace ll;
+
+class TestMassMatrix : public QObject {
+    Q_OBJECT
+private slots:
+    // Siciliano et al. (7.82): b11 = I1 + m1ℓ1² + I2 + m2(a1² + ℓ2² + 2a1ℓ2c2), ...
+    void planar2RClosedForm() {
+        const test::Planar2R p;
+        const RobotModel robot = p.model();
+        RobotData data(robot);
+        std::mt19937 rng(1);
+        for (int trial = 0; trial < 100; ++trial) {
+            const Eigen::VectorXd q = test::randomVector(rng, 2, 3.14);
+            forwardKinematics(robot, data, q);
+            computeMassMatrix(robot, data);
+            const double c2 = std::cos(q[1]);
+            Eigen::Matrix2d B;
+            B(0, 0) = p.I1 + p.m1 * p.l1 * p.l1 + p.I2 + p.m2 * (p.a1 * p.a1 + p.l2 * p.l2 + 2 * p.a1 * p.l2 * c2);
+            B(0, 1) = B(1, 0) = p.I2 + p.m2 * (p.l2 * p.l2 + p.a1 * p.l2 * c2);
+            B(1, 1) = p.I2 + p.m2 * p.l2 * p.l2;
+            QVERIFY2(test::scaledError(data.B, B) < 1e-13, qPrintable(QString::number(test::scaledError(data.B, B))));
+        }
+    }
+
+    void crbaMatchesJacobianSum() {
+        for (DhConvention convention : {DhConvention::Standard, DhConvention::Modified}) {
+            std::mt19937 rng(5);
+            for (int n : {1, 2, 4, 7}) {
+                const RobotModel robot = test::randomRobot(rng, n, convention);
+                RobotData data(robot);
+                for (int trial = 0; trial < 30; ++trial) {
+                    forwardKinematics(robot, data, test::randomVector(rng, n, 3.0));
+                    computeMassMatrix(robot, data);
+                    const Eigen::MatrixXd B = massMatrixFromJacobians(robot, data);
+                    QVERIFY2(test::scaledError(data.B, B) < 1e-12, qPrintable(QString::number(test::scaledError(data.B, B))));
+                }
+            }
+        }
+    }
+
+    void symmetricPositiveDefinite() {
+        std::mt19937 rng(9);
+        const RobotModel robot = test::randomRobot(rng, 7, DhConvention::Standard);
+        RobotData data(robot);
+        for (int trial = 0; trial < 100; ++trial) {
+            forwardKinematics(robot, data, test::randomVector(rng, 7, 3.0));
+            computeMassMatrix(robot, data);
+            QCOMPARE((data.B - data.B.transpose()).norm(), 0.0);
+            QVERIFY(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(data.B).eigenvalues().minCoeff() > 0);
+        }
+    }
+};
+
+QTEST_APPLESS_MAIN(TestMassMatrix)
+#include "test_mass_matrix.moc"
