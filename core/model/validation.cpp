@@ -9,6 +9,7 @@
 #include "core/dynamics/forward_dynamics.hpp"
 #include "core/dynamics/mass_matrix.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
+#include "core/simulation/integrators.hpp"
 
 namespace ll {
 namespace {
@@ -161,6 +162,8 @@ std::vector<Diagnostic> validateScene(const Scene& scene) {
     const auto checkPositive = [&](const std::string& field, double value) {
         if (!(std::isfinite(value) && value > 0)) error(out, field, "must be a finite number > 0, got " + fmt(value));
     };
+    if (!findIntegrator(sim.integrator))
+        error(out, "simulation.integrator", "unknown integrator '" + sim.integrator + "' (known: " + integratorNames() + ")");
     checkPositive("simulation.duration", sim.duration);
     checkPositive("simulation.abs_tol", sim.absTol);
     checkPositive("simulation.rel_tol", sim.relTol);

@@ -1,0 +1,20 @@
+#pragma once
+// The generalized forces Q of Lagrange–d'Alembert: only the non-conservative effects
+// the scene declares (viscous and Coulomb friction, external torques). Gravity and
+// springs are conservative and live in E_pot; putting them here would model them twice.
+#include <Eigen/Core>
+
+#include "core/model/effects.hpp"
+
+namespace ll {
+
+// Q(t, q̇) into Q (size n, overwritten). Joints with no declared effect get 0.
+void computeGeneralizedForces(const Effects& effects, double t, const Eigen::VectorXd& qd, Eigen::VectorXd& Q);
+
+// Only the external torques τ(t) part of Q.
+void computeExternalTorques(const Effects& effects, double t, Eigen::VectorXd& tau);
+
+// Only the friction part of Q (viscous + regularised Coulomb); always Q_fᵀ q̇ <= 0.
+void addFrictionForces(const Effects& effects, const Eigen::VectorXd& qd, Eigen::VectorXd& Q);
+
+}  // namespace ll

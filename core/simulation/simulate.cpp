@@ -1,0 +1,121 @@
+#include "core/simulation/simulate.hpp"
+
+#include <cmath>
+#include <ctime>
+#include <stdexcept>
+
+#include "core/dynamics/energy.hpp"
+#include "core/dynamics/mass_matrix.hpp"
+#include "core/kinematics/forward_kinematics.hpp"
+#include "core/simulation/integrators.hpp"
+#include "core/simulation/robot_ode.hpp"
+
+namespace ll {
+
+double threadCpuSeconds() {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+std::vector<double> outputTimes(double duration, double rate) {
+    const long intervals = std::max(1L, static_cast<long>(std::ceil(duration * rate - 1e-9)));
+    std::vector<double> times(intervals + 1);
+    for (long k = 0; k < intervals; ++k) times[k] = static_cast<double>(k) / rate;
+    times[intervals] = duration;
+    return times;
+}
+
+namespace {
+
+// Records one sample: state, energies, work of Q.
+class Recorder {
+public:
+    Recorder(const Scene& scene, Trajectory& trajectory) : scene_(scene), traj_(trajectory), data_(scene.robot) {
+        traj_.n = scene.robot.dof();
+    }
+
+    void record(double t, const OdeState& x) {
+        const int n = traj_.n;
+        Eigen::VectorXd q(n), qd(n);
+        for (int i = 0; i < n; ++i) {
+            q[i] = x[i];
+            qd[i] = x[n + i];
+        }
+        forwardKinematics(scene_.robot, data_, q);
+        computeMassMatrix(scene_.robot, data_);
+        const double Ekin = kineticEnergy(data_, qd);
+        const double Epot = potentialEnergy(scene_.robot, data_, scene_.effects, q);
+        traj_.t.push_back(t);
+        traj_.q.push_back(q);
+        traj_.qd.push_back(qd);
+        traj_.Ekin.push_back(Ekin);
+        traj_.Epot.push_back(Epot);
+        traj_.E.push_back(Ekin + Epot);
+        traj_.work.push_back(x[2 * n]);
+    }
+
+private:
+    const Scene& scene_;
+    Trajectory& traj_;
+    RobotData data_;
+};
+
+void energyBalance(const Trajectory& traj, SimulationStats& stats) {
+    if (traj.size() == 0) return;
+    double scale = std::abs(traj.E[0]), maxError = 0.0;
+    for (size_t k = 0; k < traj.size(); ++k) {
+        scale = std::max({scale, traj.Ekin[k], std::abs(traj.Epot[k] - traj.Epot[0])});
+        maxError = std::max(maxError, std::abs(traj.E[k] - traj.E[0] - traj.work[k]));
+    }
+    stats.maxEnergyError = maxError;
+    stats.maxRelEnergyError = scale > 0 ? maxError / scale : 0.0;
+}
+
+}  // namespace
+
+SimulationResult simulate(const Scene& scene, const SimulationSettings& settings, const ProgressCallback& progress,
+                          const std::atomic<bool>* cancel) {
+    IntegrationSettings integration;
+    integration.integrator = settings.integrator;
+    integration.absTol = settings.absTol;
+    integration.relTol = settings.relTol;
+    integration.dt = settings.dt;
+    if (!findIntegrator(integration.integrator))
+        throw std::invalid_argument("unknown integrator '" + settings.integrator + "' (known: " + integratorNames() + ")");
+
+    SimulationResult result;
+    result.stats.integrator = settings.integrator;
+    RobotOde ode(scene.robot, scene.effects);
+    OdeState x = ode.initialState(scene.initial.q, scene.initial.qd);
+    const std::vector<double> times = outputTimes(settings.duration, settings.outputRate);
+    Recorder recorder(scene, result.trajectory);
+
+    const auto observe = [&](double t, const OdeState& state) {
+        recorder.record(t, state);
+        if (progress) progress(t / settings.duration);
+        if (cancel && cancel->load(std::memory_order_relaxed)) {
+            result.status = SimulationStatus::Cancelled;
+            result.message = "cancelled at t = " + std::to_string(t) + " s";
+            return false;
+        }
+        return true;
+    };
+
+    const double cpuStart = threadCpuSeconds();
+    try {
+        const IntegrationCounts counts = integrate(ode, x, times, integration, observe);
+        result.stats.steps = counts.steps;
+        result.stats.rejectedSteps = counts.rejectedSteps;
+    } catch (const IntegrationError& e) {
+        result.status = SimulationStatus::Failed;
+        result.message = e.what();
+    }
+    result.stats.cpuSeconds = threadCpuSeconds() - cpuStart;
+    result.stats.rhsEvaluations = ode.evaluations();
+    result.stats.simulatedSeconds = result.trajectory.t.empty() ? 0.0 : result.trajectory.t.back();
+    energyBalance(result.trajectory, result.stats);
+    return result;
+}
+
+}  // namespace ll

@@ -1,0 +1,46 @@
+#pragma once
+// The result of a simulation as plain immutable data: a GUI worker hands it back
+// whole, the CLI writes it out, tests read it.
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace ll {
+
+struct Trajectory {
+    int n = 0;                        // coordinates
+    std::vector<double> t;            // sample times [s]
+    std::vector<Eigen::VectorXd> q;   // (n) per sample
+    std::vector<Eigen::VectorXd> qd;  // (n) per sample
+    std::vector<double> Ekin, Epot;   // [J]
+    std::vector<double> E;            // Ekin + Epot
+    std::vector<double> work;         // ∫ Qᵀ q̇ dt: work done by non-conservative forces since t0
+
+    size_t size() const { return t.size(); }
+};
+
+struct SimulationStats {
+    std::string integrator;
+    long steps = 0;             // accepted steps
+    long rejectedSteps = 0;     // adaptive methods only
+    long rhsEvaluations = 0;    // forward-dynamics evaluations
+    double cpuSeconds = 0.0;    // CPU time of this thread spent integrating
+    double simulatedSeconds = 0.0;
+    // Energy balance: E(t) − E(0) − W(t) is zero for the exact solution (W = work of
+    // Q). Max absolute value, and relative to the energy scale of the motion
+    // (max of |E(0)|, max E_kin, max |E_pot − E_pot(0)|).
+    double maxEnergyError = 0.0;
+    double maxRelEnergyError = 0.0;
+};
+
+enum class SimulationStatus { Completed, Cancelled, Failed };
+
+struct SimulationResult {
+    Trajectory trajectory;
+    SimulationStats stats;
+    SimulationStatus status = SimulationStatus::Completed;
+    std::string message;  // why it stopped early: time, state and what to try
+};
+
+}  // namespace ll
