@@ -1,0 +1,262 @@
+#include "core/io/expression.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <limits>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include <cln/exception.h>
+#include <cln/float.h>
+#include <cln/number_io.h>
+
+#include "core/model/diagnostics.hpp"
+
+namespace ll {
+
+namespace {
+
+bool isIdentifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// 1-based position of the first whole-word occurrence of `name`, or 0.
+std::size_t identifierPosition(const std::string& text, const std::string& name) {
+    for (std::size_t at = text.find(name); at != std::string::npos; at = text.find(name, at + 1)) {
+        const bool startsWord = at == 0 || !isIdentifierChar(text[at - 1]);
+        const std::size_t end = at + name.size();
+        const bool endsWord = end == text.size() || !isIdentifierChar(text[end]);
+        if (startsWord && endsWord) return at + 1;
+    }
+    return 0;
+}
+
+std::string quoted(const std::string& text) { return "\"" + text + "\""; }
+
+std::string atPosition(std::size_t position) {
+    return position == 0 ? "" : " at position " + std::to_string(position);
+}
+
+std::string formatDouble(double value) {
+    std::ostringstream out;
+    out << value;
+    return out.str();
+}
+
+// GiNaC reports "parse error at line 0, column 0: <what>\n[<function>]"; keep <what>.
+std::string parseErrorReason(const std::string& what) {
+    std::string reason = what;
+    const std::size_t column = reason.find("column ");
+    if (column != std::string::npos) {
+        const std::size_t colon = reason.find(": ", column);
+        if (colon != std::string::npos) reason = reason.substr(colon + 2);
+    }
+    reason = reason.substr(0, reason.find('\n'));
+    return reason;
+}
+
+// The token GiNaC stopped at ("got: \"/\"" -> "/"), empty at the end of the text.
+std::string offendingToken(const std::string& reason) {
+    const std::size_t got = reason.find("got: ");
+    if (got == std::string::npos) return {};
+    std::string token = reason.substr(got + 5);
+    if (token.size() >= 2 && token.front() == '"' && token.back() == '"') return token.substr(1, token.size() - 2);
+    return {};  // EOF
+}
+
+// GiNaC's lexer has read one character past the offending token when it throws, so
+// the token is the last occurrence of its text ending at or before `consumed`.
+std::size_t tokenPosition(const std::string& text, const std::string& token, std::streamoff consumed) {
+    if (token.empty() || consumed < 0) return 0;
+    const std::size_t limit = static_cast<std::size_t>(consumed);
+    const std::size_t from = limit >= token.size() ? limit - token.size() : 0;
+    const std::size_t at = text.rfind(token, from);
+    return at == std::string::npos ? 0 : at + 1;
+}
+
+std::string describeParseError(const std::string& text, const std::string& what, std::streamoff consumed) {
+    const std::string reason = parseErrorReason(what);
+    if (reason.rfind("no function \"", 0) == 0) {
+        const std::string name = reason.substr(13, reason.find('"', 13) - 13);
+        return "unknown function '" + name + "'" + atPosition(identifierPosition(text, name)) + " in " +
+               quoted(text) + " (or wrong number of arguments)";
+    }
+    const std::string token = offendingToken(reason);
+    std::string detail = reason;
+    if (detail.rfind("unexpected token, got: ", 0) == 0) detail = "unexpected " + detail.substr(23);
+    for (std::size_t at; (at = detail.find("got: ")) != std::string::npos;) detail.replace(at, 5, "got ");
+    for (std::size_t at; (at = detail.find("EOF")) != std::string::npos;) detail.replace(at, 3, "end of expression");
+    const std::string where =
+        token.empty() ? " at the end of" : atPosition(tokenPosition(text, token, consumed)) + " in";
+    return "syntax error" + where + " " + quoted(text) + ": " + detail;
+}
+
+std::string describeUnknownSymbol(const std::string& text, const std::string& what,
+                                  const std::vector<std::string>& known) {
+    // find_or_insert_symbol: symbol "l3" not found
+    const std::size_t open = what.find('"');
+    const std::size_t close = open == std::string::npos ? open : what.find('"', open + 1);
+    if (close == std::string::npos) return "cannot parse " + quoted(text) + ": " + what;
+    const std::string name = what.substr(open + 1, close - open - 1);
+    std::string knownList;
+    const std::size_t shown = std::min<std::size_t>(known.size(), 12);  // a long list would bury the message
+    for (std::size_t i = 0; i < shown; ++i) knownList += known[i] + ", ";
+    if (shown < known.size()) knownList += "..., ";
+    knownList += "pi";
+    return "unknown symbol '" + name + "'" + atPosition(identifierPosition(text, name)) + " in " + quoted(text) +
+           " (known: " + knownList + ")";
+}
+
+std::string describePole(const std::string& text, const std::string& what) {
+    if (what.find("division by zero") != std::string::npos) return "division by zero in " + quoted(text);
+    return "singular value in " + quoted(text) + " (" + what + ")";
+}
+
+const std::set<std::string>& reservedWords() {
+    static const std::set<std::string> words = [] {
+        std::set<std::string> w{"pi", "Pi", "I", "Euler", "Catalan", "t"};
+        for (const auto& [prototype, reader] : GiNaC::get_default_reader()) w.insert(prototype.first);
+        return w;
+    }();
+    return words;
+}
+
+}  // namespace
+
+std::optional<std::string> ParameterTable::whyNotAName(const std::string& name) {
+    static const std::regex identifier("[A-Za-z][A-Za-z0-9_]*");
+    static const std::regex jointVariable("q(d|dd)?[0-9]+");
+    if (!std::regex_match(name, identifier))
+        return "'" + name + "' is not a name (a letter, then letters, digits or _)";
+    if (std::regex_match(name, jointVariable))
+        return "'" + name + "' is reserved for a joint coordinate (q1, qd1, qdd1, ...)";
+    if (reservedWords().count(name)) return "'" + name + "' is reserved (a constant, time t or a function name)";
+    return std::nullopt;
+}
+
+void ParameterTable::add(const std::string& field, const std::string& name, double value, GiNaC::ex definition) {
+    if (auto why = whyNotAName(name)) throw InputError(field, *why);
+    if (contains(name)) throw InputError(field, "parameter '" + name + "' is defined twice");
+    if (!std::isfinite(value)) throw InputError(field, "value is not finite (" + formatDouble(value) + ")");
+    Parameter parameter{GiNaC::symbol(name), value, definition};
+    symbols_[name] = parameter.symbol;
+    names_.push_back(name);
+    parameters_.push_back(std::move(parameter));
+}
+
+void ParameterTable::define(const std::string& field, const std::string& name, double value) {
+    // GiNaC::numeric cannot hold inf or NaN.
+    add(field, name, value, std::isfinite(value) ? GiNaC::ex(GiNaC::numeric(value)) : GiNaC::ex());
+}
+
+double ParameterTable::define(const std::string& field, const std::string& name, const std::string& text) {
+    const GiNaC::ex expression = parse(field, text);
+    const double value = toNumber(field, text, expression);
+    add(field, name, value, expression);
+    return value;
+}
+
+GiNaC::ex ParameterTable::parse(const std::string& field, const std::string& text) const {
+    if (text.find_first_not_of(" \t\n") == std::string::npos)
+        throw InputError(field, "empty expression (expected a number or an expression of the parameters)");
+    GiNaC::symtab symbols = symbols_;
+    symbols["pi"] = GiNaC::Pi;
+    std::istringstream input(text);
+    try {
+        GiNaC::parser parser(symbols, /*strict=*/true);
+        return parser(input);
+    } catch (const GiNaC::parse_error& e) {
+        input.clear();
+        throw InputError(field, describeParseError(text, e.what(), input.tellg()));
+    } catch (const GiNaC::pole_error& e) {
+        throw InputError(field, describePole(text, e.what()));
+    } catch (const cln::division_by_0_exception&) {
+        throw InputError(field, "division by zero in " + quoted(text));
+    } catch (const cln::read_number_exception&) {
+        throw InputError(field, "syntax error in " + quoted(text) + ": malformed number");
+    } catch (const std::invalid_argument& e) {
+        const std::string what = e.what();
+        if (what.find("find_or_insert_symbol") != std::string::npos)  // strict mode refused a name
+            throw InputError(field, describeUnknownSymbol(text, what, names_));
+        throw InputError(field, "cannot parse " + quoted(text) + ": " + what);
+    } catch (const std::exception& e) {
+        throw InputError(field, "cannot parse " + quoted(text) + ": " + e.what());
+    }
+}
+
+double ParameterTable::evaluate(const std::string& field, const std::string& text) const {
+    return toNumber(field, text, parse(field, text));
+}
+
+double ParameterTable::toNumber(const std::string& field, const std::string& text,
+                                const GiNaC::ex& expression) const {
+    // Parameter values enter as doubles, so CLN computes in doubles and signals
+    // overflow, underflow and 1/0 with exceptions of its own.
+    try {
+        const GiNaC::ex result = expression.subs(values()).evalf();
+        if (!GiNaC::is_a<GiNaC::numeric>(result))
+            throw InputError(field, quoted(text) + " does not evaluate to a number");
+        const GiNaC::numeric& number = GiNaC::ex_to<GiNaC::numeric>(result);
+        if (!number.is_real()) {
+            std::ostringstream shown;
+            shown << result;
+            throw InputError(field, "value is not a real number (" + shown.str() + ") in " + quoted(text));
+        }
+        // Exact numbers beyond the double range would make to_double throw; floats give inf.
+        if (GiNaC::abs(number) > GiNaC::numeric(std::numeric_limits<double>::max()))
+            throw InputError(field, std::string("value is not finite (") + (number.is_negative() ? "-inf" : "inf") +
+                                        ") in " + quoted(text));
+        const double value = number.to_double();
+        if (!std::isfinite(value))
+            throw InputError(field, "value is not finite (" + formatDouble(value) + ") in " + quoted(text));
+        return value;
+    } catch (const InputError&) {
+        throw;
+    } catch (const GiNaC::pole_error& e) {
+        throw InputError(field, describePole(text, e.what()));
+    } catch (const cln::division_by_0_exception&) {
+        throw InputError(field, "division by zero in " + quoted(text));
+    } catch (const cln::floating_point_overflow_exception&) {
+        throw InputError(field, "value is not finite (overflow) in " + quoted(text));
+    } catch (const cln::floating_point_underflow_exception&) {
+        throw InputError(field, "a value in " + quoted(text) + " is too close to zero for a double (underflow)");
+    } catch (const std::exception& e) {
+        throw InputError(field, "cannot evaluate " + quoted(text) + ": " + e.what());
+    }
+}
+
+bool ParameterTable::contains(const std::string& name) const { return symbols_.count(name) != 0; }
+
+const ParameterTable::Parameter& ParameterTable::find(const std::string& name) const {
+    for (std::size_t i = 0; i < names_.size(); ++i)
+        if (names_[i] == name) return parameters_[i];
+    throw std::out_of_range("no parameter named '" + name + "'");
+}
+
+const GiNaC::symbol& ParameterTable::symbol(const std::string& name) const { return find(name).symbol; }
+
+double ParameterTable::value(const std::string& name) const { return find(name).value; }
+
+const GiNaC::ex& ParameterTable::definition(const std::string& name) const { return find(name).definition; }
+
+GiNaC::lst ParameterTable::values() const {
+    GiNaC::lst substitutions;
+    for (const Parameter& p : parameters_) substitutions.append(p.symbol == GiNaC::numeric(p.value));
+    return substitutions;
+}
+
+ParameterTable parameterTable(const Scene& scene) {
+    ParameterTable table;
+    for (const auto& [name, value] : scene.parameters) {
+        const std::string field = "parameters." + name;
+        const auto text = scene.expressions.find(field);
+        if (text != scene.expressions.end())
+            table.define(field, name, text->second);
+        else
+            table.define(field, name, value);
+    }
+    return table;
+}
+
+}  // namespace ll
