@@ -22,10 +22,16 @@ void forwardKinematics(const RobotModel& model, RobotData& data, const Eigen::Ve
     assert(q.size() == data.n);
     const bool standard = model.convention == DhConvention::Standard;
     data.T_0i[0] = model.base;
+    Eigen::Isometry3d A;
     for (int i = 0; i < data.n; ++i) {
         const Joint& joint = model.joints[i];
+        const bool revolute = joint.dh.type == JointType::Revolute;
+        const double theta = joint.dh.theta + (revolute ? q[i] : 0.0);
+        const double d = joint.dh.d + (revolute ? 0.0 : q[i]);
+        dhTransform(model.convention, joint.dh.a, d, std::cos(theta), std::sin(theta), data.cosAlpha[i],
+                    data.sinAlpha[i], A.matrix());
         Eigen::Isometry3d& T = data.T_0i[i + 1];
-        T = data.T_0i[i] * linkTransform(model, i, q[i]);
+        T = data.T_0i[i] * A;
 
         // Joint i moves about/along z_{i-1} (standard) or z_i (modified); neither
         // moves under q_i itself, which the Christoffel derivatives rely on.

@@ -1,9 +1,13 @@
 #include "core/model/robot_data.hpp"
 
+#include <cmath>
+
 namespace ll {
 
 RobotData::RobotData(const RobotModel& model)
     : n(model.dof()),
+      cosAlpha(n),
+      sinAlpha(n),
       T_0i(n + 1, Eigen::Isometry3d::Identity()),
       p_ci(n, Eigen::Vector3d::Zero()),
       Ic_0i(n, Eigen::Matrix3d::Zero()),
@@ -25,6 +29,11 @@ RobotData::RobotData(const RobotModel& model)
       h(Eigen::VectorXd::Zero(n)),
       rhs(Eigen::VectorXd::Zero(n)),
       qdd(Eigen::VectorXd::Zero(n)),
-      B_llt(n) {}
+      B_llt(n) {
+    for (int i = 0; i < n; ++i) {
+        cosAlpha[i] = std::cos(model.joints[i].dh.alpha);
+        sinAlpha[i] = std::sin(model.joints[i].dh.alpha);
+    }
+}
 
 }  // namespace ll

@@ -19,6 +19,9 @@ struct RobotData {
 
     int n = 0;  // number of joints
 
+    // --- constructor: constants of the model, so evaluations need no trigonometry of α ---
+    std::vector<double> cosAlpha, sinAlpha;  // (n) cos α_i, sin α_i (α_{i-1} in modified DH)
+
     // --- forwardKinematics(model, data, q) ---
     std::vector<Eigen::Isometry3d> T_0i;   // (n+1) frame i in world; T_0i[0] = base
     std::vector<Eigen::Vector3d> p_ci;     // (n) COM of link i
