@@ -1,0 +1,66 @@
+#include "app/cli_options.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace ll::cli {
+
+Options::Options(const std::vector<std::string>& args, const std::set<std::string>& allowed,
+                 const std::set<std::string>& flags) {
+    for (size_t i = 0; i < args.size(); ++i) {
+        const std::string& arg = args[i];
+        if (arg.rfind("--", 0) != 0) {
+            positional_.push_back(arg);
+            continue;
+        }
+        std::string name = arg.substr(2), value;
+        if (const size_t eq = name.find('='); eq != std::string::npos) {
+            value = name.substr(eq + 1);
+            name = name.substr(0, eq);
+        } else if (flags.count(name)) {
+            value = "1";
+        } else if (i + 1 < args.size()) {
+            value = args[++i];
+        } else if (allowed.count(name)) {
+            throw UsageError("option --" + name + " needs a value");
+        }
+        if (!allowed.count(name) && !flags.count(name)) {
+            std::string known;
+            for (const std::string& a : allowed) known += (known.empty() ? "--" : ", --") + a;
+            for (const std::string& f : flags) known += (known.empty() ? "--" : ", --") + f;
+            throw UsageError("unknown option --" + name + (known.empty() ? "" : " (known: " + known + ")"));
+        }
+        values_[name] = value;
+    }
+}
+
+std::string Options::text(const std::string& name, const std::string& fallback) const {
+    const auto it = values_.find(name);
+    return it == values_.end() ? fallback : it->second;
+}
+
+double parseNumber(const std::string& option, const std::string& text) {
+    std::istringstream in(text);
+    double value = 0;
+    in >> value;
+    if (in.fail() || !in.eof() || !std::isfinite(value))
+        throw UsageError("--" + option + ": expected a finite number, got '" + text + "'");
+    return value;
+}
+
+double Options::number(const std::string& name, double fallback) const {
+    return has(name) ? parseNumber(name, text(name)) : fallback;
+}
+
+Eigen::VectorXd Options::vector(const std::string& name, int size) const {
+    std::vector<double> values;
+    std::stringstream in(text(name));
+    std::string item;
+    while (std::getline(in, item, ',')) values.push_back(parseNumber(name, item));
+    if (static_cast<int>(values.size()) != size)
+        throw UsageError("--" + name + ": expected " + std::to_string(size) + " comma-separated numbers (one per joint), got " +
+                         std::to_string(values.size()) + " in '" + text(name) + "'");
+    return Eigen::Map<Eigen::VectorXd>(values.data(), size);
+}
+
+}  // namespace ll::cli

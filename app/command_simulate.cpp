@@ -1,0 +1,92 @@
+// `lagrangelab simulate SCENE [--duration T] [--integrator NAME] [--abs-tol X]
+// [--rel-tol X] [--dt X] [--output-rate HZ] [--out FILE.csv|FILE.json]`.
+#include <cstdio>
+#include <iostream>
+
+#include <unistd.h>
+
+#include "app/cli_options.hpp"
+#include "app/commands.hpp"
+#include "app/scene_loading.hpp"
+#include "core/io/trajectory_file.hpp"
+#include "core/model/validation.hpp"
+#include "core/simulation/simulate.hpp"
+
+namespace ll::cli {
+namespace {
+
+// A progress bar on a terminal, redrawn at most every percent.
+class ProgressBar {
+public:
+    explicit ProgressBar(bool enabled) : enabled_(enabled) {}
+    ~ProgressBar() {
+        if (enabled_ && drawn_) std::fprintf(stderr, "\r%*s\r", 60, "");
+    }
+    void operator()(double fraction) {
+        const int percent = static_cast<int>(fraction * 100);
+        if (!enabled_ || percent == last_) return;
+        last_ = percent;
+        drawn_ = true;
+        const int width = 40, filled = percent * width / 100;
+        std::fprintf(stderr, "\r[%.*s%*s] %3d%%", filled, "########################################", width - filled, "", percent);
+        std::fflush(stderr);
+    }
+
+private:
+    bool enabled_;
+    bool drawn_ = false;
+    int last_ = -1;
+};
+
+void printSummary(const Scene& scene, const SimulationSettings& settings, const SimulationResult& r) {
+    const SimulationStats& s = r.stats;
+    std::fprintf(stderr, "%s: %.6g s simulated with %s (abs_tol %.3g, rel_tol %.3g, dt %.3g)\n", scene.name.c_str(),
+                 s.simulatedSeconds, s.integrator.c_str(), settings.absTol, settings.relTol, settings.dt);
+    const double perSecond = s.simulatedSeconds > 0 ? s.cpuSeconds / s.simulatedSeconds : 0;
+    std::fprintf(stderr, "cost: %ld steps (%ld rejected), %ld right-hand-side evaluations, CPU %.3f ms (%.3f ms per simulated second, %.0fx real time)\n",
+                 s.steps, s.rejectedSteps, s.rhsEvaluations, 1e3 * s.cpuSeconds, 1e3 * perSecond,
+                 perSecond > 0 ? 1.0 / perSecond : 0.0);
+    std::fprintf(stderr, "energy: max |E - E0 - W| = %.3g J, max |dE|/E = %.3g (W: work of friction and torques)\n",
+                 s.maxEnergyError, s.maxRelEnergyError);
+    const int n = scene.robot.dof();
+    const std::vector<int> inputs = actuatedJoints(scene.effects, n);
+    if (static_cast<int>(inputs.size()) < n) {
+        std::string joints;
+        for (int j : inputs) joints += (joints.empty() ? "" : ", ") + std::to_string(j + 1);
+        std::fprintf(stderr, "actuation: underactuated, %zu input%s (%s) for %d coordinates\n", inputs.size(),
+                     inputs.size() == 1 ? "" : "s", joints.empty() ? "none" : ("joint " + joints).c_str(), n);
+    }
+}
+
+}  // namespace
+
+int simulateCommand(const Args& args) {
+    const Options options(args, {"duration", "integrator", "abs-tol", "rel-tol", "dt", "output-rate", "out"});
+    if (options.positional().size() != 1)
+        throw UsageError("usage: lagrangelab simulate SCENE [--duration T] [--integrator NAME] [--abs-tol X] [--rel-tol X] [--dt X] [--output-rate HZ] [--out FILE.csv|FILE.json]");
+    Scene scene = loadSceneReportingWarnings(options.positional()[0]);
+    SimulationSettings& settings = scene.simulation;
+    settings.duration = options.number("duration", settings.duration);
+    settings.integrator = options.text("integrator", settings.integrator);
+    settings.absTol = options.number("abs-tol", settings.absTol);
+    settings.relTol = options.number("rel-tol", settings.relTol);
+    settings.dt = options.number("dt", settings.dt);
+    settings.outputRate = options.number("output-rate", settings.outputRate);
+    requireValidScene(scene);  // the command-line values too
+
+    ProgressBar bar(::isatty(STDERR_FILENO) && settings.duration > 0);
+    const SimulationResult result = simulate(scene, settings, [&](double f) { bar(f); });
+    bar(1.0);
+    if (options.has("out"))
+        saveTrajectory(result, options.text("out"));
+    else
+        writeTrajectoryCsv(result.trajectory, std::cout);
+    printSummary(scene, settings, result);
+    if (result.status == SimulationStatus::Failed) {
+        std::fprintf(stderr, "error: simulation stopped: %s\n", result.message.c_str());
+        return 3;
+    }
+    return 0;
+}
+
+}  // namespace ll::cli

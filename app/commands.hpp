@@ -1,0 +1,16 @@
+#pragma once
+// The `lagrangelab <command>` entry points. Each returns the process exit code:
+// 0 success, 2 bad input (scene or command line), 3 the simulation stopped early.
+#include <string>
+#include <vector>
+
+namespace ll::cli {
+
+using Args = std::vector<std::string>;
+
+int evalCommand(const Args& args);
+int simulateCommand(const Args& args);
+int integratorsCommand(const Args& args);
+int benchCommand(const Args& args);
+
+}  // namespace ll::cli

@@ -1,0 +1,58 @@
+// lagrangelab: Euler–Lagrange modelling of serial robots, from the command line.
+#include <cstdio>
+#include <iostream>
+#include <string>
+
+#include "app/cli_options.hpp"
+#include "app/commands.hpp"
+#include "core/model/diagnostics.hpp"
+
+namespace {
+
+const char* kUsage =
+    "usage: lagrangelab <command> [arguments]\n"
+    "\n"
+    "commands:\n"
+    "  eval SCENE --q v1,... --qd v1,... [--t T] [--tau v1,...]\n"
+    "      B, C, g, Q, q̈, E_kin, E_pot at one state, as JSON\n"
+    "  simulate SCENE [--duration T] [--integrator NAME] [--abs-tol X] [--rel-tol X] [--dt X]\n"
+    "           [--output-rate HZ] [--out FILE.csv|FILE.json]\n"
+    "      integrate the equations of motion; trajectory to --out or CSV on stdout, summary on stderr\n"
+    "  integrators\n"
+    "      the integrators with order, kind and when to use each\n"
+    "  bench [SCENE...] [--batches N]\n"
+    "      median times of B, C, g, forward/inverse dynamics and one simulated second, beside KDL\n"
+    "\n"
+    "exit codes: 0 success, 2 bad input, 3 simulation stopped early\n";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "help") {
+        std::fputs(kUsage, argc < 2 ? stderr : stdout);
+        return argc < 2 ? 2 : 0;
+    }
+    const std::string command = argv[1];
+    const ll::cli::Args args(argv + 2, argv + argc);
+    try {
+        if (command == "eval") return ll::cli::evalCommand(args);
+        if (command == "simulate") return ll::cli::simulateCommand(args);
+        if (command == "integrators") return ll::cli::integratorsCommand(args);
+        if (command == "bench") return ll::cli::benchCommand(args);
+        std::fprintf(stderr, "error: unknown command '%s'\n\n%s", command.c_str(), kUsage);
+        return 2;
+    } catch (const ll::InputError& e) {
+        for (const ll::Diagnostic& d : e.diagnostics())
+            if (d.severity == ll::Severity::Error) std::cerr << "error: " << d.field << ": " << d.message << '\n';
+        return 2;
+    } catch (const ll::cli::UsageError& e) {
+        std::cerr << "error: " << e.what() << '\n';
+        return 2;
+    } catch (const std::invalid_argument& e) {
+        std::cerr << "error: " << e.what() << '\n';
+        return 2;
+    } catch (const std::exception& e) {
+        std::cerr << "error: " << e.what() << '\n';
+        return 1;
+    }
+}

@@ -1,0 +1,11 @@
+#pragma once
+// Loading a scene for a command: warnings go to stderr, errors propagate as InputError.
+#include <string>
+
+#include "core/model/scene.hpp"
+
+namespace ll::cli {
+
+Scene loadSceneReportingWarnings(const std::string& path);
+
+}  // namespace ll::cli

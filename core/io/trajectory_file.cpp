@@ -1,0 +1,88 @@
+#include "core/io/trajectory_file.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+
+namespace ll {
+
+void writeTrajectoryCsv(const Trajectory& tr, std::ostream& out) {
+    out << "t";
+    for (int i = 1; i <= tr.n; ++i) out << ",q" << i;
+    for (int i = 1; i <= tr.n; ++i) out << ",qd" << i;
+    out << ",Ekin,Epot,E,W\n";
+    char buffer[32];
+    const auto put = [&](double v) {
+        std::snprintf(buffer, sizeof buffer, "%.17g", v);
+        out << buffer;
+    };
+    for (size_t k = 0; k < tr.size(); ++k) {
+        put(tr.t[k]);
+        for (int i = 0; i < tr.n; ++i) out << ',', put(tr.q[k][i]);
+        for (int i = 0; i < tr.n; ++i) out << ',', put(tr.qd[k][i]);
+        out << ',', put(tr.Ekin[k]);
+        out << ',', put(tr.Epot[k]);
+        out << ',', put(tr.E[k]);
+        out << ',', put(tr.work[k]);
+        out << '\n';
+    }
+}
+
+void writeTrajectoryJson(const SimulationResult& result, std::ostream& out) {
+    const Trajectory& tr = result.trajectory;
+    nlohmann::ordered_json j;
+    j["t"] = tr.t;
+    for (int i = 0; i < tr.n; ++i) {
+        std::vector<double> column(tr.size());
+        for (size_t k = 0; k < tr.size(); ++k) column[k] = tr.q[k][i];
+        j["q" + std::to_string(i + 1)] = column;
+    }
+    for (int i = 0; i < tr.n; ++i) {
+        std::vector<double> column(tr.size());
+        for (size_t k = 0; k < tr.size(); ++k) column[k] = tr.qd[k][i];
+        j["qd" + std::to_string(i + 1)] = column;
+    }
+    j["Ekin"] = tr.Ekin;
+    j["Epot"] = tr.Epot;
+    j["E"] = tr.E;
+    j["W"] = tr.work;
+    const SimulationStats& s = result.stats;
+    j["stats"] = {{"integrator", s.integrator},         {"steps", s.steps},
+                  {"rejected_steps", s.rejectedSteps},  {"rhs_evaluations", s.rhsEvaluations},
+                  {"cpu_seconds", s.cpuSeconds},        {"simulated_seconds", s.simulatedSeconds},
+                  {"max_energy_error", s.maxEnergyError}, {"max_rel_energy_error", s.maxRelEnergyError}};
+    j["status"] = result.status == SimulationStatus::Completed ? "completed"
+                  : result.status == SimulationStatus::Cancelled ? "cancelled" : "failed";
+    if (!result.message.empty()) j["message"] = result.message;
+    out << j.dump(1) << '\n';
+}
+
+void saveTrajectory(const SimulationResult& result, const std::string& path) {
+    const bool json = path.size() >= 5 && path.compare(path.size() - 5, 5, ".json") == 0;
+    const bool csv = path.size() >= 4 && path.compare(path.size() - 4, 4, ".csv") == 0;
+    if (!json && !csv) throw std::runtime_error(path + ": output file must end in .csv or .json");
+    const std::string temporary = path + ".tmp-" + std::to_string(::getpid());
+    {
+        std::ofstream out(temporary);
+        if (!out) throw std::runtime_error(path + ": cannot write (" + temporary + ")");
+        if (json)
+            writeTrajectoryJson(result, out);
+        else
+            writeTrajectoryCsv(result.trajectory, out);
+        out.flush();
+        if (!out) {
+            std::remove(temporary.c_str());
+            throw std::runtime_error(path + ": write failed");
+        }
+    }
+    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+        std::remove(temporary.c_str());
+        throw std::runtime_error(path + ": cannot replace the file");
+    }
+}
+
+}  // namespace ll

@@ -1,0 +1,18 @@
+#pragma once
+// Writing a simulated trajectory: CSV (one row per sample: t, q1..qn, qd1..qdn,
+// Ekin, Epot, E, W) or JSON (the same columns as arrays, plus the run's statistics).
+#include <ostream>
+#include <string>
+
+#include "core/simulation/trajectory.hpp"
+
+namespace ll {
+
+void writeTrajectoryCsv(const Trajectory& trajectory, std::ostream& out);
+void writeTrajectoryJson(const SimulationResult& result, std::ostream& out);
+
+// Chooses the format by extension (.csv or .json) and writes atomically (temporary
+// file, then rename). Throws std::runtime_error naming the path.
+void saveTrajectory(const SimulationResult& result, const std::string& path);
+
+}  // namespace ll

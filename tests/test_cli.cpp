@@ -1,0 +1,111 @@
+// The command line, run as a user runs it: JSON from eval with the textbook values,
+// trajectories from simulate, one-line errors with exit code 2 for bad input.
+#include <QtTest>
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+
+class TestCli : public QObject {
+    Q_OBJECT
+
+    struct Run {
+        int exitCode;
+        QProcess::ExitStatus status;
+        QByteArray out, err;
+    };
+    static Run run(const QStringList& args) {
+        QProcess p;
+        p.start(LL_CLI, args);
+        p.waitForFinished(120000);
+        return {p.exitCode(), p.exitStatus(), p.readAllStandardOutput(), p.readAllStandardError()};
+    }
+    static QString example(const char* name) { return QString(LL_EXAMPLES_DIR) + "/" + name; }
+
+private slots:
+    // Reference (platform notes, Corke's parameters): g(0) = [0, 37.4837, 0.2489, 0, 0, 0].
+    void evalPuma560AtZero() {
+        const Run r = run({"eval", example("puma560.json"), "--q", "0,0,0,0,0,0", "--qd", "0,0,0,0,0,0"});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonObject o = QJsonDocument::fromJson(r.out).object();
+        for (const char* key : {"B", "C", "g", "Q", "qdd", "Ekin", "Epot"}) QVERIFY2(o.contains(key), key);
+        const QJsonArray g = o["g"].toArray();
+        QCOMPARE(g.size(), 6);
+        QVERIFY(std::abs(g[1].toDouble() - 37.4837) < 1e-4);
+        QVERIFY(std::abs(g[2].toDouble() - 0.2489) < 1e-4);
+        const double diag[] = {3.1771, 2.1318, 0.3618, 0.00164, 0.00064, 0.00004};
+        for (int i = 0; i < 6; ++i) QVERIFY(std::abs(o["B"].toArray()[i].toArray()[i].toDouble() - diag[i]) < 1e-4);
+        QCOMPARE(o["Ekin"].toDouble(), 0.0);
+        QVERIFY(r.err.contains("triangle"));  // Corke's link 1 is warned about, not refused
+    }
+
+    void evalTauReplacesSceneTorques() {
+        const Run a = run({"eval", example("mass_spring_pair.json"), "--q", "0.1,0", "--qd", "0,0", "--tau", "0,2"});
+        QCOMPARE(a.exitCode, 0);
+        const QJsonObject o = QJsonDocument::fromJson(a.out).object();
+        QCOMPARE(o["Q"].toArray()[1].toDouble(), 2.0);
+        // B = [[I1+I2, I2], [I2, I2]] with I1 = 0.5, I2 = 0.2
+        QVERIFY(std::abs(o["B"].toArray()[0].toArray()[0].toDouble() - 0.7) < 1e-12);
+        QVERIFY(std::abs(o["B"].toArray()[0].toArray()[1].toDouble() - 0.2) < 1e-12);
+    }
+
+    void simulateWritesTrajectoryAndSummary() {
+        QTemporaryDir dir;
+        const QString csv = dir.filePath("out.csv");
+        const Run r = run({"simulate", example("double_pendulum.json"), "--duration", "1", "--out", csv});
+        QCOMPARE(r.exitCode, 0);
+        QFile f(csv);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QList<QByteArray> lines = f.readAll().trimmed().split('\n');
+        QCOMPARE(lines[0], QByteArray("t,q1,q2,qd1,qd2,Ekin,Epot,E,W"));
+        QVERIFY(lines.size() > 50);
+        QVERIFY(r.err.contains("right-hand-side evaluations"));
+        QVERIFY(r.err.contains("max |dE|/E"));
+    }
+
+    void underactuatedIsReported() {
+        const Run r = run({"simulate", example("acrobot.json"), "--duration", "0.1", "--out", QDir::temp().filePath("acrobot.json")});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(r.err.contains("underactuated"), r.err.constData());
+    }
+
+    void badInputGivesOneLineAndExitCode2_data() {
+        QTest::addColumn<QString>("json");
+        QTest::addColumn<QString>("expected");
+        const QString head = R"({"format":"lagrangelab-scene/1","name":"x","robot":{"convention":"standard","joints":[)";
+        QTest::newRow("negative mass") << head + R"({"type":"revolute","a":1,"mass":-2,"inertia":{"zz":1}}]}})" << "robot.joints[1].mass";
+        QTest::newRow("non-PSD inertia") << head + R"({"type":"revolute","a":1,"mass":2,"inertia":{"xx":1,"yy":1,"zz":1,"xy":5}}]}})" << "robot.joints[1].inertia";
+        QTest::newRow("massless joint") << head + R"({"type":"revolute","a":1,"mass":0}]}})" << "robot.joints[1]";
+        QTest::newRow("malformed JSON") << head + R"({"type":"revolute",,]}})" << "JSON syntax error";
+        QTest::newRow("unknown integrator") << head + R"({"type":"revolute","a":1,"mass":2}]},"simulation":{"integrator":"rk45"}})" << "simulation.integrator";
+    }
+    void badInputGivesOneLineAndExitCode2() {
+        QFETCH(QString, json);
+        QFETCH(QString, expected);
+        QTemporaryDir dir;
+        const QString path = dir.filePath("bad.json");
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(json.toUtf8());
+        f.close();
+        for (const QStringList& args : {QStringList{"eval", path, "--q", "0", "--qd", "0"}, QStringList{"simulate", path}}) {
+            const Run r = run(args);
+            QCOMPARE(r.status, QProcess::NormalExit);
+            QCOMPARE(r.exitCode, 2);
+            QVERIFY2(r.err.contains(expected.toUtf8()), r.err.constData());
+            QVERIFY2(r.err.contains(path.toUtf8()), r.err.constData());
+        }
+    }
+
+    void badCommandLineGivesExitCode2() {
+        QCOMPARE(run({"eval", example("puma560.json"), "--q", "0,0"}).exitCode, 2);
+        QCOMPARE(run({"simulate", example("puma560.json"), "--integrator", "nope"}).exitCode, 2);
+        QCOMPARE(run({"simulate", example("puma560.json"), "--duration", "abc"}).exitCode, 2);
+        QCOMPARE(run({"frobnicate"}).exitCode, 2);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCli)
+#include "test_cli.moc"

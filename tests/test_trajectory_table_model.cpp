@@ -1,0 +1,37 @@
+// The Qt item model shows exactly the simulated samples.
+#include <QtTest>
+
+#include "core/simulation/simulate.hpp"
+#include "test_support.hpp"
+#include "ui/trajectory_table_model.hpp"
+
+using namespace ll;
+
+class TestTrajectoryTableModel : public QObject {
+    Q_OBJECT
+private slots:
+    void showsEverySampleAndColumn() {
+        Scene scene;
+        scene.robot = test::Planar2R{}.model();
+        scene.effects.gravity = Eigen::Vector3d(0, -9.81, 0);
+        scene.initial.q = Eigen::Vector2d(0.5, 0.1);
+        scene.initial.qd = Eigen::Vector2d::Zero();
+        scene.simulation.duration = 1.0;
+        scene.simulation.outputRate = 50;
+        const SimulationResult r = simulate(scene);
+        ui::TrajectoryTableModel model;
+        model.setTrajectory(r.trajectory);
+        QCOMPARE(model.rowCount(), 51);
+        QCOMPARE(model.columnCount(), 1 + 4 + 4);
+        QCOMPARE(model.headerData(2, Qt::Horizontal).toString(), QString("q2"));
+        QCOMPARE(model.headerData(3, Qt::Horizontal).toString(), QString::fromUtf8("q̇1"));
+        QCOMPARE(model.headerData(7, Qt::Horizontal).toString(), QString("E [J]"));
+        QCOMPARE(model.data(model.index(50, 0), Qt::EditRole).toDouble(), 1.0);
+        QCOMPARE(model.data(model.index(25, 2), Qt::EditRole).toDouble(), r.trajectory.q[25][1]);
+        QCOMPARE(model.data(model.index(10, 7), Qt::EditRole).toDouble(), r.trajectory.E[10]);
+        QVERIFY(!model.data(model.index(51, 0)).isValid());
+    }
+};
+
+QTEST_APPLESS_MAIN(TestTrajectoryTableModel)
+#include "test_trajectory_table_model.moc"
