@@ -1,0 +1,317 @@
+#include "core/symbolic/robot_derivation.hpp"
+
+#include <array>
+#include <chrono>
+
+#include "core/kinematics/dh_transform.hpp"
+#include "core/symbolic/trig_context.hpp"
+
+namespace ll::symbolic {
+namespace {
+
+using GiNaC::ex;
+using GiNaC::matrix;
+using Vec3 = std::array<ex, 3>;
+
+class Stopwatch {
+public:
+    double lap() {
+        const auto now = std::chrono::steady_clock::now();
+        const double s = std::chrono::duration<double>(now - last_).count();
+        last_ = now;
+        return s;
+    }
+
+private:
+    std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
+std::string idx(int i) { return std::to_string(i + 1); }
+
+Vec3 column(const matrix& m, int c) { return {m(0, c), m(1, c), m(2, c)}; }
+Vec3 translation(const matrix& T) { return column(T, 3); }
+Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Vec3 cross(const Vec3& a, const Vec3& b) {
+    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+ex dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+matrix toMatrix(const Vec3& v) { return matrix(3, 1, GiNaC::lst{v[0], v[1], v[2]}); }
+matrix rotation(const matrix& T) {
+    matrix R(3, 3);
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) R(r, c) = T(r, c);
+    return R;
+}
+
+// A_i with q_i added to θ (revolute: cos(θ+q) = cos θ c − sin θ s) or to d (prismatic).
+matrix linkTransform(DhConvention convention, const SymbolicJoint& j, const TrigContext& tc, int i) {
+    ex ct, st, d = j.d;
+    if (j.type == JointType::Revolute) {
+        ct = GiNaC::cos(j.theta) * tc.c(i) - GiNaC::sin(j.theta) * tc.s(i);
+        st = GiNaC::sin(j.theta) * tc.c(i) + GiNaC::cos(j.theta) * tc.s(i);
+    } else {
+        ct = GiNaC::cos(j.theta);
+        st = GiNaC::sin(j.theta);
+        d = j.d + tc.q(i);
+    }
+    matrix A(4, 4);
+    dhTransform<ex>(convention, j.a, d, ct, st, GiNaC::cos(j.alpha), GiNaC::sin(j.alpha), A);
+    return A;
+}
+
+matrix inverseTransform(const matrix& T) {  // [Rᵀ, −Rᵀ t; 0, 1]
+    matrix inv(4, 4);
+    for (int r = 0; r < 3; ++r) {
+        ex t = 0;
+        for (int c = 0; c < 3; ++c) {
+            inv(r, c) = T(c, r);
+            t -= T(c, r) * T(c, 3);
+        }
+        inv(r, 3) = t;
+    }
+    inv(3, 3) = 1;
+    return inv;
+}
+
+// B(q) link by link in each link's own frame: there the Jacobian columns of link i
+// depend only on the joints between, so the polynomials stay small (B never
+// depends on q1). b_jk = Σ_i m_i J_v,ij·J_v,ik + J_ω,ijᵀ I_i J_ω,ik (Siciliano (7.16)).
+matrix massMatrixInLinkFrames(const SymbolicRobot& robot, const std::vector<matrix>& A, const TrigContext& tc) {
+    const int n = tc.size();
+    const bool standard = robot.convention == DhConvention::Standard;
+    matrix B(n, n);
+    for (int i = 0; i < n; ++i) {
+        const SymbolicJoint& link = robot.joints[i];
+        // rel[f]: pose of frame i+1 (link i) in frame f, for f = 0..i+1.
+        std::vector<matrix> rel(i + 2, matrix(4, 4));
+        rel[i + 1] = GiNaC::ex_to<matrix>(GiNaC::unit_matrix(4));
+        for (int f = i; f >= 0; --f) rel[f] = tc.reduce(A[f].mul(rel[f + 1]));
+        std::vector<Vec3> Jv(i + 1), Jw(i + 1);
+        const Vec3 com = column(link.com, 0);
+        for (int j = 0; j <= i; ++j) {
+            const matrix axisFrame = tc.reduce(inverseTransform(rel[standard ? j : j + 1]));  // frame in link frame
+            const Vec3 z = column(axisFrame, 2);
+            if (robot.joints[j].type == JointType::Revolute) {
+                Jv[j] = cross(z, sub(com, translation(axisFrame)));
+                Jw[j] = z;
+            } else {
+                Jv[j] = z;
+                Jw[j] = {0, 0, 0};
+            }
+        }
+        const matrix& I = link.inertia;
+        for (int j = 0; j <= i; ++j)
+            for (int k = j; k <= i; ++k) {
+                ex IJw = 0;
+                for (int r = 0; r < 3; ++r)
+                    for (int c = 0; c < 3; ++c) IJw += Jw[j][r] * I(r, c) * Jw[k][c];
+                B(j, k) += link.mass * dot(Jv[j], Jv[k]) + IJw;
+            }
+    }
+    for (int j = 0; j < n; ++j)
+        for (int k = j; k < n; ++k) {
+            B(j, k) = tc.reduce(B(j, k));
+            B(k, j) = B(j, k);
+        }
+    return B;
+}
+
+}  // namespace
+
+Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
+    const int n = scene.robot.dof();
+    std::vector<bool> revolute(n);
+    for (int i = 0; i < n; ++i) revolute[i] = scene.robot.joints[i].dh.type == JointType::Revolute;
+    const TrigContext tc(revolute);
+    const SymbolicRobot robot = symbolicRobot(scene, options.mode, tc.t());
+    const bool standard = robot.convention == DhConvention::Standard;
+    const auto shown = [&](int step) { return step >= options.firstStep && step <= options.lastStep; };
+
+    Derivation d;
+    d.systemName = scene.name;
+    d.q = tc.q();
+    d.qd = tc.qd();
+    d.t = tc.t();
+    for (int i = 0; i < n; ++i) {
+        d.coordinateNames.push_back("q" + idx(i));
+        d.qdd.emplace_back("qdd" + idx(i));
+    }
+    Stopwatch clock;
+    const auto addStep = [&](int number, std::string title, std::string text, std::string latex,
+                             std::vector<DerivationItem> items) {
+        const double seconds = clock.lap();
+        if (!shown(number)) return;
+        d.steps.push_back({number, std::move(title), std::move(text), std::move(latex), std::move(items), seconds});
+    };
+    const std::string convention = standard ? "standard" : "modified";
+
+    // 0. DH table, with the joint variables in place.
+    {
+        matrix table(n, 4);
+        for (int i = 0; i < n; ++i) {
+            const SymbolicJoint& j = robot.joints[i];
+            table(i, 0) = j.a;
+            table(i, 1) = j.alpha;
+            table(i, 2) = revolute[i] ? j.d : j.d + tc.q(i);
+            table(i, 3) = revolute[i] ? j.theta + tc.q(i) : j.theta;
+        }
+        addStep(0, "DH parameters (" + convention + " convention)",
+                standard ? "row i: a_i, alpha_i, d_i, theta_i; revolute q_i adds to theta_i, prismatic q_i to d_i"
+                         : "row i: a_{i-1}, alpha_{i-1}, d_i, theta_i (Craig); revolute q_i adds to theta_i, prismatic q_i to d_i",
+                standard ? R"(\text{row } i:\ a_i,\ \alpha_i,\ d_i,\ \theta_i)"
+                         : R"(\text{row } i:\ a_{i-1},\ \alpha_{i-1},\ d_i,\ \theta_i)",
+                {{"DH", R"(\mathrm{DH})", table}});
+    }
+
+    // 1. Kinematic model.
+    std::vector<matrix> A(n), T(n + 1);
+    T[0] = robot.base;
+    std::vector<DerivationItem> step1;
+    for (int i = 0; i < n; ++i) {
+        A[i] = linkTransform(robot.convention, robot.joints[i], tc, i);
+        T[i + 1] = tc.reduce(T[i].mul(A[i]));
+        step1.push_back({"A_" + idx(i), "A_{" + idx(i) + "}", A[i]});
+    }
+    for (int i = 0; i < n; ++i) step1.push_back({"T_" + idx(i) + "^0", "T_{" + idx(i) + "}^{0}", T[i + 1]});
+    addStep(1, "Kinematic model",
+            standard ? "A_i = Rot_z(theta_i) Trans_z(d_i) Trans_x(a_i) Rot_x(alpha_i),  T_i^0 = A_1 A_2 ... A_i"
+                     : "A_i = Rot_x(alpha_{i-1}) Trans_x(a_{i-1}) Rot_z(theta_i) Trans_z(d_i),  T_i^0 = A_1 A_2 ... A_i",
+            standard ? R"(A_i = \mathrm{Rot}_z(\theta_i)\,\mathrm{Trans}_z(d_i)\,\mathrm{Trans}_x(a_i)\,\mathrm{Rot}_x(\alpha_i),\quad T_i^0 = A_1 A_2 \cdots A_i)"
+                     : R"(A_i = \mathrm{Rot}_x(\alpha_{i-1})\,\mathrm{Trans}_x(a_{i-1})\,\mathrm{Rot}_z(\theta_i)\,\mathrm{Trans}_z(d_i),\quad T_i^0 = A_1 A_2 \cdots A_i)",
+            step1);
+
+    // 2. Centres of mass in the base frame.
+    std::vector<Vec3> p(n);
+    std::vector<DerivationItem> step2;
+    for (int i = 0; i < n; ++i) {
+        const matrix& com = robot.joints[i].com;
+        for (int r = 0; r < 3; ++r)
+            p[i][r] = tc.reduce(T[i + 1](r, 0) * com(0, 0) + T[i + 1](r, 1) * com(1, 0) + T[i + 1](r, 2) * com(2, 0) + T[i + 1](r, 3));
+        step2.push_back({"p_c" + idx(i), "p_{c" + idx(i) + "}^{0}", toMatrix(p[i])});
+    }
+    addStep(2, "Centres of mass", "p_ci^0 = T_i^0 [r_ci; 1]  (r_ci: COM of link i in frame i)",
+            R"(p_{ci}^0 = T_i^0 \begin{bmatrix} r_{ci} \\ 1 \end{bmatrix})", step2);
+
+    // Joint axes in the base frame: z_{i-1} (standard) or z_i (modified).
+    std::vector<Vec3> axis(n);
+    for (int i = 0; i < n; ++i) axis[i] = column(T[standard ? i : i + 1], 2);
+
+    // 3. Angular velocities.
+    if (shown(3)) {
+        std::vector<DerivationItem> items;
+        for (int i = 0; i < n; ++i) {
+            matrix Jw(3, n), w(3, 1);
+            for (int j = 0; j <= i; ++j)
+                if (revolute[j])
+                    for (int r = 0; r < 3; ++r) {
+                        Jw(r, j) = axis[j][r];
+                        w(r, 0) += axis[j][r] * tc.qd(j);
+                    }
+            items.push_back({"J_w" + idx(i), R"(J_{\omega,)" + idx(i) + "}", Jw});
+            items.push_back({"w_" + idx(i), R"(\omega_{)" + idx(i) + "}^{0}", tc.reduce(w)});
+        }
+        addStep(3, "Angular velocities", "omega_i^0 = sum_{j<=i, revolute} z_j qd_j = J_w,i qd",
+                R"(\omega_i^0 = \sum_{j \le i} z_{j} \dot{q}_j = J_{\omega,i}\,\dot{q})", items);
+    }
+
+    // 4. Velocities of the centres of mass: J_v,ci = ∂p_ci/∂q.
+    if (shown(4)) {
+        std::vector<DerivationItem> items;
+        for (int i = 0; i < n; ++i) {
+            matrix Jv(3, n), v(3, 1);
+            for (int j = 0; j <= i; ++j)
+                for (int r = 0; r < 3; ++r) {
+                    Jv(r, j) = tc.reduce(tc.diffq(p[i][r], j));
+                    v(r, 0) += Jv(r, j) * tc.qd(j);
+                }
+            items.push_back({"J_v_c" + idx(i), "J_{v,c" + idx(i) + "}", Jv});
+            items.push_back({"v_c" + idx(i), "v_{c" + idx(i) + "}^{0}", tc.reduce(v)});
+        }
+        addStep(4, "Velocities of the centres of mass", "v_ci^0 = d/dt p_ci^0 = J_v,ci qd,  J_v,ci = dp_ci^0/dq",
+                R"(v_{ci}^0 = \dot{p}_{ci}^0 = J_{v,ci}\,\dot{q},\quad J_{v,ci} = \frac{\partial p_{ci}^0}{\partial q})", items);
+    }
+
+    // 5. Link inertia tensors in the base frame.
+    if (shown(5)) {
+        std::vector<DerivationItem> items;
+        for (int i = 0; i < n; ++i) {
+            const matrix R = rotation(T[i + 1]);
+            items.push_back({"I_l" + idx(i) + "^0", "I_{l" + idx(i) + "}^{0}",
+                             tc.reduce(R.mul(robot.joints[i].inertia).mul(R.transpose()))});
+        }
+        addStep(5, "Link inertia tensors in the base frame", "I_li^0 = R_i^0 I_li (R_i^0)^T",
+                R"(I_{li}^0 = R_i^0\, I_{li}\, (R_i^0)^T)", items);
+    }
+
+    // 6. Potential energy: gravity and springs, if declared.
+    ex Epot = 0;
+    if (robot.hasGravity)
+        for (int i = 0; i < n; ++i) Epot -= robot.joints[i].mass * dot(column(robot.gravity, 0), p[i]);
+    for (const SymbolicTerm& spring : robot.springs)
+        Epot += GiNaC::numeric(1, 2) * spring.value * GiNaC::pow(tc.q(spring.joint) - spring.extra, 2);
+    // A spring on a revolute joint is written in q_i itself, not in c_i, s_i.
+    Epot = tc.reduce(Epot);
+    d.Epot = Epot;
+    addStep(6, "Potential energy",
+            std::string(robot.hasGravity ? "E_pot = -sum_i m_i g0^T p_ci^0" : "E_pot = 0 (no gravity declared)") +
+                (robot.springs.empty() ? "" : " + sum_j 1/2 K_j (q_j - q_j,rest)^2"),
+            std::string(robot.hasGravity ? R"(E_{\mathrm{pot}} = -\sum_{i} m_i\, g_0^T p_{ci}^0)" : R"(E_{\mathrm{pot}} = 0)") +
+                (robot.springs.empty() ? "" : R"( + \sum_j \tfrac{1}{2} K_j (q_j - q_{j,\mathrm{rest}})^2)"),
+            {{"E_pot", R"(E_{\mathrm{pot}})", Epot}});
+
+    // 7. Kinetic energy and B(q).
+    d.B = massMatrixInLinkFrames(robot, A, tc);
+    ex Ekin = 0;
+    for (int j = 0; j < n; ++j)
+        for (int k = 0; k < n; ++k) Ekin += GiNaC::numeric(1, 2) * d.B(j, k) * tc.qd(j) * tc.qd(k);
+    d.Ekin = tc.reduce(Ekin);
+    addStep(7, "Kinetic energy and the mass matrix",
+            "E_kin = 1/2 sum_i (m_i v_ci^T v_ci + omega_i^T I_li^0 omega_i) = 1/2 qd^T B(q) qd",
+            R"(E_{\mathrm{kin}} = \tfrac{1}{2}\sum_i \left(m_i\, v_{ci}^T v_{ci} + \omega_i^T I_{li}^0\, \omega_i\right) = \tfrac{1}{2}\,\dot{q}^T B(q)\,\dot{q})",
+            {{"B", "B(q)", d.B}, {"E_kin", R"(E_{\mathrm{kin}})", d.Ekin}});
+
+    // 8. Equations of motion (Lagrange–d'Alembert).
+    d.g = matrix(n, 1);
+    for (int i = 0; i < n; ++i) d.g(i, 0) = tc.reduce(tc.diffq(Epot, i));
+    std::vector<matrix> dB(n);
+    for (int k = 0; k < n; ++k) dB[k] = tc.diffq(d.B, k);
+    d.C = matrix(n, n);
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            ex c = 0;
+            for (int k = 0; k < n; ++k)
+                c += GiNaC::numeric(1, 2) * (dB[k](i, j) + dB[j](i, k) - dB[i](j, k)) * tc.qd(k);
+            d.C(i, j) = tc.reduce(c);
+        }
+    d.Q = matrix(n, 1);
+    for (const SymbolicTerm& torque : robot.torques) d.Q(torque.joint, 0) += torque.value;
+    for (const SymbolicTerm& f : robot.viscous) d.Q(f.joint, 0) -= f.value * tc.qd(f.joint);
+    for (const SymbolicTerm& f : robot.coulomb) d.Q(f.joint, 0) -= f.value * GiNaC::tanh(tc.qd(f.joint) / f.extra);
+    for (const SymbolicTerm& torque : robot.torques) d.actuated.push_back(torque.joint);
+    std::sort(d.actuated.begin(), d.actuated.end());
+    d.actuated.erase(std::unique(d.actuated.begin(), d.actuated.end()), d.actuated.end());
+    d.underactuated = static_cast<int>(d.actuated.size()) < n;
+
+    std::vector<DerivationItem> step8{{"g", "g(q)", d.g}, {"C", R"(C(q,\dot{q}))", d.C}, {"Q", "Q", d.Q}};
+    for (int i = 0; i < n; ++i) {
+        ex lhs = d.g(i, 0);
+        for (int j = 0; j < n; ++j) lhs += d.B(i, j) * d.qdd[j] + d.C(i, j) * tc.qd(j);
+        step8.push_back({"equation_" + idx(i), R"(\text{equation } )" + idx(i), lhs == d.Q(i, 0)});
+    }
+    std::string actuation = "inputs on joints";
+    for (int j : d.actuated) actuation += " " + idx(j);
+    if (d.actuated.empty()) actuation = "no inputs";
+    actuation += d.underactuated ? " (underactuated: m = " + std::to_string(d.actuated.size()) + " < n = " + std::to_string(n) + ")"
+                                 : " (fully actuated)";
+    addStep(8, "Equations of motion (Lagrange-d'Alembert)",
+            "g = dE_pot/dq;  c_ij = sum_k 1/2 (db_ij/dq_k + db_ik/dq_j - db_jk/dq_i) qd_k;  "
+            "Q: non-conservative forces only;  B qdd + C qd + g = Q;  qdd = B^-1 (Q - C qd - g);  " + actuation,
+            R"(g = \frac{\partial E_{\mathrm{pot}}}{\partial q},\quad c_{ij} = \sum_k \tfrac{1}{2}\left(\frac{\partial b_{ij}}{\partial q_k} + \frac{\partial b_{ik}}{\partial q_j} - \frac{\partial b_{jk}}{\partial q_i}\right)\dot{q}_k,\quad B\ddot{q} + C\dot{q} + g = Q,\quad \ddot{q} = B^{-1}(Q - C\dot{q} - g))",
+            step8);
+
+    d.trigToFunctions = tc.toFunctions();
+    d.parameterValues = robot.parameterValues;
+    return d;
+}
+
+}  // namespace ll::symbolic

@@ -1,0 +1,21 @@
+#pragma once
+// The course notes' procedure (steps 0–8) for a robot given by its DH table:
+//   0 DH table → 1 T_n^0(q) → 2 p_ci^0(q) → 3 ω_i^0, J_ω,i → 4 v_ci^0, J_v,ci →
+//   5 I_li^0 = R_i I_li R_iᵀ → 6 E_pot → 7 E_kin = ½ q̇ᵀ B q̇ → 8 g, C (Christoffel), Q,
+//   B q̈ + C q̇ + g = Q.
+// Only the declared effects appear. Everything is exact (rationals, multiples of π).
+#include "core/model/scene.hpp"
+#include "core/symbolic/derivation.hpp"
+#include "core/symbolic/symbolic_robot.hpp"
+
+namespace ll::symbolic {
+
+struct DerivationOptions {
+    ParameterMode mode = ParameterMode::Parametric;
+    int firstStep = 0;  // the steps to show; B, C, g and Q are always derived
+    int lastStep = 8;
+};
+
+Derivation deriveRobot(const Scene& scene, const DerivationOptions& options = {});
+
+}  // namespace ll::symbolic

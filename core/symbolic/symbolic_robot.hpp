@@ -1,0 +1,52 @@
+#pragma once
+// A scene's robot and effects with GiNaC values, in one of three modes:
+//   Parametric: fields written as expressions keep their parameter symbols ("l1/2"),
+//               plain numbers become exact rationals;
+//   Numeric:    every field is its (exact) number;
+//   Textbook:   every nonzero length, mass, COM coordinate, inertia entry, spring
+//               and friction coefficient becomes its textbook symbol (a1, d1, m1,
+//               xc1, Ixx1, K1, b1, Fc1; gravity ±g), so a student derives the general
+//               model from the table alone. Angles α_i and θ offsets stay exact
+//               (multiples of π), because they fix the structure.
+#include <string>
+#include <vector>
+
+#include <ginac/ginac.h>
+
+#include "core/model/dh_row.hpp"
+#include "core/model/scene.hpp"
+
+namespace ll::symbolic {
+
+enum class ParameterMode { Parametric, Numeric, Textbook };
+
+struct SymbolicJoint {
+    JointType type = JointType::Revolute;
+    GiNaC::ex a, alpha, d, theta;  // constant parts; q_i is added by the derivation
+    GiNaC::ex mass;
+    GiNaC::matrix com{3, 1};
+    GiNaC::matrix inertia{3, 3};
+};
+
+struct SymbolicTerm {  // one coefficient on one joint (spring, friction, torque)
+    int joint = 0;
+    GiNaC::ex value;   // K, b, F_c, or τ(t)
+    GiNaC::ex extra;   // spring rest position, Coulomb smoothing speed
+};
+
+struct SymbolicRobot {
+    DhConvention convention = DhConvention::Standard;
+    GiNaC::matrix base{4, 4};
+    std::vector<SymbolicJoint> joints;
+    bool hasGravity = false;
+    GiNaC::matrix gravity{3, 1};
+    std::vector<SymbolicTerm> springs, viscous, coulomb, torques;
+    std::vector<GiNaC::symbol> massSymbols;  // for grouping results by mass when printing
+    GiNaC::lst parameterValues;              // symbol == value for every symbol introduced
+};
+
+// t is the time symbol torques depend on. Throws InputError for expressions that
+// do not parse (already checked when the scene was loaded).
+SymbolicRobot symbolicRobot(const Scene& scene, ParameterMode mode, const GiNaC::symbol& t);
+
+}  // namespace ll::symbolic
