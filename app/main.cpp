@@ -18,6 +18,8 @@ const char* kUsage =
     "  simulate SCENE [--duration T] [--integrator NAME] [--abs-tol X] [--rel-tol X] [--dt X]\n"
     "           [--output-rate HZ] [--out FILE.csv|FILE.json]\n"
     "      integrate the equations of motion; trajectory to --out or CSV on stdout, summary on stderr\n"
+    "  derive SCENE [--format text|latex|json] [--steps 0-8] [--symbolic] [--numeric] [--timings]\n"
+    "      the model step by step as the course notes derive it (symbolic, GiNaC)\n"
     "  integrators\n"
     "      the integrators with order, kind and when to use each\n"
     "  bench [SCENE...] [--batches N]\n"
@@ -39,6 +41,7 @@ int main(int argc, char** argv) {
         if (command == "simulate") return ll::cli::simulateCommand(args);
         if (command == "integrators") return ll::cli::integratorsCommand(args);
         if (command == "bench") return ll::cli::benchCommand(args);
+        if (command == "derive") return ll::cli::deriveCommand(args);
         std::fprintf(stderr, "error: unknown command '%s'\n\n%s", command.c_str(), kUsage);
         return 2;
     } catch (const ll::InputError& e) {

@@ -8,6 +8,8 @@
 #include <QProcess>
 #include <QTemporaryDir>
 
+#include <ginac/ginac.h>
+
 class TestCli : public QObject {
     Q_OBJECT
 
@@ -23,6 +25,14 @@ class TestCli : public QObject {
         return {p.exitCode(), p.exitStatus(), p.readAllStandardOutput(), p.readAllStandardError()};
     }
     static QString example(const char* name) { return QString(LL_EXAMPLES_DIR) + "/" + name; }
+    // A parameter's value as the scene file gives it (numbers only in these examples).
+    static double parameterValue(const QString& scene, const std::string& name) {
+        QFile f(example(scene.toUtf8().constData()));
+        f.open(QIODevice::ReadOnly);
+        const QJsonValue v = QJsonDocument::fromJson(f.readAll()).object()["parameters"].toObject()[QString::fromStdString(name)];
+        if (!v.isDouble()) qFatal("parameter %s is not a number in %s", name.c_str(), qPrintable(scene));
+        return v.toDouble();
+    }
 
 private slots:
     // Reference (platform notes, Corke's parameters): g(0) = [0, 37.4837, 0.2489, 0, 0, 0].
@@ -97,6 +107,93 @@ private slots:
             QVERIFY2(r.err.contains(expected.toUtf8()), r.err.constData());
             QVERIFY2(r.err.contains(path.toUtf8()), r.err.constData());
         }
+    }
+
+    // derive's plain expressions, parsed back with GiNaC and evaluated, equal eval's
+    // numbers: the symbolic and the numeric route agree through the user interface.
+    void deriveJsonAgreesWithEval_data() {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<QString>("mode");
+        QTest::newRow("planar 2R, parameters") << "planar_2r.json" << "";
+        QTest::newRow("SCARA, numeric") << "scara.json" << "--numeric";
+        QTest::newRow("cart-pole, symbolic") << "cart_pole.json" << "--symbolic";
+        QTest::newRow("Stanford, parameters") << "stanford_arm.json" << "";
+    }
+    void deriveJsonAgreesWithEval() {
+        QFETCH(QString, scene);
+        QFETCH(QString, mode);
+        QStringList args{"derive", example(scene.toUtf8().constData()), "--format", "json"};
+        if (!mode.isEmpty()) args << mode;
+        const Run derived = run(args);
+        QCOMPARE(derived.exitCode, 0);
+        const QJsonObject d = QJsonDocument::fromJson(derived.out).object();
+        for (const char* key : {"B", "C", "g", "Q", "steps"}) QVERIFY2(d.contains(key), key);
+        const int n = d["B"].toArray().size();
+        QStringList q, qd;
+        for (int i = 0; i < n; ++i) {
+            q << QString::number(0.3 + 0.4 * i);
+            qd << QString::number(0.7 - 0.5 * i);
+        }
+        const Run numeric = run({"eval", example(scene.toUtf8().constData()), "--q", q.join(','), "--qd", qd.join(',')});
+        QCOMPARE(numeric.exitCode, 0);
+        const QJsonObject e = QJsonDocument::fromJson(numeric.out).object();
+
+        // every symbol the expressions may use: state, time, the scene's parameters (and
+        // in --symbolic mode the textbook symbols, whose values derive reports per step
+        // 0 only as names: so compare that mode's structure, not its numbers)
+        GiNaC::symtab table;
+        GiNaC::lst state;
+        for (int i = 0; i < n; ++i) {
+            const GiNaC::symbol qi("q" + std::to_string(i + 1)), qdi("qd" + std::to_string(i + 1));
+            table[qi.get_name()] = qi;
+            table[qdi.get_name()] = qdi;
+            state.append(qi == q[i].toDouble());
+            state.append(qdi == qd[i].toDouble());
+        }
+        GiNaC::parser reader(table);
+        const auto value = [&](const QJsonValue& expr) {
+            const GiNaC::ex parsed = reader(expr.toString().toStdString());
+            GiNaC::ex v = parsed.subs(state);
+            for (const auto& [name, symbol] : reader.get_syms())
+                if (!table.count(name)) v = v.subs(symbol == parameterValue(scene, name));
+            return GiNaC::ex_to<GiNaC::numeric>(v.evalf()).to_double();
+        };
+        if (mode == "--symbolic") {
+            QVERIFY(d["B"].toArray()[0].toArray()[0].toString().contains("m1"));
+            return;
+        }
+        for (int i = 0; i < n; ++i) {
+            const double g = value(d["g"].toArray()[i]);
+            QVERIFY2(std::abs(g - e["g"].toArray()[i].toDouble()) < 1e-9 * std::max(1.0, std::abs(g)), qPrintable(QString("g%1").arg(i + 1)));
+            for (int j = 0; j < n; ++j) {
+                const double b = value(d["B"].toArray()[i].toArray()[j]), c = value(d["C"].toArray()[i].toArray()[j]);
+                QVERIFY(std::abs(b - e["B"].toArray()[i].toArray()[j].toDouble()) < 1e-9 * std::max(1.0, std::abs(b)));
+                QVERIFY(std::abs(c - e["C"].toArray()[i].toArray()[j].toDouble()) < 1e-9 * std::max(1.0, std::abs(c)));
+            }
+        }
+    }
+
+    void deriveTextIsTheTextbookForm() {
+        const Run r = run({"derive", example("planar_2r.json"), "--steps", "7-8"});
+        QCOMPARE(r.exitCode, 0);
+        const QString out = QString::fromUtf8(r.out);
+        QVERIFY2(out.contains(QString::fromUtf8("I1 + m1 ℓc1² + I2 + m2 (a1² + ℓc2² + 2 a1 ℓc2 c2)")), qPrintable(out));
+        QVERIFY(out.contains(QString::fromUtf8("I2 + m2 (ℓc2² + a1 ℓc2 c2)")));
+        QVERIFY(out.contains(QString::fromUtf8("−m2 a1 ℓc2 s2 q̇2")));
+        QVERIFY(!out.contains("Step 6"));  // --steps 7-8 shows only those
+        const Run again = run({"derive", example("planar_2r.json"), "--steps", "7-8"});
+        QCOMPARE(again.out, r.out);  // deterministic from run to run
+    }
+
+    void deriveLatexIsACompleteDocument() {
+        const Run r = run({"derive", example("scara.json"), "--format", "latex"});
+        QCOMPARE(r.exitCode, 0);
+        const QByteArray& tex = r.out;
+        QVERIFY(tex.startsWith("\\documentclass"));
+        QVERIFY(tex.trimmed().endsWith("\\end{document}"));
+        QCOMPARE(tex.count('{'), tex.count('}'));
+        QCOMPARE(tex.count("\\["), tex.count("\\]"));
+        for (int step = 0; step <= 8; ++step) QVERIFY(tex.contains(QString("Step %1:").arg(step).toUtf8()));
     }
 
     void badCommandLineGivesExitCode2() {
