@@ -199,6 +199,7 @@ private slots:
         QTest::addColumn<QString>("latex");
         auto row = [](const char* n, const char* t, const char* l) { QTest::newRow(n) << QString(n) << QString(t) << QString(l); };
         row("qd1", "q̇1", "\\dot{q}_{1}");
+        row("qdd2", "q̈2", "\\ddot{q}_{2}");
         row("q1", "q1", "q_{1}");
         row("theta1", "θ1", "\\theta_{1}");
         row("theta1_dot", "θ̇1", "\\dot{\\theta}_{1}");

@@ -258,7 +258,11 @@ private:
             }
         }
         std::string stem = name;
-        if (startsWith(name, "qd") && allDigits(name.substr(2))) {
+        if (startsWith(name, "qdd") && allDigits(name.substr(3))) {  // accelerations: q̈1
+            i.kind = Kind::Velocity;
+            i.second = true;
+            stem = i.base = "q" + name.substr(3);
+        } else if (startsWith(name, "qd") && allDigits(name.substr(2))) {
             i.kind = Kind::Velocity;
             stem = i.base = "q" + name.substr(2);
         } else if (endsWith(name, "_dot") || endsWith(name, "_ddot")) {
