@@ -2,6 +2,8 @@
 // B q̈ + C q̇ + g = Q at one state, as one JSON object.
 #include <iostream>
 
+#include <Eigen/Cholesky>
+
 #include <nlohmann/json.hpp>
 
 #include "app/cli_options.hpp"
@@ -13,7 +15,10 @@
 #include "core/dynamics/gravity.hpp"
 #include "core/dynamics/mass_matrix.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
+#include "core/model/diagnostics.hpp"
 #include "core/simulation/generalized_forces.hpp"
+#include "core/symbolic/compiled_derivation.hpp"
+#include "core/symbolic/lagrangian_derivation.hpp"
 
 namespace ll::cli {
 namespace {
@@ -30,12 +35,50 @@ nlohmann::json toJson(const Eigen::MatrixXd& M) {
 
 nlohmann::json toJson(const Eigen::VectorXd& v) { return std::vector<double>(v.data(), v.data() + v.size()); }
 
+// A Lagrangian system: the same keys from its derivation, compiled once. With --tau the
+// inputs (what Q is at rest) are replaced and friction (what vanishes at rest) stays.
+int evalLagrangian(const Scene& scene, const Options& options) {
+    const int n = scene.dof();
+    const Eigen::VectorXd q = options.has("q") ? options.vector("q", n) : scene.initial.q;
+    const Eigen::VectorXd qd = options.has("qd") ? options.vector("qd", n) : scene.initial.qd;
+    const double t = options.number("t", 0.0);
+    const symbolic::Derivation d = symbolic::deriveLagrangian(scene, symbolic::ParameterMode::Numeric);
+    const symbolic::CompiledDerivation model(d);
+    symbolic::ModelTerms m = model.terms(q, qd, t);
+    if (options.has("tau")) m.Q += options.vector("tau", n) - model.terms(q, Eigen::VectorXd::Zero(n), t).Q;
+    const Eigen::LLT<Eigen::MatrixXd> llt(m.B);
+    if (llt.info() != Eigen::Success)
+        throw InputError("--q", "the mass matrix B(q) is not positive definite at this state: the coordinates are "
+                                "not independent here");
+    const Eigen::VectorXd qdd = llt.solve(m.Q - m.C * qd - m.g);
+
+    nlohmann::ordered_json out;
+    out["B"] = toJson(m.B);
+    out["C"] = toJson(m.C);
+    out["g"] = toJson(m.g);
+    out["Q"] = toJson(m.Q);
+    out["qdd"] = toJson(qdd);
+    out["Ekin"] = m.Ekin;
+    out["Epot"] = m.Epot;
+    out["t"] = t;
+    if (!options.has("tau")) {
+        std::vector<int> actuated;
+        for (int j : d.actuated) actuated.push_back(j + 1);
+        out["actuated_joints"] = actuated;
+        out["underactuated"] = d.underactuated;
+    }
+    out["coordinates"] = d.coordinateNames;
+    std::cout << out.dump(2) << '\n';
+    return 0;
+}
+
 }  // namespace
 
 int evalCommand(const Args& args) {
     const Options options(args, {"q", "qd", "t", "tau"});
     if (options.positional().size() != 1) throw UsageError("usage: lagrangelab eval SCENE --q v1,v2,... --qd v1,... [--t T] [--tau v1,...]");
     const Scene scene = loadSceneReportingWarnings(options.positional()[0]);
+    if (scene.lagrangian) return evalLagrangian(scene, options);
     const RobotModel& robot = scene.robot;
     const int n = robot.dof();
     const Eigen::VectorXd q = options.has("q") ? options.vector("q", n) : scene.initial.q;

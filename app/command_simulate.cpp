@@ -48,6 +48,7 @@ void printSummary(const Scene& scene, const SimulationSettings& settings, const 
                  perSecond > 0 ? 1.0 / perSecond : 0.0);
     std::fprintf(stderr, "energy: max |E - E0 - W| = %.3g J, max |dE|/E = %.3g (W: work of friction and torques)\n",
                  s.maxEnergyError, s.maxRelEnergyError);
+    if (scene.lagrangian) return;  // its inputs include `forces`: `eval` and `derive` report them
     const int n = scene.robot.dof();
     const std::vector<int> inputs = actuatedJoints(scene.effects, n);
     if (static_cast<int>(inputs.size()) < n) {

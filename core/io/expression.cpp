@@ -108,9 +108,73 @@ std::string describeUnknownSymbol(const std::string& text, const std::string& wh
            " (known: " + knownList + ")";
 }
 
-std::string describePole(const std::string& text, const std::string& what) {
-    if (what.find("division by zero") != std::string::npos) return "division by zero in " + quoted(text);
+// Index just past the ')' that closes the '(' at `open`, or npos.
+std::size_t pastClosing(const std::string& text, std::size_t open) {
+    int depth = 0;
+    for (std::size_t i = open; i < text.size(); ++i) {
+        if (text[i] == '(') ++depth;
+        if (text[i] == ')' && --depth == 0) return i + 1;
+    }
+    return std::string::npos;
+}
+
+// The end (exclusive) of the operand of a '/' that starts at `from`: an optional sign,
+// then a number, a name, a call f(...) or a parenthesised group, then any ^ exponent.
+std::size_t operandEnd(const std::string& text, std::size_t from) {
+    std::size_t i = text.find_first_not_of(" \t\n", from);
+    if (i == std::string::npos) return text.size();
+    if (text[i] == '-' || text[i] == '+') i = text.find_first_not_of(" \t\n", i + 1);
+    if (i == std::string::npos) return text.size();
+    if (text[i] == '(') {
+        i = pastClosing(text, i);
+    } else if (std::isalpha(static_cast<unsigned char>(text[i]))) {
+        while (i < text.size() && isIdentifierChar(text[i])) ++i;
+        const std::size_t next = text.find_first_not_of(" \t\n", i);
+        if (next != std::string::npos && text[next] == '(') i = pastClosing(text, next);
+    } else {
+        while (i < text.size() && (std::isdigit(static_cast<unsigned char>(text[i])) || text[i] == '.')) ++i;
+        if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
+            ++i;
+            if (i < text.size() && (text[i] == '-' || text[i] == '+')) ++i;
+            while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i]))) ++i;
+        }
+    }
+    if (i == std::string::npos) return text.size();
+    const std::size_t next = text.find_first_not_of(" \t\n", i);
+    if (next != std::string::npos && text[next] == '^') return operandEnd(text, next + 1);
+    return i;
+}
+
+// 1-based position of the first '/' whose divisor is zero once `values` are put in, or 0.
+std::size_t zeroDivisorPosition(const std::string& text, const GiNaC::symtab& symbols, const GiNaC::lst& values) {
+    for (std::size_t slash = text.find('/'); slash != std::string::npos; slash = text.find('/', slash + 1)) {
+        const std::string divisor = text.substr(slash + 1, operandEnd(text, slash + 1) - slash - 1);
+        try {
+            GiNaC::parser parser(symbols, /*strict=*/true);
+            std::istringstream input(divisor);
+            const GiNaC::ex value = parser(input).subs(values).evalf();
+            if (value.is_zero()) return slash + 1;
+        } catch (const std::exception&) {
+            // not a divisor that reads alone (or itself singular): look further
+        } catch (...) {
+        }
+    }
+    return 0;
+}
+
+std::string divisorNote(std::size_t position) {
+    return position == 0 ? "" : " (the divisor after the '/' at position " + std::to_string(position) + " is zero)";
+}
+
+std::string describePole(const std::string& text, const std::string& what, std::size_t divisor = 0) {
+    if (what.find("division by zero") != std::string::npos)
+        return "division by zero in " + quoted(text) + divisorNote(divisor);
     return "singular value in " + quoted(text) + " (" + what + ")";
+}
+
+GiNaC::symtab withPi(GiNaC::symtab symbols) {
+    symbols["pi"] = GiNaC::Pi;
+    return symbols;
 }
 
 const std::set<std::string>& reservedWords() {
@@ -158,27 +222,45 @@ double ParameterTable::define(const std::string& field, const std::string& name,
 }
 
 GiNaC::ex ParameterTable::parse(const std::string& field, const std::string& text) const {
+    return parse(field, text, {}, false);
+}
+
+GiNaC::ex ParameterTable::parse(const std::string& field, const std::string& text,
+                                const std::vector<GiNaC::symbol>& extra) const {
+    return parse(field, text, extra, true);
+}
+
+GiNaC::ex ParameterTable::parse(const std::string& field, const std::string& text,
+                                const std::vector<GiNaC::symbol>& extra, bool checkValues) const {
     if (text.find_first_not_of(" \t\n") == std::string::npos)
         throw InputError(field, "empty expression (expected a number or an expression of the parameters)");
     GiNaC::symtab symbols = symbols_;
+    std::vector<std::string> known;
+    for (const GiNaC::symbol& s : extra) {
+        symbols[s.get_name()] = s;
+        known.push_back(s.get_name());
+    }
+    known.insert(known.end(), names_.begin(), names_.end());
     symbols["pi"] = GiNaC::Pi;
     std::istringstream input(text);
     try {
         GiNaC::parser parser(symbols, /*strict=*/true);
-        return parser(input);
+        const GiNaC::ex expression = parser(input);
+        if (checkValues) (void)expression.subs(values());  // throws for x/(k-2) with k = 2
+        return expression;
     } catch (const GiNaC::parse_error& e) {
         input.clear();
         throw InputError(field, describeParseError(text, e.what(), input.tellg()));
     } catch (const GiNaC::pole_error& e) {
-        throw InputError(field, describePole(text, e.what()));
+        throw InputError(field, describePole(text, e.what(), zeroDivisorPosition(text, symbols, values())));
     } catch (const cln::division_by_0_exception&) {
-        throw InputError(field, "division by zero in " + quoted(text));
+        throw InputError(field, "division by zero in " + quoted(text) + divisorNote(zeroDivisorPosition(text, symbols, values())));
     } catch (const cln::read_number_exception&) {
         throw InputError(field, "syntax error in " + quoted(text) + ": malformed number");
     } catch (const std::invalid_argument& e) {
         const std::string what = e.what();
         if (what.find("find_or_insert_symbol") != std::string::npos)  // strict mode refused a name
-            throw InputError(field, describeUnknownSymbol(text, what, names_));
+            throw InputError(field, describeUnknownSymbol(text, what, known));
         throw InputError(field, "cannot parse " + quoted(text) + ": " + what);
     } catch (const std::exception& e) {
         throw InputError(field, "cannot parse " + quoted(text) + ": " + e.what());
@@ -214,9 +296,10 @@ double ParameterTable::toNumber(const std::string& field, const std::string& tex
     } catch (const InputError&) {
         throw;
     } catch (const GiNaC::pole_error& e) {
-        throw InputError(field, describePole(text, e.what()));
+        throw InputError(field, describePole(text, e.what(), zeroDivisorPosition(text, withPi(symbols_), values())));
     } catch (const cln::division_by_0_exception&) {
-        throw InputError(field, "division by zero in " + quoted(text));
+        throw InputError(field, "division by zero in " + quoted(text) +
+                                    divisorNote(zeroDivisorPosition(text, withPi(symbols_), values())));
     } catch (const cln::floating_point_overflow_exception&) {
         throw InputError(field, "value is not finite (overflow) in " + quoted(text));
     } catch (const cln::floating_point_underflow_exception&) {

@@ -25,6 +25,11 @@ public:
     // The expression with the parameter symbols kept (pi is GiNaC's Pi). Throws
     // InputError naming `field` for a syntax error or an unknown symbol.
     GiNaC::ex parse(const std::string& field, const std::string& text) const;
+    // The same, where the text may also use the `extra` symbols (a Lagrangian's
+    // coordinates, velocities and t; listed first in unknown-symbol messages), and
+    // where substituting the parameter values must not divide by zero ("x/(k-2)" with
+    // k = 2 fails, naming the position of the '/').
+    GiNaC::ex parse(const std::string& field, const std::string& text, const std::vector<GiNaC::symbol>& extra) const;
     // The expression's value with every parameter substituted. Throws InputError
     // naming `field` also for division by zero, a complex or a non-finite value.
     double evaluate(const std::string& field, const std::string& text) const;
@@ -53,6 +58,8 @@ private:
     const Parameter& find(const std::string& name) const;
     void add(const std::string& field, const std::string& name, double value, GiNaC::ex definition);
     double toNumber(const std::string& field, const std::string& text, const GiNaC::ex& expression) const;
+    GiNaC::ex parse(const std::string& field, const std::string& text, const std::vector<GiNaC::symbol>& extra,
+                    bool checkValues) const;
 
     std::vector<std::string> names_;
     std::vector<Parameter> parameters_;  // parallel to names_

@@ -15,6 +15,7 @@
 #include <fstream>
 #include <functional>
 #include <optional>
+#include <regex>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -23,6 +24,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/io/expression.hpp"
+#include "core/io/lagrangian_fields.hpp"
 #include "core/model/validation.hpp"
 
 namespace ll {
@@ -177,7 +179,8 @@ public:
     Scene read(const Json& root) {
         readFormat(root);
         checkKeys(root, "",
-                  {"format", "name", "description", "source", "parameters", "robot", "effects", "initial", "simulation"});
+                  {"format", "name", "description", "source", "parameters", "robot", "lagrangian", "effects", "initial",
+                   "simulation"});
         const std::size_t errorsBefore = errors_.size();
         if (const Json* parameters = member(root, "parameters")) readParameters(*parameters);
         // Every later field may use the parameters: a broken one would echo everywhere.
@@ -188,7 +191,18 @@ public:
             readText(*description, "description", scene_.description);
         if (const Json* source = member(root, "source")) readText(*source, "source", scene_.source);
         scene_.robot.name = scene_.name;
-        if (const Json* robot = required(root, "", "robot", "the DH table and links")) readRobot(*robot);
+        // Exactly one of a robot (DH table) and a Lagrangian typed by hand.
+        const Json* robot = member(root, "robot");
+        const Json* lagrangian = member(root, "lagrangian");
+        if (robot && lagrangian)
+            error("lagrangian", "a scene has either \"robot\" or \"lagrangian\", not both");
+        else if (robot)
+            readRobot(*robot);
+        else if (lagrangian)
+            readLagrangian(*lagrangian);
+        else
+            error("robot", "required field is missing (the DH table and links; or \"lagrangian\" for a system "
+                           "given by its coordinates, E_kin and E_pot)");
         if (const Json* effects = member(root, "effects")) readEffects(*effects);
         readInitial(member(root, "initial"));
         if (const Json* simulation = member(root, "simulation")) readSimulation(*simulation);
@@ -349,6 +363,118 @@ private:
             readJoint((*joints)[i], jointField(static_cast<int>(i), ""), scene_.robot.joints[i]);
     }
 
+    // The "lagrangian" block (core/model/lagrangian_spec.hpp): every expression is parsed
+    // here, so its errors name the field and the position when the file is read.
+    void readLagrangian(const Json& value) {
+        const std::string path = "lagrangian";
+        if (!checkObject(value, path, {"coordinates", "kinetic", "potential", "forces", "bodies"})) return;
+        LagrangianSpec spec;
+        if (const Json* coordinates =
+                required(value, path, "coordinates", "the generalized coordinates by name, e.g. [\"theta1\", \"theta2\"]")) {
+            if (!coordinates->is_array() || coordinates->empty())
+                error("lagrangian.coordinates", "expected an array of names [\"x\", ...], got " + describe(*coordinates));
+            else
+                for (std::size_t i = 0; i < coordinates->size(); ++i) {
+                    const Json& name = (*coordinates)[i];
+                    if (name.is_string())
+                        spec.coordinates.push_back(name.get<std::string>());
+                    else
+                        error(item("lagrangian.coordinates", i), "expected a name \"...\", got " + describe(name));
+                }
+        }
+        const std::size_t errorsBefore = errors_.size();
+        for (const Diagnostic& d : checkCoordinateNames(spec.coordinates, parameters_)) errors_.push_back(d);
+        // Without usable names every expression would echo the problem.
+        const bool namesOk = errors_.size() == errorsBefore && !spec.coordinates.empty();
+        const LagrangianSymbols symbols = lagrangianSymbols(spec.coordinates);
+        const auto expression = [&](const Json& text, const std::string& field, LagrangianField kind) -> std::string {
+            if (!text.is_string() && !text.is_number()) {
+                error(field, "expected an expression \"...\" or a number, got " + describe(text));
+                return "0";
+            }
+            const std::string written = text.is_string() ? text.get<std::string>() : text.dump();
+            if (namesOk) try {
+                    (void)parseLagrangianField(parameters_, symbols, field, written, kind);
+                } catch (const InputError& e) {
+                    errors_.insert(errors_.end(), e.diagnostics().begin(), e.diagnostics().end());
+                }
+            return written;
+        };
+        if (const Json* kinetic = required(value, path, "kinetic", "E_kin in the coordinates and velocities <name>_dot"))
+            spec.kinetic = expression(*kinetic, "lagrangian.kinetic", LagrangianField::Kinetic);
+        if (const Json* potential = member(value, "potential"))
+            spec.potential = expression(*potential, "lagrangian.potential", LagrangianField::Potential);
+        if (const Json* forces = member(value, "forces")) {
+            if (!forces->is_array())
+                error("lagrangian.forces", "expected an array of expressions, one per coordinate, got " + describe(*forces));
+            else
+                for (std::size_t i = 0; i < forces->size(); ++i)
+                    spec.forces.push_back(expression((*forces)[i], item("lagrangian.forces", i), LagrangianField::Force));
+        }
+        if (const Json* bodies = member(value, "bodies")) {
+            if (!bodies->is_array())
+                error("lagrangian.bodies", "expected an array of objects [{...}, ...], got " + describe(*bodies));
+            else
+                for (std::size_t i = 0; i < bodies->size(); ++i) {
+                    VisualBody body;
+                    readBody((*bodies)[i], item("lagrangian.bodies", i), body, expression);
+                    spec.bodies.push_back(std::move(body));
+                }
+        }
+        scene_.lagrangian = std::move(spec);
+    }
+
+    template <class Expression>
+    void readBody(const Json& body, const std::string& path, VisualBody& target, const Expression& expression) {
+        if (!body.is_object()) {
+            error(path, "expected an object {...}, got " + describe(body));
+            return;
+        }
+        static const Keys shapes = {"box", "sphere", "cylinder", "rod"};
+        std::optional<std::size_t> shape;
+        if (const Json* value = required(body, path, "shape", "\"box\", \"sphere\", \"cylinder\" or \"rod\""))
+            shape = readChoice(*value, child(path, "shape"), shapes);
+        if (shape) target.shape = static_cast<BodyShape>(*shape);
+        const bool rod = shape && target.shape == BodyShape::Rod;
+        if (shape)
+            checkKeys(body, path,
+                      rod ? Keys{"name", "shape", "size", "position", "end", "color"}
+                          : Keys{"name", "shape", "size", "position", "angle", "axis", "color"},
+                      " for a " + shapes[*shape]);
+        if (const Json* name = member(body, "name")) readText(*name, child(path, "name"), target.name);
+        if (const Json* color = member(body, "color")) {
+            readText(*color, child(path, "color"), target.color);
+            static const std::regex hex("#[0-9A-Fa-f]{6}");
+            if (color->is_string() && !std::regex_match(target.color, hex))
+                error(child(path, "color"), "expected a colour \"#rrggbb\", got " + describe(*color));
+        }
+        if (const Json* size = required(body, path, "size", "the shape's dimensions")) {
+            const std::string field = child(path, "size");
+            if (!size->is_array()) {
+                error(field, "expected an array of numbers or expressions [...], got " + describe(*size));
+            } else {
+                target.size.assign(size->size(), 0.0);
+                for (std::size_t k = 0; k < size->size(); ++k)
+                    if (auto n = number((*size)[k], item(field, k))) target.size[k] = *n;
+            }
+        }
+        const auto point = [&](const char* key, std::array<std::string, 3>& out) {
+            const Json* value = member(body, key);
+            if (!value) return;
+            const std::string field = child(path, key);
+            if (!value->is_array() || value->size() != 3) {
+                error(field, "expected an array of 3 expressions of the coordinates [x, y, z], got " + describe(*value));
+                return;
+            }
+            for (std::size_t k = 0; k < 3; ++k) out[k] = expression((*value)[k], item(field, k), LagrangianField::Pose);
+        };
+        point("position", target.position);
+        if (rod) point("end", target.end);
+        if (const Json* angle = member(body, "angle"))
+            target.angle = expression(*angle, child(path, "angle"), LagrangianField::Pose);
+        readVector3(body, path, "axis", target.axis);
+    }
+
     void readBase(const Json& base) {
         if (!checkObject(base, "robot.base", {"position", "rpy"})) return;
         Eigen::Vector3d position = Eigen::Vector3d::Zero(), rpy = Eigen::Vector3d::Zero();
@@ -494,7 +620,7 @@ private:
 
     void readInitial(const Json* initial) {
         if (initial && !checkObject(*initial, "initial", {"q", "qd"})) initial = nullptr;
-        const Eigen::Index n = scene_.robot.dof();
+        const Eigen::Index n = scene_.dof();
         scene_.initial.q = readVector(initial, "q", n);
         scene_.initial.qd = readVector(initial, "qd", n);
     }
@@ -535,7 +661,10 @@ public:
             Json& parameters = root["parameters"] = Json::object();
             for (const auto& [name, value] : scene_.parameters) parameters[name] = number("parameters." + name, value);
         }
-        root["robot"] = robot();
+        if (scene_.lagrangian)
+            root["lagrangian"] = lagrangian(*scene_.lagrangian);
+        else
+            root["robot"] = robot();
         if (Json e = effects(); !e.empty()) root["effects"] = std::move(e);
         Json& initial = root["initial"] = Json::object();
         if (scene_.initial.q.size() > 0) initial["q"] = vector("initial.q", scene_.initial.q);
@@ -601,6 +730,53 @@ private:
         Json numbers = Json::array();
         for (double angle : angles) numbers.push_back(angle);
         return numbers;
+    }
+
+    // An expression as written; one that is a plain number is written as the number.
+    static Json expression(const std::string& text) {
+        try {
+            const Json parsed = Json::parse(text);
+            if (parsed.is_number()) return parsed;
+        } catch (const Json::exception&) {
+        }
+        return text;
+    }
+
+    static Json expressions(const std::array<std::string, 3>& texts) {
+        return Json::array({expression(texts[0]), expression(texts[1]), expression(texts[2])});
+    }
+
+    Json lagrangian(const LagrangianSpec& spec) const {
+        Json out;
+        out["coordinates"] = spec.coordinates;
+        out["kinetic"] = expression(spec.kinetic);
+        out["potential"] = expression(spec.potential);
+        if (!spec.forces.empty()) {
+            Json& forces = out["forces"] = Json::array();
+            for (const std::string& force : spec.forces) forces.push_back(expression(force));
+        }
+        if (spec.bodies.empty()) return out;
+        Json& bodies = out["bodies"] = Json::array();
+        for (std::size_t i = 0; i < spec.bodies.size(); ++i) {
+            const VisualBody& body = spec.bodies[i];
+            const std::string path = item("lagrangian.bodies", i);
+            Json entry;
+            if (!body.name.empty()) entry["name"] = body.name;
+            entry["shape"] = toString(body.shape);
+            entry["size"] = vector(child(path, "size"), Eigen::Map<const Eigen::VectorXd>(
+                                                            body.size.data(), static_cast<Eigen::Index>(body.size.size())));
+            entry["position"] = expressions(body.position);
+            if (body.shape == BodyShape::Rod) {
+                entry["end"] = expressions(body.end);
+            } else {
+                if (body.angle != "0") entry["angle"] = expression(body.angle);
+                if (body.axis != Eigen::Vector3d::UnitZ() || hasExpressionUnder(child(path, "axis")))
+                    entry["axis"] = vector(child(path, "axis"), body.axis);
+            }
+            if (!body.color.empty()) entry["color"] = body.color;
+            bodies.push_back(std::move(entry));
+        }
+        return out;
     }
 
     Json robot() const {

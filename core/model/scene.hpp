@@ -2,12 +2,14 @@
 // A scene: everything one scene file holds. One Scene feeds the CLI, the GUI and
 // the headless renderer alike.
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "core/model/effects.hpp"
+#include "core/model/lagrangian_spec.hpp"
 #include "core/model/robot_model.hpp"
 
 namespace ll {
@@ -36,10 +38,16 @@ struct Scene {
     // Fields written as expressions, by field path (e.g. "robot.joints[2].a" ->
     // "l1/2"), so a symbolic derivation can keep the symbols and saving keeps the text.
     std::map<std::string, std::string> expressions;
-    RobotModel robot;
+    RobotModel robot;  // no joints when `lagrangian` is set
+    // A system typed by hand as E_kin, E_pot and Q instead of a robot (the file's
+    // "lagrangian" block); then effects name its coordinates by number.
+    std::optional<LagrangianSpec> lagrangian;
     Effects effects;
     InitialState initial;
     SimulationSettings simulation;
+
+    // Number of generalized coordinates: the Lagrangian's, or the robot's joints.
+    int dof() const { return lagrangian ? lagrangian->dof() : robot.dof(); }
 };
 
 }  // namespace ll

@@ -83,6 +83,32 @@ void validateMassMatrix(std::vector<Diagnostic>& out, const RobotModel& model, c
                       " (or a link after it) mass off the joint axis or inertia about it");
 }
 
+// The structure of a hand-typed Lagrangian; its expressions are checked when they are
+// parsed (scene file) and derived (core/symbolic/lagrangian_derivation).
+void validateLagrangian(std::vector<Diagnostic>& out, const Scene& scene) {
+    const LagrangianSpec& l = *scene.lagrangian;
+    if (!scene.robot.joints.empty())
+        error(out, "robot", "a scene has either a robot or a lagrangian, not both");
+    if (l.coordinates.empty()) error(out, "lagrangian.coordinates", "a Lagrangian system needs at least one coordinate");
+    if (!l.forces.empty() && l.forces.size() != l.coordinates.size())
+        error(out, "lagrangian.forces",
+              "has " + std::to_string(l.forces.size()) + " entries, one per coordinate (" +
+                  std::to_string(l.coordinates.size()) + ") or none are needed");
+    for (size_t b = 0; b < l.bodies.size(); ++b) {
+        const VisualBody& body = l.bodies[b];
+        const std::string f = "lagrangian.bodies[" + std::to_string(b + 1) + "]";
+        if (static_cast<int>(body.size.size()) != sizeCount(body.shape))
+            error(out, f + ".size",
+                  "a " + std::string(toString(body.shape)) + " takes " + std::to_string(sizeCount(body.shape)) +
+                      " numbers, got " + std::to_string(body.size.size()));
+        for (size_t k = 0; k < body.size.size(); ++k)
+            if (!(std::isfinite(body.size[k]) && body.size[k] > 0))
+                error(out, f + ".size[" + std::to_string(k + 1) + "]", "must be a finite number > 0, got " + fmt(body.size[k]));
+        if (!body.axis.allFinite() || body.axis.norm() == 0.0)
+            error(out, f + ".axis", "must be a finite nonzero direction");
+    }
+}
+
 }  // namespace
 
 std::vector<Diagnostic> validateRobot(const RobotModel& model) {
@@ -110,12 +136,19 @@ std::vector<Diagnostic> validateRobot(const RobotModel& model) {
 }
 
 std::vector<Diagnostic> validateScene(const Scene& scene) {
-    std::vector<Diagnostic> out = validateRobot(scene.robot);
-    const int n = scene.robot.dof();
+    std::vector<Diagnostic> out;
+    if (scene.lagrangian)
+        validateLagrangian(out, scene);
+    else
+        out = validateRobot(scene.robot);
+    const int n = scene.dof();
+    // A Lagrangian system's effects name its coordinates by number.
+    const std::string items = scene.lagrangian ? "coordinates" : "joints";
     const auto checkJoint = [&](const std::string& field, int joint) {
         if (joint < 0 || joint >= n)
             error(out, field + ".joint",
-                  "joint " + std::to_string(joint + 1) + " does not exist (the robot has joints 1.." +
+                  std::string(scene.lagrangian ? "coordinate " : "joint ") + std::to_string(joint + 1) +
+                      " does not exist (the " + (scene.lagrangian ? "system" : "robot") + " has " + items + " 1.." +
                       std::to_string(n) + ")");
     };
     const auto checkNonNegative = [&](const std::string& field, double value) {
@@ -123,6 +156,14 @@ std::vector<Diagnostic> validateScene(const Scene& scene) {
         if (value < 0) error(out, field, "must be >= 0, got " + fmt(value));
     };
     const Effects& e = scene.effects;
+    if (scene.lagrangian && e.gravity)
+        error(out, "effects.gravity",
+              "a Lagrangian system has no gravity effect: write it in the potential (lagrangian.potential, "
+              "e.g. m*g*y for height y), otherwise it would be modelled twice or not at all");
+    if (scene.lagrangian && !e.springs.empty())
+        error(out, "effects.springs",
+              "a Lagrangian system has no spring effect: write it in the potential (lagrangian.potential, "
+              "e.g. K*(x - rest)^2/2)");
     if (e.gravity)
         for (int k = 0; k < 3; ++k) requireFinite(out, "effects.gravity[" + std::to_string(k + 1) + "]", (*e.gravity)[k]);
     for (size_t s = 0; s < e.springs.size(); ++s) {
@@ -151,7 +192,8 @@ std::vector<Diagnostic> validateScene(const Scene& scene) {
     }
     const auto checkState = [&](const std::string& field, const Eigen::VectorXd& v) {
         if (v.size() != n) {
-            error(out, field, "has " + std::to_string(v.size()) + " entries, the robot has " + std::to_string(n) + " joints");
+            error(out, field, "has " + std::to_string(v.size()) + " entries, the " +
+                                  (scene.lagrangian ? "system" : "robot") + " has " + std::to_string(n) + " " + items);
             return;
         }
         for (int i = 0; i < n; ++i) requireFinite(out, field + "[" + std::to_string(i + 1) + "]", v[i]);

@@ -9,6 +9,10 @@
 // Warnings (the model still works): a principal-moment triangle inequality
 // violation (I1 + I2 >= I3 and permutations), which no physical body has but
 // widely used parameter sets do (Corke's PUMA 560 link 1, the Stanford arm link 5).
+// A Lagrangian scene (Scene::lagrangian) has no robot joints; its initial state has one
+// entry per coordinate, effects name coordinates, gravity and springs are errors (they
+// belong in the potential), `forces` has one entry per coordinate or none. Its
+// expressions are checked where they are parsed and derived, not here.
 #include <vector>
 
 #include "core/model/diagnostics.hpp"

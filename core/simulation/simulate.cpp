@@ -2,13 +2,16 @@
 
 #include <cmath>
 #include <ctime>
+#include <optional>
 #include <stdexcept>
 
 #include "core/dynamics/energy.hpp"
 #include "core/dynamics/mass_matrix.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
 #include "core/simulation/integrators.hpp"
+#include "core/simulation/lagrangian_ode.hpp"
 #include "core/simulation/robot_ode.hpp"
+#include "core/symbolic/lagrangian_derivation.hpp"
 
 namespace ll {
 
@@ -28,11 +31,13 @@ std::vector<double> outputTimes(double duration, double rate) {
 
 namespace {
 
-// Records one sample: state, energies, work of Q.
+// Records one sample: state, energies, work of Q. A Lagrangian system's energies come
+// from its compiled derivation, a robot's from the numeric dynamics.
 class Recorder {
 public:
-    Recorder(const Scene& scene, Trajectory& trajectory) : scene_(scene), traj_(trajectory), data_(scene.robot) {
-        traj_.n = scene.robot.dof();
+    Recorder(const Scene& scene, Trajectory& trajectory, const LagrangianOde* lagrangian)
+        : scene_(scene), traj_(trajectory), lagrangian_(lagrangian), data_(scene.robot) {
+        traj_.n = scene.dof();
     }
 
     void record(double t, const OdeState& x) {
@@ -42,10 +47,15 @@ public:
             q[i] = x[i];
             qd[i] = x[n + i];
         }
-        forwardKinematics(scene_.robot, data_, q);
-        computeMassMatrix(scene_.robot, data_);
-        const double Ekin = kineticEnergy(data_, qd);
-        const double Epot = potentialEnergy(scene_.robot, data_, scene_.effects, q);
+        double Ekin = 0.0, Epot = 0.0;
+        if (lagrangian_) {
+            lagrangian_->model().energies(x.data(), Ekin, Epot);
+        } else {
+            forwardKinematics(scene_.robot, data_, q);
+            computeMassMatrix(scene_.robot, data_);
+            Ekin = kineticEnergy(data_, qd);
+            Epot = potentialEnergy(scene_.robot, data_, scene_.effects, q);
+        }
         traj_.t.push_back(t);
         traj_.q.push_back(q);
         traj_.qd.push_back(qd);
@@ -58,6 +68,7 @@ public:
 private:
     const Scene& scene_;
     Trajectory& traj_;
+    const LagrangianOde* lagrangian_;
     RobotData data_;
 };
 
@@ -86,10 +97,19 @@ SimulationResult simulate(const Scene& scene, const SimulationSettings& settings
 
     SimulationResult result;
     result.stats.integrator = settings.integrator;
-    RobotOde ode(scene.robot, scene.effects);
-    OdeState x = ode.initialState(scene.initial.q, scene.initial.qd);
+    // A Lagrangian system is derived (exact numbers) and compiled once, before the clock
+    // starts; its input errors throw InputError here.
+    std::optional<LagrangianOde> lagrangian;
+    std::optional<RobotOde> robot;
+    if (scene.lagrangian)
+        lagrangian.emplace(symbolic::deriveLagrangian(scene, symbolic::ParameterMode::Numeric));
+    else
+        robot.emplace(scene.robot, scene.effects);
+    OdeSystem& ode = lagrangian ? static_cast<OdeSystem&>(*lagrangian) : *robot;
+    OdeState x = lagrangian ? lagrangian->initialState(scene.initial.q, scene.initial.qd)
+                            : robot->initialState(scene.initial.q, scene.initial.qd);
     const std::vector<double> times = outputTimes(settings.duration, settings.outputRate);
-    Recorder recorder(scene, result.trajectory);
+    Recorder recorder(scene, result.trajectory, lagrangian ? &*lagrangian : nullptr);
 
     const auto observe = [&](double t, const OdeState& state) {
         recorder.record(t, state);
@@ -112,7 +132,7 @@ SimulationResult simulate(const Scene& scene, const SimulationSettings& settings
         result.message = e.what();
     }
     result.stats.cpuSeconds = threadCpuSeconds() - cpuStart;
-    result.stats.rhsEvaluations = ode.evaluations();
+    result.stats.rhsEvaluations = lagrangian ? lagrangian->evaluations() : robot->evaluations();
     result.stats.simulatedSeconds = result.trajectory.t.empty() ? 0.0 : result.trajectory.t.back();
     energyBalance(result.trajectory, result.stats);
     return result;

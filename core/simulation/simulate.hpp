@@ -15,7 +15,9 @@ using ProgressCallback = std::function<void(double fraction)>;  // 0..1, from th
 // Integrates the scene's equations of motion from its initial state over
 // settings.duration, recording t, q, q̇, E_kin, E_pot, E and the work of Q at
 // settings.outputRate. The scene must be valid (requireValidScene); an unknown
-// integrator throws std::invalid_argument before anything runs.
+// integrator throws std::invalid_argument before anything runs. A Lagrangian scene is
+// derived and compiled first (LagrangianOde); its input errors (E_kin not quadratic,
+// dependent coordinates, a conservative Q) throw InputError before anything runs.
 SimulationResult simulate(const Scene& scene, const SimulationSettings& settings,
                           const ProgressCallback& progress = {}, const std::atomic<bool>* cancel = nullptr);
 

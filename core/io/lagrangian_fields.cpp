@@ -1,0 +1,113 @@
+#include "core/io/lagrangian_fields.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <regex>
+
+#include "core/model/diagnostics.hpp"
+
+namespace ll {
+namespace {
+
+bool isIdentifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// 1-based position of the first whole-word `name` in `text`, or 0.
+std::size_t wordPosition(const std::string& text, const std::string& name) {
+    for (std::size_t at = text.find(name); at != std::string::npos; at = text.find(name, at + 1)) {
+        const std::size_t end = at + name.size();
+        if ((at == 0 || !isIdentifierChar(text[at - 1])) && (end == text.size() || !isIdentifierChar(text[end])))
+            return at + 1;
+    }
+    return 0;
+}
+
+std::string at(const std::string& text, const std::string& name) {
+    const std::size_t position = wordPosition(text, name);
+    return position == 0 ? "" : " at position " + std::to_string(position);
+}
+
+// The first of `symbols` that e depends on, or nullptr.
+const GiNaC::symbol* firstUsed(const GiNaC::ex& e, const std::vector<GiNaC::symbol>& symbols) {
+    for (const GiNaC::symbol& s : symbols)
+        if (e.has(s)) return &s;
+    return nullptr;
+}
+
+}  // namespace
+
+LagrangianSymbols lagrangianSymbols(const std::vector<std::string>& coordinates) {
+    LagrangianSymbols s;
+    for (const std::string& name : coordinates) {
+        s.q.emplace_back(name);
+        s.qd.emplace_back(name + "_dot");
+        s.qdd.emplace_back(name + "_ddot");
+    }
+    return s;
+}
+
+std::optional<std::string> whyNotACoordinateName(const std::string& name, const std::vector<std::string>& taken) {
+    static const std::regex identifier("[A-Za-z][A-Za-z0-9_]*");
+    static const std::regex robotCoordinate("q[0-9]+");  // q1, q2 name coordinates here too
+    if (!std::regex_match(name, identifier))
+        return "'" + name + "' is not a name (a letter, then letters, digits or _)";
+    const auto endsWith = [&](const std::string& suffix) {
+        return name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
+    };
+    if (endsWith("_dot") || endsWith("_ddot"))
+        return "'" + name + "' ends in _dot or _ddot, which mark velocities and accelerations";
+    if (!std::regex_match(name, robotCoordinate))
+        if (auto why = ParameterTable::whyNotAName(name)) return why;
+    const std::string velocity = name + "_dot";
+    if (std::find(taken.begin(), taken.end(), name) != taken.end())
+        return "'" + name + "' is already taken (by a parameter, or an earlier coordinate or its velocity)";
+    if (std::find(taken.begin(), taken.end(), velocity) != taken.end())
+        return "the velocity of '" + name + "' would be '" + velocity + "', which is already taken";
+    return std::nullopt;
+}
+
+std::vector<Diagnostic> checkCoordinateNames(const std::vector<std::string>& coordinates,
+                                             const ParameterTable& parameters) {
+    std::vector<Diagnostic> out;
+    std::vector<std::string> taken = parameters.names();
+    for (std::size_t i = 0; i < coordinates.size(); ++i) {
+        if (auto why = whyNotACoordinateName(coordinates[i], taken))
+            out.push_back({Severity::Error, "lagrangian.coordinates[" + std::to_string(i + 1) + "]", *why});
+        taken.push_back(coordinates[i]);
+        taken.push_back(coordinates[i] + "_dot");
+    }
+    return out;
+}
+
+GiNaC::ex parseLagrangianField(const ParameterTable& parameters, const LagrangianSymbols& symbols,
+                               const std::string& field, const std::string& text, LagrangianField kind) {
+    // Every symbol is known to the parser, so that a misplaced one gets its own message.
+    std::vector<GiNaC::symbol> extra = symbols.q;
+    extra.insert(extra.end(), symbols.qd.begin(), symbols.qd.end());
+    extra.push_back(symbols.t);
+    const GiNaC::ex e = parameters.parse(field, text, extra);
+    const bool velocities = kind == LagrangianField::Kinetic || kind == LagrangianField::Force;
+    const bool time = kind == LagrangianField::Force || kind == LagrangianField::Pose;
+    if (!velocities)
+        if (const GiNaC::symbol* v = firstUsed(e, symbols.qd)) {
+            if (kind == LagrangianField::Potential)
+                throw InputError(field, "the potential energy depends on the velocity '" + v->get_name() + "'" +
+                                            at(text, v->get_name()) + " in \"" + text +
+                                            "\": E_pot may depend on the coordinates only (velocity-dependent "
+                                            "forces such as friction go in \"forces\", kinetic terms in \"kinetic\")");
+            throw InputError(field, "a pose may depend on the coordinates and t only, not on the velocity '" +
+                                        v->get_name() + "'" + at(text, v->get_name()) + " in \"" + text + "\"");
+        }
+    if (!time && e.has(symbols.t))
+        throw InputError(field, std::string(kind == LagrangianField::Kinetic ? "E_kin" : "E_pot") +
+                                    " may not depend on time: 't'" + at(text, "t") + " in \"" + text +
+                                    "\" (a time-dependent input goes in \"forces\" or effects.torques)");
+    return e;
+}
+
+std::string lagrangianForceField(int coordinate0) { return "lagrangian.forces[" + std::to_string(coordinate0 + 1) + "]"; }
+
+std::string lagrangianBodyField(int body0, const std::string& key) {
+    return "lagrangian.bodies[" + std::to_string(body0 + 1) + "]" + (key.empty() ? "" : "." + key);
+}
+
+}  // namespace ll

@@ -1,0 +1,49 @@
+#include "core/simulation/lagrangian_ode.hpp"
+
+#include <string>
+
+#include "core/simulation/integrators.hpp"
+
+namespace ll {
+
+LagrangianOde::LagrangianOde(const symbolic::Derivation& derivation)
+    : n_(static_cast<int>(derivation.q.size())),
+      model_(derivation),
+      B_(Eigen::MatrixXd::Zero(n_, n_)),
+      rhs_(Eigen::VectorXd::Zero(n_)),
+      Q_(Eigen::VectorXd::Zero(n_)),
+      llt_(n_) {}
+
+OdeState LagrangianOde::initialState(const Eigen::VectorXd& q, const Eigen::VectorXd& qd) const {
+    OdeState x(2 * n_ + 1, 0.0);
+    for (int i = 0; i < n_; ++i) {
+        x[i] = q[i];
+        x[n_ + i] = qd[i];
+    }
+    return x;
+}
+
+void LagrangianOde::operator()(const OdeState& x, OdeState& dxdt, double t) {
+    ++evaluations_;
+    model_.dynamics(x.data(), t, B_, rhs_, Q_);
+    llt_.compute(B_);
+    if (llt_.info() != Eigen::Success) {
+        std::string q;
+        for (int i = 0; i < n_; ++i) q += (i ? ", " : "") + std::to_string(x[i]);
+        throw IntegrationError(t, x,
+                               "the mass matrix B(q) is not positive definite at t = " + std::to_string(t) +
+                                   " s, q = [" + q + "]: the coordinates are not independent there (a singular "
+                                   "configuration of the chosen coordinates); choose coordinates that stay "
+                                   "independent along the motion");
+    }
+    llt_.solveInPlace(rhs_);  // now q̈
+    double power = 0.0;
+    for (int i = 0; i < n_; ++i) {
+        dxdt[i] = x[n_ + i];
+        dxdt[n_ + i] = rhs_[i];
+        power += Q_[i] * x[n_ + i];
+    }
+    dxdt[2 * n_] = power;
+}
+
+}  // namespace ll
