@@ -75,6 +75,7 @@ private slots:
         QFETCH(QString, file);
         QFETCH(int, mode);
         const Scene scene = exampleScene(file.toStdString());
+        if (scene.lagrangian) QSKIP("a Lagrangian system, not a robot (tests/test_lagrangian_derivation.cpp)");
         DerivationOptions options;
         options.mode = ParameterMode(mode);
         const Derivation d = deriveRobot(scene, options);

@@ -15,8 +15,11 @@ using namespace ll;
 namespace {
 std::vector<std::string> exampleFiles() {
     std::vector<std::string> files;
+    // examples/hard/ holds scenes built to break things (a joint that moves no mass, a
+    // 1e4 s symplectic run...); test_hard_cases checks each one's own property.
     for (const auto& entry : std::filesystem::recursive_directory_iterator(LL_EXAMPLES_DIR))
-        if (entry.path().extension() == ".json") files.push_back(entry.path().string());
+        if (entry.path().extension() == ".json" && entry.path().parent_path().filename() != "hard")
+            files.push_back(entry.path().string());
     std::sort(files.begin(), files.end());
     return files;
 }
@@ -63,11 +66,11 @@ private slots:
                 expectError("asymmetric inertia", jointField(j, "inertia"), [](Joint& x) { x.link.inertia(0, 1) += 0.5; });
             }
             Scene scene = original;
-            scene.initial.q.resize(scene.robot.dof() + 1);
+            scene.initial.q.resize(scene.dof() + 1);
             scene.initial.q.setZero();
             QVERIFY(namesError(validateScene(scene), "initial.q"));
             scene = original;
-            scene.effects.springs.push_back({scene.robot.dof(), 1.0, 0.0});  // one past the last joint
+            scene.effects.springs.push_back({scene.dof(), 1.0, 0.0});  // one past the last joint (coordinate)
             QVERIFY(namesError(validateScene(scene), "effects.springs[" + std::to_string(scene.effects.springs.size()) + "].joint"));
             scene = original;
             scene.simulation.integrator = "rk45";
