@@ -63,7 +63,7 @@ private slots:
 
     void adaptiveMethodsMeetTheirTolerance_data() {
         QTest::addColumn<QString>("name");
-        for (const char* n : {"cash_karp54", "dopri5", "fehlberg78", "bulirsch_stoer"}) QTest::newRow(n) << n;
+        for (const char* n : {"cash_karp54", "dopri5", "fehlberg78", "bulirsch_stoer", "rosenbrock4"}) QTest::newRow(n) << n;
     }
     void adaptiveMethodsMeetTheirTolerance() {
         QFETCH(QString, name);

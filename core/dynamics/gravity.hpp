@@ -15,4 +15,11 @@ namespace ll {
 void computeGravity(const RobotModel& model, RobotData& data, const Effects& effects,
                     const Eigen::VectorXd& q);
 
+// The two parts of g(q) on their own, added into `out` (size n), so a right-hand side
+// composed from the declared effects computes only the terms it has.
+// Gravity g0 (world frame); requires forwardKinematics.
+void addGravityTorques(const RobotModel& model, const RobotData& data, const Eigen::Vector3d& g0, Eigen::VectorXd& out);
+// Joint springs K (q − rest).
+void addSpringTorques(const std::vector<JointSpring>& springs, const Eigen::VectorXd& q, Eigen::VectorXd& out);
+
 }  // namespace ll

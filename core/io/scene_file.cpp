@@ -573,9 +573,12 @@ private:
                                   });
         readList<CoulombFriction>(effects, "coulomb", e.coulomb,
                                   [this](const Json& j, const std::string& p, CoulombFriction& c) {
-                                      checkKeys(j, p, {"joint", "force", "smoothing"});
+                                      checkKeys(j, p, {"joint", "force", "smoothing", "model"});
                                       readNumber(j, p, "force", c.force);
                                       readNumber(j, p, "smoothing", c.smoothing);
+                                      if (const Json* model = member(j, "model"))
+                                          if (auto choice = readChoice(*model, child(p, "model"), {"tanh", "stick"}))
+                                              c.model = static_cast<CoulombModel>(*choice);
                                   });
         readList<JointTorque>(effects, "torques", e.torques,
                               [this](const Json& j, const std::string& p, JointTorque& t) { readTorque(j, p, t); });
@@ -836,9 +839,10 @@ private:
         });
         list(out, "viscous", e.viscous,
              [](Json&, const ViscousFriction& v, auto put) { put("coefficient", v.coefficient); });
-        list(out, "coulomb", e.coulomb, [](Json&, const CoulombFriction& c, auto put) {
+        list(out, "coulomb", e.coulomb, [](Json& entry, const CoulombFriction& c, auto put) {
             put("force", c.force);
             put("smoothing", c.smoothing);
+            if (c.model != CoulombModel::Tanh) entry["model"] = toString(c.model);
         });
         list(out, "torques", e.torques, [](Json& entry, const JointTorque& t, auto put) {
             entry["kind"] = toString(t.kind);

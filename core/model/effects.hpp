@@ -22,15 +22,26 @@ struct ViscousFriction {  // Q_i = -b q̇_i
     double coefficient = 0.0;
 };
 
-// Coulomb friction regularised to Q_i = -F_c tanh(q̇_i / v_s). It always opposes
-// motion (Q_i q̇_i <= 0, so it never adds energy) and is smooth, so adaptive
-// integrators do not chatter at q̇ = 0. The price: below v_s it acts like a stiff
-// viscous damper (slope F_c/v_s), so a joint held by a load smaller than F_c
-// creeps at a speed of order v_s instead of sticking exactly.
+// Coulomb friction of magnitude F_c on one joint, in one of two models:
+//  - Tanh (the default): Q_i = -F_c tanh(q̇_i / v_s). Smooth, so every integrator
+//    handles it, and it always opposes motion (Q_i q̇_i <= 0, never adds energy). The
+//    price: below v_s it is a stiff viscous damper (slope F_c/v_s), so a joint held
+//    by a load smaller than F_c creeps at a speed of order v_s and never sticks.
+//  - Stick: the set-valued law of the textbook. A sliding joint feels -F_c sign(q̇_i);
+//    when q̇_i reaches zero and the force needed to hold it is at most F_c, the joint
+//    sticks: q̇_i is set to exactly 0 by an inelastic impulse on that joint alone (its
+//    kinetic energy loss is booked as work of friction), and while stuck the friction
+//    is the holding force, a constraint force that does no work. It breaks free when
+//    the holding force would exceed F_c. Implemented as a step event in the
+//    integrator drivers (RobotOde::afterStep), so it never adds energy and comes to
+//    rest exactly. `smoothing` is not used.
+enum class CoulombModel { Tanh, Stick };
+
 struct CoulombFriction {
     int joint = 0;
     double force = 0.0;
-    double smoothing = 1e-3;  // v_s [rad/s or m/s]
+    double smoothing = 1e-3;  // v_s [rad/s or m/s], Tanh model only
+    CoulombModel model = CoulombModel::Tanh;
 };
 
 enum class TorqueKind { Constant, Step, Sine, Ramp };
@@ -61,6 +72,7 @@ struct Effects {
 };
 
 const char* toString(TorqueKind kind);
+const char* toString(CoulombModel model);  // "tanh", "stick"
 
 // Joints that have an input (an external torque); fewer than n means underactuated.
 std::vector<int> actuatedJoints(const Effects& effects, int dof);

@@ -25,6 +25,8 @@ const char* toString(TorqueKind kind) {
     return "?";
 }
 
+const char* toString(CoulombModel model) { return model == CoulombModel::Tanh ? "tanh" : "stick"; }
+
 double JointTorque::operator()(double t) const {
     switch (kind) {
         case TorqueKind::Constant: return value;

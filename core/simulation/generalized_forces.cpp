@@ -11,7 +11,12 @@ void computeExternalTorques(const Effects& effects, double t, Eigen::VectorXd& t
 
 void addFrictionForces(const Effects& effects, const Eigen::VectorXd& qd, Eigen::VectorXd& Q) {
     for (const ViscousFriction& f : effects.viscous) Q[f.joint] -= f.coefficient * qd[f.joint];
-    for (const CoulombFriction& f : effects.coulomb) Q[f.joint] -= f.force * std::tanh(qd[f.joint] / f.smoothing);
+    for (const CoulombFriction& f : effects.coulomb) {
+        const double v = qd[f.joint];
+        // The stick model's force at q̇ = 0 is the holding force, which depends on the
+        // other forces; on its own it is reported as 0.
+        Q[f.joint] -= f.force * (f.model == CoulombModel::Tanh ? std::tanh(v / f.smoothing) : (v > 0) - (v < 0));
+    }
 }
 
 void computeGeneralizedForces(const Effects& effects, double t, const Eigen::VectorXd& qd, Eigen::VectorXd& Q) {

@@ -14,7 +14,8 @@ void computeGeneralizedForces(const Effects& effects, double t, const Eigen::Vec
 // Only the external torques τ(t) part of Q.
 void computeExternalTorques(const Effects& effects, double t, Eigen::VectorXd& tau);
 
-// Only the friction part of Q (viscous + regularised Coulomb); always Q_fᵀ q̇ <= 0.
+// Only the friction part of Q (viscous + Coulomb); always Q_fᵀ q̇ <= 0. Stick-model
+// Coulomb friction is −F_c sign(q̇_i) here (0 at q̇_i = 0, where it is the holding force).
 void addFrictionForces(const Effects& effects, const Eigen::VectorXd& qd, Eigen::VectorXd& Q);
 
 }  // namespace ll

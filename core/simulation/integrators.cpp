@@ -4,7 +4,12 @@
 #include <cmath>
 #include <sstream>
 
+#include <limits>
+#include <numbers>
+
 #include <boost/numeric/odeint.hpp>
+
+#include "core/simulation/integration_drivers.hpp"
 
 namespace ll {
 namespace odeint = boost::numeric::odeint;
@@ -24,6 +29,9 @@ const std::vector<IntegratorInfo>& integratorCatalogue() {
         {"fehlberg78", 8, true, "Runge–Kutta–Fehlberg 7(8), error controlled", "tight tolerances on smooth scenes"},
         {"bulirsch_stoer", 0, true, "Bulirsch–Stoer extrapolation (variable order), error controlled",
          "very tight tolerances on smooth scenes"},
+        {"rosenbrock4", 4, true,
+         "linearly implicit Rosenbrock 4(3), error controlled; Jacobian by central differences",
+         "stiff scenes (a stiff joint spring on a slow arm) where explicit methods crawl at their stability limit"},
     };
     return catalogue;
 }
@@ -41,108 +49,7 @@ std::string integratorNames() {
 }
 
 namespace {
-
 using State = OdeState;
-
-std::string describeState(const State& x) {
-    std::ostringstream s;
-    s.precision(6);
-    s << "[";
-    for (size_t i = 0; i < x.size(); ++i) s << (i ? ", " : "") << x[i];
-    s << "]";
-    return s.str();
-}
-
-bool allFinite(const State& x) {
-    return std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); });
-}
-
-// Shared guards for every driver: finite state, a step size that has not collapsed,
-// and a bounded number of steps.
-struct Guard {
-    const IntegrationSettings& settings;
-    IntegrationCounts& counts;
-
-    void afterStep(double t, double dt, const State& x) const {
-        if (!allFinite(x))
-            throw IntegrationError(t, x,
-                                   "state became non-finite at t = " + std::to_string(t) + " s (state " + describeState(x) +
-                                       ") with " + settings.integrator + (findIntegrator(settings.integrator)->adaptive
-                                                                              ? ": tighten the tolerances"
-                                                                              : ": the step is too large for this scene; reduce dt or use an adaptive integrator such as dopri5"));
-        if (dt < 1e-12 * std::max(1.0, std::abs(t)))
-            throw IntegrationError(t, x,
-                                   "step size collapsed to " + std::to_string(dt) + " s at t = " + std::to_string(t) +
-                                       " s (state " + describeState(x) +
-                                       "): the scene is stiff or discontinuous here; loosen the tolerances, soften "
-                                       "stiff springs or friction, or use an implicit integrator");
-        if (++counts.steps > settings.maxSteps)
-            throw IntegrationError(t, x,
-                                   "gave up after " + std::to_string(settings.maxSteps) + " steps at t = " +
-                                       std::to_string(t) + " s: the scene is probably stiff (a fast spring or "
-                                       "friction); loosen the tolerances, shorten the run or soften the stiff effect");
-    }
-};
-
-bool ahead(double target, double t) { return target - t > 1e-12 * std::max(1.0, std::abs(target)); }
-
-template <class DenseStepper>
-void runDense(DenseStepper stepper, OdeSystem& system, State& x, const std::vector<double>& times,
-              const IntegrationSettings& settings, const OutputObserver& observe, IntegrationCounts& counts) {
-    const Guard guard{settings, counts};
-    if (!observe(times.front(), x)) return;
-    stepper.initialize(x, times.front(), settings.dt);
-    State out(x.size());
-    for (size_t k = 1; k < times.size(); ++k) {
-        while (ahead(times[k], stepper.current_time())) {
-            stepper.do_step(std::ref(system));
-            guard.afterStep(stepper.current_time(), stepper.current_time_step(), stepper.current_state());
-        }
-        stepper.calc_state(times[k], out);
-        if (!observe(times[k], out)) break;
-    }
-    stepper.calc_state(times.back(), x);
-}
-
-template <class ControlledStepper>
-void runControlled(ControlledStepper stepper, OdeSystem& system, State& x, const std::vector<double>& times,
-                   const IntegrationSettings& settings, const OutputObserver& observe, IntegrationCounts& counts) {
-    const Guard guard{settings, counts};
-    double t = times.front(), dt = settings.dt;
-    if (!observe(t, x)) return;
-    for (size_t k = 1; k < times.size(); ++k) {
-        while (ahead(times[k], t)) {
-            double h = std::min(dt, times[k] - t);  // end exactly on the output time
-            if (stepper.try_step(std::ref(system), x, t, h) == odeint::success) {
-                guard.afterStep(t, h, x);
-                dt = std::max(dt, h);
-            } else {
-                ++counts.rejectedSteps;
-                dt = h;
-                if (dt < 1e-12 * std::max(1.0, std::abs(t))) guard.afterStep(t, dt, x);
-            }
-        }
-        if (!observe(times[k], x)) break;
-    }
-}
-
-template <class Stepper>
-void runFixed(Stepper stepper, OdeSystem& system, State& x, const std::vector<double>& times,
-              const IntegrationSettings& settings, const OutputObserver& observe, IntegrationCounts& counts) {
-    const Guard guard{settings, counts};
-    double t = times.front();
-    if (!observe(t, x)) return;
-    for (size_t k = 1; k < times.size(); ++k) {
-        while (ahead(times[k], t)) {
-            const double h = std::min(settings.dt, times[k] - t);
-            stepper.do_step(std::ref(system), x, t, h);
-            t += h;
-            guard.afterStep(t, settings.dt, x);
-        }
-        t = times[k];
-        if (!observe(t, x)) break;
-    }
-}
 
 // Semi-implicit Euler: q̇_{k+1} = q̇_k + h q̈(q_k, q̇_k), q_{k+1} = q_k + h q̇_{k+1}.
 // Odeint's symplectic_euler needs a separable Hamiltonian system; robots are not
@@ -178,34 +85,76 @@ private:
 
 }  // namespace
 
+void numericJacobian(OdeSystem& system, const OdeState& x, double t, Eigen::MatrixXd& J, Eigen::VectorXd* dfdt) {
+    const int size = static_cast<int>(x.size()), n = system.coordinates();
+    const double cbrtEps = std::cbrt(std::numeric_limits<double>::epsilon());
+    J.setZero(size, size);
+    State xp = x, fp(size), fm(size);
+    for (int i = 0; i < n; ++i) J(i, n + i) = 1.0;  // q' = q̇, exactly
+    for (int c = 0; c < size; ++c) {
+        const double h0 = cbrtEps * std::max(std::abs(x[c]), 1.0);
+        xp[c] = x[c] + h0;
+        const double hp = xp[c] - x[c];  // exactly representable steps
+        system(xp, fp, t);
+        xp[c] = x[c] - h0;
+        const double hm = x[c] - xp[c];
+        system(xp, fm, t);
+        xp[c] = x[c];
+        for (int r = n; r < size; ++r) J(r, c) = (fp[r] - fm[r]) / (hp + hm);
+    }
+    if (dfdt) {
+        dfdt->setZero(size);
+        const double h = cbrtEps * std::max(std::abs(t), 1.0);
+        system(x, fp, t + h);
+        system(x, fm, t - h);
+        for (int r = n; r < size; ++r) (*dfdt)[r] = (fp[r] - fm[r]) / (2 * h);
+    }
+}
+
+using namespace detail;
+
 IntegrationCounts integrate(OdeSystem& system, OdeState& x, const std::vector<double>& times,
                             const IntegrationSettings& settings, const OutputObserver& observe) {
     if (!findIntegrator(settings.integrator))
         throw std::invalid_argument("unknown integrator '" + settings.integrator + "' (known: " + integratorNames() + ")");
     if (times.empty()) return {};
     IntegrationCounts counts;
+    StiffnessMonitor stiffness(system, settings, times.front(), times.back(), counts);
+    const Guard guard{settings, counts, stiffness};
     const std::string& name = settings.integrator;
     const double abs = settings.absTol, rel = settings.relTol;
-    if (name == "euler")
-        runFixed(odeint::euler<State>(), system, x, times, settings, observe, counts);
-    else if (name == "midpoint")
-        runFixed(Midpoint(), system, x, times, settings, observe, counts);
-    else if (name == "rk4")
-        runFixed(odeint::runge_kutta4<State>(), system, x, times, settings, observe, counts);
-    else if (name == "symplectic_euler")
-        runFixed(SymplecticEuler(system.coordinates()), system, x, times, settings, observe, counts);
-    else if (name == "cash_karp54")
-        runControlled(odeint::make_controlled(abs, rel, odeint::runge_kutta_cash_karp54<State>()), system, x, times,
-                      settings, observe, counts);
-    else if (name == "dopri5")
-        runDense(odeint::make_dense_output(abs, rel, odeint::runge_kutta_dopri5<State>()), system, x, times, settings,
-                 observe, counts);
-    else if (name == "fehlberg78")
-        runControlled(odeint::make_controlled(abs, rel, odeint::runge_kutta_fehlberg78<State>()), system, x, times,
-                      settings, observe, counts);
-    else if (name == "bulirsch_stoer")
-        // Stepped to each output time: its dense output misses the tolerance by up to 50x.
-        runControlled(odeint::bulirsch_stoer<State>(abs, rel), system, x, times, settings, observe, counts);
+    const auto rhs = std::ref(system);
+    try {
+        if (name == "euler")
+            runFixed(odeint::euler<State>(), system, x, times, settings, observe, guard);
+        else if (name == "midpoint")
+            runFixed(Midpoint(), system, x, times, settings, observe, guard);
+        else if (name == "rk4")
+            runFixed(odeint::runge_kutta4<State>(), system, x, times, settings, observe, guard);
+        else if (name == "symplectic_euler")
+            runFixed(SymplecticEuler(system.coordinates()), system, x, times, settings, observe, guard);
+        else if (name == "cash_karp54")
+            runControlled<decltype(odeint::make_controlled(abs, rel, odeint::runge_kutta_cash_karp54<State>())), decltype(rhs), State>(
+                odeint::make_controlled(abs, rel, odeint::runge_kutta_cash_karp54<State>()), rhs, system, x, times, settings,
+                observe, guard, counts);
+        else if (name == "dopri5")
+            runDense<decltype(odeint::make_dense_output(abs, rel, odeint::runge_kutta_dopri5<State>())), decltype(rhs), State>(
+                odeint::make_dense_output(abs, rel, odeint::runge_kutta_dopri5<State>()), rhs, system, x, times, settings,
+                observe, guard);
+        else if (name == "fehlberg78")
+            runControlled<decltype(odeint::make_controlled(abs, rel, odeint::runge_kutta_fehlberg78<State>())), decltype(rhs), State>(
+                odeint::make_controlled(abs, rel, odeint::runge_kutta_fehlberg78<State>()), rhs, system, x, times, settings,
+                observe, guard, counts);
+        else if (name == "bulirsch_stoer")
+            // Stepped to each output time: its dense output misses the tolerance by up to 50x.
+            runControlled<odeint::bulirsch_stoer<State>, decltype(rhs), State>(odeint::bulirsch_stoer<State>(abs, rel), rhs,
+                                                                                system, x, times, settings, observe, guard, counts);
+        else if (name == "rosenbrock4")
+            detail::runRosenbrock4(system, x, times, settings, observe, guard, counts);
+    } catch (IntegrationError& e) {
+        e.setCounts(counts);
+        throw;
+    }
     return counts;
 }
 

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "core/simulation/ode_system.hpp"
 
 namespace ll {
@@ -29,12 +31,22 @@ struct IntegrationSettings {
     double relTol = 1e-8;
     double dt = 1e-3;       // fixed step, or the first trial step of adaptive methods
     long maxSteps = 20'000'000;
+    // Explicit adaptive methods stop with an IntegrationError recommending rosenbrock4
+    // when their step size is pinned at the stability limit of a mode far faster than
+    // the rest of the motion (see integrators.cpp, StiffnessMonitor).
+    bool detectStiffness = true;
 };
 
 struct IntegrationCounts {
     long steps = 0;
     long rejectedSteps = 0;
+    long jacobians = 0;  // rosenbrock4 and the stiffness monitor (each costs 4n+2 evaluations)
 };
+
+// ∂f/∂x by central differences, step h_j = ε^(1/3) max(|x_j|, 1) per component (exact
+// [0 I 0] for the rows q' = q̇), and ∂f/∂t (if dfdt is given) the same way.
+void numericJacobian(OdeSystem& system, const OdeState& x, double t, Eigen::MatrixXd& J,
+                     Eigen::VectorXd* dfdt = nullptr);
 
 // Thrown when integration cannot go on: non-finite state, step-size collapse,
 // step budget exhausted. what() says the time, the state and what to try.
@@ -44,10 +56,14 @@ public:
         : std::runtime_error(message), t_(t), x_(std::move(x)) {}
     double time() const { return t_; }
     const OdeState& state() const { return x_; }
+    // The work done before it stopped (set by integrate()).
+    const IntegrationCounts& counts() const { return counts_; }
+    void setCounts(const IntegrationCounts& counts) { counts_ = counts; }
 
 private:
     double t_;
     OdeState x_;
+    IntegrationCounts counts_;
 };
 
 // Observer at each output time (including times.front()); return false to stop

@@ -130,6 +130,8 @@ SimulationResult simulate(const Scene& scene, const SimulationSettings& settings
     } catch (const IntegrationError& e) {
         result.status = SimulationStatus::Failed;
         result.message = e.what();
+        result.stats.steps = e.counts().steps;
+        result.stats.rejectedSteps = e.counts().rejectedSteps;
     }
     result.stats.cpuSeconds = threadCpuSeconds() - cpuStart;
     result.stats.rhsEvaluations = lagrangian ? lagrangian->evaluations() : robot->evaluations();

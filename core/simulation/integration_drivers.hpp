@@ -1,0 +1,306 @@
+#pragma once
+// Internal to core/simulation: the drivers behind integrate() (guards, stiffness
+// monitor, event handling, output times), shared by integrators.cpp and rosenbrock4.cpp.
+// rosenbrock4.cpp is compiled as C++17 (Boost 1.74's uBLAS, which Odeint's rosenbrock4
+// needs, uses std::allocator::construct, removed in C++20), so this header is C++17.
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <sstream>
+#include <type_traits>
+#include <utility>
+
+#include <Eigen/Eigenvalues>
+#include <boost/numeric/odeint.hpp>
+
+#include "core/simulation/integrators.hpp"
+
+namespace ll::detail {
+namespace odeint = boost::numeric::odeint;
+
+using State = OdeState;
+
+template <class V>
+inline std::string describeState(const V& x) {
+    std::ostringstream s;
+    s.precision(6);
+    s << "[";
+    for (size_t i = 0; i < x.size(); ++i) s << (i ? ", " : "") << x[i];
+    s << "]";
+    return s.str();
+}
+
+template <class V>
+inline bool allFinite(const V& x) {
+    return std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); });
+}
+
+template <class V>
+State toState(const V& x) {
+    return State(x.begin(), x.end());
+}
+
+inline std::string fmt(double v) {
+    std::ostringstream s;
+    s.precision(3);
+    s << v;
+    return s.str();
+}
+
+// Stiffness of an explicit adaptive method, judged every `window` accepted steps: the
+// run is stiff for it when (a) at the mean step size of the window the whole run would
+// take more than `minSteps` steps, (b) that step sits at the stability limit of the
+// fastest mode of the Jacobian (h |λ_max| >= 1; a step resolving that mode for accuracy
+// is several times shorter), and (c) that mode is at least `ratio` times faster than the
+// slowest non-zero mode, which is what the step could follow otherwise.
+class StiffnessMonitor {
+public:
+    StiffnessMonitor(OdeSystem& system, const IntegrationSettings& settings, double t0, double t1,
+                     IntegrationCounts& counts)
+        : system_(system), settings_(settings), t0_(t0), t1_(t1), counts_(counts) {
+        const IntegratorInfo* info = findIntegrator(settings.integrator);
+        enabled_ = settings.detectStiffness && info->adaptive && settings.integrator != "rosenbrock4";
+    }
+
+    template <class V>
+    void onStep(double t, double h, const V& x) {
+        if (!enabled_) return;
+        ++steps_;
+        span_ += h;
+        if (steps_ < kWindow) return;
+        const double hMean = span_ / steps_;
+        steps_ = 0;
+        span_ = 0;
+        const double projected = (t1_ - t0_) / hMean;
+        if (projected < kMinSteps) return;
+        const State state = toState(x);
+        Eigen::MatrixXd J;
+        numericJacobian(system_, state, t, J);
+        ++counts_.jacobians;
+        const Eigen::VectorXd modulus = Eigen::EigenSolver<Eigen::MatrixXd>(J, false).eigenvalues().cwiseAbs();
+        const double fastest = modulus.maxCoeff();
+        double slowest = fastest;
+        for (double m : modulus)
+            if (m > 1e-9 * fastest) slowest = std::min(slowest, m);
+        if (!(hMean * fastest >= 1.0 && fastest >= kRatio * slowest)) return;
+        throw IntegrationError(
+            t, state,
+            "the scene is stiff for " + settings_.integrator + ": at t = " + fmt(t) + " s its step size is pinned at " +
+                fmt(hMean) + " s by the stability limit of a fast mode (|λ| ≈ " + fmt(fastest) + " 1/s, period ≈ " +
+                fmt(2 * 3.14159265358979323846 / fastest) + " s), " + fmt(fastest / slowest) +
+                " times faster than the slowest motion (|λ| ≈ " + fmt(slowest) + " 1/s), so the run would take about " +
+                fmt(projected) + " steps. Use the implicit integrator rosenbrock4 (--integrator rosenbrock4, or "
+                "\"integrator\": \"rosenbrock4\" in the scene), or soften the stiff spring or friction");
+    }
+
+private:
+    static constexpr long kWindow = 2000;
+    static constexpr double kMinSteps = 5e4, kRatio = 100.0;
+    OdeSystem& system_;
+    const IntegrationSettings& settings_;
+    double t0_, t1_;
+    IntegrationCounts& counts_;
+    bool enabled_ = false;
+    long steps_ = 0;
+    double span_ = 0.0;
+};
+
+// Shared guards for every driver: finite state, a step size that has not collapsed,
+// a bounded number of steps, and stiffness of explicit adaptive methods.
+struct Guard {
+    const IntegrationSettings& settings;
+    IntegrationCounts& counts;
+    StiffnessMonitor& stiffness;
+
+    template <class V>
+    void afterStep(double t, double dt, const V& x) const {
+        if (!allFinite(x))
+            throw IntegrationError(t, toState(x),
+                                   "state became non-finite at t = " + std::to_string(t) + " s (state " + describeState(x) +
+                                       ") with " + settings.integrator + (findIntegrator(settings.integrator)->adaptive
+                                                                              ? ": tighten the tolerances"
+                                                                              : ": the step is too large for this scene; reduce dt or use an adaptive integrator such as dopri5 (rosenbrock4 if the scene has a stiff spring)"));
+        if (dt < 1e-12 * std::max(1.0, std::abs(t)))
+            throw IntegrationError(t, toState(x),
+                                   "step size collapsed to " + std::to_string(dt) + " s at t = " + std::to_string(t) +
+                                       " s (state " + describeState(x) +
+                                       "): the scene is stiff or discontinuous here; loosen the tolerances, soften "
+                                       "stiff springs or friction, or use the implicit integrator rosenbrock4");
+        if (++counts.steps > settings.maxSteps)
+            throw IntegrationError(t, toState(x),
+                                   "gave up after " + std::to_string(settings.maxSteps) + " steps at t = " +
+                                       std::to_string(t) + " s: the scene is probably stiff (a fast spring or "
+                                       "friction); use the implicit integrator rosenbrock4, loosen the tolerances, "
+                                       "shorten the run or soften the stiff effect");
+        stiffness.onStep(t, dt, x);
+    }
+};
+
+inline bool ahead(double target, double t) { return target - t > 1e-12 * std::max(1.0, std::abs(target)); }
+
+// Steppers with internal history (Bulirsch–Stoer) must forget it after an event.
+template <class Stepper, class = void>
+struct HasReset : std::false_type {};
+template <class Stepper>
+struct HasReset<Stepper, std::void_t<decltype(std::declval<Stepper&>().reset())>> : std::true_type {};
+
+template <class Stepper>
+void resetAfterEvent(Stepper& stepper) {
+    if constexpr (HasReset<Stepper>::value) stepper.reset();
+}
+
+// Gives x to the system's events; true when it changed x.
+inline bool event(OdeSystem& system, double t, State& x) { return system.hasEvents() && system.afterStep(t, x); }
+
+// Event location for a dense-output stepper: the time in (t0, t1] just after the first
+// event crossing of the last step (secant iterations on the dense output), or t1.
+template <class DenseStepper, class V>
+double locateEvent(DenseStepper& stepper, OdeSystem& system, const State& x0, double t0, V& out, State& xs) {
+    const double t1 = stepper.current_time();
+    std::copy(stepper.current_state().begin(), stepper.current_state().end(), xs.begin());
+    double theta = system.eventFraction(x0, xs);
+    if (theta >= 1.0) return t1;
+    double lo = t0, hi = t1;  // the crossing lies in (lo, hi]
+    State xlo = x0, xhi = xs;
+    for (int iteration = 0; iteration < 8; ++iteration) {
+        const double tc = std::min(hi, lo + (hi - lo) * theta * (1 + 1e-9) + 1e-15 * std::abs(hi));
+        stepper.calc_state(tc, out);
+        std::copy(out.begin(), out.end(), xs.begin());
+        const double crossed = system.eventFraction(xlo, xs);
+        if (crossed < 1.0) {  // still past the crossing, by more than the system accepts
+            hi = tc;
+            xhi = xs;
+            theta = crossed;
+        } else if (system.eventFraction(x0, xs) >= 1.0 && system.eventFraction(xs, xhi) < 1.0) {
+            lo = tc;  // not yet crossed: it is between tc and hi
+            xlo = xs;
+            theta = system.eventFraction(xlo, xhi);
+        } else {
+            return tc;  // crossed and located
+        }
+    }
+    stepper.calc_state(hi, out);
+    std::copy(out.begin(), out.end(), xs.begin());
+    return hi;
+}
+
+template <class DenseStepper, class System, class V>
+void runDense(DenseStepper stepper, System rhs, OdeSystem& system, State& x, const std::vector<double>& times,
+              const IntegrationSettings& settings, const OutputObserver& observe, const Guard& guard) {
+    event(system, times.front(), x);
+    if (!observe(times.front(), x)) return;
+    V v(x.size()), out(x.size());
+    std::copy(x.begin(), x.end(), v.begin());
+    stepper.initialize(v, times.front(), settings.dt);
+    State outState(x.size()), current(x.size()), start = x;
+    size_t k = 1;
+    while (k < times.size()) {
+        const double t0 = stepper.current_time();
+        stepper.do_step(rhs);
+        double t = stepper.current_time();
+        guard.afterStep(t, stepper.current_time_step(), stepper.current_state());
+        // With events, the step ends where the first one happens (the rest is dropped).
+        if (system.hasEvents()) t = locateEvent(stepper, system, start, t0, out, current);
+        for (; k < times.size() && !ahead(times[k], t); ++k) {
+            stepper.calc_state(times[k], out);
+            std::copy(out.begin(), out.end(), outState.begin());
+            x = outState;
+            if (!observe(times[k], outState)) return;
+        }
+        if (system.hasEvents()) {
+            const bool relocated = t < stepper.current_time();
+            if (system.afterStep(t, current) || relocated) {
+                std::copy(current.begin(), current.end(), v.begin());
+                stepper.initialize(v, t, stepper.current_time_step());
+            }
+            start = current;
+        }
+    }
+}
+
+template <class ControlledStepper, class System, class V>
+void runControlled(ControlledStepper stepper, System rhs, OdeSystem& system, State& x, const std::vector<double>& times,
+                   const IntegrationSettings& settings, const OutputObserver& observe, const Guard& guard,
+                   IntegrationCounts& counts) {
+    double t = times.front(), dt = settings.dt;
+    event(system, t, x);
+    if (!observe(t, x)) return;
+    V v(x.size()), v0(x.size());
+    std::copy(x.begin(), x.end(), v.begin());
+    State x1(x.size());
+    for (size_t k = 1; k < times.size(); ++k) {
+        while (ahead(times[k], t)) {
+            double h = std::min(dt, times[k] - t);  // end exactly on the output time
+            const double t0 = t;
+            if (system.hasEvents()) v0 = v;
+            if (stepper.try_step(rhs, v, t, h) == odeint::success) {
+                if (system.hasEvents()) {
+                    // Event location: retry the step shorter until it ends just past the crossing.
+                    dt = std::max(dt, h);
+                    for (int retry = 0; retry < 8; ++retry) {
+                        std::copy(v.begin(), v.end(), x1.begin());
+                        const double theta = system.eventFraction(x, x1);
+                        if (theta >= 1.0) break;
+                        double hr = (t - t0) * theta * (1 + 1e-9) + 1e-15 * std::max(1.0, std::abs(t0));
+                        v = v0;
+                        t = t0;
+                        while (stepper.try_step(rhs, v, t, hr) != odeint::success) ++counts.rejectedSteps;
+                    }
+                    guard.afterStep(t, t - t0, v);
+                    std::copy(v.begin(), v.end(), x.begin());
+                    if (system.afterStep(t, x)) {
+                        std::copy(x.begin(), x.end(), v.begin());
+                        resetAfterEvent(stepper);
+                    }
+                } else {
+                    guard.afterStep(t, h, v);
+                    dt = std::max(dt, h);
+                }
+            } else {
+                ++counts.rejectedSteps;
+                dt = h;
+                if (dt < 1e-12 * std::max(1.0, std::abs(t))) guard.afterStep(t, dt, v);
+            }
+        }
+        std::copy(v.begin(), v.end(), x.begin());
+        if (!observe(times[k], x)) break;
+    }
+}
+
+template <class Stepper>
+void runFixed(Stepper stepper, OdeSystem& system, State& x, const std::vector<double>& times,
+              const IntegrationSettings& settings, const OutputObserver& observe, const Guard& guard) {
+    double t = times.front();
+    event(system, t, x);
+    if (!observe(t, x)) return;
+    State x0(x.size());
+    for (size_t k = 1; k < times.size(); ++k) {
+        while (ahead(times[k], t)) {
+            double h = std::min(settings.dt, times[k] - t);
+            if (system.hasEvents()) x0 = x;
+            stepper.do_step(std::ref(system), x, t, h);
+            // Event location: a shorter step that ends just past the crossing.
+            for (int retry = 0; system.hasEvents() && retry < 8; ++retry) {
+                const double theta = system.eventFraction(x0, x);
+                if (theta >= 1.0) break;
+                h = h * theta * (1 + 1e-9) + 1e-15 * std::max(1.0, std::abs(t));
+                x = x0;
+                stepper.do_step(std::ref(system), x, t, h);
+            }
+            t += h;
+            guard.afterStep(t, settings.dt, x);
+            event(system, t, x);
+        }
+        t = times[k];
+        if (!observe(t, x)) break;
+    }
+}
+
+}  // namespace ll::detail
+
+namespace ll::detail {
+// In rosenbrock4.cpp.
+void runRosenbrock4(OdeSystem& system, OdeState& x, const std::vector<double>& times, const IntegrationSettings& settings,
+                    const OutputObserver& observe, const Guard& guard, IntegrationCounts& counts);
+}  // namespace ll::detail
