@@ -15,8 +15,11 @@ using namespace ll;
 namespace {
 std::vector<std::string> exampleFiles() {
     std::vector<std::string> files;
+    // examples/hard/ holds scenes built to break things (a joint that moves no mass, a
+    // 1e4 s symplectic run...); test_hard_cases checks each one's own property.
     for (const auto& entry : std::filesystem::recursive_directory_iterator(LL_EXAMPLES_DIR))
-        if (entry.path().extension() == ".json") files.push_back(entry.path().string());
+        if (entry.path().extension() == ".json" && entry.path().parent_path().filename() != "hard")
+            files.push_back(entry.path().string());
     std::sort(files.begin(), files.end());
     return files;
 }
