@@ -1,5 +1,6 @@
-// `lagrangelab bench [SCENE...] [--batches N]`: median times of our dynamics beside
-// KDL's solvers, measured in the same run on the same random states.
+// `lagrangelab bench [SCENE...] [--batches N] [--rhs]`: median times of our dynamics
+// beside KDL's solvers, measured in the same run on the same random states; with --rhs,
+// one right-hand-side evaluation with no effects, gravity only and all effects.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -14,6 +15,7 @@
 #include "core/dynamics/inverse_dynamics.hpp"
 #include "core/dynamics/mass_matrix.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
+#include "core/simulation/robot_ode.hpp"
 #include "core/simulation/simulate.hpp"
 #ifdef LL_HAVE_KDL
 #include "tests/oracle/kdl_chain.hpp"
@@ -66,12 +68,53 @@ double medianMicros(int batches, int statesCount, F&& call) {
     return times[times.size() / 2];
 }
 
+// `bench --rhs`: one right-hand-side evaluation (RobotOde, composed from the declared
+// effects) with no effects, gravity only, and every effect, on the same states.
+int benchRhs(const std::vector<std::string>& scenes, int batches) {
+    std::printf("median time of one right-hand-side evaluation f(x, t) [µs] over %d batches of random states;\n"
+                "the right-hand side is composed from the declared effects only\n\n", batches);
+    std::printf("%-24s %2s | %10s %12s %12s\n", "robot", "n", "no effects", "gravity only", "all effects");
+    for (const std::string& path : scenes) {
+        const Scene scene = loadSceneReportingWarnings(path);
+        const RobotModel& robot = scene.robot;
+        const int n = robot.dof();
+        const States s = randomStates(robot, 64);
+        Effects none, gravity, all;
+        gravity.gravity = all.gravity = scene.effects.gravity.value_or(Eigen::Vector3d(0, 0, -9.81));
+        for (int j = 0; j < n; ++j) {
+            all.springs.push_back({j, 10.0, 0.0});
+            all.viscous.push_back({j, 0.1});
+            all.coulomb.push_back({j, 0.2, 1e-3});
+            JointTorque torque;
+            torque.joint = j;
+            torque.kind = TorqueKind::Sine;
+            torque.amplitude = 1.0;
+            torque.frequency = 0.5;
+            all.torques.push_back(torque);
+        }
+        const auto time = [&](const Effects& effects) {
+            RobotOde ode(robot, effects);
+            std::vector<OdeState> xs;
+            for (size_t k = 0; k < s.q.size(); ++k) xs.push_back(ode.initialState(s.q[k], s.qd[k]));
+            OdeState dxdt(xs[0].size());
+            return medianMicros(batches, static_cast<int>(xs.size()), [&](int k) { ode(xs[k], dxdt, 0.1 * k); });
+        };
+        std::printf("%-24.24s %2d | %10.3f %12.3f %12.3f\n", scene.name.c_str(), n, time(none), time(gravity), time(all));
+    }
+    std::printf("\nall effects: gravity, a spring, viscous and Coulomb friction and a sine torque on every joint.\n");
+    return 0;
+}
+
 }  // namespace
 
 int benchCommand(const Args& args) {
-    const Options options(args, {"batches"});
+    const Options options(args, {"batches"}, {"rhs"});
     const int batches = static_cast<int>(options.number("batches", 21));
     std::vector<std::string> scenes = options.positional();
+    if (options.has("rhs")) {
+        if (scenes.empty()) scenes.push_back(std::string(LL_EXAMPLES_DIR) + "/puma560.json");
+        return benchRhs(scenes, batches);
+    }
     if (scenes.empty())
         for (const char* name : {"puma560", "stanford_arm", "ur5", "panda", "planar_2r"})
             scenes.push_back(std::string(LL_EXAMPLES_DIR) + "/" + name + ".json");

@@ -12,6 +12,7 @@ int evalCommand(const Args& args);
 int simulateCommand(const Args& args);
 int integratorsCommand(const Args& args);
 int benchCommand(const Args& args);
+int accuracyCommand(const Args& args);
 int deriveCommand(const Args& args);
 
 }  // namespace ll::cli

@@ -22,8 +22,12 @@ const char* kUsage =
     "      the model step by step as the course notes derive it (symbolic, GiNaC)\n"
     "  integrators\n"
     "      the integrators with order, kind and when to use each\n"
-    "  bench [SCENE...] [--batches N]\n"
+    "  accuracy SCENE [--integrators a,b,...] [--tolerances 1e-3..1e-12] [--steps dt1,dt2,...] [--duration T]\n"
+    "           [--repeats N] [--reference-tol X] [--out plot.svg|png] [--csv FILE]\n"
+    "      work-precision: error, energy drift, CPU time, evaluations and steps per integrator and setting\n"
+    "  bench [SCENE...] [--batches N] [--rhs]\n"
     "      median times of B, C, g, forward/inverse dynamics and one simulated second, beside KDL\n"
+    "      (--rhs: one right-hand side of the PUMA 560 with no effects, gravity only, all effects)\n"
     "\n"
     "exit codes: 0 success, 2 bad input, 3 simulation stopped early\n";
 
@@ -41,6 +45,7 @@ int main(int argc, char** argv) {
         if (command == "simulate") return ll::cli::simulateCommand(args);
         if (command == "integrators") return ll::cli::integratorsCommand(args);
         if (command == "bench") return ll::cli::benchCommand(args);
+        if (command == "accuracy") return ll::cli::accuracyCommand(args);
         if (command == "derive") return ll::cli::deriveCommand(args);
         std::fprintf(stderr, "error: unknown command '%s'\n\n%s", command.c_str(), kUsage);
         return 2;

@@ -1,0 +1,154 @@
+// `lagrangelab accuracy SCENE [--integrators a,b,...] [--tolerances 1e-3..1e-12]
+// [--steps ...] [--duration T] [--repeats N] [--reference-tol X] [--out plot.svg|png]
+// [--csv FILE]`: the work–precision analysis of core/simulation/work_precision.hpp as a
+// table, a CSV file and a log–log plot rendered headless.
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include <QGuiApplication>
+#include <unistd.h>
+
+#include "app/cli_options.hpp"
+#include "app/commands.hpp"
+#include "app/scene_loading.hpp"
+#include "core/model/validation.hpp"
+#include "core/simulation/integrators.hpp"
+#include "core/simulation/work_precision.hpp"
+#include "ui/work_precision_plot.hpp"
+
+namespace ll::cli {
+namespace {
+
+// "1e-3..1e-12": every decade from one end to the other; otherwise "a,b,c".
+std::vector<double> parseSettings(const std::string& option, const std::string& text) {
+    std::vector<double> values;
+    if (const size_t dots = text.find(".."); dots != std::string::npos) {
+        const double a = parseNumber(option, text.substr(0, dots)), b = parseNumber(option, text.substr(dots + 2));
+        if (!(a > 0 && b > 0)) throw UsageError("--" + option + ": a range needs two numbers > 0, got '" + text + "'");
+        const double la = std::log10(a), lb = std::log10(b);
+        const int count = static_cast<int>(std::floor(std::abs(lb - la) + 1e-9));
+        for (int k = 0; k <= count; ++k) values.push_back(a * std::pow(10.0, la <= lb ? k : -k));
+        return values;
+    }
+    std::stringstream in(text);
+    std::string item;
+    while (std::getline(in, item, ',')) {
+        values.push_back(parseNumber(option, item));
+        if (!(values.back() > 0)) throw UsageError("--" + option + ": values must be > 0, got '" + item + "'");
+    }
+    if (values.empty()) throw UsageError("--" + option + ": no values in '" + text + "'");
+    return values;
+}
+
+std::vector<std::string> parseNames(const std::string& text) {
+    std::vector<std::string> names;
+    std::stringstream in(text);
+    std::string item;
+    while (std::getline(in, item, ','))
+        if (!item.empty()) {
+            if (!findIntegrator(item))
+                throw UsageError("--integrators: unknown integrator '" + item + "' (known: " + integratorNames() + ")");
+            names.push_back(item);
+        }
+    return names;
+}
+
+void writeCsv(const WorkPrecisionResult& r, const std::string& path) {
+    std::ofstream out(path);
+    if (!out) throw std::runtime_error("cannot write " + path);
+    out.precision(10);
+    out << "integrator,adaptive,setting,completed,final_error,at_reference_floor,max_rel_energy_drift,cpu_seconds,"
+           "rhs_evaluations,steps,rejected_steps,message\n";
+    out << r.reference.integrator << ",1," << r.reference.tolerance << ",1," << r.reference.estimatedError << ",1,"
+        << r.reference.maxRelEnergyDrift << "," << r.reference.cpuSeconds << ",,,,\"reference (error: its own estimate)\"\n";
+    for (const WorkPrecisionPoint& p : r.points) {
+        std::string message = p.message;
+        for (char& c : message)
+            if (c == '"') c = '\'';
+        out << p.integrator << "," << p.adaptive << "," << p.setting << "," << p.completed << ","
+            << (p.completed ? p.finalError : NAN) << "," << p.atReferenceFloor << "," << p.maxRelEnergyDrift << ","
+            << p.cpuSeconds << "," << p.rhsEvaluations << "," << p.steps << "," << p.rejectedSteps << ",\"" << message
+            << "\"\n";
+    }
+}
+
+void printTable(const WorkPrecisionResult& r) {
+    std::printf("work-precision of %s over %g s\n%s\n\n", r.scene.c_str(), r.duration, workPrecisionDefinitions());
+    std::printf("reference: %s at tol %.1e, its own error estimate %.2e, energy drift %.2e, CPU %.1f ms\n\n",
+                r.reference.integrator.c_str(), r.reference.tolerance, r.reference.estimatedError,
+                r.reference.maxRelEnergyDrift, 1e3 * r.reference.cpuSeconds);
+    std::printf("%-17s %-13s %10s %10s %10s %10s %9s %8s  %s\n", "integrator", "setting", "error", "drift", "CPU [ms]",
+                "rhs evals", "steps", "rejected", "note");
+    for (const WorkPrecisionPoint& p : r.points) {
+        char setting[32];
+        std::snprintf(setting, sizeof setting, "%s %.0e", p.adaptive ? "tol" : "dt ", p.setting);
+        if (!p.completed) {
+            std::string why = p.message.substr(0, p.message.find(':'));
+            std::printf("%-17s %-13s %10s %10s %10.2f %10ld %9ld %8ld  stopped: %s\n", p.integrator.c_str(), setting, "-",
+                        "-", 1e3 * p.cpuSeconds, p.rhsEvaluations, p.steps, p.rejectedSteps, why.c_str());
+            continue;
+        }
+        std::printf("%-17s %-13s %10.2e %10.2e %10.2f %10ld %9ld %8ld  %s\n", p.integrator.c_str(), setting, p.finalError,
+                    p.maxRelEnergyDrift, 1e3 * p.cpuSeconds, p.rhsEvaluations, p.steps, p.rejectedSteps,
+                    p.atReferenceFloor ? "at the reference's accuracy" : "");
+    }
+    std::printf("\nwhole analysis: %.2f s CPU\n", r.cpuSeconds);
+}
+
+}  // namespace
+
+int accuracyCommand(const Args& args) {
+    const Options options(args, {"integrators", "tolerances", "steps", "duration", "repeats", "reference-tol", "out", "csv"});
+    if (options.positional().size() != 1)
+        throw UsageError("usage: lagrangelab accuracy SCENE [--integrators a,b,...] [--tolerances 1e-3..1e-12] "
+                         "[--steps 1e-2,1e-3,...] [--duration T] [--repeats N] [--reference-tol X] "
+                         "[--out plot.svg|png] [--csv FILE]");
+    Scene scene = loadSceneReportingWarnings(options.positional()[0]);
+    WorkPrecisionSettings settings;
+    if (options.has("integrators")) settings.integrators = parseNames(options.text("integrators"));
+    if (options.has("tolerances")) settings.tolerances = parseSettings("tolerances", options.text("tolerances"));
+    if (options.has("steps")) settings.steps = parseSettings("steps", options.text("steps"));
+    settings.duration = options.number("duration", scene.simulation.duration);
+    settings.repeats = static_cast<int>(options.number("repeats", settings.repeats));
+    settings.referenceTolerance = options.number("reference-tol", 0.0);
+    if (!(settings.duration > 0)) throw UsageError("--duration: must be > 0");
+    if (settings.repeats < 1) throw UsageError("--repeats: must be at least 1");
+    const std::string plot = options.text("out");
+    if (!plot.empty() && !plot.ends_with(".svg") && !plot.ends_with(".png"))
+        throw UsageError("--out: the plot is written as .svg or .png, got '" + plot + "'");
+    requireValidScene(scene);
+
+    const bool tty = ::isatty(STDERR_FILENO);
+    const WorkPrecisionResult result = runWorkPrecision(scene, settings, [&](double f, const std::string& what) {
+        if (tty) std::fprintf(stderr, "\r%3d%% %-40.40s", static_cast<int>(100 * f), what.c_str());
+    });
+    if (tty) std::fprintf(stderr, "\r%*s\r", 50, "");
+    printTable(result);
+    if (options.has("csv")) writeCsv(result, options.text("csv"));
+    if (!plot.empty()) {
+        // Fonts need a QGuiApplication; with no display, render offscreen.
+        if (std::getenv("DISPLAY") == nullptr && std::getenv("WAYLAND_DISPLAY") == nullptr &&
+            std::getenv("QT_QPA_PLATFORM") == nullptr)
+            setenv("QT_QPA_PLATFORM", "offscreen", 1);
+        static int argc = 1;
+        static char name[] = "lagrangelab";
+        static char* argv[] = {name, nullptr};
+        std::unique_ptr<QGuiApplication> app;
+        if (!QGuiApplication::instance()) app = std::make_unique<QGuiApplication>(argc, argv);
+        QString error;
+        if (!ui::saveWorkPrecisionPlot(result, QString::fromStdString(plot), &error))
+            throw std::runtime_error(error.toStdString());
+        std::fprintf(stderr, "plot written to %s\n", plot.c_str());
+    }
+    if (result.status == SimulationStatus::Failed) {
+        std::fprintf(stderr, "error: %s\n", result.message.c_str());
+        return 3;
+    }
+    return 0;
+}
+
+}  // namespace ll::cli

@@ -1,0 +1,23 @@
+#pragma once
+// The work–precision plot: two log–log panels, final-state error versus CPU time and
+// energy drift versus CPU time, one coloured curve per integrator with a legend and
+// decade ticks. Painted with QPainter, so the same code draws into a GUI widget, a
+// PNG (QImage) or an SVG (QSvgGenerator). Needs a QGuiApplication (fonts); headless,
+// set QT_QPA_PLATFORM=offscreen before constructing it.
+#include <QPainter>
+#include <QRectF>
+#include <QSize>
+#include <QString>
+
+#include "core/simulation/work_precision.hpp"
+
+namespace ll::ui {
+
+void paintWorkPrecision(QPainter& painter, const QRectF& area, const WorkPrecisionResult& result);
+
+// Writes `path` as SVG or PNG by its suffix (.svg, .png). On failure returns false and
+// says why in *error.
+bool saveWorkPrecisionPlot(const WorkPrecisionResult& result, const QString& path, QString* error = nullptr,
+                           QSize size = QSize(1500, 680));
+
+}  // namespace ll::ui
