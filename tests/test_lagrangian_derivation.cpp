@@ -369,6 +369,8 @@ private slots:
         EXPECT_ERROR(validate({{"effects", {{"viscous", {{{"joint", 2}, {"coefficient", 1}}}}}}}),
                      "effects.viscous[1].joint:", "coordinate 2 does not exist");
         EXPECT_ERROR(validate({{"initial", {{"q", {1, 2}}}}}), "initial.q:", "1 coordinates");
+        EXPECT_ERROR(validate({{"effects", {{"coulomb", {{{"joint", 1}, {"force", 1}, {"model", "stick"}}}}}}}),
+                     "effects.coulomb[1].model:", "tanh");
         EXPECT_ERROR(validate({{"lagrangian", {{"coordinates", {"x"}}, {"kinetic", "m*x_dot^2/2"}, {"forces", {1, 2}}}}}),
                      "lagrangian.forces:", "one per coordinate");
         QVERIFY(firstError([&] { validate({{"initial", {{"q", {1}}}}}); }).empty());

@@ -183,6 +183,9 @@ std::vector<Diagnostic> validateScene(const Scene& scene) {
         checkNonNegative(f + ".force", e.coulomb[s].force);
         requireFinite(out, f + ".smoothing", e.coulomb[s].smoothing);
         if (!(e.coulomb[s].smoothing > 0)) error(out, f + ".smoothing", "must be > 0, got " + fmt(e.coulomb[s].smoothing));
+        if (scene.lagrangian && e.coulomb[s].model == CoulombModel::Stick)
+            error(out, f + ".model",
+                  "the stick model is implemented for robots only; a Lagrangian system uses \"tanh\" (the default)");
     }
     for (size_t s = 0; s < e.torques.size(); ++s) {
         const std::string f = "effects.torques[" + std::to_string(s + 1) + "]";
