@@ -87,6 +87,7 @@ int simulateCommand(const Args& args) {
         std::fprintf(stderr, "error: simulation stopped: %s\n", result.message.c_str());
         return 3;
     }
+    if (!result.message.empty()) std::fprintf(stderr, "warning: %s\n", result.message.c_str());
     return 0;
 }
 

@@ -189,9 +189,15 @@ private slots:
         Scene euler = scene;
         euler.simulation.integrator = "euler";
         euler.simulation.duration = 200;
-        const Trajectory& te = simulate(euler).trajectory;
+        const SimulationResult re = simulate(euler);
+        const Trajectory& te = re.trajectory;
         const double early = maxAbsDiff(te.E, te.E[0], 1, 20), late = std::abs(te.E.back() - te.E[0]);
         QVERIFY2(late > 5 * early, qPrintable(QString("euler early %1 late %2").arg(early).arg(late)));
+        // and it is not silently wrong: the completed run carries a warning
+        QCOMPARE(int(re.status), int(SimulationStatus::Completed));
+        QVERIFY(re.stats.maxRelEnergyError > 1e-2);
+        QVERIFY2(re.message.find("not accurate") != std::string::npos, re.message.c_str());
+        QVERIFY(r.message.empty());
     }
 
     void stickSlipComesToRestWithoutGainingEnergy() {
@@ -229,6 +235,27 @@ private slots:
         const Trajectory& ts = simulate(smooth).trajectory;
         QVERIFY(std::abs(ts.qd.back()[0]) > 1e-5);
         QVERIFY(ts.q.back()[0] != ts.q[ts.size() - 100][0]);
+    }
+
+    // The scene format keeps the model: serialised and parsed back, and a bad value names the field.
+    void coulombModelIsReadAndWritten() {
+        const Scene scene = hard("stick_slip.json");
+        const std::string text = serializeScene(scene);
+        QVERIFY(text.find("\"model\": \"stick\"") != std::string::npos);
+        QCOMPARE(int(parseScene(text).effects.coulomb.at(0).model), int(CoulombModel::Stick));
+        Scene smooth = scene;
+        smooth.effects.coulomb[0].model = CoulombModel::Tanh;
+        QVERIFY(serializeScene(smooth).find("\"model\"") == std::string::npos);  // the default is not written
+        std::string bad = text;
+        bad.replace(bad.find("\"stick\""), 7, "\"sticky\"");
+        bool named = false;
+        try {
+            parseScene(bad);
+        } catch (const InputError& e) {
+            for (const Diagnostic& d : e.diagnostics())
+                named = named || (d.field == "effects.coulomb[1].model" && d.message.find("\"tanh\" or \"stick\"") != std::string::npos);
+        }
+        QVERIFY(named);
     }
 
     void prismaticJointPassesZeroExtension() {

@@ -137,6 +137,11 @@ SimulationResult simulate(const Scene& scene, const SimulationSettings& settings
     result.stats.rhsEvaluations = lagrangian ? lagrangian->evaluations() : robot->evaluations();
     result.stats.simulatedSeconds = result.trajectory.t.empty() ? 0.0 : result.trajectory.t.back();
     energyBalance(result.trajectory, result.stats);
+    // A run that completed but lost its energy balance is not silently right.
+    if (result.status == SimulationStatus::Completed && !(result.stats.maxRelEnergyError <= 1e-2))
+        result.message = "the energy balance E - E0 - W is off by " + std::to_string(100 * result.stats.maxRelEnergyError) +
+                         " % of the energy scale: the trajectory is not accurate; use a smaller dt, an adaptive "
+                         "integrator or tighter tolerances (symplectic_euler keeps it bounded on conservative scenes)";
     return result;
 }
 

@@ -40,7 +40,8 @@ struct SimulationResult {
     Trajectory trajectory;
     SimulationStats stats;
     SimulationStatus status = SimulationStatus::Completed;
-    std::string message;  // why it stopped early: time, state and what to try
+    std::string message;  // why it stopped early: time, state and what to try; for a completed
+                          // run, a warning when the energy balance is off by more than 1 %
 };
 
 }  // namespace ll
