@@ -11,6 +11,7 @@
 #include "app/scene_loading.hpp"
 #include "core/symbolic/angle_sums.hpp"
 #include "core/symbolic/expression_printer.hpp"
+#include "core/symbolic/lagrangian_derivation.hpp"
 #include "core/symbolic/robot_derivation.hpp"
 
 namespace ll::cli {
@@ -55,20 +56,32 @@ public:
         GiNaC::ex e = robot_ ? combiner_.combine(value) : value.expand();
         const bool byVelocity =
             name == "C" || name == "E_kin" || name.rfind("w_", 0) == 0 || name.rfind("v_c", 0) == 0;
-        std::vector<GiNaC::symbol> groupBy = byVelocity ? d_.qd : massSymbols(e);
+        // Robots group by masses (m2 (a1² + ...)); a hand-typed Lagrangian by its
+        // parameters, so the notes' spring term reads K2 (θ1 − θ2).
+        std::vector<GiNaC::symbol> groupBy = byVelocity ? d_.qd : robot_ ? massSymbols(e) : parameters();
         return readableNumbers(collectForDisplay(e, groupBy));
     }
 
-    // Row i of B q̈ + C q̇ + g = Q with each coefficient presented on its own, so the
-    // equation reads b_i1 q̈1 + … + c_i1 q̇1 + … + g_i = Q_i.
-    GiNaC::ex equationSide(int i) {
-        GiNaC::ex lhs = present("g", d_.g(i, 0));
+    // Row i of B q̈ + C q̇ + g = Q in that order, each coefficient presented on its own:
+    // b_i1 q̈1 + … + c_i1 q̇1 + … + g_i.
+    std::vector<GiNaC::ex> equationParts(int i) {
+        GiNaC::ex inertial = 0, velocity = 0;
         for (size_t j = 0; j < d_.q.size(); ++j) {
-            lhs += present("B", d_.B(i, j)) * d_.qdd[j];
-            lhs += present("C", d_.C(i, j)) * d_.qd[j];
+            inertial += present("B", d_.B(i, j)) * d_.qdd[j];
+            velocity += present("C", d_.C(i, j)) * d_.qd[j];
         }
-        return lhs;
+        return {inertial, velocity, present("g", d_.g(i, 0))};
     }
+
+private:
+    std::vector<GiNaC::symbol> parameters() const {
+        std::vector<GiNaC::symbol> symbols;
+        for (const GiNaC::ex& rel : d_.parameterValues)
+            if (GiNaC::is_a<GiNaC::symbol>(rel.lhs())) symbols.push_back(GiNaC::ex_to<GiNaC::symbol>(rel.lhs()));
+        return symbols;
+    }
+
+public:
 
 private:
     const Derivation& d_;
@@ -94,11 +107,28 @@ StepRange parseSteps(const std::string& text) {
     return range;
 }
 
+// Printed parts joined as a sum in the given order ("a + b − c"), zeros left out.
+std::string joinTerms(const std::vector<GiNaC::ex>& parts, const PrintOptions& options) {
+    std::string out;
+    for (const GiNaC::ex& part : parts) {
+        if (part.is_zero()) continue;
+        std::string text = print(part, options);
+        for (const std::string minus : {"\u2212", "-"})
+            if (!out.empty() && text.rfind(minus, 0) == 0) {
+                out += " " + minus + " " + text.substr(minus.size());
+                text.clear();
+                break;
+            }
+        if (!text.empty()) out += (out.empty() ? "" : " + ") + text;
+    }
+    return out.empty() ? "0" : out;
+}
+
 std::string renderItem(const DerivationItem& item, Presenter& presenter, const PrintOptions& options, bool latexName) {
     const std::string name = latexName ? item.latexName : item.name;
     if (item.name.rfind("equation_", 0) == 0) {
         const int row = std::stoi(item.name.substr(9)) - 1;
-        return printEquation(presenter.equationSide(row), presenter.present("Q", item.value.rhs()), options);
+        return joinTerms(presenter.equationParts(row), options) + " = " + print(presenter.present("Q", item.value.rhs()), options);
     }
     return printEquation(name, presenter.present(item.name, item.value), options);
 }
@@ -130,7 +160,7 @@ std::string actuationText(const Derivation& d) {
 
 void writeText(const Derivation& d, std::ostream& out) {
     const PrintOptions text = printOptionsFor(d, Style::Text);
-    Presenter presenter(d, true);
+    Presenter presenter(d, d.trigToFunctions.nops() > 0);
     out << d.systemName << "\n" << std::string(d.systemName.size(), '=') << "\n";
     for (const DerivationStep& step : d.steps) {
         out << "\nStep " << step.number << ". " << step.title << "\n    " << step.formulaText << "\n\n";
@@ -141,7 +171,7 @@ void writeText(const Derivation& d, std::ostream& out) {
 
 void writeLatex(const Derivation& d, std::ostream& out) {
     const PrintOptions latex = printOptionsFor(d, Style::Latex);
-    Presenter presenter(d, true);
+    Presenter presenter(d, d.trigToFunctions.nops() > 0);
     out << "\\documentclass[a4paper,10pt]{article}\n"
            "\\usepackage[margin=1.5cm,landscape]{geometry}\n"
            "\\usepackage{amsmath,amssymb}\n"
@@ -162,7 +192,7 @@ void writeLatex(const Derivation& d, std::ostream& out) {
 void writeJson(const Derivation& d, const std::string& mode, std::ostream& out) {
     const PrintOptions text = printOptionsFor(d, Style::Text), latex = printOptionsFor(d, Style::Latex),
                        plain = printOptionsFor(d, Style::Plain);
-    Presenter presenter(d, true);
+    Presenter presenter(d, d.trigToFunctions.nops() > 0);
     nlohmann::ordered_json j;
     j["system"] = d.systemName;
     j["mode"] = mode;
@@ -221,7 +251,8 @@ int deriveCommand(const Args& args) {
     derivation.firstStep = range.first;
     derivation.lastStep = range.last;
     const std::string mode = options.has("symbolic") ? "symbolic" : options.has("numeric") ? "numeric" : "parameters";
-    const Derivation d = deriveRobot(scene, derivation);
+    Derivation d = scene.lagrangian ? deriveLagrangian(scene, derivation.mode) : deriveRobot(scene, derivation);
+    std::erase_if(d.steps, [&](const DerivationStep& s) { return s.number < range.first || s.number > range.last; });
 
     if (options.has("timings")) {
         double total = 0;

@@ -185,6 +185,30 @@ private slots:
         QCOMPARE(again.out, r.out);  // deterministic from run to run
     }
 
+    // The course notes' rotational mass–spring pair typed as a Lagrangian: the
+    // equations come out in the notes' own form, the JSON in the user's names.
+    void deriveLagrangianMassSpringPair() {
+        const Run text = run({"derive", example("mass_spring_pair_lagrangian.json")});
+        QCOMPARE(text.exitCode, 0);
+        const QString out = QString::fromUtf8(text.out);
+        QVERIFY2(out.contains(QString::fromUtf8("I1 θ̈1 + K1 θ1 + K2 (θ1 − θ2) = 0")), qPrintable(out));
+        QVERIFY(out.contains(QString::fromUtf8("I2 θ̈2 − K2 (θ1 − θ2) = τ")));
+        const Run json = run({"derive", example("mass_spring_pair_lagrangian.json"), "--format", "json"});
+        QCOMPARE(json.exitCode, 0);
+        const QJsonObject d = QJsonDocument::fromJson(json.out).object();
+        QCOMPARE(d["coordinates"].toArray()[1].toString(), QString("theta2"));
+        QCOMPARE(d["B"].toArray()[0].toArray()[0].toString(), QString("I1"));
+        QCOMPARE(d["B"].toArray()[0].toArray()[1].toString(), QString("0"));
+        QCOMPARE(d["Q"].toArray()[1].toString(), QString("tau"));
+        // g = ∂E_pot/∂θ in plain syntax, checked by value: K1 θ1 + K2 (θ1 − θ2) at θ = (0.3, −0.2)
+        GiNaC::symtab table;
+        for (const char* name : {"theta1", "theta2", "K1", "K2"}) table[name] = GiNaC::symbol(name);
+        GiNaC::parser reader(table);
+        const GiNaC::ex g1 = reader(d["g"].toArray()[0].toString().toStdString());
+        const GiNaC::lst values{table["theta1"] == 0.3, table["theta2"] == -0.2, table["K1"] == 10, table["K2"] == 4};
+        QVERIFY(std::abs(GiNaC::ex_to<GiNaC::numeric>(g1.subs(values).evalf()).to_double() - (10 * 0.3 + 4 * 0.5)) < 1e-12);
+    }
+
     void deriveLatexIsACompleteDocument() {
         const Run r = run({"derive", example("scara.json"), "--format", "latex"});
         QCOMPARE(r.exitCode, 0);
