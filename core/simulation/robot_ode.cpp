@@ -29,6 +29,9 @@ const char* toString(RhsTerm term) {
 
 namespace {
 double signOf(double v) { return v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0); }
+// A sliding Stick joint slower than this [rad/s or m/s] is at rest for the event logic
+// (a located crossing ends within 1e-10 of zero).
+constexpr double kRestSpeed = 1e-9;
 }  // namespace
 
 RobotOde::RobotOde(const RobotModel& model, const Effects& effects)
@@ -112,7 +115,7 @@ double RobotOde::eventFraction(const OdeState& x0, const OdeState& x1) const {
         if (s.stuck) continue;
         const double v0 = x0[n + s.joint], v1 = x1[n + s.joint];
         const double dir = s.sign != 0 ? s.sign : signOf(v0);
-        if (!(v1 * dir < 0) || !(v0 * dir > 0)) continue;
+        if (!(v1 * dir < 0) || !(v0 * dir > kRestSpeed)) continue;  // (from rest: afterStep's business)
         if (std::abs(v1) <= 1e-10 * std::max(1.0, std::abs(v0))) continue;  // located closely enough
         theta = std::min(theta, v0 / (v0 - v1));
     }
@@ -248,7 +251,7 @@ bool RobotOde::afterStep(double t, OdeState& x) {
         if (j.stuck && v != 0) {
             j.stuck = false;
             j.sign = signOf(v);
-        } else if (!j.stuck && (v == 0 || v * j.sign < 0)) {
+        } else if (!j.stuck && (std::abs(v) <= kRestSpeed || v * j.sign < 0)) {
             candidates.push_back(s);
         } else if (!j.stuck) {
             j.sign = signOf(v);
@@ -264,9 +267,10 @@ bool RobotOde::afterStep(double t, OdeState& x) {
     }
     for (StickJoint& j : stick_) {
         if (!j.stuck || qdd_[j.joint] == 0.0) continue;
-        j.stuck = false;  // the holding force would exceed F_c: it slides (or turns round)
-        const double v = x[n + j.joint];
-        j.sign = v != 0 ? signOf(v) : signOf(qdd_[j.joint]);
+        // The holding force would exceed F_c: it slides (or turns round) in the direction
+        // it accelerates with F_c against it, which the clamped solve just gave.
+        j.stuck = false;
+        j.sign = signOf(qdd_[j.joint]);
     }
     // Stop the newly stuck joints with an inelastic impulse on the stuck joints only:
     // Δq̇ = B⁻¹ E_S λ with (B⁻¹)_SS λ = −q̇_S. It takes ½ q̇_Sᵀ ((B⁻¹)_SS)⁻¹ q̇_S of kinetic
