@@ -78,6 +78,7 @@ void writeCsv(const WorkPrecisionResult& r, const std::string& path) {
 
 void printTable(const WorkPrecisionResult& r) {
     std::printf("work-precision of %s over %g s\n%s\n\n", r.scene.c_str(), r.duration, workPrecisionDefinitions());
+    if (r.status == SimulationStatus::Failed) return;  // the reference failed: main() says why
     std::printf("reference: %s at tol %.1e, its own error estimate %.2e, energy drift %.2e, CPU %.1f ms\n\n",
                 r.reference.integrator.c_str(), r.reference.tolerance, r.reference.estimatedError,
                 r.reference.maxRelEnergyDrift, 1e3 * r.reference.cpuSeconds);
@@ -128,6 +129,10 @@ int accuracyCommand(const Args& args) {
     });
     if (tty) std::fprintf(stderr, "\r%*s\r", 50, "");
     printTable(result);
+    if (result.status == SimulationStatus::Failed) {
+        std::fprintf(stderr, "error: %s\n", result.message.c_str());
+        return 3;
+    }
     if (options.has("csv")) writeCsv(result, options.text("csv"));
     if (!plot.empty()) {
         // Fonts need a QGuiApplication; with no display, render offscreen.
@@ -143,10 +148,6 @@ int accuracyCommand(const Args& args) {
         if (!ui::saveWorkPrecisionPlot(result, QString::fromStdString(plot), &error))
             throw std::runtime_error(error.toStdString());
         std::fprintf(stderr, "plot written to %s\n", plot.c_str());
-    }
-    if (result.status == SimulationStatus::Failed) {
-        std::fprintf(stderr, "error: %s\n", result.message.c_str());
-        return 3;
     }
     return 0;
 }

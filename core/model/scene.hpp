@@ -21,6 +21,9 @@ struct SimulationSettings {
     double relTol = 1e-8;
     double dt = 1e-3;                 // fixed step, or first trial step of adaptive methods [s]
     double outputRate = 100.0;        // samples per second in the recorded trajectory
+    // Not a scene-file field: explicit adaptive methods stop on a stiff scene unless this is
+    // off (the work–precision reference turns it off: it must resolve every mode).
+    bool detectStiffness = true;
 };
 
 struct InitialState {

@@ -92,6 +92,7 @@ SimulationResult simulate(const Scene& scene, const SimulationSettings& settings
     integration.absTol = settings.absTol;
     integration.relTol = settings.relTol;
     integration.dt = settings.dt;
+    integration.detectStiffness = settings.detectStiffness;
     if (!findIntegrator(integration.integrator))
         throw std::invalid_argument("unknown integrator '" + settings.integrator + "' (known: " + integratorNames() + ")");
 
