@@ -41,7 +41,8 @@ const Eigen::VectorXd& forwardDynamics(const RobotModel& model, RobotData& data,
         throw SingularMassMatrix(joint, "mass matrix B(q) is singular: joint " + std::to_string(joint + 1) +
                                             " moves no mass or inertia that earlier joints do not already move");
     }
-    data.qdd = data.B_llt.solve(data.rhs);
+    data.qdd = data.rhs;
+    data.B_llt.solveInPlace(data.qdd);
     return data.qdd;
 }
 

@@ -5,10 +5,10 @@
 // All vectors are in the world frame (= DH base frame when the base is identity).
 #include <vector>
 
-#include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "core/dynamics/cholesky.hpp"
 #include "core/dynamics/spatial.hpp"
 #include "core/model/robot_model.hpp"
 
@@ -54,7 +54,7 @@ struct RobotData {
     Eigen::VectorXd h;                     // (n) C q̇ + g
     Eigen::VectorXd rhs;                   // (n) Q − C q̇ − g
     Eigen::VectorXd qdd;                   // (n) joint accelerations
-    Eigen::LLT<Eigen::MatrixXd> B_llt;     // Cholesky factor of B
+    Cholesky B_llt;                        // Cholesky factor of B
 };
 
 }  // namespace ll

@@ -160,7 +160,8 @@ void RobotOde::solveAccelerations() {
     for (size_t s = 0; s < stick_.size(); ++s)
         if (stick_[s].stuck) held.push_back(static_cast<int>(s));
     if (held.empty()) {
-        qdd_ = data_.B_llt.solve(rhs_);
+        qdd_ = rhs_;
+        data_.B_llt.solveInPlace(qdd_);
         return;
     }
     // Held joints have q̈_i = 0; the rest solve B_FF q̈_F = rhs_F. The holding force of
@@ -211,7 +212,8 @@ void RobotOde::solveAccelerations() {
         Q_[i] += clamp;
         held.erase(held.begin() + worst);
         if (held.empty()) {
-            qdd_ = data_.B_llt.solve(rhs_);
+            qdd_ = rhs_;
+        data_.B_llt.solveInPlace(qdd_);
             return;
         }
     }
@@ -290,7 +292,8 @@ bool RobotOde::afterStep(double t, OdeState& x) {
         E(S[a], a) = 1.0;
         vS[a] = x[n + S[a]];
     }
-    const Eigen::MatrixXd M = data_.B_llt.solve(E);  // B⁻¹ E_S
+    Eigen::MatrixXd M = E;  // becomes B⁻¹ E_S
+    data_.B_llt.solveInPlace(M);
     Eigen::MatrixXd G(k, k);
     for (int a = 0; a < k; ++a) G.row(a) = M.row(S[a]);
     const Eigen::VectorXd lambda = -G.llt().solve(vS);
