@@ -1,4 +1,4 @@
-// `lagrangelab bench [SCENE...] [--batches N] [--rhs]`: median times of our dynamics
+// `lagrangelab bench [SCENE...] [--batches N] [--rhs | --derive]`: median times of our dynamics
 // beside KDL's solvers, measured in the same run on the same random states; with --rhs,
 // one right-hand-side evaluation with no effects, gravity only and all effects.
 #include <algorithm>
@@ -17,6 +17,8 @@
 #include "core/kinematics/forward_kinematics.hpp"
 #include "core/simulation/robot_ode.hpp"
 #include "core/simulation/simulate.hpp"
+#include "core/symbolic/lagrangian_derivation.hpp"
+#include "core/symbolic/robot_derivation.hpp"
 #ifdef LL_HAVE_KDL
 #include "tests/oracle/kdl_chain.hpp"
 #endif
@@ -105,12 +107,44 @@ int benchRhs(const std::vector<std::string>& scenes, int batches) {
     return 0;
 }
 
+// `bench --derive`: wall time of the whole symbolic derivation (steps 0–8, incl. C)
+// per parameter mode, median of `repeats` runs.
+int benchDerive(const std::vector<std::string>& scenes, int repeats) {
+    using namespace ll::symbolic;
+    std::printf("median wall time [ms] of the whole derivation (steps 0-8, incl. C) over %d runs\n\n", repeats);
+    std::printf("%-30s %2s | %11s %11s %11s\n", "system", "n", "parameters", "numeric", "symbolic");
+    for (const std::string& path : scenes) {
+        const Scene scene = loadSceneReportingWarnings(path);
+        std::printf("%-30.30s %2d |", scene.name.c_str(), scene.dof());
+        for (ParameterMode mode : {ParameterMode::Parametric, ParameterMode::Numeric, ParameterMode::Textbook}) {
+            std::vector<double> ms;
+            for (int r = 0; r < repeats; ++r) {
+                const auto start = std::chrono::steady_clock::now();
+                DerivationOptions options;
+                options.mode = mode;
+                const Derivation d = scene.lagrangian ? deriveLagrangian(scene, mode) : deriveRobot(scene, options);
+                ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+            }
+            std::sort(ms.begin(), ms.end());
+            std::printf(" %11.2f", ms[ms.size() / 2]);
+        }
+        std::printf("\n");
+    }
+    return 0;
+}
+
 }  // namespace
 
 int benchCommand(const Args& args) {
-    const Options options(args, {"batches"}, {"rhs"});
+    const Options options(args, {"batches"}, {"rhs", "derive"});
     const int batches = static_cast<int>(options.number("batches", 21));
     std::vector<std::string> scenes = options.positional();
+    if (options.has("derive")) {
+        if (scenes.empty())
+            for (const char* name : {"planar_2r", "scara", "cart_pole", "puma560", "stanford_arm", "mass_spring_pair_lagrangian"})
+                scenes.push_back(std::string(LL_EXAMPLES_DIR) + "/" + name + ".json");
+        return benchDerive(scenes, static_cast<int>(options.number("batches", 5)));
+    }
     if (options.has("rhs")) {
         if (scenes.empty()) scenes.push_back(std::string(LL_EXAMPLES_DIR) + "/puma560.json");
         return benchRhs(scenes, batches);

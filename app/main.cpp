@@ -25,9 +25,10 @@ const char* kUsage =
     "  accuracy SCENE [--integrators a,b,...] [--tolerances 1e-3..1e-12] [--steps dt1,dt2,...] [--duration T]\n"
     "           [--repeats N] [--reference-tol X] [--out plot.svg|png] [--csv FILE]\n"
     "      work-precision: error, energy drift, CPU time, evaluations and steps per integrator and setting\n"
-    "  bench [SCENE...] [--batches N] [--rhs]\n"
+    "  bench [SCENE...] [--batches N] [--rhs | --derive]\n"
     "      median times of B, C, g, forward/inverse dynamics and one simulated second, beside KDL\n"
-    "      (--rhs: one right-hand side of the PUMA 560 with no effects, gravity only, all effects)\n"
+    "      (--rhs: one right-hand side of the PUMA 560 with no effects, gravity only, all effects;\n"
+    "       --derive: the whole symbolic derivation per parameter mode)\n"
     "\n"
     "exit codes: 0 success, 2 bad input, 3 simulation stopped early\n";
 

@@ -220,6 +220,13 @@ private slots:
         for (int step = 0; step <= 8; ++step) QVERIFY(tex.contains(QString("Step %1:").arg(step).toUtf8()));
     }
 
+    void benchDeriveReportsEveryMode() {
+        const Run r = run({"bench", "--derive", example("planar_2r.json"), "--batches", "1"});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY(r.out.contains("parameters") && r.out.contains("numeric") && r.out.contains("symbolic"));
+        QVERIFY(r.out.contains("Planar 2R"));
+    }
+
     void badCommandLineGivesExitCode2() {
         QCOMPARE(run({"eval", example("puma560.json"), "--q", "0,0"}).exitCode, 2);
         QCOMPARE(run({"simulate", example("puma560.json"), "--integrator", "nope"}).exitCode, 2);
