@@ -53,7 +53,7 @@ public:
                 for (unsigned c = 0; c < m.cols(); ++c) m(r, c) = present(name, m(r, c));
             return m;
         }
-        GiNaC::ex e = robot_ ? combiner_.combine(value) : value.expand();
+        GiNaC::ex e = robot_ ? combiner_.combine(shorterInSines(value)) : value.expand();
         const bool byVelocity =
             name == "C" || name == "E_kin" || name.rfind("w_", 0) == 0 || name.rfind("v_c", 0) == 0;
         // Robots group by masses (m2 (a1² + ...)); a hand-typed Lagrangian by its
@@ -74,6 +74,24 @@ public:
     }
 
 private:
+    static size_t termCount(const GiNaC::ex& e) { return GiNaC::is_a<GiNaC::add>(e) ? e.nops() : 1; }
+
+    // The derivation keeps powers of c_i and reduces s_i² = 1 − c_i² (a canonical form);
+    // a textbook writes I1 s1², not I1 − I1 c1². For display, eliminate c_i² instead
+    // wherever that gives fewer terms.
+    GiNaC::ex shorterInSines(const GiNaC::ex& value) const {
+        using namespace GiNaC;  // is_ex_the_function is a macro naming GiNaC's function classes
+        ex e = value.expand();
+        const GiNaC::lst& trig = d_.trigToFunctions;  // c_i == cos(q_i), s_i == sin(q_i), in pairs
+        for (size_t k = 0; k + 1 < trig.nops(); k += 2) {
+            const GiNaC::ex c = trig.op(k).lhs(), s = trig.op(k + 1).lhs();
+            if (!is_ex_the_function(trig.op(k).rhs(), cos) || e.degree(c) < 2) continue;
+            const GiNaC::ex alternative = GiNaC::rem(e, c * c + s * s - 1, c).expand();
+            if (termCount(alternative) < termCount(e)) e = alternative;
+        }
+        return e;
+    }
+
     std::vector<GiNaC::symbol> parameters() const {
         std::vector<GiNaC::symbol> symbols;
         for (const GiNaC::ex& rel : d_.parameterValues)
