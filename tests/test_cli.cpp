@@ -75,6 +75,16 @@ private slots:
         QVERIFY(r.err.contains("max |dE|/E"));
     }
 
+    void lagrangianTrajectoryUsesTheUsersNames() {
+        QTemporaryDir dir;
+        const QString csv = dir.filePath("pair.csv");
+        const Run r = run({"simulate", example("mass_spring_pair_lagrangian.json"), "--duration", "0.5", "--out", csv});
+        QCOMPARE(r.exitCode, 0);
+        QFile f(csv);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QCOMPARE(f.readLine().trimmed(), QByteArray("t,theta1,theta2,theta1_dot,theta2_dot,Ekin,Epot,E,W"));
+    }
+
     void underactuatedIsReported() {
         const Run r = run({"simulate", example("acrobot.json"), "--duration", "0.1", "--out", QDir::temp().filePath("acrobot.json")});
         QCOMPARE(r.exitCode, 0);

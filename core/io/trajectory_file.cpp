@@ -10,10 +10,31 @@
 
 namespace ll {
 
+namespace {
+
+// Column names: q1.., qd1.. for robots; a Lagrangian system's own names, x and x_dot.
+// (Appending, not "q" + to_string: GCC 12 warns falsely about the latter at -O3.)
+std::string indexed(const char* stem, int i) {
+    std::string name(stem);
+    name.append(std::to_string(i + 1));
+    return name;
+}
+
+std::string coordinateName(const Trajectory& tr, int i) {
+    return i < static_cast<int>(tr.names.size()) ? tr.names[i] : indexed("q", i);
+}
+
+std::string velocityName(const Trajectory& tr, int i) {
+    const std::string q = coordinateName(tr, i);
+    return q == indexed("q", i) ? indexed("qd", i) : q + "_dot";
+}
+
+}  // namespace
+
 void writeTrajectoryCsv(const Trajectory& tr, std::ostream& out) {
     out << "t";
-    for (int i = 1; i <= tr.n; ++i) out << ",q" << i;
-    for (int i = 1; i <= tr.n; ++i) out << ",qd" << i;
+    for (int i = 0; i < tr.n; ++i) out << ',' << coordinateName(tr, i);
+    for (int i = 0; i < tr.n; ++i) out << ',' << velocityName(tr, i);
     out << ",Ekin,Epot,E,W\n";
     char buffer[32];
     const auto put = [&](double v) {
@@ -39,12 +60,12 @@ void writeTrajectoryJson(const SimulationResult& result, std::ostream& out) {
     for (int i = 0; i < tr.n; ++i) {
         std::vector<double> column(tr.size());
         for (size_t k = 0; k < tr.size(); ++k) column[k] = tr.q[k][i];
-        j["q" + std::to_string(i + 1)] = column;
+        j[coordinateName(tr, i)] = column;
     }
     for (int i = 0; i < tr.n; ++i) {
         std::vector<double> column(tr.size());
         for (size_t k = 0; k < tr.size(); ++k) column[k] = tr.qd[k][i];
-        j["qd" + std::to_string(i + 1)] = column;
+        j[velocityName(tr, i)] = column;
     }
     j["Ekin"] = tr.Ekin;
     j["Epot"] = tr.Epot;

@@ -38,6 +38,14 @@ public:
     Recorder(const Scene& scene, Trajectory& trajectory, const LagrangianOde* lagrangian)
         : scene_(scene), traj_(trajectory), lagrangian_(lagrangian), data_(scene.robot) {
         traj_.n = scene.dof();
+        for (int i = 0; i < traj_.n; ++i) {
+            if (scene.lagrangian) {
+                traj_.names.push_back(scene.lagrangian->coordinates[i]);
+            } else {
+                traj_.names.emplace_back("q");
+                traj_.names.back().append(std::to_string(i + 1));
+            }
+        }
     }
 
     void record(double t, const OdeState& x) {

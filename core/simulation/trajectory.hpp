@@ -10,6 +10,7 @@ namespace ll {
 
 struct Trajectory {
     int n = 0;                        // coordinates
+    std::vector<std::string> names;   // (n) coordinate names: q1..qn, or a Lagrangian's own
     std::vector<double> t;            // sample times [s]
     std::vector<Eigen::VectorXd> q;   // (n) per sample
     std::vector<Eigen::VectorXd> qd;  // (n) per sample
