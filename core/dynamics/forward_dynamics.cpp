@@ -27,6 +27,14 @@ int firstSingularJoint(const Eigen::MatrixXd& B, double relTol) {
     return -1;
 }
 
+void factorMassMatrix(RobotData& data) {
+    data.B_llt.compute(data.B);
+    if (data.B_llt.info() == Eigen::Success) return;
+    const int joint = firstSingularJoint(data.B);
+    throw SingularMassMatrix(joint, "mass matrix B(q) is singular: joint " + std::to_string(joint + 1) +
+                                        " moves no mass or inertia that earlier joints do not already move");
+}
+
 const Eigen::VectorXd& forwardDynamics(const RobotModel& model, RobotData& data, const Effects& effects,
                                        const Eigen::VectorXd& q, const Eigen::VectorXd& qd,
                                        const Eigen::VectorXd& Q) {
@@ -35,12 +43,7 @@ const Eigen::VectorXd& forwardDynamics(const RobotModel& model, RobotData& data,
     data.qdd.setZero();
     data.h = rnea(model, data, effects, q, qd, data.qdd);  // C q̇ + g
     data.rhs = Q - data.h;
-    data.B_llt.compute(data.B);
-    if (data.B_llt.info() != Eigen::Success) {
-        const int joint = firstSingularJoint(data.B);
-        throw SingularMassMatrix(joint, "mass matrix B(q) is singular: joint " + std::to_string(joint + 1) +
-                                            " moves no mass or inertia that earlier joints do not already move");
-    }
+    factorMassMatrix(data);
     data.qdd = data.rhs;
     data.B_llt.solveInPlace(data.qdd);
     return data.qdd;

@@ -24,6 +24,10 @@ private:
     int joint_;
 };
 
+// Factors data.B into data.B_llt; throws SingularMassMatrix naming the joint when B
+// is not positive definite. Allocates nothing unless it throws.
+void factorMassMatrix(RobotData& data);
+
 // Q: (n) non-conservative generalized forces. Fills data.B, data.h, data.rhs, data.qdd;
 // returns data.qdd. Throws SingularMassMatrix. Allocates nothing.
 const Eigen::VectorXd& forwardDynamics(const RobotModel& model, RobotData& data, const Effects& effects,

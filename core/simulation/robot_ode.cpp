@@ -150,12 +150,7 @@ void RobotOde::evaluateForces(const OdeState& x, double t) {
 }
 
 void RobotOde::solveAccelerations() {
-    data_.B_llt.compute(data_.B);
-    if (data_.B_llt.info() != Eigen::Success) {
-        const int joint = firstSingularJoint(data_.B);
-        throw SingularMassMatrix(joint, "mass matrix B(q) is singular: joint " + std::to_string(joint + 1) +
-                                            " moves no mass or inertia that earlier joints do not already move");
-    }
+    factorMassMatrix(data_);
     std::vector<int> held;
     for (size_t s = 0; s < stick_.size(); ++s)
         if (stick_[s].stuck) held.push_back(static_cast<int>(s));
