@@ -121,7 +121,7 @@ int accuracyCommand(const Args& args) {
     const std::string plot = options.text("out");
     if (!plot.empty() && !plot.ends_with(".svg") && !plot.ends_with(".png"))
         throw UsageError("--out: the plot is written as .svg or .png, got '" + plot + "'");
-    requireValidScene(scene);
+    requireValidSceneFrom(scene, options.positional()[0]);
 
     const bool tty = ::isatty(STDERR_FILENO);
     const WorkPrecisionResult result = runWorkPrecision(scene, settings, [&](double f, const std::string& what) {

@@ -73,7 +73,7 @@ int simulateCommand(const Args& args) {
     settings.relTol = options.number("rel-tol", settings.relTol);
     settings.dt = options.number("dt", settings.dt);
     settings.outputRate = options.number("output-rate", settings.outputRate);
-    requireValidScene(scene);  // the command-line values too
+    requireValidSceneFrom(scene, options.positional()[0]);  // the command-line values too
 
     ProgressBar bar(::isatty(STDERR_FILENO) && settings.duration > 0);
     const SimulationResult result = simulate(scene, settings, [&](double f) { bar(f); });

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "core/io/scene_file.hpp"
+#include "core/model/validation.hpp"
 #include "core/symbolic/lagrangian_derivation.hpp"
 
 namespace ll::cli {
@@ -20,6 +21,16 @@ Scene loadSceneReportingWarnings(const std::string& path) {
         }
     for (const Diagnostic& w : loaded.warnings) std::cerr << "warning: " << w.field << ": " << w.message << '\n';
     return std::move(loaded.scene);
+}
+
+void requireValidSceneFrom(const Scene& scene, const std::string& path) {
+    try {
+        requireValidScene(scene);
+    } catch (const InputError& e) {
+        std::vector<Diagnostic> named = e.diagnostics();
+        for (Diagnostic& d : named) d.field = path + ": " + d.field;
+        throw InputError(named);
+    }
 }
 
 }  // namespace ll::cli

@@ -8,4 +8,8 @@ namespace ll::cli {
 
 Scene loadSceneReportingWarnings(const std::string& path);
 
+// requireValidScene after command-line overrides, with errors named "<path>: <field>"
+// like those of loading.
+void requireValidSceneFrom(const Scene& scene, const std::string& path);
+
 }  // namespace ll::cli

@@ -73,6 +73,9 @@ private slots:
             scene.effects.springs.push_back({scene.dof(), 1.0, 0.0});  // one past the last joint (coordinate)
             QVERIFY(namesError(validateScene(scene), "effects.springs[" + std::to_string(scene.effects.springs.size()) + "].joint"));
             scene = original;
+            scene.simulation.duration = 1e9;  // 1e11 samples at 100 Hz: refused, not bad_alloc
+            QVERIFY(namesError(validateScene(scene), "simulation.output_rate"));
+            scene = original;
             scene.simulation.integrator = "rk45";
             QVERIFY(namesError(validateScene(scene), "simulation.integrator"));
         }

@@ -214,6 +214,12 @@ std::vector<Diagnostic> validateScene(const Scene& scene) {
     checkPositive("simulation.rel_tol", sim.relTol);
     checkPositive("simulation.dt", sim.dt);
     checkPositive("simulation.output_rate", sim.outputRate);
+    // Every sample is kept in memory (and plotted); ten million is already ~2 GB.
+    constexpr double maxSamples = 1e7;
+    if (std::isfinite(sim.duration) && std::isfinite(sim.outputRate) && sim.duration * sim.outputRate > maxSamples)
+        error(out, "simulation.output_rate",
+              "duration " + fmt(sim.duration) + " s at " + fmt(sim.outputRate) + " samples/s would record " +
+                  fmt(sim.duration * sim.outputRate) + " samples (at most 1e+07): lower the output rate or the duration");
     return out;
 }
 
