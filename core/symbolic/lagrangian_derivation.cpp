@@ -1,7 +1,6 @@
 #include "core/symbolic/lagrangian_derivation.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -15,6 +14,7 @@
 #include "core/io/lagrangian_fields.hpp"
 #include "core/model/diagnostics.hpp"
 #include "core/symbolic/exact_numbers.hpp"
+#include "core/symbolic/expression_printer.hpp"
 
 namespace ll::symbolic {
 namespace {
@@ -57,25 +57,13 @@ ex simplified(const ex& e) {
     return reduce(e.expand()).expand();
 }
 
-// theta1 → \theta_{1}, x → x, phi_a → \phi_{a}, mass → \mathrm{mass}: a coordinate's
-// name in LaTeX, for the item names (the expressions are printed by expression_printer).
-std::string latexName(const std::string& name) {
-    static const char* greek[] = {"alpha", "beta",  "gamma", "delta", "epsilon", "zeta",  "eta",     "theta",
-                                  "iota",  "kappa", "lambda", "mu",   "nu",      "xi",    "pi",      "rho",
-                                  "sigma", "tau",   "upsilon", "phi", "chi",     "psi",   "omega",   "Gamma",
-                                  "Delta", "Theta", "Lambda", "Xi",   "Pi",      "Sigma", "Upsilon", "Phi",
-                                  "Psi",   "Omega"};
-    std::size_t split = name.find('_');
-    if (split == std::string::npos) {
-        split = name.size();
-        while (split > 1 && std::isdigit(static_cast<unsigned char>(name[split - 1]))) --split;
-    }
-    const std::string stem = name.substr(0, split);
-    std::string sub = name.substr(std::min(split + (split < name.size() && name[split] == '_' ? 1 : 0), name.size()));
-    std::string head = stem.size() == 1 ? stem : "\\mathrm{" + stem + "}";
-    for (const char* g : greek)
-        if (stem == g) head = std::string("\\") + g;
-    return sub.empty() ? head : head + "_{" + sub + "}";
+// A coordinate's (or velocity's) name in LaTeX for the item names, rendered by the printer so it
+// reads the same as inside the expressions (theta1 → \theta_{1}, x_cart → x_{\mathrm{cart}}).
+std::string latexName(const GiNaC::symbol& coordinate) {
+    PrintOptions latex;
+    latex.style = Style::Latex;
+    latex.trigSymbols = false;  // the user's names: c1 may be a coordinate
+    return print(coordinate, latex);
 }
 
 // Parameter symbol == its exact value: numbers become the rationals they print as,
@@ -330,7 +318,7 @@ private:
         items.push_back({"L", R"(\mathcal{L})", L});
         for (int i = 0; i < n_; ++i) {
             const std::string q = s_.q[i].get_name(), qd = s_.qd[i].get_name();
-            const std::string lq = latexName(q), lqd = R"(\dot{)" + lq + "}";
+            const std::string lq = latexName(s_.q[i]), lqd = latexName(s_.qd[i]);
             const ex momentum = L.diff(s_.qd[i]);
             ex rate = 0;  // d/dt by the chain rule (E_kin and E_pot do not depend on t)
             for (int j = 0; j < n_; ++j)
