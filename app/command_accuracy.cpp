@@ -15,9 +15,9 @@
 #include "app/cli_options.hpp"
 #include "app/commands.hpp"
 #include "app/scene_loading.hpp"
-#include "core/model/validation.hpp"
+#include "core/simulation/scene_validation.hpp"
 #include "core/simulation/integrators.hpp"
-#include "core/simulation/work_precision.hpp"
+#include "core/pipeline/scene_simulation.hpp"
 #include "ui/work_precision_plot.hpp"
 
 namespace ll::cli {

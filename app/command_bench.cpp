@@ -16,7 +16,7 @@
 #include "core/dynamics/mass_matrix.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
 #include "core/simulation/robot_ode.hpp"
-#include "core/simulation/simulate.hpp"
+#include "core/pipeline/scene_simulation.hpp"
 #include "core/symbolic/lagrangian_derivation.hpp"
 #include "core/symbolic/robot_derivation.hpp"
 #ifdef LL_HAVE_KDL

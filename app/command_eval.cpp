@@ -18,6 +18,7 @@
 #include "core/model/diagnostics.hpp"
 #include "core/simulation/generalized_forces.hpp"
 #include "core/symbolic/compiled_derivation.hpp"
+#include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/lagrangian_derivation.hpp"
 
 namespace ll::cli {
@@ -42,9 +43,10 @@ int evalLagrangian(const Scene& scene, const Options& options) {
     const Eigen::VectorXd q = options.has("q") ? options.vector("q", n) : scene.initial.q;
     const Eigen::VectorXd qd = options.has("qd") ? options.vector("qd", n) : scene.initial.qd;
     const double t = options.number("t", 0.0);
+    const auto lock = symbolic::lockGinac();  // the derivation is GiNaC objects
     const symbolic::Derivation d = symbolic::deriveLagrangian(scene, symbolic::ParameterMode::Numeric);
-    const symbolic::CompiledDerivation model(d);
-    symbolic::ModelTerms m = model.terms(q, qd, t);
+    const CompiledLagrangian model = symbolic::compileDerivation(d);
+    ModelTerms m = model.terms(q, qd, t);
     if (options.has("tau")) m.Q += options.vector("tau", n) - model.terms(q, Eigen::VectorXd::Zero(n), t).Q;
     const Eigen::LLT<Eigen::MatrixXd> llt(m.B);
     if (llt.info() != Eigen::Success)

@@ -9,8 +9,8 @@
 #include "app/commands.hpp"
 #include "app/scene_loading.hpp"
 #include "core/io/trajectory_file.hpp"
-#include "core/model/validation.hpp"
-#include "core/simulation/simulate.hpp"
+#include "core/simulation/scene_validation.hpp"
+#include "core/pipeline/scene_simulation.hpp"
 
 namespace ll::cli {
 namespace {

@@ -3,7 +3,8 @@
 #include <iostream>
 
 #include "core/io/scene_file.hpp"
-#include "core/model/validation.hpp"
+#include "core/simulation/scene_validation.hpp"
+#include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/lagrangian_derivation.hpp"
 
 namespace ll::cli {
@@ -13,6 +14,7 @@ Scene loadSceneReportingWarnings(const std::string& path) {
     // A Lagrangian's input errors (E_kin not quadratic, dependent coordinates, a
     // conservative Q) come from its derivation: found here, they name the file too.
     if (loaded.scene.lagrangian) try {
+            const auto lock = symbolic::lockGinac();
             (void)symbolic::deriveLagrangian(loaded.scene, symbolic::ParameterMode::Numeric);
         } catch (const InputError& e) {
             std::vector<Diagnostic> diagnostics = e.diagnostics();

@@ -9,7 +9,7 @@
 #include <QTemporaryDir>
 
 #include "core/io/scene_file.hpp"
-#include "core/simulation/work_precision.hpp"
+#include "core/pipeline/scene_simulation.hpp"
 #include "ui/work_precision_plot.hpp"
 
 class TestAccuracyCli : public QObject {

@@ -4,7 +4,7 @@
 
 #include <Eigen/Cholesky>
 
-#include "core/dynamics/cholesky.hpp"
+#include "core/math/cholesky.hpp"
 #include "test_support.hpp"
 
 using namespace ll;

@@ -6,7 +6,7 @@
 #include <numbers>
 #include <string>
 
-#include "core/io/expression.hpp"
+#include "core/symbolic/expression.hpp"
 #include "core/model/diagnostics.hpp"
 #include "test_support.hpp"
 

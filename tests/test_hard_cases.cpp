@@ -15,7 +15,7 @@
 #include "core/kinematics/jacobians.hpp"
 #include "core/simulation/integrators.hpp"
 #include "core/simulation/robot_ode.hpp"
-#include "core/simulation/simulate.hpp"
+#include "core/pipeline/scene_simulation.hpp"
 
 using namespace ll;
 

@@ -14,8 +14,8 @@
 #include "core/dynamics/mass_matrix.hpp"
 #include "core/io/scene_file.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
-#include "core/model/validation.hpp"
-#include "core/symbolic/body_poses.hpp"
+#include "core/simulation/scene_validation.hpp"
+#include "core/symbolic/compiled_body_poses.hpp"
 #include "core/symbolic/compiled_derivation.hpp"
 #include "core/symbolic/derivation_evaluator.hpp"
 #include "core/symbolic/lagrangian_derivation.hpp"
@@ -218,7 +218,7 @@ private slots:
         const Derivation relative = deriveLagrangian(scene(kArmParameters, kArmRelative));
         const Derivation absolute = deriveLagrangian(scene(kArmParameters, kArmAbsolute), ParameterMode::Numeric);
         const DerivationEvaluator slow(relative);
-        const CompiledDerivation fast(relative), fastAbsolute(absolute);
+        const CompiledLagrangian fast = compileDerivation(relative), fastAbsolute = compileDerivation(absolute);
         Eigen::Matrix2d J;  // θ = J q
         J << 1, 0, 1, 1;
         std::mt19937 rng(5);
@@ -379,7 +379,7 @@ private slots:
     // The 3D view's bodies follow the coordinates.
     void bodiesArePosedByTheCoordinates() {
         const Scene pendulum = parseScene(readFile(std::string(LL_EXAMPLES_DIR) + "/elastic_pendulum.json"));
-        const BodyPoses poses(pendulum);
+        const BodyPoses poses = compileBodyPoses(pendulum);
         QCOMPARE(poses.count(), 3);
         std::vector<BodyPose> out;
         poses.evaluate(Eigen::Vector2d(1.2, 0.5), 0.0, out);
@@ -389,7 +389,7 @@ private slots:
         QVERIFY((out[1].pose.translation() - bob / 2).norm() < 1e-15);
         QVERIFY((out[1].pose.linear() * Eigen::Vector3d::UnitZ() - bob.normalized()).norm() < 1e-12);
         const Scene pair = parseScene(readFile(std::string(LL_EXAMPLES_DIR) + "/mass_spring_pair_lagrangian.json"));
-        BodyPoses discs(pair);
+        BodyPoses discs = compileBodyPoses(pair);
         discs.evaluate(Eigen::Vector2d(0.3, -0.2), 0.0, out);
         QVERIFY((out[0].pose.linear() - Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()).toRotationMatrix()).norm() < 1e-15);
         QVERIFY((out[1].pose.translation() - Eigen::Vector3d(0.3 * std::cos(0.3), 0.3 * std::sin(0.3), 0.03)).norm() < 1e-15);

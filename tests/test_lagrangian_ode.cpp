@@ -14,7 +14,8 @@
 #include "core/io/scene_file.hpp"
 #include "core/simulation/integrators.hpp"
 #include "core/simulation/lagrangian_ode.hpp"
-#include "core/simulation/simulate.hpp"
+#include "core/pipeline/scene_simulation.hpp"
+#include "core/symbolic/compiled_derivation.hpp"
 #include "core/symbolic/derivation_evaluator.hpp"
 #include "core/symbolic/lagrangian_derivation.hpp"
 #include "test_support.hpp"
@@ -113,7 +114,7 @@ private slots:
     // The elastic pendulum's q̈ written out by hand, against the compiled right-hand side.
     void elasticPendulumRightHandSide() {
         const Scene scene = example("elastic_pendulum.json");
-        LagrangianOde ode(symbolic::deriveLagrangian(scene, symbolic::ParameterMode::Numeric));
+        LagrangianOde ode(symbolic::compileDerivation(symbolic::deriveLagrangian(scene, symbolic::ParameterMode::Numeric)));
         QCOMPARE(ode.coordinates(), 2);
         const double m = 1, k = 40, l0 = 1, g = 9.81;
         std::mt19937 rng(3);
@@ -156,7 +157,7 @@ private slots:
     void compiledRightHandSideIsFast() {
         const Scene scene = example("elastic_pendulum.json");
         const symbolic::Derivation d = symbolic::deriveLagrangian(scene, symbolic::ParameterMode::Parametric);
-        LagrangianOde ode(d);
+        LagrangianOde ode(symbolic::compileDerivation(d));
         const symbolic::DerivationEvaluator slow(d);
         OdeState x = ode.initialState(Eigen::Vector2d(1.3, 0.4), Eigen::Vector2d(0.2, -0.1)), dxdt(x.size());
         const auto perCall = [](auto&& f, int times) {

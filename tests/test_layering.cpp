@@ -1,10 +1,16 @@
 // Dependencies point one way, app → ui → core: core includes no Qt, no
-// OpenSceneGraph and nothing from ui/ or app/; ui includes nothing from app/.
+// OpenSceneGraph and nothing from ui/ or app/; ui includes nothing from app/. Inside
+// core the folders are layers in the order core/CMakeLists.txt lists (LL_CORE_LAYERS):
+// a folder includes only itself and the folders before it, and GiNaC only from
+// core/symbolic on (the build enforces the same with per-layer include folders).
 #include <QtTest>
 
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
 
 namespace fs = std::filesystem;
 
@@ -33,7 +39,69 @@ class TestLayering : public QObject {
         return found;
     }
 
+    // The layer order as core/CMakeLists.txt declares it.
+    static std::vector<std::string> coreLayers() {
+        std::ifstream in(fs::path(LL_SOURCE_DIR) / "core" / "CMakeLists.txt");
+        const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        std::smatch m;
+        if (!std::regex_search(text, m, std::regex("set\\(LL_CORE_LAYERS ([a-z ]+)\\)"))) qFatal("no LL_CORE_LAYERS");
+        std::vector<std::string> layers;
+        std::istringstream words(m[1].str());
+        for (std::string w; words >> w;) layers.push_back(w);
+        return layers;
+    }
+
+    static int rank(const std::vector<std::string>& layers, const std::string& folder) {
+        for (std::size_t i = 0; i < layers.size(); ++i)
+            if (layers[i] == folder) return static_cast<int>(i);
+        return -1;
+    }
+
+    // "file:line: text" for each include of a higher core layer (or of GiNaC below
+    // symbolic) in the sources of core/<folder>.
+    static QStringList layerViolations(const std::vector<std::string>& layers, const std::string& folder,
+                                       const std::string& file, const std::string& text) {
+        QStringList found;
+        const int own = rank(layers, folder), ginacFrom = rank(layers, "symbolic");
+        const std::regex coreInclude("^\\s*#\\s*include\\s*\"core/([a-z_]+)/"), ginac("^\\s*#\\s*include\\s*<ginac/");
+        std::istringstream lines(text);
+        std::string line;
+        for (int n = 1; std::getline(lines, line); ++n) {
+            std::smatch m;
+            const bool up = std::regex_search(line, m, coreInclude) && rank(layers, m[1].str()) > own;
+            if (up || (own < ginacFrom && std::regex_search(line, ginac)))
+                found << QString("%1:%2: %3").arg(QString::fromStdString(file)).arg(n).arg(QString::fromStdString(line));
+        }
+        return found;
+    }
+
 private slots:
+    void coreLayersPointDown() {
+        const std::vector<std::string> layers = coreLayers();
+        QVERIFY(layers.size() >= 6);
+        QStringList bad;
+        for (const auto& dir : fs::directory_iterator(fs::path(LL_SOURCE_DIR) / "core")) {
+            if (!dir.is_directory()) continue;
+            const std::string folder = dir.path().filename().string();
+            QVERIFY2(rank(layers, folder) >= 0, qPrintable(QString::fromStdString("core/" + folder + " is not a layer")));
+            for (const auto& entry : fs::directory_iterator(dir.path())) {
+                std::ifstream in(entry.path());
+                const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+                bad << layerViolations(layers, folder, entry.path().string(), text);
+            }
+        }
+        QVERIFY2(bad.isEmpty(), qPrintable(bad.join('\n')));
+    }
+
+    // The layer check sees a back edge and GiNaC below symbolic when there is one.
+    void detectsALayerViolation() {
+        const std::vector<std::string> layers = coreLayers();
+        QCOMPARE(layerViolations(layers, "dynamics", "f", "#include \"core/io/scene_file.hpp\"\n").size(), 1);
+        QCOMPARE(layerViolations(layers, "simulation", "f", "#include <ginac/ginac.h>\n").size(), 1);
+        QCOMPARE(layerViolations(layers, "io", "f", "#include \"core/dynamics/energy.hpp\"\n").size(), 0);
+        QCOMPARE(layerViolations(layers, "symbolic", "f", "#include <ginac/ginac.h>\n").size(), 0);
+    }
+
     void coreIsPureCpp() {
         const QStringList bad = offending("core", std::regex(kCoreForbidden));
         QVERIFY2(bad.isEmpty(), qPrintable(bad.join('\n')));

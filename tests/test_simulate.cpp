@@ -4,7 +4,7 @@
 #include <QtTest>
 
 #include "core/model/scene.hpp"
-#include "core/simulation/simulate.hpp"
+#include "core/pipeline/scene_simulation.hpp"
 #include "test_support.hpp"
 
 using namespace ll;

@@ -1,7 +1,7 @@
 // Spatial algebra identities the dynamics rely on, against their definitions.
 #include <QtTest>
 
-#include "core/dynamics/spatial.hpp"
+#include "core/math/spatial.hpp"
 #include "test_support.hpp"
 
 using namespace ll;

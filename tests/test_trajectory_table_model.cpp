@@ -1,7 +1,7 @@
 // The Qt item model shows exactly the simulated samples.
 #include <QtTest>
 
-#include "core/simulation/simulate.hpp"
+#include "core/pipeline/scene_simulation.hpp"
 #include "test_support.hpp"
 #include "ui/trajectory_table_model.hpp"
 

@@ -6,8 +6,8 @@
 #include <filesystem>
 
 #include "core/io/scene_file.hpp"
-#include "core/model/validation.hpp"
-#include "core/simulation/simulate.hpp"
+#include "core/simulation/scene_validation.hpp"
+#include "core/pipeline/scene_simulation.hpp"
 #include "test_support.hpp"
 
 using namespace ll;

@@ -4,7 +4,7 @@
 #include <QtTest>
 
 #include "core/io/scene_file.hpp"
-#include "core/simulation/work_precision.hpp"
+#include "core/pipeline/scene_simulation.hpp"
 
 using namespace ll;
 

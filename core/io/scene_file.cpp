@@ -23,9 +23,10 @@
 #include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 
-#include "core/io/expression.hpp"
-#include "core/io/lagrangian_fields.hpp"
-#include "core/model/validation.hpp"
+#include "core/symbolic/expression.hpp"
+#include "core/symbolic/lagrangian_fields.hpp"
+#include "core/simulation/scene_validation.hpp"
+#include "core/symbolic/ginac_lock.hpp"
 
 namespace ll {
 
@@ -971,6 +972,7 @@ std::vector<Diagnostic> inFile(std::vector<Diagnostic> diagnostics, const std::s
 }  // namespace
 
 Scene parseScene(const std::string& jsonText) {
+    const auto lock = symbolic::lockGinac();  // expressions are parsed with GiNaC
     std::vector<Diagnostic> duplicates;
     const Json root = parseJson(jsonText, duplicates);
     return SceneReader(std::move(duplicates)).read(root);
@@ -989,6 +991,7 @@ LoadedScene loadScene(const std::string& path) {
         throw InputError(path, e.diagnostics().front().message);
     }
     try {
+        const auto lock = symbolic::lockGinac();  // expressions are parsed with GiNaC
         LoadedScene loaded;
         loaded.scene = SceneReader(std::move(duplicates)).read(root);
         loaded.warnings = inFile(requireValidScene(loaded.scene), path);
@@ -999,6 +1002,7 @@ LoadedScene loadScene(const std::string& path) {
 }
 
 std::string serializeScene(const Scene& scene) {
+    const auto lock = symbolic::lockGinac();  // expressions are re-checked with GiNaC
     std::string text;
     writePretty(text, SceneWriter(scene).write(), 0);
     return text + "\n";

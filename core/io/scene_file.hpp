@@ -9,7 +9,7 @@
 // Joints named in effects are 1-based in the file and 0-based in the structs.
 //
 // Every numeric field may be a number or a string expression of the parameters
-// (see core/io/expression.hpp), except the joint numbers of effects, which are
+// (see core/symbolic/expression.hpp), except the joint numbers of effects, which are
 // integers. Unknown keys are errors, so a misspelt effect is never dropped silently.
 #include <string>
 #include <vector>

@@ -1,7 +1,7 @@
 #pragma once
 // A mechanical system typed by hand as a Lagrangian, instead of a robot's DH table:
 // the scene's "lagrangian" block. Plain text and numbers; the expressions are parsed
-// by core/io/lagrangian_fields.hpp and derived by core/symbolic/lagrangian_derivation.
+// by core/symbolic/lagrangian_fields.hpp and derived by core/symbolic/lagrangian_derivation.
 //
 //   coordinates  generalized coordinates q_1..q_n by name ("theta1", "x"): identifiers,
 //                unique, not reserved, not a parameter; the velocity of x is x_dot

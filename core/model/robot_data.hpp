@@ -8,8 +8,8 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-#include "core/dynamics/cholesky.hpp"
-#include "core/dynamics/spatial.hpp"
+#include "core/math/cholesky.hpp"
+#include "core/math/spatial.hpp"
 #include "core/model/robot_model.hpp"
 
 namespace ll {

@@ -1,15 +1,10 @@
 #include "core/model/validation.hpp"
 
 #include <cmath>
-#include <random>
 #include <sstream>
 
 #include <Eigen/Eigenvalues>
 
-#include "core/dynamics/forward_dynamics.hpp"
-#include "core/dynamics/mass_matrix.hpp"
-#include "core/kinematics/forward_kinematics.hpp"
-#include "core/simulation/integrators.hpp"
 
 namespace ll {
 namespace {
@@ -57,32 +52,6 @@ void validateInertia(std::vector<Diagnostic>& out, int j, const Eigen::Matrix3d&
                     "): no physical body has this inertia; the model is simulated as given");
 }
 
-// B(q) must be positive definite wherever the robot may go. A structurally massless
-// joint shows at (almost) every configuration, so test the start and a few random ones.
-void validateMassMatrix(std::vector<Diagnostic>& out, const RobotModel& model, const Eigen::VectorXd& q0) {
-    RobotData data(model);
-    std::mt19937 rng(12345);
-    std::uniform_real_distribution<double> angle(-3.0, 3.0);
-    std::vector<int> singularCount(model.dof(), 0);
-    const int trials = 4;
-    for (int trial = 0; trial < trials; ++trial) {
-        Eigen::VectorXd q = q0;
-        if (trial > 0)
-            for (int i = 0; i < q.size(); ++i) q[i] = angle(rng) * (model.joints[i].dh.type == JointType::Revolute ? 1.0 : 0.1);
-        forwardKinematics(model, data, q);
-        computeMassMatrix(model, data);
-        const int joint = firstSingularJoint(data.B);
-        if (joint >= 0) ++singularCount[joint];
-    }
-    for (int j = 0; j < model.dof(); ++j)
-        if (singularCount[j] == trials)
-            error(out, jointField(j, ""),
-                  "joint " + std::to_string(j + 1) +
-                      " moves no mass or inertia that the joints before it do not already move, so the mass "
-                      "matrix B(q) is singular; give link " + std::to_string(j + 1) +
-                      " (or a link after it) mass off the joint axis or inertia about it");
-}
-
 // The structure of a hand-typed Lagrangian; its expressions are checked when they are
 // parsed (scene file) and derived (core/symbolic/lagrangian_derivation).
 void validateLagrangian(std::vector<Diagnostic>& out, const Scene& scene) {
@@ -111,7 +80,7 @@ void validateLagrangian(std::vector<Diagnostic>& out, const Scene& scene) {
 
 }  // namespace
 
-std::vector<Diagnostic> validateRobot(const RobotModel& model) {
+std::vector<Diagnostic> validateRobotFields(const RobotModel& model) {
     std::vector<Diagnostic> out;
     if (model.joints.empty()) error(out, "robot.joints", "a robot needs at least one joint");
     for (int r = 0; r < 3; ++r)
@@ -131,16 +100,15 @@ std::vector<Diagnostic> validateRobot(const RobotModel& model) {
             error(out, jointField(j, "mass"), "mass is negative (" + fmt(joint.link.mass) + " kg); it must be >= 0");
         if (inertiaFinite) validateInertia(out, j, joint.link.inertia);
     }
-    if (!hasErrors(out) && model.dof() > 0) validateMassMatrix(out, model, Eigen::VectorXd::Zero(model.dof()));
     return out;
 }
 
-std::vector<Diagnostic> validateScene(const Scene& scene) {
+std::vector<Diagnostic> validateSceneFields(const Scene& scene) {
     std::vector<Diagnostic> out;
     if (scene.lagrangian)
         validateLagrangian(out, scene);
     else
-        out = validateRobot(scene.robot);
+        out = validateRobotFields(scene.robot);
     const int n = scene.dof();
     // A Lagrangian system's effects name its coordinates by number.
     const std::string items = scene.lagrangian ? "coordinates" : "joints";
@@ -207,8 +175,6 @@ std::vector<Diagnostic> validateScene(const Scene& scene) {
     const auto checkPositive = [&](const std::string& field, double value) {
         if (!(std::isfinite(value) && value > 0)) error(out, field, "must be a finite number > 0, got " + fmt(value));
     };
-    if (!findIntegrator(sim.integrator))
-        error(out, "simulation.integrator", "unknown integrator '" + sim.integrator + "' (known: " + integratorNames() + ")");
     checkPositive("simulation.duration", sim.duration);
     checkPositive("simulation.abs_tol", sim.absTol);
     checkPositive("simulation.rel_tol", sim.relTol);
@@ -221,15 +187,6 @@ std::vector<Diagnostic> validateScene(const Scene& scene) {
               "duration " + fmt(sim.duration) + " s at " + fmt(sim.outputRate) + " samples/s would record " +
                   fmt(sim.duration * sim.outputRate) + " samples (at most 1e+07): lower the output rate or the duration");
     return out;
-}
-
-std::vector<Diagnostic> requireValidScene(const Scene& scene) {
-    std::vector<Diagnostic> diagnostics = validateScene(scene);
-    if (hasErrors(diagnostics)) throw InputError(diagnostics);
-    std::vector<Diagnostic> warnings;
-    for (const Diagnostic& d : diagnostics)
-        if (d.severity == Severity::Warning) warnings.push_back(d);
-    return warnings;
 }
 
 }  // namespace ll

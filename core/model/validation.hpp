@@ -1,11 +1,12 @@
 #pragma once
-// Physical plausibility checks of a model and a scene.
+// Checks of a model's and a scene's fields, each on its own: what needs no dynamics.
+// The whole check of a scene (these, plus a mass matrix that must be regular and an
+// integrator that must exist) is core/simulation/scene_validation.
 //
 // Errors (nothing may be simulated): a non-finite number, a negative mass, an
-// inertia tensor that is not symmetric positive semi-definite, a joint that moves
-// no mass or inertia not already moved by the joints before it (B(q) singular),
-// initial-state sizes that do not match the number of joints, effects that name a
-// joint the robot does not have, negative stiffness/friction.
+// inertia tensor that is not symmetric positive semi-definite, initial-state sizes
+// that do not match the number of joints, effects that name a joint the robot does
+// not have, negative stiffness/friction, non-positive simulation settings.
 // Warnings (the model still works): a principal-moment triangle inequality
 // violation (I1 + I2 >= I3 and permutations), which no physical body has but
 // widely used parameter sets do (Corke's PUMA 560 link 1, the Stanford arm link 5).
@@ -21,10 +22,7 @@
 
 namespace ll {
 
-std::vector<Diagnostic> validateRobot(const RobotModel& model);
-std::vector<Diagnostic> validateScene(const Scene& scene);  // includes validateRobot
-
-// Throws InputError when validateScene finds an error; returns the warnings.
-std::vector<Diagnostic> requireValidScene(const Scene& scene);
+std::vector<Diagnostic> validateRobotFields(const RobotModel& model);
+std::vector<Diagnostic> validateSceneFields(const Scene& scene);  // includes validateRobotFields
 
 }  // namespace ll

@@ -1,14 +1,15 @@
 #include "core/simulation/lagrangian_ode.hpp"
 
 #include <string>
+#include <utility>
 
 #include "core/simulation/integrators.hpp"
 
 namespace ll {
 
-LagrangianOde::LagrangianOde(const symbolic::Derivation& derivation)
-    : n_(static_cast<int>(derivation.q.size())),
-      model_(derivation),
+LagrangianOde::LagrangianOde(CompiledLagrangian model)
+    : n_(model.dof()),
+      model_(std::move(model)),
       B_(Eigen::MatrixXd::Zero(n_, n_)),
       rhs_(Eigen::VectorXd::Zero(n_)),
       Q_(Eigen::VectorXd::Zero(n_)),

@@ -2,21 +2,21 @@
 // A system typed by hand as a Lagrangian (Scene::lagrangian) as a first-order ODE over
 // the same state as RobotOde, x = [q; q̇; W] (W: work done by Q):
 //   q̇ = q̇,  q̈ = B⁻¹(Q − C q̇ − g) by a Cholesky (LLT) solve,  Ẇ = Qᵀ q̇,
-// with B, C, g and Q from the derivation compiled once (CompiledDerivation): no GiNaC
-// inside the integration loop, and no allocation per right-hand side.
+// with B, C, g and Q from the derivation compiled once by the symbolic layer
+// (CompiledLagrangian, plain data): no GiNaC anywhere in a simulation, and no
+// allocation per right-hand side.
 // Odeint copies systems by value; pass this with std::ref.
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 
 #include "core/simulation/ode_system.hpp"
-#include "core/symbolic/compiled_derivation.hpp"
-#include "core/symbolic/derivation.hpp"
+#include "core/dynamics/compiled_lagrangian.hpp"
 
 namespace ll {
 
 class LagrangianOde : public OdeSystem {
 public:
-    explicit LagrangianOde(const symbolic::Derivation& derivation);
+    explicit LagrangianOde(CompiledLagrangian model);
 
     // Throws IntegrationError where B(q) is not positive definite (the coordinates stop
     // being independent there, e.g. a spherical pendulum at its pole).
@@ -25,11 +25,11 @@ public:
     int coordinates() const override { return n_; }
     long evaluations() const { return evaluations_; }
     OdeState initialState(const Eigen::VectorXd& q, const Eigen::VectorXd& qd) const;
-    const symbolic::CompiledDerivation& model() const { return model_; }
+    const CompiledLagrangian& model() const { return model_; }
 
 private:
     int n_;
-    symbolic::CompiledDerivation model_;
+    CompiledLagrangian model_;
     Eigen::MatrixXd B_;
     Eigen::VectorXd rhs_, Q_;
     Eigen::LLT<Eigen::MatrixXd> llt_;

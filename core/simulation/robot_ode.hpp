@@ -5,7 +5,7 @@
 // The right-hand side is composed once, at construction, from the effects the scene
 // declares: no gravity → the gravity torques are never computed, no friction → no
 // friction code runs. Each term counts its evaluations (termEvaluations), so this is
-// checkable, not just claimed. Odeint copies systems by value; pass this with std::ref.
+// checkable, not just claimed. The model and effects are copied in. Odeint copies systems by value; pass this with std::ref.
 #include <array>
 #include <string>
 #include <vector>
@@ -69,8 +69,9 @@ private:
     void addSlidingCoulomb(double t);
     void addTorques(double t);
 
-    const RobotModel& model_;
-    const Effects& effects_;
+    // Own copies: an editor may change its scene while this runs on a worker thread.
+    RobotModel model_;
+    Effects effects_;
     std::vector<Term> terms_;
     std::vector<StickJoint> stick_;
     bool hasGeneralizedForces_ = false;

@@ -11,7 +11,6 @@
 #include "core/simulation/integrators.hpp"
 #include "core/simulation/lagrangian_ode.hpp"
 #include "core/simulation/robot_ode.hpp"
-#include "core/symbolic/lagrangian_derivation.hpp"
 
 namespace ll {
 
@@ -93,8 +92,9 @@ void energyBalance(const Trajectory& traj, SimulationStats& stats) {
 
 }  // namespace
 
-SimulationResult simulate(const Scene& scene, const SimulationSettings& settings, const ProgressCallback& progress,
+SimulationResult simulate(SimulationInput input, const SimulationSettings& settings, const ProgressCallback& progress,
                           const std::atomic<bool>* cancel) {
+    const Scene& scene = input.scene;
     IntegrationSettings integration;
     integration.integrator = settings.integrator;
     integration.absTol = settings.absTol;
@@ -106,14 +106,21 @@ SimulationResult simulate(const Scene& scene, const SimulationSettings& settings
 
     SimulationResult result;
     result.stats.integrator = settings.integrator;
-    // A Lagrangian system is derived (exact numbers) and compiled once, before the clock
-    // starts; its input errors throw InputError here.
+    const int n = scene.dof();
+    if (scene.initial.q.size() != n || scene.initial.qd.size() != n)
+        throw std::invalid_argument("the initial q has " + std::to_string(scene.initial.q.size()) + " and q̇ " +
+                                    std::to_string(scene.initial.qd.size()) + " entries; the scene has " +
+                                    std::to_string(n) + " coordinates");
     std::optional<LagrangianOde> lagrangian;
     std::optional<RobotOde> robot;
-    if (scene.lagrangian)
-        lagrangian.emplace(symbolic::deriveLagrangian(scene, symbolic::ParameterMode::Numeric));
-    else
+    if (scene.lagrangian) {
+        if (!input.lagrangian || input.lagrangian->dof() != n)
+            throw std::invalid_argument("a Lagrangian scene is simulated from its compiled system "
+                                        "(prepareSimulation), which is missing or has the wrong size");
+        lagrangian.emplace(std::move(*input.lagrangian));
+    } else {
         robot.emplace(scene.robot, scene.effects);
+    }
     OdeSystem& ode = lagrangian ? static_cast<OdeSystem&>(*lagrangian) : *robot;
     OdeState x = lagrangian ? lagrangian->initialState(scene.initial.q, scene.initial.qd)
                             : robot->initialState(scene.initial.q, scene.initial.qd);

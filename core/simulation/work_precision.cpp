@@ -47,8 +47,9 @@ void requirePositive(const std::vector<double>& values, const char* what) {
 
 }  // namespace
 
-WorkPrecisionResult runWorkPrecision(const Scene& scene, const WorkPrecisionSettings& settings,
+WorkPrecisionResult runWorkPrecision(const SimulationInput& input, const WorkPrecisionSettings& settings,
                                      const WorkPrecisionProgress& progress, const std::atomic<bool>* cancel) {
+    const Scene& scene = input.scene;
     std::vector<std::string> names = settings.integrators;
     if (names.empty())
         for (const IntegratorInfo& info : integratorCatalogue()) names.push_back(info.name);
@@ -100,7 +101,7 @@ WorkPrecisionResult runWorkPrecision(const Scene& scene, const WorkPrecisionSett
     refSettings.absTol = refSettings.relTol = ref.tolerance;
     refSettings.detectStiffness = false;  // however stiff the scene, the reference resolves it
     report("reference " + describe(ref.integrator, true, ref.tolerance));
-    const SimulationResult reference = simulate(scene, refSettings, {}, cancel);
+    const SimulationResult reference = simulate(input, refSettings, {}, cancel);
     ++doneRuns;
     if (reference.status == SimulationStatus::Cancelled) return stopCancelled();
     if (reference.status != SimulationStatus::Completed) {
@@ -116,7 +117,7 @@ WorkPrecisionResult runWorkPrecision(const Scene& scene, const WorkPrecisionSett
     SimulationSettings looser = refSettings;
     looser.absTol = looser.relTol = 10 * ref.tolerance;
     report("reference error estimate " + describe(ref.integrator, true, looser.absTol));
-    const SimulationResult check = simulate(scene, looser, {}, cancel);
+    const SimulationResult check = simulate(input, looser, {}, cancel);
     ++doneRuns;
     if (check.status == SimulationStatus::Cancelled) return stopCancelled();
     ref.estimatedError = check.status == SimulationStatus::Completed
@@ -142,7 +143,7 @@ WorkPrecisionResult runWorkPrecision(const Scene& scene, const WorkPrecisionSett
             for (int r = 0; r < settings.repeats; ++r) {
                 if (cancelled()) return stopCancelled();
                 report(describe(name, info.adaptive, setting));
-                const SimulationResult run = simulate(scene, s, {}, cancel);
+                const SimulationResult run = simulate(input, s, {}, cancel);
                 ++doneRuns;
                 if (run.status == SimulationStatus::Cancelled) return stopCancelled();
                 cpu.push_back(run.stats.cpuSeconds);

@@ -17,6 +17,7 @@
 #include <Eigen/Core>
 
 #include "core/model/scene.hpp"
+#include "core/simulation/simulate.hpp"
 #include "core/simulation/trajectory.hpp"
 
 namespace ll {
@@ -73,7 +74,7 @@ using WorkPrecisionProgress = std::function<void(double fraction, const std::str
 
 // The scene must be valid (requireValidScene). Throws std::invalid_argument for an
 // unknown integrator name or an empty/non-positive setting list before anything runs.
-WorkPrecisionResult runWorkPrecision(const Scene& scene, const WorkPrecisionSettings& settings,
+WorkPrecisionResult runWorkPrecision(const SimulationInput& input, const WorkPrecisionSettings& settings,
                                      const WorkPrecisionProgress& progress = {},
                                      const std::atomic<bool>* cancel = nullptr);
 

@@ -8,45 +8,16 @@
 #include <stdexcept>
 #include <string>
 #include <tuple>
+#include <utility>
 
 namespace ll::symbolic {
 namespace {
 
-using Op = CompiledExpressions::Op;
+using Op = ExpressionTape::Op;
+using Instruction = ExpressionTape::Instruction;
 
-// The one definition of every operation: used by evaluate() and by constant folding.
-inline double apply(Op op, double a, double b, double c) {
-    switch (op) {
-        case Op::Add: return a + b;
-        case Op::Sub: return a - b;
-        case Op::Mul: return a * b;
-        case Op::Div: return a / b;
-        case Op::Neg: return -a;
-        case Op::Recip: return 1.0 / a;
-        case Op::Square: return a * a;
-        case Op::PowConst: return std::pow(a, c);
-        case Op::Pow: return std::pow(a, b);
-        case Op::Sqrt: return std::sqrt(a);
-        case Op::Sin: return std::sin(a);
-        case Op::Cos: return std::cos(a);
-        case Op::Tan: return std::tan(a);
-        case Op::Exp: return std::exp(a);
-        case Op::Log: return std::log(a);
-        case Op::Tanh: return std::tanh(a);
-        case Op::Sinh: return std::sinh(a);
-        case Op::Cosh: return std::cosh(a);
-        case Op::Asin: return std::asin(a);
-        case Op::Acos: return std::acos(a);
-        case Op::Atan: return std::atan(a);
-        case Op::Atan2: return std::atan2(a, b);
-        case Op::Abs: return std::abs(a);
-        case Op::Step: return a > 0.0 ? 1.0 : a < 0.0 ? 0.0 : 0.5;
-        case Op::Sign: return a > 0.0 ? 1.0 : a < 0.0 ? -1.0 : 0.0;
-    }
-    return 0.0;
-}
-
-bool binary(Op op) { return op == Op::Add || op == Op::Sub || op == Op::Mul || op == Op::Div || op == Op::Pow || op == Op::Atan2; }
+double apply(Op op, double a, double b, double c) { return ExpressionTape::apply(op, a, b, c); }
+bool binary(Op op) { return ExpressionTape::binary(op); }
 bool commutative(Op op) { return op == Op::Add || op == Op::Mul; }
 
 const std::map<std::string, Op>& functions() {
@@ -60,12 +31,11 @@ const std::map<std::string, Op>& functions() {
 
 }  // namespace
 
-// Builds the tape of one CompiledExpressions: registers are numbered as they are made
-// (inputs first), each operation is looked up before it is emitted.
+// Builds one tape: registers are numbered as they are made (inputs first), each
+// operation is looked up before it is emitted.
 class TapeBuilder {
 public:
-    TapeBuilder(CompiledExpressions& out, const std::vector<GiNaC::symbol>& inputs) : out_(out) {
-        out_.inputs_ = static_cast<int>(inputs.size());
+    explicit TapeBuilder(const std::vector<GiNaC::symbol>& inputs) : inputs_(static_cast<int>(inputs.size())) {
         for (const GiNaC::symbol& s : inputs) {
             memo_[s] = newRegister(false, 0.0);
         }
@@ -78,8 +48,9 @@ public:
         return r;
     }
 
-    void finish() {
-        out_.registers_ = values_;  // constants in place; inputs and results overwritten per call
+    // Constants in place; inputs and results are overwritten per call.
+    ExpressionTape finish(std::vector<int> outputs) {
+        return ExpressionTape(inputs_, std::move(tape_), std::move(outputs), values_);
     }
 
 private:
@@ -109,7 +80,7 @@ private:
         const auto key = std::make_tuple(op, a, binary(op) ? b : -1, std::bit_cast<std::uint64_t>(c));
         if (const auto found = operations_.find(key); found != operations_.end()) return found->second;
         const int r = newRegister(false, 0.0);
-        out_.tape_.push_back({op, r, a, binary(op) ? b : a, c});
+        tape_.push_back({op, r, a, binary(op) ? b : a, c});
         return operations_[key] = r;
     }
 
@@ -236,7 +207,8 @@ private:
         throw std::invalid_argument("cannot compile " + text(e) + " (not a number, symbol, +, *, ^ or function)");
     }
 
-    CompiledExpressions& out_;
+    int inputs_;
+    std::vector<Instruction> tape_;
     std::map<GiNaC::ex, int, GiNaC::ex_is_less> memo_;
     std::map<std::tuple<Op, int, int, std::uint64_t>, int> operations_;
     std::map<std::uint64_t, int> constants_;
@@ -244,18 +216,11 @@ private:
     std::vector<double> values_;
 };
 
-CompiledExpressions::CompiledExpressions(const std::vector<GiNaC::ex>& outputs,
-                                         const std::vector<GiNaC::symbol>& inputs) {
-    TapeBuilder builder(*this, inputs);
-    for (const GiNaC::ex& e : outputs) outputs_.push_back(builder.compile(e));
-    builder.finish();
-}
-
-void CompiledExpressions::evaluate(const double* input, double* output) const {
-    double* r = registers_.data();
-    std::copy(input, input + inputs_, r);
-    for (const Instruction& in : tape_) r[in.result] = apply(in.op, r[in.a], r[in.b], in.c);
-    for (std::size_t k = 0; k < outputs_.size(); ++k) output[k] = r[outputs_[k]];
+ExpressionTape compileExpressions(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::symbol>& inputs) {
+    TapeBuilder builder(inputs);
+    std::vector<int> registers;
+    for (const GiNaC::ex& e : outputs) registers.push_back(builder.compile(e));
+    return builder.finish(std::move(registers));
 }
 
 }  // namespace ll::symbolic

@@ -10,11 +10,12 @@
 
 #include <Eigen/Eigenvalues>
 
-#include "core/io/expression.hpp"
-#include "core/io/lagrangian_fields.hpp"
+#include "core/symbolic/expression.hpp"
+#include "core/symbolic/lagrangian_fields.hpp"
 #include "core/model/diagnostics.hpp"
 #include "core/symbolic/exact_numbers.hpp"
 #include "core/symbolic/expression_printer.hpp"
+#include "core/symbolic/ginac_lock.hpp"
 
 namespace ll::symbolic {
 namespace {
@@ -415,6 +416,7 @@ private:
 }  // namespace
 
 Derivation deriveLagrangian(const Scene& scene, ParameterMode mode) {
+    const auto lock = lockGinac();
     if (!scene.lagrangian) throw std::invalid_argument("deriveLagrangian: the scene has no \"lagrangian\" block");
     return LagrangianDeriver(scene, mode).derive();
 }

@@ -26,6 +26,8 @@
 
 namespace ll::symbolic {
 
+// Takes the GiNaC lock for the derivation; the caller holds it too while it keeps or
+// prints the returned Derivation (GiNaC objects: ginac_lock.hpp).
 Derivation deriveLagrangian(const Scene& scene, ParameterMode mode = ParameterMode::Parametric);
 
 }  // namespace ll::symbolic

@@ -2,8 +2,11 @@
 
 #include <array>
 #include <chrono>
+#include <functional>
+#include <string>
 
 #include "core/kinematics/dh_transform.hpp"
+#include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/trig_context.hpp"
 
 namespace ll::symbolic {
@@ -76,7 +79,8 @@ matrix inverseTransform(const matrix& T) {  // [Rᵀ, −Rᵀ t; 0, 1]
 // B(q) link by link in each link's own frame: there the Jacobian columns of link i
 // depend only on the joints between, so the polynomials stay small (B never
 // depends on q1). b_jk = Σ_i m_i J_v,ij·J_v,ik + J_ω,ijᵀ I_i J_ω,ik (Siciliano (7.16)).
-matrix massMatrixInLinkFrames(const SymbolicRobot& robot, const std::vector<matrix>& A, const TrigContext& tc) {
+matrix massMatrixInLinkFrames(const SymbolicRobot& robot, const std::vector<matrix>& A, const TrigContext& tc,
+                              const std::function<void(const std::string&)>& checkpoint) {
     const int n = tc.size();
     const bool standard = robot.convention == DhConvention::Standard;
     matrix B(n, n);
@@ -85,10 +89,14 @@ matrix massMatrixInLinkFrames(const SymbolicRobot& robot, const std::vector<matr
         // rel[f]: pose of frame i+1 (link i) in frame f, for f = 0..i+1.
         std::vector<matrix> rel(i + 2, matrix(4, 4));
         rel[i + 1] = GiNaC::ex_to<matrix>(GiNaC::unit_matrix(4));
-        for (int f = i; f >= 0; --f) rel[f] = tc.reduce(A[f].mul(rel[f + 1]));
+        for (int f = i; f >= 0; --f) {
+            checkpoint("link " + idx(i) + " in frame " + std::to_string(f));
+            rel[f] = tc.reduce(A[f].mul(rel[f + 1]));
+        }
         std::vector<Vec3> Jv(i + 1), Jw(i + 1);
         const Vec3 com = column(link.com, 0);
         for (int j = 0; j <= i; ++j) {
+            checkpoint("J_" + idx(i) + " column " + idx(j));
             const matrix axisFrame = tc.reduce(inverseTransform(rel[standard ? j : j + 1]));  // frame in link frame
             const Vec3 z = column(axisFrame, 2);
             if (robot.joints[j].type == JointType::Revolute) {
@@ -110,6 +118,7 @@ matrix massMatrixInLinkFrames(const SymbolicRobot& robot, const std::vector<matr
     }
     for (int j = 0; j < n; ++j)
         for (int k = j; k < n; ++k) {
+            checkpoint("b_" + idx(j) + idx(k));
             B(j, k) = tc.reduce(B(j, k));
             B(k, j) = B(j, k);
         }
@@ -119,6 +128,13 @@ matrix massMatrixInLinkFrames(const SymbolicRobot& robot, const std::vector<matr
 }  // namespace
 
 Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
+    const auto lock = lockGinac();
+    int currentStep = 0;
+    // Between entries: report, and stop when cancelled.
+    const auto checkpoint = [&](const std::string& what) {
+        throwIfCancelled(options.cancel);
+        if (options.progress) options.progress(currentStep, what);
+    };
     const int n = scene.robot.dof();
     std::vector<bool> revolute(n);
     for (int i = 0; i < n; ++i) revolute[i] = scene.robot.joints[i].dh.type == JointType::Revolute;
@@ -140,6 +156,8 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
     const auto addStep = [&](int number, std::string title, std::string text, std::string latex,
                              std::vector<DerivationItem> items) {
         const double seconds = clock.lap();
+        currentStep = number + 1;
+        checkpoint("step " + std::to_string(currentStep));
         if (!shown(number)) return;
         d.steps.push_back({number, std::move(title), std::move(text), std::move(latex), std::move(items), seconds});
     };
@@ -168,6 +186,7 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
     T[0] = robot.base;
     std::vector<DerivationItem> step1;
     for (int i = 0; i < n; ++i) {
+        checkpoint("T_" + idx(i) + "^0");
         A[i] = linkTransform(robot.convention, robot.joints[i], tc, i);
         T[i + 1] = tc.reduce(T[i].mul(A[i]));
         step1.push_back({"A_" + idx(i), "A_{" + idx(i) + "}", A[i]});
@@ -184,6 +203,7 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
     std::vector<Vec3> p(n);
     std::vector<DerivationItem> step2;
     for (int i = 0; i < n; ++i) {
+        checkpoint("p_c" + idx(i));
         const matrix& com = robot.joints[i].com;
         for (int r = 0; r < 3; ++r)
             p[i][r] = tc.reduce(T[i + 1](r, 0) * com(0, 0) + T[i + 1](r, 1) * com(1, 0) + T[i + 1](r, 2) * com(2, 0) + T[i + 1](r, 3));
@@ -219,11 +239,13 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
         std::vector<DerivationItem> items;
         for (int i = 0; i < n; ++i) {
             matrix Jv(3, n), v(3, 1);
-            for (int j = 0; j <= i; ++j)
+            for (int j = 0; j <= i; ++j) {
+                checkpoint("J_v,c" + idx(i) + " column " + idx(j));
                 for (int r = 0; r < 3; ++r) {
                     Jv(r, j) = tc.reduce(tc.diffq(p[i][r], j));
                     v(r, 0) += Jv(r, j) * tc.qd(j);
                 }
+            }
             items.push_back({"J_v_c" + idx(i), "J_{v,c" + idx(i) + "}", Jv});
             items.push_back({"v_c" + idx(i), "v_{c" + idx(i) + "}^{0}", tc.reduce(v)});
         }
@@ -235,6 +257,7 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
     if (shown(5)) {
         std::vector<DerivationItem> items;
         for (int i = 0; i < n; ++i) {
+            checkpoint("I_l" + idx(i) + "^0");
             const matrix R = rotation(T[i + 1]);
             items.push_back({"I_l" + idx(i) + "^0", "I_{l" + idx(i) + "}^{0}",
                              tc.reduce(R.mul(robot.joints[i].inertia).mul(R.transpose()))});
@@ -260,7 +283,7 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
             {{"E_pot", R"(E_{\mathrm{pot}})", Epot}});
 
     // 7. Kinetic energy and B(q).
-    d.B = massMatrixInLinkFrames(robot, A, tc);
+    d.B = massMatrixInLinkFrames(robot, A, tc, checkpoint);
     ex Ekin = 0;
     for (int j = 0; j < n; ++j)
         for (int k = 0; k < n; ++k) Ekin += GiNaC::numeric(1, 2) * d.B(j, k) * tc.qd(j) * tc.qd(k);
@@ -272,12 +295,19 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
 
     // 8. Equations of motion (Lagrange–d'Alembert).
     d.g = matrix(n, 1);
-    for (int i = 0; i < n; ++i) d.g(i, 0) = tc.reduce(tc.diffq(Epot, i));
+    for (int i = 0; i < n; ++i) {
+        checkpoint("g_" + idx(i));
+        d.g(i, 0) = tc.reduce(tc.diffq(Epot, i));
+    }
     std::vector<matrix> dB(n);
-    for (int k = 0; k < n; ++k) dB[k] = tc.diffq(d.B, k);
+    for (int k = 0; k < n; ++k) {
+        checkpoint("dB/dq_" + idx(k));
+        dB[k] = tc.diffq(d.B, k);
+    }
     d.C = matrix(n, n);
     for (int i = 0; i < n; ++i)
         for (int j = 0; j < n; ++j) {
+            checkpoint("c_" + idx(i) + idx(j));
             ex c = 0;
             for (int k = 0; k < n; ++k)
                 c += GiNaC::numeric(1, 2) * (dB[k](i, j) + dB[j](i, k) - dB[i](j, k)) * tc.qd(k);

@@ -4,6 +4,11 @@
 //   5 I_li^0 = R_i I_li R_iᵀ → 6 E_pot → 7 E_kin = ½ q̇ᵀ B q̇ → 8 g, C (Christoffel), Q,
 //   B q̈ + C q̇ + g = Q.
 // Only the declared effects appear. Everything is exact (rationals, multiples of π).
+#include <atomic>
+#include <functional>
+#include <string>
+
+#include "core/model/cancellation.hpp"
 #include "core/model/scene.hpp"
 #include "core/symbolic/derivation.hpp"
 #include "core/symbolic/symbolic_robot.hpp"
@@ -14,8 +19,15 @@ struct DerivationOptions {
     ParameterMode mode = ParameterMode::Parametric;
     int firstStep = 0;  // the steps to show; B, C, g and Q are always derived
     int lastStep = 8;
+    // Called before each piece of work with the step (0..8) and what it is ("b_23",
+    // "c_41"), on the deriving thread. Optional.
+    std::function<void(int step, const std::string& what)> progress;
+    // Checked between entries; when set, the derivation throws Cancelled. Optional.
+    const std::atomic<bool>* cancel = nullptr;
 };
 
+// Takes the GiNaC lock for the derivation; the caller holds it too while it keeps or
+// prints the returned Derivation (GiNaC objects: ginac_lock.hpp).
 Derivation deriveRobot(const Scene& scene, const DerivationOptions& options = {});
 
 }  // namespace ll::symbolic

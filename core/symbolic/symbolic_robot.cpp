@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "core/io/expression.hpp"
+#include "core/symbolic/expression.hpp"
 #include "core/model/diagnostics.hpp"
 #include "core/symbolic/exact_numbers.hpp"
 

@@ -1,4 +1,4 @@
-#include "core/io/lagrangian_fields.hpp"
+#include "core/symbolic/lagrangian_fields.hpp"
 
 #include <algorithm>
 #include <cctype>

@@ -10,7 +10,7 @@
 
 #include <ginac/ginac.h>
 
-#include "core/io/expression.hpp"
+#include "core/symbolic/expression.hpp"
 #include "core/model/diagnostics.hpp"
 #include "core/model/lagrangian_spec.hpp"
 #include "core/model/scene.hpp"

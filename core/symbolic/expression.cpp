@@ -1,4 +1,4 @@
-#include "core/io/expression.hpp"
+#include "core/symbolic/expression.hpp"
 
 #include <algorithm>
 #include <cctype>

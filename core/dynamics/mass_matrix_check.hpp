@@ -1,0 +1,18 @@
+#pragma once
+// B(q) must be positive definite wherever the robot may go. A joint that moves no mass
+// or inertia not already moved by the joints before it makes B singular at (almost)
+// every configuration; this finds it by factoring B at q0 and a few random
+// configurations and names the joint.
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/model/diagnostics.hpp"
+#include "core/model/robot_model.hpp"
+
+namespace ll {
+
+// Errors naming robot.joints[j] for each joint where B is singular at every trial.
+std::vector<Diagnostic> checkMassMatrixRegular(const RobotModel& model, const Eigen::VectorXd& q0);
+
+}  // namespace ll

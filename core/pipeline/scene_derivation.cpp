@@ -1,0 +1,44 @@
+#include "core/pipeline/scene_derivation.hpp"
+
+#include "core/symbolic/ginac_lock.hpp"
+#include "core/symbolic/lagrangian_derivation.hpp"
+#include "core/symbolic/robot_derivation.hpp"
+
+namespace ll {
+
+const char* modeName(symbolic::ParameterMode mode) {
+    switch (mode) {
+        case symbolic::ParameterMode::Numeric: return "numeric";
+        case symbolic::ParameterMode::Textbook: return "symbolic";
+        case symbolic::ParameterMode::Parametric: break;
+    }
+    return "parameters";
+}
+
+DerivedDocument deriveDocument(const Scene& scene, const DocumentRequest& request) {
+    const auto lock = symbolic::lockGinac();
+    symbolic::DerivationOptions options;
+    options.mode = request.mode;
+    options.firstStep = request.firstStep;
+    options.lastStep = request.lastStep;
+    options.progress = request.progress;
+    options.cancel = request.cancel;
+    symbolic::Derivation d;
+    if (scene.lagrangian) {
+        throwIfCancelled(request.cancel);
+        d = symbolic::deriveLagrangian(scene, request.mode);
+    } else {
+        d = symbolic::deriveRobot(scene, options);
+    }
+    std::erase_if(d.steps, [&](const symbolic::DerivationStep& s) {
+        return s.number < request.firstStep || s.number > request.lastStep;
+    });
+    throwIfCancelled(request.cancel);
+    DerivedDocument out;
+    out.document = symbolic::derivationDocument(d, request.format, modeName(request.mode));
+    for (const symbolic::DerivationStep& step : d.steps) out.timings.push_back({step.number, step.title, step.seconds});
+    out.warnings = d.warnings;
+    return out;
+}
+
+}  // namespace ll

@@ -1,0 +1,44 @@
+#pragma once
+// A scene's derivation as a finished document, for callers on any thread (the CLI's
+// `derive`, the window's derivation worker): derives (robot or hand-typed Lagrangian)
+// and renders under the GiNaC lock, and hands back plain data only. Cancellable
+// between entries; progress names the step and entry being derived.
+#include <atomic>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/model/cancellation.hpp"
+#include "core/model/scene.hpp"
+#include "core/symbolic/derivation_document.hpp"
+#include "core/symbolic/symbolic_robot.hpp"
+
+namespace ll {
+
+struct DocumentRequest {
+    symbolic::ParameterMode mode = symbolic::ParameterMode::Parametric;
+    int firstStep = 0, lastStep = 8;  // the steps shown; B, C, g, Q are always derived
+    symbolic::DocumentFormat format = symbolic::DocumentFormat::Text;
+    std::function<void(int step, const std::string& what)> progress;  // optional, on the deriving thread
+    const std::atomic<bool>* cancel = nullptr;                          // optional: throws Cancelled
+};
+
+struct StepTiming {
+    int number = 0;
+    std::string title;
+    double seconds = 0.0;
+};
+
+struct DerivedDocument {
+    std::string document;             // in the requested format
+    std::vector<StepTiming> timings;  // of the shown steps
+    std::vector<std::string> warnings;
+};
+
+// "parameters", "numeric" or "symbolic" (the CLI's names, recorded in JSON).
+const char* modeName(symbolic::ParameterMode mode);
+
+// Throws InputError for a Lagrangian's input errors and Cancelled when cancelled.
+DerivedDocument deriveDocument(const Scene& scene, const DocumentRequest& request);
+
+}  // namespace ll
