@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 #include <random>
+#include <thread>
 
 #include "app/cli_options.hpp"
 #include "app/commands.hpp"
@@ -17,6 +18,8 @@
 #include "core/kinematics/forward_kinematics.hpp"
 #include "core/simulation/robot_ode.hpp"
 #include "core/pipeline/scene_simulation.hpp"
+#include "core/model/cancellation.hpp"
+#include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/lagrangian_derivation.hpp"
 #include "core/symbolic/robot_derivation.hpp"
 #ifdef LL_HAVE_KDL
@@ -133,10 +136,55 @@ int benchDerive(const std::vector<std::string>& scenes, int repeats) {
     return 0;
 }
 
+// `bench --cancel`: how soon a derivation stops once its cancel flag is set (what a
+// stale derivation costs the window after an edit). Each robot is derived fully
+// symbolically on a worker; the flag is set at 1/8 … 7/8 of its uncancelled time.
+int benchCancel(const std::vector<std::string>& scenes) {
+    std::printf("latency [ms] from setting the cancel flag to the derivation stopping (fully symbolic;\n"
+                "flag set at 1/8 ... 7/8 of the uncancelled derivation time)\n\n");
+    std::printf("%-30s %2s | %12s | %8s %8s\n", "system", "n", "derive [ms]", "median", "max");
+    for (const std::string& path : scenes) {
+        const Scene scene = loadSceneReportingWarnings(path);
+        if (scene.lagrangian) continue;
+        symbolic::DerivationOptions options;
+        options.mode = symbolic::ParameterMode::Textbook;
+        const auto start = std::chrono::steady_clock::now();
+        {
+            const auto lock = symbolic::lockGinac();
+            (void)symbolic::deriveRobot(scene, options);
+        }
+        const double full = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        std::vector<double> latency;
+        for (int k = 1; k < 8; ++k) {
+            std::atomic<bool> cancel{false};
+            std::chrono::steady_clock::time_point stopped;
+            std::thread worker([&] {
+                symbolic::DerivationOptions o = options;
+                o.cancel = &cancel;
+                try {
+                    const auto lock = symbolic::lockGinac();
+                    (void)symbolic::deriveRobot(scene, o);
+                } catch (const Cancelled&) {
+                }
+                stopped = std::chrono::steady_clock::now();
+            });
+            std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(full * k / 8));
+            const auto set = std::chrono::steady_clock::now();
+            cancel = true;
+            worker.join();
+            latency.push_back(std::max(0.0, std::chrono::duration<double, std::milli>(stopped - set).count()));
+        }
+        std::sort(latency.begin(), latency.end());
+        std::printf("%-30.30s %2d | %12.1f | %8.2f %8.2f\n", scene.name.c_str(), scene.dof(), full,
+                    latency[latency.size() / 2], latency.back());
+    }
+    return 0;
+}
+
 }  // namespace
 
 int benchCommand(const Args& args) {
-    const Options options(args, {"batches"}, {"rhs", "derive"});
+    const Options options(args, {"batches"}, {"rhs", "derive", "cancel"});
     const int batches = static_cast<int>(options.number("batches", 21));
     std::vector<std::string> scenes = options.positional();
     if (options.has("derive")) {
@@ -144,6 +192,12 @@ int benchCommand(const Args& args) {
             for (const char* name : {"planar_2r", "scara", "cart_pole", "puma560", "stanford_arm", "mass_spring_pair_lagrangian"})
                 scenes.push_back(std::string(LL_EXAMPLES_DIR) + "/" + name + ".json");
         return benchDerive(scenes, static_cast<int>(options.number("batches", 5)));
+    }
+    if (options.has("cancel")) {
+        if (scenes.empty())
+            for (const char* name : {"puma560", "stanford_arm", "panda"})
+                scenes.push_back(std::string(LL_EXAMPLES_DIR) + "/" + name + ".json");
+        return benchCancel(scenes);
     }
     if (options.has("rhs")) {
         if (scenes.empty()) scenes.push_back(std::string(LL_EXAMPLES_DIR) + "/puma560.json");

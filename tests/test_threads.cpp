@@ -1,0 +1,156 @@
+// The core called from several threads at once, as the window's workers will: GiNaC
+// (not thread-safe) is serialised by one lock, everything that crosses threads is plain
+// data, and long work stops promptly when cancelled. Labelled `threads`:
+// `scripts/lab tsan` runs it under ThreadSanitizer, which must report no race.
+//
+// Each concurrent result is compared with the same work done alone first, so a race
+// that corrupts an expression or a trajectory fails here even without the sanitizer.
+#include <QtTest>
+
+#include <atomic>
+#include <chrono>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "core/io/scene_file.hpp"
+#include "core/model/cancellation.hpp"
+#include "core/pipeline/scene_check.hpp"
+#include "core/pipeline/scene_derivation.hpp"
+#include "core/pipeline/scene_simulation.hpp"
+
+using namespace ll;
+
+namespace {
+
+Scene example(const std::string& name) { return loadScene(std::string(LL_EXAMPLES_DIR) + "/" + name).scene; }
+
+std::string derive(const Scene& scene, symbolic::ParameterMode mode, symbolic::DocumentFormat format) {
+    DocumentRequest request;
+    request.mode = mode;
+    request.format = format;
+    return deriveDocument(scene, request).document;
+}
+
+SimulationSettings shortRun(const Scene& scene, double duration) {
+    SimulationSettings s = scene.simulation;
+    s.duration = duration;
+    return s;
+}
+
+double milliseconds(std::chrono::steady_clock::duration d) {
+    return std::chrono::duration<double, std::milli>(d).count();
+}
+
+}  // namespace
+
+class TestThreads : public QObject {
+    Q_OBJECT
+
+private slots:
+    // Deriving the PUMA 560 fully symbolically, printing the planar 2R as LaTeX,
+    // simulating the hand-typed Lagrangian pair, loading scene files and checking a
+    // Lagrangian scene, all at the same time.
+    void symbolicAndNumericWorkAtOnce() {
+        const Scene puma = example("puma560.json");
+        const Scene planar = example("planar_2r.json");
+        const Scene pair = example("mass_spring_pair_lagrangian.json");
+        const std::string pumaAlone = derive(puma, symbolic::ParameterMode::Textbook, symbolic::DocumentFormat::Text);
+        const std::string planarAlone = derive(planar, symbolic::ParameterMode::Parametric, symbolic::DocumentFormat::Latex);
+        const SimulationResult pairAlone = simulate(pair, shortRun(pair, 2.0));
+        QVERIFY(pumaAlone.find("B = ") != std::string::npos);
+        QVERIFY(pairAlone.status == SimulationStatus::Completed);
+
+        std::string pumaTogether;
+        std::vector<std::string> planarTogether(3);
+        std::vector<SimulationResult> pairTogether(2);
+        std::atomic<int> loads{0}, checks{0};
+        std::vector<std::thread> threads;
+        threads.emplace_back([&] { pumaTogether = derive(puma, symbolic::ParameterMode::Textbook, symbolic::DocumentFormat::Text); });
+        threads.emplace_back([&] {
+            for (std::string& doc : planarTogether)
+                doc = derive(planar, symbolic::ParameterMode::Parametric, symbolic::DocumentFormat::Latex);
+        });
+        for (SimulationResult& r : pairTogether)
+            threads.emplace_back([&] { r = simulate(pair, shortRun(pair, 2.0)); });
+        threads.emplace_back([&] {
+            for (int k = 0; k < 5; ++k) {
+                if (example("elastic_pendulum.json").dof() == 2) ++loads;
+                if (!hasErrors(checkScene(pair))) ++checks;
+            }
+        });
+        for (std::thread& t : threads) t.join();
+
+        QCOMPARE(pumaTogether, pumaAlone);
+        for (const std::string& doc : planarTogether) QCOMPARE(doc, planarAlone);
+        for (const SimulationResult& r : pairTogether) {
+            QVERIFY(r.status == SimulationStatus::Completed);
+            QCOMPARE(r.trajectory.size(), pairAlone.trajectory.size());
+            QVERIFY(r.trajectory.q.back() == pairAlone.trajectory.q.back());  // bitwise: same tape, same steps
+        }
+        QCOMPARE(loads.load(), 5);
+        QCOMPARE(checks.load(), 5);
+    }
+
+    // A stale Panda derivation stops soon after its cancel flag is set; the latency
+    // (flag set → Cancelled caught) is printed, not asserted (no wall-clock limits in
+    // tests; `lagrangelab bench --derive` reports its median).
+    void cancelStopsADerivation() {
+        const Scene panda = example("panda.json");
+        std::atomic<bool> cancel{false};
+        std::atomic<int> entries{0};
+        std::atomic<bool> cancelled{false};
+        std::chrono::steady_clock::time_point stopped;
+        std::thread worker([&] {
+            DocumentRequest request;
+            request.mode = symbolic::ParameterMode::Textbook;
+            request.cancel = &cancel;
+            request.progress = [&](int, const std::string&) { ++entries; };
+            try {
+                (void)deriveDocument(panda, request);
+            } catch (const Cancelled&) {
+                cancelled = true;
+            }
+            stopped = std::chrono::steady_clock::now();
+        });
+        while (entries.load() < 40) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        const auto set = std::chrono::steady_clock::now();
+        cancel = true;
+        worker.join();
+        QVERIFY(cancelled.load());
+        qInfo("Panda (symbolic) derivation cancelled after %d entries; it stopped %.2f ms after the flag was set",
+              entries.load(), milliseconds(stopped - set));
+
+        // The lock is free again: the next derivation runs to the end.
+        const Scene planar = example("planar_2r.json");
+        QVERIFY(derive(planar, symbolic::ParameterMode::Numeric, symbolic::DocumentFormat::Text).find("b11") !=
+                std::string::npos);
+    }
+
+    // A long simulation and a work–precision analysis on workers stop with status
+    // Cancelled and a partial result.
+    void cancelStopsSimulationAndAccuracy() {
+        const Scene pendulum = example("double_pendulum.json");
+        std::atomic<bool> cancelSim{false}, cancelAccuracy{false};
+        SimulationResult sim;
+        WorkPrecisionResult accuracy;
+        std::thread simulation([&] { sim = simulate(pendulum, shortRun(pendulum, 1e4), {}, &cancelSim); });
+        std::thread analysis([&] {
+            WorkPrecisionSettings settings;
+            settings.duration = 5.0;
+            accuracy = runWorkPrecision(pendulum, settings, {}, &cancelAccuracy);
+        });
+        std::this_thread::sleep_for(std::chrono::milliseconds(200));
+        cancelSim = true;
+        cancelAccuracy = true;
+        simulation.join();
+        analysis.join();
+        QVERIFY(sim.status == SimulationStatus::Cancelled);
+        QVERIFY(sim.trajectory.size() > 0);
+        QVERIFY(sim.trajectory.t.back() < 1e4);
+        QVERIFY(accuracy.status == SimulationStatus::Cancelled);
+    }
+};
+
+QTEST_APPLESS_MAIN(TestThreads)
+#include "test_threads.moc"
