@@ -2,14 +2,19 @@
 
 #include <cmath>
 
+#include "core/model/argument_checks.hpp"
+
 namespace ll {
 
 void computeExternalTorques(const Effects& effects, double t, Eigen::VectorXd& tau) {
+    requireEffectsFit("computeExternalTorques", effects, tau.size());
     tau.setZero();
     for (const JointTorque& torque : effects.torques) tau[torque.joint] += torque(t);
 }
 
 void addFrictionForces(const Effects& effects, const Eigen::VectorXd& qd, Eigen::VectorXd& Q) {
+    requireSize("addFrictionForces", "Q", Q.size(), qd.size(), "qd", "entries");
+    requireEffectsFit("addFrictionForces", effects, qd.size());
     for (const ViscousFriction& f : effects.viscous) Q[f.joint] -= f.coefficient * qd[f.joint];
     for (const CoulombFriction& f : effects.coulomb) {
         const double v = qd[f.joint];
@@ -20,6 +25,7 @@ void addFrictionForces(const Effects& effects, const Eigen::VectorXd& qd, Eigen:
 }
 
 void computeGeneralizedForces(const Effects& effects, double t, const Eigen::VectorXd& qd, Eigen::VectorXd& Q) {
+    requireSize("computeGeneralizedForces", "Q", Q.size(), qd.size(), "qd", "entries");
     computeExternalTorques(effects, t, Q);
     addFrictionForces(effects, qd, Q);
 }

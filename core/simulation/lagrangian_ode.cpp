@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "core/model/argument_checks.hpp"
 #include "core/simulation/integrators.hpp"
 
 namespace ll {
@@ -15,6 +16,8 @@ LagrangianOde::LagrangianOde(const symbolic::Derivation& derivation)
       llt_(n_) {}
 
 OdeState LagrangianOde::initialState(const Eigen::VectorXd& q, const Eigen::VectorXd& qd) const {
+    requireSize("LagrangianOde::initialState", "q", q.size(), n_, "the system", "coordinates");
+    requireSize("LagrangianOde::initialState", "qd", qd.size(), n_, "the system", "coordinates");
     OdeState x(2 * n_ + 1, 0.0);
     for (int i = 0; i < n_; ++i) {
         x[i] = q[i];

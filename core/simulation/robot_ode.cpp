@@ -10,6 +10,7 @@
 #include "core/dynamics/inverse_dynamics.hpp"
 #include "core/dynamics/mass_matrix.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
+#include "core/model/argument_checks.hpp"
 #include "core/simulation/integrators.hpp"
 
 namespace ll {
@@ -44,6 +45,7 @@ RobotOde::RobotOde(const RobotModel& model, const Effects& effects)
       rhs_(Eigen::VectorXd::Zero(model.dof())),
       qdd_(Eigen::VectorXd::Zero(model.dof())) {
     // Conservative terms (into g) first, then the generalized forces (into Q).
+    requireEffectsFit("RobotOde", effects, model.dof());
     if (effects.gravity) terms_.push_back({RhsTerm::Gravity, &RobotOde::addGravity});
     if (!effects.springs.empty()) terms_.push_back({RhsTerm::Springs, &RobotOde::addSprings});
     if (!effects.viscous.empty()) terms_.push_back({RhsTerm::Viscous, &RobotOde::addViscous});
@@ -79,6 +81,8 @@ std::vector<int> RobotOde::stuckJoints() const {
 
 OdeState RobotOde::initialState(const Eigen::VectorXd& q, const Eigen::VectorXd& qd) const {
     const int n = data_.n;
+    requireSize("RobotOde::initialState", "q", q.size(), data_.n);
+    requireSize("RobotOde::initialState", "qd", qd.size(), data_.n);
     OdeState x(2 * n + 1, 0.0);
     for (int i = 0; i < n; ++i) {
         x[i] = q[i];

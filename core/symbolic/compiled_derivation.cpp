@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "core/model/argument_checks.hpp"
+
 namespace ll::symbolic {
 namespace {
 
@@ -48,6 +50,8 @@ CompiledDerivation::CompiledDerivation(const Derivation& d) : n_(static_cast<int
 }
 
 ModelTerms CompiledDerivation::terms(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, double t) const {
+    requireSize("CompiledDerivation::terms", "q", q.size(), n_, "the system", "coordinates");
+    requireSize("CompiledDerivation::terms", "qd", qd.size(), n_, "the system", "coordinates");
     for (int i = 0; i < n_; ++i) {
         input_[i] = q[i];
         input_[n_ + i] = qd[i];
