@@ -9,6 +9,7 @@
 #include "app/commands.hpp"
 #include "app/scene_loading.hpp"
 #include "core/io/trajectory_file.hpp"
+#include "core/model/actuation.hpp"
 #include "core/model/validation.hpp"
 #include "core/simulation/simulate.hpp"
 
@@ -52,10 +53,9 @@ void printSummary(const Scene& scene, const SimulationSettings& settings, const 
     const int n = scene.robot.dof();
     const std::vector<int> inputs = actuatedJoints(scene.effects, n);
     if (static_cast<int>(inputs.size()) < n) {
-        std::string joints;
-        for (int j : inputs) joints += (joints.empty() ? "" : ", ") + std::to_string(j + 1);
-        std::fprintf(stderr, "actuation: underactuated, %zu input%s (%s) for %d coordinates\n", inputs.size(),
-                     inputs.size() == 1 ? "" : "s", joints.empty() ? "none" : ("joint " + joints).c_str(), n);
+        std::vector<std::string> names;
+        for (int i = 0; i < n; ++i) names.push_back(r.trajectory.coordinateName(i));
+        std::fprintf(stderr, "actuation: %s\n", actuationText(inputs, names).c_str());
     }
 }
 

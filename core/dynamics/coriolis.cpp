@@ -38,13 +38,7 @@ void computeMassMatrixDerivatives(const RobotModel& model, RobotData& data) {
 void computeCoriolisMatrix(const RobotModel& model, RobotData& data, const Eigen::VectorXd& qd) {
     requireSize("computeCoriolisMatrix", "qd", qd.size(), data.n);
     computeMassMatrixDerivatives(model, data);
-    const int n = data.n;
-    for (int i = 0; i < n; ++i)
-        for (int j = 0; j < n; ++j) {
-            double c = 0.0;
-            for (int k = 0; k < n; ++k) c += christoffel(data, i, j, k) * qd[k];
-            data.C(i, j) = c;
-        }
+    christoffelMatrix<double>(data.n, data.dB_dq, qd, data.C);
 }
 
 }  // namespace ll

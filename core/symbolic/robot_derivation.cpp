@@ -3,7 +3,9 @@
 #include <array>
 #include <chrono>
 
+#include "core/dynamics/christoffel.hpp"
 #include "core/kinematics/dh_transform.hpp"
+#include "core/model/actuation.hpp"
 #include "core/symbolic/trig_context.hpp"
 
 namespace ll::symbolic {
@@ -276,17 +278,9 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
     std::vector<matrix> dB(n);
     for (int k = 0; k < n; ++k) dB[k] = tc.diffq(d.B, k);
     d.C = matrix(n, n);
-    for (int i = 0; i < n; ++i)
-        for (int j = 0; j < n; ++j) {
-            ex c = 0;
-            for (int k = 0; k < n; ++k)
-                c += GiNaC::numeric(1, 2) * (dB[k](i, j) + dB[j](i, k) - dB[i](j, k)) * tc.qd(k);
-            d.C(i, j) = tc.reduce(c);
-        }
-    d.Q = matrix(n, 1);
-    for (const SymbolicTerm& torque : robot.torques) d.Q(torque.joint, 0) += torque.value;
-    for (const SymbolicTerm& f : robot.viscous) d.Q(f.joint, 0) -= f.value * tc.qd(f.joint);
-    for (const SymbolicTerm& f : robot.coulomb) d.Q(f.joint, 0) -= f.value * GiNaC::tanh(tc.qd(f.joint) / f.extra);
+    christoffelMatrix<ex>(n, dB, tc.qd(), d.C);
+    d.C = tc.reduce(d.C);
+    d.Q = effectForces(robot, tc.qd());
     for (const SymbolicTerm& torque : robot.torques) d.actuated.push_back(torque.joint);
     std::sort(d.actuated.begin(), d.actuated.end());
     d.actuated.erase(std::unique(d.actuated.begin(), d.actuated.end()), d.actuated.end());
@@ -298,11 +292,7 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
         for (int j = 0; j < n; ++j) lhs += d.B(i, j) * d.qdd[j] + d.C(i, j) * tc.qd(j);
         step8.push_back({"equation_" + idx(i), R"(\text{equation } )" + idx(i), lhs == d.Q(i, 0)});
     }
-    std::string actuation = "inputs on joints";
-    for (int j : d.actuated) actuation += " " + idx(j);
-    if (d.actuated.empty()) actuation = "no inputs";
-    actuation += d.underactuated ? " (underactuated: m = " + std::to_string(d.actuated.size()) + " < n = " + std::to_string(n) + ")"
-                                 : " (fully actuated)";
+    const std::string actuation = actuationText(d.actuated, d.coordinateNames);
     addStep(8, "Equations of motion (Lagrange-d'Alembert)",
             "g = dE_pot/dq;  c_ij = sum_k 1/2 (db_ij/dq_k + db_ik/dq_j - db_jk/dq_i) qd_k;  "
             "Q: non-conservative forces only;  B qdd + C qd + g = Q;  qdd = B^-1 (Q - C qd - g);  " + actuation,
