@@ -271,7 +271,9 @@ int deriveCommand(const Args& args) {
     derivation.firstStep = range.first;
     derivation.lastStep = range.last;
     const std::string mode = options.has("symbolic") ? "symbolic" : options.has("numeric") ? "numeric" : "parameters";
-    Derivation d = scene.lagrangian ? deriveLagrangian(scene, derivation.mode) : deriveRobot(scene, derivation);
+    Derivation d = inSceneFile(options.positional()[0], [&] {
+        return scene.lagrangian ? deriveLagrangian(scene, derivation.mode) : deriveRobot(scene, derivation);
+    });
     std::erase_if(d.steps, [&](const DerivationStep& s) { return s.number < range.first || s.number > range.last; });
 
     if (options.has("timings")) {

@@ -243,6 +243,35 @@ private slots:
         QCOMPARE(run({"simulate", example("puma560.json"), "--duration", "abc"}).exitCode, 2);
         QCOMPARE(run({"frobnicate"}).exitCode, 2);
     }
+
+    // A scene whose parameters are named like the derivation's shorthand (c1 = cos q1,
+    // s12 = sin(q1 + q2)) is refused in every format with one line naming the clash:
+    // it used to print m1 c1² as m1*cos(q1)^2 and s12 sin(q1 + q2) as s12².
+    void deriveRefusesShorthandParameterNames_data() {
+        QTest::addColumn<QString>("format");
+        QTest::newRow("text") << "text";
+        QTest::newRow("latex") << "latex";
+        QTest::newRow("json") << "json";
+    }
+    void deriveRefusesShorthandParameterNames() {
+        QFETCH(QString, format);
+        QTemporaryDir dir;
+        const QString path = dir.filePath("planar_2r_c1_s12.json");
+        QFile original(example("planar_2r.json"));
+        QVERIFY(original.open(QIODevice::ReadOnly));
+        QFile renamed(path);
+        QVERIFY(renamed.open(QIODevice::WriteOnly));
+        renamed.write(original.readAll().replace("lc1", "c1").replace("lc2", "s12"));
+        renamed.close();
+        const Run r = run({"derive", path, "--format", format});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY(r.out.isEmpty());
+        QCOMPARE(r.err.count('\n'), 1);
+        QVERIFY2(r.err.startsWith(("error: " + path + ": parameters.c1: ").toUtf8()), r.err.constData());
+        QVERIFY2(r.err.contains("cos q1"), r.err.constData());
+        // The numbers alone do not clash: the numeric model derives.
+        QCOMPARE(run({"derive", path, "--format", format, "--numeric"}).exitCode, 0);
+    }
 };
 
 QTEST_GUILESS_MAIN(TestCli)

@@ -6,6 +6,8 @@
 #include "core/dynamics/christoffel.hpp"
 #include "core/kinematics/dh_transform.hpp"
 #include "core/model/actuation.hpp"
+#include "core/model/diagnostics.hpp"
+#include "core/symbolic/angle_sums.hpp"
 #include "core/symbolic/trig_context.hpp"
 
 namespace ll::symbolic {
@@ -118,12 +120,32 @@ matrix massMatrixInLinkFrames(const SymbolicRobot& robot, const std::vector<matr
     return B;
 }
 
+// A parameter kept as a symbol and named like the shorthand the derivation writes for
+// its own trigonometric symbols (c1 = cos q1, s12 = sin(q1 + q2), c9_10) could not be
+// told apart from it in text and LaTeX, and its plain expression would read back as
+// the cosine: different mathematics. Such a scene is refused, naming the clash.
+// (q1, qd1, qdd1 and t are refused as parameter names in every scene.)
+void refuseShorthandParameterNames(const Scene& scene) {
+    const int n = scene.robot.dof();
+    for (const auto& [name, value] : scene.parameters) {
+        const std::optional<TrigName> trig = parseTrigName(name, n);
+        if (!trig) continue;
+        std::string angle;
+        for (int k : trig->indices) angle += (angle.empty() ? "q" : " + q") + std::to_string(k);
+        angle = trig->indices.size() > 1 ? "(" + angle + ")" : " " + angle;
+        throw InputError("parameters." + name, "'" + name + "' is the derivation's shorthand for " +
+                                                   (trig->kind == 'c' ? "cos" : "sin") + angle +
+                                                   "; rename the parameter");
+    }
+}
+
 }  // namespace
 
 Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
     const int n = scene.robot.dof();
     std::vector<bool> revolute(n);
     for (int i = 0; i < n; ++i) revolute[i] = scene.robot.joints[i].dh.type == JointType::Revolute;
+    if (options.mode == ParameterMode::Parametric) refuseShorthandParameterNames(scene);
     const TrigContext tc(revolute);
     const SymbolicRobot robot = symbolicRobot(scene, options.mode, tc.t());
     const bool standard = robot.convention == DhConvention::Standard;

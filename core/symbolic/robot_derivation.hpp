@@ -16,6 +16,9 @@ struct DerivationOptions {
     int lastStep = 8;
 };
 
+// Throws InputError naming "parameters.<name>" when, with parameters kept as symbols
+// (ParameterMode::Parametric), a parameter is named like the derivation's trigonometric
+// shorthand for this robot (c1, s2, c12, s9_10: cos q1, sin q2, ...).
 Derivation deriveRobot(const Scene& scene, const DerivationOptions& options = {});
 
 }  // namespace ll::symbolic
