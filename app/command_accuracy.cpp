@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <memory>
 #include <sstream>
 
@@ -15,6 +14,7 @@
 #include "app/cli_options.hpp"
 #include "app/commands.hpp"
 #include "app/scene_loading.hpp"
+#include "core/io/atomic_file.hpp"
 #include "core/model/validation.hpp"
 #include "core/simulation/integrators.hpp"
 #include "core/simulation/work_precision.hpp"
@@ -57,9 +57,7 @@ std::vector<std::string> parseNames(const std::string& text) {
     return names;
 }
 
-void writeCsv(const WorkPrecisionResult& r, const std::string& path) {
-    std::ofstream out(path);
-    if (!out) throw std::runtime_error("cannot write " + path);
+void writeCsv(const WorkPrecisionResult& r, std::ostream& out) {
     out.precision(10);
     out << "integrator,adaptive,setting,completed,final_error,at_reference_floor,max_rel_energy_drift,cpu_seconds,"
            "rhs_evaluations,steps,rejected_steps,message\n";
@@ -133,7 +131,8 @@ int accuracyCommand(const Args& args) {
         std::fprintf(stderr, "error: %s\n", result.message.c_str());
         return 3;
     }
-    if (options.has("csv")) writeCsv(result, options.text("csv"));
+    if (options.has("csv"))
+        saveFileAtomically(options.text("csv"), [&](std::ostream& out) { writeCsv(result, out); }, Backup::None);
     if (!plot.empty()) {
         // Fonts need a QGuiApplication; with no display, render offscreen.
         if (std::getenv("DISPLAY") == nullptr && std::getenv("WAYLAND_DISPLAY") == nullptr &&
