@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "app/cli_options.hpp"
+#include "app/command_usage.hpp"
 #include "app/commands.hpp"
 #include "app/scene_loading.hpp"
 #include "core/io/atomic_file.hpp"
@@ -103,9 +104,7 @@ void printTable(const WorkPrecisionResult& r) {
 int accuracyCommand(const Args& args) {
     const Options options(args, {"integrators", "tolerances", "steps", "duration", "repeats", "reference-tol", "out", "csv"});
     if (options.positional().size() != 1)
-        throw UsageError("usage: lagrangelab accuracy SCENE [--integrators a,b,...] [--tolerances 1e-3..1e-12] "
-                         "[--steps 1e-2,1e-3,...] [--duration T] [--repeats N] [--reference-tol X] "
-                         "[--out plot.svg|png] [--csv FILE]");
+        throw UsageError(usageLine("accuracy"));
     Scene scene = loadSceneReportingWarnings(options.positional()[0]);
     WorkPrecisionSettings settings;
     if (options.has("integrators")) settings.integrators = parseNames(options.text("integrators"));

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli_options.hpp"
+#include "app/command_usage.hpp"
 #include "app/commands.hpp"
 #include "app/scene_loading.hpp"
 #include "core/model/actuation.hpp"
@@ -256,7 +257,7 @@ void writeJson(const Derivation& d, const std::string& mode, std::ostream& out) 
 int deriveCommand(const Args& args) {
     const Options options(args, {"format", "steps"}, {"symbolic", "numeric", "timings"});
     if (options.positional().size() != 1)
-        throw UsageError("usage: lagrangelab derive SCENE [--format text|latex|json] [--steps 0-8] [--symbolic] [--numeric] [--timings]");
+        throw UsageError(usageLine("derive"));
     const std::string format = options.text("format", "text");
     if (format != "text" && format != "latex" && format != "json")
         throw UsageError("--format: expected text, latex or json, got '" + format + "'");

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include "app/cli_options.hpp"
+#include "app/command_usage.hpp"
 #include "app/commands.hpp"
 #include "app/scene_loading.hpp"
 #include "core/io/trajectory_file.hpp"
@@ -64,7 +65,7 @@ void printSummary(const Scene& scene, const SimulationSettings& settings, const 
 int simulateCommand(const Args& args) {
     const Options options(args, {"duration", "integrator", "abs-tol", "rel-tol", "dt", "output-rate", "out"});
     if (options.positional().size() != 1)
-        throw UsageError("usage: lagrangelab simulate SCENE [--duration T] [--integrator NAME] [--abs-tol X] [--rel-tol X] [--dt X] [--output-rate HZ] [--out FILE.csv|FILE.json]");
+        throw UsageError(usageLine("simulate"));
     Scene scene = loadSceneReportingWarnings(options.positional()[0]);
     SimulationSettings& settings = scene.simulation;
     settings.duration = options.number("duration", settings.duration);
