@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <memory>
 #include <sstream>
 
@@ -13,9 +12,11 @@
 #include <unistd.h>
 
 #include "app/cli_options.hpp"
+#include "app/command_usage.hpp"
 #include "app/commands.hpp"
 #include "app/scene_loading.hpp"
 #include "core/simulation/scene_validation.hpp"
+#include "core/io/atomic_file.hpp"
 #include "core/simulation/integrators.hpp"
 #include "core/pipeline/scene_simulation.hpp"
 #include "ui/work_precision_plot.hpp"
@@ -57,9 +58,7 @@ std::vector<std::string> parseNames(const std::string& text) {
     return names;
 }
 
-void writeCsv(const WorkPrecisionResult& r, const std::string& path) {
-    std::ofstream out(path);
-    if (!out) throw std::runtime_error("cannot write " + path);
+void writeCsv(const WorkPrecisionResult& r, std::ostream& out) {
     out.precision(10);
     out << "integrator,adaptive,setting,completed,final_error,at_reference_floor,max_rel_energy_drift,cpu_seconds,"
            "rhs_evaluations,steps,rejected_steps,message\n";
@@ -105,9 +104,7 @@ void printTable(const WorkPrecisionResult& r) {
 int accuracyCommand(const Args& args) {
     const Options options(args, {"integrators", "tolerances", "steps", "duration", "repeats", "reference-tol", "out", "csv"});
     if (options.positional().size() != 1)
-        throw UsageError("usage: lagrangelab accuracy SCENE [--integrators a,b,...] [--tolerances 1e-3..1e-12] "
-                         "[--steps 1e-2,1e-3,...] [--duration T] [--repeats N] [--reference-tol X] "
-                         "[--out plot.svg|png] [--csv FILE]");
+        throw UsageError(usageLine("accuracy"));
     Scene scene = loadSceneReportingWarnings(options.positional()[0]);
     WorkPrecisionSettings settings;
     if (options.has("integrators")) settings.integrators = parseNames(options.text("integrators"));
@@ -133,7 +130,8 @@ int accuracyCommand(const Args& args) {
         std::fprintf(stderr, "error: %s\n", result.message.c_str());
         return 3;
     }
-    if (options.has("csv")) writeCsv(result, options.text("csv"));
+    if (options.has("csv"))
+        saveFileAtomically(options.text("csv"), [&](std::ostream& out) { writeCsv(result, out); }, Backup::None);
     if (!plot.empty()) {
         // Fonts need a QGuiApplication; with no display, render offscreen.
         if (std::getenv("DISPLAY") == nullptr && std::getenv("WAYLAND_DISPLAY") == nullptr &&

@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "app/cli_options.hpp"
+#include "app/command_usage.hpp"
 #include "app/commands.hpp"
 #include "app/scene_loading.hpp"
 #include "core/pipeline/scene_derivation.hpp"
@@ -36,7 +37,7 @@ StepRange parseSteps(const std::string& text) {
 int deriveCommand(const Args& args) {
     const Options options(args, {"format", "steps"}, {"symbolic", "numeric", "timings"});
     if (options.positional().size() != 1)
-        throw UsageError("usage: lagrangelab derive SCENE [--format text|latex|json] [--steps 0-8] [--symbolic] [--numeric] [--timings]");
+        throw UsageError(usageLine("derive"));
     const std::string format = options.text("format", "text");
     if (format != "text" && format != "latex" && format != "json")
         throw UsageError("--format: expected text, latex or json, got '" + format + "'");
@@ -51,7 +52,7 @@ int deriveCommand(const Args& args) {
     request.firstStep = range.first;
     request.lastStep = range.last;
     request.format = format == "text" ? DocumentFormat::Text : format == "latex" ? DocumentFormat::Latex : DocumentFormat::Json;
-    const DerivedDocument derived = deriveDocument(scene, request);
+    const DerivedDocument derived = inSceneFile(options.positional()[0], [&] { return deriveDocument(scene, request); });
 
     if (options.has("timings")) {
         double total = 0;

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli_options.hpp"
+#include "app/command_usage.hpp"
 #include "app/commands.hpp"
 #include "app/scene_loading.hpp"
 #include "core/dynamics/coriolis.hpp"
@@ -78,7 +79,7 @@ int evalLagrangian(const Scene& scene, const Options& options) {
 
 int evalCommand(const Args& args) {
     const Options options(args, {"q", "qd", "t", "tau"});
-    if (options.positional().size() != 1) throw UsageError("usage: lagrangelab eval SCENE --q v1,v2,... --qd v1,... [--t T] [--tau v1,...]");
+    if (options.positional().size() != 1) throw UsageError(usageLine("eval"));
     const Scene scene = loadSceneReportingWarnings(options.positional()[0]);
     if (scene.lagrangian) return evalLagrangian(scene, options);
     const RobotModel& robot = scene.robot;

@@ -6,11 +6,13 @@
 #include <unistd.h>
 
 #include "app/cli_options.hpp"
+#include "app/command_usage.hpp"
 #include "app/commands.hpp"
 #include "app/scene_loading.hpp"
 #include "core/io/trajectory_file.hpp"
 #include "core/simulation/scene_validation.hpp"
 #include "core/pipeline/scene_simulation.hpp"
+#include "core/model/actuation.hpp"
 
 namespace ll::cli {
 namespace {
@@ -52,10 +54,9 @@ void printSummary(const Scene& scene, const SimulationSettings& settings, const 
     const int n = scene.robot.dof();
     const std::vector<int> inputs = actuatedJoints(scene.effects, n);
     if (static_cast<int>(inputs.size()) < n) {
-        std::string joints;
-        for (int j : inputs) joints += (joints.empty() ? "" : ", ") + std::to_string(j + 1);
-        std::fprintf(stderr, "actuation: underactuated, %zu input%s (%s) for %d coordinates\n", inputs.size(),
-                     inputs.size() == 1 ? "" : "s", joints.empty() ? "none" : ("joint " + joints).c_str(), n);
+        std::vector<std::string> names;
+        for (int i = 0; i < n; ++i) names.push_back(r.trajectory.coordinateName(i));
+        std::fprintf(stderr, "actuation: %s\n", actuationText(inputs, names).c_str());
     }
 }
 
@@ -64,7 +65,7 @@ void printSummary(const Scene& scene, const SimulationSettings& settings, const 
 int simulateCommand(const Args& args) {
     const Options options(args, {"duration", "integrator", "abs-tol", "rel-tol", "dt", "output-rate", "out"});
     if (options.positional().size() != 1)
-        throw UsageError("usage: lagrangelab simulate SCENE [--duration T] [--integrator NAME] [--abs-tol X] [--rel-tol X] [--dt X] [--output-rate HZ] [--out FILE.csv|FILE.json]");
+        throw UsageError(usageLine("simulate"));
     Scene scene = loadSceneReportingWarnings(options.positional()[0]);
     SimulationSettings& settings = scene.simulation;
     settings.duration = options.number("duration", settings.duration);

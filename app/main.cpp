@@ -1,60 +1,61 @@
 // lagrangelab: Euler–Lagrange modelling of serial robots, from the command line.
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <string>
 
 #include "app/cli_options.hpp"
+#include "app/command_usage.hpp"
 #include "app/commands.hpp"
 #include "core/model/diagnostics.hpp"
 
 namespace {
 
-const char* kUsage =
-    "usage: lagrangelab <command> [arguments]\n"
-    "\n"
-    "commands:\n"
-    "  eval SCENE --q v1,... --qd v1,... [--t T] [--tau v1,...]\n"
-    "      B, C, g, Q, q̈, E_kin, E_pot at one state, as JSON\n"
-    "  simulate SCENE [--duration T] [--integrator NAME] [--abs-tol X] [--rel-tol X] [--dt X]\n"
-    "           [--output-rate HZ] [--out FILE.csv|FILE.json]\n"
-    "      integrate the equations of motion; trajectory to --out or CSV on stdout, summary on stderr\n"
-    "  derive SCENE [--format text|latex|json] [--steps 0-8] [--symbolic] [--numeric] [--timings]\n"
-    "      the model step by step as the course notes derive it (symbolic, GiNaC)\n"
-    "  integrators\n"
-    "      the integrators with order, kind and when to use each\n"
-    "  accuracy SCENE [--integrators a,b,...] [--tolerances 1e-3..1e-12] [--steps dt1,dt2,...] [--duration T]\n"
-    "           [--repeats N] [--reference-tol X] [--out plot.svg|png] [--csv FILE]\n"
-    "      work-precision: error, energy drift, CPU time, evaluations and steps per integrator and setting\n"
-    "  bench [SCENE...] [--batches N] [--rhs | --derive]\n"
-    "      median times of B, C, g, forward/inverse dynamics and one simulated second, beside KDL\n"
-    "      (--rhs: one right-hand side of the PUMA 560 with no effects, gravity only, all effects;\n"
-    "       --derive: the whole symbolic derivation per parameter mode)\n"
-    "\n"
-    "exit codes: 0 success, 2 bad input, 3 simulation stopped early\n";
+bool isHelp(const std::string& arg) { return arg == "--help" || arg == "-h"; }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "help") {
-        std::fputs(kUsage, argc < 2 ? stderr : stdout);
-        return argc < 2 ? 2 : 0;
+    using namespace ll::cli;
+    if (argc < 2) {
+        std::fputs(overviewUsage().c_str(), stderr);
+        return 2;
     }
     const std::string command = argv[1];
-    const ll::cli::Args args(argv + 2, argv + argc);
+    const Args args(argv + 2, argv + argc);
+    if (command == "--version" || command == "version") {
+        std::printf("lagrangelab %s\n", projectVersion());
+        return 0;
+    }
+    if (isHelp(command) || command == "help") {
+        const std::string topic = command == "help" && !args.empty() ? args[0] : "";
+        const std::string usage = topic.empty() ? overviewUsage() : commandUsage(topic);
+        if (usage.empty()) {
+            std::fprintf(stderr, "error: help: unknown command '%s' (commands: %s)\n", topic.c_str(), commandNames().c_str());
+            return 2;
+        }
+        std::fputs(usage.c_str(), stdout);
+        return 0;
+    }
+    // `lagrangelab COMMAND --help`: that command's usage, whatever else is given.
+    if (!commandUsage(command).empty() && std::any_of(args.begin(), args.end(), isHelp)) {
+        std::fputs(commandUsage(command).c_str(), stdout);
+        return 0;
+    }
     try {
-        if (command == "eval") return ll::cli::evalCommand(args);
-        if (command == "simulate") return ll::cli::simulateCommand(args);
-        if (command == "integrators") return ll::cli::integratorsCommand(args);
-        if (command == "bench") return ll::cli::benchCommand(args);
-        if (command == "accuracy") return ll::cli::accuracyCommand(args);
-        if (command == "derive") return ll::cli::deriveCommand(args);
-        std::fprintf(stderr, "error: unknown command '%s'\n\n%s", command.c_str(), kUsage);
+        if (command == "eval") return evalCommand(args);
+        if (command == "simulate") return simulateCommand(args);
+        if (command == "integrators") return integratorsCommand(args);
+        if (command == "bench") return benchCommand(args);
+        if (command == "accuracy") return accuracyCommand(args);
+        if (command == "derive") return deriveCommand(args);
+        std::fprintf(stderr, "error: unknown command '%s'\n\n%s", command.c_str(), overviewUsage().c_str());
         return 2;
     } catch (const ll::InputError& e) {
         for (const ll::Diagnostic& d : e.diagnostics())
             if (d.severity == ll::Severity::Error) std::cerr << "error: " << d.field << ": " << d.message << '\n';
         return 2;
-    } catch (const ll::cli::UsageError& e) {
+    } catch (const UsageError& e) {
         std::cerr << "error: " << e.what() << '\n';
         return 2;
     } catch (const std::invalid_argument& e) {

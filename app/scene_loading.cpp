@@ -13,26 +13,17 @@ Scene loadSceneReportingWarnings(const std::string& path) {
     LoadedScene loaded = loadScene(path);
     // A Lagrangian's input errors (E_kin not quadratic, dependent coordinates, a
     // conservative Q) come from its derivation: found here, they name the file too.
-    if (loaded.scene.lagrangian) try {
+    if (loaded.scene.lagrangian)
+        inSceneFile(path, [&] {
             const auto lock = symbolic::lockGinac();
             (void)symbolic::deriveLagrangian(loaded.scene, symbolic::ParameterMode::Numeric);
-        } catch (const InputError& e) {
-            std::vector<Diagnostic> diagnostics = e.diagnostics();
-            for (Diagnostic& d : diagnostics) d.field = path + ": " + d.field;
-            throw InputError(diagnostics);
-        }
+        });
     for (const Diagnostic& w : loaded.warnings) std::cerr << "warning: " << w.field << ": " << w.message << '\n';
     return std::move(loaded.scene);
 }
 
 void requireValidSceneFrom(const Scene& scene, const std::string& path) {
-    try {
-        requireValidScene(scene);
-    } catch (const InputError& e) {
-        std::vector<Diagnostic> named = e.diagnostics();
-        for (Diagnostic& d : named) d.field = path + ": " + d.field;
-        throw InputError(named);
-    }
+    inSceneFile(path, [&] { (void)requireValidScene(scene); });
 }
 
 }  // namespace ll::cli

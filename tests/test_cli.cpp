@@ -243,6 +243,91 @@ private slots:
         QCOMPARE(run({"simulate", example("puma560.json"), "--duration", "abc"}).exitCode, 2);
         QCOMPARE(run({"frobnicate"}).exitCode, 2);
     }
+
+    // A scene whose parameters are named like the derivation's shorthand (c1 = cos q1,
+    // s12 = sin(q1 + q2)) is refused in every format with one line naming the clash:
+    // it used to print m1 c1² as m1*cos(q1)^2 and s12 sin(q1 + q2) as s12².
+    void deriveRefusesShorthandParameterNames_data() {
+        QTest::addColumn<QString>("format");
+        QTest::newRow("text") << "text";
+        QTest::newRow("latex") << "latex";
+        QTest::newRow("json") << "json";
+    }
+    void deriveRefusesShorthandParameterNames() {
+        QFETCH(QString, format);
+        QTemporaryDir dir;
+        const QString path = dir.filePath("planar_2r_c1_s12.json");
+        QFile original(example("planar_2r.json"));
+        QVERIFY(original.open(QIODevice::ReadOnly));
+        QFile renamed(path);
+        QVERIFY(renamed.open(QIODevice::WriteOnly));
+        renamed.write(original.readAll().replace("lc1", "c1").replace("lc2", "s12"));
+        renamed.close();
+        const Run r = run({"derive", path, "--format", format});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY(r.out.isEmpty());
+        QCOMPARE(r.err.count('\n'), 1);
+        QVERIFY2(r.err.startsWith(("error: " + path + ": parameters.c1: ").toUtf8()), r.err.constData());
+        QVERIFY2(r.err.contains("cos q1"), r.err.constData());
+        // The numbers alone do not clash: the numeric model derives.
+        QCOMPARE(run({"derive", path, "--format", format, "--numeric"}).exitCode, 0);
+    }
+
+    void versionIsTheProjectVersion() {
+        for (const char* spelling : {"--version", "version"}) {
+            const Run r = run({spelling});
+            QCOMPARE(r.exitCode, 0);
+            QCOMPARE(r.out, QByteArray("lagrangelab " LL_VERSION "\n"));
+        }
+    }
+
+    // `help` and `--help` list every command; each is also in the usage error of a bare
+    // `lagrangelab`.
+    void helpListsEveryCommand() {
+        const Run bare = run({});
+        QCOMPARE(bare.exitCode, 2);
+        for (const char* spelling : {"help", "--help"}) {
+            const Run r = run({spelling});
+            QCOMPARE(r.exitCode, 0);
+            QVERIFY(r.out.startsWith("usage: lagrangelab <command>"));
+            QCOMPARE(r.out, bare.err);
+            for (const char* command : {"eval SCENE", "simulate SCENE", "derive SCENE", "integrators", "accuracy SCENE",
+                                        "bench [SCENE...]", "help [COMMAND]"})
+                QVERIFY2(r.out.contains(QByteArray("\n  ") + command), command);
+        }
+    }
+
+    // `lagrangelab COMMAND --help` (anywhere among its arguments) and `help COMMAND`
+    // print that command's usage, exit 0; a usage error prints the same synopsis.
+    void commandHelpPrintsItsUsage_data() {
+        QTest::addColumn<QString>("command");
+        QTest::addColumn<QString>("synopsis");
+        QTest::newRow("eval") << "eval" << "SCENE --q v1,... --qd v1,... [--t T] [--tau v1,...]";
+        QTest::newRow("simulate") << "simulate" << "SCENE [--duration T] [--integrator NAME]";
+        QTest::newRow("derive") << "derive" << "SCENE [--format text|latex|json] [--steps 0-8]";
+        QTest::newRow("integrators") << "integrators" << "";
+        QTest::newRow("accuracy") << "accuracy" << "SCENE [--integrators a,b,...]";
+        QTest::newRow("bench") << "bench" << "[SCENE...] [--batches N] [--rhs | --derive]";
+    }
+    void commandHelpPrintsItsUsage() {
+        QFETCH(QString, command);
+        QFETCH(QString, synopsis);
+        const QByteArray head = ("usage: lagrangelab " + command + (synopsis.isEmpty() ? "" : " " + synopsis)).toUtf8();
+        for (const QStringList& args : {QStringList{command, "--help"}, QStringList{command, example("puma560.json"), "--help"},
+                                        QStringList{"help", command}}) {
+            const Run r = run(args);
+            QCOMPARE(r.exitCode, 0);
+            QVERIFY2(r.out.startsWith(head), r.out.constData());
+            QVERIFY(r.err.isEmpty());
+            for (const char* other : {"eval", "simulate", "derive", "accuracy", "bench"})
+                if (command != other) QVERIFY2(!r.out.contains(QByteArray("lagrangelab ") + other), other);
+        }
+        if (synopsis.startsWith("SCENE")) {  // without its scene: the same synopsis as an error, exit 2
+            const Run error = run({command});
+            QCOMPARE(error.exitCode, 2);
+            QVERIFY2(error.err.startsWith("error: " + head), error.err.constData());
+        }
+    }
 };
 
 QTEST_GUILESS_MAIN(TestCli)

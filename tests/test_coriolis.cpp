@@ -1,5 +1,6 @@
-// C(q, q̇) from Christoffel symbols: textbook closed form (planar 2R), exact ∂B/∂q
-// against finite differences, Ḃ − 2C skew-symmetric, and the independent RNEA:
+// C(q, q̇) from Christoffel symbols: textbook closed form (planar 2R), exact ∂B/∂q and
+// every Christoffel symbol against finite differences of B, Ḃ − 2C skew-symmetric, and
+// the independent RNEA:
 // since RNEA's bias h(v) = C(q, v) v is quadratic in v and the Christoffel C is
 // the symmetric bilinear form behind it, C(q, q̇) x = (h(q̇ + x) − h(q̇ − x)) / 4.
 #include <QtTest>
@@ -17,6 +18,24 @@ void evaluate(const RobotModel& robot, RobotData& data, const Eigen::VectorXd& q
     forwardKinematics(robot, data, q);
     computeMassMatrix(robot, data);
     computeCoriolisMatrix(robot, data, qd);
+}
+
+// B(q) by the CRBA, in the scratch `fd`.
+Eigen::MatrixXd massMatrixAt(const RobotModel& robot, RobotData& fd, const Eigen::VectorXd& q) {
+    forwardKinematics(robot, fd, q);
+    computeMassMatrix(robot, fd);
+    return fd.B;
+}
+
+// ∂B/∂q_k for every k by central differences of the CRBA's B (no exact derivatives).
+std::vector<Eigen::MatrixXd> massMatrixDifferences(const RobotModel& robot, RobotData& fd, const Eigen::VectorXd& q,
+                                                   double step) {
+    std::vector<Eigen::MatrixXd> dB;
+    for (int k = 0; k < q.size(); ++k) {
+        const Eigen::VectorXd e = step * Eigen::VectorXd::Unit(q.size(), k);
+        dB.push_back((massMatrixAt(robot, fd, q + e) - massMatrixAt(robot, fd, q - e)) / (2 * step));
+    }
+    return dB;
 }
 }  // namespace
 
@@ -48,17 +67,9 @@ private slots:
             for (int trial = 0; trial < 20; ++trial) {
                 const Eigen::VectorXd q = test::randomVector(rng, n, 3.0);
                 evaluate(robot, data, q, Eigen::VectorXd::Zero(n));
+                const std::vector<Eigen::MatrixXd> differences = massMatrixDifferences(robot, fd, q, 1e-6);
                 for (int k = 0; k < n; ++k) {
-                    const double step = 1e-6;
-                    Eigen::VectorXd qp = q, qm = q;
-                    qp[k] += step;
-                    qm[k] -= step;
-                    forwardKinematics(robot, fd, qp);
-                    computeMassMatrix(robot, fd);
-                    const Eigen::MatrixXd Bp = fd.B;
-                    forwardKinematics(robot, fd, qm);
-                    computeMassMatrix(robot, fd);
-                    const Eigen::MatrixXd dB = (Bp - fd.B) / (2 * step);
+                    const Eigen::MatrixXd& dB = differences[k];
                     QVERIFY2(test::scaledError(data.dB_dq[k], dB) < 1e-7,
                              qPrintable(QString("k=%1 err=%2").arg(k).arg(test::scaledError(data.dB_dq[k], dB))));
                 }
@@ -77,12 +88,7 @@ private slots:
                 const Eigen::VectorXd q = test::randomVector(rng, n, 3.0), qd = test::randomVector(rng, n, 3.0);
                 evaluate(robot, data, q, qd);
                 const double dt = 1e-6;
-                forwardKinematics(robot, fd, q + dt * qd);
-                computeMassMatrix(robot, fd);
-                const Eigen::MatrixXd Bp = fd.B;
-                forwardKinematics(robot, fd, q - dt * qd);
-                computeMassMatrix(robot, fd);
-                const Eigen::MatrixXd Bdot = (Bp - fd.B) / (2 * dt);
+                const Eigen::MatrixXd Bdot = (massMatrixAt(robot, fd, q + dt * qd) - massMatrixAt(robot, fd, q - dt * qd)) / (2 * dt);
                 const Eigen::MatrixXd N = Bdot - 2 * data.C;
                 const double scale = std::max(1.0, data.C.cwiseAbs().maxCoeff());
                 QVERIFY2((N + N.transpose()).cwiseAbs().maxCoeff() < 1e-6 * scale,
@@ -115,11 +121,35 @@ private slots:
                     C.col(j) = (hp - hm) / 4;
                 }
                 QVERIFY2(test::scaledError(data.C, C) < 1e-11, qPrintable(QString::number(test::scaledError(data.C, C))));
-                // Christoffel symbols of the first kind are symmetric in their last two indices
+            }
+        }
+    }
+
+    // Each Christoffel symbol Γ_ijk = ½(∂b_ij/∂q_k + ∂b_ik/∂q_j − ∂b_jk/∂q_i) against the
+    // same formula over ∂B/∂q from central differences of the CRBA's B (no exact
+    // derivatives involved), and C = Σ_k Γ_ijk q̇_k built from those values.
+    void christoffelSymbolsMatchFiniteDifferencesOfB() {
+        for (DhConvention convention : {DhConvention::Standard, DhConvention::Modified}) {
+            std::mt19937 rng(12);
+            const int n = 5;
+            const RobotModel robot = test::randomRobot(rng, n, convention);
+            RobotData data(robot), fd(robot);
+            for (int trial = 0; trial < 10; ++trial) {
+                const Eigen::VectorXd q = test::randomVector(rng, n, 3.0), qd = test::randomVector(rng, n, 3.0);
+                evaluate(robot, data, q, qd);
+                const std::vector<Eigen::MatrixXd> dB = massMatrixDifferences(robot, fd, q, 1e-5);
+                Eigen::MatrixXd C = Eigen::MatrixXd::Zero(n, n);
+                double worst = 0.0;
                 for (int i = 0; i < n; ++i)
                     for (int j = 0; j < n; ++j)
-                        for (int k = 0; k < n; ++k)
-                            QCOMPARE(christoffel(data, i, j, k), christoffel(data, i, k, j));
+                        for (int k = 0; k < n; ++k) {
+                            const double gamma = 0.5 * (dB[k](i, j) + dB[j](i, k) - dB[i](j, k));
+                            worst = std::max(worst, std::abs(christoffel(data, i, j, k) - gamma));
+                            C(i, j) += gamma * qd[k];
+                        }
+                const double scale = std::max(1.0, data.B.cwiseAbs().maxCoeff());
+                QVERIFY2(worst < 1e-7 * scale, qPrintable(QString::number(worst)));
+                QVERIFY2(test::scaledError(data.C, C) < 1e-7, qPrintable(QString::number(test::scaledError(data.C, C))));
             }
         }
     }

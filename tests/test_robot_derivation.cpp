@@ -13,6 +13,8 @@
 #include "core/kinematics/forward_kinematics.hpp"
 #include "core/simulation/generalized_forces.hpp"
 #include "core/symbolic/derivation_evaluator.hpp"
+#include "core/symbolic/expression_printer.hpp"
+#include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/robot_derivation.hpp"
 #include "core/symbolic/trig_context.hpp"
 #include "test_support.hpp"
@@ -26,6 +28,25 @@ double relativeError(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
 }
 
 Scene exampleScene(const std::string& name) { return loadScene(std::string(LL_EXAMPLES_DIR) + "/" + name).scene; }
+
+// The example's file with every occurrence of each `from` replaced by its `to`.
+Scene renamedExample(const std::string& name, const std::vector<std::pair<std::string, std::string>>& renames) {
+    QFile file(QString::fromStdString(std::string(LL_EXAMPLES_DIR) + "/" + name));
+    if (!file.open(QIODevice::ReadOnly)) qFatal("cannot read %s", name.c_str());
+    std::string text = file.readAll().toStdString();
+    for (const auto& [from, to] : renames)
+        for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+            text.replace(at, from.size(), to);
+    return parseScene(text);
+}
+
+// The symbol of the parameter `name` in a derivation kept in parameters.
+GiNaC::symbol parameterSymbol(const Derivation& d, const std::string& name) {
+    for (const GiNaC::ex& relation : d.parameterValues)
+        if (GiNaC::is_a<GiNaC::symbol>(relation.lhs()) && GiNaC::ex_to<GiNaC::symbol>(relation.lhs()).get_name() == name)
+            return GiNaC::ex_to<GiNaC::symbol>(relation.lhs());
+    qFatal("no parameter %s in the derivation", name.c_str());
+}
 
 // Compares B, C, g, Q, E_kin, E_pot of the derivation with core/dynamics at random states.
 void compareWithNumeric(const Scene& scene, const Derivation& d, int states, double tolerance) {
@@ -125,6 +146,71 @@ private slots:
                                   .expand();
                 QVERIFY2(sum.normal().is_zero(), qPrintable(QString("(%1,%2)").arg(i).arg(j)));
             }
+    }
+
+    // Parameters named like the derivation's shorthand (c1 = cos q1, s12 = sin(q1 + q2))
+    // once turned the parameter into the cosine in the plain expressions and printed
+    // s12 · sin(q1 + q2) as s12²: the scene is refused, naming the clash.
+    void shorthandParameterNamesAreRefused_data() {
+        QTest::addColumn<QString>("from");
+        QTest::addColumn<QString>("to");
+        QTest::addColumn<QString>("meaning");
+        QTest::newRow("c1") << "lc1" << "c1" << "cos q1";
+        QTest::newRow("s12") << "lc2" << "s12" << "sin(q1 + q2)";
+        QTest::newRow("s2") << "lc2" << "s2" << "sin q2";
+    }
+    void shorthandParameterNamesAreRefused() {
+        QFETCH(QString, from);
+        QFETCH(QString, to);
+        QFETCH(QString, meaning);
+        auto lock = lockGinac();
+        const Scene scene = renamedExample("planar_2r.json", {{from.toStdString(), to.toStdString()}});
+        try {
+            (void)deriveRobot(scene);
+            QFAIL("derived a scene whose parameter is named like the shorthand");
+        } catch (const InputError& e) {
+            QCOMPARE(e.diagnostics().size(), std::size_t(1));
+            QCOMPARE(QString::fromStdString(e.diagnostics()[0].field), "parameters." + to);
+            QVERIFY2(QString::fromStdString(e.diagnostics()[0].message).contains(meaning),
+                     e.diagnostics()[0].message.c_str());
+        }
+        // With numbers in place of the parameters there is no clash, and the model is
+        // the numeric dynamics'.
+        DerivationOptions numeric;
+        numeric.mode = ParameterMode::Numeric;
+        compareWithNumeric(scene, deriveRobot(scene, numeric), 3, 1e-10);
+    }
+
+    // A name that is not a shorthand for this robot (c3 on a 2-joint arm) is a plain
+    // parameter: the same mathematics as under its old name, printed as itself.
+    void otherParameterNamesDeriveTheSameModel() {
+        auto lock = lockGinac();
+        const Scene scene = renamedExample("planar_2r.json", {{"lc1", "c3"}, {"lc2", "s4"}});
+        const Derivation renamed = deriveRobot(scene), original = deriveRobot(exampleScene("planar_2r.json"));
+        // Both in cos/sin of one set of coordinates and one set of parameter symbols, the
+        // renamed parameters renamed back.
+        const std::map<std::string, std::string> oldName{{"c3", "lc1"}, {"s4", "lc2"}};
+        GiNaC::lst back;
+        for (const GiNaC::ex& relation : renamed.parameterValues) {
+            const std::string name = GiNaC::ex_to<GiNaC::symbol>(relation.lhs()).get_name();
+            back.append(relation.lhs() == parameterSymbol(original, oldName.count(name) ? oldName.at(name) : name));
+        }
+        for (int i = 0; i < 2; ++i) {
+            back.append(renamed.q[i] == original.q[i]);
+            back.append(renamed.qd[i] == original.qd[i]);
+        }
+        for (const auto& [a, b] : {std::pair{&renamed.B, &original.B}, {&renamed.C, &original.C}, {&renamed.g, &original.g}}) {
+            for (unsigned i = 0; i < a->rows(); ++i)
+                for (unsigned j = 0; j < a->cols(); ++j) {
+                    const GiNaC::ex mine = (*a)(i, j).subs(renamed.trigToFunctions).subs(back);
+                    QVERIFY((mine - (*b)(i, j).subs(original.trigToFunctions)).expand().is_zero());
+                }
+        }
+        const std::string b11 = print(renamed.B(0, 0), printOptionsFor(renamed, Style::Plain));
+        QVERIFY2(b11.find("m1*c3^2") != std::string::npos && b11.find("m2*s4^2") != std::string::npos &&
+                     b11.find("q3") == std::string::npos && b11.find("q4") == std::string::npos,
+                 b11.c_str());
+        compareWithNumeric(scene, renamed, 3, 1e-10);
     }
 
     void onlyDeclaredEffectsAppear() {

@@ -123,7 +123,7 @@ private slots:
 
         // The lock is free again: the next derivation runs to the end.
         const Scene planar = example("planar_2r.json");
-        QVERIFY(derive(planar, symbolic::ParameterMode::Numeric, symbolic::DocumentFormat::Text).find("b11") !=
+        QVERIFY(derive(planar, symbolic::ParameterMode::Numeric, symbolic::DocumentFormat::Text).find("B = ") !=
                 std::string::npos);
     }
 

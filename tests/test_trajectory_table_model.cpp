@@ -1,7 +1,9 @@
-// The Qt item model shows exactly the simulated samples.
+// The Qt item model shows exactly the simulated samples, headed by the coordinates' names.
 #include <QtTest>
 
 #include "core/pipeline/scene_simulation.hpp"
+#include "core/io/scene_file.hpp"
+#include "core/symbolic/ginac_lock.hpp"
 #include "test_support.hpp"
 #include "ui/trajectory_table_model.hpp"
 
@@ -30,6 +32,22 @@ private slots:
         QCOMPARE(model.data(model.index(25, 2), Qt::EditRole).toDouble(), r.trajectory.q[25][1]);
         QCOMPARE(model.data(model.index(10, 7), Qt::EditRole).toDouble(), r.trajectory.E[10]);
         QVERIFY(!model.data(model.index(51, 0)).isValid());
+    }
+
+    // A Lagrangian system's own coordinate names head the columns, as the derivation's
+    // text writes them (Trajectory::names), not q1, q2.
+    void headersAreTheCoordinateNames() {
+        auto lock = symbolic::lockGinac();  // simulate derives the Lagrangian with GiNaC
+        Scene scene = loadScene(std::string(LL_EXAMPLES_DIR) + "/mass_spring_pair_lagrangian.json").scene;
+        scene.simulation.duration = 0.1;
+        const SimulationResult r = simulate(scene);
+        ui::TrajectoryTableModel model;
+        model.setTrajectory(r.trajectory);
+        QCOMPARE(model.columnCount(), 1 + 4 + 4);
+        QCOMPARE(model.headerData(1, Qt::Horizontal).toString(), QString::fromUtf8("θ1"));
+        QCOMPARE(model.headerData(2, Qt::Horizontal).toString(), QString::fromUtf8("θ2"));
+        QCOMPARE(model.headerData(4, Qt::Horizontal).toString(), QString::fromUtf8("θ̇2"));
+        QCOMPARE(model.headerData(5, Qt::Horizontal).toString(), QString::fromUtf8("E_kin [J]"));
     }
 };
 

@@ -1,5 +1,7 @@
 #include "ui/trajectory_table_model.hpp"
 
+#include "core/symbolic/expression_printer.hpp"
+
 namespace ll::ui {
 
 TrajectoryTableModel::TrajectoryTableModel(QObject* parent) : QAbstractTableModel(parent) {}
@@ -43,8 +45,10 @@ QVariant TrajectoryTableModel::headerData(int section, Qt::Orientation orientati
     if (orientation == Qt::Vertical) return section + 1;
     const int n = trajectory_.n;
     if (section == 0) return QStringLiteral("t [s]");
-    if (section <= n) return QStringLiteral("q%1").arg(section);
-    if (section <= 2 * n) return QStringLiteral("q̇%1").arg(section - n);
+    if (section <= 2 * n) {
+        const int i = (section - 1) % n;
+        return QString::fromStdString(symbolic::textCoordinateName(trajectory_.coordinateName(i), section > n ? 1 : 0));
+    }
     static const char* energies[] = {"E_kin [J]", "E_pot [J]", "E [J]", "W [J]"};
     const int k = section - 2 * n - 1;
     return k < 4 ? QVariant(QString::fromUtf8(energies[k])) : QVariant();

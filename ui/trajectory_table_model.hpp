@@ -1,6 +1,7 @@
 #pragma once
 // A Qt item model over a finished simulation: one row per sample, columns t, q_i,
-// q̇_i, E_kin, E_pot, E, W. The GUI's table and plots read the trajectory through it
+// q̇_i, E_kin, E_pot, E, W. Coordinates are headed by Trajectory::names as the
+// derivation's text prints them (q1, q̇1; a Lagrangian system's theta1 as θ1, θ̇1). The GUI's table and plots read the trajectory through it
 // (one model, several views); it owns an immutable copy, never live solver state.
 #include <QAbstractTableModel>
 

@@ -4,12 +4,16 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <stdexcept>
 
+#include <QBuffer>
 #include <QFileInfo>
 #include <QFontMetricsF>
 #include <QImage>
 #include <QPainterPath>
 #include <QSvgGenerator>
+
+#include "core/io/atomic_file.hpp"
 
 namespace ll::ui {
 namespace {
@@ -220,35 +224,42 @@ void paintWorkPrecision(QPainter& p, const QRectF& area, const WorkPrecisionResu
 
 bool saveWorkPrecisionPlot(const WorkPrecisionResult& result, const QString& path, QString* error, QSize size) {
     const QString suffix = QFileInfo(path).suffix().toLower();
+    if (suffix != "svg" && suffix != "png") {
+        if (error) *error = "unknown plot format '." + suffix + "' (use .svg or .png)";
+        return false;
+    }
+    // Rendered into memory, then written by the one atomic-save routine.
+    QBuffer buffer;
+    buffer.open(QIODevice::WriteOnly);
     if (suffix == "svg") {
         QSvgGenerator svg;
-        svg.setFileName(path);
+        svg.setOutputDevice(&buffer);
         svg.setSize(size);
         svg.setViewBox(QRect(QPoint(0, 0), size));
         svg.setTitle("Work–precision: " + QString::fromStdString(result.scene));
         QPainter painter;
         if (!painter.begin(&svg)) {
-            if (error) *error = "cannot write " + path;
+            if (error) *error = "cannot render the plot for " + path;
             return false;
         }
         paintWorkPrecision(painter, QRectF(QPointF(0, 0), size), result);
         painter.end();
-        if (QFileInfo(path).size() > 0) return true;
-        if (error) *error = "cannot write " + path;
-        return false;
+    } else {
+        QImage image(size, QImage::Format_ARGB32_Premultiplied);
+        image.fill(Qt::white);
+        QPainter painter(&image);
+        painter.setRenderHint(QPainter::TextAntialiasing, true);
+        paintWorkPrecision(painter, QRectF(QPointF(0, 0), size), result);
+        painter.end();
+        if (!image.save(&buffer, "PNG")) {
+            if (error) *error = "cannot encode the plot for " + path;
+            return false;
+        }
     }
-    if (suffix != "png") {
-        if (error) *error = "unknown plot format '." + suffix + "' (use .svg or .png)";
-        return false;
-    }
-    QImage image(size, QImage::Format_ARGB32_Premultiplied);
-    image.fill(Qt::white);
-    QPainter painter(&image);
-    painter.setRenderHint(QPainter::TextAntialiasing, true);
-    paintWorkPrecision(painter, QRectF(QPointF(0, 0), size), result);
-    painter.end();
-    if (!image.save(path, "PNG")) {
-        if (error) *error = "cannot write " + path;
+    try {
+        saveFileAtomically(path.toStdString(), buffer.data().toStdString(), Backup::None);
+    } catch (const std::runtime_error& e) {
+        if (error) *error = QString::fromStdString(e.what());
         return false;
     }
     return true;

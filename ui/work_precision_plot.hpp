@@ -15,8 +15,8 @@ namespace ll::ui {
 
 void paintWorkPrecision(QPainter& painter, const QRectF& area, const WorkPrecisionResult& result);
 
-// Writes `path` as SVG or PNG by its suffix (.svg, .png). On failure returns false and
-// says why in *error.
+// Writes `path` as SVG or PNG by its suffix (.svg, .png), atomically (saveFileAtomically,
+// no .bak). On failure returns false and says why in *error.
 bool saveWorkPrecisionPlot(const WorkPrecisionResult& result, const QString& path, QString* error = nullptr,
                            QSize size = QSize(1500, 680));
 

@@ -1,5 +1,7 @@
 #include "core/dynamics/compiled_lagrangian.hpp"
 
+#include "core/model/argument_checks.hpp"
+
 #include <algorithm>
 #include <stdexcept>
 #include <string>
@@ -19,9 +21,8 @@ CompiledLagrangian::CompiledLagrangian(int n, ExpressionTape dynamics, Expressio
 }
 
 ModelTerms CompiledLagrangian::terms(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, double t) const {
-    if (q.size() != n_ || qd.size() != n_)
-        throw std::invalid_argument("q has " + std::to_string(q.size()) + " and q̇ " + std::to_string(qd.size()) +
-                                    " entries; the system has " + std::to_string(n_) + " coordinates");
+    requireSize("CompiledLagrangian::terms", "q", q.size(), n_, "the system", "coordinates");
+    requireSize("CompiledLagrangian::terms", "qd", qd.size(), n_, "the system", "coordinates");
     for (int i = 0; i < n_; ++i) {
         input_[i] = q[i];
         input_[n_ + i] = qd[i];

@@ -2,9 +2,12 @@
 
 #include <algorithm>
 
+#include "core/model/argument_checks.hpp"
+
 namespace ll {
 
-void computeMassMatrixDerivatives(const RobotModel&, RobotData& data) {
+void computeMassMatrixDerivatives(const RobotModel& model, RobotData& data) {
+    requireDataFor("computeMassMatrixDerivatives", model, data);
     const int n = data.n;
     for (int k = 0; k < n; ++k)
         for (int i = 0; i < n; ++i) data.crossS[k * n + i] = crossMotion(data.S[k], data.S[i]);
@@ -33,14 +36,9 @@ void computeMassMatrixDerivatives(const RobotModel&, RobotData& data) {
 }
 
 void computeCoriolisMatrix(const RobotModel& model, RobotData& data, const Eigen::VectorXd& qd) {
+    requireSize("computeCoriolisMatrix", "qd", qd.size(), data.n);
     computeMassMatrixDerivatives(model, data);
-    const int n = data.n;
-    for (int i = 0; i < n; ++i)
-        for (int j = 0; j < n; ++j) {
-            double c = 0.0;
-            for (int k = 0; k < n; ++k) c += christoffel(data, i, j, k) * qd[k];
-            data.C(i, j) = c;
-        }
+    christoffelMatrix<double>(data.n, data.dB_dq, qd, data.C);
 }
 
 }  // namespace ll

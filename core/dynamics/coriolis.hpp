@@ -4,6 +4,7 @@
 // (course notes; Siciliano (7.45)). With this choice Ḃ − 2C is skew-symmetric.
 #include <Eigen/Core>
 
+#include "core/dynamics/christoffel.hpp"
 #include "core/model/robot_data.hpp"
 #include "core/model/robot_model.hpp"
 
@@ -21,7 +22,7 @@ void computeCoriolisMatrix(const RobotModel& model, RobotData& data, const Eigen
 // Christoffel symbol of the first kind Γ_ijk = ½(∂b_ij/∂q_k + ∂b_ik/∂q_j − ∂b_jk/∂q_i),
 // from data.dB_dq.
 inline double christoffel(const RobotData& data, int i, int j, int k) {
-    return 0.5 * (data.dB_dq[k](i, j) + data.dB_dq[j](i, k) - data.dB_dq[i](j, k));
+    return christoffelSymbol<double>(data.dB_dq, i, j, k);
 }
 
 }  // namespace ll

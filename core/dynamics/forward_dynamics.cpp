@@ -5,6 +5,7 @@
 #include "core/dynamics/inverse_dynamics.hpp"
 #include "core/dynamics/mass_matrix.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
+#include "core/model/argument_checks.hpp"
 
 namespace ll {
 
@@ -38,6 +39,8 @@ void factorMassMatrix(RobotData& data) {
 const Eigen::VectorXd& forwardDynamics(const RobotModel& model, RobotData& data, const Effects& effects,
                                        const Eigen::VectorXd& q, const Eigen::VectorXd& qd,
                                        const Eigen::VectorXd& Q) {
+    requireSize("forwardDynamics", "qd", qd.size(), model.dof());
+    requireSize("forwardDynamics", "Q", Q.size(), model.dof());
     forwardKinematics(model, data, q);
     computeMassMatrix(model, data);
     data.qdd.setZero();

@@ -1,11 +1,17 @@
 #include "core/dynamics/inverse_dynamics.hpp"
 
 #include "core/kinematics/forward_kinematics.hpp"
+#include "core/model/argument_checks.hpp"
 
 namespace ll {
 
-const Eigen::VectorXd& rnea(const RobotModel&, RobotData& data, const Effects& effects,
+const Eigen::VectorXd& rnea(const RobotModel& model, RobotData& data, const Effects& effects,
                             const Eigen::VectorXd& q, const Eigen::VectorXd& qd, const Eigen::VectorXd& qdd) {
+    requireDataFor("rnea", model, data);
+    requireSize("rnea", "q", q.size(), data.n);
+    requireSize("rnea", "qd", qd.size(), data.n);
+    requireSize("rnea", "qdd", qdd.size(), data.n);
+    requireEffectsFit("rnea", effects, data.n);
     const int n = data.n;
     // Gravity as an upward acceleration of the base (RBDA §5.3).
     Vector6d V = Vector6d::Zero();

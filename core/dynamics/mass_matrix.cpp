@@ -1,10 +1,12 @@
 #include "core/dynamics/mass_matrix.hpp"
 
 #include "core/kinematics/jacobians.hpp"
+#include "core/model/argument_checks.hpp"
 
 namespace ll {
 
-void computeMassMatrix(const RobotModel&, RobotData& data) {
+void computeMassMatrix(const RobotModel& model, RobotData& data) {
+    requireDataFor("computeMassMatrix", model, data);
     const int n = data.n;
     // Composite inertias: in one frame they are plain sums, tip to base.
     for (int i = n - 1; i >= 0; --i) {
@@ -21,6 +23,7 @@ void computeMassMatrix(const RobotModel&, RobotData& data) {
 }
 
 Eigen::MatrixXd massMatrixFromJacobians(const RobotModel& model, const RobotData& data) {
+    requireDataFor("massMatrixFromJacobians", model, data);
     Eigen::MatrixXd B = Eigen::MatrixXd::Zero(data.n, data.n);
     Jacobian J;
     for (int i = 0; i < data.n; ++i) {

@@ -1,9 +1,5 @@
 #include "core/io/scene_file.hpp"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -23,6 +19,7 @@
 #include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 
+#include "core/io/atomic_file.hpp"
 #include "core/symbolic/expression.hpp"
 #include "core/symbolic/lagrangian_fields.hpp"
 #include "core/simulation/scene_validation.hpp"
@@ -910,50 +907,6 @@ void writePretty(std::string& out, const Json& value, std::size_t indent) {
 // ---------------------------------------------------------------------------
 // Files
 
-std::runtime_error saveError(const std::string& path, const std::string& what, int error) {
-    return std::runtime_error(path + ": cannot save: " + what + ": " + std::strerror(error));
-}
-
-// Whole-file replace: temporary sibling, fsync, rename (atomic within a directory).
-void writeDurably(const std::string& path, const std::string& content) {
-    const std::string temporary = path + ".tmp-" + std::to_string(::getpid());
-    const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
-    if (fd < 0) throw saveError(path, "cannot create " + temporary, errno);
-    const auto abandon = [&](const std::string& what) {
-        const int error = errno;
-        ::close(fd);
-        ::unlink(temporary.c_str());
-        return saveError(path, what, error);
-    };
-    // Keep the permissions of the file being replaced.
-    struct stat old {};
-    if (::stat(path.c_str(), &old) == 0) ::fchmod(fd, old.st_mode & 07777);
-    for (std::size_t written = 0; written < content.size();) {
-        const ssize_t n = ::write(fd, content.data() + written, content.size() - written);
-        if (n < 0 && errno == EINTR) continue;
-        if (n < 0) throw abandon("cannot write " + temporary);
-        written += static_cast<std::size_t>(n);
-    }
-    if (::fsync(fd) != 0) throw abandon("cannot flush " + temporary);
-    if (::close(fd) != 0) {
-        const int error = errno;
-        ::unlink(temporary.c_str());
-        throw saveError(path, "cannot close " + temporary, error);
-    }
-    if (::rename(temporary.c_str(), path.c_str()) != 0) {
-        const int error = errno;
-        ::unlink(temporary.c_str());
-        throw saveError(path, "cannot rename " + temporary + " over it", error);
-    }
-    // The rename itself lives in the directory; sync it too (best effort).
-    std::string directory = std::filesystem::path(path).parent_path().string();
-    if (directory.empty()) directory = ".";
-    if (const int dir = ::open(directory.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC); dir >= 0) {
-        ::fsync(dir);
-        ::close(dir);
-    }
-}
-
 std::optional<std::string> readWholeFile(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) return std::nullopt;
@@ -1009,14 +962,7 @@ std::string serializeScene(const Scene& scene) {
 }
 
 void saveScene(const Scene& scene, const std::string& path) {
-    const std::string text = serializeScene(scene);
-    std::error_code ec;
-    if (std::filesystem::exists(path, ec)) {
-        const std::optional<std::string> previous = readWholeFile(path);
-        if (!previous) throw saveError(path, "cannot read the previous content to keep it as " + path + ".bak", errno);
-        writeDurably(path + ".bak", *previous);
-    }
-    writeDurably(path, text);
+    saveFileAtomically(path, serializeScene(scene), Backup::Keep);
 }
 
 }  // namespace ll

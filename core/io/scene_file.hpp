@@ -38,10 +38,10 @@ LoadedScene loadScene(const std::string& path);
 // changes such a value must erase (or update) its entry.
 std::string serializeScene(const Scene& scene);
 
-// Writes atomically: PATH.tmp-<pid> in the same directory, fsync, rename over PATH,
-// so PATH is always either the old or the new file, whole. An existing PATH is first
-// copied to PATH.bak, the recovery copy. Throws std::runtime_error naming the path
-// if anything fails; PATH is then untouched.
+// Writes atomically with saveFileAtomically (core/io/atomic_file.hpp): PATH is always
+// either the old or the new file, whole, and an existing PATH is first copied to
+// PATH.bak, the recovery copy. Throws std::runtime_error naming the path if anything
+// fails; PATH is then untouched.
 void saveScene(const Scene& scene, const std::string& path);
 
 }  // namespace ll

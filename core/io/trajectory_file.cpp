@@ -1,12 +1,11 @@
 #include "core/io/trajectory_file.hpp"
 
 #include <cstdio>
-#include <fstream>
 #include <stdexcept>
 
-#include <unistd.h>
-
 #include <nlohmann/json.hpp>
+
+#include "core/io/atomic_file.hpp"
 
 namespace ll {
 
@@ -20,12 +19,8 @@ std::string indexed(const char* stem, int i) {
     return name;
 }
 
-std::string coordinateName(const Trajectory& tr, int i) {
-    return i < static_cast<int>(tr.names.size()) ? tr.names[i] : indexed("q", i);
-}
-
 std::string velocityName(const Trajectory& tr, int i) {
-    const std::string q = coordinateName(tr, i);
+    const std::string q = tr.coordinateName(i);
     return q == indexed("q", i) ? indexed("qd", i) : q + "_dot";
 }
 
@@ -33,7 +28,7 @@ std::string velocityName(const Trajectory& tr, int i) {
 
 void writeTrajectoryCsv(const Trajectory& tr, std::ostream& out) {
     out << "t";
-    for (int i = 0; i < tr.n; ++i) out << ',' << coordinateName(tr, i);
+    for (int i = 0; i < tr.n; ++i) out << ',' << tr.coordinateName(i);
     for (int i = 0; i < tr.n; ++i) out << ',' << velocityName(tr, i);
     out << ",Ekin,Epot,E,W\n";
     char buffer[32];
@@ -60,7 +55,7 @@ void writeTrajectoryJson(const SimulationResult& result, std::ostream& out) {
     for (int i = 0; i < tr.n; ++i) {
         std::vector<double> column(tr.size());
         for (size_t k = 0; k < tr.size(); ++k) column[k] = tr.q[k][i];
-        j[coordinateName(tr, i)] = column;
+        j[tr.coordinateName(i)] = column;
     }
     for (int i = 0; i < tr.n; ++i) {
         std::vector<double> column(tr.size());
@@ -86,24 +81,15 @@ void saveTrajectory(const SimulationResult& result, const std::string& path) {
     const bool json = path.size() >= 5 && path.compare(path.size() - 5, 5, ".json") == 0;
     const bool csv = path.size() >= 4 && path.compare(path.size() - 4, 4, ".csv") == 0;
     if (!json && !csv) throw std::runtime_error(path + ": output file must end in .csv or .json");
-    const std::string temporary = path + ".tmp-" + std::to_string(::getpid());
-    {
-        std::ofstream out(temporary);
-        if (!out) throw std::runtime_error(path + ": cannot write (" + temporary + ")");
-        if (json)
-            writeTrajectoryJson(result, out);
-        else
-            writeTrajectoryCsv(result.trajectory, out);
-        out.flush();
-        if (!out) {
-            std::remove(temporary.c_str());
-            throw std::runtime_error(path + ": write failed");
-        }
-    }
-    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-        std::remove(temporary.c_str());
-        throw std::runtime_error(path + ": cannot replace the file");
-    }
+    saveFileAtomically(
+        path,
+        [&](std::ostream& out) {
+            if (json)
+                writeTrajectoryJson(result, out);
+            else
+                writeTrajectoryCsv(result.trajectory, out);
+        },
+        Backup::None);
 }
 
 }  // namespace ll

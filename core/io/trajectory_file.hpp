@@ -11,8 +11,8 @@ namespace ll {
 void writeTrajectoryCsv(const Trajectory& trajectory, std::ostream& out);
 void writeTrajectoryJson(const SimulationResult& result, std::ostream& out);
 
-// Chooses the format by extension (.csv or .json) and writes atomically (temporary
-// file, then rename). Throws std::runtime_error naming the path.
+// Chooses the format by extension (.csv or .json) and writes atomically
+// (saveFileAtomically, no .bak). Throws std::runtime_error naming the path.
 void saveTrajectory(const SimulationResult& result, const std::string& path);
 
 }  // namespace ll

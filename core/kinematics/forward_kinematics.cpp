@@ -1,13 +1,14 @@
 #include "core/kinematics/forward_kinematics.hpp"
 
-#include <cassert>
 #include <cmath>
 
 #include "core/kinematics/dh_transform.hpp"
+#include "core/model/argument_checks.hpp"
 
 namespace ll {
 
 Eigen::Isometry3d linkTransform(const RobotModel& model, int i, double q_i) {
+    requireJointIndex("linkTransform", "i", i, model.dof());
     const DhRow& row = model.joints[i].dh;
     const bool revolute = row.type == JointType::Revolute;
     const double theta = row.theta + (revolute ? q_i : 0.0);
@@ -19,7 +20,8 @@ Eigen::Isometry3d linkTransform(const RobotModel& model, int i, double q_i) {
 }
 
 void forwardKinematics(const RobotModel& model, RobotData& data, const Eigen::VectorXd& q) {
-    assert(q.size() == data.n);
+    requireDataFor("forwardKinematics", model, data);
+    requireSize("forwardKinematics", "q", q.size(), data.n);
     const bool standard = model.convention == DhConvention::Standard;
     data.T_0i[0] = model.base;
     Eigen::Isometry3d A;

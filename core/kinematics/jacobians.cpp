@@ -1,8 +1,11 @@
 #include "core/kinematics/jacobians.hpp"
 
+#include "core/model/argument_checks.hpp"
+
 namespace ll {
 
 void pointJacobian(const RobotData& data, int link, const Eigen::Vector3d& p, Jacobian& J) {
+    requireJointIndex("pointJacobian", "link", link, data.n);
     J.setZero(6, data.n);
     for (int j = 0; j <= link; ++j) {
         const bool revolute = !data.S[j].head<3>().isZero();

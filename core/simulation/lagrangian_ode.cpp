@@ -3,6 +3,7 @@
 #include <string>
 #include <utility>
 
+#include "core/model/argument_checks.hpp"
 #include "core/simulation/integrators.hpp"
 
 namespace ll {
@@ -16,6 +17,8 @@ LagrangianOde::LagrangianOde(CompiledLagrangian model)
       llt_(n_) {}
 
 OdeState LagrangianOde::initialState(const Eigen::VectorXd& q, const Eigen::VectorXd& qd) const {
+    requireSize("LagrangianOde::initialState", "q", q.size(), n_, "the system", "coordinates");
+    requireSize("LagrangianOde::initialState", "qd", qd.size(), n_, "the system", "coordinates");
     OdeState x(2 * n_ + 1, 0.0);
     for (int i = 0; i < n_; ++i) {
         x[i] = q[i];

@@ -10,6 +10,8 @@
 #include "core/dynamics/inverse_dynamics.hpp"
 #include "core/dynamics/mass_matrix.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
+#include "core/model/argument_checks.hpp"
+#include "core/model/friction_law.hpp"
 #include "core/simulation/integrators.hpp"
 
 namespace ll {
@@ -43,6 +45,7 @@ RobotOde::RobotOde(const RobotModel& model, const Effects& effects)
       Q_(Eigen::VectorXd::Zero(model.dof())),
       rhs_(Eigen::VectorXd::Zero(model.dof())),
       qdd_(Eigen::VectorXd::Zero(model.dof())) {
+    requireEffectsFit("RobotOde", effects, model.dof());
     // Conservative terms (into g) first, then the generalized forces (into Q).
     if (effects.gravity) terms_.push_back({RhsTerm::Gravity, &RobotOde::addGravity});
     if (!effects.springs.empty()) terms_.push_back({RhsTerm::Springs, &RobotOde::addSprings});
@@ -78,6 +81,8 @@ std::vector<int> RobotOde::stuckJoints() const {
 }
 
 OdeState RobotOde::initialState(const Eigen::VectorXd& q, const Eigen::VectorXd& qd) const {
+    requireSize("RobotOde::initialState", "q", q.size(), data_.n);
+    requireSize("RobotOde::initialState", "qd", qd.size(), data_.n);
     const int n = data_.n;
     OdeState x(2 * n + 1, 0.0);
     for (int i = 0; i < n; ++i) {
@@ -90,11 +95,11 @@ OdeState RobotOde::initialState(const Eigen::VectorXd& q, const Eigen::VectorXd&
 void RobotOde::addGravity(double) { addGravityTorques(model_, data_, *effects_.gravity, data_.g); }
 void RobotOde::addSprings(double) { addSpringTorques(effects_.springs, q_, data_.g); }
 void RobotOde::addViscous(double) {
-    for (const ViscousFriction& f : effects_.viscous) Q_[f.joint] -= f.coefficient * qd_[f.joint];
+    for (const ViscousFriction& f : effects_.viscous) Q_[f.joint] += viscousFrictionForce(f.coefficient, qd_[f.joint]);
 }
 void RobotOde::addTanhCoulomb(double) {
     for (const CoulombFriction& f : effects_.coulomb)
-        if (f.model == CoulombModel::Tanh) Q_[f.joint] -= f.force * std::tanh(qd_[f.joint] / f.smoothing);
+        if (f.model == CoulombModel::Tanh) Q_[f.joint] += tanhCoulombForce(f.force, qd_[f.joint], f.smoothing);
 }
 // Sliding joints only; stuck ones get their holding force in solveAccelerations. The
 // direction is the one of the step's start: a trial stage past q̇_i = 0 does not flip the

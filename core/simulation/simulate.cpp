@@ -8,6 +8,7 @@
 #include "core/dynamics/energy.hpp"
 #include "core/dynamics/mass_matrix.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
+#include "core/model/argument_checks.hpp"
 #include "core/simulation/integrators.hpp"
 #include "core/simulation/lagrangian_ode.hpp"
 #include "core/simulation/robot_ode.hpp"
@@ -95,6 +96,9 @@ void energyBalance(const Trajectory& traj, SimulationStats& stats) {
 SimulationResult simulate(SimulationInput input, const SimulationSettings& settings, const ProgressCallback& progress,
                           const std::atomic<bool>* cancel) {
     const Scene& scene = input.scene;
+    requireSize("simulate", "initial.q", scene.initial.q.size(), scene.dof(), "the scene", "coordinates");
+    requireSize("simulate", "initial.qd", scene.initial.qd.size(), scene.dof(), "the scene", "coordinates");
+    if (!scene.lagrangian) requireEffectsFit("simulate", scene.effects, scene.dof());
     IntegrationSettings integration;
     integration.integrator = settings.integrator;
     integration.absTol = settings.absTol;
@@ -107,10 +111,6 @@ SimulationResult simulate(SimulationInput input, const SimulationSettings& setti
     SimulationResult result;
     result.stats.integrator = settings.integrator;
     const int n = scene.dof();
-    if (scene.initial.q.size() != n || scene.initial.qd.size() != n)
-        throw std::invalid_argument("the initial q has " + std::to_string(scene.initial.q.size()) + " and q̇ " +
-                                    std::to_string(scene.initial.qd.size()) + " entries; the scene has " +
-                                    std::to_string(n) + " coordinates");
     std::optional<LagrangianOde> lagrangian;
     std::optional<RobotOde> robot;
     if (scene.lagrangian) {

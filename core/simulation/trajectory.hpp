@@ -19,6 +19,12 @@ struct Trajectory {
     std::vector<double> work;         // ∫ Qᵀ q̇ dt: work done by non-conservative forces since t0
 
     size_t size() const { return t.size(); }
+    // names[i], or q<i+1> when names does not have it.
+    std::string coordinateName(int i) const {
+        if (i < static_cast<int>(names.size())) return names[i];
+        std::string name = "q";  // (appended: GCC 12 warns falsely about "q" + to_string at -O3)
+        return name.append(std::to_string(i + 1));
+    }
 };
 
 struct SimulationStats {

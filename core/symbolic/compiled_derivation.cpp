@@ -2,6 +2,8 @@
 
 #include "core/symbolic/compiled_expressions.hpp"
 
+#include "core/model/argument_checks.hpp"
+
 namespace ll::symbolic {
 namespace {
 

@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/model/actuation.hpp"
 #include "core/symbolic/angle_sums.hpp"
 #include "core/symbolic/expression_printer.hpp"
 #include "core/symbolic/ginac_lock.hpp"
@@ -144,15 +145,12 @@ nlohmann::json plainJson(const GiNaC::ex& value, const PrintOptions& plain) {
     return print(value, plain);
 }
 
-}  // namespace
-
-std::string actuationText(const Derivation& d) {
-    std::string s;
-    for (int j : d.actuated) s += (s.empty() ? "" : ", ") + d.coordinateNames[j];
-    return d.actuated.empty() ? "no inputs" : "inputs on " + s;
+// Plain text for a LaTeX paragraph: < and _ would print as ¡ or start a subscript.
+std::string latexText(const std::string& text) {
+    std::string out;
+    for (char c : text) out += c == '<' ? "$<$" : c == '_' ? "\\_" : std::string(1, c);
+    return out;
 }
-
-namespace {
 
 void writeText(const Derivation& d, std::ostream& out) {
     const PrintOptions text = printOptionsFor(d, Style::Text);
@@ -162,7 +160,7 @@ void writeText(const Derivation& d, std::ostream& out) {
         out << "\nStep " << step.number << ". " << step.title << "\n    " << step.formulaText << "\n\n";
         for (const DerivationItem& item : step.items) out << renderItem(item, presenter, text, false) << "\n\n";
     }
-    out << "Actuation: " << actuationText(d) << (d.underactuated ? " (underactuated)" : "") << "\n";
+    out << "Actuation: " << actuationText(d.actuated, d.coordinateNames) << "\n";
 }
 
 void writeLatex(const Derivation& d, std::ostream& out) {
@@ -181,7 +179,7 @@ void writeLatex(const Derivation& d, std::ostream& out) {
         out << "\\section*{Step " << step.number << ": " << step.title << "}\n\\[ " << step.formulaLatex << " \\]\n";
         for (const DerivationItem& item : step.items) out << "\\[ " << renderItem(item, presenter, latex, true) << " \\]\n";
     }
-    out << "\\paragraph{Actuation} " << actuationText(d) << (d.underactuated ? " (underactuated)." : ".") << "\n"
+    out << "\\paragraph{Actuation} " << latexText(actuationText(d.actuated, d.coordinateNames)) << ".\n"
         << "\\end{document}\n";
 }
 

@@ -20,7 +20,4 @@ enum class DocumentFormat { Text, Latex, Json };
 // modeName ("parameters", "numeric", "symbolic") is recorded in the JSON.
 std::string derivationDocument(const Derivation& derivation, DocumentFormat format, const std::string& modeName);
 
-// "inputs on q1, q3" or "no inputs".
-std::string actuationText(const Derivation& derivation);
-
 }  // namespace ll::symbolic

@@ -2,11 +2,16 @@
 
 #include <stdexcept>
 
+#include "core/model/argument_checks.hpp"
+
 namespace ll::symbolic {
 
 DerivationEvaluator::DerivationEvaluator(const Derivation& derivation) : d_(derivation) {}
 
 GiNaC::lst DerivationEvaluator::state(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, double t) const {
+    const auto n = static_cast<Eigen::Index>(d_.q.size());
+    requireSize("DerivationEvaluator::value", "q", q.size(), n, "the system", "coordinates");
+    requireSize("DerivationEvaluator::value", "qd", qd.size(), n, "the system", "coordinates");
     GiNaC::lst l;
     for (size_t i = 0; i < d_.q.size(); ++i) {
         l.append(d_.q[i] == q[i]);

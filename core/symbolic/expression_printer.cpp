@@ -681,6 +681,11 @@ std::string rtrim(std::string s) {
 
 }  // namespace
 
+std::string textCoordinateName(const std::string& name, int dots) {
+    const std::string text = textName(name);
+    return dots == 0 ? text : withMark(text, dots == 1 ? "\u0307" : "\u0308");
+}
+
 PrintOptions printOptionsFor(const Derivation& derivation, Style style) {
     PrintOptions o;
     o.style = style;

@@ -39,6 +39,10 @@ struct PrintOptions {
 // The options for printing a derivation's results in `style`.
 PrintOptions printOptionsFor(const Derivation& derivation, Style style);
 
+// A coordinate's name as Style::Text prints it, with `dots` dots over it (0: the
+// coordinate, 1: its velocity, 2: its acceleration): q1, q̇1; theta1, θ̇1; x, ẍ.
+std::string textCoordinateName(const std::string& name, int dots = 0);
+
 // A scalar, or a GiNaC::matrix as printMatrix does it.
 std::string print(const GiNaC::ex& e, const PrintOptions& options = {});
 

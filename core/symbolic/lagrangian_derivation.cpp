@@ -10,8 +10,10 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "core/dynamics/christoffel.hpp"
 #include "core/symbolic/expression.hpp"
 #include "core/symbolic/lagrangian_fields.hpp"
+#include "core/model/actuation.hpp"
 #include "core/model/diagnostics.hpp"
 #include "core/symbolic/exact_numbers.hpp"
 #include "core/symbolic/expression_printer.hpp"
@@ -335,13 +337,9 @@ private:
         std::vector<matrix> dB(n_);
         for (int k = 0; k < n_; ++k) dB[k] = GiNaC::ex_to<matrix>(d_.B.diff(s_.q[k]));
         d_.C = matrix(n_, n_);
+        christoffelMatrix<ex>(n_, dB, s_.qd, d_.C);
         for (int i = 0; i < n_; ++i)
-            for (int j = 0; j < n_; ++j) {
-                ex c = 0;
-                for (int k = 0; k < n_; ++k)
-                    c += GiNaC::numeric(1, 2) * (dB[k](i, j) + dB[j](i, k) - dB[i](j, k)) * s_.qd[k];
-                d_.C(i, j) = simplified(c);
-            }
+            for (int j = 0; j < n_; ++j) d_.C(i, j) = simplified(d_.C(i, j));
         generalizedForces();
 
         items.push_back({"g", "g(q)", d_.g});
@@ -353,12 +351,7 @@ private:
             const std::string k = std::to_string(i + 1);
             items.push_back({"equation_" + k, R"(\text{equation } )" + k, lhs == d_.Q(i, 0)});
         }
-        std::string actuation = "inputs on";
-        for (int j : d_.actuated) actuation += " " + spec_.coordinates[j];
-        if (d_.actuated.empty()) actuation = "no inputs";
-        actuation += d_.underactuated ? " (underactuated: m = " + std::to_string(d_.actuated.size()) +
-                                            " < n = " + std::to_string(n_) + ")"
-                                      : " (fully actuated)";
+        const std::string actuation = actuationText(d_.actuated, spec_.coordinates);
         addStep(8, "Equations of motion (Lagrange-d'Alembert)",
                 "L = E_kin - E_pot;  d/dt dL/dqd_i - dL/dq_i = Q_i;  written as B qdd + C qd + g = Q with "
                 "g = dE_pot/dq, c_ij = sum_k 1/2 (db_ij/dq_k + db_ik/dq_j - db_jk/dq_i) qd_k, Q: non-conservative "
@@ -379,11 +372,7 @@ private:
             if (GiNaC::is_a<GiNaC::symbol>(theirs) && table_.contains(GiNaC::ex_to<GiNaC::symbol>(theirs).get_name()))
                 ours[theirs] = table_.symbol(GiNaC::ex_to<GiNaC::symbol>(theirs).get_name());
         }
-        const auto own = [&](const ex& e) { return e.subs(ours); };
-        for (const SymbolicTerm& torque : effects.torques) d_.Q(torque.joint, 0) += own(torque.value);
-        for (const SymbolicTerm& f : effects.viscous) d_.Q(f.joint, 0) -= own(f.value) * s_.qd[f.joint];
-        for (const SymbolicTerm& f : effects.coulomb)
-            d_.Q(f.joint, 0) -= own(f.value) * GiNaC::tanh(s_.qd[f.joint] / own(f.extra));
+        d_.Q = d_.Q.add(GiNaC::ex_to<matrix>(effectForces(effects, s_.qd).subs(ours)));
 
         // Inputs: declared torques, and forces that do not vanish at rest (friction does).
         GiNaC::exmap rest;

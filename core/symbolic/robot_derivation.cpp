@@ -5,8 +5,12 @@
 #include <functional>
 #include <string>
 
+#include "core/dynamics/christoffel.hpp"
 #include "core/kinematics/dh_transform.hpp"
 #include "core/symbolic/ginac_lock.hpp"
+#include "core/model/actuation.hpp"
+#include "core/model/diagnostics.hpp"
+#include "core/symbolic/angle_sums.hpp"
 #include "core/symbolic/trig_context.hpp"
 
 namespace ll::symbolic {
@@ -76,6 +80,24 @@ matrix inverseTransform(const matrix& T) {  // [Rᵀ, −Rᵀ t; 0, 1]
     return inv;
 }
 
+// tc.reduce with a checkpoint first: the derivation can be cancelled between entries.
+// (Cutting an entry into pieces to see a cancel sooner was measured: pieces small
+// enough to matter made the Panda's derivation 2.5× slower. The named-quantity
+// derivation keeps every entry small instead.)
+ex reduceChecked(const TrigContext& tc, const ex& e, const std::function<void(const std::string&)>& checkpoint,
+                  const std::string& what) {
+    checkpoint(what);
+    return tc.reduce(e);
+}
+
+matrix reduceChecked(const TrigContext& tc, const matrix& m, const std::function<void(const std::string&)>& checkpoint,
+                      const std::string& what) {
+    matrix r(m.rows(), m.cols());
+    for (unsigned i = 0; i < m.rows(); ++i)
+        for (unsigned j = 0; j < m.cols(); ++j) r(i, j) = reduceChecked(tc, m(i, j), checkpoint, what);
+    return r;
+}
+
 // B(q) link by link in each link's own frame: there the Jacobian columns of link i
 // depend only on the joints between, so the polynomials stay small (B never
 // depends on q1). b_jk = Σ_i m_i J_v,ij·J_v,ik + J_ω,ijᵀ I_i J_ω,ik (Siciliano (7.16)).
@@ -90,8 +112,7 @@ matrix massMatrixInLinkFrames(const SymbolicRobot& robot, const std::vector<matr
         std::vector<matrix> rel(i + 2, matrix(4, 4));
         rel[i + 1] = GiNaC::ex_to<matrix>(GiNaC::unit_matrix(4));
         for (int f = i; f >= 0; --f) {
-            checkpoint("link " + idx(i) + " in frame " + std::to_string(f));
-            rel[f] = tc.reduce(A[f].mul(rel[f + 1]));
+            rel[f] = reduceChecked(tc, A[f].mul(rel[f + 1]), checkpoint, "link " + idx(i) + " in frame " + std::to_string(f));
         }
         std::vector<Vec3> Jv(i + 1), Jw(i + 1);
         const Vec3 com = column(link.com, 0);
@@ -118,11 +139,29 @@ matrix massMatrixInLinkFrames(const SymbolicRobot& robot, const std::vector<matr
     }
     for (int j = 0; j < n; ++j)
         for (int k = j; k < n; ++k) {
-            checkpoint("b_" + idx(j) + idx(k));
-            B(j, k) = tc.reduce(B(j, k));
+            B(j, k) = reduceChecked(tc, B(j, k), checkpoint, "b_" + idx(j) + idx(k));
             B(k, j) = B(j, k);
         }
     return B;
+}
+
+// A parameter kept as a symbol and named like the shorthand the derivation writes for
+// its own trigonometric symbols (c1 = cos q1, s12 = sin(q1 + q2), c9_10) could not be
+// told apart from it in text and LaTeX, and its plain expression would read back as
+// the cosine: different mathematics. Such a scene is refused, naming the clash.
+// (q1, qd1, qdd1 and t are refused as parameter names in every scene.)
+void refuseShorthandParameterNames(const Scene& scene) {
+    const int n = scene.robot.dof();
+    for (const auto& [name, value] : scene.parameters) {
+        const std::optional<TrigName> trig = parseTrigName(name, n);
+        if (!trig) continue;
+        std::string angle;
+        for (int k : trig->indices) angle += (angle.empty() ? "q" : " + q") + std::to_string(k);
+        angle = trig->indices.size() > 1 ? "(" + angle + ")" : " " + angle;
+        throw InputError("parameters." + name, "'" + name + "' is the derivation's shorthand for " +
+                                                   (trig->kind == 'c' ? "cos" : "sin") + angle +
+                                                   "; rename the parameter");
+    }
 }
 
 }  // namespace
@@ -138,6 +177,7 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
     const int n = scene.robot.dof();
     std::vector<bool> revolute(n);
     for (int i = 0; i < n; ++i) revolute[i] = scene.robot.joints[i].dh.type == JointType::Revolute;
+    if (options.mode == ParameterMode::Parametric) refuseShorthandParameterNames(scene);
     const TrigContext tc(revolute);
     const SymbolicRobot robot = symbolicRobot(scene, options.mode, tc.t());
     const bool standard = robot.convention == DhConvention::Standard;
@@ -188,7 +228,7 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
     for (int i = 0; i < n; ++i) {
         checkpoint("T_" + idx(i) + "^0");
         A[i] = linkTransform(robot.convention, robot.joints[i], tc, i);
-        T[i + 1] = tc.reduce(T[i].mul(A[i]));
+        T[i + 1] = reduceChecked(tc, T[i].mul(A[i]), checkpoint, "T_" + idx(i) + "^0");
         step1.push_back({"A_" + idx(i), "A_{" + idx(i) + "}", A[i]});
     }
     for (int i = 0; i < n; ++i) step1.push_back({"T_" + idx(i) + "^0", "T_{" + idx(i) + "}^{0}", T[i + 1]});
@@ -257,10 +297,10 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
     if (shown(5)) {
         std::vector<DerivationItem> items;
         for (int i = 0; i < n; ++i) {
-            checkpoint("I_l" + idx(i) + "^0");
             const matrix R = rotation(T[i + 1]);
             items.push_back({"I_l" + idx(i) + "^0", "I_{l" + idx(i) + "}^{0}",
-                             tc.reduce(R.mul(robot.joints[i].inertia).mul(R.transpose()))});
+                             reduceChecked(tc, R.mul(robot.joints[i].inertia).mul(R.transpose()), checkpoint,
+                                            "I_l" + idx(i) + "^0")});
         }
         addStep(5, "Link inertia tensors in the base frame", "I_li^0 = R_i^0 I_li (R_i^0)^T",
                 R"(I_{li}^0 = R_i^0\, I_{li}\, (R_i^0)^T)", items);
@@ -273,7 +313,7 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
     for (const SymbolicTerm& spring : robot.springs)
         Epot += GiNaC::numeric(1, 2) * spring.value * GiNaC::pow(tc.q(spring.joint) - spring.extra, 2);
     // A spring on a revolute joint is written in q_i itself, not in c_i, s_i.
-    Epot = tc.reduce(Epot);
+    Epot = reduceChecked(tc, Epot, checkpoint, "E_pot");
     d.Epot = Epot;
     addStep(6, "Potential energy",
             std::string(robot.hasGravity ? "E_pot = -sum_i m_i g0^T p_ci^0" : "E_pot = 0 (no gravity declared)") +
@@ -287,7 +327,7 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
     ex Ekin = 0;
     for (int j = 0; j < n; ++j)
         for (int k = 0; k < n; ++k) Ekin += GiNaC::numeric(1, 2) * d.B(j, k) * tc.qd(j) * tc.qd(k);
-    d.Ekin = tc.reduce(Ekin);
+    d.Ekin = reduceChecked(tc, Ekin, checkpoint, "E_kin");
     addStep(7, "Kinetic energy and the mass matrix",
             "E_kin = 1/2 sum_i (m_i v_ci^T v_ci + omega_i^T I_li^0 omega_i) = 1/2 qd^T B(q) qd",
             R"(E_{\mathrm{kin}} = \tfrac{1}{2}\sum_i \left(m_i\, v_{ci}^T v_{ci} + \omega_i^T I_{li}^0\, \omega_i\right) = \tfrac{1}{2}\,\dot{q}^T B(q)\,\dot{q})",
@@ -297,26 +337,22 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
     d.g = matrix(n, 1);
     for (int i = 0; i < n; ++i) {
         checkpoint("g_" + idx(i));
-        d.g(i, 0) = tc.reduce(tc.diffq(Epot, i));
+        d.g(i, 0) = reduceChecked(tc, tc.diffq(Epot, i), checkpoint, "g_" + idx(i));
     }
     std::vector<matrix> dB(n);
     for (int k = 0; k < n; ++k) {
-        checkpoint("dB/dq_" + idx(k));
-        dB[k] = tc.diffq(d.B, k);
+        dB[k] = matrix(n, n);
+        for (int i = 0; i < n; ++i)
+            for (int j = i; j < n; ++j) {
+                checkpoint("db_" + idx(i) + idx(j) + "/dq_" + idx(k));
+                dB[k](i, j) = dB[k](j, i) = tc.diffq(d.B(i, j), k);
+            }
     }
     d.C = matrix(n, n);
+    christoffelMatrix<ex>(n, dB, tc.qd(), d.C);
     for (int i = 0; i < n; ++i)
-        for (int j = 0; j < n; ++j) {
-            checkpoint("c_" + idx(i) + idx(j));
-            ex c = 0;
-            for (int k = 0; k < n; ++k)
-                c += GiNaC::numeric(1, 2) * (dB[k](i, j) + dB[j](i, k) - dB[i](j, k)) * tc.qd(k);
-            d.C(i, j) = tc.reduce(c);
-        }
-    d.Q = matrix(n, 1);
-    for (const SymbolicTerm& torque : robot.torques) d.Q(torque.joint, 0) += torque.value;
-    for (const SymbolicTerm& f : robot.viscous) d.Q(f.joint, 0) -= f.value * tc.qd(f.joint);
-    for (const SymbolicTerm& f : robot.coulomb) d.Q(f.joint, 0) -= f.value * GiNaC::tanh(tc.qd(f.joint) / f.extra);
+        for (int j = 0; j < n; ++j) d.C(i, j) = reduceChecked(tc, d.C(i, j), checkpoint, "c_" + idx(i) + idx(j));
+    d.Q = effectForces(robot, tc.qd());
     for (const SymbolicTerm& torque : robot.torques) d.actuated.push_back(torque.joint);
     std::sort(d.actuated.begin(), d.actuated.end());
     d.actuated.erase(std::unique(d.actuated.begin(), d.actuated.end()), d.actuated.end());
@@ -328,11 +364,7 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
         for (int j = 0; j < n; ++j) lhs += d.B(i, j) * d.qdd[j] + d.C(i, j) * tc.qd(j);
         step8.push_back({"equation_" + idx(i), R"(\text{equation } )" + idx(i), lhs == d.Q(i, 0)});
     }
-    std::string actuation = "inputs on joints";
-    for (int j : d.actuated) actuation += " " + idx(j);
-    if (d.actuated.empty()) actuation = "no inputs";
-    actuation += d.underactuated ? " (underactuated: m = " + std::to_string(d.actuated.size()) + " < n = " + std::to_string(n) + ")"
-                                 : " (fully actuated)";
+    const std::string actuation = actuationText(d.actuated, d.coordinateNames);
     addStep(8, "Equations of motion (Lagrange-d'Alembert)",
             "g = dE_pot/dq;  c_ij = sum_k 1/2 (db_ij/dq_k + db_ik/dq_j - db_jk/dq_i) qd_k;  "
             "Q: non-conservative forces only;  B qdd + C qd + g = Q;  qdd = B^-1 (Q - C qd - g);  " + actuation,

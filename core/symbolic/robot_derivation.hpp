@@ -28,6 +28,9 @@ struct DerivationOptions {
 
 // Takes the GiNaC lock for the derivation; the caller holds it too while it keeps or
 // prints the returned Derivation (GiNaC objects: ginac_lock.hpp).
+// Throws InputError naming "parameters.<name>" when, with parameters kept as symbols
+// (ParameterMode::Parametric), a parameter is named like the derivation's trigonometric
+// shorthand for this robot (c1, s2, c12, s9_10: cos q1, sin q2, ...).
 Derivation deriveRobot(const Scene& scene, const DerivationOptions& options = {});
 
 }  // namespace ll::symbolic

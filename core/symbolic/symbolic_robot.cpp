@@ -4,6 +4,7 @@
 
 #include "core/symbolic/expression.hpp"
 #include "core/model/diagnostics.hpp"
+#include "core/model/friction_law.hpp"
 #include "core/symbolic/exact_numbers.hpp"
 
 namespace ll::symbolic {
@@ -150,6 +151,14 @@ SymbolicRobot symbolicRobot(const Scene& scene, ParameterMode mode, const GiNaC:
         robot.torques.push_back({torque.joint, tau, 0});
     }
     return robot;
+}
+
+GiNaC::matrix effectForces(const SymbolicRobot& robot, const std::vector<GiNaC::symbol>& qd) {
+    GiNaC::matrix Q(static_cast<unsigned>(qd.size()), 1);
+    for (const SymbolicTerm& torque : robot.torques) Q(torque.joint, 0) += torque.value;
+    for (const SymbolicTerm& f : robot.viscous) Q(f.joint, 0) += viscousFrictionForce<GiNaC::ex>(f.value, qd[f.joint]);
+    for (const SymbolicTerm& f : robot.coulomb) Q(f.joint, 0) += tanhCoulombForce<GiNaC::ex>(f.value, qd[f.joint], f.extra);
+    return Q;
 }
 
 }  // namespace ll::symbolic

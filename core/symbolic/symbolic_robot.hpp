@@ -49,4 +49,8 @@ struct SymbolicRobot {
 // do not parse (already checked when the scene was loaded).
 SymbolicRobot symbolicRobot(const Scene& scene, ParameterMode mode, const GiNaC::symbol& t);
 
+// The generalized forces of the declared torques and friction (n×1, n = qd.size()):
+// Q_i = τ_i(t) − b_i q̇_i − F_c,i tanh(q̇_i / v_s,i) by joint (core/model/friction_law.hpp).
+GiNaC::matrix effectForces(const SymbolicRobot& robot, const std::vector<GiNaC::symbol>& qd);
+
 }  // namespace ll::symbolic

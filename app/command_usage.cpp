@@ -1,0 +1,89 @@
+#include "app/command_usage.hpp"
+
+#include <array>
+
+namespace ll::cli {
+namespace {
+
+struct CommandText {
+    const char* name;
+    const char* synopsis;  // after "lagrangelab <name> "; '\n' between lines
+    const char* summary;
+};
+
+constexpr std::array<CommandText, 7> commands{{
+    {"eval", "SCENE --q v1,... --qd v1,... [--t T] [--tau v1,...]",
+     "B, C, g, Q, q̈, E_kin, E_pot at one state, as JSON"},
+    {"simulate",
+     "SCENE [--duration T] [--integrator NAME] [--abs-tol X] [--rel-tol X] [--dt X]\n"
+     "[--output-rate HZ] [--out FILE.csv|FILE.json]",
+     "integrate the equations of motion; trajectory to --out or CSV on stdout, summary on stderr"},
+    {"derive", "SCENE [--format text|latex|json] [--steps 0-8] [--symbolic] [--numeric] [--timings]",
+     "the model step by step as the course notes derive it (symbolic, GiNaC)"},
+    {"integrators", "", "the integrators with order, kind and when to use each"},
+    {"accuracy",
+     "SCENE [--integrators a,b,...] [--tolerances 1e-3..1e-12] [--steps dt1,dt2,...] [--duration T]\n"
+     "[--repeats N] [--reference-tol X] [--out plot.svg|png] [--csv FILE]",
+     "work-precision: error, energy drift, CPU time, evaluations and steps per integrator and setting"},
+    {"bench", "[SCENE...] [--batches N] [--rhs | --derive]",
+     "median times of B, C, g, forward/inverse dynamics and one simulated second, beside KDL\n"
+     "(--rhs: one right-hand side of the PUMA 560 with no effects, gravity only, all effects;\n"
+     " --derive: the whole symbolic derivation per parameter mode)"},
+    {"help", "[COMMAND]", "this overview, or the usage of COMMAND (also: lagrangelab COMMAND --help)"},
+}};
+
+const CommandText* find(const std::string& name) {
+    for (const CommandText& c : commands)
+        if (name == c.name) return &c;
+    return nullptr;
+}
+
+// "name synopsis", its continuation lines aligned under the first argument when the
+// first line starts `column` characters in; column < 0: on one line.
+std::string synopsis(const CommandText& c, int column) {
+    const std::string name = c.name;
+    std::string s = name + (*c.synopsis ? " " : "");
+    for (const char* p = c.synopsis; *p; ++p)
+        s += *p != '\n' ? std::string(1, *p) : column < 0 ? " " : "\n" + std::string(column + name.size() + 1, ' ');
+    return s;
+}
+
+// Every line of text, indented by `indent`.
+std::string indented(const std::string& text, const std::string& indent) {
+    std::string out = indent;
+    for (char ch : text) {
+        out += ch;
+        if (ch == '\n') out += indent;
+    }
+    return out + "\n";
+}
+
+}  // namespace
+
+const char* projectVersion() { return LL_VERSION; }
+
+std::string overviewUsage() {
+    std::string s = "usage: lagrangelab <command> [arguments]\n       lagrangelab --version\n\ncommands:\n";
+    for (const CommandText& c : commands) s += "  " + synopsis(c, 2) + "\n" + indented(c.summary, "      ");
+    return s + "\nexit codes: 0 success, 2 bad input, 3 simulation stopped early\n";
+}
+
+std::string commandUsage(const std::string& command) {
+    const CommandText* c = find(command);
+    if (!c) return "";
+    const std::string usage = "usage: lagrangelab ";
+    return usage + synopsis(*c, static_cast<int>(usage.size())) + "\n\n" + indented(c->summary, "  ");
+}
+
+std::string usageLine(const std::string& command) {
+    const CommandText* c = find(command);
+    return c ? "usage: lagrangelab " + synopsis(*c, -1) : "";
+}
+
+std::string commandNames() {
+    std::string names;
+    for (const CommandText& c : commands) names += (names.empty() ? "" : ", ") + std::string(c.name);
+    return names;
+}
+
+}  // namespace ll::cli
