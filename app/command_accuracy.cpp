@@ -61,16 +61,17 @@ std::vector<std::string> parseNames(const std::string& text) {
 void writeCsv(const WorkPrecisionResult& r, std::ostream& out) {
     out.precision(10);
     out << "integrator,adaptive,setting,completed,final_error,at_reference_floor,max_rel_energy_drift,cpu_seconds,"
-           "rhs_evaluations,steps,rejected_steps,message\n";
+           "rhs_evaluations,steps,rejected_steps,step_seconds,last_step,message\n";
     out << r.reference.integrator << ",1," << r.reference.tolerance << ",1," << r.reference.estimatedError << ",1,"
-        << r.reference.maxRelEnergyDrift << "," << r.reference.cpuSeconds << ",,,,\"reference (error: its own estimate)\"\n";
+        << r.reference.maxRelEnergyDrift << "," << r.reference.cpuSeconds << ",,,,,,\"reference (error: its own estimate)\"\n";
     for (const WorkPrecisionPoint& p : r.points) {
         std::string message = p.message;
         for (char& c : message)
             if (c == '"') c = '\'';
         out << p.integrator << "," << p.adaptive << "," << p.setting << "," << p.completed << ","
             << (p.completed ? p.finalError : NAN) << "," << p.atReferenceFloor << "," << p.maxRelEnergyDrift << ","
-            << p.cpuSeconds << "," << p.rhsEvaluations << "," << p.steps << "," << p.rejectedSteps << ",\"" << message
+            << p.cpuSeconds << "," << p.rhsEvaluations << "," << p.steps << "," << p.rejectedSteps << "," << p.step << ","
+            << p.lastStep << ",\"" << message
             << "\"\n";
     }
 }
@@ -81,20 +82,25 @@ void printTable(const WorkPrecisionResult& r) {
     std::printf("reference: %s at tol %.1e, its own error estimate %.2e, energy drift %.2e, CPU %.1f ms\n\n",
                 r.reference.integrator.c_str(), r.reference.tolerance, r.reference.estimatedError,
                 r.reference.maxRelEnergyDrift, 1e3 * r.reference.cpuSeconds);
-    std::printf("%-17s %-13s %10s %10s %10s %10s %9s %8s  %s\n", "integrator", "setting", "error", "drift", "CPU [ms]",
-                "rhs evals", "steps", "rejected", "note");
+    std::printf("%-17s %-13s %10s %10s %10s %10s %9s %8s %10s  %s\n", "integrator", "setting", "error", "drift",
+                "CPU [ms]", "rhs evals", "steps", "rejected", "dt [s]", "note");
     for (const WorkPrecisionPoint& p : r.points) {
-        char setting[32];
+        char setting[32], step[32], last[48] = "";
         std::snprintf(setting, sizeof setting, "%s %.0e", p.adaptive ? "tol" : "dt ", p.setting);
+        // the step taken: a fixed-step method's dt, an adaptive one's mean step (~)
+        std::snprintf(step, sizeof step, "%s%.2e", p.adaptive ? "~" : "", p.step);
+        if (p.lastStep > 0) std::snprintf(last, sizeof last, "last step %.3g s; ", p.lastStep);
+        std::string note = last;
         if (!p.completed) {
-            std::string why = p.message.substr(0, p.message.find(':'));
-            std::printf("%-17s %-13s %10s %10s %10.2f %10ld %9ld %8ld  stopped: %s\n", p.integrator.c_str(), setting, "-",
-                        "-", 1e3 * p.cpuSeconds, p.rhsEvaluations, p.steps, p.rejectedSteps, why.c_str());
+            note += "stopped: " + p.message.substr(0, p.message.find(':'));
+            std::printf("%-17s %-13s %10s %10s %10.2f %10ld %9ld %8ld %10s  %s\n", p.integrator.c_str(), setting, "-",
+                        "-", 1e3 * p.cpuSeconds, p.rhsEvaluations, p.steps, p.rejectedSteps, step, note.c_str());
             continue;
         }
-        std::printf("%-17s %-13s %10.2e %10.2e %10.2f %10ld %9ld %8ld  %s\n", p.integrator.c_str(), setting, p.finalError,
-                    p.maxRelEnergyDrift, 1e3 * p.cpuSeconds, p.rhsEvaluations, p.steps, p.rejectedSteps,
-                    p.atReferenceFloor ? "at the reference's accuracy" : "");
+        if (p.atReferenceFloor) note += "at the reference's accuracy";
+        std::printf("%-17s %-13s %10.2e %10.2e %10.2f %10ld %9ld %8ld %10s  %s\n", p.integrator.c_str(), setting,
+                    p.finalError, p.maxRelEnergyDrift, 1e3 * p.cpuSeconds, p.rhsEvaluations, p.steps, p.rejectedSteps,
+                    step, note.c_str());
     }
     std::printf("\nwhole analysis: %.2f s CPU\n", r.cpuSeconds);
 }

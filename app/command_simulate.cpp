@@ -42,12 +42,29 @@ private:
 
 void printSummary(const Scene& scene, const SimulationSettings& settings, const SimulationResult& r) {
     const SimulationStats& s = r.stats;
-    std::fprintf(stderr, "%s: %.6g s simulated with %s (abs_tol %.3g, rel_tol %.3g, dt %.3g)\n", scene.name.c_str(),
-                 s.simulatedSeconds, s.integrator.c_str(), settings.absTol, settings.relTol, settings.dt);
+    if (s.dt > 0)
+        std::fprintf(stderr, "%s: %.6g s simulated with %s (fixed step dt %.6g s)\n", scene.name.c_str(),
+                     s.simulatedSeconds, s.integrator.c_str(), s.dt);
+    else
+        std::fprintf(stderr, "%s: %.6g s simulated with %s (abs_tol %.3g, rel_tol %.3g, first step %.3g s)\n",
+                     scene.name.c_str(), s.simulatedSeconds, s.integrator.c_str(), settings.absTol, settings.relTol,
+                     settings.dt);
     const double perSecond = s.simulatedSeconds > 0 ? s.cpuSeconds / s.simulatedSeconds : 0;
     std::fprintf(stderr, "cost: %ld steps (%ld rejected), %ld right-hand-side evaluations, CPU %.3f ms (%.3f ms per simulated second, %.0fx real time)\n",
                  s.steps, s.rejectedSteps, s.rhsEvaluations, 1e3 * s.cpuSeconds, 1e3 * perSecond,
                  perSecond > 0 ? 1.0 / perSecond : 0.0);
+    if (s.dt > 0) {
+        std::fprintf(stderr, "steps: at t_k = k dt");
+        if (s.lastStep > 0)
+            std::fprintf(stderr, ", then a last shorter step of %.6g s to reach %.6g s (the duration is not a multiple of dt)",
+                         s.lastStep, settings.duration);
+        if (s.eventSteps > 0) std::fprintf(stderr, "; %ld of them ended early at located stick-slip events", s.eventSteps);
+        std::fprintf(stderr, "\n");
+        if (s.interpolatedSamples > 0)
+            std::fprintf(stderr, "output: %ld of %zu samples lie between step ends: q, qd and W by cubic Hermite "
+                                 "interpolation from q, qd, qdd at the step ends, energies at the interpolated state\n",
+                         s.interpolatedSamples, r.trajectory.size());
+    }
     std::fprintf(stderr, "energy: max |E - E0 - W| = %.3g J, max |dE|/E = %.3g (W: work of friction and torques)\n",
                  s.maxEnergyError, s.maxRelEnergyError);
     if (scene.lagrangian) return;  // its inputs include `forces`: `eval` and `derive` report them

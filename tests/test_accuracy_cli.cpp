@@ -59,6 +59,9 @@ private slots:
         const QList<QByteArray> row = lines[2].split(',');  // rk4 dt 1e-2
         QCOMPARE(row[0], QByteArray("rk4"));
         QVERIFY(row[4].toDouble() > 0 && row[4].toDouble() < 1e-3);
+        QCOMPARE(row[9].toLong(), 200L);         // steps: 2 s / 1e-2
+        QCOMPARE(row[11].toDouble(), 1e-2);      // step_seconds: the dt taken, beside the cost
+        QVERIFY(r.out.contains("dt [s]"));
         const QImage image(png);
         QVERIFY(!image.isNull());
         QVERIFY(image.width() >= 1000 && image.height() >= 500);
@@ -111,6 +114,13 @@ private slots:
         QVERIFY(r.err.contains("right-hand-side evaluations"));
         QVERIFY(r.err.contains("per simulated second"));
         QVERIFY(r.err.contains("max |dE|/E"));
+        // a fixed step that does not divide the duration: the summary says it
+        const Run f = run({"simulate", example("simple_pendulum.json"), "--duration", "1", "--integrator", "rk4", "--dt",
+                           "0.003", "--out", QTemporaryDir().filePath("x.csv")});
+        QCOMPARE(f.exitCode, 0);
+        QVERIFY2(f.err.contains("cost: 334 steps"), f.err.constData());
+        QVERIFY2(f.err.contains("last shorter step of 0.001 s"), f.err.constData());
+        QVERIFY2(f.err.contains("66 of 101 samples lie between step ends"), f.err.constData());
     }
 
     void stiffSceneStopsWithRecommendation() {

@@ -71,6 +71,12 @@ void writeTrajectoryJson(const SimulationResult& result, std::ostream& out) {
                   {"rejected_steps", s.rejectedSteps},  {"rhs_evaluations", s.rhsEvaluations},
                   {"cpu_seconds", s.cpuSeconds},        {"simulated_seconds", s.simulatedSeconds},
                   {"max_energy_error", s.maxEnergyError}, {"max_rel_energy_error", s.maxRelEnergyError}};
+    if (s.dt > 0)  // a fixed-step method: its grid, and which samples lie between step ends
+        j["stats"]["fixed_step"] = {{"dt", s.dt},
+                                    {"last_step", s.lastStep},
+                                    {"event_steps", s.eventSteps},
+                                    {"interpolated_samples", s.interpolatedSamples},
+                                    {"interpolation", "cubic Hermite from q, qd, qdd at the step ends; energies at the interpolated state"}};
     j["status"] = result.status == SimulationStatus::Completed ? "completed"
                   : result.status == SimulationStatus::Cancelled ? "cancelled" : "failed";
     if (!result.message.empty()) j["message"] = result.message;

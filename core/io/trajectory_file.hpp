@@ -1,6 +1,7 @@
 #pragma once
 // Writing a simulated trajectory: CSV (one row per sample: t, q1..qn, qd1..qdn,
-// Ekin, Epot, E, W) or JSON (the same columns as arrays, plus the run's statistics).
+// Ekin, Epot, E, W) or JSON (the same columns as arrays, plus the run's statistics;
+// for a fixed-step method also its step grid and how many samples were interpolated).
 #include <ostream>
 #include <string>
 

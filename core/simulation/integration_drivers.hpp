@@ -268,32 +268,90 @@ void runControlled(ControlledStepper stepper, System rhs, OdeSystem& system, Sta
     }
 }
 
+// The step grid of a fixed-step method from t0 to t1: t_k = t0 + k·dt for k < steps,
+// computed from k (not accumulated), and t_steps = t1. When (t1 − t0)/dt is an integer
+// (to 1e-9 relative) every step is dt; otherwise the last one is shorter, lastStep.
+struct FixedStepGrid {
+    FixedStepGrid(double t0, double t1, double dt) : t0(t0), t1(t1), dt(dt) {
+        const double ratio = (t1 - t0) / dt, whole = std::round(ratio);
+        if (whole >= 1 && std::abs(ratio - whole) <= 1e-9 * ratio) {
+            steps = static_cast<long>(whole);
+        } else {
+            steps = static_cast<long>(std::floor(ratio)) + 1;
+            lastStep = t1 - (t0 + static_cast<double>(steps - 1) * dt);
+        }
+    }
+    double time(long k) const { return k >= steps ? t1 : t0 + static_cast<double>(k) * dt; }
+
+    double t0, t1, dt;
+    long steps = 0;
+    double lastStep = 0.0;  // 0: t1 − t0 is a multiple of dt
+};
+
+// Cubic Hermite interpolation inside a step from (x0, f0) to (x1, f1) of length h, f = ẋ,
+// at θ ∈ (0, 1), per component with Δ = x1 − x0:
+//   x(θ) = x0 + θ Δ + θ (θ − 1) [(1 − 2θ) Δ + (θ − 1) h f0 + θ h f1],
+// the cubic with both ends' values and slopes: q from q and q̇, q̇ from q̇ and q̈, W from W
+// and Qᵀq̇. Its error is O(h⁴), so it keeps rk4's order; a component at rest (Δ = 0,
+// f0 = f1 = 0, e.g. a stuck joint) stays exactly constant.
+inline void hermite(const State& x0, const State& f0, const State& x1, const State& f1, double h, double theta,
+                    State& out) {
+    for (size_t i = 0; i < out.size(); ++i) {
+        const double d = x1[i] - x0[i];
+        out[i] = x0[i] + theta * d + theta * (theta - 1) * ((1 - 2 * theta) * d + (theta - 1) * h * f0[i] + theta * h * f1[i]);
+    }
+}
+
+// Fixed-step methods step on FixedStepGrid whatever the output times are. An output time
+// between two step ends gets the cubic Hermite interpolant of that step (above) from the
+// states and right-hand sides at its ends; the right-hand side at a step end is the first
+// stage of the next step (passed to do_step), so interpolation costs no evaluations but
+// one at the very end when needed. Events: a step that crosses an event surface is retried
+// shorter to end just past the crossing (OdeSystem::eventFraction); after the event the
+// next step goes on to the same grid point, so the grid never shifts.
 template <class Stepper>
 void runFixed(Stepper stepper, OdeSystem& system, State& x, const std::vector<double>& times,
               const IntegrationSettings& settings, const OutputObserver& observe, const Guard& guard) {
     double t = times.front();
     event(system, t, x);
-    if (!observe(t, x)) return;
-    State x0(x.size());
-    for (size_t k = 1; k < times.size(); ++k) {
-        while (ahead(times[k], t)) {
-            double h = std::min(settings.dt, times[k] - t);
-            if (system.hasEvents()) x0 = x;
-            stepper.do_step(std::ref(system), x, t, h);
-            // Event location: a shorter step that ends just past the crossing.
+    if (!observe(t, x) || times.size() < 2) return;
+    const FixedStepGrid grid(t, times.back(), settings.dt);
+    IntegrationCounts& counts = guard.counts;
+    State f(x.size()), x0(x.size()), f0(x.size()), sample(x.size());
+    bool fresh = false;  // f = f(x, t)
+    size_t next = 1;     // the next output time
+    for (long k = 1; k <= grid.steps; ++k) {
+        const double target = grid.time(k);
+        if (k == grid.steps) counts.lastStep = grid.lastStep;
+        while (ahead(target, t)) {
+            if (!fresh) system(x, f, t);
+            x0 = x;
+            f0 = f;
+            double h = target - t;
+            stepper.do_step(std::ref(system), x, f0, t, h);
             for (int retry = 0; system.hasEvents() && retry < 8; ++retry) {
                 const double theta = system.eventFraction(x0, x);
                 if (theta >= 1.0) break;
                 h = h * theta * (1 + 1e-9) + 1e-15 * std::max(1.0, std::abs(t));
                 x = x0;
-                stepper.do_step(std::ref(system), x, t, h);
+                stepper.do_step(std::ref(system), x, f0, t, h);
             }
-            t += h;
-            guard.afterStep(t, settings.dt, x);
-            event(system, t, x);
+            const double t1 = ahead(target, t + h) ? t + h : target;
+            if (t1 != target) ++counts.eventSteps;
+            guard.afterStep(t1, settings.dt, x);
+            const bool inside = next < times.size() && ahead(t1, times[next]);
+            fresh = inside || t1 < times.back();
+            if (fresh) system(x, f, t1);
+            for (; next < times.size() && ahead(t1, times[next]); ++next) {
+                hermite(x0, f0, x, f, t1 - t, (times[next] - t) / (t1 - t), sample);
+                ++counts.interpolatedOutputs;
+                if (!observe(times[next], sample)) return;
+            }
+            t = t1;
+            if (event(system, t, x)) fresh = false;
+            for (; next < times.size() && !ahead(times[next], t); ++next)
+                if (!observe(times[next], x)) return;
         }
-        t = times[k];
-        if (!observe(t, x)) break;
     }
 }
 

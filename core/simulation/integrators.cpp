@@ -57,17 +57,15 @@ using State = OdeState;
 class SymplecticEuler {
 public:
     explicit SymplecticEuler(int n) : n_(n) {}
-    void do_step(std::reference_wrapper<OdeSystem> system, State& x, double t, double h) {
-        dxdt_.resize(x.size());
-        system.get()(x, dxdt_, t);
-        for (int i = 0; i < n_; ++i) x[n_ + i] += h * dxdt_[n_ + i];
+    // dxdt = f(x, t), given by the driver (it is the right-hand side at the last step's end).
+    void do_step(std::reference_wrapper<OdeSystem>, State& x, const State& dxdt, double, double h) const {
+        for (int i = 0; i < n_; ++i) x[n_ + i] += h * dxdt[n_ + i];
         for (int i = 0; i < n_; ++i) x[i] += h * x[n_ + i];
-        for (size_t i = 2 * n_; i < x.size(); ++i) x[i] += h * dxdt_[i];
+        for (size_t i = 2 * n_; i < x.size(); ++i) x[i] += h * dxdt[i];
     }
 
 private:
     int n_;
-    State dxdt_;
 };
 
 // Explicit midpoint: k1 = f(x), x + h f(x + h/2 k1), as an Odeint generic Runge–Kutta tableau.

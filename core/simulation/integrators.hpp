@@ -41,6 +41,10 @@ struct IntegrationCounts {
     long steps = 0;
     long rejectedSteps = 0;
     long jacobians = 0;  // rosenbrock4 and the stiffness monitor (each costs 4n+2 evaluations)
+    // Fixed-step methods only (see FixedStepGrid in integration_drivers.hpp):
+    double lastStep = 0.0;         // a last step shorter than dt [s], when T − t0 is not a multiple of dt; else 0
+    long eventSteps = 0;           // steps that ended early at a located event (included in steps)
+    long interpolatedOutputs = 0;  // output samples between step ends (cubic Hermite interpolation)
 };
 
 // ∂f/∂x by central differences, step h_j = ε^(1/3) max(|x_j|, 1) per component (exact
@@ -67,8 +71,9 @@ private:
 };
 
 // Observer at each output time (including times.front()); return false to stop
-// (cancellation). Called with the state at exactly that time (dense output or a
-// step that ends on it).
+// (cancellation). Called with the state at exactly that time: a step that ends on it,
+// dense output (dopri5), or for fixed-step methods, whose steps do not depend on the
+// output times, cubic Hermite interpolation between the two step ends around it.
 using OutputObserver = std::function<bool(double t, const OdeState& x)>;
 
 // Integrates x from times.front() through every time in `times` (increasing).

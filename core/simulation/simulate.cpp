@@ -138,16 +138,22 @@ SimulationResult simulate(SimulationInput input, const SimulationSettings& setti
         return true;
     };
 
+    const auto book = [&](const IntegrationCounts& counts) {
+        SimulationStats& stats = result.stats;
+        stats.steps = counts.steps;
+        stats.rejectedSteps = counts.rejectedSteps;
+        stats.dt = findIntegrator(settings.integrator)->adaptive ? 0.0 : settings.dt;
+        stats.lastStep = counts.lastStep;
+        stats.eventSteps = counts.eventSteps;
+        stats.interpolatedSamples = counts.interpolatedOutputs;
+    };
     const double cpuStart = threadCpuSeconds();
     try {
-        const IntegrationCounts counts = integrate(ode, x, times, integration, observe);
-        result.stats.steps = counts.steps;
-        result.stats.rejectedSteps = counts.rejectedSteps;
+        book(integrate(ode, x, times, integration, observe));
     } catch (const IntegrationError& e) {
         result.status = SimulationStatus::Failed;
         result.message = e.what();
-        result.stats.steps = e.counts().steps;
-        result.stats.rejectedSteps = e.counts().rejectedSteps;
+        book(e.counts());
     }
     result.stats.cpuSeconds = threadCpuSeconds() - cpuStart;
     result.stats.rhsEvaluations = lagrangian ? lagrangian->evaluations() : robot->evaluations();

@@ -33,6 +33,15 @@ struct SimulationStats {
     long rejectedSteps = 0;     // adaptive methods only
     long rhsEvaluations = 0;    // forward-dynamics evaluations
     double cpuSeconds = 0.0;    // CPU time of this thread spent integrating
+    // Fixed-step methods (0 for adaptive ones): the step dt [s] they took on the grid
+    // t_k = t0 + k·dt, a last shorter step when the duration is not a multiple of dt,
+    // steps that ended early at a located event (included in steps), and the samples
+    // that lie between step ends (cubic Hermite interpolation of q, q̇ and W from q, q̇,
+    // q̈ at the step ends; energies evaluated at the interpolated state).
+    double dt = 0.0;
+    double lastStep = 0.0;
+    long eventSteps = 0;
+    long interpolatedSamples = 0;
     double simulatedSeconds = 0.0;
     // Energy balance: E(t) − E(0) − W(t) is zero for the exact solution (W = work of
     // Q). Max absolute value, and relative to the energy scale of the motion

@@ -154,6 +154,9 @@ WorkPrecisionResult runWorkPrecision(const SimulationInput& input, const WorkPre
                     point.rhsEvaluations = run.stats.rhsEvaluations;
                     point.steps = run.stats.steps;
                     point.rejectedSteps = run.stats.rejectedSteps;
+                    point.step = info.adaptive ? (run.stats.steps > 0 ? run.stats.simulatedSeconds / run.stats.steps : 0.0)
+                                               : run.stats.dt;
+                    point.lastStep = run.stats.lastStep;
                     if (point.completed) {
                         point.finalError = finalStateError(finalState(run.trajectory), ref.finalState);
                         point.atReferenceFloor = point.finalError <= ref.estimatedError;

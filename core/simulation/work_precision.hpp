@@ -46,6 +46,10 @@ struct WorkPrecisionPoint {
     long rhsEvaluations = 0;
     long steps = 0;
     long rejectedSteps = 0;
+    // The step actually taken [s]: dt for a fixed-step method (on t_k = k·dt whatever the
+    // output rate), the mean accepted step duration / steps for an adaptive one.
+    double step = 0.0;
+    double lastStep = 0.0;  // fixed step: a last shorter step when the duration is not a multiple of dt
 };
 
 struct WorkPrecisionReference {
