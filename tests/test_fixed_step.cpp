@@ -8,8 +8,7 @@
 
 #include "core/io/scene_file.hpp"
 #include "core/simulation/robot_ode.hpp"
-#include "core/simulation/simulate.hpp"
-#include "core/simulation/work_precision.hpp"
+#include "core/pipeline/scene_simulation.hpp"
 
 using namespace ll;
 
