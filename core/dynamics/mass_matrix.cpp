@@ -4,7 +4,7 @@
 
 namespace ll {
 
-void computeMassMatrix(const RobotModel&, RobotData& data) {
+void computeMassMatrix(const RobotModel& model, RobotData& data) {
     const int n = data.n;
     // Composite inertias: in one frame they are plain sums, tip to base.
     for (int i = n - 1; i >= 0; --i) {
@@ -17,6 +17,7 @@ void computeMassMatrix(const RobotModel&, RobotData& data) {
             data.B(i, j) = data.S[i].dot(F);
             data.B(j, i) = data.B(i, j);
         }
+        data.B(j, j) += model.joints[j].motor.armature();
     }
 }
 
@@ -28,6 +29,7 @@ Eigen::MatrixXd massMatrixFromJacobians(const RobotModel& model, const RobotData
         const auto Jv = J.topRows<3>();
         const auto Jw = J.bottomRows<3>();
         B += model.joints[i].link.mass * Jv.transpose() * Jv + Jw.transpose() * data.Ic_0i[i] * Jw;
+        B(i, i) += model.joints[i].motor.armature();
     }
     return B;
 }
