@@ -8,7 +8,9 @@
 
 #include "core/dynamics/forward_dynamics.hpp"
 #include "core/dynamics/mass_matrix.hpp"
+#include "core/dynamics/mass_matrix_conditioning.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
+#include "core/model/unit_slips.hpp"
 #include "core/simulation/integrators.hpp"
 
 namespace ll {
@@ -57,13 +59,44 @@ void validateInertia(std::vector<Diagnostic>& out, int j, const Eigen::Matrix3d&
                     "): no physical body has this inertia; the model is simulated as given");
 }
 
+// What to do about a joint that moves (almost) nothing: give its links inertia, or
+// its motor's.
+std::string armatureAdvice(int j) {
+    return "or add the motor's inertia as armature (\"armature\": Jm*G^2, or \"motor\": {\"inertia\": Jm, "
+           "\"gear_ratio\": G} on joint " + std::to_string(j + 1) +
+           "): published tables often leave light distal links without inertia, but the motor's rotor still "
+           "turns with the joint";
+}
+
+// The error for a B(q) that cannot be factored, saying which kind it is (core/dynamics/
+// mass_matrix_conditioning.hpp) and, for an ill-conditioned one, the likely cause.
+std::string singularMassMatrixMessage(const MassMatrixDefect& defect, const std::vector<Diagnostic>& unitSlips) {
+    const int j = defect.joint;
+    const std::string joint = std::to_string(j + 1);
+    if (defect.kind == MassMatrixDefect::Kind::MovesNothing)
+        return "joint " + joint +
+               " moves no mass or inertia that the joints before it do not already move, so the mass matrix B(q) "
+               "is singular; give link " + joint + " (or a link after it) mass off the joint axis or inertia about it, " +
+               armatureAdvice(j);
+    std::string message = "the mass matrix B(q) is too ill-conditioned to use (condition number " +
+                          fmt(defect.condition) + "): joint " + joint + " moves inertia of its own (b" + joint + joint +
+                          " = " + fmt(defect.diagonal) + "), but beside the largest diagonal entry (" +
+                          fmt(defect.largest) + ") double precision loses it; likely cause: ";
+    if (unitSlips.empty()) return message + "light distal links beside heavy ones: check their masses and inertias, " + armatureAdvice(j);
+    message += "a unit slip, " + unitSlips.front().field + ": " + unitSlips.front().message;
+    if (unitSlips.size() > 1) message += " (and " + std::to_string(unitSlips.size() - 1) + " more unit warnings)";
+    return message;
+}
+
 // B(q) must be positive definite wherever the robot may go. A structurally massless
 // joint shows at (almost) every configuration, so test the start and a few random ones.
-void validateMassMatrix(std::vector<Diagnostic>& out, const RobotModel& model, const Eigen::VectorXd& q0) {
+void validateMassMatrix(std::vector<Diagnostic>& out, const RobotModel& model, const Eigen::VectorXd& q0,
+                        const std::vector<Diagnostic>& unitSlips) {
     RobotData data(model);
     std::mt19937 rng(12345);
     std::uniform_real_distribution<double> angle(-3.0, 3.0);
     std::vector<int> singularCount(model.dof(), 0);
+    std::vector<MassMatrixDefect> defects(model.dof());
     const int trials = 4;
     for (int trial = 0; trial < trials; ++trial) {
         Eigen::VectorXd q = q0;
@@ -71,16 +104,30 @@ void validateMassMatrix(std::vector<Diagnostic>& out, const RobotModel& model, c
             for (int i = 0; i < q.size(); ++i) q[i] = angle(rng) * (model.joints[i].dh.type == JointType::Revolute ? 1.0 : 0.1);
         forwardKinematics(model, data, q);
         computeMassMatrix(model, data);
-        const int joint = firstSingularJoint(data.B);
-        if (joint >= 0) ++singularCount[joint];
+        const MassMatrixDefect defect = diagnoseMassMatrix(data);
+        if (defect.joint >= 0) {
+            ++singularCount[defect.joint];
+            defects[defect.joint] = defect;
+        }
     }
     for (int j = 0; j < model.dof(); ++j)
-        if (singularCount[j] == trials)
-            error(out, jointField(j, ""),
-                  "joint " + std::to_string(j + 1) +
-                      " moves no mass or inertia that the joints before it do not already move, so the mass "
-                      "matrix B(q) is singular; give link " + std::to_string(j + 1) +
-                      " (or a link after it) mass off the joint axis or inertia about it");
+        if (singularCount[j] == trials) error(out, jointField(j, ""), singularMassMatrixMessage(defects[j], unitSlips));
+}
+
+// A motor's armature adds Jm G² to b_jj: it must be a finite number >= 0.
+void validateMotor(std::vector<Diagnostic>& out, int j, const JointMotor& motor) {
+    if (!motor.fromMotor) {
+        requireFinite(out, jointField(j, "armature"), motor.inertia);
+        if (motor.inertia < 0) error(out, jointField(j, "armature"), "armature is negative (" + fmt(motor.inertia) + "); it must be >= 0");
+        return;
+    }
+    requireFinite(out, jointField(j, "motor.inertia"), motor.inertia);
+    requireFinite(out, jointField(j, "motor.gear_ratio"), motor.gearRatio);
+    if (motor.inertia < 0)
+        error(out, jointField(j, "motor.inertia"), "rotor inertia is negative (" + fmt(motor.inertia) + " kg m²); it must be >= 0");
+    if (motor.gearRatio == 0)
+        error(out, jointField(j, "motor.gear_ratio"),
+              "gear ratio is 0 (motor turns per joint turn: 1 for a direct drive, e.g. 62.6 for PUMA joint 1)");
 }
 
 // The structure of a hand-typed Lagrangian; its expressions are checked when they are
@@ -130,8 +177,11 @@ std::vector<Diagnostic> validateRobot(const RobotModel& model) {
         if (std::isfinite(joint.link.mass) && joint.link.mass < 0)
             error(out, jointField(j, "mass"), "mass is negative (" + fmt(joint.link.mass) + " kg); it must be >= 0");
         if (inertiaFinite) validateInertia(out, j, joint.link.inertia);
+        validateMotor(out, j, joint.motor);
     }
-    if (!hasErrors(out) && model.dof() > 0) validateMassMatrix(out, model, Eigen::VectorXd::Zero(model.dof()));
+    const std::vector<Diagnostic> unitSlips = unitSlipWarnings(model);
+    out.insert(out.end(), unitSlips.begin(), unitSlips.end());
+    if (!hasErrors(out) && model.dof() > 0) validateMassMatrix(out, model, Eigen::VectorXd::Zero(model.dof()), unitSlips);
     return out;
 }
 
