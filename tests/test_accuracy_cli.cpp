@@ -10,6 +10,7 @@
 
 #include "core/io/scene_file.hpp"
 #include "core/pipeline/scene_simulation.hpp"
+#include "core/model/utf8_text.hpp"
 #include "ui/work_precision_plot.hpp"
 
 class TestAccuracyCli : public QObject {
@@ -28,7 +29,10 @@ class TestAccuracyCli : public QObject {
         p.setProcessEnvironment(env);
         p.start(LL_CLI, args);
         p.waitForFinished(300000);
-        return {p.exitCode(), p.readAllStandardOutput(), p.readAllStandardError()};
+        const Run r{p.exitCode(), p.readAllStandardOutput(), p.readAllStandardError()};
+        if (r.exitCode == 2)  // every refusal is valid UTF-8
+            QTest::qVerify(ll::isValidUtf8(r.err.toStdString()), "stderr is UTF-8", r.err.constData(), __FILE__, __LINE__);
+        return r;
     }
     static QString example(const char* name) { return QString(LL_EXAMPLES_DIR) + "/" + name; }
 

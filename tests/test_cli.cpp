@@ -10,6 +10,8 @@
 
 #include <ginac/ginac.h>
 
+#include "core/model/utf8_text.hpp"
+
 class TestCli : public QObject {
     Q_OBJECT
 
@@ -18,11 +20,35 @@ class TestCli : public QObject {
         QProcess::ExitStatus status;
         QByteArray out, err;
     };
+    // Every refusal (exit code 2) is checked for valid UTF-8 on stderr.
     static Run run(const QStringList& args) {
         QProcess p;
         p.start(LL_CLI, args);
         p.waitForFinished(120000);
-        return {p.exitCode(), p.exitStatus(), p.readAllStandardOutput(), p.readAllStandardError()};
+        const Run r{p.exitCode(), p.exitStatus(), p.readAllStandardOutput(), p.readAllStandardError()};
+        if (r.exitCode == 2)
+            QTest::qVerify(ll::isValidUtf8(r.err.toStdString()), "stderr is UTF-8", r.err.toHex(' ').constData(), __FILE__, __LINE__);
+        return r;
+    }
+    // `bytes` as dir/bad.json.
+    static QString writeScene(const QTemporaryDir& dir, const QByteArray& bytes) {
+        const QString path = dir.filePath("bad.json");
+        QFile f(path);
+        if (!f.open(QIODevice::WriteOnly) || f.write(bytes) != bytes.size()) qFatal("cannot write %s", qPrintable(path));
+        return path;
+    }
+    // A copy of an example with its JSON edited, in `dir`.
+    template <class Edit>
+    static QString editedExample(const QTemporaryDir& dir, const char* name, Edit edit) {
+        QFile in(example(name));
+        in.open(QIODevice::ReadOnly);
+        QJsonObject root = QJsonDocument::fromJson(in.readAll()).object();
+        edit(root);
+        const QString path = dir.filePath(name);
+        QFile out(path);
+        out.open(QIODevice::WriteOnly);
+        out.write(QJsonDocument(root).toJson());
+        return path;
     }
     static QString example(const char* name) { return QString(LL_EXAMPLES_DIR) + "/" + name; }
     // A parameter's value as the scene file gives it (numbers only in these examples).
@@ -35,9 +61,22 @@ class TestCli : public QObject {
     }
 
 private slots:
-    // Reference (platform notes, Corke's parameters): g(0) = [0, 37.4837, 0.2489, 0, 0, 0].
+    // Reference (platform notes, Corke's parameters): g(0) = [0, 37.4837, 0.2489, 0, 0, 0];
+    // the rigid-body B with the motors switched off.
     void evalPuma560AtZero() {
-        const Run r = run({"eval", example("puma560.json"), "--q", "0,0,0,0,0,0", "--qd", "0,0,0,0,0,0"});
+        QTemporaryDir dir;
+        const QString rigid = editedExample(dir, "puma560.json", [](QJsonObject& root) {
+            QJsonObject robot = root["robot"].toObject();
+            QJsonArray joints = robot["joints"].toArray();
+            for (QJsonValueRef joint : joints) {
+                QJsonObject j = joint.toObject();
+                j.remove("motor");
+                joint = j;
+            }
+            robot["joints"] = joints;
+            root["robot"] = robot;
+        });
+        const Run r = run({"eval", rigid, "--q", "0,0,0,0,0,0", "--qd", "0,0,0,0,0,0"});
         QCOMPARE(r.exitCode, 0);
         const QJsonObject o = QJsonDocument::fromJson(r.out).object();
         for (const char* key : {"B", "C", "g", "Q", "qdd", "Ekin", "Epot"}) QVERIFY2(o.contains(key), key);
@@ -49,6 +88,58 @@ private slots:
         for (int i = 0; i < 6; ++i) QVERIFY(std::abs(o["B"].toArray()[i].toArray()[i].toDouble() - diag[i]) < 1e-4);
         QCOMPARE(o["Ekin"].toDouble(), 0.0);
         QVERIFY(r.err.contains("triangle"));  // Corke's link 1 is warned about, not refused
+    }
+
+    // With its motors, examples/puma560.json gives the Robotics Toolbox's inertia at
+    // qn = (0, π/4, π, 0, π/4, 0).
+    void evalPuma560WithMotorsAtNominal() {
+        const Run r = run({"eval", example("puma560.json"), "--q", "0,0.7853981633974483,3.141592653589793,0,0.7853981633974483,0",
+                           "--qd", "0,0,0,0,0,0"});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonArray B = QJsonDocument::fromJson(r.out).object()["B"].toArray();
+        const double toolbox[] = {3.6594, 4.4137, 0.9378, 0.1925, 0.1713, 0.1941};
+        for (int i = 0; i < 6; ++i) QVERIFY(std::abs(B[i].toArray()[i].toDouble() - toolbox[i]) < 5e-5);
+    }
+
+    // Refusals of text that is not plain ASCII: one line, the field, the character by
+    // its code point, exit code 2, valid UTF-8 (checked in run()).
+    void nonAsciiInputIsRefusedInOneLine_data() {
+        QTest::addColumn<QByteArray>("json");
+        QTest::addColumn<QString>("expected");
+        const QByteArray head = R"({"format":"lagrangelab-scene/1","name":"x","robot":{"convention":"standard","joints":[)";
+        QTest::newRow("degree sign in a length") << head + R"({"type":"revolute","a":"1°","mass":2}]}})" << QString::fromUtf8("robot.joints[1].a: '°' (U+00B0) at position 2");
+        QTest::newRow("minus sign in alpha") << head + R"({"type":"revolute","a":1,"alpha":"−pi/2","mass":2}]}})" << QString::fromUtf8("robot.joints[1].alpha: unexpected character '−' (U+2212) at position 1");
+        QTest::newRow("ordinal for degree") << head + R"({"type":"revolute","a":1,"alpha":"90º","mass":2}]}})" << QString::fromUtf8("'º' (U+00BA) at position 3");
+        QTest::newRow("cut character") << head + QByteArray("{\"type\":\"revolute\",\"a\":1,\"alpha\":\"90\xC2\",\"mass\":2}]}}")
+                                       << QString("the file is not UTF-8: byte 0xC2 at line 1, column");
+    }
+    void nonAsciiInputIsRefusedInOneLine() {
+        QFETCH(QByteArray, json);
+        QFETCH(QString, expected);
+        QTemporaryDir dir;
+        const QString path = writeScene(dir, json);
+        const Run r = run({"eval", path, "--q", "0", "--qd", "0"});
+        QCOMPARE(r.exitCode, 2);
+        QCOMPARE(r.err.count('\n'), 1);
+        QVERIFY2(QString::fromUtf8(r.err).contains(expected), r.err.constData());
+    }
+
+    // A bare 90 in alpha is loaded as 90 rad, with a warning that names the field.
+    void bareDegreesWarn() {
+        QTemporaryDir dir;
+        const QString path = editedExample(dir, "planar_2r.json", [](QJsonObject& root) {
+            QJsonObject robot = root["robot"].toObject();
+            QJsonArray joints = robot["joints"].toArray();
+            QJsonObject first = joints[0].toObject();
+            first["alpha"] = 90;
+            joints[0] = first;
+            robot["joints"] = joints;
+            root["robot"] = robot;
+        });
+        const Run r = run({"eval", path, "--q", "0,0", "--qd", "0,0"});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(QString::fromUtf8(r.err).contains(QString::fromUtf8("robot.joints[1].alpha: alpha 90 rad — did you mean 90°? write 90° or pi/2")),
+                 r.err.constData());
     }
 
     void evalTauReplacesSceneTorques() {
@@ -105,11 +196,7 @@ private slots:
         QFETCH(QString, json);
         QFETCH(QString, expected);
         QTemporaryDir dir;
-        const QString path = dir.filePath("bad.json");
-        QFile f(path);
-        QVERIFY(f.open(QIODevice::WriteOnly));
-        f.write(json.toUtf8());
-        f.close();
+        const QString path = writeScene(dir, json.toUtf8());
         for (const QStringList& args : {QStringList{"eval", path, "--q", "0", "--qd", "0"}, QStringList{"simulate", path}}) {
             const Run r = run(args);
             QCOMPARE(r.status, QProcess::NormalExit);

@@ -13,6 +13,7 @@
 #include "core/io/scene_file.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
 #include "core/kinematics/jacobians.hpp"
+#include "core/model/utf8_text.hpp"
 #include "core/simulation/integrators.hpp"
 #include "core/simulation/robot_ode.hpp"
 #include "core/pipeline/scene_simulation.hpp"
@@ -340,7 +341,9 @@ private slots:
         QVERIFY(p.waitForFinished(60000));
         QCOMPARE(p.exitCode(), 2);
         QVERIFY(p.readAllStandardOutput().isEmpty());
-        QVERIFY(p.readAllStandardError().contains("robot.joints[2]"));
+        const QByteArray err = p.readAllStandardError();
+        QVERIFY(err.contains("robot.joints[2]"));
+        QVERIFY(isValidUtf8(err.toStdString()));
         // a model built in code that skips validation still stops at the first evaluation
         Scene scene;
         scene.robot.joints.resize(2);

@@ -9,7 +9,8 @@
 
 namespace ll {
 
-// Requires computeMassMatrix.
+// Requires computeMassMatrix. B holds the motors' armature, so this includes the
+// rotors' ½ Jm G² q̇_j².
 double kineticEnergy(const RobotData& data, const Eigen::VectorXd& qd);
 
 // Requires forwardKinematics. Only declared effects contribute.

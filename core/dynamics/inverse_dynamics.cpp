@@ -27,8 +27,9 @@ const Eigen::VectorXd& rnea(const RobotModel& model, RobotData& data, const Effe
         data.F[i] = data.I[i] * A + crossForce(V, data.I[i] * V);
     }
     // Inward: each joint carries the force of all links beyond it.
+    // The motor's rotor adds its reflected inertia times the joint's own acceleration.
     for (int i = n - 1; i >= 0; --i) {
-        data.tau[i] = data.S[i].dot(data.F[i]);
+        data.tau[i] = data.S[i].dot(data.F[i]) + model.joints[i].motor.armature() * qdd[i];
         if (i > 0) data.F[i - 1] += data.F[i];
     }
     for (const JointSpring& spring : effects.springs)

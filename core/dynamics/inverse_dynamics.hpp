@@ -10,7 +10,8 @@
 
 namespace ll {
 
-// Requires forwardKinematics at q. Gravity and springs are included when declared.
+// Requires forwardKinematics at q. Gravity and springs are included when declared,
+// and each joint's armature as Jm G² q̈_j.
 // Fills data.V, A, F and data.tau; returns data.tau.
 const Eigen::VectorXd& rnea(const RobotModel& model, RobotData& data, const Effects& effects,
                             const Eigen::VectorXd& q, const Eigen::VectorXd& qd, const Eigen::VectorXd& qdd);

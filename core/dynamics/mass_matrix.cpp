@@ -19,6 +19,7 @@ void computeMassMatrix(const RobotModel& model, RobotData& data) {
             data.B(i, j) = data.S[i].dot(F);
             data.B(j, i) = data.B(i, j);
         }
+        data.B(j, j) += model.joints[j].motor.armature();
     }
 }
 
@@ -31,6 +32,7 @@ Eigen::MatrixXd massMatrixFromJacobians(const RobotModel& model, const RobotData
         const auto Jv = J.topRows<3>();
         const auto Jw = J.bottomRows<3>();
         B += model.joints[i].link.mass * Jv.transpose() * Jv + Jw.transpose() * data.Ic_0i[i] * Jw;
+        B(i, i) += model.joints[i].motor.armature();
     }
     return B;
 }

@@ -1,21 +1,65 @@
 #include "core/dynamics/mass_matrix_check.hpp"
 
 #include <random>
+#include <sstream>
 #include <string>
 
-#include "core/dynamics/forward_dynamics.hpp"
 #include "core/dynamics/mass_matrix.hpp"
+#include "core/dynamics/mass_matrix_conditioning.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
 #include "core/model/robot_data.hpp"
 
 namespace ll {
+namespace {
 
-std::vector<Diagnostic> checkMassMatrixRegular(const RobotModel& model, const Eigen::VectorXd& q0) {
+std::string fmt(double v) {
+    std::ostringstream s;
+    s.precision(6);
+    s << v;
+    return s.str();
+}
+
+// What to do about a joint that moves (almost) nothing: give its links inertia, or
+// its motor's.
+std::string armatureAdvice(int j) {
+    return "or add the motor's inertia as armature (\"armature\": Jm*G^2, or \"motor\": {\"inertia\": Jm, "
+           "\"gear_ratio\": G} on joint " + std::to_string(j + 1) +
+           "): published tables often leave light distal links without inertia, but the motor's rotor still "
+           "turns with the joint";
+}
+
+// The error for a B(q) that cannot be factored, saying which kind it is (core/dynamics/
+// mass_matrix_conditioning.hpp) and, for an ill-conditioned one, the likely cause.
+std::string singularMassMatrixMessage(const MassMatrixDefect& defect, const std::vector<Diagnostic>& unitSlips) {
+    const int j = defect.joint;
+    const std::string joint = std::to_string(j + 1);
+    if (defect.kind == MassMatrixDefect::Kind::MovesNothing)
+        return "joint " + joint +
+               " moves no mass or inertia that the joints before it do not already move, so the mass matrix B(q) "
+               "is singular; give link " + joint + " (or a link after it) mass off the joint axis or inertia about it, " +
+               armatureAdvice(j);
+    std::string message = "the mass matrix B(q) is too ill-conditioned to use (condition number " +
+                          fmt(defect.condition) + "): joint " + joint + " moves inertia of its own (b" + joint + joint +
+                          " = " + fmt(defect.diagonal) + "), but beside the largest diagonal entry (" +
+                          fmt(defect.largest) + ") double precision loses it; likely cause: ";
+    if (unitSlips.empty()) return message + "light distal links beside heavy ones: check their masses and inertias, " + armatureAdvice(j);
+    message += "a unit slip, " + unitSlips.front().field + ": " + unitSlips.front().message;
+    if (unitSlips.size() > 1) message += " (and " + std::to_string(unitSlips.size() - 1) + " more unit warnings)";
+    return message;
+}
+
+// B(q) must be positive definite wherever the robot may go. A structurally massless
+// joint shows at (almost) every configuration, so test the start and a few random ones.
+}  // namespace
+
+std::vector<Diagnostic> checkMassMatrixRegular(const RobotModel& model, const Eigen::VectorXd& q0,
+                                               const std::vector<Diagnostic>& unitSlips) {
     std::vector<Diagnostic> out;
     RobotData data(model);
     std::mt19937 rng(12345);
     std::uniform_real_distribution<double> angle(-3.0, 3.0);
     std::vector<int> singularCount(model.dof(), 0);
+    std::vector<MassMatrixDefect> defects(model.dof());
     const int trials = 4;
     for (int trial = 0; trial < trials; ++trial) {
         Eigen::VectorXd q = q0;
@@ -23,17 +67,17 @@ std::vector<Diagnostic> checkMassMatrixRegular(const RobotModel& model, const Ei
             for (int i = 0; i < q.size(); ++i) q[i] = angle(rng) * (model.joints[i].dh.type == JointType::Revolute ? 1.0 : 0.1);
         forwardKinematics(model, data, q);
         computeMassMatrix(model, data);
-        const int joint = firstSingularJoint(data.B);
-        if (joint >= 0) ++singularCount[joint];
+        const MassMatrixDefect defect = diagnoseMassMatrix(data);
+        if (defect.joint >= 0) {
+            ++singularCount[defect.joint];
+            defects[defect.joint] = defect;
+        }
     }
     for (int j = 0; j < model.dof(); ++j)
         if (singularCount[j] == trials)
-            out.push_back({Severity::Error, jointField(j, ""),
-                  "joint " + std::to_string(j + 1) +
-                      " moves no mass or inertia that the joints before it do not already move, so the mass "
-                      "matrix B(q) is singular; give link " + std::to_string(j + 1) +
-                      " (or a link after it) mass off the joint axis or inertia about it"});
+            out.push_back({Severity::Error, jointField(j, ""), singularMassMatrixMessage(defects[j], unitSlips)});
     return out;
 }
+
 
 }  // namespace ll

@@ -12,7 +12,11 @@
 
 namespace ll {
 
-// Errors naming robot.joints[j] for each joint where B is singular at every trial.
-std::vector<Diagnostic> checkMassMatrixRegular(const RobotModel& model, const Eigen::VectorXd& q0);
+// Errors naming robot.joints[j] for each joint where B is singular at every trial,
+// saying which kind (a joint that moves nothing, or B too ill-conditioned, with its
+// condition number) and the likely cause: the first of `unitSlips` (unit-slip warnings
+// of core/model/unit_slips), or advice to add the motor's armature.
+std::vector<Diagnostic> checkMassMatrixRegular(const RobotModel& model, const Eigen::VectorXd& q0,
+                                               const std::vector<Diagnostic>& unitSlips = {});
 
 }  // namespace ll

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <numbers>
 #include <optional>
 #include <regex>
 #include <set>
@@ -24,6 +25,8 @@
 #include "core/symbolic/lagrangian_fields.hpp"
 #include "core/simulation/scene_validation.hpp"
 #include "core/symbolic/ginac_lock.hpp"
+#include "core/symbolic/angle_units.hpp"
+#include "core/model/utf8_text.hpp"
 
 namespace ll {
 
@@ -126,12 +129,13 @@ private:
     std::vector<Level> levels_;
 };
 
+// Columns count characters, as an editor shows them.
 std::pair<std::size_t, std::size_t> lineAndColumn(const std::string& text, std::size_t offset) {
     offset = std::min(offset, text.size());
     std::size_t line = 1, lineStart = 0;
     for (std::size_t i = 0; i < offset; ++i)
         if (text[i] == '\n') ++line, lineStart = i + 1;
-    return {line, offset - lineStart + 1};
+    return {line, characterCount(std::string_view(text).substr(lineStart), offset - lineStart) + 1};
 }
 
 std::string at(const std::string& text, std::size_t offset) {
@@ -139,8 +143,16 @@ std::string at(const std::string& text, std::size_t offset) {
     return "at line " + std::to_string(line) + ", column " + std::to_string(column);
 }
 
-// Throws InputError naming kDocument: the text is no JSON object.
+// Throws InputError naming kDocument: the text is not UTF-8 (named by the first byte
+// that is not) or no JSON object.
 Json parseJson(const std::string& text, std::vector<Diagnostic>& duplicates) {
+    for (std::size_t i = 0; i < text.size();) {
+        const Utf8Char c = decodeUtf8(text, i);
+        if (!c.valid)
+            throw InputError(kDocument, "the file is not UTF-8: " + describeCharacter(c, text, i) + " " + at(text, i) +
+                                            " starts no character (save the file as UTF-8)");
+        i += c.bytes;
+    }
     Json root;
     try {
         root = Json::parse(text, DuplicateKeyFinder(duplicates));
@@ -170,9 +182,17 @@ Json parseJson(const std::string& text, std::vector<Diagnostic>& duplicates) {
     return root;
 }
 
+// Whether a numeric field is an angle: then it takes degrees ("90°", "90 deg") and a
+// bare number beyond 2π is warned about (probably degrees typed as radians). `Maybe`:
+// degrees are allowed, but the field may as well be a length (a Lagrangian's coordinate).
+enum class Angle { No, Yes, Maybe };
+
 class SceneReader {
 public:
     explicit SceneReader(std::vector<Diagnostic> errors) : errors_(std::move(errors)) {}
+
+    // Warnings found while reading (angles that look like degrees typed as radians).
+    const std::vector<Diagnostic>& warnings() const { return warnings_; }
 
     Scene read(const Json& root) {
         readFormat(root);
@@ -250,9 +270,10 @@ private:
                 error(child(path, key), "unknown key" + context + " (expected one of " + joined(allowed) + ")");
     }
 
-    std::optional<double> number(const Json& value, const std::string& path) {
+    std::optional<double> number(const Json& value, const std::string& path, Angle angle = Angle::No) {
         if (value.is_number()) {
             const double number = value.get<double>();
+            if (angle == Angle::Yes) warnIfDegrees(path, number);
             if (std::isfinite(number)) return number;
             error(path, "value is not finite (" + value.dump() + ")");
             return std::nullopt;
@@ -260,8 +281,10 @@ private:
         if (value.is_string()) {
             const std::string text = value.get<std::string>();
             try {
-                const double number = parameters_.evaluate(path, text);
+                const double number =
+                    parameters_.evaluate(path, text, angle == Angle::No ? AngleUnits::Refused : AngleUnits::Allowed);
                 scene_.expressions[path] = text;
+                if (angle == Angle::Yes && isPlainNumber(text)) warnIfDegrees(path, number);
                 return number;
             } catch (const InputError& e) {
                 errors_.insert(errors_.end(), e.diagnostics().begin(), e.diagnostics().end());
@@ -272,9 +295,38 @@ private:
         return std::nullopt;
     }
 
-    void readNumber(const Json& object, const std::string& path, const std::string& key, double& target) {
+    // "90" as a string is as bare as 90.
+    static bool isPlainNumber(const std::string& text) {
+        char* end = nullptr;
+        std::strtod(text.c_str(), &end);
+        return end != text.c_str() && text.find_first_not_of(" \t\n", static_cast<std::size_t>(end - text.c_str())) == std::string::npos;
+    }
+
+    // A bare number beyond 2π in an angle field is loaded as radians, with a warning.
+    void warnIfDegrees(const std::string& path, double value) {
+        if (!std::isfinite(value) || std::abs(value) <= 2 * std::numbers::pi) return;
+        const DegreeReading reading = readAsDegrees(value);
+        const std::string name = path.substr(path.rfind('.') + 1);
+        std::ostringstream number;
+        number.precision(10);
+        number << value;
+        warnings_.push_back({Severity::Warning, path,
+                             name + " " + number.str() + " rad — did you mean " + reading.degrees + "? write " +
+                                 reading.degrees + " or " + reading.radians + " (loaded as " + number.str() + " rad)"});
+    }
+
+    // Degrees are for a revolute joint's angles; a prismatic joint's q is a length. A
+    // Lagrangian's coordinates may be either.
+    Angle jointAngle(int joint) const {
+        if (scene_.lagrangian) return Angle::Maybe;
+        if (joint < 0 || joint >= scene_.robot.dof()) return Angle::Maybe;  // validation names the joint
+        return scene_.robot.joints[static_cast<std::size_t>(joint)].dh.type == JointType::Revolute ? Angle::Yes : Angle::No;
+    }
+
+    void readNumber(const Json& object, const std::string& path, const std::string& key, double& target,
+                    Angle angle = Angle::No) {
         if (const Json* value = member(object, key))
-            if (auto n = number(*value, child(path, key))) target = *n;
+            if (auto n = number(*value, child(path, key), angle)) target = *n;
     }
 
     void readText(const Json& value, const std::string& path, std::string& target) {
@@ -297,7 +349,8 @@ private:
         return std::nullopt;
     }
 
-    void readVector3(const Json& object, const std::string& path, const std::string& key, Eigen::Vector3d& target) {
+    void readVector3(const Json& object, const std::string& path, const std::string& key, Eigen::Vector3d& target,
+                     Angle angle = Angle::No) {
         const Json* value = member(object, key);
         if (!value) return;
         const std::string field = child(path, key);
@@ -306,7 +359,7 @@ private:
             return;
         }
         for (std::size_t i = 0; i < 3; ++i)
-            if (auto n = number((*value)[i], item(field, i))) target[static_cast<Eigen::Index>(i)] = *n;
+            if (auto n = number((*value)[i], item(field, i), angle)) target[static_cast<Eigen::Index>(i)] = *n;
     }
 
     void readFormat(const Json& root) {
@@ -477,25 +530,48 @@ private:
         if (!checkObject(base, "robot.base", {"position", "rpy"})) return;
         Eigen::Vector3d position = Eigen::Vector3d::Zero(), rpy = Eigen::Vector3d::Zero();
         readVector3(base, "robot.base", "position", position);
-        readVector3(base, "robot.base", "rpy", rpy);
+        readVector3(base, "robot.base", "rpy", rpy, Angle::Yes);
         scene_.robot.base = Eigen::Isometry3d::Identity();
         scene_.robot.base.translation() = position;
         scene_.robot.base.linear() = rotationFromRpy(rpy);
     }
 
     void readJoint(const Json& joint, const std::string& path, Joint& target) {
-        if (!checkObject(joint, path, {"type", "a", "alpha", "d", "theta", "mass", "com", "inertia"})) return;
+        if (!checkObject(joint, path, {"type", "a", "alpha", "d", "theta", "mass", "com", "inertia", "armature", "motor"}))
+            return;
         if (const Json* type = member(joint, "type"))
             if (auto choice = readChoice(*type, child(path, "type"), {"revolute", "prismatic"}))
                 target.dh.type = *choice == 0 ? JointType::Revolute : JointType::Prismatic;
         readNumber(joint, path, "a", target.dh.a);
-        readNumber(joint, path, "alpha", target.dh.alpha);
+        readNumber(joint, path, "alpha", target.dh.alpha, Angle::Yes);
         readNumber(joint, path, "d", target.dh.d);
-        readNumber(joint, path, "theta", target.dh.theta);
+        // θ is the revolute joint's offset angle; a prismatic joint's θ is a constant angle too.
+        readNumber(joint, path, "theta", target.dh.theta, Angle::Yes);
         if (required(joint, path, "mass", "the link's mass in kg; 0 for a massless link"))
             readNumber(joint, path, "mass", target.link.mass);
         readVector3(joint, path, "com", target.link.com);
         if (const Json* inertia = member(joint, "inertia")) readInertia(*inertia, child(path, "inertia"), target.link);
+        readMotor(joint, path, target.motor);
+    }
+
+    // "armature": Jm G² as one number, or "motor": {"inertia": Jm, "gear_ratio": G}.
+    void readMotor(const Json& joint, const std::string& path, JointMotor& motor) {
+        const Json* armature = member(joint, "armature");
+        const Json* rotor = member(joint, "motor");
+        if (armature && rotor) {
+            error(child(path, "motor"), "give either \"armature\" (Jm*G^2, the reflected inertia) or \"motor\" "
+                                        "{\"inertia\": Jm, \"gear_ratio\": G}, not both");
+            return;
+        }
+        if (armature) readNumber(joint, path, "armature", motor.inertia);
+        if (!rotor) return;
+        const std::string field = child(path, "motor");
+        if (!checkObject(*rotor, field, {"inertia", "gear_ratio"})) return;
+        motor.fromMotor = true;
+        if (required(*rotor, field, "inertia", "the rotor's inertia Jm in kg m²"))
+            readNumber(*rotor, field, "inertia", motor.inertia);
+        if (required(*rotor, field, "gear_ratio", "G, motor turns per joint turn"))
+            readNumber(*rotor, field, "gear_ratio", motor.gearRatio);
     }
 
     void readInertia(const Json& inertia, const std::string& path, LinkInertia& link) {
@@ -562,7 +638,7 @@ private:
         readList<JointSpring>(effects, "springs", e.springs, [this](const Json& j, const std::string& p, JointSpring& s) {
             checkKeys(j, p, {"joint", "stiffness", "rest"});
             readNumber(j, p, "stiffness", s.stiffness);
-            readNumber(j, p, "rest", s.rest);
+            readNumber(j, p, "rest", s.rest, jointAngle(s.joint));
         });
         readList<ViscousFriction>(effects, "viscous", e.viscous,
                                   [this](const Json& j, const std::string& p, ViscousFriction& v) {
@@ -599,7 +675,7 @@ private:
         readNumber(entry, path, "at", torque.at);
         readNumber(entry, path, "amplitude", torque.amplitude);
         readNumber(entry, path, "frequency", torque.frequency);
-        readNumber(entry, path, "phase", torque.phase);
+        readNumber(entry, path, "phase", torque.phase, Angle::Yes);
         readNumber(entry, path, "slope", torque.slope);
         readNumber(entry, path, "start", torque.start);
     }
@@ -612,10 +688,13 @@ private:
             error(field, "expected an array of numbers or expressions [...], got " + describe(*value));
             return Eigen::VectorXd::Zero(n);
         }
-        // Any length: whether it matches the joints is validation's call.
+        // Any length: whether it matches the joints is validation's call. Positions of
+        // revolute joints are angles; velocities are not (no deg/s).
         Eigen::VectorXd vector = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(value->size()));
-        for (std::size_t i = 0; i < value->size(); ++i)
-            if (auto x = number((*value)[i], item(field, i))) vector[static_cast<Eigen::Index>(i)] = *x;
+        for (std::size_t i = 0; i < value->size(); ++i) {
+            const Angle angle = key == "q" ? jointAngle(static_cast<int>(i)) : Angle::No;
+            if (auto x = number((*value)[i], item(field, i), angle)) vector[static_cast<Eigen::Index>(i)] = *x;
+        }
         return vector;
     }
 
@@ -641,6 +720,7 @@ private:
     }
 
     std::vector<Diagnostic> errors_;
+    std::vector<Diagnostic> warnings_;
     ParameterTable parameters_;
     Scene scene_;
 };
@@ -807,6 +887,13 @@ private:
                                 {"xy", number(field("inertia.xy"), (I(0, 1) + I(1, 0)) / 2)},
                                 {"xz", number(field("inertia.xz"), (I(0, 2) + I(2, 0)) / 2)},
                                 {"yz", number(field("inertia.yz"), (I(1, 2) + I(2, 1)) / 2)}}}});
+            Json& entry = joints.back();
+            const JointMotor& motor = joint.motor;
+            if (motor.fromMotor)
+                entry["motor"] = {{"inertia", number(field("motor.inertia"), motor.inertia)},
+                                  {"gear_ratio", number(field("motor.gear_ratio"), motor.gearRatio)}};
+            else if (motor.inertia != 0.0 || hasExpressionUnder(field("armature")))
+                entry["armature"] = number(field("armature"), motor.inertia);
         }
         return out;
     }
@@ -946,8 +1033,12 @@ LoadedScene loadScene(const std::string& path) {
     try {
         const auto lock = symbolic::lockGinac();  // expressions are parsed with GiNaC
         LoadedScene loaded;
-        loaded.scene = SceneReader(std::move(duplicates)).read(root);
-        loaded.warnings = inFile(requireValidScene(loaded.scene), path);
+        SceneReader reader(std::move(duplicates));
+        loaded.scene = reader.read(root);
+        loaded.warnings = reader.warnings();
+        const std::vector<Diagnostic> validation = requireValidScene(loaded.scene);
+        loaded.warnings.insert(loaded.warnings.end(), validation.begin(), validation.end());
+        loaded.warnings = inFile(std::move(loaded.warnings), path);
         return loaded;
     } catch (const InputError& e) {
         throw InputError(inFile(e.diagnostics(), path));

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "core/model/utf8_text.hpp"
+
 namespace ll {
 
 std::string Diagnostic::toString() const {
@@ -23,8 +25,17 @@ static std::string joinErrors(const std::vector<Diagnostic>& diagnostics) {
     return text;
 }
 
+// Messages quote what the user typed; whatever it held, they are printed as valid UTF-8.
+static std::vector<Diagnostic> printable(std::vector<Diagnostic> diagnostics) {
+    for (Diagnostic& d : diagnostics) {
+        if (!isValidUtf8(d.field)) d.field = validUtf8(d.field);
+        if (!isValidUtf8(d.message)) d.message = validUtf8(d.message);
+    }
+    return diagnostics;
+}
+
 InputError::InputError(std::vector<Diagnostic> diagnostics)
-    : std::runtime_error(joinErrors(diagnostics)), diagnostics_(std::move(diagnostics)) {}
+    : std::runtime_error(joinErrors(printable(diagnostics))), diagnostics_(printable(std::move(diagnostics))) {}
 
 InputError::InputError(std::string field, std::string message)
     : InputError(std::vector<Diagnostic>{{Severity::Error, std::move(field), std::move(message)}}) {}

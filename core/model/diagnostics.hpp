@@ -18,7 +18,9 @@ struct Diagnostic {
 
 bool hasErrors(const std::vector<Diagnostic>& diagnostics);
 
-// Thrown for bad input; carries the diagnostics (at least one error).
+// Thrown for bad input; carries the diagnostics (at least one error). Fields and
+// messages are made valid UTF-8 (core/model/utf8_text.hpp), so printing them never
+// shows half a character, whatever bytes the input held.
 class InputError : public std::runtime_error {
 public:
     explicit InputError(std::vector<Diagnostic> diagnostics);

@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 
 #include "core/model/dh_row.hpp"
+#include "core/model/joint_motor.hpp"
 #include "core/model/link_inertia.hpp"
 
 namespace ll {
@@ -14,6 +15,7 @@ namespace ll {
 struct Joint {
     DhRow dh;
     LinkInertia link;  // the link this joint moves (link i for joint i)
+    JointMotor motor;  // its rotor inertia reflected to the joint (none by default)
 };
 
 struct RobotModel {

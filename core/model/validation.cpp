@@ -5,6 +5,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "core/model/unit_slips.hpp"
 
 namespace ll {
 namespace {
@@ -50,6 +51,22 @@ void validateInertia(std::vector<Diagnostic>& out, int j, const Eigen::Matrix3d&
                 "principal moments " + fmt(a) + ", " + fmt(b) + ", " + fmt(c) + " violate the triangle inequality (" +
                     fmt(a) + " + " + fmt(b) + " < " + fmt(c) +
                     "): no physical body has this inertia; the model is simulated as given");
+}
+
+// A motor's armature adds Jm G² to b_jj: it must be a finite number >= 0.
+void validateMotor(std::vector<Diagnostic>& out, int j, const JointMotor& motor) {
+    if (!motor.fromMotor) {
+        requireFinite(out, jointField(j, "armature"), motor.inertia);
+        if (motor.inertia < 0) error(out, jointField(j, "armature"), "armature is negative (" + fmt(motor.inertia) + "); it must be >= 0");
+        return;
+    }
+    requireFinite(out, jointField(j, "motor.inertia"), motor.inertia);
+    requireFinite(out, jointField(j, "motor.gear_ratio"), motor.gearRatio);
+    if (motor.inertia < 0)
+        error(out, jointField(j, "motor.inertia"), "rotor inertia is negative (" + fmt(motor.inertia) + " kg m²); it must be >= 0");
+    if (motor.gearRatio == 0)
+        error(out, jointField(j, "motor.gear_ratio"),
+              "gear ratio is 0 (motor turns per joint turn: 1 for a direct drive, e.g. 62.6 for PUMA joint 1)");
 }
 
 // The structure of a hand-typed Lagrangian; its expressions are checked when they are
@@ -99,7 +116,10 @@ std::vector<Diagnostic> validateRobotFields(const RobotModel& model) {
         if (std::isfinite(joint.link.mass) && joint.link.mass < 0)
             error(out, jointField(j, "mass"), "mass is negative (" + fmt(joint.link.mass) + " kg); it must be >= 0");
         if (inertiaFinite) validateInertia(out, j, joint.link.inertia);
+        validateMotor(out, j, joint.motor);
     }
+    const std::vector<Diagnostic> unitSlips = unitSlipWarnings(model);
+    out.insert(out.end(), unitSlips.begin(), unitSlips.end());
     return out;
 }
 

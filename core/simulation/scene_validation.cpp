@@ -3,6 +3,7 @@
 #include <string>
 
 #include "core/dynamics/mass_matrix_check.hpp"
+#include "core/model/unit_slips.hpp"
 #include "core/model/validation.hpp"
 #include "core/simulation/integrators.hpp"
 
@@ -11,7 +12,8 @@ namespace ll {
 std::vector<Diagnostic> validateRobot(const RobotModel& model) {
     std::vector<Diagnostic> out = validateRobotFields(model);
     if (!hasErrors(out) && model.dof() > 0) {
-        const std::vector<Diagnostic> singular = checkMassMatrixRegular(model, Eigen::VectorXd::Zero(model.dof()));
+        const std::vector<Diagnostic> singular =
+            checkMassMatrixRegular(model, Eigen::VectorXd::Zero(model.dof()), unitSlipWarnings(model));
         out.insert(out.end(), singular.begin(), singular.end());
     }
     return out;
@@ -22,7 +24,7 @@ std::vector<Diagnostic> validateScene(const Scene& scene) {
     // As in validateRobot: B is checked once the robot's own fields are sound.
     if (!scene.lagrangian && scene.robot.dof() > 0 && !hasErrors(validateRobotFields(scene.robot))) {
         const std::vector<Diagnostic> singular =
-            checkMassMatrixRegular(scene.robot, Eigen::VectorXd::Zero(scene.robot.dof()));
+            checkMassMatrixRegular(scene.robot, Eigen::VectorXd::Zero(scene.robot.dof()), unitSlipWarnings(scene.robot));
         out.insert(out.end(), singular.begin(), singular.end());
     }
     const std::string& integrator = scene.simulation.integrator;

@@ -13,7 +13,9 @@
 #include <cln/float.h>
 #include <cln/number_io.h>
 
+#include "core/symbolic/angle_units.hpp"
 #include "core/model/diagnostics.hpp"
+#include "core/symbolic/ginac_lock.hpp"
 
 namespace ll {
 
@@ -30,12 +32,6 @@ std::size_t identifierPosition(const std::string& text, const std::string& name)
         if (startsWord && endsWord) return at + 1;
     }
     return 0;
-}
-
-std::string quoted(const std::string& text) { return "\"" + text + "\""; }
-
-std::string atPosition(std::size_t position) {
-    return position == 0 ? "" : " at position " + std::to_string(position);
 }
 
 std::string formatDouble(double value) {
@@ -75,12 +71,14 @@ std::size_t tokenPosition(const std::string& text, const std::string& token, std
     return at == std::string::npos ? 0 : at + 1;
 }
 
-std::string describeParseError(const std::string& text, const std::string& what, std::streamoff consumed) {
+// Positions are found in the text GiNaC read (source.text) and reported in characters
+// of what the user typed (source.original).
+std::string describeParseError(const PreparedExpression& source, const std::string& what, std::streamoff consumed) {
     const std::string reason = parseErrorReason(what);
     if (reason.rfind("no function \"", 0) == 0) {
         const std::string name = reason.substr(13, reason.find('"', 13) - 13);
-        return "unknown function '" + name + "'" + atPosition(identifierPosition(text, name)) + " in " +
-               quoted(text) + " (or wrong number of arguments)";
+        return "unknown function '" + name + "'" + source.at(identifierPosition(source.text, name)) + " in " +
+               source.quoted() + " (or wrong number of arguments)";
     }
     const std::string token = offendingToken(reason);
     std::string detail = reason;
@@ -88,24 +86,24 @@ std::string describeParseError(const std::string& text, const std::string& what,
     for (std::size_t at; (at = detail.find("got: ")) != std::string::npos;) detail.replace(at, 5, "got ");
     for (std::size_t at; (at = detail.find("EOF")) != std::string::npos;) detail.replace(at, 3, "end of expression");
     const std::string where =
-        token.empty() ? " at the end of" : atPosition(tokenPosition(text, token, consumed)) + " in";
-    return "syntax error" + where + " " + quoted(text) + ": " + detail;
+        token.empty() ? " at the end of" : source.at(tokenPosition(source.text, token, consumed)) + " in";
+    return "syntax error" + where + " " + source.quoted() + ": " + detail;
 }
 
-std::string describeUnknownSymbol(const std::string& text, const std::string& what,
+std::string describeUnknownSymbol(const PreparedExpression& source, const std::string& what,
                                   const std::vector<std::string>& known) {
     // find_or_insert_symbol: symbol "l3" not found
     const std::size_t open = what.find('"');
     const std::size_t close = open == std::string::npos ? open : what.find('"', open + 1);
-    if (close == std::string::npos) return "cannot parse " + quoted(text) + ": " + what;
+    if (close == std::string::npos) return "cannot parse " + source.quoted() + ": " + what;
     const std::string name = what.substr(open + 1, close - open - 1);
     std::string knownList;
     const std::size_t shown = std::min<std::size_t>(known.size(), 12);  // a long list would bury the message
     for (std::size_t i = 0; i < shown; ++i) knownList += known[i] + ", ";
     if (shown < known.size()) knownList += "..., ";
     knownList += "pi";
-    return "unknown symbol '" + name + "'" + atPosition(identifierPosition(text, name)) + " in " + quoted(text) +
-           " (known: " + knownList + ")";
+    return "unknown symbol '" + name + "'" + source.at(identifierPosition(source.text, name)) + " in " +
+           source.quoted() + " (known: " + knownList + ")";
 }
 
 // Index just past the ')' that closes the '(' at `open`, or npos.
@@ -162,24 +160,29 @@ std::size_t zeroDivisorPosition(const std::string& text, const GiNaC::symtab& sy
     return 0;
 }
 
-std::string divisorNote(std::size_t position) {
-    return position == 0 ? "" : " (the divisor after the '/' at position " + std::to_string(position) + " is zero)";
+std::string divisorNote(const PreparedExpression& source, std::size_t position) {
+    return position == 0 ? "" : " (the divisor after the '/'" + source.at(position) + " is zero)";
 }
 
-std::string describePole(const std::string& text, const std::string& what, std::size_t divisor = 0) {
+std::string describePole(const PreparedExpression& source, const std::string& what, std::size_t divisor = 0) {
     if (what.find("division by zero") != std::string::npos)
-        return "division by zero in " + quoted(text) + divisorNote(divisor);
-    return "singular value in " + quoted(text) + " (" + what + ")";
+        return "division by zero in " + source.quoted() + divisorNote(source, divisor);
+    return "singular value in " + source.quoted() + " (" + what + ")";
 }
 
-GiNaC::symtab withPi(GiNaC::symtab symbols) {
+// The constants every expression may use: pi, and deg = π/180 for angles (unless a
+// parameter is called deg); "deg_unit_" is what a degree sign becomes (core/io/angle_units).
+GiNaC::symtab withConstants(GiNaC::symtab symbols) {
+    auto lock = symbolic::lockGinac();
     symbols["pi"] = GiNaC::Pi;
+    symbols["deg_unit_"] = GiNaC::Pi / 180;
+    if (!symbols.count("deg")) symbols["deg"] = GiNaC::Pi / 180;
     return symbols;
 }
 
 const std::set<std::string>& reservedWords() {
     static const std::set<std::string> words = [] {
-        std::set<std::string> w{"pi", "Pi", "I", "Euler", "Catalan", "t"};
+        std::set<std::string> w{"pi", "Pi", "I", "Euler", "Catalan", "t", "deg_unit_"};
         for (const auto& [prototype, reader] : GiNaC::get_default_reader()) w.insert(prototype.first);
         return w;
     }();
@@ -215,24 +218,29 @@ void ParameterTable::define(const std::string& field, const std::string& name, d
 }
 
 double ParameterTable::define(const std::string& field, const std::string& name, const std::string& text) {
-    const GiNaC::ex expression = parse(field, text);
-    const double value = toNumber(field, text, expression);
+    const PreparedExpression source = prepare(field, text);
+    const GiNaC::ex expression = parse(field, source, {}, false);
+    const double value = toNumber(field, source, expression);
     add(field, name, value, expression);
     return value;
 }
 
+PreparedExpression ParameterTable::prepare(const std::string& field, const std::string& text) const {
+    return prepareExpression(field, text, contains("deg"));
+}
+
 GiNaC::ex ParameterTable::parse(const std::string& field, const std::string& text) const {
-    return parse(field, text, {}, false);
+    return parse(field, prepare(field, text), {}, false);
 }
 
 GiNaC::ex ParameterTable::parse(const std::string& field, const std::string& text,
                                 const std::vector<GiNaC::symbol>& extra) const {
-    return parse(field, text, extra, true);
+    return parse(field, prepare(field, text), extra, true);
 }
 
-GiNaC::ex ParameterTable::parse(const std::string& field, const std::string& text,
+GiNaC::ex ParameterTable::parse(const std::string& field, const PreparedExpression& source,
                                 const std::vector<GiNaC::symbol>& extra, bool checkValues) const {
-    if (text.find_first_not_of(" \t\n") == std::string::npos)
+    if (source.text.find_first_not_of(" \t\n") == std::string::npos)
         throw InputError(field, "empty expression (expected a number or an expression of the parameters)");
     GiNaC::symtab symbols = symbols_;
     std::vector<std::string> known;
@@ -241,8 +249,8 @@ GiNaC::ex ParameterTable::parse(const std::string& field, const std::string& tex
         known.push_back(s.get_name());
     }
     known.insert(known.end(), names_.begin(), names_.end());
-    symbols["pi"] = GiNaC::Pi;
-    std::istringstream input(text);
+    symbols = withConstants(symbols);
+    std::istringstream input(source.text);
     try {
         GiNaC::parser parser(symbols, /*strict=*/true);
         const GiNaC::ex expression = parser(input);
@@ -250,62 +258,70 @@ GiNaC::ex ParameterTable::parse(const std::string& field, const std::string& tex
         return expression;
     } catch (const GiNaC::parse_error& e) {
         input.clear();
-        throw InputError(field, describeParseError(text, e.what(), input.tellg()));
+        throw InputError(field, describeParseError(source, e.what(), input.tellg()));
     } catch (const GiNaC::pole_error& e) {
-        throw InputError(field, describePole(text, e.what(), zeroDivisorPosition(text, symbols, values())));
+        throw InputError(field, describePole(source, e.what(), zeroDivisorPosition(source.text, symbols, values())));
     } catch (const cln::division_by_0_exception&) {
-        throw InputError(field, "division by zero in " + quoted(text) + divisorNote(zeroDivisorPosition(text, symbols, values())));
+        throw InputError(field, "division by zero in " + source.quoted() +
+                                    divisorNote(source, zeroDivisorPosition(source.text, symbols, values())));
     } catch (const cln::read_number_exception&) {
-        throw InputError(field, "syntax error in " + quoted(text) + ": malformed number");
+        throw InputError(field, "syntax error in " + source.quoted() + ": malformed number");
     } catch (const std::invalid_argument& e) {
         const std::string what = e.what();
         if (what.find("find_or_insert_symbol") != std::string::npos)  // strict mode refused a name
-            throw InputError(field, describeUnknownSymbol(text, what, known));
-        throw InputError(field, "cannot parse " + quoted(text) + ": " + what);
+            throw InputError(field, describeUnknownSymbol(source, what, known));
+        throw InputError(field, "cannot parse " + source.quoted() + ": " + what);
     } catch (const std::exception& e) {
-        throw InputError(field, "cannot parse " + quoted(text) + ": " + e.what());
+        throw InputError(field, "cannot parse " + source.quoted() + ": " + e.what());
     }
 }
 
-double ParameterTable::evaluate(const std::string& field, const std::string& text) const {
-    return toNumber(field, text, parse(field, text));
+double ParameterTable::evaluate(const std::string& field, const std::string& text, AngleUnits units) const {
+    const PreparedExpression source = prepare(field, text);
+    if (units == AngleUnits::Refused && source.unitPosition != 0)
+        throw InputError(field, "'" + source.unit + (source.unit == "deg" ? "'" : "' (U+00B0)") + " at position " +
+                                    std::to_string(source.unitPosition) + " in " +
+                                    source.quoted() +
+                                    ": degrees are for angle fields (alpha, theta, the base's rpy, a revolute joint's "
+                                    "initial q and spring rest, a torque's phase); write this value in SI units");
+    return toNumber(field, source, parse(field, source, {}, false));
 }
 
-double ParameterTable::toNumber(const std::string& field, const std::string& text,
+double ParameterTable::toNumber(const std::string& field, const PreparedExpression& source,
                                 const GiNaC::ex& expression) const {
     // Parameter values enter as doubles, so CLN computes in doubles and signals
     // overflow, underflow and 1/0 with exceptions of its own.
     try {
         const GiNaC::ex result = expression.subs(values()).evalf();
         if (!GiNaC::is_a<GiNaC::numeric>(result))
-            throw InputError(field, quoted(text) + " does not evaluate to a number");
+            throw InputError(field, source.quoted() + " does not evaluate to a number");
         const GiNaC::numeric& number = GiNaC::ex_to<GiNaC::numeric>(result);
         if (!number.is_real()) {
             std::ostringstream shown;
             shown << result;
-            throw InputError(field, "value is not a real number (" + shown.str() + ") in " + quoted(text));
+            throw InputError(field, "value is not a real number (" + shown.str() + ") in " + source.quoted());
         }
         // Exact numbers beyond the double range would make to_double throw; floats give inf.
         if (GiNaC::abs(number) > GiNaC::numeric(std::numeric_limits<double>::max()))
             throw InputError(field, std::string("value is not finite (") + (number.is_negative() ? "-inf" : "inf") +
-                                        ") in " + quoted(text));
+                                        ") in " + source.quoted());
         const double value = number.to_double();
         if (!std::isfinite(value))
-            throw InputError(field, "value is not finite (" + formatDouble(value) + ") in " + quoted(text));
+            throw InputError(field, "value is not finite (" + formatDouble(value) + ") in " + source.quoted());
         return value;
     } catch (const InputError&) {
         throw;
     } catch (const GiNaC::pole_error& e) {
-        throw InputError(field, describePole(text, e.what(), zeroDivisorPosition(text, withPi(symbols_), values())));
+        throw InputError(field, describePole(source, e.what(), zeroDivisorPosition(source.text, withConstants(symbols_), values())));
     } catch (const cln::division_by_0_exception&) {
-        throw InputError(field, "division by zero in " + quoted(text) +
-                                    divisorNote(zeroDivisorPosition(text, withPi(symbols_), values())));
+        throw InputError(field, "division by zero in " + source.quoted() +
+                                    divisorNote(source, zeroDivisorPosition(source.text, withConstants(symbols_), values())));
     } catch (const cln::floating_point_overflow_exception&) {
-        throw InputError(field, "value is not finite (overflow) in " + quoted(text));
+        throw InputError(field, "value is not finite (overflow) in " + source.quoted());
     } catch (const cln::floating_point_underflow_exception&) {
-        throw InputError(field, "a value in " + quoted(text) + " is too close to zero for a double (underflow)");
+        throw InputError(field, "a value in " + source.quoted() + " is too close to zero for a double (underflow)");
     } catch (const std::exception& e) {
-        throw InputError(field, "cannot evaluate " + quoted(text) + ": " + e.what());
+        throw InputError(field, "cannot evaluate " + source.quoted() + ": " + e.what());
     }
 }
 

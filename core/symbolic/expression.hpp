@@ -1,17 +1,24 @@
 #pragma once
 // Named parameters of a scene and the numeric fields written as expressions of
-// them ("l1/2", "m2*l2^2/12", "-pi/2"). GiNaC parses; each parameter is a symbol,
+// them ("l1/2", "m2*l2^2/12", "-pi/2", "90°"). GiNaC parses; each parameter is a symbol,
 // so a symbolic derivation can keep the symbols while the simulation substitutes
-// the values.
+// the values. Every expression may use pi and the degree units of
+// core/symbolic/angle_units.hpp (deg = π/180, "90°", "90 deg"); its characters are checked
+// first, so messages quote whole characters and count positions in characters.
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <ginac/ginac.h>
 
+#include "core/symbolic/angle_units.hpp"
 #include "core/model/scene.hpp"
 
 namespace ll {
+
+// Whether a field takes degrees ("90°", "90 deg"): angle fields do, a length or a mass
+// does not (a degree sign there is a slip, refused naming the field).
+enum class AngleUnits { Allowed, Refused };
 
 class ParameterTable {
 public:
@@ -31,8 +38,9 @@ public:
     // k = 2 fails, naming the position of the '/').
     GiNaC::ex parse(const std::string& field, const std::string& text, const std::vector<GiNaC::symbol>& extra) const;
     // The expression's value with every parameter substituted. Throws InputError
-    // naming `field` also for division by zero, a complex or a non-finite value.
-    double evaluate(const std::string& field, const std::string& text) const;
+    // naming `field` also for division by zero, a complex or a non-finite value, and
+    // for a degree unit when `units` is Refused.
+    double evaluate(const std::string& field, const std::string& text, AngleUnits units = AngleUnits::Allowed) const;
 
     bool contains(const std::string& name) const;
     const std::vector<std::string>& names() const { return names_; }  // definition order
@@ -57,8 +65,9 @@ private:
     };
     const Parameter& find(const std::string& name) const;
     void add(const std::string& field, const std::string& name, double value, GiNaC::ex definition);
-    double toNumber(const std::string& field, const std::string& text, const GiNaC::ex& expression) const;
-    GiNaC::ex parse(const std::string& field, const std::string& text, const std::vector<GiNaC::symbol>& extra,
+    PreparedExpression prepare(const std::string& field, const std::string& text) const;
+    double toNumber(const std::string& field, const PreparedExpression& source, const GiNaC::ex& expression) const;
+    GiNaC::ex parse(const std::string& field, const PreparedExpression& source, const std::vector<GiNaC::symbol>& extra,
                     bool checkValues) const;
 
     std::vector<std::string> names_;

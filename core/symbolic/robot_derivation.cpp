@@ -4,6 +4,7 @@
 #include <chrono>
 #include <functional>
 #include <string>
+#include <sstream>
 
 #include "core/dynamics/christoffel.hpp"
 #include "core/kinematics/dh_transform.hpp"
@@ -322,16 +323,43 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
                 (robot.springs.empty() ? "" : R"( + \sum_j \tfrac{1}{2} K_j (q_j - q_{j,\mathrm{rest}})^2)"),
             {{"E_pot", R"(E_{\mathrm{pot}})", Epot}});
 
-    // 7. Kinetic energy and B(q).
+    // 7. Kinetic energy and B(q); the motors' rotors add their armature to b_jj.
     d.B = massMatrixInLinkFrames(robot, A, tc, checkpoint);
+    auto motorLock = lockGinac();
+    matrix motors(n, n);
+    bool hasMotors = false;
+    for (int j = 0; j < n; ++j)
+        if (!robot.joints[j].armature.is_zero()) {
+            motors(j, j) = robot.joints[j].armature;
+            d.B(j, j) += motors(j, j);
+            hasMotors = true;
+        }
     ex Ekin = 0;
     for (int j = 0; j < n; ++j)
         for (int k = 0; k < n; ++k) Ekin += GiNaC::numeric(1, 2) * d.B(j, k) * tc.qd(j) * tc.qd(k);
     d.Ekin = reduceChecked(tc, Ekin, checkpoint, "E_kin");
+    std::string motorValues;
+    for (const auto& [name, value] : robot.motorSymbols) {
+        std::ostringstream number;
+        number << value;
+        motorValues += (motorValues.empty() ? "" : ", ") + name + " = " + number.str();
+    }
+    if (!motorValues.empty()) motorValues = " (" + motorValues + ")";
+    std::vector<DerivationItem> step7;
+    if (hasMotors) step7.push_back({"B_m", R"(B_{m})", motors});
+    step7.push_back({"B", "B(q)", d.B});
+    step7.push_back({"E_kin", R"(E_{\mathrm{kin}})", d.Ekin});
     addStep(7, "Kinetic energy and the mass matrix",
-            "E_kin = 1/2 sum_i (m_i v_ci^T v_ci + omega_i^T I_li^0 omega_i) = 1/2 qd^T B(q) qd",
-            R"(E_{\mathrm{kin}} = \tfrac{1}{2}\sum_i \left(m_i\, v_{ci}^T v_{ci} + \omega_i^T I_{li}^0\, \omega_i\right) = \tfrac{1}{2}\,\dot{q}^T B(q)\,\dot{q})",
-            {{"B", "B(q)", d.B}, {"E_kin", R"(E_{\mathrm{kin}})", d.Ekin}});
+            std::string("E_kin = 1/2 sum_i (m_i v_ci^T v_ci + omega_i^T I_li^0 omega_i)") +
+                (hasMotors ? " + 1/2 sum_j Jm_j G_j^2 qd_j^2" : "") + " = 1/2 qd^T B(q) qd" +
+                (hasMotors ? ";  motors: rotor j (inertia Jm_j, gear ratio G_j) turns at G_j qd_j, so it adds its "
+                             "armature Jm_j G_j^2 to b_jj: B = B_links + B_m, B_m = diag(Jm_j G_j^2) (Ja_j when "
+                             "given as armature)" + motorValues
+                           : ""),
+            std::string(R"(E_{\mathrm{kin}} = \tfrac{1}{2}\sum_i \left(m_i\, v_{ci}^T v_{ci} + \omega_i^T I_{li}^0\, \omega_i\right))") +
+                (hasMotors ? R"( + \tfrac{1}{2}\sum_j J_{m,j} G_j^2 \dot{q}_j^2)" : "") + R"( = \tfrac{1}{2}\,\dot{q}^T B(q)\,\dot{q})" +
+                (hasMotors ? R"(,\quad B = B_{\mathrm{links}} + B_m,\ B_m = \mathrm{diag}(J_{m,j} G_j^2)\ \text{(rotor } j \text{ turns at } G_j \dot{q}_j\text{)})" : ""),
+            step7);
 
     // 8. Equations of motion (Lagrange–d'Alembert).
     d.g = matrix(n, 1);

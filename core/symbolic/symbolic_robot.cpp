@@ -6,6 +6,7 @@
 #include "core/model/diagnostics.hpp"
 #include "core/model/friction_law.hpp"
 #include "core/symbolic/exact_numbers.hpp"
+#include "core/symbolic/ginac_lock.hpp"
 
 namespace ll::symbolic {
 namespace {
@@ -21,6 +22,16 @@ public:
     GiNaC::ex value(const std::string& field, double number, const std::string& name) {
         if (mode_ == ParameterMode::Textbook && number != 0.0) return textbookSymbol(name, number);
         return read(field, number, false);
+    }
+
+    // A motor's inertia or gear ratio: a symbol unless numbers were asked for, so the
+    // armature stays a term of its own in B.
+    GiNaC::ex motorValue(const std::string& field, double number, const std::string& name) {
+        auto lock = lockGinac();
+        if (mode_ == ParameterMode::Numeric) return read(field, number, false);
+        if (mode_ == ParameterMode::Parametric && scene_.expressions.count(field)) return read(field, number, false);
+        robot_.motorSymbols.emplace_back(name, number);
+        return textbookSymbol(name, number);
     }
 
     // An angle: never a textbook symbol; exact multiples of π stay exact.
@@ -94,6 +105,14 @@ SymbolicRobot symbolicRobot(const Scene& scene, ParameterMode mode, const GiNaC:
                 sj.inertia(r, c) = reader.value(field("inertia." + key), joint.link.inertia(r, c), "I" + key + k);
                 sj.inertia(c, r) = sj.inertia(r, c);
             }
+        const JointMotor& motor = joint.motor;
+        if (motor.armature() != 0.0 && motor.fromMotor) {
+            const GiNaC::ex Jm = reader.motorValue(field("motor.inertia"), motor.inertia, "Jm" + k);
+            const GiNaC::ex G = reader.motorValue(field("motor.gear_ratio"), motor.gearRatio, "G" + k);
+            sj.armature = Jm * GiNaC::pow(G, 2);
+        } else if (motor.armature() != 0.0) {
+            sj.armature = reader.motorValue(field("armature"), motor.inertia, "Ja" + k);
+        }
         robot.joints.push_back(sj);
     }
 

@@ -8,6 +8,9 @@
 //               xc1, Ixx1, K1, b1, Fc1; gravity ±g), so a student derives the general
 //               model from the table alone. Angles α_i and θ offsets stay exact
 //               (multiples of π), because they fix the structure.
+// A joint's motor armature is its own term in every mode but Numeric: Jm_i G_i² for
+// "motor": {inertia, gear_ratio}, Ja_i for "armature" (or the parameters it was
+// written with, in Parametric mode), so b_ii reads "… + Jm1 G1²".
 #include <string>
 #include <vector>
 
@@ -26,6 +29,7 @@ struct SymbolicJoint {
     GiNaC::ex mass;
     GiNaC::matrix com{3, 1};
     GiNaC::matrix inertia{3, 3};
+    GiNaC::ex armature;  // Jm G² of the joint's motor, added to b_ii; 0 without one
 };
 
 struct SymbolicTerm {  // one coefficient on one joint (spring, friction, torque)
@@ -42,6 +46,9 @@ struct SymbolicRobot {
     GiNaC::matrix gravity{3, 1};
     std::vector<SymbolicTerm> springs, viscous, coulomb, torques;
     std::vector<GiNaC::symbol> massSymbols;  // for grouping results by mass when printing
+    // The motor symbols introduced (Jm1, G1, Ja2, ...) with their values, for the
+    // derivation to say what they stand for.
+    std::vector<std::pair<std::string, double>> motorSymbols;
     GiNaC::lst parameterValues;              // symbol == value for every symbol introduced
 };
 

@@ -45,8 +45,10 @@ namespace {
 bool isIdentity(const Eigen::Isometry3d& T) { return T.matrix() == Eigen::Matrix4d::Identity(); }
 bool isIdentity(const KDL::Frame& F) { return isIdentity(toEigen(F)); }  // exactly (KDL::Equal is strict)
 
-KDL::Joint jointOf(const DhRow& row) {
-    return KDL::Joint(row.type == JointType::Revolute ? KDL::Joint::RotZ : KDL::Joint::TransZ);
+// The motor's armature is KDL's joint inertia, which KDL adds to H(j,j) and inertia·q̈_j.
+KDL::Joint jointOf(const Joint& joint) {
+    return KDL::Joint(joint.dh.type == JointType::Revolute ? KDL::Joint::RotZ : KDL::Joint::TransZ, 1.0, 0.0,
+                      joint.motor.armature());
 }
 
 // Rot_x(α) Trans_x(a): the fixed head of a modified DH row.
@@ -77,11 +79,11 @@ KdlChain toKdlChain(const RobotModel& model, KdlChainLayout layout) {
             if (model.convention == DhConvention::Standard) {
                 const DhRow& r = joint.dh;
                 out.frameSegment[i + 1] =
-                    add(KDL::Segment(name, jointOf(r), KDL::Frame::DH(r.a, r.alpha, r.d, r.theta), toKdl(joint.link)));
+                    add(KDL::Segment(name, jointOf(joint), KDL::Frame::DH(r.a, r.alpha, r.d, r.theta), toKdl(joint.link)));
             } else {
                 add(KDL::Segment(name + "_head", fixed, modifiedHead(joint.dh)));
                 out.frameSegment[i + 1] =
-                    add(KDL::Segment(name, jointOf(joint.dh), modifiedTail(joint.dh), toKdl(joint.link)));
+                    add(KDL::Segment(name, jointOf(joint), modifiedTail(joint.dh), toKdl(joint.link)));
             }
         }
         return out;
@@ -93,7 +95,7 @@ KdlChain toKdlChain(const RobotModel& model, KdlChainLayout layout) {
         for (int i = 0; i < n; ++i) {
             const Joint& joint = model.joints[i];
             const DhRow& r = joint.dh;
-            out.frameSegment[i + 1] = add(KDL::Segment("link" + std::to_string(i + 1), jointOf(r),
+            out.frameSegment[i + 1] = add(KDL::Segment("link" + std::to_string(i + 1), jointOf(joint),
                                                        KDL::Frame::DH(r.a, r.alpha, r.d, r.theta), toKdl(joint.link)));
         }
         return out;
@@ -109,7 +111,7 @@ KdlChain toKdlChain(const RobotModel& model, KdlChainLayout layout) {
         const KDL::Frame toFrameI = nextHead.Inverse();  // frame i seen from the tip
         // KDL: operator*(T_a_b, I_b) = I_a. The link inertia is given in frame i.
         const KDL::RigidBodyInertia I = toFrameI * toKdl(joint.link);
-        out.frameSegment[i + 1] = add(KDL::Segment("link" + std::to_string(i + 1), jointOf(joint.dh),
+        out.frameSegment[i + 1] = add(KDL::Segment("link" + std::to_string(i + 1), jointOf(joint),
                                                    modifiedTail(joint.dh) * nextHead, I));
         out.frameCorrection[i + 1] = toFrameI;
     }

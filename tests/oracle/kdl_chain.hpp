@@ -29,6 +29,9 @@
 //             tensor entries as given (data = [Ixx Ixy Ixz; Ixy Iyy Iyz; Ixz Iyz Izz]), the
 //             same convention as LinkInertia::inertia; the off-diagonals are taken as the
 //             mean of the two mirrored entries.
+//   armature  a joint's motor armature Jm G² is KDL's joint inertia (Joint(type, 1, 0,
+//             inertia)), which KDL 1.5 adds to H(j,j) (ChainDynParam) and inertia·q̈_j
+//             (ChainIdSolver_RNE, ChainFdSolver_RNE).
 //   springs   KDL has none: KdlOracle(model, effects) adds K(q − rest) to gravity() and
 //             inverseDynamics() and subtracts it from τ before KDL's forward dynamics.
 #include <memory>

@@ -1,0 +1,155 @@
+#include "core/symbolic/angle_units.hpp"
+
+#include <cctype>
+#include <cmath>
+#include <sstream>
+
+#include "core/model/diagnostics.hpp"
+#include "core/model/utf8_text.hpp"
+
+namespace ll {
+
+namespace {
+
+// The degree sign becomes a product with a reserved name (core/io/expression.cpp); the
+// space ends the name, so "90°2" is a syntax error, not a symbol.
+const char* const kDegreeProduct = "*deg_unit_ ";
+
+// What to write instead of a character people paste from documents.
+std::string lookAlikeHint(char32_t c) {
+    switch (c) {
+        case 0x2212: case 0x2013: case 0x2014: return "write - (the ASCII minus)";
+        case 0x00D7: case 0x00B7: case 0x22C5: case 0x2219: return "write * for a product";
+        case 0x00F7: case 0x2215: return "write / for a quotient";
+        case 0x03C0: return "write pi";
+        case 0x00B2: return "write ^2";
+        case 0x00B3: return "write ^3";
+        case 0x00BA: case 0x02DA: case 0x2218: return "it is not the degree sign: write ° (U+00B0) or deg";
+        case 0x00A0: case 0x2009: case 0x202F: return "write a plain space";
+        case 0x2032: return "write deg (or °) for degrees; minutes of arc are not supported";
+        case 0x00B5: case 0x03BC: return "write the value in SI units (m, kg, s, rad)";
+        default: return "expressions are ASCII: numbers, names, + - * / ^ ( ), and ° or deg in angles";
+    }
+}
+
+bool isNameStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
+bool isNameChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+bool isDigit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
+
+// Length of the number starting at `i` (digits, '.', an exponent e±digits).
+std::size_t numberLength(const std::string& s, std::size_t i) {
+    std::size_t j = i;
+    while (j < s.size() && (isDigit(s[j]) || s[j] == '.')) ++j;
+    if (j < s.size() && (s[j] == 'e' || s[j] == 'E')) {
+        std::size_t k = j + 1;
+        if (k < s.size() && (s[k] == '+' || s[k] == '-')) ++k;
+        if (k < s.size() && isDigit(s[k])) {
+            while (k < s.size() && isDigit(s[k])) ++k;
+            j = k;
+        }
+    }
+    return j - i;
+}
+
+std::string shortNumber(double value) {
+    std::ostringstream out;
+    out.precision(10);
+    out << value;
+    return out.str();
+}
+
+}  // namespace
+
+std::string PreparedExpression::at(std::size_t bytePosition) const {
+    if (bytePosition == 0 || position.empty()) return "";
+    const std::size_t index = std::min(bytePosition - 1, position.size() - 1);
+    return " at position " + std::to_string(position[index]);
+}
+
+std::string PreparedExpression::quoted() const {
+    std::string text(1, '"');
+    return text.append(validUtf8(original)).append(1, '"');
+}
+
+PreparedExpression prepareExpression(const std::string& field, const std::string& text, bool degIsParameter) {
+    PreparedExpression p;
+    p.original = text;
+    // 1. Characters: ASCII is kept, the degree sign becomes a product, the rest is refused.
+    std::string ascii;
+    std::vector<std::size_t> asciiPosition;
+    std::size_t character = 0;
+    for (std::size_t i = 0; i < text.size();) {
+        ++character;
+        const Utf8Char c = decodeUtf8(text, i);
+        if (c.valid && c.codePoint < 0x80) {
+            ascii += text[i];
+            asciiPosition.push_back(character);
+        } else if (c.valid && c.codePoint == 0xB0) {
+            for (const char* k = kDegreeProduct; *k; ++k) {
+                ascii += *k;
+                asciiPosition.push_back(character);
+            }
+            if (p.unitPosition == 0) p.unitPosition = character, p.unit = "°";
+        } else {
+            const std::string what = c.valid ? "unexpected character " : "";
+            throw InputError(field, what + describeCharacter(c, text, i) + " at position " + std::to_string(character) +
+                                        " in " + p.quoted() + ": " +
+                                        (c.valid ? lookAlikeHint(c.codePoint) : "not UTF-8 (the text must be UTF-8)"));
+        }
+        i += c.bytes;
+    }
+    asciiPosition.push_back(character + 1);
+
+    // 2. `deg` right after a number, a name or ')' multiplies it: "90 deg" -> "90 *deg".
+    bool afterOperand = false;
+    for (std::size_t i = 0; i < ascii.size();) {
+        const char c = ascii[i];
+        std::size_t length = 1;
+        bool operand = false;
+        if (isDigit(c) || (c == '.' && i + 1 < ascii.size() && isDigit(ascii[i + 1]))) {
+            length = numberLength(ascii, i);
+            operand = true;
+        } else if (isNameStart(c)) {
+            while (i + length < ascii.size() && isNameChar(ascii[i + length])) ++length;
+            operand = true;
+            if (!degIsParameter && ascii.compare(i, length, "deg") == 0) {
+                if (p.unitPosition == 0 || asciiPosition[i] < p.unitPosition) p.unitPosition = asciiPosition[i], p.unit = "deg";
+                if (afterOperand) {
+                    p.text += '*';
+                    p.position.push_back(asciiPosition[i]);
+                }
+            }
+        } else if (c == ')') {
+            operand = true;
+        } else if (c == ' ' || c == '\t' || c == '\n') {
+            operand = afterOperand;
+        }
+        p.text.append(ascii, i, length);
+        p.position.insert(p.position.end(), asciiPosition.begin() + i, asciiPosition.begin() + i + length);
+        afterOperand = operand;
+        i += length;
+    }
+    p.position.push_back(asciiPosition.back());
+    return p;
+}
+
+DegreeReading readAsDegrees(double value) {
+    DegreeReading reading{shortNumber(value) + "°", ""};
+    for (int q = 1; q <= 12; ++q) {
+        const double p = value * q / 180.0;
+        if (std::abs(p - std::round(p)) > 1e-9) continue;
+        const long numerator = std::lround(p);
+        if (numerator == 0) {
+            reading.radians.assign(1, '0');
+        } else {
+            std::string text = numerator == 1 ? "pi" : numerator == -1 ? "-pi" : std::to_string(numerator) + "*pi";
+            if (q > 1) text.append("/").append(std::to_string(q));
+            reading.radians = text;
+        }
+        return reading;
+    }
+    reading.radians = shortNumber(value) + "*pi/180";
+    return reading;
+}
+
+}  // namespace ll
