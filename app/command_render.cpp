@@ -1,5 +1,6 @@
 // `lagrangelab render SCENE --out FILE [--duration T] [--fps F] [--size WxH] [--camera C]
-// [--speed X] [--overlay time,energy,name|none] [--trail on|off] [--frames on|off] [--at T]`:
+// [--speed X] [--overlay time,energy,name|none] [--trail on|off] [--frames on|off] [--at T]
+// [--msaa 0|2|4|8]` (multisampling, default 4; 0 renders about 3x faster on llvmpipe):
 // simulates the scene and renders it headless (EGL, no X server) into an MP4, WebM, GIF,
 // a PNG still, or a folder of numbered PNG frames.
 #include <atomic>
@@ -40,7 +41,7 @@ void catchInterrupts() {
 const char* kRenderUsage =
     "usage: lagrangelab render SCENE --out FILE.mp4|.webm|.gif|.png|FOLDER [--duration T] [--fps F] [--size WxH] "
     "[--camera front|side|top|iso|az,el[,dist]] [--speed X] [--overlay time,energy,name|none] [--trail on|off] "
-    "[--frames on|off] [--at T]";
+    "[--frames on|off] [--at T] [--msaa 0|2|4|8]";
 
 ui::ExportSettings parseRenderOptions(const Options& options, const Scene& scene) {
     if (!options.has("out")) throw UsageError(std::string("--out is required\n") + kRenderUsage);
@@ -102,6 +103,10 @@ ui::ExportSettings parseRenderOptions(const Options& options, const Scene& scene
         }
     }
 
+    const std::string msaa = options.text("msaa", "4");
+    if (msaa != "0" && msaa != "2" && msaa != "4" && msaa != "8")
+        throw UsageError("--msaa " + msaa + ": expected 0 (off), 2, 4 or 8 samples per pixel");
+    s.samples = std::stoi(msaa);
     if (options.has("at")) {
         if (s.kind != ui::OutputKind::Still) throw UsageError("--at " + options.text("at") + ": a single still needs --out FILE.png");
         s.at = options.number("at", 0);
@@ -115,7 +120,7 @@ ui::ExportSettings parseRenderOptions(const Options& options, const Scene& scene
 }  // namespace
 
 int renderCommand(const Args& args) {
-    const Options options(args, {"out", "duration", "fps", "size", "camera", "speed", "overlay", "trail", "frames", "at"});
+    const Options options(args, {"out", "duration", "fps", "size", "camera", "speed", "overlay", "trail", "frames", "at", "msaa"});
     if (options.positional().size() != 1) throw UsageError(kRenderUsage);
     const std::string path = options.positional()[0];
     Scene scene = loadSceneReportingWarnings(path);

@@ -22,7 +22,7 @@ const char* kUsage =
     "      the model step by step as the course notes derive it (symbolic, GiNaC)\n"
     "  render SCENE --out FILE.mp4|.webm|.gif|.png|FOLDER [--duration T] [--fps F] [--size WxH]\n"
     "         [--camera front|side|top|iso|az,el[,dist]] [--speed X] [--overlay time,energy,name|none]\n"
-    "         [--trail on|off] [--frames on|off] [--at T]\n"
+    "         [--trail on|off] [--frames on|off] [--at T] [--msaa 0|2|4|8]\n"
     "      simulate and render the 3D scene headless (no X server needed) to a video, a still or PNG frames\n"
     "  integrators\n"
     "      the integrators with order, kind and when to use each\n"
