@@ -35,9 +35,11 @@ fs::path temporaryBeside(const fs::path& target) {
     return dir / ("." + target.filename().string() + ".part-" + std::to_string(::getpid()));
 }
 
-void savePng(const QImage& image, const fs::path& path) {
+// `fast`: frames of a folder (zlib level about 2); a still is compressed hardest.
+// Qt's PNG writer takes the compression on a 0–100 scale.
+void savePng(const QImage& image, const fs::path& path, bool fast) {
     QImageWriter writer(QString::fromStdString(path.string()), "png");
-    writer.setCompression(1);  // fast zlib; the frames are mostly flat background
+    writer.setCompression(fast ? 25 : 100);
     if (!writer.write(image)) throw std::runtime_error("cannot write " + path.string() + ": " + writer.errorString().toStdString());
 }
 
@@ -66,7 +68,7 @@ public:
         std::error_code ignored;
         fs::remove(temporary_, ignored);
     }
-    void write(const QImage& frame) override { savePng(frame, temporary_); }
+    void write(const QImage& frame) override { savePng(frame, temporary_, false); }
     void finish() override { fs::rename(temporary_, path_); }
 
 private:
@@ -88,7 +90,7 @@ public:
     void write(const QImage& frame) override {
         char name[32];
         std::snprintf(name, sizeof name, "frame_%05ld.png", count_++);
-        savePng(frame, temporary_ / name);
+        savePng(frame, temporary_ / name, true);
     }
     void finish() override {
         if (fs::exists(path_)) fs::remove_all(path_);  // outputProblem() allowed only an earlier render's frames

@@ -79,7 +79,7 @@ EnergyInset::EnergyInset(const Trajectory& trajectory, bool showWork, QSize size
     double labelWidth = 0;
     for (double v = std::ceil(low_ / yStep) * yStep; v <= high_; v += yStep)
         labelWidth = std::max(labelWidth, metrics.horizontalAdvance(number(v, yStep) + " J"));
-    plot_ = QRectF(margin + labelWidth + 0.4 * f, margin + 2.6 * f + 0.4 * f, 0, 0);
+    plot_ = QRectF(margin + labelWidth + 0.4 * f, margin + 2.9 * f + 0.4 * f, 0, 0);
     plot_.setRight(size.width() - margin - 1.3 * f);  // room for the last time label
     plot_.setBottom(size.height() - margin - 1.3 * f);
 
@@ -144,7 +144,7 @@ void EnergyInset::paint(QPainter& painter, QPoint at, double t, const std::array
     const double step = niceStep((high_ - low_) / 40);
     const double column = (background_.width() - 2 * margin) / 2;
     for (int c = 0; c < curves; ++c) {
-        const QPointF baseline(margin + (c % 2) * column, margin + (c / 2 + 1) * 1.3 * f - 0.2 * f);
+        const QPointF baseline(margin + (c % 2) * column, margin + (c / 2 + 1) * 1.45 * f - 0.2 * f);
         painter.setBrush(kColours[c]);
         painter.setPen(Qt::NoPen);
         painter.drawRect(QRectF(baseline.x(), baseline.y() - 0.55 * f, 0.8 * f, 0.4 * f));
