@@ -64,18 +64,6 @@ double niceStep(double x) {
 
 bool stretches(PartShape shape) { return shape == PartShape::Rod || shape == PartShape::Bar; }
 
-double VisualPart::boundingRadius() const {
-    switch (shape) {
-        case PartShape::Box: return box.norm() / 2;
-        case PartShape::Sphere: return radius;
-        case PartShape::Cylinder:
-        case PartShape::Rod: return std::hypot(radius, length / 2);
-        case PartShape::Bar:
-        case PartShape::Sleeve: return std::hypot(std::sqrt(2.0) * radius, length / 2);
-    }
-    return radius;
-}
-
 void VisualBounds::add(const Eigen::Vector3d& point, double radius) {
     min = min.cwiseMin((point.array() - radius).matrix());
     max = max.cwiseMax((point.array() + radius).matrix());

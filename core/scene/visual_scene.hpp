@@ -62,9 +62,6 @@ struct VisualPart {
                                       // last along the chain; -1: fixed in the world
     // --- pose(q, t) ---
     Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  // part frame in the world
-
-    // Radius of a sphere about the part's origin that holds the whole solid.
-    double boundingRadius() const;
 };
 
 // A coordinate frame drawn as an x/y/z triad (red/green/blue).
