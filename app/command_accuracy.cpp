@@ -14,6 +14,7 @@
 #include "app/cli_options.hpp"
 #include "app/command_usage.hpp"
 #include "app/commands.hpp"
+#include "app/offscreen_gui.hpp"
 #include "app/scene_loading.hpp"
 #include "core/simulation/scene_validation.hpp"
 #include "core/io/atomic_file.hpp"
@@ -139,15 +140,7 @@ int accuracyCommand(const Args& args) {
     if (options.has("csv"))
         saveFileAtomically(options.text("csv"), [&](std::ostream& out) { writeCsv(result, out); }, Backup::None);
     if (!plot.empty()) {
-        // Fonts need a QGuiApplication; with no display, render offscreen.
-        if (std::getenv("DISPLAY") == nullptr && std::getenv("WAYLAND_DISPLAY") == nullptr &&
-            std::getenv("QT_QPA_PLATFORM") == nullptr)
-            setenv("QT_QPA_PLATFORM", "offscreen", 1);
-        static int argc = 1;
-        static char name[] = "lagrangelab";
-        static char* argv[] = {name, nullptr};
-        std::unique_ptr<QGuiApplication> app;
-        if (!QGuiApplication::instance()) app = std::make_unique<QGuiApplication>(argc, argv);
+        const auto app = makeGuiApplication();  // fonts
         QString error;
         if (!ui::saveWorkPrecisionPlot(result, QString::fromStdString(plot), &error))
             throw std::runtime_error(error.toStdString());

@@ -8,6 +8,7 @@
 #include "app/cli_options.hpp"
 #include "app/command_usage.hpp"
 #include "app/commands.hpp"
+#include "app/progress_bar.hpp"
 #include "app/scene_loading.hpp"
 #include "core/io/trajectory_file.hpp"
 #include "core/simulation/scene_validation.hpp"
@@ -16,29 +17,6 @@
 
 namespace ll::cli {
 namespace {
-
-// A progress bar on a terminal, redrawn at most every percent.
-class ProgressBar {
-public:
-    explicit ProgressBar(bool enabled) : enabled_(enabled) {}
-    ~ProgressBar() {
-        if (enabled_ && drawn_) std::fprintf(stderr, "\r%*s\r", 60, "");
-    }
-    void operator()(double fraction) {
-        const int percent = static_cast<int>(fraction * 100);
-        if (!enabled_ || percent == last_) return;
-        last_ = percent;
-        drawn_ = true;
-        const int width = 40, filled = percent * width / 100;
-        std::fprintf(stderr, "\r[%.*s%*s] %3d%%", filled, "########################################", width - filled, "", percent);
-        std::fflush(stderr);
-    }
-
-private:
-    bool enabled_;
-    bool drawn_ = false;
-    int last_ = -1;
-};
 
 void printSummary(const Scene& scene, const SimulationSettings& settings, const SimulationResult& r) {
     const SimulationStats& s = r.stats;

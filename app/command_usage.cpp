@@ -11,7 +11,7 @@ struct CommandText {
     const char* summary;
 };
 
-constexpr std::array<CommandText, 7> commands{{
+constexpr std::array<CommandText, 8> commands{{
     {"eval", "SCENE --q v1,... --qd v1,... [--t T] [--tau v1,...]",
      "B, C, g, Q, q̈, E_kin, E_pot at one state, as JSON"},
     {"simulate",
@@ -20,15 +20,22 @@ constexpr std::array<CommandText, 7> commands{{
      "integrate the equations of motion; trajectory to --out or CSV on stdout, summary on stderr"},
     {"derive", "SCENE [--format text|latex|json] [--steps 0-8] [--symbolic] [--numeric] [--timings]",
      "the model step by step as the course notes derive it (symbolic, GiNaC)"},
+    {"render",
+     "SCENE --out FILE.mp4|.webm|.gif|.png|FOLDER [--duration T] [--fps F] [--size WxH]\n"
+     "[--camera front|side|top|iso|az,el[,dist]] [--speed X] [--overlay time,energy,name|none]\n"
+     "[--trail on|off] [--frames on|off] [--at T] [--msaa 0|2|4|8]",
+     "simulate and render the 3D scene headless (no X server needed) to a video, a still or PNG frames"},
     {"integrators", "", "the integrators with order, kind and when to use each"},
     {"accuracy",
      "SCENE [--integrators a,b,...] [--tolerances 1e-3..1e-12] [--steps dt1,dt2,...] [--duration T]\n"
      "[--repeats N] [--reference-tol X] [--out plot.svg|png] [--csv FILE]",
      "work-precision: error, energy drift, CPU time, evaluations and steps per integrator and setting"},
-    {"bench", "[SCENE...] [--batches N] [--rhs | --derive]",
+    {"bench", "[SCENE...] [--batches N] [--rhs | --derive | --cancel | --render]",
      "median times of B, C, g, forward/inverse dynamics and one simulated second, beside KDL\n"
      "(--rhs: one right-hand side of the PUMA 560 with no effects, gravity only, all effects;\n"
-     " --derive: the whole symbolic derivation per parameter mode)"},
+     " --derive: the whole symbolic derivation per parameter mode;\n"
+     " --cancel: how soon a derivation stops after its cancel flag is set;\n"
+     " --render: headless export of 10 s of the PUMA 560 to MP4, render-only frames/s, peak memory)"},
     {"help", "[COMMAND]", "this overview, or the usage of COMMAND (also: lagrangelab COMMAND --help)"},
 }};
 

@@ -14,5 +14,8 @@ int integratorsCommand(const Args& args);
 int benchCommand(const Args& args);
 int accuracyCommand(const Args& args);
 int deriveCommand(const Args& args);
+int renderCommand(const Args& args);
+// `bench --render`: the cost of headless export (app/bench_render.cpp).
+int benchRender(const std::vector<std::string>& scenes, int runs);
 
 }  // namespace ll::cli

@@ -394,7 +394,7 @@ private slots:
         QTest::newRow("derive") << "derive" << "SCENE [--format text|latex|json] [--steps 0-8]";
         QTest::newRow("integrators") << "integrators" << "";
         QTest::newRow("accuracy") << "accuracy" << "SCENE [--integrators a,b,...]";
-        QTest::newRow("bench") << "bench" << "[SCENE...] [--batches N] [--rhs | --derive]";
+        QTest::newRow("bench") << "bench" << "[SCENE...] [--batches N] [--rhs | --derive | --cancel | --render]";
     }
     void commandHelpPrintsItsUsage() {
         QFETCH(QString, command);

@@ -1,0 +1,139 @@
+// `lagrangelab bench --render [SCENE] [--batches N]`: what headless export costs.
+//  1. The whole `render` pipeline, 10 s of the scene at 30 fps, 1280x720, MP4 with every
+//     overlay: wall time (median of N runs) and where it goes per stage.
+//  2. Render-only frames per second (OSG draw into the FBO, glFinish), with and without
+//     4× MSAA, and with the read-back.
+//  3. Peak memory of `lagrangelab render` at 1920x1080 for 10 s and 60 s of video
+//     (run as a child process; its own report of its and ffmpeg's peak RSS).
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "app/commands.hpp"
+#include "app/offscreen_gui.hpp"
+#include "app/scene_loading.hpp"
+#include "core/scene/trajectory_sampler.hpp"
+#include "core/scene/visual_scene.hpp"
+#include "core/pipeline/scene_simulation.hpp"
+#include "ui/animation_export.hpp"
+#include "ui/headless_renderer.hpp"
+#include "ui/osg_scene.hpp"
+
+extern char** environ;
+
+namespace ll::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+// Frames per second of `frames` frames of the trajectory (pose + draw [+ read-back]).
+double framesPerSecond(const Scene& scene, const Trajectory& trajectory, int samples, bool readBack, int frames) {
+    VisualScene visual(scene);
+    visual.fitToMotion(trajectory);
+    ui::OsgScene graph(visual);
+    ui::HeadlessRenderer gl(1280, 720, samples);
+    gl.setScene(graph.root());
+    ui::applyCameraView(*gl.camera(), cameraView(visual, CameraSpec{}, gl.aspect()), gl.aspect());
+    const TrajectorySampler sampler(trajectory);
+    Eigen::VectorXd q(sampler.dof()), qd(sampler.dof());
+    QImage image;
+    gl.draw();  // first frame compiles the scene's GL objects
+    const auto start = Clock::now();
+    for (int k = 0; k < frames; ++k) {
+        const double t = sampler.startTime() + k / 30.0;
+        sampler.sample(t, q, qd);
+        visual.pose(q, t);
+        graph.update(visual);
+        gl.draw();
+        if (readBack) gl.readBack(image);
+    }
+    return frames / std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Runs `lagrangelab render` as a child; returns its "peak memory: …" line.
+std::string peakMemory(const std::string& scene, double duration, const fs::path& out) {
+    const fs::path log = fs::temp_directory_path() / ("lagrangelab-bench-" + std::to_string(::getpid()) + ".log");
+    const std::string seconds = std::to_string(duration);
+    std::vector<std::string> args = {"/proc/self/exe", "render", scene, "--duration", seconds, "--size", "1920x1080", "--out", out.string()};
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&actions, 2, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+    pid_t pid = 0;
+    const int error = posix_spawn(&pid, "/proc/self/exe", &actions, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    if (error != 0) return "could not start the render";
+    int status = 0;
+    waitpid(pid, &status, 0);
+    std::ifstream in(log);
+    std::string line, found = "render failed (exit " + std::to_string(WEXITSTATUS(status)) + ")";
+    while (std::getline(in, line))
+        if (line.rfind("peak memory", 0) == 0) found = line;
+    fs::remove(log);
+    fs::remove(out);
+    return found;
+}
+
+}  // namespace
+
+int benchRender(const std::vector<std::string>& scenes, int runs) {
+    const std::string path = scenes.empty() ? std::string(LL_EXAMPLES_DIR) + "/puma560.json" : scenes.front();
+    Scene scene = loadSceneReportingWarnings(path);
+    scene.simulation.duration = 10.0;
+    const auto app = makeGuiApplication();
+    const Trajectory trajectory = simulate(scene, scene.simulation).trajectory;
+    const fs::path dir = fs::temp_directory_path();
+    const fs::path video = dir / ("lagrangelab-bench-" + std::to_string(::getpid()) + ".mp4");
+
+    std::printf("%s, headless (EGL surfaceless), 1280x720\n\n", scene.name.c_str());
+    ui::ExportSettings settings;
+    settings.out = video.string();
+    settings.duration = 10.0;
+    ui::ExportTimings last;
+    for (int samples : {4, 0}) {
+        settings.samples = samples;
+        std::vector<double> wall;
+        for (int r = 0; r < runs; ++r) {
+            last = ui::exportAnimation(scene, trajectory, settings);
+            wall.push_back(last.total);
+            fs::remove(video);
+        }
+        std::printf("render 10 s at 30 fps to MP4 (H.264) with overlays, 300 frames, %s: %.2f s wall (median of %d; %.1f frames/s, "
+                    "%.2fx real time)\n",
+                    samples ? "4x MSAA (default)" : "--msaa 0", median(wall), runs, 300 / median(wall), 10.0 / median(wall));
+        std::printf("  last run per stage [s]: setup %.2f, pose %.2f, draw %.2f, read-back %.2f, overlay %.2f, to ffmpeg %.2f\n",
+                    last.setup, last.pose, last.draw, last.readBack, last.overlay, last.write);
+    }
+    std::printf("  renderer: %s\n\n", last.renderer.c_str());
+
+    std::printf("render only (pose + OSG draw + glFinish), frames/s over 150 frames:\n");
+    std::printf("  4x MSAA %.1f, no MSAA %.1f; with read-back: 4x MSAA %.1f, no MSAA %.1f\n\n",
+                framesPerSecond(scene, trajectory, 4, false, 150), framesPerSecond(scene, trajectory, 0, false, 150),
+                framesPerSecond(scene, trajectory, 4, true, 150), framesPerSecond(scene, trajectory, 0, true, 150));
+
+    std::printf("peak resident memory of `lagrangelab render` at 1920x1080, MP4:\n");
+    for (double seconds : {10.0, 60.0})
+        std::printf("  %2.0f s of video: %s\n", seconds, peakMemory(path, seconds, dir / ("lagrangelab-bench-memory.mp4")).c_str());
+    return 0;
+}
+
+}  // namespace ll::cli

@@ -1,0 +1,122 @@
+#include "core/scene/camera_view.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+namespace ll {
+namespace {
+
+constexpr double kDegree = 3.14159265358979323846 / 180.0;
+
+struct Basis {
+    Eigen::Vector3d up, right, back;
+};
+
+Basis sceneBasis(const Eigen::Vector3d& up) {
+    Basis basis;
+    basis.up = up.normalized();
+    Eigen::Vector3d r = std::abs(basis.up.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+    r -= r.dot(basis.up) * basis.up;
+    basis.right = r.normalized();
+    basis.back = basis.up.cross(basis.right);
+    return basis;
+}
+
+std::vector<Eigen::Vector3d> corners(const VisualBounds& b) {
+    std::vector<Eigen::Vector3d> out;
+    for (int c = 0; c < 8; ++c)
+        out.emplace_back((c & 1) ? b.max.x() : b.min.x(), (c & 2) ? b.max.y() : b.min.y(), (c & 4) ? b.max.z() : b.min.z());
+    return out;
+}
+
+}  // namespace
+
+CameraSpec parseCameraSpec(const std::string& text) {
+    CameraSpec spec;
+    if (text == "auto") return spec;
+    if (text == "front") spec.preset = CameraSpec::Preset::Front;
+    else if (text == "side") spec.preset = CameraSpec::Preset::Side;
+    else if (text == "top") spec.preset = CameraSpec::Preset::Top;
+    else if (text == "iso") spec.preset = CameraSpec::Preset::Iso;
+    if (spec.preset != CameraSpec::Preset::Auto) return spec;
+
+    std::vector<double> values;
+    std::stringstream in(text);
+    std::string item;
+    bool ok = !text.empty();
+    while (ok && std::getline(in, item, ',')) {
+        std::istringstream number(item);
+        double v = 0;
+        number >> v;
+        ok = !number.fail() && number.eof() && std::isfinite(v);
+        values.push_back(v);
+    }
+    ok = ok && (values.size() == 2 || values.size() == 3) && std::abs(values[1]) <= 90 && (values.size() == 2 || values[2] > 0);
+    if (!ok)
+        throw std::invalid_argument("unknown camera: expected front, side, top, iso, auto or azimuth,elevation[,distance] "
+                                    "(degrees, elevation within ±90, distance > 0 in metres)");
+    spec.preset = CameraSpec::Preset::Angles;
+    spec.azimuth = values[0];
+    spec.elevation = values[1];
+    spec.distance = values.size() == 3 ? values[2] : 0.0;
+    return spec;
+}
+
+bool looksPlanar(const VisualScene& scene) {
+    if (scene.bounds.empty()) return false;
+    const Basis basis = sceneBasis(scene.up);
+    double lowB = 1e300, highB = -1e300, lowR = 1e300, highR = -1e300, lowU = 1e300, highU = -1e300;
+    for (const Eigen::Vector3d& p : corners(scene.bounds)) {
+        lowB = std::min(lowB, p.dot(basis.back)), highB = std::max(highB, p.dot(basis.back));
+        lowR = std::min(lowR, p.dot(basis.right)), highR = std::max(highR, p.dot(basis.right));
+        lowU = std::min(lowU, p.dot(basis.up)), highU = std::max(highU, p.dot(basis.up));
+    }
+    return highB - lowB < 0.35 * std::max(highR - lowR, highU - lowU);
+}
+
+CameraView cameraView(const VisualScene& scene, const CameraSpec& spec, double aspect) {
+    double azimuth = spec.azimuth, elevation = spec.elevation;
+    CameraSpec::Preset preset = spec.preset;
+    if (preset == CameraSpec::Preset::Auto) preset = looksPlanar(scene) ? CameraSpec::Preset::Front : CameraSpec::Preset::Iso;
+    switch (preset) {
+        case CameraSpec::Preset::Front: azimuth = 0, elevation = 0; break;
+        case CameraSpec::Preset::Side: azimuth = 90, elevation = 0; break;
+        case CameraSpec::Preset::Top: azimuth = 0, elevation = 90; break;
+        case CameraSpec::Preset::Iso: azimuth = 45, elevation = 30; break;
+        case CameraSpec::Preset::Auto:
+        case CameraSpec::Preset::Angles: break;
+    }
+    const Basis basis = sceneBasis(scene.up);
+    const double az = azimuth * kDegree, el = elevation * kDegree;
+    const Eigen::Vector3d toEye =
+        (std::cos(el) * (-std::cos(az) * basis.back + std::sin(az) * basis.right) + std::sin(el) * basis.up).normalized();
+
+    CameraView view;
+    view.centre = scene.bounds.empty() ? Eigen::Vector3d::Zero() : scene.bounds.centre();
+    // The picture's up: the scene's up, or (looking straight down or up) the back direction.
+    view.up = std::abs(toEye.dot(basis.up)) > 0.999 ? Eigen::Vector3d(basis.back * (toEye.dot(basis.up) > 0 ? 1 : -1)) : basis.up;
+    const Eigen::Vector3d right = (-toEye).cross(view.up).normalized();
+    const Eigen::Vector3d upInPicture = right.cross(-toEye);
+
+    double distance = spec.distance;
+    const double radius = std::max(scene.bounds.radius(), 1e-6);
+    if (distance <= 0) {
+        // Every corner inside the frustum, with 5 % to spare on each side.
+        const double tanY = std::tan(view.fovy * kDegree / 2) * 0.95, tanX = tanY * aspect;
+        distance = 0.0;
+        for (const Eigen::Vector3d& p : corners(scene.bounds)) {
+            const Eigen::Vector3d v = p - view.centre;
+            const double towardEye = v.dot(toEye);
+            distance = std::max({distance, towardEye + std::abs(v.dot(right)) / tanX, towardEye + std::abs(v.dot(upInPicture)) / tanY});
+        }
+    }
+    view.eye = view.centre + distance * toEye;
+    view.zNear = std::max(1e-3 * distance, distance - 2 * radius);
+    view.zFar = distance + 4 * radius;
+    return view;
+}
+
+}  // namespace ll

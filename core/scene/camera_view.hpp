@@ -1,0 +1,49 @@
+#pragma once
+// Where the camera stands to see a VisualScene, renderer-neutral.
+//
+// Directions are taken in the scene's own basis: up u (−gravity), right r (the world x
+// axis, or y when x is nearly vertical, made perpendicular to u) and back b = u × r.
+// Azimuth φ turns from the front towards the right, elevation ε lifts towards up; the
+// camera looks at the centre of the scene's bounds from the direction
+//   d = cos ε (−cos φ b + sin φ r) + sin ε u.
+// Presets: front (φ 0°, ε 0°), side (90°, 0°), top (0°, 90°), iso (45°, 30°). For the
+// x–y plane scenes with y up, front looks along −z, so the plane is seen face on.
+// `auto` is front for a scene whose bounds are flat along b (a planar mechanism seen
+// face on), iso otherwise. Distance 0 fits the bounds: every corner of the bounds box
+// lies inside the view, so the scene never leaves the frame.
+#include <string>
+
+#include <Eigen/Core>
+
+#include "core/scene/visual_scene.hpp"
+
+namespace ll {
+
+struct CameraSpec {
+    enum class Preset { Auto, Front, Side, Top, Iso, Angles };
+    Preset preset = Preset::Auto;
+    double azimuth = 0.0;    // [deg], Angles only
+    double elevation = 0.0;  // [deg], Angles only
+    double distance = 0.0;   // [m] from the centre; 0: fit the bounds
+};
+
+// "auto", "front", "side", "top", "iso" or "azimuth,elevation[,distance]" (degrees,
+// metres). Throws std::invalid_argument saying what is accepted.
+CameraSpec parseCameraSpec(const std::string& text);
+
+struct CameraView {
+    Eigen::Vector3d eye = Eigen::Vector3d::Zero();
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();  // looked at
+    Eigen::Vector3d up = Eigen::Vector3d::UnitZ();     // the picture's up direction
+    double fovy = 30.0;                                // vertical field of view [deg]
+    double zNear = 0.01, zFar = 100.0;                 // [m]
+};
+
+// The view of `scene` (its `bounds`) for a picture of width/height `aspect`.
+CameraView cameraView(const VisualScene& scene, const CameraSpec& spec, double aspect);
+
+// Whether the bounds of `scene` are flat along its back direction b (less than 35 %
+// of their largest extent across it): `auto` then looks from the front.
+bool looksPlanar(const VisualScene& scene);
+
+}  // namespace ll

@@ -1,0 +1,369 @@
+#include "core/scene/visual_scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "core/kinematics/forward_kinematics.hpp"
+#include "core/model/robot_data.hpp"
+#include "core/symbolic/compiled_body_poses.hpp"
+
+namespace ll {
+namespace {
+
+// Proportions of the stick figure, in units of the robot's reach.
+constexpr double kLinkRadius = 0.02;
+constexpr double kJointRadius = 0.034, kJointLength = 0.1;
+constexpr double kSleeveHalfSide = 0.04, kSleeveLength = 0.2, kBarHalfSide = 0.022;
+constexpr double kComRadius = 0.055;  // of the heaviest link; others by (m / m_max)^(1/3)
+constexpr double kEndEffectorRadius = 0.03;
+constexpr double kTriadLength = 0.12;
+constexpr double kPedestalRadius = 0.12, kPedestalThickness = 0.04;
+constexpr double kZero = 1e-9;  // [m] a DH length below this draws no segment
+
+Rgba rgb(int r, int g, int b) { return {r / 255.0f, g / 255.0f, b / 255.0f, 1.0f}; }
+
+// Link colours, one per link in turn (colour-blind-safe Okabe–Ito hues).
+Rgba linkColor(int i) {
+    static const Rgba palette[] = {rgb(0, 114, 178), rgb(230, 159, 0), rgb(0, 158, 115),
+                                   rgb(204, 121, 167), rgb(86, 180, 233), rgb(213, 94, 0)};
+    return palette[i % 6];
+}
+const Rgba kJointColor = rgb(105, 112, 124);
+const Rgba kComColor = rgb(240, 200, 40);
+const Rgba kEndEffectorColor = rgb(200, 30, 40);
+const Rgba kPedestalColor = rgb(120, 124, 130);
+
+// "#rrggbb" (validated by the scene loader), or the palette's i-th colour.
+Rgba parseColor(const std::string& text, int i) {
+    if (text.size() != 7 || text[0] != '#') return linkColor(i);
+    const auto hex = [&](int k) { return std::stoi(text.substr(k, 2), nullptr, 16); };
+    return rgb(hex(1), hex(3), hex(5));
+}
+
+// A part along the segment from a to b: centred between them, z along b − a.
+void placeAlong(VisualPart& part, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+    const Eigen::Vector3d along = b - a;
+    part.length = along.norm();
+    part.pose.setIdentity();
+    part.pose.translation() = (a + b) / 2;
+    if (part.length > 0)
+        part.pose.linear() = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), along).toRotationMatrix();
+}
+
+// 1, 2 or 5 times a power of ten, the nearest at or above x.
+double niceStep(double x) {
+    const double decade = std::pow(10.0, std::floor(std::log10(x)));
+    for (double m : {1.0, 2.0, 5.0})
+        if (m * decade >= x * 0.999) return m * decade;
+    return 10 * decade;
+}
+
+}  // namespace
+
+bool stretches(PartShape shape) { return shape == PartShape::Rod || shape == PartShape::Bar; }
+
+void VisualBounds::add(const Eigen::Vector3d& point, double radius) {
+    min = min.cwiseMin((point.array() - radius).matrix());
+    max = max.cwiseMax((point.array() + radius).matrix());
+}
+
+// How each part moves. Robot: forward kinematics into RobotData, then one rule per part.
+// Lagrangian: the compiled body poses.
+struct VisualScene::Rig {
+    enum class Rule { Fixed, JointMarker, Sleeve, FirstSegment, SecondSegment, Com, EndEffector, Body };
+    struct PartRule {
+        Rule rule = Rule::Fixed;
+        int index = 0;       // joint (robot) or body (Lagrangian)
+        bool bar = false;    // a segment drawn as the prismatic joint's bar
+    };
+
+    RobotModel robot;
+    std::optional<RobotData> data;
+    std::optional<BodyPoses> bodies;
+    std::vector<BodyPose> bodyPoses;
+    std::vector<PartRule> rules;  // one per part
+    int n = 0;
+
+    // The point where link i turns from its first segment to its second: standard
+    // o_{i-1} + d_i z_{i-1} = o_i − a_i x_i; modified o_{i-1} + a_{i-1} x_{i-1}.
+    Eigen::Vector3d elbow(int i) const {
+        const Eigen::Isometry3d& from = data->T_0i[i];
+        const Eigen::Isometry3d& to = data->T_0i[i + 1];
+        const double a = robot.joints[i].dh.a;
+        if (robot.convention == DhConvention::Standard) return to.translation() - a * to.linear().col(0);
+        return from.translation() + a * from.linear().col(0);
+    }
+    // The frame whose z is joint i's axis: z_{i-1} (standard) or z_i (modified).
+    const Eigen::Isometry3d& jointFrame(int i) const {
+        return robot.convention == DhConvention::Standard ? data->T_0i[i] : data->T_0i[i + 1];
+    }
+    // Whether the d segment (along the joint axis) is link i's first segment.
+    bool dFirst() const { return robot.convention == DhConvention::Standard; }
+};
+
+VisualScene::~VisualScene() = default;
+VisualScene::VisualScene(VisualScene&&) noexcept = default;
+VisualScene& VisualScene::operator=(VisualScene&&) noexcept = default;
+
+int VisualScene::dof() const { return rig_->n; }
+
+VisualScene::VisualScene(const Scene& scene) : rig_(std::make_unique<Rig>()) {
+    using Rule = Rig::Rule;
+    Rig& rig = *rig_;
+    name = scene.name;
+    rig.n = scene.dof();
+    const auto add = [&](VisualPart part, Rig::PartRule rule) {
+        parts.push_back(std::move(part));
+        rig.rules.push_back(rule);
+    };
+
+    if (scene.lagrangian) {
+        rig.bodies = symbolic::compileBodyPoses(scene);  // takes the GiNaC lock
+        rig.bodyPoses.resize(rig.bodies->count());
+        const std::vector<VisualBody>& bodies = scene.lagrangian->bodies;
+        for (int b = 0; b < static_cast<int>(bodies.size()); ++b) {
+            const VisualBody& body = bodies[b];
+            VisualPart part;
+            part.name = body.name.empty() ? "body " + std::to_string(b + 1) : body.name;
+            part.role = PartRole::Body;
+            part.color = parseColor(body.color, b);
+            const std::vector<double>& s = body.size;
+            switch (body.shape) {
+                case BodyShape::Box:
+                    part.shape = PartShape::Box;
+                    part.box = Eigen::Vector3d(s.at(0), s.at(1), s.at(2));
+                    break;
+                case BodyShape::Sphere:
+                    part.shape = PartShape::Sphere;
+                    part.radius = s.at(0);
+                    endEffector = static_cast<int>(parts.size());  // the trail follows the last sphere (a bob)
+                    break;
+                case BodyShape::Cylinder:
+                    part.shape = PartShape::Cylinder;
+                    part.radius = s.at(0);
+                    part.length = s.at(1);
+                    break;
+                case BodyShape::Rod:
+                    part.shape = PartShape::Rod;
+                    part.radius = s.at(0);
+                    break;
+            }
+            add(part, {Rule::Body, b, false});
+        }
+        frames.push_back({"world", 0.0, Eigen::Isometry3d::Identity()});
+        pose(scene.initial.q, 0.0);
+        // Sizes come from the bodies: the scale is the extent of the initial pose.
+        const VisualBounds initial = currentBounds();
+        const Eigen::Vector3d extent = initial.empty() ? Eigen::Vector3d::Ones() : Eigen::Vector3d(initial.max - initial.min);
+        scale = std::max(extent.maxCoeff(), 1e-3);
+        frames[0].axisLength = kTriadLength * scale;
+        // A system drawn in the x–y plane (a pendulum typed by hand) is seen with y up.
+        if (extent.z() < 0.35 * std::max(extent.x(), extent.y())) up = Eigen::Vector3d::UnitY();
+    } else {
+        rig.robot = scene.robot;
+        rig.data.emplace(rig.robot);
+        const int n = rig.n;
+        const bool standard = rig.dFirst();
+        // Reach: the stick figure's length at the initial state (prismatic joints at q0).
+        double reach = 0.0, heaviest = 0.0;
+        for (int i = 0; i < n; ++i) {
+            const DhRow& dh = rig.robot.joints[i].dh;
+            const double q0 = dh.type == JointType::Prismatic && i < scene.initial.q.size() ? scene.initial.q[i] : 0.0;
+            reach += std::abs(dh.a) + std::abs(dh.d + q0);
+            heaviest = std::max(heaviest, rig.robot.joints[i].link.mass);
+        }
+        scale = reach > kZero ? reach : 0.5;
+        const double R = scale;
+        if (scene.effects.gravity && scene.effects.gravity->norm() > 0) up = -scene.effects.gravity->normalized();
+
+        // Pedestal: a disc behind the first joint, on its axis (fixed in the world).
+        if (n > 0) {
+            forwardKinematics(rig.robot, *rig.data, Eigen::VectorXd::Zero(n));
+            VisualPart pedestal;
+            pedestal.name = "pedestal";
+            pedestal.shape = PartShape::Cylinder;
+            pedestal.role = PartRole::Pedestal;
+            pedestal.radius = kPedestalRadius * R;
+            pedestal.length = kPedestalThickness * R;
+            pedestal.color = kPedestalColor;
+            pedestal.pose = rig.jointFrame(0);
+            const double behind = (rig.robot.joints[0].dh.type == JointType::Revolute ? kJointLength : kSleeveLength) / 2 + kPedestalThickness / 2;
+            pedestal.pose.translation() = rig.data->axisPoint[0] - behind * R * rig.data->axis[0];
+            add(pedestal, {Rule::Fixed, 0, false});
+        }
+        for (int i = 0; i < n; ++i) {
+            const Joint& joint = rig.robot.joints[i];
+            const bool prismatic = joint.dh.type == JointType::Prismatic;
+            const std::string number = std::to_string(i + 1);
+            VisualPart marker;
+            marker.name = "joint " + number;
+            marker.role = PartRole::Joint;
+            marker.color = kJointColor;
+            marker.coordinate = i;
+            if (prismatic) {
+                marker.shape = PartShape::Sleeve;
+                marker.radius = kSleeveHalfSide * R;
+                marker.length = kSleeveLength * R;
+                add(marker, {Rule::Sleeve, i, false});
+            } else {
+                marker.shape = PartShape::Cylinder;
+                marker.radius = kJointRadius * R;
+                marker.length = kJointLength * R;
+                add(marker, {Rule::JointMarker, i, false});
+            }
+            // The two segments of link i; the one along the joint axis is the bar of a
+            // prismatic joint.
+            const double dLength = std::abs(joint.dh.d), aLength = std::abs(joint.dh.a);
+            for (int segment = 0; segment < 2; ++segment) {
+                const bool isD = (segment == 0) == standard;
+                if (!(isD ? (prismatic || dLength > kZero) : aLength > kZero)) continue;
+                VisualPart link;
+                link.name = "link " + number;
+                link.role = PartRole::Link;
+                link.color = linkColor(i);
+                link.coordinate = i;
+                const bool bar = isD && prismatic;
+                link.shape = bar ? PartShape::Bar : PartShape::Rod;
+                link.radius = (bar ? kBarHalfSide : kLinkRadius) * R;
+                add(link, {segment == 0 ? Rule::FirstSegment : Rule::SecondSegment, i, bar});
+            }
+            if (joint.link.mass > 0) {
+                VisualPart com;
+                com.name = "COM " + number;
+                com.shape = PartShape::Sphere;
+                com.role = PartRole::CentreOfMass;
+                com.radius = kComRadius * R * std::cbrt(joint.link.mass / heaviest);
+                com.color = kComColor;
+                com.coordinate = i;
+                add(com, {Rule::Com, i, false});
+            }
+        }
+        if (n > 0) {
+            VisualPart tip;
+            tip.name = "end effector";
+            tip.shape = PartShape::Sphere;
+            tip.role = PartRole::EndEffector;
+            tip.radius = kEndEffectorRadius * R;
+            tip.color = kEndEffectorColor;
+            tip.coordinate = n - 1;
+            endEffector = static_cast<int>(parts.size());
+            add(tip, {Rule::EndEffector, n - 1, false});
+        }
+        for (int k = 0; k <= n; ++k) frames.push_back({std::to_string(k), kTriadLength * R, Eigen::Isometry3d::Identity()});
+        pose(scene.initial.q, 0.0);
+    }
+    bounds = currentBounds();
+    placeGround();
+}
+
+void VisualScene::pose(const Eigen::VectorXd& q, double t) {
+    using Rule = Rig::Rule;
+    Rig& rig = *rig_;
+    if (rig.bodies) {
+        rig.bodies->evaluate(q, t, rig.bodyPoses);
+        for (std::size_t p = 0; p < parts.size(); ++p) {
+            const BodyPose& body = rig.bodyPoses[rig.rules[p].index];
+            parts[p].pose = body.pose;
+            if (parts[p].shape == PartShape::Rod) parts[p].length = body.length;
+        }
+        return;
+    }
+    if (rig.n == 0) return;
+    RobotData& data = *rig.data;
+    forwardKinematics(rig.robot, data, q);
+    for (std::size_t p = 0; p < parts.size(); ++p) {
+        const Rig::PartRule& r = rig.rules[p];
+        VisualPart& part = parts[p];
+        const int i = r.index;
+        switch (r.rule) {
+            case Rule::Fixed:
+            case Rule::Body: break;
+            case Rule::JointMarker:
+                part.pose = rig.jointFrame(i);
+                part.pose.translation() = data.axisPoint[i];
+                break;
+            case Rule::Sleeve:
+                // Fixed to the previous link, at the bar's start.
+                part.pose = rig.jointFrame(i);
+                part.pose.translation() = rig.dFirst() ? data.T_0i[i].translation() : rig.elbow(i);
+                break;
+            case Rule::FirstSegment:
+            case Rule::SecondSegment: {
+                const bool first = r.rule == Rule::FirstSegment;
+                const Eigen::Vector3d a = first ? data.T_0i[i].translation() : rig.elbow(i);
+                const Eigen::Vector3d b = first ? rig.elbow(i) : data.T_0i[i + 1].translation();
+                placeAlong(part, a, b);
+                if (r.bar) part.pose.linear() = rig.jointFrame(i).linear();  // square faces follow the sleeve
+                break;
+            }
+            case Rule::Com:
+                part.pose = data.T_0i[i + 1];
+                part.pose.translation() = data.p_ci[i];
+                break;
+            case Rule::EndEffector: part.pose = data.T_0i[i + 1]; break;
+        }
+    }
+    for (std::size_t k = 0; k < frames.size(); ++k) frames[k].pose = data.T_0i[k];
+}
+
+VisualBounds VisualScene::currentBounds() const {
+    VisualBounds b;
+    for (const VisualPart& part : parts) {
+        // Tight enough that a flat mechanism stays flat: shapes along z by their two
+        // ends, boxes by their corners.
+        const Eigen::Vector3d c = part.pose.translation(), z = part.pose.linear().col(2);
+        switch (part.shape) {
+            case PartShape::Sphere: b.add(c, part.radius); break;
+            case PartShape::Box:
+                for (int k = 0; k < 8; ++k)
+                    b.add(part.pose * Eigen::Vector3d((k & 1 ? 0.5 : -0.5) * part.box.x(), (k & 2 ? 0.5 : -0.5) * part.box.y(),
+                                                      (k & 4 ? 0.5 : -0.5) * part.box.z()),
+                          0.0);
+                break;
+            default: {
+                const double across = part.shape == PartShape::Bar || part.shape == PartShape::Sleeve ? std::sqrt(2.0) * part.radius : part.radius;
+                b.add(c - z * part.length / 2, across);
+                b.add(c + z * part.length / 2, across);
+            }
+        }
+    }
+    for (const VisualFrame& frame : frames) b.add(frame.pose.translation(), frame.axisLength);
+    return b;
+}
+
+Eigen::Vector3d VisualScene::endEffectorPosition() const {
+    return endEffector >= 0 ? Eigen::Vector3d(parts[endEffector].pose.translation()) : Eigen::Vector3d::Zero();
+}
+
+void VisualScene::fitToMotion(const Trajectory& trajectory, int maxSamples) {
+    const int count = static_cast<int>(trajectory.size());
+    if (count == 0) return;
+    const int used = std::clamp(maxSamples, 2, std::max(2, count));
+    for (int k = 0; k < used; ++k) {
+        const int s = count == 1 ? 0 : static_cast<int>(std::lround(static_cast<double>(k) * (count - 1) / (used - 1)));
+        pose(trajectory.q[s], trajectory.t[s]);
+        const VisualBounds now = currentBounds();
+        bounds.add(now.min, 0.0);
+        bounds.add(now.max, 0.0);
+    }
+    placeGround();
+}
+
+void VisualScene::placeGround() {
+    // The plane just below the lowest point of the bounds along `up`.
+    double lowest = 1e300;
+    for (int corner = 0; corner < 8; ++corner) {
+        const Eigen::Vector3d p((corner & 1) ? bounds.max.x() : bounds.min.x(), (corner & 2) ? bounds.max.y() : bounds.min.y(),
+                                (corner & 4) ? bounds.max.z() : bounds.min.z());
+        lowest = std::min(lowest, up.dot(p));
+    }
+    if (bounds.empty()) lowest = 0.0;
+    lowest -= 0.01 * scale;
+    const Eigen::Vector3d c = bounds.empty() ? Eigen::Vector3d::Zero() : bounds.centre();
+    ground.centre = c - (up.dot(c) - lowest) * up;
+    ground.spacing = niceStep(scale / 8);
+    ground.halfSize = ground.spacing * std::ceil(1.25 * std::max(bounds.radius(), scale / 2) / ground.spacing);
+}
+
+}  // namespace ll

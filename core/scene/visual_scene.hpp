@@ -1,0 +1,132 @@
+#pragma once
+// The 3D picture of a scene, renderer-neutral (MuJoCo's abstract mjvScene idea): what
+// to draw and where, as plain data. Built once from a Scene; `pose(q, t)` then moves
+// every part with no allocation, and a renderer (ui/osg_scene.hpp, for the window and
+// the headless export alike) only copies poses into its transforms.
+//
+// A robot is drawn as the textbook's DH stick figure, solid (standard convention;
+// modified: along x_{i-1} by a_{i-1}, then along z_i by d_i):
+//   - link i: a rod from the origin o_{i-1} of frame i-1 along z_{i-1} by d_i, then a
+//     rod along x_i by a_i to o_i (segments of zero length are left out);
+//   - a revolute joint: a short cylinder on its axis; a prismatic joint: a square
+//     sleeve fixed on its axis and a square bar sliding in it whose visible length is
+//     d_i + q_i;
+//   - the centre of mass of each link with mass: a sphere whose volume is proportional
+//     to the mass; the end effector: a small sphere at o_n; a pedestal disc behind the
+//     first joint; a triad per DH frame 0..n.
+// A Lagrangian scene draws its own `bodies` (box, sphere, cylinder, rod), posed by
+// their compiled expressions of q and t, and the world triad.
+// Sizes scale with the robot's reach, so a 5 cm pendulum and a 2 m arm both look right.
+// Up is −gravity; with no gravity z, except a Lagrangian scene lying in the x–y plane
+// (a pendulum typed by hand), which gets y up.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "core/model/scene.hpp"
+#include "core/simulation/trajectory.hpp"
+
+namespace ll {
+
+// Solids in their own frame, centred on the frame's origin:
+//   Box       edges `box` (x, y, z)
+//   Sphere    `radius`
+//   Cylinder  `radius`, `length` along z (a revolute joint, a Lagrangian disc)
+//   Rod       round, `radius`, `length` along z: the length changes with the pose
+//   Bar       square cross-section of side 2·`radius`, `length` along z: changes with q
+//   Sleeve    square tube of outer side 2·`radius`, wall `radius`/4, `length` along z
+enum class PartShape { Box, Sphere, Cylinder, Rod, Bar, Sleeve };
+
+// What a part stands for (a renderer may style or hide by role).
+enum class PartRole { Link, Joint, CentreOfMass, EndEffector, Pedestal, Body };
+
+struct Rgba {
+    float r = 0.5f, g = 0.5f, b = 0.5f, a = 1.0f;
+};
+
+// True for the shapes whose `length` is set by every pose (a renderer draws them at
+// unit length and scales z).
+bool stretches(PartShape shape);
+
+struct VisualPart {
+    std::string name;                 // "link 2", "joint 3", "COM 1", or a body's name
+    PartShape shape = PartShape::Sphere;
+    PartRole role = PartRole::Body;
+    double radius = 0.0;              // [m]
+    double length = 0.0;              // [m] along the part's z
+    Eigen::Vector3d box = Eigen::Vector3d::Zero();  // [m] box edges
+    Rgba color;
+    int coordinate = -1;              // the joint or coordinate (0-based) whose motion moves it
+                                      // last along the chain; -1: fixed in the world
+    // --- pose(q, t) ---
+    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  // part frame in the world
+};
+
+// A coordinate frame drawn as an x/y/z triad (red/green/blue).
+struct VisualFrame {
+    std::string label;                // "0".."n" for the DH frames, "world"
+    double axisLength = 0.0;          // [m]
+    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  // filled by pose(q, t)
+};
+
+// The ground: a grid on the plane through `centre` perpendicular to `up`.
+struct VisualGround {
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    double halfSize = 1.0;            // [m] the grid spans ±halfSize along its two axes
+    double spacing = 0.1;             // [m] between grid lines
+};
+
+// An axis-aligned box in the world frame holding every part and triad.
+struct VisualBounds {
+    Eigen::Vector3d min = Eigen::Vector3d::Constant(1e300);
+    Eigen::Vector3d max = Eigen::Vector3d::Constant(-1e300);
+
+    bool empty() const { return min.x() > max.x(); }
+    void add(const Eigen::Vector3d& point, double radius);
+    Eigen::Vector3d centre() const { return (min + max) / 2; }
+    double radius() const { return empty() ? 0.0 : (max - min).norm() / 2; }  // bounding sphere
+};
+
+class VisualScene {
+public:
+    // Builds the parts of `scene` and poses them at its initial state. A Lagrangian
+    // scene's body expressions are compiled here (under the GiNaC lock); an
+    // expression that does not parse throws InputError naming lagrangian.bodies[i].
+    explicit VisualScene(const Scene& scene);
+    ~VisualScene();
+    VisualScene(VisualScene&&) noexcept;
+    VisualScene& operator=(VisualScene&&) noexcept;
+
+    std::string name;                  // the scene's name
+    Eigen::Vector3d up = Eigen::Vector3d::UnitZ();  // unit, world frame
+    double scale = 1.0;                // characteristic length [m]: the reach of a robot
+    std::vector<VisualPart> parts;
+    std::vector<VisualFrame> frames;   // DH frames 0..n, or the world frame
+    int endEffector = -1;              // the part whose path the trail draws; -1: none
+    VisualGround ground;
+    VisualBounds bounds;               // of the initial pose, then of the motion (fitToMotion)
+
+    int dof() const;
+    // Moves every part and frame to the configuration q (one value per coordinate) at
+    // time t. No allocation.
+    void pose(const Eigen::VectorXd& q, double t);
+    // Extends `bounds` over the poses of up to `maxSamples` samples of the trajectory
+    // (evenly spread, first and last included) and lays the ground below everything,
+    // so a camera fitted to `bounds` keeps the scene in view the whole time. Leaves
+    // the parts posed at the trajectory's last sample used.
+    void fitToMotion(const Trajectory& trajectory, int maxSamples = 400);
+    // The bounds of the current pose alone.
+    VisualBounds currentBounds() const;
+    // Position of the end effector part at the current pose (zero if there is none).
+    Eigen::Vector3d endEffectorPosition() const;
+
+private:
+    struct Rig;
+    std::unique_ptr<Rig> rig_;
+
+    void placeGround();
+};
+
+}  // namespace ll

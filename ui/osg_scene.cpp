@@ -1,0 +1,255 @@
+#include "ui/osg_scene.hpp"
+
+#include <cmath>
+#include <filesystem>
+
+#include <osg/BlendFunc>
+#include <osg/Depth>
+#include <osg/Geode>
+#include <osg/LineWidth>
+#include <osg/Material>
+#include <osg/ShapeDrawable>
+#include <osgText/Text>
+
+namespace ll::ui {
+namespace {
+
+osg::Matrixd toOsgMatrix(const Eigen::Matrix4d& m) {
+    // Eigen stores M column by column; OSG multiplies row vectors, v' = v M_osg with
+    // M_osg = Mᵀ stored row by row: the same 16 numbers in the same order.
+    return osg::Matrixd(m.data());
+}
+
+osg::Vec3 toOsg(const Eigen::Vector3d& v) { return osg::Vec3(float(v.x()), float(v.y()), float(v.z())); }
+
+void setMaterial(osg::Node& node, const Rgba& c) {
+    auto* material = new osg::Material;
+    const osg::Vec4 colour(c.r, c.g, c.b, c.a);
+    material->setDiffuse(osg::Material::FRONT_AND_BACK, colour);
+    material->setAmbient(osg::Material::FRONT_AND_BACK, osg::Vec4(colour.r() * 0.45f, colour.g() * 0.45f, colour.b() * 0.45f, 1));
+    material->setSpecular(osg::Material::FRONT_AND_BACK, osg::Vec4(0.3f, 0.3f, 0.3f, 1));
+    material->setShininess(osg::Material::FRONT_AND_BACK, 40);
+    node.getOrCreateStateSet()->setAttributeAndModes(material, osg::StateAttribute::ON);
+}
+
+osg::ref_ptr<osg::TessellationHints> hints() {
+    osg::ref_ptr<osg::TessellationHints> h = new osg::TessellationHints;
+    h->setDetailRatio(1.6f);
+    return h;
+}
+
+void addShape(osg::Geode& geode, osg::Shape* shape) { geode.addDrawable(new osg::ShapeDrawable(shape, hints().get())); }
+
+// The solid of a part in its own frame; stretching parts at unit length.
+osg::ref_ptr<osg::Geode> solid(const VisualPart& part) {
+    osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+    const float r = float(part.radius), length = float(part.length);
+    switch (part.shape) {
+        case PartShape::Box:
+            addShape(*geode, new osg::Box(osg::Vec3(), float(part.box.x()), float(part.box.y()), float(part.box.z())));
+            break;
+        case PartShape::Sphere: addShape(*geode, new osg::Sphere(osg::Vec3(), r)); break;
+        case PartShape::Cylinder: addShape(*geode, new osg::Cylinder(osg::Vec3(), r, length)); break;
+        case PartShape::Rod: addShape(*geode, new osg::Cylinder(osg::Vec3(), r, 1.0f)); break;
+        case PartShape::Bar: addShape(*geode, new osg::Box(osg::Vec3(), 2 * r, 2 * r, 1.0f)); break;
+        case PartShape::Sleeve: {
+            const float wall = r / 4, mid = r - wall / 2;
+            addShape(*geode, new osg::Box(osg::Vec3(mid, 0, 0), wall, 2 * r, length));
+            addShape(*geode, new osg::Box(osg::Vec3(-mid, 0, 0), wall, 2 * r, length));
+            addShape(*geode, new osg::Box(osg::Vec3(0, mid, 0), 2 * r - 2 * wall, wall, length));
+            addShape(*geode, new osg::Box(osg::Vec3(0, -mid, 0), 2 * r - 2 * wall, wall, length));
+            break;
+        }
+    }
+    setMaterial(*geode, part.color);
+    return geode;
+}
+
+// x, y, z arrows of length L (red, green, blue), each a shaft and a cone.
+osg::ref_ptr<osg::Group> triad(double L) {
+    osg::ref_ptr<osg::Group> group = new osg::Group;
+    const float l = float(L);
+    const struct {
+        osg::Quat turn;  // takes z to the axis
+        Rgba color;
+    } axes[] = {{osg::Quat(osg::PI_2, osg::Y_AXIS), {0.85f, 0.12f, 0.12f, 1}},
+                {osg::Quat(-osg::PI_2, osg::X_AXIS), {0.1f, 0.62f, 0.1f, 1}},
+                {osg::Quat(), {0.12f, 0.3f, 0.9f, 1}}};
+    for (const auto& axis : axes) {
+        osg::ref_ptr<osg::MatrixTransform> turn = new osg::MatrixTransform(osg::Matrixd::rotate(axis.turn));
+        osg::ref_ptr<osg::Geode> arrow = new osg::Geode;
+        addShape(*arrow, new osg::Cylinder(osg::Vec3(0, 0, 0.39f * l), 0.03f * l, 0.78f * l));
+        // osg::Cone's centre sits a quarter of its height above its base.
+        addShape(*arrow, new osg::Cone(osg::Vec3(0, 0, (0.78f + 0.25f * 0.22f) * l), 0.075f * l, 0.22f * l));
+        setMaterial(*arrow, axis.color);
+        turn->addChild(arrow);
+        group->addChild(turn);
+    }
+    return group;
+}
+
+osg::ref_ptr<osgText::Font> labelFont() {
+    static const char* const candidates[] = {"/usr/share/fonts/truetype/dejavu/DejaVuSans-Bold.ttf",
+                                             "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf"};
+    for (const char* path : candidates)
+        if (std::filesystem::exists(path))
+            if (osg::ref_ptr<osgText::Font> font = osgText::readRefFontFile(path)) return font;
+    return osgText::Font::getDefaultFont();
+}
+
+osg::ref_ptr<osgText::Text> label(const std::string& text, double axisLength, double pixels, osgText::Font* font) {
+    osg::ref_ptr<osgText::Text> t = new osgText::Text;
+    t->setFont(font);
+    t->setText(text);
+    t->setCharacterSizeMode(osgText::Text::SCREEN_COORDS);
+    t->setCharacterSize(float(pixels));
+    t->setAxisAlignment(osgText::Text::SCREEN);
+    t->setAlignment(osgText::Text::RIGHT_TOP);
+    const float back = -0.12f * float(axisLength);
+    t->setPosition(osg::Vec3(back, back, back));
+    t->setColor(osg::Vec4(0.1f, 0.1f, 0.12f, 1));
+    t->setBackdropType(osgText::Text::OUTLINE);
+    t->setBackdropColor(osg::Vec4(1, 1, 1, 0.9f));
+    return t;
+}
+
+// Lines on the ground plane every `spacing`, every fifth darker.
+osg::ref_ptr<osg::Geode> grid(const VisualScene& scene) {
+    const VisualGround& g = scene.ground;
+    const Eigen::Vector3d up = scene.up.normalized();
+    Eigen::Vector3d e1 = std::abs(up.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+    e1 = (e1 - e1.dot(up) * up).normalized();
+    const Eigen::Vector3d e2 = up.cross(e1);
+    // Lines on multiples of the spacing, so the grid does not shift with the bounds.
+    const Eigen::Vector3d c = g.centre;
+    const double c1 = std::round(c.dot(e1) / g.spacing) * g.spacing, c2 = std::round(c.dot(e2) / g.spacing) * g.spacing;
+    const Eigen::Vector3d origin = c + (c1 - c.dot(e1)) * e1 + (c2 - c.dot(e2)) * e2;
+    const int half = static_cast<int>(std::lround(g.halfSize / g.spacing));
+
+    osg::ref_ptr<osg::Vec3Array> vertices = new osg::Vec3Array;
+    osg::ref_ptr<osg::Vec4Array> colours = new osg::Vec4Array;
+    const double H = half * g.spacing;
+    for (int k = -half; k <= half; ++k) {
+        for (int direction = 0; direction < 2; ++direction) {
+            const Eigen::Vector3d along = direction == 0 ? e1 : e2, across = direction == 0 ? e2 : e1;
+            const double offset = k * g.spacing;
+            const double position = (direction == 0 ? c2 : c1) + offset;
+            const bool heavy = static_cast<long>(std::lround(position / g.spacing)) % 5 == 0;
+            vertices->push_back(toOsg(Eigen::Vector3d(origin + offset * across - H * along)));
+            vertices->push_back(toOsg(Eigen::Vector3d(origin + offset * across + H * along)));
+            const osg::Vec4 colour = heavy ? osg::Vec4(0.45f, 0.48f, 0.52f, 1) : osg::Vec4(0.68f, 0.7f, 0.73f, 1);
+            colours->push_back(colour);
+            colours->push_back(colour);
+        }
+    }
+    osg::ref_ptr<osg::Geometry> lines = new osg::Geometry;
+    lines->setVertexArray(vertices);
+    lines->setColorArray(colours, osg::Array::BIND_PER_VERTEX);
+    lines->addPrimitiveSet(new osg::DrawArrays(GL_LINES, 0, static_cast<int>(vertices->size())));
+    osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+    geode->addDrawable(lines);
+    osg::StateSet* state = geode->getOrCreateStateSet();
+    state->setMode(GL_LIGHTING, osg::StateAttribute::OFF | osg::StateAttribute::PROTECTED);
+    state->setAttributeAndModes(new osg::LineWidth(1.5f));
+    return geode;
+}
+
+osg::Matrixd partMatrix(const VisualPart& part, bool stretch) {
+    if (!stretch) return toOsgMatrix(part.pose.matrix());
+    const Eigen::Affine3d scaled = part.pose * Eigen::Scaling(1.0, 1.0, std::max(part.length, 1e-9));
+    return toOsgMatrix(scaled.matrix());
+}
+
+}  // namespace
+
+OsgScene::OsgScene(const VisualScene& scene, const OsgSceneOptions& options) : options_(options), root_(new osg::Group) {
+    // Stretched parts scale their normals: renormalize.
+    root_->getOrCreateStateSet()->setMode(GL_NORMALIZE, osg::StateAttribute::ON);
+    for (const VisualPart& part : scene.parts) {
+        osg::ref_ptr<osg::MatrixTransform> transform = new osg::MatrixTransform;
+        transform->setDataVariance(osg::Object::DYNAMIC);
+        transform->setName(part.name);
+        transform->addChild(solid(part));
+        parts_.push_back(transform);
+        stretch_.push_back(stretches(part.shape));
+        root_->addChild(transform);
+    }
+    if (options_.frames) {
+        osg::ref_ptr<osgText::Font> font = options_.frameLabels ? labelFont() : nullptr;
+        for (const VisualFrame& frame : scene.frames) {
+            osg::ref_ptr<osg::MatrixTransform> transform = new osg::MatrixTransform;
+            transform->setDataVariance(osg::Object::DYNAMIC);
+            transform->addChild(triad(frame.axisLength));
+            if (font) {
+                osg::ref_ptr<osg::Geode> text = new osg::Geode;
+                text->addDrawable(label(frame.label, frame.axisLength, options_.labelPixels, font.get()));
+                // Labels stay readable in front of the solids.
+                text->getOrCreateStateSet()->setMode(GL_DEPTH_TEST, osg::StateAttribute::OFF);
+                text->getOrCreateStateSet()->setRenderBinDetails(20, "RenderBin");
+                transform->addChild(text);
+            }
+            frames_.push_back(transform);
+            root_->addChild(transform);
+        }
+    }
+    groundGroup_ = new osg::Group;
+    root_->addChild(groundGroup_);
+    updateGround(scene);
+
+    if (options_.trail && scene.endEffector >= 0) {
+        trail_ = new osg::Geometry;
+        trail_->setDataVariance(osg::Object::DYNAMIC);
+        trail_->setUseDisplayList(false);
+        trail_->setUseVertexBufferObjects(true);
+        osg::ref_ptr<osg::Vec3Array> vertices = new osg::Vec3Array(maxTrailPoints);
+        osg::ref_ptr<osg::Vec4Array> colours = new osg::Vec4Array(maxTrailPoints);
+        trail_->setVertexArray(vertices);
+        trail_->setColorArray(colours, osg::Array::BIND_PER_VERTEX);
+        trail_->addPrimitiveSet(new osg::DrawArrays(GL_LINE_STRIP, 0, 0));
+        osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+        geode->addDrawable(trail_);
+        osg::StateSet* state = geode->getOrCreateStateSet();
+        state->setMode(GL_LIGHTING, osg::StateAttribute::OFF | osg::StateAttribute::PROTECTED);
+        state->setMode(GL_BLEND, osg::StateAttribute::ON);
+        state->setAttributeAndModes(new osg::BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA));
+        state->setAttributeAndModes(new osg::LineWidth(3.0f));
+        state->setAttributeAndModes(new osg::Depth(osg::Depth::LESS, 0, 1, false));
+        state->setRenderingHint(osg::StateSet::TRANSPARENT_BIN);
+        root_->addChild(geode);
+    }
+    update(scene);
+}
+
+void OsgScene::update(const VisualScene& scene) {
+    for (std::size_t i = 0; i < parts_.size(); ++i) parts_[i]->setMatrix(partMatrix(scene.parts[i], stretch_[i]));
+    for (std::size_t k = 0; k < frames_.size(); ++k) frames_[k]->setMatrix(toOsgMatrix(scene.frames[k].pose.matrix()));
+}
+
+void OsgScene::updateGround(const VisualScene& scene) {
+    groundGroup_->removeChildren(0, groundGroup_->getNumChildren());
+    if (options_.grid) groundGroup_->addChild(grid(scene));
+}
+
+void OsgScene::setTrail(const std::vector<Eigen::Vector3d>& points) {
+    if (!trail_) return;
+    auto* vertices = static_cast<osg::Vec3Array*>(trail_->getVertexArray());
+    auto* colours = static_cast<osg::Vec4Array*>(trail_->getColorArray());
+    const int count = std::min(static_cast<int>(points.size()), maxTrailPoints);
+    const int first = static_cast<int>(points.size()) - count;
+    for (int k = 0; k < count; ++k) {
+        (*vertices)[k] = toOsg(points[first + k]);
+        const float age = count > 1 ? float(k) / float(count - 1) : 1.0f;  // 0 oldest .. 1 newest
+        (*colours)[k] = osg::Vec4(0.8f, 0.1f, 0.15f, age * age);
+    }
+    static_cast<osg::DrawArrays*>(trail_->getPrimitiveSet(0))->setCount(count);
+    vertices->dirty();
+    colours->dirty();
+    trail_->dirtyBound();
+}
+
+void applyCameraView(osg::Camera& camera, const CameraView& view, double aspect) {
+    camera.setViewMatrixAsLookAt(toOsg(view.eye), toOsg(view.centre), toOsg(view.up));
+    camera.setProjectionMatrixAsPerspective(view.fovy, aspect, view.zNear, view.zFar);
+}
+
+}  // namespace ll::ui

@@ -1,0 +1,58 @@
+#pragma once
+// The OpenSceneGraph nodes of a VisualScene, built once: lit solids, x/y/z triads in
+// red/green/blue with optional frame labels, a ground grid and an end-effector trail.
+// Per frame only the part transforms and the trail change (update, setTrail). Knows no
+// GL context: the headless renderer (ui/headless_renderer.hpp) and the desktop
+// window's QOpenGLWidget draw the same root.
+#include <vector>
+
+#include <Eigen/Core>
+#include <osg/Camera>
+#include <osg/Geometry>
+#include <osg/Group>
+#include <osg/MatrixTransform>
+#include <osg/Switch>
+
+#include "core/scene/camera_view.hpp"
+#include "core/scene/visual_scene.hpp"
+
+namespace ll::ui {
+
+struct OsgSceneOptions {
+    bool frames = true;        // DH triads
+    bool frameLabels = true;   // their numbers beside them
+    bool trail = true;         // the end effector's recent path
+    bool grid = true;          // the ground grid
+    double labelPixels = 18;   // label height on screen [px]
+};
+
+class OsgScene {
+public:
+    explicit OsgScene(const VisualScene& scene, const OsgSceneOptions& options = {});
+
+    osg::Group* root() const { return root_.get(); }
+    // Copies the poses of `scene` (the one built from, posed anew) into the transforms.
+    void update(const VisualScene& scene);
+    // Lays the ground grid anew (after VisualScene::fitToMotion moved it).
+    void updateGround(const VisualScene& scene);
+    // The trail through `points`, oldest first, fading towards the oldest. At most
+    // `maxTrailPoints` are drawn (the newest).
+    void setTrail(const std::vector<Eigen::Vector3d>& points);
+    static constexpr int maxTrailPoints = 2048;
+
+    // The transform of part i (what a test reads back as "drawn").
+    const osg::MatrixTransform* partTransform(int i) const { return parts_[i].get(); }
+
+private:
+    OsgSceneOptions options_;
+    osg::ref_ptr<osg::Group> root_;
+    osg::ref_ptr<osg::Group> groundGroup_;
+    std::vector<osg::ref_ptr<osg::MatrixTransform>> parts_, frames_;
+    std::vector<bool> stretch_;
+    osg::ref_ptr<osg::Geometry> trail_;
+};
+
+// Sets `camera`'s view and projection to `view` for a picture of width/height `aspect`.
+void applyCameraView(osg::Camera& camera, const CameraView& view, double aspect);
+
+}  // namespace ll::ui
