@@ -12,12 +12,7 @@
 namespace ll {
 namespace {
 
-std::string fmt(double v) {
-    std::ostringstream s;
-    s.precision(6);
-    s << v;
-    return s.str();
-}
+std::string fmt(double v) { return formatValue(v); }
 
 // What to do about a joint that moves (almost) nothing: give its links inertia, or
 // its motor's.

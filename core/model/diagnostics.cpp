@@ -1,5 +1,7 @@
 #include "core/model/diagnostics.hpp"
 
+#include <sstream>
+
 #include <algorithm>
 
 #include "core/model/utf8_text.hpp"
@@ -42,6 +44,13 @@ InputError::InputError(std::string field, std::string message)
 
 std::string jointField(int jointIndex0, const std::string& field) {
     return "robot.joints[" + std::to_string(jointIndex0 + 1) + "]" + (field.empty() ? "" : "." + field);
+}
+
+std::string formatValue(double value) {
+    std::ostringstream s;
+    s.precision(6);
+    s << value;
+    return s.str();
 }
 
 }  // namespace ll

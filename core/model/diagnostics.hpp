@@ -35,4 +35,7 @@ private:
 // == "robot.joints[2].mass".
 std::string jointField(int jointIndex0, const std::string& field);
 
+// A value as diagnostics quote it: 6 significant digits ("0.4318", "1e+300").
+std::string formatValue(double value);
+
 }  // namespace ll

@@ -10,12 +10,7 @@
 namespace ll {
 namespace {
 
-std::string fmt(double v) {
-    std::ostringstream s;
-    s.precision(6);
-    s << v;
-    return s.str();
-}
+std::string fmt(double v) { return formatValue(v); }
 
 void error(std::vector<Diagnostic>& out, std::string field, std::string message) {
     out.push_back({Severity::Error, std::move(field), std::move(message)});
