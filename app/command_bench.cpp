@@ -12,7 +12,7 @@
 #include "app/scene_loading.hpp"
 #include "core/dynamics/coriolis.hpp"
 #include "core/dynamics/forward_dynamics.hpp"
-#include "core/dynamics/gravity.hpp"
+#include "core/dynamics/potential_gradient.hpp"
 #include "core/dynamics/inverse_dynamics.hpp"
 #include "core/dynamics/mass_matrix.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
@@ -235,7 +235,7 @@ int benchCommand(const Args& args) {
         });
         const double tG = medianMicros(batches, count, [&](int k) {
             forwardKinematics(robot, data, s.q[k]);
-            computeGravity(robot, data, effects, s.q[k]);
+            computePotentialGradient(robot, data, effects, s.q[k]);
         });
         const double tFD = medianMicros(batches, count, [&](int k) { forwardDynamics(robot, data, effects, s.q[k], s.qd[k], s.tau[k]); });
         const double tID = medianMicros(batches, count, [&](int k) { inverseDynamics(robot, data, effects, s.q[k], s.qd[k], s.tau[k]); });

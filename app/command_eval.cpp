@@ -13,7 +13,7 @@
 #include "core/dynamics/coriolis.hpp"
 #include "core/dynamics/energy.hpp"
 #include "core/dynamics/forward_dynamics.hpp"
-#include "core/dynamics/gravity.hpp"
+#include "core/dynamics/potential_gradient.hpp"
 #include "core/dynamics/mass_matrix.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
 #include "core/model/diagnostics.hpp"
@@ -100,7 +100,7 @@ int evalCommand(const Args& args) {
     forwardKinematics(robot, data, q);
     computeMassMatrix(robot, data);
     computeCoriolisMatrix(robot, data, qd);
-    computeGravity(robot, data, scene.effects, q);
+    computePotentialGradient(robot, data, scene.effects, q);
     const Eigen::MatrixXd B = data.B, C = data.C;
     const Eigen::VectorXd g = data.g;
     const double Ekin = kineticEnergy(data, qd), Epot = potentialEnergy(robot, data, scene.effects, q);

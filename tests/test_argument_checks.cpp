@@ -9,7 +9,7 @@
 #include "core/dynamics/coriolis.hpp"
 #include "core/dynamics/energy.hpp"
 #include "core/dynamics/forward_dynamics.hpp"
-#include "core/dynamics/gravity.hpp"
+#include "core/dynamics/potential_gradient.hpp"
 #include "core/dynamics/inverse_dynamics.hpp"
 #include "core/dynamics/mass_matrix.hpp"
 #include "core/io/scene_file.hpp"
@@ -56,8 +56,8 @@ private slots:
                  QString("forwardKinematics: q has 5 entries, the robot has 6 joints"));
         QCOMPARE(invalidArgument([&] { computeCoriolisMatrix(robot, data, q5); }),
                  QString("computeCoriolisMatrix: qd has 5 entries, the robot has 6 joints"));
-        QCOMPARE(invalidArgument([&] { computeGravity(robot, data, effects, q5); }),
-                 QString("computeGravity: q has 5 entries, the robot has 6 joints"));
+        QCOMPARE(invalidArgument([&] { computePotentialGradient(robot, data, effects, q5); }),
+                 QString("computePotentialGradient: q has 5 entries, the robot has 6 joints"));
         QCOMPARE(invalidArgument([&] { (void)kineticEnergy(data, q5); }),
                  QString("kineticEnergy: qd has 5 entries, the robot has 6 joints"));
         QCOMPARE(invalidArgument([&] { (void)potentialEnergy(robot, data, effects, q5); }),

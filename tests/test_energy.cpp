@@ -31,7 +31,7 @@ private slots:
                     const Eigen::Matrix3d W = (plus.T_0i[i + 1].linear() - minus.T_0i[i + 1].linear()) / (2 * dt) *
                                               data.T_0i[i + 1].linear().transpose();
                     const Eigen::Vector3d w(W(2, 1), W(0, 2), W(1, 0));
-                    E += 0.5 * (robot.joints[i].link.mass * v.squaredNorm() + w.dot(data.Ic_0i[i] * w));
+                    E += 0.5 * (robot.joints[i].link.mass * v.squaredNorm() + w.dot(data.I_li0[i] * w));
                 }
                 const double Ekin = kineticEnergy(data, qd);
                 QVERIFY2(std::abs(Ekin - E) < 1e-7 * std::max(1.0, E), qPrintable(QString("%1 vs %2").arg(Ekin).arg(E)));

@@ -2,7 +2,7 @@
 #include <QtTest>
 
 #include "core/dynamics/coriolis.hpp"
-#include "core/dynamics/gravity.hpp"
+#include "core/dynamics/potential_gradient.hpp"
 #include "core/dynamics/inverse_dynamics.hpp"
 #include "core/dynamics/mass_matrix.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
@@ -29,7 +29,7 @@ private slots:
                 forwardKinematics(robot, lagrange, q);
                 computeMassMatrix(robot, lagrange);
                 computeCoriolisMatrix(robot, lagrange, qd);
-                computeGravity(robot, lagrange, effects, q);
+                computePotentialGradient(robot, lagrange, effects, q);
                 const Eigen::VectorXd expected = lagrange.B * qdd + lagrange.C * qd + lagrange.g;
                 QVERIFY2(test::scaledError(tau, expected) < 1e-11, qPrintable(QString::number(test::scaledError(tau, expected))));
             }

@@ -28,7 +28,7 @@
 
 #include "core/dynamics/coriolis.hpp"
 #include "core/dynamics/forward_dynamics.hpp"
-#include "core/dynamics/gravity.hpp"
+#include "core/dynamics/potential_gradient.hpp"
 #include "core/dynamics/inverse_dynamics.hpp"
 #include "core/dynamics/mass_matrix.hpp"
 #include "core/io/scene_file.hpp"
@@ -306,7 +306,7 @@ private slots:
             const Eigen::VectorXd Cqd = data.C * s.qd;
             eC = std::max(eC, scaledError(Cqd, kdl.coriolis(s.q, s.qd)));
 
-            computeGravity(model, data, c.effects, s.q);
+            computePotentialGradient(model, data, c.effects, s.q);
             eG = std::max(eG, scaledError(data.g, kdl.gravity(s.q)));
 
             const Eigen::VectorXd tau = inverseDynamics(model, data, c.effects, s.q, s.qd, s.qdd);
@@ -386,7 +386,7 @@ private slots:
                 forwardKinematics(model, data, s.q);
                 computeMassMatrix(model, data);
                 computeCoriolisMatrix(model, data, s.qd);
-                computeGravity(model, data, c.effects, s.q);
+                computePotentialGradient(model, data, c.effects, s.q);
                 const Eigen::VectorXd lagrange = data.B * s.qdd + data.C * s.qd + data.g;
                 const Eigen::VectorXd tau = rnea(model, data, c.effects, s.q, s.qd, s.qdd);
                 QVERIFY(scaledError(tau, lagrange) < 1e-10);

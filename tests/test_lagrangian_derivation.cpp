@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/dynamics/coriolis.hpp"
-#include "core/dynamics/gravity.hpp"
+#include "core/dynamics/potential_gradient.hpp"
 #include "core/dynamics/mass_matrix.hpp"
 #include "core/io/scene_file.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
@@ -119,7 +119,7 @@ NumericTerms armDynamics(const Eigen::VectorXd& q, const Eigen::VectorXd& qd) {
     forwardKinematics(robot, data, q);
     computeMassMatrix(robot, data);
     computeCoriolisMatrix(robot, data, qd);
-    computeGravity(robot, data, effects, q);
+    computePotentialGradient(robot, data, effects, q);
     return {data.B, data.C, data.g};
 }
 

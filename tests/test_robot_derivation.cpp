@@ -7,7 +7,7 @@
 
 #include "core/dynamics/coriolis.hpp"
 #include "core/dynamics/energy.hpp"
-#include "core/dynamics/gravity.hpp"
+#include "core/dynamics/potential_gradient.hpp"
 #include "core/dynamics/mass_matrix.hpp"
 #include "core/io/scene_file.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
@@ -61,7 +61,7 @@ void compareWithNumeric(const Scene& scene, const Derivation& d, int states, dou
         forwardKinematics(robot, data, q);
         computeMassMatrix(robot, data);
         computeCoriolisMatrix(robot, data, qd);
-        computeGravity(robot, data, scene.effects, q);
+        computePotentialGradient(robot, data, scene.effects, q);
         Eigen::VectorXd Q(n);
         computeGeneralizedForces(scene.effects, t, qd, Q);
         const auto check = [&](const char* what, const Eigen::MatrixXd& symbolic, const Eigen::MatrixXd& numeric) {

@@ -12,7 +12,7 @@ void computeMassMatrixDerivatives(const RobotModel& model, RobotData& data) {
     for (int k = 0; k < n; ++k)
         for (int i = 0; i < n; ++i) data.crossS[k * n + i] = crossMotion(data.S[k], data.S[i]);
     for (int b = 0; b < n; ++b)
-        for (int j = 0; j < n; ++j) data.IcS[b * n + j] = data.Ic[b] * data.S[j];
+        for (int j = 0; j < n; ++j) data.I_compositeS[b * n + j] = data.I_composite[b] * data.S[j];
 
     for (int k = 0; k < n; ++k) {
         Eigen::MatrixXd& dB = data.dB_dq[k];
@@ -24,10 +24,10 @@ void computeMassMatrixDerivatives(const RobotModel& model, RobotData& data) {
                 const Vector6d& X_kj = data.crossS[k * n + j];
                 // Moving the axes S_i, S_j ...
                 double value = 0.0;
-                if (k < i) value += X_ki.dot(data.IcS[a * n + j]);
-                if (k < j) value += data.IcS[a * n + i].dot(X_kj);
+                if (k < i) value += X_ki.dot(data.I_compositeS[a * n + j]);
+                if (k < j) value += data.I_compositeS[a * n + i].dot(X_kj);
                 // ... and the links b..n that joint k carries.
-                value -= X_ki.dot(data.IcS[b * n + j]) + data.IcS[b * n + i].dot(X_kj);
+                value -= X_ki.dot(data.I_compositeS[b * n + j]) + data.I_compositeS[b * n + i].dot(X_kj);
                 dB(i, j) = value;
                 dB(j, i) = value;
             }

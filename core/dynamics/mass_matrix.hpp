@@ -10,7 +10,7 @@ namespace ll {
 // Composite-rigid-body algorithm (RBDA §6.2) in world coordinates:
 // b_ij = S_iᵀ Ic_max(i,j) S_j with Ic_k the inertia of links k..n, plus each joint's
 // motor armature Jm G² on b_jj (core/model/joint_motor.hpp).
-// Requires forwardKinematics. Fills data.Ic and data.B (both triangles).
+// Requires forwardKinematics. Fills data.I_composite and data.B (both triangles).
 void computeMassMatrix(const RobotModel& model, RobotData& data);
 
 // The textbook sum B = Σ_i m_i J_v,ciᵀ J_v,ci + J_ω,iᵀ R_i I_ci R_iᵀ J_ω,i (Siciliano

@@ -19,9 +19,9 @@ constexpr double kNothing = 1e-9;
 // The inertia the links j..n carry, in b_jj's unit: their rotational inertia about the
 // world origin (revolute) or their mass (prismatic). Zero only when they are massless.
 double carriedInertia(const RobotData& data, int j) {
-    const SpatialInertia& Ic = data.Ic[j];
+    const SpatialInertia& composite = data.I_composite[j];
     const bool prismatic = data.S[j].head<3>().isZero();
-    return prismatic ? Ic.m : Ic.I.trace();
+    return prismatic ? composite.m : composite.I.trace();
 }
 
 }  // namespace

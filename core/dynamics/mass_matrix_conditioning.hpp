@@ -23,7 +23,7 @@ struct MassMatrixDefect {
     double largest = 0.0;    // max_i b_ii, the scale the pivot is judged against
 };
 
-// Requires computeMassMatrix (reads data.B, data.Ic and data.S). `relTol` as in
+// Requires computeMassMatrix (reads data.B, data.I_composite and data.S). `relTol` as in
 // firstSingularJoint. Allocates.
 MassMatrixDefect diagnoseMassMatrix(const RobotData& data, double relTol = 1e-12);
 

@@ -48,8 +48,8 @@ void forwardKinematics(const RobotModel& model, RobotData& data, const Eigen::Ve
 
         const Eigen::Matrix3d& R = T.linear();
         data.p_ci[i] = T * joint.link.com;
-        data.Ic_0i[i] = R * joint.link.inertia * R.transpose();
-        data.I[i] = spatialInertiaAtOrigin(joint.link.mass, data.p_ci[i], data.Ic_0i[i]);
+        data.I_li0[i] = R * joint.link.inertia * R.transpose();
+        data.I[i] = spatialInertiaAtOrigin(joint.link.mass, data.p_ci[i], data.I_li0[i]);
     }
 }
 

@@ -8,7 +8,7 @@
 
 namespace ll {
 
-// Fills data.T_0i, p_ci, Ic_0i, axis, axisPoint, S and I. q: (n).
+// Fills data.T_0i, p_ci, I_li0, axis, axisPoint, S and I. q: (n).
 void forwardKinematics(const RobotModel& model, RobotData& data, const Eigen::VectorXd& q);
 
 // A_i(q_i) of joint i (0-based) alone.

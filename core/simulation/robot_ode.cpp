@@ -6,7 +6,7 @@
 #include <Eigen/Cholesky>
 
 #include "core/dynamics/forward_dynamics.hpp"
-#include "core/dynamics/gravity.hpp"
+#include "core/dynamics/potential_gradient.hpp"
 #include "core/dynamics/inverse_dynamics.hpp"
 #include "core/dynamics/mass_matrix.hpp"
 #include "core/kinematics/forward_kinematics.hpp"

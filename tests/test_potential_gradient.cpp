@@ -3,13 +3,13 @@
 #include <QtTest>
 
 #include "core/dynamics/energy.hpp"
-#include "core/dynamics/gravity.hpp"
+#include "core/dynamics/potential_gradient.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
 #include "test_support.hpp"
 
 using namespace ll;
 
-class TestGravity : public QObject {
+class TestPotentialGradient : public QObject {
     Q_OBJECT
 private slots:
     // Siciliano et al. (7.84) with g0 = [0, −g, 0].
@@ -24,7 +24,7 @@ private slots:
         for (int trial = 0; trial < 100; ++trial) {
             const Eigen::VectorXd q = test::randomVector(rng, 2, 3.14);
             forwardKinematics(robot, data, q);
-            computeGravity(robot, data, effects, q);
+            computePotentialGradient(robot, data, effects, q);
             const double c1 = std::cos(q[0]), c12 = std::cos(q[0] + q[1]);
             const Eigen::Vector2d expected((p.m1 * p.l1 + p.m2 * p.a1) * g * c1 + p.m2 * p.l2 * g * c12,
                                            p.m2 * p.l2 * g * c12);
@@ -46,7 +46,7 @@ private slots:
             for (int trial = 0; trial < 30; ++trial) {
                 const Eigen::VectorXd q = test::randomVector(rng, n, 3.0);
                 forwardKinematics(robot, data, q);
-                computeGravity(robot, data, effects, q);
+                computePotentialGradient(robot, data, effects, q);
                 Eigen::VectorXd gradient(n);
                 for (int k = 0; k < n; ++k) {
                     const double h = 1e-6;
@@ -69,16 +69,16 @@ private slots:
         RobotData data(robot);
         const Eigen::VectorXd q = test::randomVector(rng, 4, 3.0);
         forwardKinematics(robot, data, q);
-        computeGravity(robot, data, Effects{}, q);
+        computePotentialGradient(robot, data, Effects{}, q);
         QCOMPARE(data.g.norm(), 0.0);
         QCOMPARE(potentialEnergy(robot, data, Effects{}, q), 0.0);
         Effects springOnly;
         springOnly.springs = {{2, 40.0, 0.5}};
-        computeGravity(robot, data, springOnly, q);
+        computePotentialGradient(robot, data, springOnly, q);
         QCOMPARE(data.g[2], 40.0 * (q[2] - 0.5));
         QCOMPARE(data.g[0], 0.0);
     }
 };
 
-QTEST_APPLESS_MAIN(TestGravity)
-#include "test_gravity.moc"
+QTEST_APPLESS_MAIN(TestPotentialGradient)
+#include "test_potential_gradient.moc"

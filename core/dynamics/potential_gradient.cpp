@@ -1,4 +1,4 @@
-#include "core/dynamics/gravity.hpp"
+#include "core/dynamics/potential_gradient.hpp"
 
 #include "core/model/argument_checks.hpp"
 
@@ -26,9 +26,9 @@ void addSpringTorques(const std::vector<JointSpring>& springs, const Eigen::Vect
     }
 }
 
-void computeGravity(const RobotModel& model, RobotData& data, const Effects& effects,
+void computePotentialGradient(const RobotModel& model, RobotData& data, const Effects& effects,
                     const Eigen::VectorXd& q) {
-    requireSize("computeGravity", "q", q.size(), data.n);
+    requireSize("computePotentialGradient", "q", q.size(), data.n);
     data.g.setZero();
     if (effects.gravity) addGravityTorques(model, data, *effects.gravity, data.g);
     addSpringTorques(effects.springs, q, data.g);
