@@ -18,6 +18,7 @@
 
 #include <unistd.h>
 
+#include "core/io/scene_file.hpp"
 #include "process_run.hpp"
 
 using ll::test::ProcessRun;
@@ -260,12 +261,17 @@ private slots:
         QCOMPARE(filetype("pendulum.lagrange"), kSceneType);
         QCOMPARE(filetype("pendulum.json"), kSceneType);  // the magic, within the *.json glob
         QVERIFY(filetype("other.json") != kSceneType);
-        // Without the installed database the same file is no scene (unless a system-wide
-        // install, e.g. the .deb, provides it).
-        if (!QFileInfo::exists("/usr/share/mime/packages/" + kAppId + ".xml")) {
-            env.insert("XDG_DATA_DIRS", "/usr/share");
-            QVERIFY(filetype("pendulum.lagrange") != kSceneType);
-        }
+        // A scene as LagrangeLab saves it (its key order, its spacing), both extensions.
+        const ll::Scene scene = ll::loadScene(example("simple_pendulum.json").toStdString()).scene;
+        ll::saveScene(scene, (work_ + "/saved.lagrange").toStdString());
+        ll::saveScene(scene, (work_ + "/saved.json").toStdString());
+        QCOMPARE(filetype("saved.lagrange"), kSceneType);
+        QCOMPARE(filetype("saved.json"), kSceneType);
+        // Without the installed database (no database at all in its place) it is no scene.
+        QVERIFY(QDir().mkpath(tmp_.path() + "/empty-share"));
+        env.insert("XDG_DATA_DIRS", tmp_.path() + "/empty-share");
+        QVERIFY(filetype("pendulum.lagrange") != kSceneType);
+        QVERIFY(filetype("saved.json") != kSceneType);
     }
 };
 
