@@ -22,12 +22,16 @@
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/lagrangian_derivation.hpp"
 #include "core/symbolic/robot_derivation.hpp"
+#include "ui/data_directory.hpp"
 #ifdef LL_HAVE_KDL
 #include "tests/oracle/kdl_chain.hpp"
 #endif
 
 namespace ll::cli {
 namespace {
+
+// An installed example scene by name (bench's default scenes).
+std::string example(const char* name) { return (ui::examplesDirectory() / (std::string(name) + ".json")).string(); }
 
 struct States {
     std::vector<Eigen::VectorXd> q, qd, tau;
@@ -191,22 +195,22 @@ int benchCommand(const Args& args) {
     if (options.has("derive")) {
         if (scenes.empty())
             for (const char* name : {"planar_2r", "scara", "cart_pole", "puma560", "stanford_arm", "mass_spring_pair_lagrangian"})
-                scenes.push_back(std::string(LL_EXAMPLES_DIR) + "/" + name + ".json");
+                scenes.push_back(example(name));
         return benchDerive(scenes, static_cast<int>(options.number("batches", 5)));
     }
     if (options.has("cancel")) {
         if (scenes.empty())
             for (const char* name : {"puma560", "stanford_arm", "panda"})
-                scenes.push_back(std::string(LL_EXAMPLES_DIR) + "/" + name + ".json");
+                scenes.push_back(example(name));
         return benchCancel(scenes);
     }
     if (options.has("rhs")) {
-        if (scenes.empty()) scenes.push_back(std::string(LL_EXAMPLES_DIR) + "/puma560.json");
+        if (scenes.empty()) scenes.push_back(example("puma560"));
         return benchRhs(scenes, batches);
     }
     if (scenes.empty())
         for (const char* name : {"puma560", "stanford_arm", "ur5", "panda", "planar_2r"})
-            scenes.push_back(std::string(LL_EXAMPLES_DIR) + "/" + name + ".json");
+            scenes.push_back(example(name));
 
     std::printf("median time per call [µs] over %d batches of random states; 'sim 1 s' is CPU time [ms] for one\n"
                 "simulated second with the scene's integrator and tolerances (median of 5)\n\n", batches);

@@ -1,0 +1,21 @@
+#include "ui/data_directory.hpp"
+
+#include <stdexcept>
+#include <system_error>
+
+namespace ll::ui {
+
+namespace fs = std::filesystem;
+
+fs::path executableDirectory() {
+    std::error_code error;
+    const fs::path exe = fs::read_symlink("/proc/self/exe", error);
+    if (error) throw std::runtime_error("cannot find the program's own location (/proc/self/exe: " + error.message() + ")");
+    return exe.parent_path();
+}
+
+fs::path dataDirectory() { return (executableDirectory() / ".." / "share" / "lagrangelab").lexically_normal(); }
+
+fs::path examplesDirectory() { return dataDirectory() / "examples"; }
+
+}  // namespace ll::ui
