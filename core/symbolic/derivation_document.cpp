@@ -8,6 +8,7 @@
 #include "core/symbolic/angle_sums.hpp"
 #include "core/symbolic/expression_printer.hpp"
 #include "core/symbolic/ginac_lock.hpp"
+#include "core/symbolic/trig_context.hpp"
 
 namespace ll::symbolic {
 namespace {
@@ -79,7 +80,7 @@ private:
         for (size_t k = 0; k + 1 < trig.nops(); k += 2) {
             const GiNaC::ex c = trig.op(k).lhs(), s = trig.op(k + 1).lhs();
             if (!is_ex_the_function(trig.op(k).rhs(), cos) || e.degree(c) < 2) continue;
-            const GiNaC::ex alternative = GiNaC::rem(e, c * c + s * s - 1, c).expand();
+            const GiNaC::ex alternative = reducePythagorean(e, c, s);
             if (termCount(alternative) < termCount(e)) e = alternative;
         }
         return e;
