@@ -4,6 +4,7 @@
 // how soon a cancelled structured derivation stops.
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <cstdio>
 #include <numbers>
 #include <random>
@@ -61,13 +62,15 @@ void benchOne(const Scene& scene, const std::string& label, int repeats, double 
     using namespace symbolic;
     DerivationOptions options;
     options.mode = ParameterMode::Numeric;
-    std::vector<double> ms;
+    std::vector<double> ms, cpu;
     int definitions = 0;
     std::size_t structuredKB = 0;
     for (int r = 0; r < repeats; ++r) {
         const auto start = Clock::now();
+        const std::clock_t cpuStart = std::clock();
         const StructuredDynamics s = deriveStructured(scene, options);
         ms.push_back(msSince(start));
+        cpu.push_back(1e3 * double(std::clock() - cpuStart) / CLOCKS_PER_SEC);
         if (r == 0) {
             const auto lock = lockGinac();
             definitions = s.table->size();
@@ -106,8 +109,8 @@ void benchOne(const Scene& scene, const std::string& label, int repeats, double 
     char expandedSize[32];
     if (expandedMs < 0) std::snprintf(expandedSize, sizeof expandedSize, "-");
     else std::snprintf(expandedSize, sizeof expandedSize, "%zu", expandedKB);
-    std::printf("%-22.22s %2d | %6d %11.2f %9zu %10.2f | %19s %10s\n", label.c_str(), scene.robot.dof(), definitions, structured,
-                structuredKB, latency, expanded, expandedSize);
+    std::printf("%-22.22s %2d | %6d %11.2f %9.2f %9zu %10.2f | %19s %10s\n", label.c_str(), scene.robot.dof(), definitions,
+                structured, median(cpu), structuredKB, latency, expanded, expandedSize);
     std::fflush(stdout);
 }
 
@@ -148,12 +151,13 @@ int benchDeriveChains(const std::string& range, const std::vector<std::string>& 
     }
     if (first < 1 || last > 60 || first > last)
         throw UsageError("--chains: joint counts run from 1 to 60, low to high, got '" + range + "'");
-    std::printf("structured derivation of B, C, g (numeric mode, median of %d runs) beside the expanded one\n"
+    std::printf("structured derivation of B, C, g (numeric mode, median of %d runs; wall and process CPU time)\n"
+                "beside the expanded one\n"
                 "(one run, stopped at %.0f s); sizes of the JSON documents; cancel: largest latency [ms] from\n"
                 "setting the flag (at 1/4, 1/2, 3/4 of the run) to the structured derivation stopping\n\n",
                 repeats, capSeconds);
-    std::printf("%-22s %2s | %6s %11s %9s %10s | %19s %10s\n", "system", "n", "names", "struct [ms]", "JSON [KB]", "cancel [ms]",
-                "expanded [ms]", "JSON [KB]");
+    std::printf("%-22s %2s | %6s %11s %9s %9s %10s | %19s %10s\n", "system", "n", "names", "struct [ms]", "cpu [ms]", "JSON [KB]",
+                "cancel [ms]", "expanded [ms]", "JSON [KB]");
     for (const std::string& path : scenes) {
         const Scene scene = loadSceneReportingWarnings(path);
         if (!scene.lagrangian) benchOne(scene, scene.name, repeats, capSeconds);

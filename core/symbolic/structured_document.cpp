@@ -1,5 +1,6 @@
 #include "core/symbolic/structured_document.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <map>
 #include <sstream>
@@ -9,6 +10,7 @@
 
 #include "core/symbolic/expression_printer.hpp"
 #include "core/symbolic/ginac_lock.hpp"
+#include "core/symbolic/readable_numbers.hpp"
 
 namespace ll::symbolic {
 namespace {
@@ -73,12 +75,22 @@ Selection select(const StructuredDynamics& s, const std::vector<EntryRef>& asked
     return sel;
 }
 
-// The selected names in table order, with a heading whenever the step changes.
+// The selected names grouped by the step where each arises (steps ascending, table order
+// within a step: still dependency order, since a name only uses names of its own or
+// earlier steps), with a heading for each step.
+std::vector<int> byStep(const StructuredDynamics& s, const Selection& sel) {
+    std::vector<int> order;
+    for (int k = 0; k < s.table->size(); ++k)
+        if (sel.definitions[k]) order.push_back(k);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](int a, int b) { return s.table->entries()[a].step < s.table->entries()[b].step; });
+    return order;
+}
+
 template <class Heading, class Line>
 void forEachDefinition(const StructuredDynamics& s, const Selection& sel, Heading heading, Line line) {
     int step = -1;
-    for (int k = 0; k < s.table->size(); ++k) {
-        if (!sel.definitions[k]) continue;
+    for (int k : byStep(s, sel)) {
         const NamedDefinition& d = s.table->entries()[k];
         if (d.step != step) heading(step = d.step);
         line(d);
@@ -123,13 +135,13 @@ void writeText(const StructuredDynamics& s, const StructuredDocumentInfo& info, 
     forEachDefinition(
         s, sel, [&](int step) { out << "\nStep " << step << ". " << stepTitle(step) << "\n"; },
         [&](const NamedDefinition& d) {
-            out << "    " << d.symbol.get_name() << " = " << print(d.value, text) << "        (" << d.meaning << "; depends on "
+            out << "    " << d.symbol.get_name() << " = " << print(readableNumbers(d.value), text) << "        (" << d.meaning << "; depends on "
                 << coordinateList(d.coordinates, s.n) << ")\n";
         });
     out << "\nResults over the names\n";
     for (const EntryRef& e : sel.entries)
         out << "    " << (e.matrix == 'B' ? "b" : e.matrix == 'C' ? "c" : "g") << e.label.substr(1) << " = "
-            << print(valueOf(s, e), text) << "        (" << entryMeaning(s, e) << ")\n";
+            << print(readableNumbers(valueOf(s, e)), text) << "        (" << entryMeaning(s, e) << ")\n";
     if (info.entries.empty()) {
         const int n = s.n, total = n * n * (n + 1) / 2;
         out << "\nZero pattern of d b_jk / d q_l (j <= k; x: non-zero): " << s.nonZeroMassDerivatives() << " of " << total
@@ -139,7 +151,7 @@ void writeText(const StructuredDynamics& s, const StructuredDocumentInfo& info, 
             << (skewSymmetric(s) ? "skew-symmetric (checked)" : "NOT skew-symmetric") << "\n";
     }
     for (const ExpandedEntry& e : info.expanded)
-        out << "\nExpanded " << e.ref.label << " (" << e.terms << " terms, " << e.seconds << " s):\n    " << print(e.value, text) << "\n";
+        out << "\nExpanded " << e.ref.label << " (" << e.terms << " terms, " << e.seconds << " s):\n    " << print(readableNumbers(e.value), text) << "\n";
 }
 
 void writeLatex(const StructuredDynamics& s, const StructuredDocumentInfo& info, std::ostream& out) {
@@ -157,11 +169,11 @@ void writeLatex(const StructuredDynamics& s, const StructuredDocumentInfo& info,
            "Shorthand: $c_{i} = \\cos q_i$, $s_{i} = \\sin q_i$.\n";
     forEachDefinition(
         s, sel, [&](int step) { out << "\\section*{Step " << step << "}\n" << stepTitle(step) << "\n"; },
-        [&](const NamedDefinition& d) { out << "\\[ " << print(d.symbol, latex) << " = " << print(d.value, latex) << " \\]\n"; });
+        [&](const NamedDefinition& d) { out << "\\[ " << d.latex << " = " << print(readableNumbers(d.value), latex) << " \\]\n"; });
     out << "\\section*{Results over the names}\n";
     for (const EntryRef& e : sel.entries)
         out << "\\[ " << (e.matrix == 'B' ? "b" : e.matrix == 'C' ? "c" : "g") << "_{" << e.label.substr(1) << "} = "
-            << print(valueOf(s, e), latex) << " \\]\n";
+            << print(readableNumbers(valueOf(s, e)), latex) << " \\]\n";
     if (info.entries.empty()) {
         const int n = s.n;
         out << "\\paragraph{Zero pattern} " << s.nonZeroMassDerivatives() << " of " << n * n * (n + 1) / 2
@@ -169,7 +181,7 @@ void writeLatex(const StructuredDynamics& s, const StructuredDocumentInfo& info,
             << "$\\dot B - 2C$ is " << (skewSymmetric(s) ? "skew-symmetric (checked over the names)" : "not skew-symmetric") << ".\n";
     }
     for (const ExpandedEntry& e : info.expanded)
-        out << "\\paragraph{Expanded " << e.ref.label << "} (" << e.terms << " terms)\n\\[ " << print(e.value, latex) << " \\]\n";
+        out << "\\paragraph{Expanded " << e.ref.label << "} (" << e.terms << " terms)\n\\[ " << print(readableNumbers(e.value), latex) << " \\]\n";
     out << "\\end{document}\n";
 }
 
@@ -185,15 +197,14 @@ void writeJson(const StructuredDynamics& s, const StructuredDocumentInfo& info, 
     for (int i = 0; i < s.n; ++i) coordinates.push_back("q" + idx(i));
     j["coordinates"] = coordinates;
     nlohmann::ordered_json defs = nlohmann::ordered_json::array();
-    for (int k = 0; k < s.table->size(); ++k) {
-        if (!sel.definitions[k]) continue;
+    for (int k : byStep(s, sel)) {
         const NamedDefinition& d = s.table->entries()[k];
         std::vector<std::string> deps;
         for (int q = 0; q < s.n; ++q)
             if (d.coordinates & (std::uint64_t(1) << q)) deps.push_back("q" + idx(q));
         defs.push_back({{"name", d.symbol.get_name()},
                         {"expr", print(d.value, plain)},
-                        {"latex", d.latex + " = " + print(d.value, latex)},
+                        {"latex", d.latex + " = " + print(readableNumbers(d.value), latex)},
                         {"step", d.step},
                         {"meaning", d.meaning},
                         {"depends_on", deps}});
@@ -233,7 +244,7 @@ void writeJson(const StructuredDynamics& s, const StructuredDocumentInfo& info, 
         entries[e.label] = entry;
     }
     if (!info.entries.empty()) j["entries"] = entries;
-    out << j.dump(2) << '\n';
+    out << j.dump() << '\n';  // compact: an 8-joint model has about 1100 definitions
 }
 
 }  // namespace

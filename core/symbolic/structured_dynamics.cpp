@@ -52,11 +52,11 @@ public:
                 for (int r = 0; r < 3; ++r) {
                     const std::string comp(1, kAxis[r]);
                     if (c == 3)
-                        named(r, c) = table_.name(product(r, c), "o" + F + comp + "_" + frame_,
+                        named(r, c) = table_.name(product(r, c), "o" + comp + F + "_" + frame_,
                                                   "{}^{" + frame_ + "}o_{" + F + "," + comp + "}",
                                                   comp + " of the origin of frame " + F + " in the frame of link " + frame_, 1);
                     else
-                        named(r, c) = table_.name(product(r, c), std::string(1, kAxis[c]) + F + comp + "_" + frame_,
+                        named(r, c) = table_.name(product(r, c), std::string(1, kAxis[c]) + comp + F + "_" + frame_,
                                                   "{}^{" + frame_ + "}" + kAxis[c] + "_{" + F + "," + comp + "}",
                                                   comp + " of axis " + kAxis[c] + "_" + F + " of frame " + F +
                                                       " in the frame of link " + frame_,
@@ -79,7 +79,7 @@ public:
         const SymbolicJoint& joint = robot.joints[link];
         const Vec3 com{joint.com(0, 0), joint.com(1, 0), joint.com(2, 0)};
         for (int j = 0; j <= link; ++j)
-            JP[j] = vector(revolute[j] ? cross(Z[j], sub(com, O[j])) : Z[j], "JP" + idx(j), "J_{P," + idx(j) + "}^{(" + frame_ + ")}",
+            JP[j] = vector(revolute[j] ? cross(Z[j], sub(com, O[j])) : Z[j], "J", idx(j), "J_{P," + idx(j) + "}^{(" + frame_ + ")}",
                            "velocity of the centre of mass of link " + frame_ + " per unit qd" + idx(j) +
                                " (J_P column), in its frame",
                            4);
@@ -91,7 +91,7 @@ public:
                     baseR(r, c) = robot.base(c, r);  // world → frame 0
                     R(r, c) = P(r, c);               // frame 0 → link frame
                 }
-            gravity = vector(times(R, times(baseR, g0)), "g0", "g_{0}^{(" + frame_ + ")}",
+            gravity = vector(times(R, times(baseR, g0)), "g", "0", "g_{0}^{(" + frame_ + ")}",
                              "gravity in the frame of link " + frame_, 6);
         }
         for (int c = 0; c < 3; ++c)
@@ -100,13 +100,14 @@ public:
         for (int j = 0; j <= link; ++j) IZ[j] = times(inertia, Z[j]);
     }
 
-    // Components named "<stem><x|y|z>_<link>" (with extra index text after the link).
-    Vec3 vector(const Vec3& v, const std::string& stem, const std::string& latex, const std::string& meaning, int step,
-                const std::string& suffix = "") {
+    // Components named "<letter><x|y|z><index>_<link><suffix>" (Jx2_4: x of J_P,2 of link 4),
+    // which the printers set as J_{x2,4}.
+    Vec3 vector(const Vec3& v, const std::string& letter, const std::string& index, const std::string& latex,
+                const std::string& meaning, int step, const std::string& suffix = "") {
         Vec3 r;
         for (int c = 0; c < 3; ++c) {
             const std::string comp(1, kAxis[c]);
-            r[c] = table_.name(v[c], stem + comp + "_" + frame_ + suffix, latex + "_{" + comp + "}", comp + " of the " + meaning, step);
+            r[c] = table_.name(v[c], letter + comp + index + "_" + frame_ + suffix, latex + "_{" + comp + "}", comp + " of the " + meaning, step);
         }
         return r;
     }
@@ -126,7 +127,7 @@ public:
         else if (l < a) d = revolute_[l] ? cross(Z[l], JP[a]) : Vec3{0, 0, 0};
         else d = cross(Z[a], JP[l]);
         if (!isZero(d))
-            d = vector(d, "dJP" + idx(a), "\\partial J_{P," + idx(a) + "}^{(" + frame_ + ")}/\\partial q_{" + idx(l) + "}",
+            d = vector(d, "D", idx(a), "\\partial J_{P," + idx(a) + "}^{(" + frame_ + ")}/\\partial q_{" + idx(l) + "}",
                        "derivative of J_P column " + idx(a) + " of link " + frame_ + " by q" + idx(l), 8, "_" + idx(l));
         dJPCache_.emplace(key, d);
         return d;
@@ -227,7 +228,7 @@ StructuredDynamics deriveStructured(const Scene& scene, const DerivationOptions&
             for (int k = j; k <= i; ++k)
                 for (int l = j + 1; l <= i; ++l)  // ∂β_jk/∂q_l = 0 for l ≤ min(j, k) = j
                     s.dB[l](j, k) += table.name(link.dBeta(j, k, l, m),
-                                                "dbeta" + idx(j) + "_" + idx(k) + "_" + L + "_" + idx(l),
+                                                "delta" + idx(j) + "_" + idx(k) + "_" + L + "_" + idx(l),
                                                 "\\partial\\beta_{" + idx(j) + idx(k) + "}^{(" + L + ")}/\\partial q_{" + idx(l) + "}",
                                                 "derivative of beta" + idx(j) + "_" + idx(k) + "_" + L + " by q" + idx(l), 8);
     }
@@ -271,7 +272,7 @@ StructuredDynamics deriveStructured(const Scene& scene, const DerivationOptions&
             for (int k = j; k < n; ++k) {
                 if (s.dB[l](j, k).is_zero()) continue;
                 s.dB[l](j, k) = s.dB[l](k, j) =
-                    table.name(s.dB[l](j, k), "db" + idx(j) + "_" + idx(k) + "_" + idx(l),
+                    table.name(s.dB[l](j, k), "Db" + idx(j) + "_" + idx(k) + "_" + idx(l),
                                "\\partial b_{" + idx(j) + idx(k) + "}/\\partial q_{" + idx(l) + "}",
                                "derivative of b" + idx(j) + idx(k) + " by q" + idx(l), 8);
             }
