@@ -223,14 +223,15 @@ StructuredDynamics deriveStructured(const Scene& scene, const DerivationOptions&
                                                 idx(j) + " per unit mass)",
                                             6);
         }
-        checkpoint(8, "dbeta^(" + L + ")");
-        for (int j = 0; j <= i; ++j)
+        for (int j = 0; j <= i; ++j) {
+            checkpoint(8, "dbeta_" + idx(j) + "k^(" + L + ")");  // a 12-joint link has ~400 of them: check often
             for (int k = j; k <= i; ++k)
                 for (int l = j + 1; l <= i; ++l)  // ∂β_jk/∂q_l = 0 for l ≤ min(j, k) = j
                     s.dB[l](j, k) += table.name(link.dBeta(j, k, l, m),
                                                 "delta" + idx(j) + "_" + idx(k) + "_" + L + "_" + idx(l),
                                                 "\\partial\\beta_{" + idx(j) + idx(k) + "}^{(" + L + ")}/\\partial q_{" + idx(l) + "}",
                                                 "derivative of beta" + idx(j) + "_" + idx(k) + "_" + L + " by q" + idx(l), 8);
+        }
     }
     s.armature.assign(n, ex(0));
     for (int j = 0; j < n; ++j) {
