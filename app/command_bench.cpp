@@ -188,10 +188,14 @@ int benchCancel(const std::vector<std::string>& scenes) {
 }  // namespace
 
 int benchCommand(const Args& args) {
-    const Options options(args, {"batches"}, {"rhs", "derive", "cancel", "render"});
+    const Options options(args, {"batches", "chains", "cap"}, {"rhs", "derive", "cancel", "render"});
     const int batches = static_cast<int>(options.number("batches", 21));
     std::vector<std::string> scenes = options.positional();
     if (options.has("render")) return benchRender(scenes, static_cast<int>(options.number("batches", 3)));
+    if (options.has("chains") && !options.has("derive")) throw UsageError("--chains: only with --derive");
+    if (options.has("derive") && options.has("chains"))
+        return benchDeriveChains(options.text("chains"), scenes, static_cast<int>(options.number("batches", 5)),
+                                 options.number("cap", 20.0));
     if (options.has("derive")) {
         if (scenes.empty())
             for (const char* name : {"planar_2r", "scara", "cart_pole", "puma560", "stanford_arm", "mass_spring_pair_lagrangian"})

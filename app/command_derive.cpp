@@ -1,5 +1,7 @@
 // `lagrangelab derive SCENE [--format text|latex|json] [--steps 0-8] [--symbolic]
-// [--numeric] [--timings]`: the course notes' procedure, step by step.
+// [--numeric] [--timings] [--form auto|structured|expanded] [--entry B11,C23,g4] [--verify]`:
+// the course notes' procedure, step by step, expanded or structured (derivation_forms.hpp).
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 
@@ -7,7 +9,7 @@
 #include "app/command_usage.hpp"
 #include "app/commands.hpp"
 #include "app/scene_loading.hpp"
-#include "core/pipeline/scene_derivation.hpp"
+#include "core/pipeline/derivation_forms.hpp"
 
 namespace ll::cli {
 namespace {
@@ -35,13 +37,16 @@ StepRange parseSteps(const std::string& text) {
 }  // namespace
 
 int deriveCommand(const Args& args) {
-    const Options options(args, {"format", "steps"}, {"symbolic", "numeric", "timings"});
+    const Options options(args, {"format", "steps", "form", "entry"}, {"symbolic", "numeric", "timings", "verify"});
     if (options.positional().size() != 1)
         throw UsageError(usageLine("derive"));
     const std::string format = options.text("format", "text");
     if (format != "text" && format != "latex" && format != "json")
         throw UsageError("--format: expected text, latex or json, got '" + format + "'");
     if (options.has("symbolic") && options.has("numeric")) throw UsageError("--symbolic and --numeric exclude each other");
+    const std::string form = options.text("form", "auto");
+    if (form != "auto" && form != "structured" && form != "expanded")
+        throw UsageError("--form: expected auto, structured or expanded, got '" + form + "'");
     const Scene scene = loadSceneReportingWarnings(options.positional()[0]);
     const StepRange range = parseSteps(options.text("steps", "0-8"));
 
@@ -52,7 +57,27 @@ int deriveCommand(const Args& args) {
     request.firstStep = range.first;
     request.lastStep = range.last;
     request.format = format == "text" ? DocumentFormat::Text : format == "latex" ? DocumentFormat::Latex : DocumentFormat::Json;
-    const DerivedDocument derived = inSceneFile(options.positional()[0], [&] { return deriveDocument(scene, request); });
+    FormRequest formRequest;
+    formRequest.document = request;
+    formRequest.form = form == "structured" ? DerivationForm::Structured : form == "expanded" ? DerivationForm::Expanded : DerivationForm::Auto;
+    formRequest.verify = options.has("verify");
+    if (options.has("entry")) {
+        const std::string list = options.text("entry");
+        for (std::size_t start = 0; start <= list.size();) {
+            const std::size_t end = std::min(list.find(',', start), list.size());
+            formRequest.entries.push_back(list.substr(start, end - start));
+            start = end + 1;
+        }
+    }
+    const FormDocument result = inSceneFile(options.positional()[0], [&] {
+        try {
+            return deriveInForm(scene, formRequest);
+        } catch (const std::invalid_argument& e) {  // a bad --entry
+            throw UsageError(e.what());
+        }
+    });
+    const DerivedDocument& derived = result.derived;
+    for (const std::string& line : result.verification) std::cerr << "verify: " << line << '\n';
 
     if (options.has("timings")) {
         double total = 0;

@@ -11,15 +11,21 @@ struct CommandText {
     const char* summary;
 };
 
-constexpr std::array<CommandText, 8> commands{{
+constexpr std::array<CommandText, 9> commands{{
     {"eval", "SCENE --q v1,... --qd v1,... [--t T] [--tau v1,...]",
      "B, C, g, Q, q̈, E_kin, E_pot at one state, as JSON"},
     {"simulate",
      "SCENE [--duration T] [--integrator NAME] [--abs-tol X] [--rel-tol X] [--dt X]\n"
      "[--output-rate HZ] [--out FILE.csv|FILE.json]",
      "integrate the equations of motion; trajectory to --out or CSV on stdout, summary on stderr"},
-    {"derive", "SCENE [--format text|latex|json] [--steps 0-8] [--symbolic] [--numeric] [--timings]",
-     "the model step by step as the course notes derive it (symbolic, GiNaC)"},
+    {"derive",
+     "SCENE [--format text|latex|json] [--steps 0-8] [--symbolic] [--numeric] [--timings]\n"
+     "[--form auto|structured|expanded] [--entry B11,C23,g4] [--verify]",
+     "the model step by step as the course notes derive it (symbolic, GiNaC); structured\n"
+     "(named link quantities) for large robots, single entries expanded on demand"},
+    {"codegen", "SCENE --lang c|python [--out FILE] [--numeric]",
+     "the structured model as C99 (math.h only) or Python (standard library) functions for\n"
+     "B(q), C(q, qd), g(q) and the forward dynamics"},
     {"render",
      "SCENE --out FILE.mp4|.webm|.gif|.png|FOLDER [--duration T] [--fps F] [--size WxH]\n"
      "[--camera front|side|top|iso|az,el[,dist]] [--speed X] [--overlay time,energy,name|none]\n"
@@ -30,10 +36,11 @@ constexpr std::array<CommandText, 8> commands{{
      "SCENE [--integrators a,b,...] [--tolerances 1e-3..1e-12] [--steps dt1,dt2,...] [--duration T]\n"
      "[--repeats N] [--reference-tol X] [--out plot.svg|png] [--csv FILE]",
      "work-precision: error, energy drift, CPU time, evaluations and steps per integrator and setting"},
-    {"bench", "[SCENE...] [--batches N] [--rhs | --derive | --cancel | --render]",
+    {"bench", "[SCENE...] [--batches N] [--rhs | --derive | --cancel | --render] [--chains A..B] [--cap S]",
      "median times of B, C, g, forward/inverse dynamics and one simulated second, beside KDL\n"
      "(--rhs: one right-hand side of the PUMA 560 with no effects, gravity only, all effects;\n"
      " --derive: the whole symbolic derivation per parameter mode;\n"
+     " --derive --chains 3..12: structured beside expanded on seeded random chains, with sizes;\n"
      " --cancel: how soon a derivation stops after its cancel flag is set;\n"
      " --render: headless export of 10 s of the PUMA 560 to MP4, render-only frames/s, peak memory)"},
     {"help", "[COMMAND]", "this overview, or the usage of COMMAND (also: lagrangelab COMMAND --help)"},

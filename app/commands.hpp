@@ -15,6 +15,9 @@ int benchCommand(const Args& args);
 int accuracyCommand(const Args& args);
 int deriveCommand(const Args& args);
 int renderCommand(const Args& args);
+int codegenCommand(const Args& args);
+// `bench --derive --chains A..B`: structured beside expanded on random chains (app/bench_derive_chains.cpp).
+int benchDeriveChains(const std::string& range, const std::vector<std::string>& scenes, int repeats, double capSeconds);
 // `bench --render`: the cost of headless export (app/bench_render.cpp).
 int benchRender(const std::vector<std::string>& scenes, int runs);
 

@@ -50,6 +50,7 @@ int main(int argc, char** argv) {
         if (command == "accuracy") return accuracyCommand(args);
         if (command == "derive") return deriveCommand(args);
         if (command == "render") return renderCommand(args);
+        if (command == "codegen") return codegenCommand(args);
         std::fprintf(stderr, "error: unknown command '%s'\n\n%s", command.c_str(), overviewUsage().c_str());
         return 2;
     } catch (const ll::InputError& e) {

@@ -8,30 +8,11 @@
 #include "core/symbolic/angle_sums.hpp"
 #include "core/symbolic/expression_printer.hpp"
 #include "core/symbolic/ginac_lock.hpp"
+#include "core/symbolic/readable_numbers.hpp"
+#include "core/symbolic/trig_context.hpp"
 
 namespace ll::symbolic {
 namespace {
-
-// Decimal scene numbers became exact rationals (0.4318 → 2159/5000); show those as
-// decimals again. Other fractions (1/2, 1/24) stay fractions, as a textbook has them.
-bool isDecimalFraction(const GiNaC::numeric& v) {
-    if (!v.is_rational() || v.is_integer()) return false;
-    GiNaC::numeric d = v.denom();
-    for (int p : {2, 5})
-        while (GiNaC::irem(d, p).is_zero()) d = d / p;
-    return d.is_equal(1) && v.denom() > 8;
-}
-
-GiNaC::ex readableNumbers(const GiNaC::ex& e) {
-    struct : GiNaC::map_function {
-        GiNaC::ex operator()(const GiNaC::ex& x) override {
-            if (GiNaC::is_a<GiNaC::numeric>(x))
-                return isDecimalFraction(GiNaC::ex_to<GiNaC::numeric>(x)) ? GiNaC::ex(GiNaC::ex_to<GiNaC::numeric>(x).evalf()) : x;
-            return x.map(*this);
-        }
-    } map;
-    return map(e);
-}
 
 // How an item reads in a textbook: combined angles (c12), grouped by masses, or by
 // velocities for the velocity-linear results (C, ω, v_c).
@@ -79,7 +60,7 @@ private:
         for (size_t k = 0; k + 1 < trig.nops(); k += 2) {
             const GiNaC::ex c = trig.op(k).lhs(), s = trig.op(k + 1).lhs();
             if (!is_ex_the_function(trig.op(k).rhs(), cos) || e.degree(c) < 2) continue;
-            const GiNaC::ex alternative = GiNaC::rem(e, c * c + s * s - 1, c).expand();
+            const GiNaC::ex alternative = reducePythagorean(e, c, s);
             if (termCount(alternative) < termCount(e)) e = alternative;
         }
         return e;

@@ -7,11 +7,11 @@
 #include <sstream>
 
 #include "core/dynamics/christoffel.hpp"
-#include "core/kinematics/dh_transform.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/model/actuation.hpp"
 #include "core/model/diagnostics.hpp"
 #include "core/symbolic/angle_sums.hpp"
+#include "core/symbolic/link_transform.hpp"
 #include "core/symbolic/trig_context.hpp"
 
 namespace ll::symbolic {
@@ -49,36 +49,6 @@ matrix rotation(const matrix& T) {
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c) R(r, c) = T(r, c);
     return R;
-}
-
-// A_i with q_i added to θ (revolute: cos(θ+q) = cos θ c − sin θ s) or to d (prismatic).
-matrix linkTransform(DhConvention convention, const SymbolicJoint& j, const TrigContext& tc, int i) {
-    ex ct, st, d = j.d;
-    if (j.type == JointType::Revolute) {
-        ct = GiNaC::cos(j.theta) * tc.c(i) - GiNaC::sin(j.theta) * tc.s(i);
-        st = GiNaC::sin(j.theta) * tc.c(i) + GiNaC::cos(j.theta) * tc.s(i);
-    } else {
-        ct = GiNaC::cos(j.theta);
-        st = GiNaC::sin(j.theta);
-        d = j.d + tc.q(i);
-    }
-    matrix A(4, 4);
-    dhTransform<ex>(convention, j.a, d, ct, st, GiNaC::cos(j.alpha), GiNaC::sin(j.alpha), A);
-    return A;
-}
-
-matrix inverseTransform(const matrix& T) {  // [Rᵀ, −Rᵀ t; 0, 1]
-    matrix inv(4, 4);
-    for (int r = 0; r < 3; ++r) {
-        ex t = 0;
-        for (int c = 0; c < 3; ++c) {
-            inv(r, c) = T(c, r);
-            t -= T(c, r) * T(c, 3);
-        }
-        inv(r, 3) = t;
-    }
-    inv(3, 3) = 1;
-    return inv;
 }
 
 // tc.reduce with a checkpoint first: the derivation can be cancelled between entries.
@@ -146,6 +116,8 @@ matrix massMatrixInLinkFrames(const SymbolicRobot& robot, const std::vector<matr
     return B;
 }
 
+}  // namespace
+
 // A parameter kept as a symbol and named like the shorthand the derivation writes for
 // its own trigonometric symbols (c1 = cos q1, s12 = sin(q1 + q2), c9_10) could not be
 // told apart from it in text and LaTeX, and its plain expression would read back as
@@ -165,8 +137,6 @@ void refuseShorthandParameterNames(const Scene& scene) {
     }
 }
 
-}  // namespace
-
 Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
     const auto lock = lockGinac();
     int currentStep = 0;
@@ -179,8 +149,12 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
     std::vector<bool> revolute(n);
     for (int i = 0; i < n; ++i) revolute[i] = scene.robot.joints[i].dh.type == JointType::Revolute;
     if (options.mode == ParameterMode::Parametric) refuseShorthandParameterNames(scene);
-    const TrigContext tc(revolute);
+    TrigContext tc(revolute);
     const SymbolicRobot robot = symbolicRobot(scene, options.mode, tc.t());
+    for (const SymbolicJoint& joint : robot.joints) {
+        tc.addConstantAngle(joint.alpha);
+        tc.addConstantAngle(joint.theta);
+    }
     const bool standard = robot.convention == DhConvention::Standard;
     const auto shown = [&](int step) { return step >= options.firstStep && step <= options.lastStep; };
 

@@ -33,4 +33,7 @@ struct DerivationOptions {
 // shorthand for this robot (c1, s2, c12, s9_10: cos q1, sin q2, ...).
 Derivation deriveRobot(const Scene& scene, const DerivationOptions& options = {});
 
+// The check above on its own (for the structured derivation).
+void refuseShorthandParameterNames(const Scene& scene);
+
 }  // namespace ll::symbolic

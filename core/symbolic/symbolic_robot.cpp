@@ -37,6 +37,15 @@ public:
     // An angle: never a textbook symbol; exact multiples of π stay exact.
     GiNaC::ex angle(const std::string& field, double number) { return read(field, number, true); }
 
+    // A DH twist or offset: as angle(), but in textbook mode one that is not an exact
+    // multiple of π/12 (0.3, 1.0472) becomes its symbol (alpha2, theta3), so the model
+    // reads cos α₂ in general.
+    GiNaC::ex dhAngle(const std::string& field, double number, const std::string& name) {
+        const GiNaC::ex exact = read(field, number, true);
+        if (mode_ != ParameterMode::Textbook || isExact(exact) || number == 0.0) return exact;
+        return textbookSymbol(name, number);
+    }
+
     GiNaC::symbol textbookSymbol(const std::string& name, double number) {
         GiNaC::symbol symbol(name);
         robot_.parameterValues.append(symbol == exactNumber(number));
@@ -92,8 +101,8 @@ SymbolicRobot symbolicRobot(const Scene& scene, ParameterMode mode, const GiNaC:
         sj.type = joint.dh.type;
         sj.a = reader.value(field("a"), joint.dh.a, "a" + k);
         sj.d = reader.value(field("d"), joint.dh.d, "d" + k);
-        sj.alpha = reader.angle(field("alpha"), joint.dh.alpha);
-        sj.theta = reader.angle(field("theta"), joint.dh.theta);
+        sj.alpha = reader.dhAngle(field("alpha"), joint.dh.alpha, "alpha" + k);
+        sj.theta = reader.dhAngle(field("theta"), joint.dh.theta, "theta" + k);
         sj.mass = reader.value(field("mass"), joint.link.mass, "m" + k);
         if (GiNaC::is_a<GiNaC::symbol>(sj.mass)) robot.massSymbols.push_back(GiNaC::ex_to<GiNaC::symbol>(sj.mass));
         for (int c = 0; c < 3; ++c)

@@ -6,8 +6,9 @@
 //   Textbook:   every nonzero length, mass, COM coordinate, inertia entry, spring
 //               and friction coefficient becomes its textbook symbol (a1, d1, m1,
 //               xc1, Ixx1, K1, b1, Fc1; gravity ±g), so a student derives the general
-//               model from the table alone. Angles α_i and θ offsets stay exact
-//               (multiples of π), because they fix the structure.
+//               model from the table alone. Angles α_i and θ offsets that are exact
+//               multiples of π/12 stay exact (they fix the structure); any other
+//               (0.3, 1.0472) becomes its symbol alpha_i, theta_i.
 // A joint's motor armature is its own term in every mode but Numeric: Jm_i G_i² for
 // "motor": {inertia, gear_ratio}, Ja_i for "armature" (or the parameters it was
 // written with, in Parametric mode), so b_ii reads "… + Jm1 G1²".

@@ -12,14 +12,35 @@ TrigContext::TrigContext(std::vector<bool> revolute) : revolute_(std::move(revol
     }
 }
 
+GiNaC::ex reducePythagorean(const GiNaC::ex& e, const GiNaC::ex& x, const GiNaC::ex& y) {
+    const int degree = e.degree(x);
+    if (degree < 2) return e;
+    if (e.info(GiNaC::info_flags::rational_polynomial))  // the fastest way GiNaC offers (platform notes)
+        return GiNaC::rem(e, GiNaC::pow(x, 2) + GiNaC::pow(y, 2) - 1, x, false).expand();
+    const GiNaC::ex oneMinus = 1 - GiNaC::pow(y, 2);
+    GiNaC::ex r = 0;
+    for (int k = 0; k <= degree; ++k) {
+        const GiNaC::ex coefficient = e.coeff(x, k);
+        if (!coefficient.is_zero()) r += coefficient * GiNaC::pow(x, k % 2) * GiNaC::pow(oneMinus, k / 2);
+    }
+    return r.expand();
+}
+
+void TrigContext::addConstantAngle(const GiNaC::ex& angle) {
+    using namespace GiNaC;  // is_ex_the_function is a macro naming GiNaC's function classes
+    const ex s = GiNaC::sin(angle), c = GiNaC::cos(angle);
+    // GiNaC evaluated it (π/3 → √3/2, a float): no function left to reduce.
+    if (!is_ex_the_function(s, sin) || !is_ex_the_function(c, cos)) return;
+    for (const auto& [known, unused] : constantAngles_)
+        if (known.is_equal(s)) return;
+    constantAngles_.emplace_back(s, c);
+}
+
 GiNaC::ex TrigContext::reduce(const GiNaC::ex& e) const {
     GiNaC::ex r = e.expand();
-    for (int i = 0; i < size(); ++i) {
-        if (!revolute_[i] || r.degree(s_[i]) < 2) continue;
-        // rem with respect to s_i: the remainder of degree < 2 in s_i (platform notes:
-        // the fastest way GiNaC offers).
-        r = GiNaC::rem(r, GiNaC::pow(s_[i], 2) + GiNaC::pow(c_[i], 2) - 1, s_[i]).expand();
-    }
+    for (int i = 0; i < size(); ++i)
+        if (revolute_[i]) r = reducePythagorean(r, s_[i], c_[i]);
+    for (const auto& [s, c] : constantAngles_) r = reducePythagorean(r, s, c);
     return r;
 }
 

@@ -25,7 +25,14 @@ public:
     const std::vector<GiNaC::symbol>& q() const { return q_; }
     const std::vector<GiNaC::symbol>& qd() const { return qd_; }
 
-    // Expanded, with every power of s_i reduced to degree < 2 by s_i² = 1 − c_i².
+    // A constant DH angle (α_i or a θ offset: π/3, 3/10, a parameter symbol) whose sine
+    // and cosine appear in the results: reduce() then also lowers sin(x)² to 1 − cos(x)².
+    // Angles whose cosine GiNaC evaluates to a rational (0, ±π/2, π) are not needed.
+    void addConstantAngle(const GiNaC::ex& angle);
+
+    // Expanded, with every power of s_i reduced to degree < 2 by s_i² = 1 − c_i² (and
+    // of sin x by sin² x = 1 − cos² x for the constant angles). The coefficients may be
+    // anything: parameters, floats, sqrt(3), cos(3/10), cos(alpha2).
     GiNaC::ex reduce(const GiNaC::ex& e) const;
     GiNaC::matrix reduce(const GiNaC::matrix& m) const;
 
@@ -38,8 +45,14 @@ public:
 
 private:
     std::vector<bool> revolute_;
+    std::vector<std::pair<GiNaC::ex, GiNaC::ex>> constantAngles_;  // (sin x, cos x)
     std::vector<GiNaC::symbol> q_, qd_, c_, s_;
     GiNaC::symbol t_;
 };
+
+// e (expanded) with every power x^k, k ≥ 2, written x^(k mod 2) (1 − y²)^(k div 2), expanded:
+// the reduction by x² + y² = 1 for any coefficients (GiNaC's rem needs polynomials over the
+// rationals, which a DH angle of 0.3, π/3 or α₂ is not).
+GiNaC::ex reducePythagorean(const GiNaC::ex& e, const GiNaC::ex& x, const GiNaC::ex& y);
 
 }  // namespace ll::symbolic

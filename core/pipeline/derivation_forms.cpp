@@ -1,0 +1,199 @@
+#include "core/pipeline/derivation_forms.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <random>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "core/dynamics/coriolis.hpp"
+#include "core/dynamics/potential_gradient.hpp"
+#include "core/dynamics/mass_matrix.hpp"
+#include "core/kinematics/forward_kinematics.hpp"
+#include "core/symbolic/derivation_evaluator.hpp"
+#include "core/symbolic/ginac_lock.hpp"
+#include "core/symbolic/robot_derivation.hpp"
+#include "core/symbolic/structured_document.hpp"
+
+namespace ll {
+namespace {
+
+bool multipleOfHalfPi(double angle) {
+    const double k = angle / (std::numbers::pi / 2);
+    return std::abs(k - std::round(k)) < 1e-12;
+}
+
+struct Triple {
+    Eigen::MatrixXd B, C;
+    Eigen::MatrixXd g;
+};
+
+double relative(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+    return (a - b).cwiseAbs().maxCoeff() / std::max(1.0, b.cwiseAbs().maxCoeff());
+}
+
+double largest(const Triple& a, const Triple& b) {
+    return std::max({relative(a.B, b.B), relative(a.C, b.C), relative(a.g, b.g)});
+}
+
+std::string verificationLine(const std::string& what, double error, int states) {
+    char buffer[160];
+    std::snprintf(buffer, sizeof buffer, "%s: largest relative difference %.2e in B, C, g (%d random states)", what.c_str(), error,
+                  states);
+    return buffer;
+}
+
+// The expanded document says which form it is and why: "form" and "form_reason" after
+// "mode" in JSON, a line under the title in text, a paragraph in LaTeX.
+void announceForm(std::string& document, symbolic::DocumentFormat format, const std::string& reason) {
+    switch (format) {
+        case symbolic::DocumentFormat::Json: {
+            const nlohmann::ordered_json in = nlohmann::ordered_json::parse(document);
+            nlohmann::ordered_json out;
+            for (const auto& [key, value] : in.items()) {
+                out[key] = value;
+                if (key == "mode") {
+                    out["form"] = "expanded";
+                    out["form_reason"] = reason;
+                }
+            }
+            document = out.dump(2) + "\n";
+            break;
+        }
+        case symbolic::DocumentFormat::Text: {
+            const std::size_t title = document.find('\n'), rule = document.find('\n', title + 1);
+            if (rule != std::string::npos) document.insert(rule + 1, "Form: expanded (" + reason + ")\n");
+            break;
+        }
+        case symbolic::DocumentFormat::Latex: {
+            const std::string mark = "\\maketitle\n";
+            const std::size_t at = document.find(mark);
+            if (at != std::string::npos) document.insert(at + mark.size(), "Form: expanded (" + reason + ").\n");
+            break;
+        }
+    }
+}
+
+}  // namespace
+
+bool expandedIsCheap(const Scene& scene, std::string& reason) {
+    const int n = scene.robot.dof();
+    int general = 0, offAxis = 0;
+    for (const Joint& j : scene.robot.joints) {
+        if (!multipleOfHalfPi(j.dh.alpha) || !multipleOfHalfPi(j.dh.theta)) ++general;
+        if (j.dh.a != 0.0 && j.dh.d != 0.0) ++offAxis;
+    }
+    const std::string joints = std::to_string(n) + " joints";
+    if (n <= 4) {
+        reason = joints + ": the expanded textbook form is cheap";
+        return true;
+    }
+    if (n <= 6 && general == 0 && offAxis <= 1) {
+        reason = joints + " with twists and offsets multiples of pi/2 and at most one joint with both a and d non-zero: "
+                          "the expanded textbook form is cheap";
+        return true;
+    }
+    reason = joints + (n > 6 ? "" : general > 0 ? " with general twists or offsets" : " with several joints offset along both x and z") +
+             ": the expanded form grows exponentially (thousands of terms per entry), the structured form stays short";
+    return false;
+}
+
+FormDocument deriveInForm(const Scene& scene, const FormRequest& request) {
+    using namespace symbolic;
+    FormDocument out;
+    if (scene.lagrangian) {
+        out.form = "expanded";
+        out.reason = "a hand-typed Lagrangian is derived from its E_kin and E_pot";
+        out.derived = deriveDocument(scene, request.document);
+        announceForm(out.derived.document, request.document.format, out.reason);
+        return out;
+    }
+    std::string cheapReason;
+    const bool cheap = expandedIsCheap(scene, cheapReason);
+    const bool expanded = request.form == DerivationForm::Expanded || (request.form == DerivationForm::Auto && cheap);
+    out.reason = request.form == DerivationForm::Auto ? "auto: " + cheapReason : "asked for with --form";
+    const int n = scene.robot.dof();
+    std::vector<EntryRef> entries;
+    for (const std::string& e : request.entries) entries.push_back(parseEntry(e, n));
+
+    const auto lock = lockGinac();
+    const bool needStructured = !expanded || !entries.empty() || request.verify;
+    std::optional<StructuredDynamics> structured;
+    if (needStructured) {
+        DerivationOptions options;
+        options.mode = request.document.mode;
+        options.progress = request.document.progress;
+        options.cancel = request.document.cancel;
+        structured = deriveStructured(scene, options);
+        out.definitions = structured->table->size();
+    }
+    if (expanded && entries.empty()) {
+        out.form = "expanded";
+        out.derived = deriveDocument(scene, request.document);
+        announceForm(out.derived.document, request.document.format, out.reason);
+    } else {
+        out.form = "structured";
+        StructuredDocumentInfo info;
+        info.modeName = modeName(request.document.mode);
+        info.formReason = expanded ? out.reason + "; only the entries asked for are expanded" : out.reason;
+        info.entries = entries;
+        if (request.form != DerivationForm::Structured)
+            for (const EntryRef& e : entries) info.expanded.push_back(expandEntry(*structured, e, request.document.cancel));
+        throwIfCancelled(request.document.cancel);
+        out.derived.document = structuredDocument(*structured, request.document.format, info);
+        out.derived.timings.push_back({0, "structured derivation (steps 1-8)", structured->seconds});
+    }
+
+    if (request.verify) {
+        const RobotModel& robot = scene.robot;
+        std::mt19937 rng(4242);
+        std::uniform_real_distribution<double> u(-2.0, 2.0);
+        const int states = 3;
+        double structuredError = 0, expandedError = 0;
+        std::optional<Derivation> full;
+        if (cheap || out.form == "expanded") {
+            DerivationOptions options;
+            options.mode = request.document.mode;
+            options.cancel = request.document.cancel;
+            full = deriveRobot(scene, options);
+        }
+        for (int k = 0; k < states; ++k) {
+            Eigen::VectorXd q(n), qd(n);
+            for (int i = 0; i < n; ++i) {
+                q[i] = u(rng);
+                qd[i] = u(rng);
+            }
+            RobotData data(robot);
+            forwardKinematics(robot, data, q);
+            computeMassMatrix(robot, data);
+            computeCoriolisMatrix(robot, data, qd);
+            computePotentialGradient(robot, data, scene.effects, q);
+            const Triple numeric{data.B, data.C, data.g};
+            const DefinitionValues v(*structured->table,
+                                     structuredInputs(*structured, {q.data(), q.data() + n}, {qd.data(), qd.data() + n}));
+            Triple s{Eigen::MatrixXd(n, n), Eigen::MatrixXd(n, n), Eigen::MatrixXd(n, 1)};
+            for (int i = 0; i < n; ++i) {
+                s.g(i, 0) = v(structured->g(i, 0));
+                for (int j = 0; j < n; ++j) {
+                    s.B(i, j) = v(structured->B(i, j));
+                    s.C(i, j) = v(structured->C(i, j));
+                }
+            }
+            structuredError = std::max(structuredError, largest(s, numeric));
+            if (full) {
+                const DerivationEvaluator eval(*full);
+                const Triple e{eval.value(full->B, q, qd), eval.value(full->C, q, qd), eval.value(full->g, q, qd)};
+                expandedError = std::max(expandedError, largest(e, numeric));
+            }
+        }
+        out.verification.push_back(verificationLine("structured vs numeric core", structuredError, states));
+        if (full) out.verification.push_back(verificationLine("expanded vs numeric core", expandedError, states));
+        else out.verification.push_back("expanded: not derived (" + cheapReason + ")");
+        if (structured) out.verification.push_back(std::string("Bdot - 2C skew-symmetric over the names: ") + (skewSymmetric(*structured) ? "yes" : "NO"));
+    }
+    return out;
+}
+
+}  // namespace ll

@@ -1,0 +1,167 @@
+#include "core/symbolic/named_definitions.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "core/model/cancellation.hpp"
+
+namespace ll::symbolic {
+namespace {
+
+// Never named (SYMORO's rule): numbers, symbols and number·symbol.
+bool isAtomic(const GiNaC::ex& e) {
+    if (GiNaC::is_a<GiNaC::numeric>(e) || GiNaC::is_a<GiNaC::symbol>(e) || GiNaC::is_a<GiNaC::constant>(e)) return true;
+    return GiNaC::is_a<GiNaC::mul>(e) && e.nops() == 2 && GiNaC::is_a<GiNaC::numeric>(e.op(1)) &&
+           GiNaC::is_a<GiNaC::symbol>(e.op(0));
+}
+
+template <class Visit>
+void forEachSymbol(const GiNaC::ex& e, Visit visit) {
+    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::symbol>(*it)) visit(*it);
+}
+
+}  // namespace
+
+NamedDefinitions::NamedDefinitions(const TrigContext& tc) : tc_(tc) {
+    for (int k = 0; k < tc.size(); ++k) {
+        coordinateOf_[tc.q(k)] = k;
+        coordinateOf_[tc.c(k)] = k;
+        coordinateOf_[tc.s(k)] = k;
+    }
+}
+
+GiNaC::ex NamedDefinitions::name(const GiNaC::ex& e, const std::string& plain, const std::string& latex,
+                                 const std::string& meaning, int step) {
+    const GiNaC::ex value = tc_.reduce(e);
+    if (value.is_zero() || isAtomic(value)) return value;
+    if (const auto it = byValue_.find(value); it != byValue_.end()) return entries_[it->second].symbol;
+    if (const auto it = byValue_.find((-value).expand()); it != byValue_.end()) return -entries_[it->second].symbol;
+    NamedDefinition d{GiNaC::symbol(plain), value, latex, meaning, step, dependenciesOf(value), coordinatesOf(value)};
+    const int index = size();
+    byValue_.emplace(value, index);
+    bySymbol_.emplace(d.symbol, index);
+    entries_.push_back(std::move(d));
+    unfolded_.emplace_back();
+    isUnfolded_.push_back(false);
+    return entries_.back().symbol;
+}
+
+int NamedDefinitions::indexOf(const GiNaC::ex& symbol) const {
+    const auto it = bySymbol_.find(symbol);
+    return it == bySymbol_.end() ? -1 : it->second;
+}
+
+std::uint64_t NamedDefinitions::coordinatesOf(const GiNaC::ex& e) const {
+    std::uint64_t bits = 0;
+    forEachSymbol(e, [&](const GiNaC::ex& s) {
+        if (const auto it = coordinateOf_.find(s); it != coordinateOf_.end()) bits |= std::uint64_t(1) << it->second;
+        if (const int k = indexOf(s); k >= 0) bits |= entries_[k].coordinates;
+    });
+    return bits;
+}
+
+std::vector<int> NamedDefinitions::dependenciesOf(const GiNaC::ex& e) const {
+    std::vector<int> deps;
+    forEachSymbol(e, [&](const GiNaC::ex& s) {
+        if (const int k = indexOf(s); k >= 0) deps.push_back(k);
+    });
+    std::sort(deps.begin(), deps.end());
+    deps.erase(std::unique(deps.begin(), deps.end()), deps.end());
+    return deps;
+}
+
+std::vector<int> NamedDefinitions::coneOf(const GiNaC::ex& e) const {
+    std::vector<bool> in(entries_.size(), false);
+    std::vector<int> stack = dependenciesOf(e);
+    while (!stack.empty()) {
+        const int k = stack.back();
+        stack.pop_back();
+        if (in[k]) continue;
+        in[k] = true;
+        for (int d : entries_[k].dependencies) stack.push_back(d);
+    }
+    std::vector<int> cone;
+    for (int k = 0; k < size(); ++k)
+        if (in[k]) cone.push_back(k);
+    return cone;
+}
+
+GiNaC::ex NamedDefinitions::unfold(const GiNaC::ex& e, const std::atomic<bool>* cancel) {
+    GiNaC::exmap substitution;
+    for (int k : coneOf(e)) {  // ascending: dependencies first
+        if (!isUnfolded_[k]) {
+            throwIfCancelled(cancel);
+            GiNaC::exmap direct;
+            for (int d : entries_[k].dependencies) direct[entries_[d].symbol] = unfolded_[d];
+            unfolded_[k] = tc_.reduce(entries_[k].value.subs(direct, GiNaC::subs_options::no_pattern));
+            isUnfolded_[k] = true;
+        }
+    }
+    for (int k : dependenciesOf(e)) substitution[entries_[k].symbol] = unfolded_[k];
+    return tc_.reduce(e.subs(substitution, GiNaC::subs_options::no_pattern));
+}
+
+namespace {
+
+double evaluate(const GiNaC::ex& e, const std::map<GiNaC::ex, double, GiNaC::ex_is_less>& values, bool absolute = false) {
+    using namespace GiNaC;
+    if (is_a<numeric>(e)) return absolute ? std::abs(ex_to<numeric>(e).to_double()) : ex_to<numeric>(e).to_double();
+    if (is_a<symbol>(e)) {
+        const auto it = values.find(e);
+        if (it == values.end()) throw std::invalid_argument("no value for " + ex_to<symbol>(e).get_name());
+        return absolute ? std::abs(it->second) : it->second;
+    }
+    if (is_a<constant>(e)) {
+        const double v = ex_to<numeric>(e.evalf()).to_double();
+        return absolute ? std::abs(v) : v;
+    }
+    if (is_a<add>(e)) {
+        double s = 0;
+        for (size_t k = 0; k < e.nops(); ++k) s += evaluate(e.op(k), values, absolute);
+        return s;
+    }
+    if (is_a<mul>(e)) {
+        double p = 1;
+        for (size_t k = 0; k < e.nops(); ++k) p *= evaluate(e.op(k), values, absolute);
+        return p;
+    }
+    if (is_a<power>(e)) {
+        const ex& exponent = e.op(1);
+        const double b = evaluate(e.op(0), values, absolute);
+        if (is_a<numeric>(exponent) && ex_to<numeric>(exponent).is_integer()) return std::pow(b, ex_to<numeric>(exponent).to_int());
+        return std::pow(b, evaluate(exponent, values));
+    }
+    if (is_a<function>(e)) {
+        const std::string f = ex_to<function>(e).get_name();
+        const double x = evaluate(e.op(0), values);
+        if (absolute) return std::abs(evaluate(e, values));
+        if (f == "cos") return std::cos(x);
+        if (f == "sin") return std::sin(x);
+        if (f == "tan") return std::tan(x);
+        if (f == "exp") return std::exp(x);
+        if (f == "log") return std::log(x);
+        if (f == "tanh") return std::tanh(x);
+        if (f == "abs") return std::abs(x);
+        throw std::invalid_argument("cannot evaluate " + f);
+    }
+    throw std::invalid_argument("cannot evaluate an expression of this kind");
+}
+
+}  // namespace
+
+DefinitionValues::DefinitionValues(const NamedDefinitions& table, const GiNaC::lst& inputs) {
+    for (const GiNaC::ex& rel : inputs) values_[rel.lhs()] = evaluate(rel.rhs(), values_);
+    magnitudes_ = values_;
+    for (const NamedDefinition& d : table.entries()) {
+        values_[d.symbol] = evaluate(d.value, values_);
+        magnitudes_[d.symbol] = evaluate(d.value, magnitudes_, true);
+    }
+}
+
+double DefinitionValues::operator()(const GiNaC::ex& e) const { return evaluate(e, values_); }
+
+double DefinitionValues::magnitude(const GiNaC::ex& e) const { return evaluate(e, magnitudes_, true); }
+
+}  // namespace ll::symbolic

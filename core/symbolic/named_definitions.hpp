@@ -1,0 +1,89 @@
+#pragma once
+// An ordered table of small named quantities, the way SYMORO, ROBOTRAN and the explicit
+// PUMA model of Armstrong–Khatib–Burdick write a robot's dynamics: each entry is a
+// few operations over the coordinates (c_i, s_i, q_i), the parameters and earlier
+// names; B, C and g are short sums over the names. Naming while deriving keeps every
+// expression small, so the cost grows polynomially with the joints instead of
+// exponentially (../shared/notes/derivation-at-scale.md).
+//
+// name() hash-conses: an expression (or its negative) is named once; numbers, symbols
+// and number·symbol are never named. Each definition is expanded and trig-reduced on
+// its own (TrigContext::reduce). Plain data (strings, indices) describes each entry so
+// that printers and the display tree can render the table without GiNaC knowledge.
+// Call everything with the GiNaC lock held (ginac_lock.hpp).
+#include <atomic>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include <ginac/ginac.h>
+
+#include "core/symbolic/trig_context.hpp"
+
+namespace ll::symbolic {
+
+struct NamedDefinition {
+    GiNaC::symbol symbol;           // its plain name is a re-parsable identifier: "z2x_4"
+    GiNaC::ex value;                // over q, c_i, s_i, parameters and earlier names
+    std::string latex;              // "{}^{4}z_{2,x}"
+    std::string meaning;            // "x of axis z_2 (joint 3) in the frame of link 4"
+    int step = 0;                   // the step of the course notes where it arises (1..8)
+    std::vector<int> dependencies;  // indices of the earlier entries its value uses
+    std::uint64_t coordinates = 0;  // bit k set: depends on q_{k+1} (directly or through names)
+};
+
+class NamedDefinitions {
+public:
+    explicit NamedDefinitions(const TrigContext& tc);
+
+    // e reduced; returned as it is when it is zero, a number, a symbol or number·symbol;
+    // the entry's symbol (or its negative) when e (or −e) was named before; else a new
+    // entry named `plain`.
+    GiNaC::ex name(const GiNaC::ex& e, const std::string& plain, const std::string& latex, const std::string& meaning,
+                   int step);
+
+    const std::vector<NamedDefinition>& entries() const { return entries_; }
+    int size() const { return static_cast<int>(entries_.size()); }
+    // The entry of a symbol, -1 for any other symbol.
+    int indexOf(const GiNaC::ex& symbol) const;
+    // The coordinates e depends on (bit k: q_{k+1}), through the names it uses.
+    std::uint64_t coordinatesOf(const GiNaC::ex& e) const;
+    // The entries e uses directly, ascending.
+    std::vector<int> dependenciesOf(const GiNaC::ex& e) const;
+    // Every entry e needs, directly or not, ascending (its dependency cone).
+    std::vector<int> coneOf(const GiNaC::ex& e) const;
+
+    // e with every name unfolded into c_i, s_i, q_i and parameters, reduced: the fully
+    // expanded form. Memoised per name; checks `cancel` between names.
+    GiNaC::ex unfold(const GiNaC::ex& e, const std::atomic<bool>* cancel = nullptr);
+
+    const TrigContext& trig() const { return tc_; }
+
+private:
+    const TrigContext& tc_;
+    std::vector<NamedDefinition> entries_;
+    std::unordered_map<GiNaC::ex, int, std::hash<GiNaC::ex>, GiNaC::ex_is_equal> byValue_;
+    std::map<GiNaC::ex, int, GiNaC::ex_is_less> bySymbol_;
+    std::map<GiNaC::ex, int, GiNaC::ex_is_less> coordinateOf_;  // q_k, c_k, s_k → k
+    std::vector<GiNaC::ex> unfolded_;                            // memo of unfold, per entry
+    std::vector<bool> isUnfolded_;
+};
+
+// Numbers for every entry of a table, in order, at one state: each definition
+// evaluated with doubles from the values of its inputs. `inputs` gives q_i, c_i, s_i,
+// q̇_i and the parameters their values (symbol == number).
+class DefinitionValues {
+public:
+    DefinitionValues(const NamedDefinitions& table, const GiNaC::lst& inputs);
+    double operator()(const GiNaC::ex& e) const;  // any expression over the inputs and names
+    // The same with every sum taken over absolute values: the size of the terms whose
+    // cancellation gives operator()(e), for telling a rounding residue from a value.
+    double magnitude(const GiNaC::ex& e) const;
+
+private:
+    std::map<GiNaC::ex, double, GiNaC::ex_is_less> values_, magnitudes_;
+};
+
+}  // namespace ll::symbolic

@@ -1,0 +1,341 @@
+#include "core/symbolic/structured_document.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "core/symbolic/expression_printer.hpp"
+#include "core/symbolic/ginac_lock.hpp"
+#include "core/symbolic/readable_numbers.hpp"
+
+namespace ll::symbolic {
+namespace {
+
+std::string idx(int i) { return std::to_string(i + 1); }
+
+std::size_t termCount(const GiNaC::ex& e) { return e.is_zero() ? 0 : GiNaC::is_a<GiNaC::add>(e) ? e.nops() : 1; }
+
+PrintOptions optionsFor(const StructuredDynamics& s, Style style) {
+    PrintOptions o;
+    o.style = style;
+    for (int i = 0; i < s.n; ++i) o.coordinateNames.push_back("q" + idx(i));
+    o.trigSymbols = true;
+    return o;
+}
+
+std::string coordinateList(std::uint64_t bits, int n) {
+    std::string out;
+    for (int k = 0; k < n; ++k)
+        if (bits & (std::uint64_t(1) << k)) out += (out.empty() ? "q" : ", q") + idx(k);
+    return out.empty() ? "none" : out;
+}
+
+std::string entryLabel(char m, int r, int c, int n) {
+    const bool wide = n >= 10;
+    if (m == 'g') return "g" + idx(r);
+    return std::string(1, m) + idx(r) + (wide ? "_" : "") + idx(c);
+}
+
+const char* stepTitle(int step) {
+    switch (step) {
+        case 1: return "Kinematic model: the axes x_f, y_f, z_f and origin o_f of every frame f, in each link's own frame";
+        case 4: return "Jacobian columns J_P,j^(i) of each centre of mass, in its link's frame (J_O,j^(i) = z of joint j's axis)";
+        case 6: return "Potential energy: gamma_j^(i) = g0 . J_P,j^(i), so g_j = dE_pot/dq_j = -sum_{i>=j} m_i gamma_j^(i)";
+        case 7: return "Mass matrix: beta_jk^(i) = m_i J_P,j^(i) . J_P,k^(i) + z_j^T I_i z_k, b_jk = sum_{i>=max(j,k)} beta_jk^(i)";
+        case 8: return "Christoffel symbols: d b_jk / d q_l by the Jacobian identities (zero for l <= min(j,k))";
+    }
+    return "";
+}
+
+struct Selection {
+    std::vector<EntryRef> entries;  // what to show of B, C, g
+    std::vector<bool> definitions;  // which names they need
+};
+
+Selection select(const StructuredDynamics& s, const std::vector<EntryRef>& asked) {
+    Selection sel;
+    sel.entries = asked;
+    if (sel.entries.empty()) {
+        for (int j = 0; j < s.n; ++j)
+            for (int k = j; k < s.n; ++k) sel.entries.push_back({'B', j, k, entryLabel('B', j, k, s.n)});
+        for (int i = 0; i < s.n; ++i)
+            for (int j = 0; j < s.n; ++j) sel.entries.push_back({'C', i, j, entryLabel('C', i, j, s.n)});
+        for (int j = 0; j < s.n; ++j) sel.entries.push_back({'g', j, 0, entryLabel('g', j, 0, s.n)});
+    }
+    sel.definitions.assign(s.table->size(), asked.empty());
+    if (!asked.empty())
+        for (const EntryRef& e : sel.entries) {
+            const GiNaC::ex& v = e.matrix == 'B' ? s.B(e.row, e.col) : e.matrix == 'C' ? s.C(e.row, e.col) : s.g(e.row, 0);
+            for (int k : s.table->coneOf(v)) sel.definitions[k] = true;
+        }
+    return sel;
+}
+
+// The selected names grouped by the step where each arises (steps ascending, table order
+// within a step: still dependency order, since a name only uses names of its own or
+// earlier steps), with a heading for each step.
+std::vector<int> byStep(const StructuredDynamics& s, const Selection& sel) {
+    std::vector<int> order;
+    for (int k = 0; k < s.table->size(); ++k)
+        if (sel.definitions[k]) order.push_back(k);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](int a, int b) { return s.table->entries()[a].step < s.table->entries()[b].step; });
+    return order;
+}
+
+template <class Heading, class Line>
+void forEachDefinition(const StructuredDynamics& s, const Selection& sel, Heading heading, Line line) {
+    int step = -1;
+    for (int k : byStep(s, sel)) {
+        const NamedDefinition& d = s.table->entries()[k];
+        if (d.step != step) heading(step = d.step);
+        line(d);
+    }
+}
+
+const GiNaC::ex& valueOf(const StructuredDynamics& s, const EntryRef& e) {
+    return e.matrix == 'B' ? s.B(e.row, e.col) : e.matrix == 'C' ? s.C(e.row, e.col) : s.g(e.row, 0);
+}
+
+std::string entryMeaning(const StructuredDynamics& s, const EntryRef& e) {
+    const std::string deps = coordinateList(s.table->coordinatesOf(valueOf(s, e)), s.n);
+    if (e.matrix == 'B') return "sum of the contributions of links " + idx(std::max(e.row, e.col)) + ".." + idx(s.n - 1) + "; depends on " + deps;
+    if (e.matrix == 'C') return "sum_k c_" + idx(e.row) + idx(e.col) + "k qd_k; depends on " + deps + " and the velocities";
+    return "depends on " + deps;
+}
+
+// The zero pattern of ∂b_jk/∂q_l (j ≤ k): one row per (j, k), one column per l.
+std::vector<std::string> zeroPattern(const StructuredDynamics& s) {
+    std::vector<std::string> rows;
+    std::string head = "  jk  ";
+    for (int l = 0; l < s.n; ++l) head += " q" + idx(l) + (l + 1 < 9 ? " " : "");
+    rows.push_back(head);
+    for (int j = 0; j < s.n; ++j)
+        for (int k = j; k < s.n; ++k) {
+            std::string row = "  " + idx(j) + (s.n >= 10 ? "," : "") + idx(k) + "  ";
+            row.resize(6, ' ');
+            for (int l = 0; l < s.n; ++l) row += std::string(s.dB[l](j, k).is_zero() ? "  ." : "  x") + (l + 1 < 9 ? " " : "  ");
+            rows.push_back(row);
+        }
+    return rows;
+}
+
+void writeText(const StructuredDynamics& s, const StructuredDocumentInfo& info, std::ostream& out) {
+    const PrintOptions text = optionsFor(s, Style::Text);
+    const Selection sel = select(s, info.entries);
+    out << s.systemName << "\n" << std::string(s.systemName.size(), '=') << "\n";
+    out << "Form: structured (" << info.formReason << ")\n";
+    out << "B, C and g are short sums over " << s.table->size()
+        << " named quantities, each a few operations on earlier names; every vector of link i is written in link i's "
+           "own frame, where its centre of mass and inertia tensor are constant.\n";
+    forEachDefinition(
+        s, sel, [&](int step) { out << "\nStep " << step << ". " << stepTitle(step) << "\n"; },
+        [&](const NamedDefinition& d) {
+            out << "    " << d.symbol.get_name() << " = " << print(readableNumbers(d.value), text) << "        (" << d.meaning << "; depends on "
+                << coordinateList(d.coordinates, s.n) << ")\n";
+        });
+    out << "\nResults over the names\n";
+    for (const EntryRef& e : sel.entries)
+        out << "    " << (e.matrix == 'B' ? "b" : e.matrix == 'C' ? "c" : "g") << e.label.substr(1) << " = "
+            << print(readableNumbers(valueOf(s, e)), text) << "        (" << entryMeaning(s, e) << ")\n";
+    if (info.entries.empty()) {
+        const int n = s.n, total = n * n * (n + 1) / 2;
+        out << "\nZero pattern of d b_jk / d q_l (j <= k; x: non-zero): " << s.nonZeroMassDerivatives() << " of " << total
+            << " are non-zero\n";
+        for (const std::string& row : zeroPattern(s)) out << row << "\n";
+        out << "\nSkew symmetry: Bdot - 2C with Bdot = sum_l dB/dq_l qd_l over the same names is "
+            << (skewSymmetric(s) ? "skew-symmetric (checked)" : "NOT skew-symmetric") << "\n";
+    }
+    for (const ExpandedEntry& e : info.expanded)
+        out << "\nExpanded " << e.ref.label << " (" << e.terms << " terms, " << e.seconds << " s):\n    " << print(readableNumbers(e.value), text) << "\n";
+}
+
+void writeLatex(const StructuredDynamics& s, const StructuredDocumentInfo& info, std::ostream& out) {
+    const PrintOptions latex = optionsFor(s, Style::Latex);
+    const Selection sel = select(s, info.entries);
+    out << "\\documentclass[a4paper,10pt]{article}\n"
+           "\\usepackage[margin=1.5cm,landscape]{geometry}\n"
+           "\\usepackage{amsmath,amssymb}\n"
+           "\\allowdisplaybreaks\n"
+           "\\title{Euler--Lagrange model (structured form): " << s.systemName << "}\n"
+           "\\author{LagrangeLab}\n\\date{}\n"
+           "\\begin{document}\n\\maketitle\n"
+        << "Form: structured (" << info.formReason << "). $B$, $C$ and $g$ are short sums over " << s.table->size()
+        << " named quantities; every vector of link $i$ is written in its own frame. "
+           "Shorthand: $c_{i} = \\cos q_i$, $s_{i} = \\sin q_i$.\n";
+    forEachDefinition(
+        s, sel, [&](int step) { out << "\\section*{Step " << step << "}\n" << stepTitle(step) << "\n"; },
+        [&](const NamedDefinition& d) { out << "\\[ " << d.latex << " = " << print(readableNumbers(d.value), latex) << " \\]\n"; });
+    out << "\\section*{Results over the names}\n";
+    for (const EntryRef& e : sel.entries)
+        out << "\\[ " << (e.matrix == 'B' ? "b" : e.matrix == 'C' ? "c" : "g") << "_{" << e.label.substr(1) << "} = "
+            << print(readableNumbers(valueOf(s, e)), latex) << " \\]\n";
+    if (info.entries.empty()) {
+        const int n = s.n;
+        out << "\\paragraph{Zero pattern} " << s.nonZeroMassDerivatives() << " of " << n * n * (n + 1) / 2
+            << " derivatives $\\partial b_{jk}/\\partial q_l$ ($j \\le k$) are non-zero. "
+            << "$\\dot B - 2C$ is " << (skewSymmetric(s) ? "skew-symmetric (checked over the names)" : "not skew-symmetric") << ".\n";
+    }
+    for (const ExpandedEntry& e : info.expanded)
+        out << "\\paragraph{Expanded " << e.ref.label << "} (" << e.terms << " terms)\n\\[ " << print(readableNumbers(e.value), latex) << " \\]\n";
+    out << "\\end{document}\n";
+}
+
+void writeJson(const StructuredDynamics& s, const StructuredDocumentInfo& info, std::ostream& out) {
+    const PrintOptions plain = optionsFor(s, Style::Plain), latex = optionsFor(s, Style::Latex);
+    const Selection sel = select(s, info.entries);
+    nlohmann::ordered_json j;
+    j["system"] = s.systemName;
+    j["mode"] = info.modeName;
+    j["form"] = "structured";
+    j["form_reason"] = info.formReason;
+    std::vector<std::string> coordinates;
+    for (int i = 0; i < s.n; ++i) coordinates.push_back("q" + idx(i));
+    j["coordinates"] = coordinates;
+    nlohmann::ordered_json defs = nlohmann::ordered_json::array();
+    for (int k : byStep(s, sel)) {
+        const NamedDefinition& d = s.table->entries()[k];
+        std::vector<std::string> deps;
+        for (int q = 0; q < s.n; ++q)
+            if (d.coordinates & (std::uint64_t(1) << q)) deps.push_back("q" + idx(q));
+        defs.push_back({{"name", d.symbol.get_name()},
+                        {"expr", print(d.value, plain)},
+                        {"latex", d.latex + " = " + print(readableNumbers(d.value), latex)},
+                        {"step", d.step},
+                        {"meaning", d.meaning},
+                        {"depends_on", deps}});
+    }
+    j["definitions"] = defs;
+    const auto matrix = [&](const GiNaC::matrix& m) {
+        nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+        for (unsigned r = 0; r < m.rows(); ++r) {
+            if (m.cols() == 1) {
+                rows.push_back(print(m(r, 0), plain));
+                continue;
+            }
+            nlohmann::ordered_json row = nlohmann::ordered_json::array();
+            for (unsigned c = 0; c < m.cols(); ++c) row.push_back(print(m(r, c), plain));
+            rows.push_back(row);
+        }
+        return rows;
+    };
+    if (info.entries.empty()) {
+        j["B"] = matrix(s.B);
+        j["C"] = matrix(s.C);
+        j["g"] = matrix(s.g);
+        j["Q"] = matrix(s.Q);
+        const int n = s.n;
+        j["mass_derivatives"] = {{"nonzero", s.nonZeroMassDerivatives()}, {"of", n * n * (n + 1) / 2}};
+        j["skew_symmetric"] = skewSymmetric(s);
+    }
+    nlohmann::ordered_json entries = nlohmann::ordered_json::object();
+    for (const EntryRef& e : info.entries) {
+        nlohmann::ordered_json entry{{"structured", print(valueOf(s, e), plain)}};
+        for (const ExpandedEntry& x : info.expanded)
+            if (x.ref.label == e.label) {
+                entry["expr"] = print(x.value, plain);
+                entry["terms"] = x.terms;
+                entry["seconds"] = x.seconds;
+            }
+        entries[e.label] = entry;
+    }
+    if (!info.entries.empty()) j["entries"] = entries;
+    out << j.dump() << '\n';  // compact: an 8-joint model has about 1100 definitions
+}
+
+}  // namespace
+
+EntryRef parseEntry(const std::string& text, int n) {
+    const auto fail = [&](const std::string& why) {
+        throw std::invalid_argument("--entry: '" + text + "': " + why);
+    };
+    if (text.size() < 2 || (text[0] != 'B' && text[0] != 'C' && text[0] != 'g' && text[0] != 'b' && text[0] != 'c'))
+        fail("expected B<j><k>, C<i><j> or g<j>, such as B11, C23, g4 (B1_10 with two-digit indices)");
+    EntryRef e;
+    e.matrix = static_cast<char>(text[0] == 'b' ? 'B' : text[0] == 'c' ? 'C' : text[0]);
+    std::string rest = text.substr(1);
+    std::vector<int> indices;
+    try {
+        if (rest.find('_') != std::string::npos || rest.find(',') != std::string::npos) {
+            for (std::size_t start = 0; start <= rest.size();) {
+                const std::size_t end = std::min(rest.find_first_of("_,", start), rest.size());
+                indices.push_back(std::stoi(rest.substr(start, end - start)));
+                start = end + 1;
+            }
+        } else if (e.matrix == 'g') {
+            indices.push_back(std::stoi(rest));
+        } else if (rest.size() == 2) {
+            indices = {rest[0] - '0', rest[1] - '0'};
+        } else {
+            fail("write two-digit indices with '_' between them (B1_10)");
+        }
+    } catch (const std::logic_error&) {
+        fail("the indices are not numbers");
+    }
+    for (char ch : rest)
+        if (!std::isdigit(static_cast<unsigned char>(ch)) && ch != '_' && ch != ',') fail("the indices are not numbers");
+    if (indices.size() != (e.matrix == 'g' ? 1u : 2u)) fail(e.matrix == 'g' ? "g has one index" : "B and C have two indices");
+    for (int i : indices)
+        if (i < 1 || i > n) fail("indices run from 1 to " + std::to_string(n));
+    e.row = indices[0] - 1;
+    e.col = indices.size() > 1 ? indices[1] - 1 : 0;
+    e.label = entryLabel(e.matrix, e.row, e.col, n);
+    return e;
+}
+
+ExpandedEntry expandEntry(StructuredDynamics& s, const EntryRef& ref, const std::atomic<bool>* cancel) {
+    const auto lock = lockGinac();
+    const auto start = std::chrono::steady_clock::now();
+    NamedDefinitions& table = *s.table;
+    const TrigContext& tc = *s.trig;
+    ExpandedEntry out{ref, 0, 0, 0};
+    if (ref.matrix == 'B') {
+        out.value = table.unfold(s.B(ref.row, ref.col), cancel);
+    } else if (ref.matrix == 'g') {
+        out.value = table.unfold(s.g(ref.row, 0), cancel);
+    } else {  // c_ij = Σ_k ½(∂b_ij/∂q_k + ∂b_ik/∂q_j − ∂b_jk/∂q_i) q̇_k, from rows i and j of B expanded
+        const int i = ref.row, j = ref.col;
+        std::vector<GiNaC::ex> rowI(s.n), rowJ(s.n);
+        for (int k = 0; k < s.n; ++k) {
+            rowI[k] = table.unfold(s.B(i, k), cancel);
+            rowJ[k] = table.unfold(s.B(j, k), cancel);
+        }
+        GiNaC::ex c = 0;
+        for (int k = 0; k < s.n; ++k) {
+            throwIfCancelled(cancel);
+            c += GiNaC::numeric(1, 2) * (tc.diffq(rowI[j], k) + tc.diffq(rowI[k], j) - tc.diffq(rowJ[k], i)) * tc.qd(k);
+        }
+        out.value = tc.reduce(c);
+    }
+    out.terms = termCount(out.value);
+    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return out;
+}
+
+bool skewSymmetric(const StructuredDynamics& s) {
+    const auto lock = lockGinac();
+    for (int j = 0; j < s.n; ++j)
+        for (int k = j; k < s.n; ++k) {
+            GiNaC::ex sum = -2 * (s.C(j, k) + s.C(k, j));
+            for (int l = 0; l < s.n; ++l) sum += 2 * s.dB[l](j, k) * s.trig->qd(l);
+            if (!sum.expand().is_zero()) return false;
+        }
+    return true;
+}
+
+std::string structuredDocument(const StructuredDynamics& s, DocumentFormat format, const StructuredDocumentInfo& info) {
+    const auto lock = lockGinac();
+    std::ostringstream out;
+    switch (format) {
+        case DocumentFormat::Text: writeText(s, info, out); break;
+        case DocumentFormat::Latex: writeLatex(s, info, out); break;
+        case DocumentFormat::Json: writeJson(s, info, out); break;
+    }
+    return out.str();
+}
+
+}  // namespace ll::symbolic

@@ -1,0 +1,230 @@
+// The structured form on the command line: `derive --form`, `--entry`, `--verify`,
+// `codegen --lang c|python` (the generated C compiled with cc, the Python run with
+// python3, both compared with `eval`), and one-line refusals with exit code 2.
+#include <QtTest>
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+
+#include <ginac/ginac.h>
+
+namespace {
+
+struct Run {
+    int exitCode;
+    QByteArray out, err;
+};
+
+Run run(const QString& program, const QStringList& args, const QString& dir = {}) {
+    QProcess p;
+    if (!dir.isEmpty()) p.setWorkingDirectory(dir);
+    p.start(program, args);
+    p.waitForFinished(300000);
+    return {p.exitCode(), p.readAllStandardOutput(), p.readAllStandardError()};
+}
+
+Run cli(const QStringList& args) { return run(LL_CLI, args); }
+
+QString example(const char* name) { return QString(LL_EXAMPLES_DIR) + "/" + name; }
+
+double relative(const QJsonArray& a, const QJsonArray& b) {
+    double diff = 0, scale = 1;
+    for (int i = 0; i < a.size(); ++i) {
+        if (a[i].isArray()) {
+            diff = std::max(diff, relative(a[i].toArray(), b[i].toArray()));
+            continue;
+        }
+        diff = std::max(diff, std::abs(a[i].toDouble() - b[i].toDouble()));
+        scale = std::max(scale, std::abs(b[i].toDouble()));
+    }
+    return diff / scale;
+}
+
+const char* kQ = "0.3,-0.7,1.1,0.4,-0.2,0.9";
+const char* kQd = "0.5,0.2,-0.4,1.0,-0.3,0.6";
+
+}  // namespace
+
+class TestStructuredCli : public QObject {
+    Q_OBJECT
+private slots:
+    // The generated C and Python give eval's B, C, g and, with eval's Q as τ, its q̈.
+    void generatedCodeEqualsEval_data() {
+        QTest::addColumn<QString>("lang");
+        QTest::addColumn<QString>("scene");
+        for (const char* lang : {"c", "python"}) {
+            QTest::newRow((std::string(lang) + " puma560").c_str()) << lang << "puma560.json";
+            QTest::newRow((std::string(lang) + " stanford").c_str()) << lang << "stanford_arm.json";
+        }
+    }
+    void generatedCodeEqualsEval() {
+        QFETCH(QString, lang);
+        QFETCH(QString, scene);
+        const Run e = cli({"eval", example(scene.toUtf8().constData()), "--q", kQ, "--qd", kQd});
+        QCOMPARE(e.exitCode, 0);
+        const QJsonObject expected = QJsonDocument::fromJson(e.out).object();
+        QStringList tau;
+        for (const QJsonValue v : expected["Q"].toArray()) tau << QString::number(v.toDouble(), 'g', 17);
+
+        QTemporaryDir dir;
+        const QString file = dir.filePath(lang == "c" ? "model.c" : "model.py");
+        const Run gen = cli({"codegen", example(scene.toUtf8().constData()), "--lang", lang, "--out", file});
+        QVERIFY2(gen.exitCode == 0, gen.err.constData());
+        QFile f(file);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QByteArray code = f.readAll();
+        QVERIFY(code.contains("DH table"));  // header comment
+        QJsonObject got;
+        if (lang == "c") {
+            QVERIFY(!code.contains("#include <stdio.h>") && code.contains("#include <math.h>"));
+            const QString main = dir.filePath("main.c");
+            QFile m(main);
+            QVERIFY(m.open(QIODevice::WriteOnly));
+            m.write(QString(
+                "#include <stdio.h>\n"
+                "void ll_mass_matrix(const double*, double*);\n"
+                "void ll_coriolis_matrix(const double*, const double*, double*);\n"
+                "void ll_gravity(const double*, double*);\n"
+                "int ll_forward_dynamics(const double*, const double*, const double*, double*);\n"
+                "int main(void) {\n"
+                "    const double q[6] = {%1}, qd[6] = {%2}, tau[6] = {%3};\n"
+                "    double B[36], C[36], g[6], qdd[6];\n"
+                "    int i, j;\n"
+                "    ll_mass_matrix(q, B); ll_coriolis_matrix(q, qd, C); ll_gravity(q, g);\n"
+                "    if (ll_forward_dynamics(q, qd, tau, qdd) != 0) return 1;\n"
+                "    printf(\"{\\\"B\\\": [\");\n"
+                "    for (i = 0; i < 6; ++i) { printf(\"%s[\", i ? \",\" : \"\"); for (j = 0; j < 6; ++j) printf(\"%s%.17g\", j ? \",\" : \"\", B[i * 6 + j]); printf(\"]\"); }\n"
+                "    printf(\"], \\\"C\\\": [\");\n"
+                "    for (i = 0; i < 6; ++i) { printf(\"%s[\", i ? \",\" : \"\"); for (j = 0; j < 6; ++j) printf(\"%s%.17g\", j ? \",\" : \"\", C[i * 6 + j]); printf(\"]\"); }\n"
+                "    printf(\"], \\\"g\\\": [\");\n"
+                "    for (i = 0; i < 6; ++i) printf(\"%s%.17g\", i ? \",\" : \"\", g[i]);\n"
+                "    printf(\"], \\\"qdd\\\": [\");\n"
+                "    for (i = 0; i < 6; ++i) printf(\"%s%.17g\", i ? \",\" : \"\", qdd[i]);\n"
+                "    printf(\"]}\\n\");\n"
+                "    return 0;\n"
+                "}\n")
+                        .arg(kQ, kQd, tau.join(",")).toUtf8());
+            m.close();
+            const Run cc = run("cc", {"-std=c99", "-pedantic", "-Wall", "-O1", "-o", dir.filePath("model"), file, main, "-lm"});
+            QVERIFY2(cc.exitCode == 0, cc.err.constData());
+            const Run r = run(dir.filePath("model"), {});
+            QCOMPARE(r.exitCode, 0);
+            got = QJsonDocument::fromJson(r.out).object();
+        } else {
+            const Run r = run("python3", {file, "--q", kQ, "--qd", kQd, "--tau", tau.join(",")});
+            QVERIFY2(r.exitCode == 0, r.err.constData());
+            got = QJsonDocument::fromJson(r.out).object();
+        }
+        for (const char* key : {"B", "C", "g", "qdd"}) {
+            const double err = relative(got[key].toArray(), expected[key].toArray());
+            QVERIFY2(err < 1e-10, qPrintable(QString("%1: relative difference %2").arg(key).arg(err)));
+        }
+    }
+
+    // auto: small robots expanded, a 7-joint arm structured, and the output says why;
+    // the structured JSON's definitions re-parse, and B evaluates to eval's B.
+    void formAutoAndStructuredJson() {
+        const Run small = cli({"derive", example("planar_2r.json"), "--format", "json"});
+        QCOMPARE(small.exitCode, 0);
+        const QJsonObject s = QJsonDocument::fromJson(small.out).object();
+        QCOMPARE(s["form"].toString(), QString("expanded"));
+        QVERIFY(!s["form_reason"].toString().isEmpty());
+
+        const Run panda = cli({"derive", example("panda.json"), "--format", "json"});
+        QCOMPARE(panda.exitCode, 0);
+        const QJsonObject p = QJsonDocument::fromJson(panda.out).object();
+        QCOMPARE(p["form"].toString(), QString("structured"));
+        QVERIFY(p["form_reason"].toString().contains("7 joints"));
+        const QJsonArray defs = p["definitions"].toArray();
+        QVERIFY(defs.size() > 50);
+
+        // Evaluate the names in order with GiNaC's parser, then B, and compare with eval.
+        const char* q = "0.3,-0.7,1.1,0.4,-0.2,0.9,0.5";
+        const Run e = cli({"eval", example("panda.json"), "--q", q, "--qd", "0,0,0,0,0,0,0"});
+        QCOMPARE(e.exitCode, 0);
+        const QJsonArray Bexpected = QJsonDocument::fromJson(e.out).object()["B"].toArray();
+        GiNaC::symtab table;
+        GiNaC::lst values;
+        const QStringList qs = QString(q).split(',');
+        for (int i = 0; i < 7; ++i) {
+            const GiNaC::symbol qi("q" + std::to_string(i + 1));
+            table["q" + std::to_string(i + 1)] = qi;
+            values.append(qi == GiNaC::numeric(qs[i].toUtf8().constData()));
+        }
+        for (const QJsonValue v : p["parameters"].toArray()) Q_UNUSED(v);
+        // parameters of the scene (kept as symbols by default) come from its file
+        QFile f(example("panda.json"));
+        f.open(QIODevice::ReadOnly);
+        const QJsonObject params = QJsonDocument::fromJson(f.readAll()).object()["parameters"].toObject();
+        for (auto it = params.begin(); it != params.end(); ++it) {
+            const GiNaC::symbol sym(it.key().toStdString());
+            table[it.key().toStdString()] = sym;
+            values.append(sym == GiNaC::numeric(QString::number(it.value().toDouble(), 'g', 17).toUtf8().constData()));
+        }
+        for (const QJsonValue d : defs) {
+            const QJsonObject def = d.toObject();
+            QVERIFY(def.contains("latex") && def.contains("meaning") && def.contains("step"));
+            GiNaC::parser reader(table);
+            const GiNaC::ex value = reader(def["expr"].toString().toStdString()).subs(values).evalf();
+            const GiNaC::symbol name(def["name"].toString().toStdString());
+            table[def["name"].toString().toStdString()] = name;
+            values.append(name == value);
+        }
+        const QJsonArray B = p["B"].toArray();
+        double err = 0;
+        for (int i = 0; i < 7; ++i)
+            for (int j = 0; j < 7; ++j) {
+                GiNaC::parser reader(table);
+                const GiNaC::ex v = reader(B[i].toArray()[j].toString().toStdString()).subs(values).evalf();
+                err = std::max(err, std::abs(GiNaC::ex_to<GiNaC::numeric>(v).to_double() - Bexpected[i].toArray()[j].toDouble()));
+            }
+        QVERIFY2(err < 1e-10, qPrintable(QString::number(err)));
+    }
+
+    // --entry with the expanded form expands only those entries, with term counts;
+    // C from the expanded rows of B equals the structured C at a state (--verify
+    // prints its own comparison).
+    void entriesExpandedOnDemand() {
+        const Run r = cli({"derive", example("panda.json"), "--form", "expanded", "--entry", "B11,C23,g4", "--format", "json", "--verify"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QJsonObject o = QJsonDocument::fromJson(r.out).object();
+        const QJsonObject entries = o["entries"].toObject();
+        QCOMPARE(entries.keys(), (QStringList{"B11", "C23", "g4"}));
+        for (const QString& k : entries.keys()) {
+            QVERIFY(entries[k].toObject()["terms"].toInt() > 0);
+            QVERIFY(!entries[k].toObject()["expr"].toString().isEmpty());
+        }
+        QVERIFY2(r.err.contains("structured vs numeric core"), r.err.constData());
+        // the largest difference it reports is small
+        const QString err = QString::fromUtf8(r.err);
+        const int at = err.indexOf("difference ") + 11;
+        QVERIFY2(err.mid(at, err.indexOf(' ', at) - at).toDouble() < 1e-10, r.err.constData());
+    }
+
+    void badFormAndEntryAreOneLine_data() {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<QString>("names");
+        QTest::newRow("form") << QStringList{"--form", "short"} << "--form";
+        QTest::newRow("entry letter") << QStringList{"--entry", "X11"} << "--entry";
+        QTest::newRow("entry range") << QStringList{"--entry", "B13"} << "--entry";
+        QTest::newRow("entry g") << QStringList{"--entry", "g0"} << "--entry";
+        QTest::newRow("entry empty") << QStringList{"--entry", ""} << "--entry";
+    }
+    void badFormAndEntryAreOneLine() {
+        QFETCH(QStringList, args);
+        QFETCH(QString, names);
+        const Run r = cli(QStringList{"derive", example("planar_2r.json")} + args);
+        QCOMPARE(r.exitCode, 2);
+        QCOMPARE(r.err.count('\n'), 1);
+        QVERIFY2(r.err.contains(names.toUtf8()) && r.err.startsWith("error: "), r.err.constData());
+        const Run c = cli({"codegen", example("planar_2r.json"), "--lang", "fortran"});
+        QCOMPARE(c.exitCode, 2);
+        QVERIFY2(c.err.contains("--lang") && c.err.count('\n') == 1, c.err.constData());
+    }
+};
+
+QTEST_GUILESS_MAIN(TestStructuredCli)
+#include "test_structured_cli.moc"
