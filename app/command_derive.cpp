@@ -61,6 +61,7 @@ int deriveCommand(const Args& args) {
             total += step.seconds;
         }
         std::fprintf(stderr, "total: %.3f ms\n", 1e3 * total);
+        std::fprintf(stderr, "printing: %.3f ms\n", 1e3 * derived.printSeconds);
     }
     for (const std::string& w : derived.warnings) std::cerr << "warning: " << w << '\n';
     std::cout << derived.document;
