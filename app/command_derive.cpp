@@ -1,5 +1,6 @@
-// `lagrangelab derive SCENE [--format text|latex|json] [--steps 0-8] [--symbolic]
-// [--numeric] [--timings]`: the course notes' procedure, step by step.
+// `lagrangelab derive SCENE [--format text|latex|json|pdf|svg|png] [--out FILE]
+// [--steps 0-8] [--symbolic] [--numeric] [--timings]`: the course notes' procedure, step
+// by step; pdf, svg and png typeset it (ui/derivation_pages) headless into --out.
 #include <cstdio>
 #include <iostream>
 
@@ -7,7 +8,9 @@
 #include "app/command_usage.hpp"
 #include "app/commands.hpp"
 #include "app/scene_loading.hpp"
+#include "app/offscreen_gui.hpp"
 #include "core/pipeline/scene_derivation.hpp"
+#include "ui/derivation_pages.hpp"
 
 namespace ll::cli {
 namespace {
@@ -35,12 +38,15 @@ StepRange parseSteps(const std::string& text) {
 }  // namespace
 
 int deriveCommand(const Args& args) {
-    const Options options(args, {"format", "steps"}, {"symbolic", "numeric", "timings"});
+    const Options options(args, {"format", "steps", "out"}, {"symbolic", "numeric", "timings"});
     if (options.positional().size() != 1)
         throw UsageError(usageLine("derive"));
     const std::string format = options.text("format", "text");
-    if (format != "text" && format != "latex" && format != "json")
-        throw UsageError("--format: expected text, latex or json, got '" + format + "'");
+    const bool typeset = format == "pdf" || format == "svg" || format == "png";
+    if (format != "text" && format != "latex" && format != "json" && !typeset)
+        throw UsageError("--format: expected text, latex, json, pdf, svg or png, got '" + format + "'");
+    if (typeset && !options.has("out")) throw UsageError("--out: --format " + format + " writes a file; give --out FILE");
+    if (!typeset && options.has("out")) throw UsageError("--out: only for --format pdf, svg or png (text, latex and json go to stdout)");
     if (options.has("symbolic") && options.has("numeric")) throw UsageError("--symbolic and --numeric exclude each other");
     const Scene scene = loadSceneReportingWarnings(options.positional()[0]);
     const StepRange range = parseSteps(options.text("steps", "0-8"));
@@ -51,7 +57,10 @@ int deriveCommand(const Args& args) {
                                             : ParameterMode::Parametric;
     request.firstStep = range.first;
     request.lastStep = range.last;
-    request.format = format == "text" ? DocumentFormat::Text : format == "latex" ? DocumentFormat::Latex : DocumentFormat::Json;
+    request.format = typeset           ? DocumentFormat::Display
+                     : format == "text"  ? DocumentFormat::Text
+                     : format == "latex" ? DocumentFormat::Latex
+                                         : DocumentFormat::Json;
     const DerivedDocument derived = inSceneFile(options.positional()[0], [&] { return deriveDocument(scene, request); });
 
     if (options.has("timings")) {
@@ -64,7 +73,23 @@ int deriveCommand(const Args& args) {
         std::fprintf(stderr, "printing: %.3f ms\n", 1e3 * derived.printSeconds);
     }
     for (const std::string& w : derived.warnings) std::cerr << "warning: " << w << '\n';
-    std::cout << derived.document;
+    if (!typeset) {
+        std::cout << derived.document;
+        return 0;
+    }
+    const auto app = makeGuiApplication();
+    if (!ui::mathFontsAvailable()) throw std::runtime_error("the Latin Modern fonts are missing: install fonts-lmodern");
+    const ui::DerivationPages pages = ui::paginate(*derived.display);
+    const QString out = QString::fromStdString(options.text("out"));
+    std::string error;
+    std::vector<QString> written;
+    const bool ok = format == "pdf"   ? ui::writePdf(pages, out, error)
+                    : format == "svg" ? ui::writeSvg(pages, out, error, &written)
+                                      : ui::writePng(pages, out, error, &written);
+    if (!ok) throw UsageError("--out: " + error);
+    if (options.has("timings")) std::fprintf(stderr, "pages: %zu\n", pages.pages.size());
+    if (written.size() > 1)
+        for (const QString& file : written) std::fprintf(stderr, "wrote %s\n", file.toStdString().c_str());
     return 0;
 }
 

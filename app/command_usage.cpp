@@ -18,7 +18,7 @@ constexpr std::array<CommandText, 8> commands{{
      "SCENE [--duration T] [--integrator NAME] [--abs-tol X] [--rel-tol X] [--dt X]\n"
      "[--output-rate HZ] [--out FILE.csv|FILE.json]",
      "integrate the equations of motion; trajectory to --out or CSV on stdout, summary on stderr"},
-    {"derive", "SCENE [--format text|latex|json] [--steps 0-8] [--symbolic] [--numeric] [--timings]",
+    {"derive", "SCENE [--format text|latex|json|pdf|svg|png] [--out FILE] [--steps 0-8] [--symbolic] [--numeric] [--timings]",
      "the model step by step as the course notes derive it (symbolic, GiNaC)"},
     {"render",
      "SCENE --out FILE.mp4|.webm|.gif|.png|FOLDER [--duration T] [--fps F] [--size WxH]\n"

@@ -731,38 +731,71 @@ DisplayPtr DisplayBuilder::operator()(const ex& e) { return impl_->builder.build
 
 DisplayPtr buildDisplay(const ex& e, const DisplayOptions& options) { return Builder(options).build(e); }
 
+// The content of the braces that open at `at` ({...}), advancing `at` past them.
+std::string braced(const std::string& s, std::size_t& at) {
+    if (at >= s.size() || s[at] != '{') {  // a single character: x_1
+        return at < s.size() ? std::string(1, s[at++]) : std::string();
+    }
+    int depth = 0;
+    const std::size_t start = at + 1;
+    for (; at < s.size(); ++at) {
+        depth += s[at] == '{' ? 1 : s[at] == '}' ? -1 : 0;
+        if (depth == 0) break;
+    }
+    return s.substr(start, at++ - start);
+}
+
+// \dot{q} → q̇, \mathcal{L} → ℒ, \omega → ω, \mathrm{kin} → kin.
+std::string shownLabelPart(std::string latex) {
+    for (const auto& [from, to] : {std::pair<std::string, std::string>{"\\mathcal{L}", "ℒ"}, {"\\partial ", "∂"}})
+        for (std::size_t at; (at = latex.find(from)) != std::string::npos;) latex.replace(at, from.size(), to);
+    for (const char* accent : {"\\dot{", "\\ddot{"}) {
+        for (std::size_t at; (at = latex.find(accent)) != std::string::npos;) {
+            std::size_t open = at + std::string(accent).size() - 1;
+            const std::string inner = braced(latex, open);
+            const bool two = std::string(accent) == "\\ddot{";
+            std::string shown = shownFromLatex(inner);
+            std::size_t first = 1;
+            while (first < shown.size() && (static_cast<unsigned char>(shown[first]) & 0xC0) == 0x80) ++first;
+            shown = shown.substr(0, first) + (two ? "\u0308" : "\u0307") + shown.substr(first);
+            latex.replace(at, open - at, shown);
+        }
+    }
+    return shownFromLatex(latex);
+}
+
 DisplayPtr displayLabel(const std::string& name, const std::string& latexName, const DisplayOptions&) {
     auto n = std::make_shared<DisplayNode>();
     n->kind = DisplayKind::Raw;
     n->text = n->plain = n->name = name;
     n->latex = latexName;
-    // What the typesetter draws: base, subscript after '_', superscript after '^'.
+    // What the typesetter draws: HEAD_{SUB}^{SUP} read from the LaTeX name; anything
+    // else (\frac …) as the plain name.
     auto shown = std::make_shared<DisplayNode>();
     shown->kind = DisplayKind::Symbol;
-    std::string base = name, sub, sup;
-    if (const auto caret = base.find('^'); caret != std::string::npos) {
-        sup = base.substr(caret + 1);
-        base = base.substr(0, caret);
+    std::size_t at = 0;
+    int depth = 0;
+    while (at < latexName.size() && !(depth == 0 && (latexName[at] == '_' || latexName[at] == '^'))) {
+        depth += latexName[at] == '{' ? 1 : latexName[at] == '}' ? -1 : 0;
+        ++at;
     }
-    if (const auto underscore = base.find('_'); underscore != std::string::npos) {
-        sub = base.substr(underscore + 1);
-        base = base.substr(0, underscore);
-    } else if (base.size() > 1 && std::isalpha(static_cast<unsigned char>(base[0])) &&
-               allDigits(base.substr(1))) {  // b11, c12
-        sub = base.substr(1);
-        base = base.substr(0, 1);
+    const std::string head = latexName.substr(0, at);
+    std::string sub, sup;
+    while (at < latexName.size() && (latexName[at] == '_' || latexName[at] == '^')) {
+        const char kind = latexName[at++];
+        (kind == '_' ? sub : sup) = braced(latexName, at);
     }
-    bool upright = false;
-    const std::string fromLatex = shownFromLatex(latexName.substr(0, latexName.find_first_of("_^(")), &upright);
-    shown->text = base == "w" ? "ω" : base == "L" ? "ℒ" : base;
-    if (fromLatex == "B" || fromLatex == "C" || fromLatex == "g") shown->text = latexName;  // B(q), C(q,q̇)
-    if (latexName.find("\\dot") != std::string::npos || latexName.find('(') != std::string::npos) {
-        shown->text = fromLatex.empty() ? name : shownFromLatex(latexName);
+    if (head.find("\\frac") != std::string::npos || head.find("\\text") != std::string::npos || at < latexName.size()) {
+        shown->text = name;
+        shown->upright = true;
+    } else {
+        bool upright = false;
+        shown->text = shownLabelPart(head);
+        shown->subShown = shownLabelPart(sub);
+        shown->subUpright = sub.find("\\mathrm") != std::string::npos;
+        shown->supText = shownLabelPart(sup);
+        (void)upright;
     }
-    shown->upright = shown->text.size() > 1 && shown->text.find('(') == std::string::npos && base != "w";
-    shown->subShown = sub == "kin" || sub == "pot" ? sub : sub;
-    shown->subUpright = sub == "kin" || sub == "pot";
-    shown->supText = sup;
     n->children = {shown};
     return n;
 }
@@ -770,14 +803,6 @@ DisplayPtr displayLabel(const std::string& name, const std::string& latexName, c
 DisplayPtr displaySymbolName(const std::string& name, int dots) {
     auto n = namedSymbol(name, textName(name));
     n->dots = dots;
-    return n;
-}
-
-DisplayPtr displayEquation(DisplayPtr lhs, DisplayPtr rhs) {
-    auto n = std::make_shared<DisplayNode>();
-    n->kind = DisplayKind::Equation;
-    n->children = {std::move(lhs), std::move(rhs)};
-    n->text = n->latex = n->plain = " = ";
     return n;
 }
 

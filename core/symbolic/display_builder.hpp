@@ -57,9 +57,6 @@ DisplayPtr displayLabel(const std::string& name, const std::string& latexName, c
 // with 1 dot θ̇1. Needs no GiNaC (any thread).
 DisplayPtr displaySymbolName(const std::string& name, int dots = 0);
 
-// lhs = rhs as one node.
-DisplayPtr displayEquation(DisplayPtr lhs, DisplayPtr rhs);
-
 // Terms a + b − c joined in the given order; each part a Sum (its signs kept) or a term.
 DisplayPtr displaySumOf(const std::vector<DisplayPtr>& parts);
 

@@ -300,6 +300,14 @@ DisplayPtr displayRaw(std::string text, std::string latex, std::string plain) {
     return n;
 }
 
+DisplayPtr displayEquation(DisplayPtr lhs, DisplayPtr rhs) {
+    auto n = std::make_shared<DisplayNode>();
+    n->kind = DisplayKind::Equation;
+    n->children = {std::move(lhs), std::move(rhs)};
+    n->text = n->latex = n->plain = " = ";
+    return n;
+}
+
 void displayLeaves(const DisplayNode& node, std::vector<std::string>& out) {
     switch (node.kind) {
     case DisplayKind::Symbol:

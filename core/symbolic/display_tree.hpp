@@ -71,6 +71,8 @@ inline constexpr std::size_t maxTextMatrixRow = 160;
 DisplayPtr displayNumber(std::string text, std::string latex, std::string plain, std::string exponent = {});
 DisplayPtr displayNode(DisplayKind kind, std::vector<DisplayPtr> children);
 DisplayPtr displayRaw(std::string text, std::string latex, std::string plain);
+// lhs = rhs as one node.
+DisplayPtr displayEquation(DisplayPtr lhs, DisplayPtr rhs);
 
 // The symbols and numbers of a tree in reading order, as Text spells them: what the
 // Text and LaTeX renderings of the same tree both show (tests compare it).
