@@ -494,6 +494,64 @@ MathBox layoutText(const QString& text, double size, bool bold) {
     return b;
 }
 
+namespace {
+
+struct Chunk {
+    MathBox box;
+    bool breakBefore = false;
+};
+
+MathBox spaced(const MathBox& box, double before) {
+    MathBox b;
+    hcat(b, box, before);
+    return b;
+}
+
+bool isFencedSum(const DisplayNode& n) {
+    return n.kind == DisplayKind::Fence && n.children[0]->kind == DisplayKind::Sum;
+}
+
+// A node as pieces a line may break between (before the signs of its sums).
+void chunks(const DisplayNode& n, std::vector<Chunk>& out, double maxWidth) {
+    const double e = em(1);
+    if (n.kind == DisplayKind::Equation) {
+        chunks(*n.children[0], out, maxWidth);
+        out.push_back({spaced(op("=", 1.0), thickSpace * e), false});
+        out.back().box.width += thickSpace * e;
+        chunks(*n.children[1], out, maxWidth);
+        return;
+    }
+    if (n.kind == DisplayKind::Sum) {
+        for (std::size_t i = 0; i < n.children.size(); ++i) {
+            if (i > 0 || n.negative[i]) {
+                MathBox sign = spaced(op(n.negative[i] ? QString(QChar(0x2212)) : QString("+"), 1.0), i ? mediumSpace * e : 0);
+                if (i) sign.width += mediumSpace * e;
+                out.push_back({sign, i > 0});
+            }
+            chunks(*n.children[i], out, maxWidth);
+        }
+        return;
+    }
+    if (n.kind == DisplayKind::Product && layout(n, 1.0).width > maxWidth / 2 &&
+        std::any_of(n.children.begin(), n.children.end(), [](const symbolic::DisplayPtr& c) { return isFencedSum(*c); })) {
+        for (std::size_t i = 0; i < n.children.size(); ++i) {
+            const DisplayNode& c = *n.children[i];
+            const double gap = i == 0 ? 0 : isWordNode(c) || isWordNode(*n.children[i - 1]) ? thinSpace * e : 0.04 * e;
+            if (isFencedSum(c)) {
+                out.push_back({spaced(run("(", 0, 1.0), gap), false});
+                chunks(*c.children[0], out, maxWidth);
+                out.push_back({run(")", 0, 1.0), false});
+            } else {
+                out.push_back({spaced(layout(c, 1.0), gap), false});
+            }
+        }
+        return;
+    }
+    out.push_back({layout(n, 1.0), false});
+}
+
+}  // namespace
+
 std::vector<MathBox> layoutItem(const DisplayNode& equation, const std::string& name, double maxWidth) {
     const double e = em(1);
     MathBox whole = layout(equation, 1.0);
@@ -525,39 +583,27 @@ std::vector<MathBox> layoutItem(const DisplayNode& equation, const std::string& 
             }
         return lines;
     }
-    if (rhs.kind != DisplayKind::Sum && lhs.kind != DisplayKind::Sum) return {whole};
-    // Break a sum before its top-level + and −; continuation lines start with the sign,
-    // indented past "name = " (or 2 em for a long left side).
-    MathBox line = layout(lhs, 1.0);
-    const DisplayNode& sum = rhs.kind == DisplayKind::Sum ? rhs : lhs;
-    if (&sum == &lhs) line = MathBox();
-    if (&sum == &rhs) {
-        hcat(line, op("=", 1.0), thickSpace * e);
-        line.width += thickSpace * e;
+    // Break before top-level + and − (and inside a long parenthesised sum, before its
+    // own signs); continuation lines indented past "name = " (at most a third of a line).
+    std::vector<Chunk> pieces;
+    chunks(equation, pieces, maxWidth);
+    const double indent = lhs.kind == DisplayKind::Sum  // an equation of motion: a hanging indent
+                              ? 2 * e
+                              : std::min(layout(lhs, 1.0).width + 2 * thickSpace * e + op("=", 1.0).width, maxWidth / 3);
+    // Greedy over groups: a chunk where a break may come with the chunks up to the next.
+    std::vector<MathBox> groups;
+    for (const Chunk& c : pieces) {
+        if (groups.empty() || c.breakBefore) groups.emplace_back();
+        hcat(groups.back(), c.box);
     }
-    const double indent = std::min(line.width, maxWidth / 3);
-    for (std::size_t i = 0; i < sum.children.size(); ++i) {
-        MathBox term;
-        const MathBox sign = op(sum.negative[i] ? QString(QChar(0x2212)) : QString("+"), 1.0);
-        const MathBox body = layout(*sum.children[i], 1.0);
-        const bool first = i == 0 && line.pieces.size() <= 2 && &sum == &rhs;
-        if (i > 0 || sum.negative[i]) {
-            hcat(term, sign);
-            if (i > 0) term.width += mediumSpace * e;
-        }
-        hcat(term, body);
-        const double gap = (i == 0 || line.pieces.empty()) ? 0 : mediumSpace * e;
-        if (!first && !line.pieces.empty() && line.width + gap + term.width > maxWidth && line.width > indent + 1) {
+    MathBox line;
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+        if (g > 0 && line.width + groups[g].width > maxWidth && line.width > indent + e) {
             lines.push_back(line);
             line = MathBox();
             line.width = indent;
         }
-        hcat(line, term, line.pieces.empty() ? 0 : gap);
-    }
-    if (&sum == &lhs) {
-        hcat(line, op("=", 1.0), thickSpace * e);
-        line.width += thickSpace * e;
-        hcat(line, layout(rhs, 1.0));
+        hcat(line, groups[g]);
     }
     lines.push_back(line);
     return lines;
