@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <iostream>
 
+#include <QFileInfo>
+
 #include "app/cli_options.hpp"
 #include "app/command_usage.hpp"
 #include "app/commands.hpp"
@@ -47,6 +49,12 @@ int deriveCommand(const Args& args) {
         throw UsageError("--format: expected text, latex, json, pdf, svg or png, got '" + format + "'");
     if (typeset && !options.has("out")) throw UsageError("--out: --format " + format + " writes a file; give --out FILE");
     if (!typeset && options.has("out")) throw UsageError("--out: only for --format pdf, svg or png (text, latex and json go to stdout)");
+    if (typeset) {  // before the work: a file that cannot be written is known now
+        const QFileInfo dir(QFileInfo(QString::fromStdString(options.text("out"))).absolutePath());
+        if (!dir.isDir() || !dir.isWritable())
+            throw UsageError("--out: cannot write '" + options.text("out") + "': " +
+                             (dir.isDir() ? "the folder is not writable" : "no such folder"));
+    }
     if (options.has("symbolic") && options.has("numeric")) throw UsageError("--symbolic and --numeric exclude each other");
     const Scene scene = loadSceneReportingWarnings(options.positional()[0]);
     const StepRange range = parseSteps(options.text("steps", "0-8"));
