@@ -30,12 +30,13 @@ constexpr std::array<CommandText, 8> commands{{
      "SCENE [--integrators a,b,...] [--tolerances 1e-3..1e-12] [--steps dt1,dt2,...] [--duration T]\n"
      "[--repeats N] [--reference-tol X] [--out plot.svg|png] [--csv FILE]",
      "work-precision: error, energy drift, CPU time, evaluations and steps per integrator and setting"},
-    {"bench", "[SCENE...] [--batches N] [--rhs | --derive | --cancel | --render]",
+    {"bench", "[SCENE...] [--batches N] [--rhs | --derive | --cancel | --render | --typeset]",
      "median times of B, C, g, forward/inverse dynamics and one simulated second, beside KDL\n"
      "(--rhs: one right-hand side of the PUMA 560 with no effects, gravity only, all effects;\n"
      " --derive: the whole symbolic derivation per parameter mode;\n"
      " --cancel: how soon a derivation stops after its cancel flag is set;\n"
-     " --render: headless export of 10 s of the PUMA 560 to MP4, render-only frames/s, peak memory)"},
+     " --render: headless export of 10 s of the PUMA 560 to MP4, render-only frames/s, peak memory;\n"
+     " --typeset: one B entry typeset, the 2R and PUMA 560 to PDF, the Panda derived and printed)"},
     {"help", "[COMMAND]", "this overview, or the usage of COMMAND (also: lagrangelab COMMAND --help)"},
 }};
 

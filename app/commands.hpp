@@ -17,5 +17,7 @@ int deriveCommand(const Args& args);
 int renderCommand(const Args& args);
 // `bench --render`: the cost of headless export (app/bench_render.cpp).
 int benchRender(const std::vector<std::string>& scenes, int runs);
+// `bench --typeset`: typesetting and printing the derivation (app/bench_typeset.cpp).
+int benchTypeset(const std::vector<std::string>& scenes, int runs);
 
 }  // namespace ll::cli

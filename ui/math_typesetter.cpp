@@ -7,6 +7,7 @@
 #include <QPainterPath>
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <mutex>
 
 namespace ll::ui {
@@ -53,17 +54,17 @@ struct Metrics {
 
 // Advance width and ink extent of a run, cached (layout asks for the same glyphs often).
 Metrics measure(const QString& text, int which, double size) {
-    static QHash<QString, Metrics> cache;
+    static std::map<std::pair<int, int>, QHash<QString, Metrics>> cache;  // by font and size in 1/1000
     static std::mutex mutex;
-    const QString key = QString::number(which) + '|' + QString::number(size, 'g', 4) + '|' + text;
     std::lock_guard lock(mutex);
-    if (auto it = cache.find(key); it != cache.end()) return *it;
+    QHash<QString, Metrics>& sized = cache[{which, static_cast<int>(std::lround(size * 1000))}];
+    if (auto it = sized.find(text); it != sized.end()) return *it;
     const QFont f = font(which, size);
     const QFontMetricsF fm(f);
     const QRectF ink = fm.tightBoundingRect(text);
     const double scale = f.pixelSize() / (mathUnitsPerEm * size);  // rounding of the pixel size
     Metrics m{fm.horizontalAdvance(text) / scale, std::max(0.0, -ink.top()) / scale, std::max(0.0, ink.bottom()) / scale};
-    cache.insert(key, m);
+    sized.insert(text, m);
     return m;
 }
 
@@ -77,20 +78,23 @@ QRectF inkOf(const QString& text, int which, double size) {
     return QRectF(r.left() / scale, r.top() / scale, r.width() / scale, r.height() / scale);
 }
 
-void append(MathBox& to, const MathBox& box, double dx, double dy = 0) {
-    for (MathPiece p : box.pieces) {
+// Moves the pieces of box (a temporary, usually) into `to`, shifted.
+void append(MathBox& to, MathBox box, double dx, double dy = 0) {
+    to.pieces.reserve(to.pieces.size() + box.pieces.size());
+    for (MathPiece& p : box.pieces) {
         p.at += QPointF(dx, dy);
         to.pieces.push_back(std::move(p));
     }
 }
 
 // Boxes side by side on one baseline.
-void hcat(MathBox& to, const MathBox& box, double gap = 0) {
+void hcat(MathBox& to, MathBox box, double gap = 0) {
     to.width += gap;
-    append(to, box, to.width);
-    to.width += box.width;
-    to.ascent = std::max(to.ascent, box.ascent);
-    to.descent = std::max(to.descent, box.descent);
+    const double w = box.width, a = box.ascent, d = box.descent;
+    append(to, std::move(box), to.width);
+    to.width += w;
+    to.ascent = std::max(to.ascent, a);
+    to.descent = std::max(to.descent, d);
 }
 
 MathBox run(const QString& text, int which, double size) {
@@ -507,6 +511,12 @@ MathBox spaced(const MathBox& box, double before) {
     return b;
 }
 
+std::size_t leafCount(const DisplayNode& n) {
+    std::size_t count = n.children.empty() && n.rows.empty() ? 1 : 0;
+    for (const auto& c : n.children) count += leafCount(*c);
+    return count;
+}
+
 bool isFencedSum(const DisplayNode& n) {
     return n.kind == DisplayKind::Fence && n.children[0]->kind == DisplayKind::Sum;
 }
@@ -532,7 +542,7 @@ void chunks(const DisplayNode& n, std::vector<Chunk>& out, double maxWidth) {
         }
         return;
     }
-    if (n.kind == DisplayKind::Product && layout(n, 1.0).width > maxWidth / 2 &&
+    if (n.kind == DisplayKind::Product && leafCount(n) > 12 && layout(n, 1.0).width > maxWidth / 2 &&
         std::any_of(n.children.begin(), n.children.end(), [](const symbolic::DisplayPtr& c) { return isFencedSum(*c); })) {
         for (std::size_t i = 0; i < n.children.size(); ++i) {
             const DisplayNode& c = *n.children[i];
@@ -552,8 +562,36 @@ void chunks(const DisplayNode& n, std::vector<Chunk>& out, double maxWidth) {
 
 }  // namespace
 
-std::vector<MathBox> layoutItem(const DisplayNode& equation, const std::string& name, double maxWidth) {
+symbolic::DisplayPtr elided(const symbolic::DisplayPtr& node, std::size_t maxTerms) {
+    const DisplayNode& n = *node;
+    if (n.kind == DisplayKind::Matrix) {
+        auto copy = std::make_shared<DisplayNode>(n);
+        for (auto& row : copy->rows)
+            for (auto& cell : row) cell = elided(cell, maxTerms);
+        return copy;
+    }
+    if (n.kind == DisplayKind::Equation) {
+        auto copy = std::make_shared<DisplayNode>(n);
+        for (auto& c : copy->children) c = elided(c, maxTerms);
+        return copy;
+    }
+    if (n.kind != DisplayKind::Sum || n.children.size() <= maxTerms) return node;
+    auto copy = std::make_shared<DisplayNode>(n);
+    const std::size_t keep = maxTerms * 2 / 3, rest = n.children.size() - keep;
+    copy->children.resize(keep);
+    copy->negative.resize(keep);
+    const std::string more = "⋯ (" + std::to_string(rest) + " more terms)";
+    copy->children.push_back(symbolic::displayRaw(more, "\\cdots", more));
+    copy->negative.push_back(false);
+    return copy;
+}
+
+std::vector<MathBox> layoutItem(const DisplayNode& full, const std::string& name, double maxWidth) {
     const double e = em(1);
+    // Nobody reads an entry of thousands of terms on a page: its first terms and a count.
+    const symbolic::DisplayPtr shortened = elided(std::shared_ptr<const DisplayNode>(&full, [](const DisplayNode*) {}),
+                                                  maxTypesetTerms);
+    const DisplayNode& equation = *shortened;
     MathBox whole = layout(equation, 1.0);
     if (whole.width <= maxWidth || equation.kind != DisplayKind::Equation) return {whole};
     const DisplayNode& lhs = *equation.children[0];

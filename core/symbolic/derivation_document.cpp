@@ -136,8 +136,12 @@ public:
         std::vector<GiNaC::ex> parts;
         for (size_t j = 0; j < d_.q.size(); ++j) parts.push_back(present("B", d_.B(i, j)) * d_.qdd[j]);
         GiNaC::ex velocity = 0;
-        for (size_t j = 0; j < d_.q.size(); ++j) velocity += d_.C(i, j) * d_.qd[j];
-        if (termCount(velocity.expand()) <= maxShapedTerms) {
+        size_t terms = 0;  // counted on the entries: expanding a long row first costs more than all the rest
+        for (size_t j = 0; j < d_.q.size(); ++j) {
+            velocity += d_.C(i, j) * d_.qd[j];
+            terms += termCount(d_.C(i, j));
+        }
+        if (terms <= maxShapedTerms) {
             parts.push_back(present("C", velocity));
         } else {  // too long to factor: entry by entry, each already presented for C
             for (size_t j = 0; j < d_.q.size(); ++j) parts.push_back(present("C", d_.C(i, j)) * d_.qd[j]);
