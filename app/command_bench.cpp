@@ -1,4 +1,4 @@
-// `lagrangelab bench [SCENE...] [--batches N] [--rhs | --derive | --render]`: median times of our dynamics
+// `lagrangelab bench [SCENE...] [--batches N] [--rhs | --derive | --render | --typeset]`: median times of our dynamics
 // beside KDL's solvers, measured in the same run on the same random states; with --rhs,
 // one right-hand-side evaluation with no effects, gravity only and all effects.
 #include <algorithm>
@@ -188,10 +188,11 @@ int benchCancel(const std::vector<std::string>& scenes) {
 }  // namespace
 
 int benchCommand(const Args& args) {
-    const Options options(args, {"batches", "chains", "cap"}, {"rhs", "derive", "cancel", "render"});
+    const Options options(args, {"batches", "chains", "cap"}, {"rhs", "derive", "cancel", "render", "typeset"});
     const int batches = static_cast<int>(options.number("batches", 21));
     std::vector<std::string> scenes = options.positional();
     if (options.has("render")) return benchRender(scenes, static_cast<int>(options.number("batches", 3)));
+    if (options.has("typeset")) return benchTypeset(scenes, static_cast<int>(options.number("batches", 5)));
     if (options.has("chains") && !options.has("derive")) throw UsageError("--chains: only with --derive");
     if (options.has("derive") && options.has("chains"))
         return benchDeriveChains(options.text("chains"), scenes, static_cast<int>(options.number("batches", 5)),

@@ -1,15 +1,22 @@
-// `lagrangelab derive SCENE [--format text|latex|json] [--steps 0-8] [--symbolic]
-// [--numeric] [--timings] [--form auto|structured|expanded] [--entry B11,C23,g4] [--verify]`:
-// the course notes' procedure, step by step, expanded or structured (derivation_forms.hpp).
+// `lagrangelab derive SCENE [--format text|latex|json|pdf|svg|png] [--out FILE]
+// [--steps 0-8] [--symbolic] [--numeric] [--timings] [--form auto|structured|expanded]
+// [--entry B11,C23,g4] [--verify]`: the course notes' procedure, step by step, expanded or
+// structured (derivation_forms.hpp); pdf, svg and png typeset the expanded form
+// (ui/derivation_pages) headless into --out.
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
+
+#include <QFileInfo>
 
 #include "app/cli_options.hpp"
 #include "app/command_usage.hpp"
 #include "app/commands.hpp"
 #include "app/scene_loading.hpp"
+#include "app/offscreen_gui.hpp"
 #include "core/pipeline/derivation_forms.hpp"
+#include "core/pipeline/scene_derivation.hpp"
+#include "ui/derivation_pages.hpp"
 
 namespace ll::cli {
 namespace {
@@ -37,12 +44,21 @@ StepRange parseSteps(const std::string& text) {
 }  // namespace
 
 int deriveCommand(const Args& args) {
-    const Options options(args, {"format", "steps", "form", "entry"}, {"symbolic", "numeric", "timings", "verify"});
+    const Options options(args, {"format", "steps", "out", "form", "entry"}, {"symbolic", "numeric", "timings", "verify"});
     if (options.positional().size() != 1)
         throw UsageError(usageLine("derive"));
     const std::string format = options.text("format", "text");
-    if (format != "text" && format != "latex" && format != "json")
-        throw UsageError("--format: expected text, latex or json, got '" + format + "'");
+    const bool typeset = format == "pdf" || format == "svg" || format == "png";
+    if (format != "text" && format != "latex" && format != "json" && !typeset)
+        throw UsageError("--format: expected text, latex, json, pdf, svg or png, got '" + format + "'");
+    if (typeset && !options.has("out")) throw UsageError("--out: --format " + format + " writes a file; give --out FILE");
+    if (!typeset && options.has("out")) throw UsageError("--out: only for --format pdf, svg or png (text, latex and json go to stdout)");
+    if (typeset) {  // before the work: a file that cannot be written is known now
+        const QFileInfo dir(QFileInfo(QString::fromStdString(options.text("out"))).absolutePath());
+        if (!dir.isDir() || !dir.isWritable())
+            throw UsageError("--out: cannot write '" + options.text("out") + "': " +
+                             (dir.isDir() ? "the folder is not writable" : "no such folder"));
+    }
     if (options.has("symbolic") && options.has("numeric")) throw UsageError("--symbolic and --numeric exclude each other");
     const std::string form = options.text("form", "auto");
     if (form != "auto" && form != "structured" && form != "expanded")
@@ -57,25 +73,39 @@ int deriveCommand(const Args& args) {
     request.firstStep = range.first;
     request.lastStep = range.last;
     request.format = format == "text" ? DocumentFormat::Text : format == "latex" ? DocumentFormat::Latex : DocumentFormat::Json;
-    FormRequest formRequest;
-    formRequest.document = request;
-    formRequest.form = form == "structured" ? DerivationForm::Structured : form == "expanded" ? DerivationForm::Expanded : DerivationForm::Auto;
-    formRequest.verify = options.has("verify");
-    if (options.has("entry")) {
-        const std::string list = options.text("entry");
-        for (std::size_t start = 0; start <= list.size();) {
-            const std::size_t end = std::min(list.find(',', start), list.size());
-            formRequest.entries.push_back(list.substr(start, end - start));
-            start = end + 1;
-        }
+    if (typeset) {  // the typeset pages show the expanded textbook form
+        if (form == "structured" || options.has("entry") || options.has("verify"))
+            throw UsageError("--format " + format + ": typesets the expanded form; --form structured, --entry and --verify are for text, latex and json");
+        std::string reason;
+        if (form == "auto" && !expandedIsCheap(scene, reason))
+            throw UsageError("--format " + format + ": " + reason +
+                             "; the structured form is printed by --format text, latex or json (or force --form expanded)");
+        request.format = DocumentFormat::Display;
     }
-    const FormDocument result = inSceneFile(options.positional()[0], [&] {
-        try {
-            return deriveInForm(scene, formRequest);
-        } catch (const std::invalid_argument& e) {  // a bad --entry
-            throw UsageError(e.what());
+    FormDocument result;
+    if (typeset) {
+        result.derived = inSceneFile(options.positional()[0], [&] { return deriveDocument(scene, request); });
+    } else {
+        FormRequest formRequest;
+        formRequest.document = request;
+        formRequest.form = form == "structured" ? DerivationForm::Structured : form == "expanded" ? DerivationForm::Expanded : DerivationForm::Auto;
+        formRequest.verify = options.has("verify");
+        if (options.has("entry")) {
+            const std::string list = options.text("entry");
+            for (std::size_t start = 0; start <= list.size();) {
+                const std::size_t end = std::min(list.find(',', start), list.size());
+                formRequest.entries.push_back(list.substr(start, end - start));
+                start = end + 1;
+            }
         }
-    });
+        result = inSceneFile(options.positional()[0], [&] {
+            try {
+                return deriveInForm(scene, formRequest);
+            } catch (const std::invalid_argument& e) {  // a bad --entry
+                throw UsageError(e.what());
+            }
+        });
+    }
     const DerivedDocument& derived = result.derived;
     for (const std::string& line : result.verification) std::cerr << "verify: " << line << '\n';
 
@@ -86,9 +116,26 @@ int deriveCommand(const Args& args) {
             total += step.seconds;
         }
         std::fprintf(stderr, "total: %.3f ms\n", 1e3 * total);
+        std::fprintf(stderr, "printing: %.3f ms\n", 1e3 * derived.printSeconds);
     }
     for (const std::string& w : derived.warnings) std::cerr << "warning: " << w << '\n';
-    std::cout << derived.document;
+    if (!typeset) {
+        std::cout << derived.document;
+        return 0;
+    }
+    const auto app = makeGuiApplication();
+    if (!ui::mathFontsAvailable()) throw std::runtime_error("the Latin Modern fonts are missing: install fonts-lmodern");
+    const ui::DerivationPages pages = ui::paginate(*derived.display);
+    const QString out = QString::fromStdString(options.text("out"));
+    std::string error;
+    std::vector<QString> written;
+    const bool ok = format == "pdf"   ? ui::writePdf(pages, out, error)
+                    : format == "svg" ? ui::writeSvg(pages, out, error, &written)
+                                      : ui::writePng(pages, out, error, &written);
+    if (!ok) throw UsageError("--out: " + error);
+    if (options.has("timings")) std::fprintf(stderr, "pages: %zu\n", pages.pages.size());
+    if (written.size() > 1)
+        for (const QString& file : written) std::fprintf(stderr, "wrote %s\n", file.toStdString().c_str());
     return 0;
 }
 

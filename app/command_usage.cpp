@@ -19,7 +19,7 @@ constexpr std::array<CommandText, 9> commands{{
      "[--output-rate HZ] [--out FILE.csv|FILE.json]",
      "integrate the equations of motion; trajectory to --out or CSV on stdout, summary on stderr"},
     {"derive",
-     "SCENE [--format text|latex|json] [--steps 0-8] [--symbolic] [--numeric] [--timings]\n"
+     "SCENE [--format text|latex|json|pdf|svg|png] [--out FILE] [--steps 0-8] [--symbolic] [--numeric] [--timings]\n"
      "[--form auto|structured|expanded] [--entry B11,C23,g4] [--verify]",
      "the model step by step as the course notes derive it (symbolic, GiNaC); structured\n"
      "(named link quantities) for large robots, single entries expanded on demand"},
@@ -36,13 +36,14 @@ constexpr std::array<CommandText, 9> commands{{
      "SCENE [--integrators a,b,...] [--tolerances 1e-3..1e-12] [--steps dt1,dt2,...] [--duration T]\n"
      "[--repeats N] [--reference-tol X] [--out plot.svg|png] [--csv FILE]",
      "work-precision: error, energy drift, CPU time, evaluations and steps per integrator and setting"},
-    {"bench", "[SCENE...] [--batches N] [--rhs | --derive | --cancel | --render] [--chains A..B] [--cap S]",
+    {"bench", "[SCENE...] [--batches N] [--rhs | --derive | --cancel | --render | --typeset] [--chains A..B] [--cap S]",
      "median times of B, C, g, forward/inverse dynamics and one simulated second, beside KDL\n"
      "(--rhs: one right-hand side of the PUMA 560 with no effects, gravity only, all effects;\n"
      " --derive: the whole symbolic derivation per parameter mode;\n"
      " --derive --chains 3..12: structured beside expanded on seeded random chains, with sizes;\n"
      " --cancel: how soon a derivation stops after its cancel flag is set;\n"
-     " --render: headless export of 10 s of the PUMA 560 to MP4, render-only frames/s, peak memory)"},
+     " --render: headless export of 10 s of the PUMA 560 to MP4, render-only frames/s, peak memory;\n"
+     " --typeset: one B entry typeset, the 2R and PUMA 560 to PDF, the Panda derived and printed)"},
     {"help", "[COMMAND]", "this overview, or the usage of COMMAND (also: lagrangelab COMMAND --help)"},
 }};
 

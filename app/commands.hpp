@@ -20,5 +20,7 @@ int codegenCommand(const Args& args);
 int benchDeriveChains(const std::string& range, const std::vector<std::string>& scenes, int repeats, double capSeconds);
 // `bench --render`: the cost of headless export (app/bench_render.cpp).
 int benchRender(const std::vector<std::string>& scenes, int runs);
+// `bench --typeset`: typesetting and printing the derivation (app/bench_typeset.cpp).
+int benchTypeset(const std::vector<std::string>& scenes, int runs);
 
 }  // namespace ll::cli

@@ -391,10 +391,10 @@ private slots:
         QTest::addColumn<QString>("synopsis");
         QTest::newRow("eval") << "eval" << "SCENE --q v1,... --qd v1,... [--t T] [--tau v1,...]";
         QTest::newRow("simulate") << "simulate" << "SCENE [--duration T] [--integrator NAME]";
-        QTest::newRow("derive") << "derive" << "SCENE [--format text|latex|json] [--steps 0-8]";
+        QTest::newRow("derive") << "derive" << "SCENE [--format text|latex|json|pdf|svg|png] [--out FILE] [--steps 0-8]";
         QTest::newRow("integrators") << "integrators" << "";
         QTest::newRow("accuracy") << "accuracy" << "SCENE [--integrators a,b,...]";
-        QTest::newRow("bench") << "bench" << "[SCENE...] [--batches N] [--rhs | --derive | --cancel | --render]";
+        QTest::newRow("bench") << "bench" << "[SCENE...] [--batches N] [--rhs | --derive | --cancel | --render | --typeset]";
     }
     void commandHelpPrintsItsUsage() {
         QFETCH(QString, command);

@@ -1,5 +1,7 @@
 #include "core/pipeline/scene_derivation.hpp"
 
+#include <chrono>
+
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/lagrangian_derivation.hpp"
 #include "core/symbolic/robot_derivation.hpp"
@@ -35,7 +37,12 @@ DerivedDocument deriveDocument(const Scene& scene, const DocumentRequest& reques
     });
     throwIfCancelled(request.cancel);
     DerivedDocument out;
-    out.document = symbolic::derivationDocument(d, request.format, modeName(request.mode));
+    const auto printing = std::chrono::steady_clock::now();
+    if (request.format == symbolic::DocumentFormat::Display)
+        out.display = symbolic::displayDocument(d);
+    else
+        out.document = symbolic::derivationDocument(d, request.format, modeName(request.mode));
+    out.printSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - printing).count();
     for (const symbolic::DerivationStep& step : d.steps) out.timings.push_back({step.number, step.title, step.seconds});
     out.warnings = d.warnings;
     return out;

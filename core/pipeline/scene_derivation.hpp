@@ -5,6 +5,7 @@
 // between entries; progress names the step and entry being derived.
 #include <atomic>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -30,8 +31,10 @@ struct StepTiming {
 };
 
 struct DerivedDocument {
-    std::string document;             // in the requested format
+    std::string document;             // in the requested format (empty for Display)
+    std::shared_ptr<const symbolic::DisplayDocument> display;  // for format Display: the trees
     std::vector<StepTiming> timings;  // of the shown steps
+    double printSeconds = 0.0;        // shaping and rendering the document
     std::vector<std::string> warnings;
 };
 

@@ -1,6 +1,10 @@
 #include "core/symbolic/derivation_document.hpp"
 
+#include <algorithm>
+#include <cctype>
+#include <map>
 #include <sstream>
+#include <unordered_map>
 
 #include <nlohmann/json.hpp>
 
@@ -14,8 +18,69 @@
 namespace ll::symbolic {
 namespace {
 
+// Entries with more terms than this are shown as derived (expanded, in display order),
+// without the c_i² → s_i² choice, angle sums, common factors and grouping, whose cost
+// grows faster than the entry and which no reader follows at that length anyway.
+constexpr std::size_t maxShapedTerms = 300;
+
+template <class T>
+using ExMap = std::unordered_map<GiNaC::ex, T, std::hash<GiNaC::ex>, GiNaC::ex_is_equal>;
+
+// The common factor of the terms of an expanded sum, velocities left inside (the
+// textbook's −m2 a1 ℓc2 s2 (q̇1 + q̇2), not … q̇2 (…)): the symbols every term has, at
+// their least power, with the rational content and a common sign. 1 when none.
+GiNaC::ex commonFactor(const GiNaC::ex& e, const std::vector<GiNaC::symbol>& velocities) {
+    if (!GiNaC::is_a<GiNaC::add>(e)) return 1;
+    std::map<GiNaC::ex, int, GiNaC::ex_is_less> common;
+    bool first = true, allNegative = true, rational = true;
+    GiNaC::numeric gcdNum = 0, lcmDen = 1;
+    for (const GiNaC::ex& term : e) {
+        std::map<GiNaC::ex, int, GiNaC::ex_is_less> here;
+        GiNaC::numeric coef = 1;
+        for (const GiNaC::ex& f : GiNaC::is_a<GiNaC::mul>(term) ? term : GiNaC::ex(GiNaC::lst{term})) {
+            if (GiNaC::is_a<GiNaC::numeric>(f)) {
+                coef = GiNaC::ex_to<GiNaC::numeric>(f);
+            } else if (GiNaC::is_a<GiNaC::symbol>(f)) {
+                here[f] = 1;
+            } else if (GiNaC::is_a<GiNaC::power>(f) && GiNaC::is_a<GiNaC::symbol>(f.op(0)) &&
+                       f.op(1).info(GiNaC::info_flags::posint)) {
+                here[f.op(0)] = GiNaC::ex_to<GiNaC::numeric>(f.op(1)).to_int();
+            }
+        }
+        if (!coef.is_rational()) rational = false;
+        if (rational) {
+            gcdNum = GiNaC::gcd(gcdNum, coef.numer());
+            lcmDen = GiNaC::lcm(lcmDen, coef.denom());
+        }
+        allNegative = allNegative && coef.is_real() && coef.is_negative();
+        if (first) {
+            common = here;
+            first = false;
+        } else {
+            for (auto it = common.begin(); it != common.end();) {
+                const auto h = here.find(it->first);
+                if (h == here.end()) {
+                    it = common.erase(it);
+                } else {
+                    it->second = std::min(it->second, h->second);
+                    ++it;
+                }
+            }
+        }
+        if (common.empty()) return 1;
+    }
+    GiNaC::ex factor = 1;
+    for (const auto& [symbol, power] : common)
+        if (std::none_of(velocities.begin(), velocities.end(), [&](const GiNaC::symbol& v) { return symbol.is_equal(v); }))
+            factor *= GiNaC::pow(symbol, power);
+    if (factor.is_equal(1)) return 1;
+    GiNaC::numeric content = rational ? gcdNum / lcmDen : GiNaC::numeric(1);
+    if (allNegative) content = -content;
+    return content * factor;
+}
+
 // How an item reads in a textbook: combined angles (c12), grouped by masses, or by
-// velocities for the velocity-linear results (C, ω, v_c).
+// velocities for the velocity-linear results (C, ω, v_c); each scalar presented once.
 class Presenter {
 public:
     Presenter(const Derivation& d, bool robot) : d_(d), robot_(robot), combiner_(d.q) {}
@@ -27,24 +92,43 @@ public:
                 for (unsigned c = 0; c < m.cols(); ++c) m(r, c) = present(name, m(r, c));
             return m;
         }
-        GiNaC::ex e = robot_ ? combiner_.combine(shorterInSines(value)) : value.expand();
         const bool byVelocity =
             name == "C" || name == "E_kin" || name.rfind("w_", 0) == 0 || name.rfind("v_c", 0) == 0;
+        ExMap<GiNaC::ex>& cache = cache_[byVelocity ? 1 : 0];
+        if (auto it = cache.find(value); it != cache.end()) return it->second;
+        // Shaping (sines for cosines, angle sums) costs more than linear time and only
+        // pays off on entries a reader can follow: larger ones stay as derived.
+        GiNaC::ex e = value.expand();
+        if (termCount(e) > maxShapedTerms) return cache.emplace(value, readableNumbers(e)).first->second;
+        if (robot_) e = combiner_.combine(shorterInSines(e));
         // Robots group by masses (m2 (a1² + ...)); a hand-typed Lagrangian by its
         // parameters, so the notes' spring term reads K2 (θ1 − θ2).
+        const GiNaC::ex common = robot_ ? commonFactor(e, d_.qd) : GiNaC::ex(1);
+        if (!common.is_equal(1)) e = (e / common).expand();
         std::vector<GiNaC::symbol> groupBy = byVelocity ? d_.qd : robot_ ? massSymbols(e) : parameters();
-        return readableNumbers(collectForDisplay(e, groupBy));
+        const GiNaC::ex shown = common * readableNumbers(collectForDisplay(e, groupBy));
+        return cache.emplace(value, shown).first->second;
     }
 
-    // Row i of B q̈ + C q̇ + g = Q in that order, each coefficient presented on its own:
-    // b_i1 q̈1 + … + c_i1 q̇1 + … + g_i.
+    // Row i of B q̈ + C q̇ + g = Q in that order: b_i1 q̈1 + … + (C q̇)_i + g_i, the
+    // velocity part as one sum over the velocity products with its common factor out
+    // (the 2R's −m2 a1 ℓc2 s2 (2 q̇1 q̇2 + q̇2²)).
     std::vector<GiNaC::ex> equationParts(int i) {
-        GiNaC::ex inertial = 0, velocity = 0;
+        std::vector<GiNaC::ex> parts;
+        for (size_t j = 0; j < d_.q.size(); ++j) parts.push_back(present("B", d_.B(i, j)) * d_.qdd[j]);
+        GiNaC::ex velocity = 0;
+        size_t terms = 0;  // counted on the entries: expanding a long row first costs more than all the rest
         for (size_t j = 0; j < d_.q.size(); ++j) {
-            inertial += present("B", d_.B(i, j)) * d_.qdd[j];
-            velocity += present("C", d_.C(i, j)) * d_.qd[j];
+            velocity += d_.C(i, j) * d_.qd[j];
+            terms += termCount(d_.C(i, j));
         }
-        return {inertial, velocity, present("g", d_.g(i, 0))};
+        if (terms <= maxShapedTerms) {
+            parts.push_back(present("C", velocity));
+        } else {  // too long to factor: entry by entry, each already presented for C
+            for (size_t j = 0; j < d_.q.size(); ++j) parts.push_back(present("C", d_.C(i, j)) * d_.qd[j]);
+        }
+        parts.push_back(present("g", d_.g(i, 0)));
+        return parts;
     }
 
 private:
@@ -73,57 +157,81 @@ private:
         return symbols;
     }
 
-public:
-
-private:
     const Derivation& d_;
     bool robot_;
     AngleSumCombiner combiner_;
+    ExMap<GiNaC::ex> cache_[2];  // by velocity grouping
 };
 
-// Printed parts joined as a sum in the given order ("a + b − c"), zeros left out.
-std::string joinTerms(const std::vector<GiNaC::ex>& parts, const PrintOptions& options) {
-    std::string out;
-    for (const GiNaC::ex& part : parts) {
-        if (part.is_zero()) continue;
-        std::string text = print(part, options);
-        for (const std::string minus : {"\u2212", "-"})
-            if (!out.empty() && text.rfind(minus, 0) == 0) {
-                out += " " + minus + " " + text.substr(minus.size());
-                text.clear();
-                break;
-            }
-        if (!text.empty()) out += (out.empty() ? "" : " + ") + text;
-    }
-    return out.empty() ? "0" : out;
-}
+// B, C, g, Q, E_kin, E_pot as displayed (JSON's top level), whatever steps are shown.
+struct DisplayResults {
+    DisplayPtr B, C, g, Q, Ekin, Epot;
+};
 
-std::string renderItem(const DerivationItem& item, Presenter& presenter, const PrintOptions& options, bool latexName) {
-    const std::string name = latexName ? item.latexName : item.name;
+DisplayItem displayItem(const DerivationItem& item, Presenter& presenter, DisplayBuilder& build,
+                        const DisplayOptions& options) {
+    DisplayItem out{item.name, item.latexName, nullptr, nullptr};
     if (item.name.rfind("equation_", 0) == 0) {
         const int row = std::stoi(item.name.substr(9)) - 1;
-        return joinTerms(presenter.equationParts(row), options) + " = " + print(presenter.present("Q", item.value.rhs()), options);
+        std::vector<DisplayPtr> parts;
+        for (const GiNaC::ex& part : presenter.equationParts(row))
+            if (!part.is_zero()) parts.push_back(build(part));
+        out.value = build(presenter.present("Q", item.value.rhs()));
+        out.equation = displayEquation(displaySumOf(parts), out.value);
+        return out;
     }
-    return printEquation(name, presenter.present(item.name, item.value), options);
+    out.value = build(presenter.present(item.name, item.value));
+    out.equation = displayEquation(displayLabel(item.name, item.latexName, options), out.value);
+    return out;
 }
 
-nlohmann::json plainJson(const GiNaC::ex& value, const PrintOptions& plain) {
-    if (GiNaC::is_a<GiNaC::matrix>(value)) {
-        const GiNaC::matrix& m = GiNaC::ex_to<GiNaC::matrix>(value);
+// The name of entry (r, c) of a matrix item: b11 for B, g2 for g, T_2^0[1,4] otherwise.
+std::string entryName(const std::string& name, std::size_t r, std::size_t c, bool column) {
+    const std::string rc = column ? std::to_string(r + 1) : std::to_string(r + 1) + std::to_string(c + 1);
+    if (name.size() == 1 && std::isalpha(static_cast<unsigned char>(name[0])))
+        return std::string(1, static_cast<char>(std::tolower(static_cast<unsigned char>(name[0])))) + rc;
+    return name + "[" + (column ? std::to_string(r + 1) : std::to_string(r + 1) + "," + std::to_string(c + 1)) + "]";
+}
+
+// Text columns of the longest line.
+std::size_t widestLine(const std::string& s) {
+    std::size_t widest = 0, n = 0;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        const unsigned char b = static_cast<unsigned char>(s[i]);
+        if (b == '\n') {
+            widest = std::max(widest, n);
+            n = 0;
+        } else if ((b & 0xC0) != 0x80 && !(b == 0xCC || (b == 0xCD && i + 1 < s.size() && static_cast<unsigned char>(s[i + 1]) < 0xB0))) {
+            ++n;
+        }
+    }
+    return std::max(widest, n);
+}
+
+// Plain (re-parsable) from the displayed tree: a matrix as rows of entries (a column
+// as a list), an equation as "lhs = rhs". The displayed form has the same value as the
+// derived one (grouping and angle sums keep it; decimals print with 17 digits).
+nlohmann::json plainJson(const DisplayNode& value) {
+    auto plain = [](const DisplayNode& e) { return renderDisplay(e, DisplayStyle::Plain); };
+    if (value.kind == DisplayKind::Matrix) {
         nlohmann::json rows = nlohmann::json::array();
-        for (unsigned r = 0; r < m.rows(); ++r) {
-            if (m.cols() == 1) {
-                rows.push_back(print(m(r, 0), plain));
+        for (const auto& r : value.rows) {
+            if (r.size() == 1) {
+                rows.push_back(plain(*r[0]));
                 continue;
             }
             nlohmann::json row = nlohmann::json::array();
-            for (unsigned c = 0; c < m.cols(); ++c) row.push_back(print(m(r, c), plain));
+            for (const DisplayPtr& c : r) row.push_back(plain(*c));
             rows.push_back(row);
         }
         return rows;
     }
-    if (GiNaC::is_a<GiNaC::relational>(value)) return print(value.lhs(), plain) + " = " + print(value.rhs(), plain);
-    return print(value, plain);
+    return plain(value);
+}
+
+nlohmann::json plainJson(const DisplayItem& item) {
+    if (item.name.rfind("equation_", 0) == 0) return renderDisplay(*item.equation, DisplayStyle::Plain);
+    return plainJson(*item.value);
 }
 
 // Plain text for a LaTeX paragraph: < and _ would print as ¡ or start a subscript.
@@ -133,20 +241,18 @@ std::string latexText(const std::string& text) {
     return out;
 }
 
-void writeText(const Derivation& d, std::ostream& out) {
-    const PrintOptions text = printOptionsFor(d, Style::Text);
-    Presenter presenter(d, d.trigToFunctions.nops() > 0);
+std::string itemLatex(const DisplayItem& item) { return renderDisplay(*item.equation, DisplayStyle::Latex); }
+
+void writeText(const DisplayDocument& d, std::ostream& out) {
     out << d.systemName << "\n" << std::string(d.systemName.size(), '=') << "\n";
-    for (const DerivationStep& step : d.steps) {
+    for (const DisplayStep& step : d.steps) {
         out << "\nStep " << step.number << ". " << step.title << "\n    " << step.formulaText << "\n\n";
-        for (const DerivationItem& item : step.items) out << renderItem(item, presenter, text, false) << "\n\n";
+        for (const DisplayItem& item : step.items) out << itemText(item) << "\n\n";
     }
-    out << "Actuation: " << actuationText(d.actuated, d.coordinateNames) << "\n";
+    out << "Actuation: " << d.actuation << "\n";
 }
 
-void writeLatex(const Derivation& d, std::ostream& out) {
-    const PrintOptions latex = printOptionsFor(d, Style::Latex);
-    Presenter presenter(d, d.trigToFunctions.nops() > 0);
+void writeLatex(const DisplayDocument& d, std::ostream& out) {
     out << "\\documentclass[a4paper,10pt]{article}\n"
            "\\usepackage[margin=1.5cm,landscape]{geometry}\n"
            "\\usepackage{amsmath,amssymb}\n"
@@ -156,48 +262,48 @@ void writeLatex(const Derivation& d, std::ostream& out) {
            "\\author{LagrangeLab}\n\\date{}\n"
            "\\begin{document}\n\\maketitle\n"
            "Shorthand: $c_{i} = \\cos q_i$, $s_{i} = \\sin q_i$, $c_{12} = \\cos(q_1 + q_2)$, $\\dot{q}_i$ the joint velocities.\n";
-    for (const DerivationStep& step : d.steps) {
+    for (const DisplayStep& step : d.steps) {
         out << "\\section*{Step " << step.number << ": " << step.title << "}\n\\[ " << step.formulaLatex << " \\]\n";
-        for (const DerivationItem& item : step.items) out << "\\[ " << renderItem(item, presenter, latex, true) << " \\]\n";
+        for (const DisplayItem& item : step.items) out << "\\[ " << itemLatex(item) << " \\]\n";
     }
-    out << "\\paragraph{Actuation} " << latexText(actuationText(d.actuated, d.coordinateNames)) << ".\n"
+    out << "\\paragraph{Actuation} " << latexText(d.actuation) << ".\n"
         << "\\end{document}\n";
 }
 
-void writeJson(const Derivation& d, const std::string& mode, std::ostream& out) {
-    const PrintOptions text = printOptionsFor(d, Style::Text), latex = printOptionsFor(d, Style::Latex),
-                       plain = printOptionsFor(d, Style::Plain);
-    Presenter presenter(d, d.trigToFunctions.nops() > 0);
+void writeJson(const Derivation& d, const DisplayDocument& shown, const DisplayResults& results, const std::string& mode,
+               std::ostream& out) {
     nlohmann::ordered_json j;
     j["system"] = d.systemName;
     j["mode"] = mode;
     j["coordinates"] = d.coordinateNames;
     nlohmann::ordered_json steps = nlohmann::ordered_json::array();
-    for (const DerivationStep& step : d.steps) {
+    for (std::size_t k = 0; k < d.steps.size(); ++k) {
+        const DerivationStep& step = d.steps[k];
         nlohmann::ordered_json s;
         s["number"] = step.number;
         s["title"] = step.title;
         s["formula"] = {{"text", step.formulaText}, {"latex", step.formulaLatex}};
         s["seconds"] = step.seconds;
         nlohmann::ordered_json items = nlohmann::ordered_json::array();
-        for (const DerivationItem& item : step.items) {
+        for (std::size_t i = 0; i < step.items.size(); ++i) {
+            const DisplayItem& item = shown.steps[k].items[i];
             nlohmann::ordered_json it;
             it["name"] = item.name;
-            it["latex"] = renderItem(item, presenter, latex, true);
-            it["text"] = renderItem(item, presenter, text, false);
-            it["expr"] = plainJson(item.value, plain);
+            it["latex"] = itemLatex(item);
+            it["text"] = itemText(item);
+            it["expr"] = plainJson(item);
             items.push_back(it);
         }
         s["items"] = items;
         steps.push_back(s);
     }
     j["steps"] = steps;
-    j["B"] = plainJson(d.B, plain);
-    j["C"] = plainJson(d.C, plain);
-    j["g"] = plainJson(d.g, plain);
-    j["Q"] = plainJson(d.Q, plain);
-    j["Ekin"] = print(d.Ekin, plain);
-    j["Epot"] = print(d.Epot, plain);
+    j["B"] = plainJson(*results.B);
+    j["C"] = plainJson(*results.C);
+    j["g"] = plainJson(*results.g);
+    j["Q"] = plainJson(*results.Q);
+    j["Ekin"] = plainJson(*results.Ekin);
+    j["Epot"] = plainJson(*results.Epot);
     std::vector<std::string> actuated;
     for (int a : d.actuated) actuated.push_back(d.coordinateNames[a]);
     j["actuated"] = actuated;
@@ -206,16 +312,61 @@ void writeJson(const Derivation& d, const std::string& mode, std::ostream& out) 
     out << j.dump(2) << '\n';
 }
 
+std::shared_ptr<const DisplayDocument> shapeDocument(const Derivation& d, Presenter& presenter, DisplayBuilder& build) {
+    auto doc = std::make_shared<DisplayDocument>();
+    doc->systemName = d.systemName;
+    doc->coordinateNames = d.coordinateNames;
+    doc->actuation = actuationText(d.actuated, d.coordinateNames);
+    const DisplayOptions options = displayOptions(printOptionsFor(d, Style::Text));
+    for (const DerivationStep& step : d.steps) {
+        DisplayStep s{step.number, step.title, step.formulaText, step.formulaLatex, {}, step.seconds};
+        for (const DerivationItem& item : step.items) s.items.push_back(displayItem(item, presenter, build, options));
+        doc->steps.push_back(std::move(s));
+    }
+    return doc;
+}
+
 }  // namespace
+
+std::string itemText(const DisplayItem& item) {
+    const std::string whole = renderDisplay(*item.equation, DisplayStyle::Text);
+    if (item.value->kind != DisplayKind::Matrix || widestLine(whole) <= maxTextMatrixRow) return whole;
+    // Too wide to read as a block: the entries one by one, under the matrix's name.
+    const auto& rows = item.value->rows;
+    const bool column = !rows.empty() && rows[0].size() == 1;
+    std::string out = item.name + " (" + std::to_string(rows.size()) + "×" +
+                      std::to_string(rows.empty() ? 0 : rows[0].size()) + "), entry by entry:";
+    for (std::size_t r = 0; r < rows.size(); ++r)
+        for (std::size_t c = 0; c < rows[r].size(); ++c)
+            out += "\n  " + entryName(item.name, r, c, column) + " = " + renderDisplay(*rows[r][c], DisplayStyle::Text);
+    return out;
+}
+
+std::shared_ptr<const DisplayDocument> displayDocument(const Derivation& d) {
+    const auto lock = lockGinac();
+    DisplayBuilder build(displayOptions(printOptionsFor(d, Style::Text)));
+    Presenter presenter(d, d.trigToFunctions.nops() > 0);
+    return shapeDocument(d, presenter, build);
+}
+
+std::string renderDocument(const DisplayDocument& document, DocumentFormat format) {
+    std::ostringstream out;
+    if (format == DocumentFormat::Text) writeText(document, out);
+    if (format == DocumentFormat::Latex) writeLatex(document, out);
+    return out.str();
+}
 
 std::string derivationDocument(const Derivation& d, DocumentFormat format, const std::string& modeName) {
     const auto lock = lockGinac();
+    if (format != DocumentFormat::Json) return renderDocument(*displayDocument(d), format);
+    DisplayBuilder build(displayOptions(printOptionsFor(d, Style::Text)));
+    Presenter presenter(d, d.trigToFunctions.nops() > 0);
+    const auto shown = shapeDocument(d, presenter, build);
+    const DisplayResults results{build(presenter.present("B", d.B)),       build(presenter.present("C", d.C)),
+                                 build(presenter.present("g", d.g)),       build(presenter.present("Q", d.Q)),
+                                 build(presenter.present("E_kin", d.Ekin)), build(presenter.present("E_pot", d.Epot))};
     std::ostringstream out;
-    switch (format) {
-        case DocumentFormat::Text: writeText(d, out); break;
-        case DocumentFormat::Latex: writeLatex(d, out); break;
-        case DocumentFormat::Json: writeJson(d, modeName, out); break;
-    }
+    writeJson(d, *shown, results, modeName, out);
     return out.str();
 }
 

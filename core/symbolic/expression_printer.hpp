@@ -1,5 +1,6 @@
 #pragma once
-// GiNaC expressions and matrices printed three ways, in a deterministic order of terms
+// GiNaC expressions and matrices printed three ways, all rendered from one display tree
+// (core/symbolic/display_builder, display_tree), in a deterministic order of terms
 // and factors (GiNaC's own order is hash-based and can change between runs):
 //   Plain  re-parsable by GiNaC's parser: I1+m2*(a1^2+2*a1*lc2*cos(q2)), 1/2*m1*qd1^2
 //   Text   a terminal's textbook:         I1 + m2 (a1² + 2 a1 ℓc2 c2), 1/2 m1 q̇1²
@@ -21,6 +22,7 @@
 #include <ginac/ginac.h>
 
 #include "core/symbolic/derivation.hpp"
+#include "core/symbolic/display_builder.hpp"
 
 namespace ll::symbolic {
 
@@ -35,6 +37,9 @@ struct PrintOptions {
     // Lagrangian systems, where c1 may be the user's damping coefficient.
     bool trigSymbols = true;
 };
+
+// The display tree's options (coordinates, trig shorthand) of these print options.
+DisplayOptions displayOptions(const PrintOptions& options);
 
 // The options for printing a derivation's results in `style`.
 PrintOptions printOptionsFor(const Derivation& derivation, Style style);

@@ -1,0 +1,825 @@
+#include "core/symbolic/display_builder.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <climits>
+#include <cstdio>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <tuple>
+#include <unordered_map>
+
+#include "core/symbolic/angle_sums.hpp"
+
+namespace ll::symbolic {
+namespace {
+
+using GiNaC::ex, GiNaC::ex_to, GiNaC::is_a, GiNaC::numeric;
+
+// ---------------------------------------------------------------- names
+
+bool allDigits(const std::string& s) {
+    return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+bool startsWith(const std::string& s, const std::string& p) { return s.compare(0, p.size(), p) == 0; }
+bool endsWith(const std::string& s, const std::string& p) {
+    return s.size() >= p.size() && s.compare(s.size() - p.size(), p.size(), p) == 0;
+}
+
+struct Greek {
+    const char* name;
+    const char* text;
+    const char* latex;
+};
+constexpr Greek greekLetters[] = {
+    {"alpha", "α", "\\alpha"},     {"beta", "β", "\\beta"},       {"gamma", "γ", "\\gamma"},
+    {"delta", "δ", "\\delta"},     {"epsilon", "ε", "\\epsilon"}, {"varepsilon", "ε", "\\varepsilon"},
+    {"zeta", "ζ", "\\zeta"},       {"eta", "η", "\\eta"},         {"theta", "θ", "\\theta"},
+    {"vartheta", "ϑ", "\\vartheta"}, {"iota", "ι", "\\iota"},     {"kappa", "κ", "\\kappa"},
+    {"lambda", "λ", "\\lambda"},   {"mu", "μ", "\\mu"},           {"nu", "ν", "\\nu"},
+    {"xi", "ξ", "\\xi"},           {"pi", "π", "\\pi"},           {"rho", "ρ", "\\rho"},
+    {"sigma", "σ", "\\sigma"},     {"tau", "τ", "\\tau"},         {"upsilon", "υ", "\\upsilon"},
+    {"phi", "φ", "\\phi"},         {"varphi", "φ", "\\varphi"},   {"chi", "χ", "\\chi"},
+    {"psi", "ψ", "\\psi"},         {"omega", "ω", "\\omega"},     {"Gamma", "Γ", "\\Gamma"},
+    {"Delta", "Δ", "\\Delta"},     {"Theta", "Θ", "\\Theta"},     {"Lambda", "Λ", "\\Lambda"},
+    {"Xi", "Ξ", "\\Xi"},           {"Pi", "Π", "\\Pi"},           {"Sigma", "Σ", "\\Sigma"},
+    {"Upsilon", "Υ", "\\Upsilon"}, {"Phi", "Φ", "\\Phi"},         {"Psi", "Ψ", "\\Psi"},
+    {"Omega", "Ω", "\\Omega"},
+};
+const Greek* greek(const std::string& letters) {
+    for (const Greek& g : greekLetters)
+        if (letters == g.name) return &g;
+    return nullptr;
+}
+
+std::string letterPrefix(const std::string& name) {
+    std::size_t i = 0;
+    while (i < name.size() && std::isalpha(static_cast<unsigned char>(name[i]))) ++i;
+    return name.substr(0, i);
+}
+
+// For \mathrm{}: escapes what LaTeX would read as markup; ^ ~ \ have no math-mode
+// form there and are left out (GiNaC symbol names from scenes are identifiers anyway).
+std::string latexEscape(const std::string& s) {
+    std::string out;
+    for (char c : s) {
+        if (c == '^' || c == '~' || c == '\\') continue;
+        if (std::string("_#%&${}").find(c) != std::string::npos) out += '\\';
+        out += c;
+    }
+    return out;
+}
+
+// One piece of a subscript: 1, c, \alpha, \mathrm{cart}.
+std::string latexSubscriptPiece(const std::string& piece) {
+    if (allDigits(piece) || piece.size() == 1) return latexEscape(piece);
+    if (const Greek* g = greek(piece)) return g->latex;
+    return "\\mathrm{" + latexEscape(piece) + "}";
+}
+
+struct LatexName {
+    std::string head, sub;
+    bool word = false;  // \mathrm{...} head
+};
+
+// theta1 → \theta_{1}, lc2 → \ell_{c2}, Ixx1 → I_{xx,1}, xc1 → x_{c1}, m_cart → m_{\mathrm{cart}}.
+LatexName latexName(const std::string& name) {
+    static const char* inertia[] = {"Ixx", "Iyy", "Izz", "Ixy", "Ixz", "Iyz"};
+    for (const char* p : inertia)
+        if (startsWith(name, p) && allDigits(name.substr(3))) return {"I", name.substr(1, 2) + "," + name.substr(3)};
+    if (startsWith(name, "lc") && allDigits(name.substr(2))) return {"\\ell", name.substr(1)};
+    if (const auto underscore = name.find('_'); underscore != std::string::npos && underscore > 0) {
+        LatexName base = latexName(name.substr(0, underscore));
+        std::string rest = name.substr(underscore + 1), sub;
+        for (std::size_t start = 0; start <= rest.size();) {
+            const std::size_t end = std::min(rest.find('_', start), rest.size());
+            sub += (sub.empty() ? "" : ",") + latexSubscriptPiece(rest.substr(start, end - start));
+            start = end + 1;
+        }
+        base.sub += (base.sub.empty() ? "" : ",") + sub;
+        return base;
+    }
+    const std::string letters = letterPrefix(name), rest = name.substr(letters.size());
+    if (letters.empty() || !(rest.empty() || allDigits(rest))) return {"\\mathrm{" + latexEscape(name) + "}", "", true};
+    if (const Greek* g = greek(letters)) return {g->latex, rest};
+    if (letters.size() == 1) return {letters, rest};
+    if (letters.size() == 2 && std::islower(static_cast<unsigned char>(letters[1])) && !rest.empty())
+        return {letters.substr(0, 1), letters.substr(1) + rest};  // xc1, Fc1, vs1
+    return {"\\mathrm{" + letters + "}", rest, true};
+}
+
+// θ1, ℓc2.
+std::string textName(const std::string& name) {
+    if (startsWith(name, "lc") && allDigits(name.substr(2))) return "ℓ" + name.substr(1);
+    const std::string letters = letterPrefix(name);
+    if (const Greek* g = greek(letters)) return g->text + name.substr(letters.size());
+    return name;
+}
+
+// A LaTeX head or subscript as the typesetter draws it: \theta → θ, \mathrm{cart} → cart.
+std::string shownFromLatex(const std::string& latex, bool* upright = nullptr) {
+    std::string out;
+    for (std::size_t i = 0; i < latex.size();) {
+        if (latex[i] == '\\') {
+            std::size_t j = i + 1;
+            while (j < latex.size() && std::isalpha(static_cast<unsigned char>(latex[j]))) ++j;
+            const std::string command = latex.substr(i + 1, j - i - 1);
+            if (command == "mathrm") {
+                if (upright) *upright = true;
+            } else if (command == "ell") {
+                out += "ℓ";
+            } else if (const Greek* g = greek(command)) {
+                out += g->text;
+            }
+            i = j;
+            continue;
+        }
+        if (latex[i] != '{' && latex[i] != '}') out += latex[i];
+        ++i;
+    }
+    return out;
+}
+
+// The symbol node for a name (not a c/s shorthand): base and subscript split the way
+// LaTeX splits them, Text printing exactly textName(name).
+std::shared_ptr<DisplayNode> namedSymbol(const std::string& name, const std::string& textWhole) {
+    auto n = std::make_shared<DisplayNode>();
+    n->kind = DisplayKind::Symbol;
+    n->name = n->plain = name;
+    const LatexName l = latexName(name);
+    n->latex = l.head;
+    n->subLatex = l.sub;
+    n->upright = l.word;
+    bool word = false;
+    n->text = shownFromLatex(l.head, &word);
+    if (l.word || !startsWith(textWhole, n->text)) {
+        n->text = textWhole;
+        n->subShown = shownFromLatex(l.sub, &n->subUpright);
+        if (l.word) return n;
+        n->subText.clear();
+        return n;
+    }
+    n->subText = textWhole.substr(n->text.size());
+    n->subShown = shownFromLatex(l.sub, &n->subUpright);
+    return n;
+}
+
+enum class Kind { Mass, Parameter, Coordinate, Trig, Velocity };
+
+struct SymbolInfo {
+    Kind kind = Kind::Parameter;
+    std::vector<int> indices;  // the trig index set, or the one index; empty: none
+    std::string base;          // a velocity's coordinate name (theta1 for theta1_dot)
+    std::optional<TrigName> trig;
+    bool second = false;       // _ddot
+};
+
+// -------------------------------------------------------------- numbers
+
+std::string str(const numeric& n) { return (std::ostringstream() << n).str(); }
+
+// Shortest decimal that reads back as the same double (for people).
+std::string shortest(double v) {
+    char buffer[64];
+    const auto r = std::to_chars(buffer, buffer + sizeof buffer, v);
+    return std::string(buffer, r.ptr);
+}
+
+// 17 significant digits, always a float literal for GiNaC's parser (2.0, not 2).
+std::string seventeen(double v) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.17g", v);
+    std::string s = buffer;
+    if (s.find_first_of(".ni") == std::string::npos) {
+        const auto e = s.find('e');
+        s.insert(e == std::string::npos ? s.size() : e, ".0");
+    }
+    return s;
+}
+
+// ------------------------------------------------------------- building
+
+using Prec = int;  // displayPrecedence
+constexpr Prec SumPrec = 0, ProductPrec = 1, AtomPrec = 3;
+
+struct Factor {
+    ex base;
+    numeric exp;           // numeric; a symbolic power is its own base with exp 1
+    bool negated = false;  // a sum shown with its signs flipped (see decompose)
+};
+
+// coef · Π num / Π den, the factors in display order.
+struct Decomposed {
+    numeric coef{1};
+    std::vector<Factor> num, den;
+};
+
+struct TermKey {
+    std::vector<int> velocities;  // indices of the velocity factors, with repetition
+    int maxIndex = -1;            // of every other symbol
+    bool trig = false;
+    numeric degree;
+    std::string text;  // Plain, without the coefficient
+    double coef = 0;
+};
+
+bool operator<(const TermKey& a, const TermKey& b) {
+    if (a.velocities != b.velocities) return a.velocities < b.velocities;
+    if (a.maxIndex != b.maxIndex) return a.maxIndex < b.maxIndex;
+    if (a.trig != b.trig) return !a.trig;
+    if (a.degree != b.degree) return a.degree < b.degree;
+    if (a.text != b.text) return a.text < b.text;
+    return a.coef < b.coef;
+}
+
+struct Term {
+    ex e;
+    std::optional<Decomposed> d;  // none for a number
+    TermKey key;
+    DisplayPtr body;  // the product without its coefficient
+    bool negative() const {
+        const numeric& c = d ? d->coef : ex_to<numeric>(e);
+        return c.is_real() && c.is_negative();
+    }
+};
+
+using FactorKey = std::tuple<int, std::vector<int>, std::string>;
+
+template <class T>
+using ExMap = std::unordered_map<ex, T, std::hash<ex>, GiNaC::ex_is_equal>;
+
+class Builder {
+public:
+    explicit Builder(const DisplayOptions& o) : o_(o) { n_ = static_cast<int>(o.coordinateNames.size()); }
+
+    DisplayPtr build(const ex& e) {
+        if (is_a<GiNaC::matrix>(e)) {
+            const GiNaC::matrix& m = ex_to<GiNaC::matrix>(e);
+            auto node = std::make_shared<DisplayNode>();
+            node->kind = DisplayKind::Matrix;
+            node->rows.assign(m.rows(), std::vector<DisplayPtr>(m.cols()));
+            for (unsigned i = 0; i < m.rows(); ++i)
+                for (unsigned j = 0; j < m.cols(); ++j) node->rows[i][j] = render(m(i, j));
+            return node;
+        }
+        return render(e);
+    }
+
+    DisplayPtr render(const ex& e) {
+        if (is_a<GiNaC::add>(e)) return renderSum(e, false);
+        if (is_a<numeric>(e)) return renderNumber(ex_to<numeric>(e));
+        if (is_a<GiNaC::relational>(e) || is_a<GiNaC::lst>(e)) return renderAtom(e);
+        if (is_a<GiNaC::symbol>(e)) return renderSymbol(ex_to<GiNaC::symbol>(e));
+        Decomposed d = decompose(e);
+        if (!d.coef.is_real() || !d.coef.is_negative()) return renderProduct(d);
+        d.coef = -d.coef;
+        return negated(renderProduct(d));
+    }
+
+    const SymbolInfo& info(const GiNaC::symbol& s) {
+        // By hash (a symbol's serial number), checked by name: no string compare per lookup.
+        const unsigned hash = s.gethash();
+        if (auto it = infoByHash_.find(hash); it != infoByHash_.end() && it->second.first == s.get_name())
+            return it->second.second;
+        return infoByHash_[hash] = {s.get_name(), computeInfo(s)}, infoByHash_[hash].second;
+    }
+
+    SymbolInfo computeInfo(const GiNaC::symbol& s) {
+        const std::string& name = s.get_name();
+        if (auto it = infos_.find(name); it != infos_.end()) return it->second;
+        SymbolInfo i;
+        if (o_.trigSymbols) {
+            if (auto t = parseTrigName(name, n_)) {
+                i.kind = Kind::Trig;
+                i.indices = t->indices;
+                i.trig = t;
+                return infos_[name] = i;
+            }
+        }
+        std::string stem = name;
+        if (startsWith(name, "qdd") && allDigits(name.substr(3))) {  // accelerations: q̈1
+            i.kind = Kind::Velocity;
+            i.second = true;
+            stem = i.base = "q" + name.substr(3);
+        } else if (startsWith(name, "qd") && allDigits(name.substr(2))) {
+            i.kind = Kind::Velocity;
+            stem = i.base = "q" + name.substr(2);
+        } else if (endsWith(name, "_dot") || endsWith(name, "_ddot")) {
+            i.kind = Kind::Velocity;
+            i.second = endsWith(name, "_ddot");
+            stem = i.base = name.substr(0, name.size() - (i.second ? 5 : 4));
+        } else if (isCoordinate(name)) {
+            i.kind = Kind::Coordinate;
+        } else if (name == "m" || (startsWith(name, "m") && (allDigits(name.substr(1)) || name[1] == '_'))) {
+            i.kind = Kind::Mass;
+        }
+        const auto at = std::find(o_.coordinateNames.begin(), o_.coordinateNames.end(), stem);
+        if (at != o_.coordinateNames.end()) {
+            i.indices = {static_cast<int>(at - o_.coordinateNames.begin()) + 1};
+        } else {
+            std::size_t d = stem.size();
+            while (d > 0 && std::isdigit(static_cast<unsigned char>(stem[d - 1]))) --d;
+            if (d < stem.size() && stem.size() - d < 9) i.indices = {std::stoi(stem.substr(d))};
+        }
+        return infos_[name] = i;
+    }
+
+private:
+    const DisplayOptions& o_;
+    int n_ = 0;
+    std::map<std::string, SymbolInfo> infos_;
+    std::unordered_map<unsigned, std::pair<std::string, SymbolInfo>> infoByHash_;
+    std::map<std::string, DisplayPtr> symbols_;
+    std::unordered_map<unsigned, DisplayPtr> symbolByHash_;
+    ExMap<std::vector<Term>> terms_;
+    ExMap<FactorKey> factorKeys_[2];  // by negated
+    ExMap<DisplayPtr> atoms_;
+
+    bool isCoordinate(const std::string& name) const {
+        if (o_.coordinateNames.empty()) return startsWith(name, "q") && allDigits(name.substr(1));
+        return std::find(o_.coordinateNames.begin(), o_.coordinateNames.end(), name) != o_.coordinateNames.end();
+    }
+
+    static DisplayPtr negated(DisplayPtr magnitude) {
+        auto n = std::make_shared<DisplayNode>();
+        n->kind = DisplayKind::Sum;
+        n->children = {std::move(magnitude)};
+        n->negative = {true};
+        return n;
+    }
+
+    static std::string keyText(const DisplayNode& n) { return renderDisplay(n, DisplayStyle::Plain, true); }
+
+    // ---- order
+
+    // The terms of a sum in display order (cached: a sum factor is ordered once).
+    const std::vector<Term>& terms(const ex& sum) {
+        if (auto it = terms_.find(sum); it != terms_.end()) return it->second;
+        std::vector<Term> out;
+        out.reserve(sum.nops());
+        for (const ex& t : sum) {
+            Term term{t, std::nullopt, {}, nullptr};
+            if (!is_a<numeric>(t)) {
+                term.d = decompose(t);
+                term.body = renderProduct(*term.d, false);
+            }
+            term.key = termKey(term);
+            out.push_back(std::move(term));
+        }
+        std::stable_sort(out.begin(), out.end(), [](const Term& a, const Term& b) { return a.key < b.key; });
+        return terms_.emplace(sum, std::move(out)).first->second;
+    }
+
+    TermKey termKey(const Term& t) {
+        TermKey k;
+        if (!t.d) {
+            k.coef = ex_to<numeric>(t.e).is_real() ? ex_to<numeric>(t.e).to_double() : 0.0;
+            k.text = "1";
+            return k;
+        }
+        k.coef = t.d->coef.is_real() ? t.d->coef.to_double() : 0.0;
+        for (const Factor& f : t.d->num)
+            if (is_a<GiNaC::symbol>(f.base) && f.exp.is_pos_integer()) {
+                const SymbolInfo& i = info(ex_to<GiNaC::symbol>(f.base));
+                if (i.kind == Kind::Velocity)
+                    k.velocities.insert(k.velocities.end(), f.exp.to_int(), i.indices.empty() ? 0 : i.indices.back());
+            }
+        std::sort(k.velocities.begin(), k.velocities.end());
+        scan(t.e, k);
+        k.degree = degree(t.e);
+        k.text = keyText(*t.body);
+        return k;
+    }
+
+    void scan(const ex& e, TermKey& k) {
+        for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+            if (is_a<GiNaC::symbol>(*it)) {
+                const SymbolInfo& i = info(ex_to<GiNaC::symbol>(*it));
+                if (i.kind == Kind::Trig) k.trig = true;
+                if (i.kind != Kind::Velocity && !i.indices.empty())
+                    k.maxIndex = std::max(k.maxIndex, *std::max_element(i.indices.begin(), i.indices.end()));
+            } else if (is_a<GiNaC::function>(*it)) {
+                const std::string name = ex_to<GiNaC::function>(*it).get_name();
+                if (name == "sin" || name == "cos" || name == "tan") k.trig = true;
+            }
+        }
+    }
+
+    static numeric degree(const ex& e) {
+        if (is_a<numeric>(e) || is_a<GiNaC::constant>(e)) return 0;
+        if (is_a<GiNaC::add>(e)) {
+            numeric d = 0;
+            for (const ex& t : e)
+                if (const numeric dt = degree(t); d < dt) d = dt;
+            return d;
+        }
+        if (is_a<GiNaC::mul>(e)) {
+            numeric d = 0;
+            for (const ex& f : e) d += degree(f);
+            return d;
+        }
+        if (is_a<GiNaC::power>(e) && is_a<numeric>(e.op(1)) && ex_to<numeric>(e.op(1)).is_real())
+            return degree(e.op(0)) * ex_to<numeric>(e.op(1));
+        return 1;
+    }
+
+    // GiNaC gives a sum factor with an integer power the sign that makes its leading
+    // term positive in GiNaC's hash order, which varies: (b−a)² or (a−b)². Shown here
+    // with the leading term in *our* order positive, an odd power's sign moved to coef.
+    Decomposed decompose(const ex& e) {
+        Decomposed d;
+        auto one = [&](const ex& x) {
+            if (is_a<numeric>(x)) {
+                d.coef *= ex_to<numeric>(x);
+                return;
+            }
+            Factor f{x, 1};
+            if (is_a<GiNaC::power>(x) && is_a<numeric>(x.op(1)) && ex_to<numeric>(x.op(1)).is_real())
+                f = {x.op(0), ex_to<numeric>(x.op(1))};
+            if (is_a<GiNaC::add>(f.base) && f.exp.is_integer() && terms(f.base).front().negative()) {
+                f.negated = true;
+                if (f.exp.is_odd()) d.coef = -d.coef;
+            }
+            if (f.exp.is_negative()) {
+                f.exp = -f.exp;
+                d.den.push_back(f);
+            } else {
+                d.num.push_back(f);
+            }
+        };
+        if (is_a<GiNaC::mul>(e))
+            for (const ex& x : e) one(x);
+        else
+            one(e);
+        std::vector<std::pair<FactorKey, Factor>> keyed;
+        auto order = [this](std::vector<Factor>& fs) {
+            if (fs.size() < 2) return;
+            std::vector<std::pair<FactorKey, Factor>> k;
+            for (Factor& f : fs) k.emplace_back(factorKey(f), std::move(f));
+            std::stable_sort(k.begin(), k.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+            for (std::size_t i = 0; i < fs.size(); ++i) fs[i] = std::move(k[i].second);
+        };
+        order(d.num);
+        order(d.den);
+        return d;
+    }
+
+    // Number, constants, masses, parameters, coordinates, c/s, functions, sums, velocities.
+    FactorKey factorKey(const Factor& f) {
+        const ex& b = f.base;
+        if (is_a<GiNaC::symbol>(b)) {
+            const SymbolInfo& i = info(ex_to<GiNaC::symbol>(b));
+            static const int rank[] = {1, 2, 3, 4, 7};  // by Kind; functions 5, sums 6
+            std::vector<int> sub = i.indices.empty() ? std::vector<int>{INT_MAX} : i.indices;
+            if (i.trig) sub.push_back(i.trig->kind == 'c' ? 0 : 1);  // c1 before s1
+            return {rank[static_cast<int>(i.kind)], sub, ex_to<GiNaC::symbol>(b).get_name()};
+        }
+        ExMap<FactorKey>& cache = factorKeys_[f.negated ? 1 : 0];
+        if (auto it = cache.find(b); it != cache.end()) return it->second;
+        FactorKey key;
+        if (is_a<numeric>(b) || is_a<GiNaC::constant>(b))
+            key = {0, {}, keyText(*render(b))};
+        else if (is_a<GiNaC::add>(b))
+            key = {6, {}, keyText(*renderSum(b, f.negated))};
+        else
+            key = {is_a<GiNaC::function>(b) ? 5 : 6, {}, keyText(*render(b))};
+        return cache.emplace(b, key).first->second;
+    }
+
+    // ---- sums
+
+    DisplayPtr renderSum(const ex& e, bool negate) {
+        auto n = std::make_shared<DisplayNode>();
+        n->kind = DisplayKind::Sum;
+        for (const Term& t : terms(e)) {
+            n->negative.push_back(t.negative() != negate);
+            if (!t.d) {
+                n->children.push_back(renderNumber(abs(ex_to<numeric>(t.e))));
+            } else {
+                numeric c = t.d->coef;
+                if (c.is_real()) c = abs(c);
+                n->children.push_back(withCoefficient(c, *t.d, t.body));
+            }
+        }
+        return n;
+    }
+
+    // ---- numbers
+
+    DisplayPtr renderNumber(const numeric& n) {
+        if (!n.is_real()) {  // not expected in mechanics; GiNaC's form, parenthesised
+            std::ostringstream plain, latex;
+            plain << n;
+            latex << GiNaC::latex << n;
+            return displayRaw("(" + plain.str() + ")", "(" + latex.str() + ")", "(" + plain.str() + ")");
+        }
+        if (n.is_negative()) return negated(renderNumber(-n));
+        if (n.is_integer()) {
+            const std::string s = str(n);
+            return displayNumber(s, s, s);
+        }
+        if (n.is_rational())
+            return displayNode(DisplayKind::Fraction, {renderNumber(n.numer()), renderNumber(n.denom())});
+        const double v = n.to_double();
+        const std::string s = shortest(v), plain = seventeen(v);
+        const auto e = s.find('e');
+        if (e == std::string::npos) return displayNumber(s, s, plain);
+        const std::string mantissa = s.substr(0, e), exponent = std::to_string(std::stoi(s.substr(e + 1)));
+        return displayNumber(mantissa, mantissa, plain, exponent);
+    }
+
+    // ---- atoms
+
+    DisplayPtr renderSymbol(const GiNaC::symbol& sym) {
+        const std::string& name = sym.get_name();
+        const unsigned hash = sym.gethash();
+        if (auto it = symbolByHash_.find(hash); it != symbolByHash_.end() && it->second->name == name) return it->second;
+        return symbolByHash_[hash] = namedNode(sym);
+    }
+
+    DisplayPtr namedNode(const GiNaC::symbol& sym) {
+        const std::string& name = sym.get_name();
+        if (auto it = symbols_.find(name); it != symbols_.end()) return it->second;
+        const SymbolInfo& i = info(sym);
+        std::shared_ptr<DisplayNode> n;
+        if (i.kind == Kind::Trig) {
+            n = std::make_shared<DisplayNode>();
+            n->kind = DisplayKind::Symbol;
+            n->name = name;
+            std::string arg;
+            for (int k : i.indices)
+                arg += (arg.empty() ? "" : "+") + (k <= n_ ? o_.coordinateNames[k - 1] : "q" + std::to_string(k));
+            n->plain = (i.trig->kind == 'c' ? "cos(" : "sin(") + arg + ")";
+            const bool joined = name.find('_') != std::string::npos;
+            std::string sub;
+            for (int k : i.indices) sub += (sub.empty() || !joined ? "" : ",") + std::to_string(k);
+            n->text = n->latex = std::string(1, i.trig->kind);
+            n->subText = n->subLatex = n->subShown = sub;
+        } else if (i.kind == Kind::Velocity) {
+            n = namedSymbol(i.base, textName(i.base));
+            n->name = n->plain = name;
+            n->dots = i.second ? 2 : 1;
+        } else {
+            n = namedSymbol(name, textName(name));
+        }
+        return symbols_[name] = n;
+    }
+
+    DisplayPtr renderConstant(const ex& c) {
+        std::ostringstream plain;
+        plain << c;
+        const std::string name = plain.str();
+        auto n = std::make_shared<DisplayNode>();
+        n->kind = DisplayKind::Symbol;
+        n->name = n->plain = name;
+        if (name == "Pi") {
+            n->text = "π";
+            n->latex = "\\pi";
+        } else if (name == "Euler") {
+            n->text = "γ";
+            n->latex = "\\gamma";
+        } else {
+            n->text = name;
+            n->latex = "\\mathrm{" + name + "}";
+            n->upright = true;
+        }
+        return n;
+    }
+
+    DisplayPtr renderFunction(const ex& f) {
+        static const std::map<std::string, std::string> known = {
+            {"sin", "\\sin"},     {"cos", "\\cos"},     {"tan", "\\tan"},   {"exp", "\\exp"},
+            {"log", "\\ln"},      {"sinh", "\\sinh"},   {"cosh", "\\cosh"}, {"tanh", "\\tanh"},
+            {"asin", "\\arcsin"}, {"acos", "\\arccos"}, {"atan", "\\arctan"}};
+        const std::string name = ex_to<GiNaC::function>(f).get_name();
+        auto n = std::make_shared<DisplayNode>();
+        n->kind = DisplayKind::Function;
+        n->text = n->plain = n->name = name;
+        const auto it = known.find(name);
+        n->latex = it != known.end() ? it->second : "\\operatorname{" + latexEscape(name) + "}";
+        n->upright = true;
+        for (const ex& a : f) n->children.push_back(render(a));
+        return n;
+    }
+
+    DisplayPtr renderRelational(const GiNaC::relational& r) {
+        using GiNaC::info_flags;
+        struct Op {
+            unsigned flag;
+            const char *plain, *text, *latex;
+        };
+        static const Op ops[] = {{info_flags::relation_equal, "==", "=", "="},
+                                 {info_flags::relation_not_equal, "!=", "≠", "\\neq"},
+                                 {info_flags::relation_less, "<", "<", "<"},
+                                 {info_flags::relation_less_or_equal, "<=", "≤", "\\leq"},
+                                 {info_flags::relation_greater, ">", ">", ">"},
+                                 {info_flags::relation_greater_or_equal, ">=", "≥", "\\geq"}};
+        const Op* op = &ops[0];
+        for (const Op& o : ops)
+            if (r.info(o.flag)) op = &o;
+        auto n = std::make_shared<DisplayNode>();
+        n->kind = DisplayKind::Equation;
+        n->children = {render(r.lhs()), render(r.rhs())};
+        n->plain = op->plain;
+        n->text = std::string(" ") + op->text + " ";
+        n->latex = std::string(" ") + op->latex + " ";
+        return n;
+    }
+
+    DisplayPtr renderAtom(const ex& e) {
+        if (is_a<GiNaC::symbol>(e)) return renderSymbol(ex_to<GiNaC::symbol>(e));
+        if (is_a<numeric>(e)) return renderNumber(ex_to<numeric>(e));
+        if (auto it = atoms_.find(e); it != atoms_.end()) return it->second;
+        DisplayPtr out;
+        if (is_a<GiNaC::constant>(e)) {
+            out = renderConstant(e);
+        } else if (is_a<GiNaC::function>(e)) {
+            out = renderFunction(e);
+        } else if (is_a<GiNaC::add>(e)) {
+            out = renderSum(e, false);
+        } else if (is_a<GiNaC::power>(e)) {  // symbolic exponent
+            out = displayNode(DisplayKind::Power, {fenced(render(e.op(0)), AtomPrec), render(e.op(1))});
+        } else if (is_a<GiNaC::mul>(e)) {
+            out = render(e);
+        } else if (is_a<GiNaC::relational>(e)) {
+            out = renderRelational(ex_to<GiNaC::relational>(e));
+        } else if (is_a<GiNaC::lst>(e)) {
+            std::vector<DisplayPtr> items;
+            for (const ex& item : e) items.push_back(render(item));
+            out = displayNode(DisplayKind::List, std::move(items));
+        } else {
+            std::ostringstream plain, latex;  // other GiNaC classes: its own printer
+            plain << e;
+            latex << GiNaC::latex << e;
+            out = displayRaw("(" + plain.str() + ")", "(" + latex.str() + ")", "(" + plain.str() + ")");
+        }
+        return atoms_.emplace(e, out).first->second;
+    }
+
+    // x in parentheses when its precedence is below `atLeast`.
+    static DisplayPtr fenced(DisplayPtr x, Prec atLeast) {
+        if (displayPrecedence(*x) >= atLeast) return x;
+        return displayNode(DisplayKind::Fence, {std::move(x)});
+    }
+
+    // ---- products
+
+    DisplayPtr renderFactor(const Factor& f) {
+        const numeric& k = f.exp;
+        const DisplayPtr b = f.negated ? renderSum(f.base, true) : renderAtom(f.base);
+        if (k == 1) return fenced(b, ProductPrec + 1);
+        if (k == numeric(1, 2)) return displayNode(DisplayKind::Root, {b});
+        const std::string power = str(k);
+        DisplayPtr exponent;
+        if (k.is_integer() || k.is_rational())
+            exponent = displayNumber(power, power, power);
+        else
+            exponent = displayNumber(power, power, seventeen(k.to_double()));
+        const bool function = is_a<GiNaC::function>(f.base);
+        return displayNode(DisplayKind::Power, {function ? b : fenced(b, AtomPrec), exponent});
+    }
+
+    static DisplayPtr productOf(std::vector<DisplayPtr> pieces) {
+        if (pieces.empty()) return displayNumber("1", "1", "1");
+        if (pieces.size() == 1) return pieces[0];
+        return displayNode(DisplayKind::Product, std::move(pieces));
+    }
+
+    // The product as decomposed (its sign is the caller's: coef ≥ 0 here).
+    DisplayPtr renderProduct(const Decomposed& d, bool withCoef = true) {
+        return withCoefficient(withCoef ? d.coef : numeric(1), d, nullptr);
+    }
+
+    // c times the product of d's factors; `body` the product without coefficient when
+    // already built (a term of a sum is built once for its key and its display).
+    DisplayPtr withCoefficient(const numeric& c, const Decomposed& d, const DisplayPtr& body) {
+        std::vector<DisplayPtr> num, den;
+        if (d.den.empty() || !c.is_rational()) {
+            if (c != 1) num.push_back(renderNumber(c));  // 2, 1/2, 0.5 in front
+        } else {
+            if (c.numer() != 1) num.push_back(renderNumber(c.numer()));
+            if (c.denom() != 1) den.push_back(renderNumber(c.denom()));
+        }
+        if (body && d.den.empty()) {
+            if (num.empty()) return body;
+            if (body->kind == DisplayKind::Product)
+                num.insert(num.end(), body->children.begin(), body->children.end());
+            else
+                num.push_back(body);
+            return productOf(std::move(num));
+        }
+        for (const Factor& f : d.num) num.push_back(renderFactor(f));
+        for (const Factor& f : d.den) den.push_back(renderFactor(f));
+        if (den.empty()) return productOf(std::move(num));
+        return displayNode(DisplayKind::Fraction, {productOf(std::move(num)), productOf(std::move(den))});
+    }
+};
+
+}  // namespace
+
+struct DisplayBuilder::Impl {
+    DisplayOptions options;
+    Builder builder;
+    explicit Impl(const DisplayOptions& o) : options(o), builder(options) {}
+};
+
+DisplayBuilder::DisplayBuilder(const DisplayOptions& options) : impl_(new Impl(options)) {}
+DisplayBuilder::~DisplayBuilder() { delete impl_; }
+DisplayPtr DisplayBuilder::operator()(const ex& e) { return impl_->builder.build(e); }
+
+DisplayPtr buildDisplay(const ex& e, const DisplayOptions& options) { return Builder(options).build(e); }
+
+// The content of the braces that open at `at` ({...}), advancing `at` past them.
+std::string braced(const std::string& s, std::size_t& at) {
+    if (at >= s.size() || s[at] != '{') {  // a single character: x_1
+        return at < s.size() ? std::string(1, s[at++]) : std::string();
+    }
+    int depth = 0;
+    const std::size_t start = at + 1;
+    for (; at < s.size(); ++at) {
+        depth += s[at] == '{' ? 1 : s[at] == '}' ? -1 : 0;
+        if (depth == 0) break;
+    }
+    return s.substr(start, at++ - start);
+}
+
+// \dot{q} → q̇, \mathcal{L} → ℒ, \omega → ω, \mathrm{kin} → kin.
+std::string shownLabelPart(std::string latex) {
+    for (const auto& [from, to] : {std::pair<std::string, std::string>{"\\mathcal{L}", "ℒ"}, {"\\partial ", "∂"}})
+        for (std::size_t at; (at = latex.find(from)) != std::string::npos;) latex.replace(at, from.size(), to);
+    for (const char* accent : {"\\dot{", "\\ddot{"}) {
+        for (std::size_t at; (at = latex.find(accent)) != std::string::npos;) {
+            std::size_t open = at + std::string(accent).size() - 1;
+            const std::string inner = braced(latex, open);
+            const bool two = std::string(accent) == "\\ddot{";
+            std::string shown = shownFromLatex(inner);
+            std::size_t first = 1;
+            while (first < shown.size() && (static_cast<unsigned char>(shown[first]) & 0xC0) == 0x80) ++first;
+            shown = shown.substr(0, first) + (two ? "\u0308" : "\u0307") + shown.substr(first);
+            latex.replace(at, open - at, shown);
+        }
+    }
+    return shownFromLatex(latex);
+}
+
+DisplayPtr displayLabel(const std::string& name, const std::string& latexName, const DisplayOptions&) {
+    auto n = std::make_shared<DisplayNode>();
+    n->kind = DisplayKind::Raw;
+    n->text = n->plain = n->name = name;
+    n->latex = latexName;
+    // What the typesetter draws: HEAD_{SUB}^{SUP} read from the LaTeX name; anything
+    // else (\frac …) as the plain name.
+    auto shown = std::make_shared<DisplayNode>();
+    shown->kind = DisplayKind::Symbol;
+    std::size_t at = 0;
+    int depth = 0;
+    while (at < latexName.size() && !(depth == 0 && (latexName[at] == '_' || latexName[at] == '^'))) {
+        depth += latexName[at] == '{' ? 1 : latexName[at] == '}' ? -1 : 0;
+        ++at;
+    }
+    const std::string head = latexName.substr(0, at);
+    std::string sub, sup;
+    while (at < latexName.size() && (latexName[at] == '_' || latexName[at] == '^')) {
+        const char kind = latexName[at++];
+        (kind == '_' ? sub : sup) = braced(latexName, at);
+    }
+    if (head.find("\\frac") != std::string::npos || head.find("\\text") != std::string::npos || at < latexName.size()) {
+        shown->text = name;
+        shown->upright = true;
+    } else {
+        bool upright = false;
+        shown->text = shownLabelPart(head);
+        shown->subShown = shownLabelPart(sub);
+        shown->subUpright = sub.find("\\mathrm") != std::string::npos;
+        shown->supText = shownLabelPart(sup);
+        (void)upright;
+    }
+    n->children = {shown};
+    return n;
+}
+
+DisplayPtr displaySymbolName(const std::string& name, int dots) {
+    auto n = namedSymbol(name, textName(name));
+    n->dots = dots;
+    return n;
+}
+
+DisplayPtr displaySumOf(const std::vector<DisplayPtr>& parts) {
+    auto n = std::make_shared<DisplayNode>();
+    n->kind = DisplayKind::Sum;
+    for (const DisplayPtr& p : parts) {
+        if (p->kind == DisplayKind::Sum) {
+            n->children.insert(n->children.end(), p->children.begin(), p->children.end());
+            n->negative.insert(n->negative.end(), p->negative.begin(), p->negative.end());
+        } else {
+            n->children.push_back(p);
+            n->negative.push_back(false);
+        }
+    }
+    if (n->children.empty()) return displayNumber("0", "0", "0");
+    return n;
+}
+
+}  // namespace ll::symbolic

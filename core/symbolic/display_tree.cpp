@@ -1,0 +1,326 @@
+#include "core/symbolic/display_tree.hpp"
+
+#include <algorithm>
+#include <sstream>
+
+namespace ll::symbolic {
+namespace {
+
+std::string superscript(const std::string& digits) {
+    static const char* sup[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
+    std::string out;
+    for (char c : digits) out += c == '-' ? "⁻" : (c >= '0' && c <= '9' ? sup[c - '0'] : std::string(1, c));
+    return out;
+}
+
+bool allDigits(const std::string& s) {
+    return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+// A combining mark after the first code point: q̇, θ̈.
+std::string withDots(const std::string& text, int dots) {
+    if (dots == 0) return text;
+    std::size_t first = 1;
+    while (first < text.size() && (static_cast<unsigned char>(text[first]) & 0xC0) == 0x80) ++first;
+    return text.substr(0, first) + (dots == 1 ? "\u0307" : "\u0308") + text.substr(first);
+}
+
+// Code points on screen: combining marks (U+0300–U+036F) take no column.
+std::size_t columns(const std::string& s) {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < s.size();) {
+        const unsigned char b = static_cast<unsigned char>(s[i]);
+        const std::size_t len = b < 0x80 ? 1 : b < 0xE0 ? 2 : b < 0xF0 ? 3 : 4;
+        if (!(len == 2 && (b == 0xCC || (b == 0xCD && static_cast<unsigned char>(s[i + 1]) < 0xB0)))) ++n;
+        i += len;
+    }
+    return n;
+}
+
+std::vector<std::string> lines(const std::string& s) {
+    std::vector<std::string> out;
+    std::istringstream in(s);
+    for (std::string line; std::getline(in, line);) out.push_back(line);
+    if (out.empty()) out.emplace_back();
+    return out;
+}
+
+std::string rtrim(std::string s) {
+    while (!s.empty() && s.back() == ' ') s.pop_back();
+    return s;
+}
+
+bool isIntegerExponent(const DisplayNode& x) { return x.kind == DisplayKind::Number && allDigits(x.text); }
+
+// LaTeX wants \, beside upright words and function names.
+bool isWord(const DisplayNode& n) {
+    if (n.kind == DisplayKind::Symbol) return n.upright;
+    if (n.kind == DisplayKind::Function) return true;
+    if (n.kind == DisplayKind::Power) return n.children[0]->kind == DisplayKind::Function;
+    return false;
+}
+
+class Renderer {
+public:
+    Renderer(DisplayStyle style, bool keyNames) : style_(style), key_(keyNames) {}
+
+    std::string operator()(const DisplayNode& n) const {
+        switch (n.kind) {
+        case DisplayKind::Symbol: return symbol(n);
+        case DisplayKind::Number: return number(n);
+        case DisplayKind::Sum: return sum(n);
+        case DisplayKind::Product: return product(n);
+        case DisplayKind::Fraction: return fraction(n);
+        case DisplayKind::Power: return power(n);
+        case DisplayKind::Root: {
+            const std::string c = (*this)(*n.children[0]);
+            if (style_ == DisplayStyle::Latex) return "\\sqrt{" + c + "}";
+            if (style_ == DisplayStyle::Plain) return "sqrt(" + c + ")";
+            return "√" + (displayPrecedence(*n.children[0]) < 3 ? "(" + c + ")" : c);
+        }
+        case DisplayKind::Fence: return paren((*this)(*n.children[0]));
+        case DisplayKind::Function: return function(n, "");
+        case DisplayKind::Matrix: return matrix(n);
+        case DisplayKind::Equation: return equation(n);
+        case DisplayKind::List: {
+            std::string items;
+            for (const DisplayPtr& c : n.children) items += (items.empty() ? "" : (plain() ? "," : ", ")) + (*this)(*c);
+            return style_ == DisplayStyle::Latex ? "\\left\\{" + items + "\\right\\}" : "{" + items + "}";
+        }
+        case DisplayKind::Raw: return style_ == DisplayStyle::Latex ? n.latex : plain() ? n.plain : n.text;
+        }
+        return {};
+    }
+
+private:
+    DisplayStyle style_;
+    bool key_;
+
+    bool plain() const { return style_ == DisplayStyle::Plain; }
+    std::string minus() const { return style_ == DisplayStyle::Text ? "−" : "-"; }
+    std::string paren(const std::string& s) const {
+        return style_ == DisplayStyle::Latex ? "\\left(" + s + "\\right)" : "(" + s + ")";
+    }
+
+    std::string symbol(const DisplayNode& n) const {
+        if (plain()) return key_ ? n.name : n.plain;
+        if (style_ == DisplayStyle::Text) return withDots(n.text, n.dots) + n.subText + n.supText;
+        std::string head = n.latex;
+        if (n.dots) head = (n.dots == 1 ? "\\dot{" : "\\ddot{") + head + "}";
+        if (!n.subLatex.empty()) head += "_{" + n.subLatex + "}";
+        if (!n.supLatex.empty()) head += "^{" + n.supLatex + "}";
+        return head;
+    }
+
+    std::string number(const DisplayNode& n) const {
+        if (plain()) return n.plain;
+        if (n.exponent.empty()) return style_ == DisplayStyle::Latex ? n.latex : n.text;
+        if (style_ == DisplayStyle::Latex) return n.latex + " \\cdot 10^{" + n.exponent + "}";
+        return n.text + "·10" + superscript(n.exponent);
+    }
+
+    std::string sum(const DisplayNode& n) const {
+        std::string s;
+        for (std::size_t i = 0; i < n.children.size(); ++i) {
+            const bool neg = n.negative[i];
+            if (i == 0)
+                s += neg ? minus() : "";
+            else
+                s += plain() ? (neg ? "-" : "+") : (neg ? " " + minus() + " " : " + ");
+            s += (*this)(*n.children[i]);
+        }
+        return s;
+    }
+
+    // * in Plain; a space (· before a digit) in Text; in LaTeX a space, \, beside
+    // functions and words, \cdot before a digit.
+    std::string product(const DisplayNode& n) const {
+        std::string s, previous;
+        for (std::size_t i = 0; i < n.children.size(); ++i) {
+            const std::string piece = (*this)(*n.children[i]);
+            if (i > 0) {
+                const bool digit = !piece.empty() && piece[0] >= '0' && piece[0] <= '9';
+                if (plain())
+                    s += "*";
+                else if (style_ == DisplayStyle::Text)
+                    s += digit ? "·" : " ";
+                else
+                    s += digit ? " \\cdot " : (isWord(*n.children[i]) || isWord(*n.children[i - 1]) ? "\\, " : " ");
+            }
+            s += piece;
+        }
+        return s;
+    }
+
+    std::string fraction(const DisplayNode& n) const {
+        const DisplayNode &num = *n.children[0], &den = *n.children[1];
+        if (style_ == DisplayStyle::Latex) {
+            // A lone sum needs no parentheses inside \frac.
+            auto side = [&](const DisplayNode& x) {
+                return x.kind == DisplayKind::Fence ? (*this)(*x.children[0]) : (*this)(x);
+            };
+            return "\\frac{" + side(num) + "}{" + side(den) + "}";
+        }
+        const std::string bottom = (*this)(den);
+        return (*this)(num) + "/" + (displayPrecedence(den) >= 2 ? bottom : "(" + bottom + ")");
+    }
+
+    std::string power(const DisplayNode& n) const {
+        const DisplayNode &base = *n.children[0], &x = *n.children[1];
+        const bool integer = isIntegerExponent(x);
+        if (!plain() && integer && base.kind == DisplayKind::Function)
+            return function(base, style_ == DisplayStyle::Text ? superscript(x.text) : "^{" + x.text + "}");
+        const std::string b = (*this)(base);
+        if (style_ == DisplayStyle::Latex)
+            return (base.kind == DisplayKind::Fence ? "{" + b + "}" : b) + "^{" + (*this)(x) + "}";
+        if (x.kind == DisplayKind::Number) {
+            if (integer) return b + (plain() ? "^" + x.text : superscript(x.text));
+            return b + "^(" + x.plain + ")";
+        }
+        const std::string e = (*this)(x);
+        return b + "^" + (displayPrecedence(x) < 3 ? "(" + e + ")" : e);
+    }
+
+    std::string function(const DisplayNode& n, const std::string& power) const {
+        std::string args;
+        for (const DisplayPtr& a : n.children) args += (args.empty() ? "" : (plain() ? "," : ", ")) + (*this)(*a);
+        if (n.plain == "abs" && !plain())
+            return (style_ == DisplayStyle::Latex ? "\\left|" + args + "\\right|" : "|" + args + "|") + power;
+        const std::string& name = style_ == DisplayStyle::Latex ? n.latex : plain() ? n.plain : n.text;
+        return name + power + "(" + args + ")";
+    }
+
+    std::string matrix(const DisplayNode& n) const {
+        const std::size_t rows = n.rows.size(), cols = rows ? n.rows[0].size() : 0;
+        std::vector<std::vector<std::string>> cell(rows, std::vector<std::string>(cols));
+        for (std::size_t i = 0; i < rows; ++i)
+            for (std::size_t j = 0; j < cols; ++j) cell[i][j] = (*this)(*n.rows[i][j]);
+        std::string s;
+        if (plain()) {
+            s = "[";
+            for (std::size_t i = 0; i < rows; ++i) {
+                s += i ? ",[" : "[";
+                for (std::size_t j = 0; j < cols; ++j) s += (j ? "," : "") + cell[i][j];
+                s += "]";
+            }
+            return s + "]";
+        }
+        if (style_ == DisplayStyle::Latex) {
+            s = "\\begin{bmatrix} ";
+            for (std::size_t i = 0; i < rows; ++i) {
+                if (i) s += " \\\\ ";
+                for (std::size_t j = 0; j < cols; ++j) s += (j ? " & " : "") + cell[i][j];
+            }
+            return s + " \\end{bmatrix}";
+        }
+        if (rows == 0) return "[ ]";
+        std::vector<std::size_t> width(cols, 0);
+        for (std::size_t i = 0; i < rows; ++i)
+            for (std::size_t j = 0; j < cols; ++j) width[j] = std::max(width[j], columns(cell[i][j]));
+        for (std::size_t i = 0; i < rows; ++i) {
+            const bool top = i == 0, bottom = i + 1 == rows;
+            s += rows == 1 ? "[ " : top ? "⎡ " : bottom ? "⎣ " : "⎢ ";
+            for (std::size_t j = 0; j < cols; ++j)
+                s += (j ? "  " : "") + cell[i][j] + std::string(width[j] - columns(cell[i][j]), ' ');
+            s += rows == 1 ? " ]" : top ? " ⎤" : bottom ? " ⎦" : " ⎥";
+            if (!bottom) s += "\n";
+        }
+        return s;
+    }
+
+    std::string equation(const DisplayNode& n) const {
+        const std::string lhs = (*this)(*n.children[0]), rhs = (*this)(*n.children[1]);
+        const std::string& op = style_ == DisplayStyle::Latex ? n.latex : plain() ? n.plain : n.text;
+        if (style_ != DisplayStyle::Text || (lhs.find('\n') == std::string::npos && rhs.find('\n') == std::string::npos))
+            return lhs + op + rhs;
+        // Blocks side by side, each centred on the middle line.
+        const std::vector<std::string> a = lines(lhs), b = lines(rhs);
+        const std::size_t h = std::max(a.size(), b.size()), mid = (h - 1) / 2;
+        std::size_t wa = 0;
+        for (const auto& l : a) wa = std::max(wa, columns(l));
+        auto at = [h](const std::vector<std::string>& block, std::size_t i) -> std::string {
+            const std::size_t top = (h - block.size()) / 2;
+            return i >= top && i - top < block.size() ? block[i - top] : std::string();
+        };
+        std::string s;
+        const std::string gap(columns(op), ' ');
+        for (std::size_t i = 0; i < h; ++i) {
+            const std::string left = at(a, i);
+            s += rtrim(left + std::string(wa - columns(left), ' ') + (i == mid ? op : gap) + at(b, i));
+            if (i + 1 < h) s += "\n";
+        }
+        return s;
+    }
+};
+
+}  // namespace
+
+int displayPrecedence(const DisplayNode& n) {
+    switch (n.kind) {
+    case DisplayKind::Sum:
+    case DisplayKind::Equation: return 0;
+    case DisplayKind::Product:
+    case DisplayKind::Fraction: return 1;
+    case DisplayKind::Power:
+        return n.children[0]->kind == DisplayKind::Function && n.children[0]->plain != "abs" &&
+                       isIntegerExponent(*n.children[1])
+                   ? 3
+                   : 2;
+    default: return 3;
+    }
+}
+
+std::string renderDisplay(const DisplayNode& node, DisplayStyle style, bool keyNames) {
+    return Renderer(style, keyNames)(node);
+}
+
+DisplayPtr displayNumber(std::string text, std::string latex, std::string plain, std::string exponent) {
+    auto n = std::make_shared<DisplayNode>();
+    n->kind = DisplayKind::Number;
+    n->text = std::move(text);
+    n->latex = std::move(latex);
+    n->plain = std::move(plain);
+    n->exponent = std::move(exponent);
+    return n;
+}
+
+DisplayPtr displayNode(DisplayKind kind, std::vector<DisplayPtr> children) {
+    auto n = std::make_shared<DisplayNode>();
+    n->kind = kind;
+    n->children = std::move(children);
+    return n;
+}
+
+DisplayPtr displayRaw(std::string text, std::string latex, std::string plain) {
+    auto n = std::make_shared<DisplayNode>();
+    n->kind = DisplayKind::Raw;
+    n->text = std::move(text);
+    n->latex = std::move(latex);
+    n->plain = std::move(plain);
+    return n;
+}
+
+DisplayPtr displayEquation(DisplayPtr lhs, DisplayPtr rhs) {
+    auto n = std::make_shared<DisplayNode>();
+    n->kind = DisplayKind::Equation;
+    n->children = {std::move(lhs), std::move(rhs)};
+    n->text = n->latex = n->plain = " = ";
+    return n;
+}
+
+void displayLeaves(const DisplayNode& node, std::vector<std::string>& out) {
+    switch (node.kind) {
+    case DisplayKind::Symbol:
+    case DisplayKind::Number:
+    case DisplayKind::Raw: out.push_back(renderDisplay(node, DisplayStyle::Text)); return;
+    case DisplayKind::Function: out.push_back(node.text); break;
+    case DisplayKind::Matrix:
+        for (const auto& row : node.rows)
+            for (const DisplayPtr& c : row) displayLeaves(*c, out);
+        return;
+    default: break;
+    }
+    for (const DisplayPtr& c : node.children) displayLeaves(*c, out);
+}
+
+}  // namespace ll::symbolic

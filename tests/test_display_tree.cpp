@@ -1,0 +1,133 @@
+// display_tree / display_builder: the Text and LaTeX renderings of every item of the
+// 2R, the SCARA and the mass–spring Lagrangian come from one tree, so reading the
+// symbols and numbers back out of each string (independently: a Unicode reader and a
+// small LaTeX reader) gives the same sequence; the textbook's factored forms.
+#include <QtTest>
+
+#include <QRegularExpression>
+
+#include "core/io/scene_file.hpp"
+#include "core/pipeline/scene_derivation.hpp"
+#include "core/symbolic/display_builder.hpp"
+#include "core/symbolic/ginac_lock.hpp"
+
+using namespace ll;
+using namespace ll::symbolic;
+
+namespace {
+
+const char* greekNames[][2] = {{"alpha", "α"}, {"beta", "β"}, {"gamma", "γ"}, {"delta", "δ"}, {"theta", "θ"},
+                               {"lambda", "λ"}, {"mu", "μ"}, {"pi", "π"}, {"rho", "ρ"}, {"sigma", "σ"},
+                               {"tau", "τ"}, {"phi", "φ"}, {"omega", "ω"}, {"ell", "ℓ"}, {"Omega", "Ω"}};
+
+// The identifiers and digits of a Text rendering, in reading order: dots as ', powers
+// as digits, every operator, bracket, space and separator dropped.
+QString textLeaves(const std::string& text) {
+    QString s = QString::fromStdString(text);
+    const QString sup = "⁰¹²³⁴⁵⁶⁷⁸⁹";
+    QString out;
+    for (QChar c : s) {
+        if (c == QChar(0x0307)) out += "'";
+        else if (c == QChar(0x0308)) out += "''";
+        else if (sup.contains(c)) out += QChar(static_cast<char16_t>('0' + sup.indexOf(c)));
+        else if (c.isLetterOrNumber()) out += c;
+    }
+    return out;
+}
+
+// The same read from LaTeX: \dot{x} → x', \theta → θ, \mathrm{kin} → kin, commands
+// of layout (\frac, \left, \cdot, \begin{bmatrix}) dropped.
+QString latexLeaves(const std::string& latex) {
+    QString s = QString::fromStdString(latex);
+    s.remove(QRegularExpression(R"(\\(begin|end)\{bmatrix\})"));
+    for (const auto& g : greekNames) s.replace(QRegularExpression(QString(R"(\\%1(?![a-zA-Z]))").arg(g[0])), g[1]);
+    // \dot{x}, \ddot{\theta} (already θ): the mark after the letter.
+    s.replace(QRegularExpression(R"(\\ddot\{([^{}]*)\})"), "\\1''");
+    s.replace(QRegularExpression(R"(\\dot\{([^{}]*)\})"), "\\1'");
+    s.replace(QRegularExpression(R"(\\(sin|cos|tan|exp|ln)(?![a-zA-Z]))"), "\\1");
+    s.remove(QRegularExpression(R"(\\[a-zA-Z]+)"));  // \frac \left \right \cdot \mathrm \sqrt
+    QString out;
+    for (QChar c : s)
+        if (c == '\'' || c.isLetterOrNumber()) out += c;
+    return out;
+}
+
+std::shared_ptr<const DisplayDocument> shown(const char* example, symbolic::ParameterMode mode) {
+    const Scene scene = loadScene(std::string(LL_EXAMPLES_DIR) + "/" + example).scene;
+    DocumentRequest request;
+    request.mode = mode;
+    request.format = DocumentFormat::Display;
+    return deriveDocument(scene, request).display;
+}
+
+}  // namespace
+
+class TestDisplayTree : public QObject {
+    Q_OBJECT
+
+private slots:
+    void textAndLatexShowTheSameLeaves_data() {
+        QTest::addColumn<QString>("example");
+        QTest::addColumn<int>("mode");
+        for (const char* e : {"planar_2r.json", "scara.json", "mass_spring_pair_lagrangian.json"})
+            for (int mode : {0, 1, 2})
+                QTest::newRow((std::string(e) + " mode " + std::to_string(mode)).c_str()) << QString(e) << mode;
+    }
+    void textAndLatexShowTheSameLeaves() {
+        QFETCH(QString, example);
+        QFETCH(int, mode);
+        const auto doc = shown(example.toStdString().c_str(), static_cast<symbolic::ParameterMode>(mode));
+        QVERIFY(doc);
+        int items = 0;
+        for (const DisplayStep& step : doc->steps)
+            for (const DisplayItem& item : step.items) {
+                const std::string text = renderDisplay(*item.value, DisplayStyle::Text);
+                const std::string latex = renderDisplay(*item.value, DisplayStyle::Latex);
+                const QString a = textLeaves(text), b = latexLeaves(latex);
+                QVERIFY2(!a.isEmpty(), item.name.c_str());
+                QVERIFY2(a == b, (item.name + "\n text:  " + text + "\n latex: " + latex + "\n " + a.toStdString() +
+                                  "\n " + b.toStdString())
+                                     .c_str());
+                ++items;
+            }
+        QVERIFY(items >= 5);
+    }
+
+    // The readers are not blind: a different symbol in LaTeX is seen.
+    void readersSeeADifference() {
+        QCOMPARE(textLeaves("m2 a1 ℓc2 s2 q̇1²"), latexLeaves("m_{2} a_{1} \\ell_{c2} s_{2} \\dot{q}_{1}^{2}"));
+        QVERIFY(textLeaves("m2 a1 ℓc2 s2 q̇1²") != latexLeaves("m_{2} a_{1} \\ell_{c2} s_{2} q_{1}^{2}"));
+        QVERIFY(textLeaves("θ̈1") == latexLeaves("\\ddot{\\theta}_{1}"));
+    }
+
+    // The 2R in the textbook's factored form (Siciliano §7.3.2).
+    void planar2RFactored() {
+        const auto doc = shown("planar_2r.json", symbolic::ParameterMode::Parametric);
+        std::string C, eq1;
+        for (const DisplayStep& step : doc->steps)
+            for (const DisplayItem& item : step.items) {
+                if (item.name == "C") C = renderDisplay(*item.value, DisplayStyle::Text);
+                if (item.name == "equation_1") eq1 = renderDisplay(*item.equation, DisplayStyle::Text);
+            }
+        QVERIFY2(C.find("−m2 a1 ℓc2 s2 (q̇1 + q̇2)") != std::string::npos, C.c_str());
+        QVERIFY2(eq1.find("− m2 a1 ℓc2 s2 (2 q̇1 q̇2 + q̇2²)") != std::string::npos, eq1.c_str());
+    }
+
+    // Plain from the display tree parses back to the same value (the whole document's
+    // `expr` comes from it).
+    void plainOfDisplayedReparses() {
+        const auto lock = lockGinac();
+        const GiNaC::symbol m2("m2"), qd1("qd1"), qd2("qd2"), s2("s2"), a1("a1");
+        const GiNaC::ex e = -m2 * a1 * s2 * (qd1 + qd2);
+        const DisplayPtr tree = buildDisplay(e, {{"q1", "q2"}, true});
+        QCOMPARE(QString::fromStdString(renderDisplay(*tree, DisplayStyle::Text)), QString("−m2 a1 s2 (q̇1 + q̇2)"));
+        GiNaC::symtab table{{"m2", m2}, {"qd1", qd1}, {"qd2", qd2}, {"a1", a1}, {"q2", GiNaC::symbol("q2")}};
+        GiNaC::parser reader(table);
+        const GiNaC::ex parsed = reader(renderDisplay(*tree, DisplayStyle::Plain));
+        const GiNaC::ex difference = (parsed - e.subs(s2 == GiNaC::sin(table["q2"]))).expand();
+        QVERIFY2(difference.is_zero(), renderDisplay(*tree, DisplayStyle::Plain).c_str());
+    }
+};
+
+QTEST_APPLESS_MAIN(TestDisplayTree)
+#include "test_display_tree.moc"

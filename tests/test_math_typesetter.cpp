@@ -1,0 +1,203 @@
+// math_typesetter and derive --format pdf|svg|png: layout metrics by TeX's rules (a
+// fraction is taller than its numerator and its parts smaller, a subscript sits lower
+// and smaller, a matrix's brackets span its rows, long sums break, wide matrices become
+// entries), and the exports: the 2R's PDF holds b11's symbols as text (pdftotext) and
+// renders non-blank (pdftoppm), SVG and PNG are non-blank, bad input exits 2 in one line.
+#include <QtTest>
+
+#include <QApplication>
+#include <QImage>
+#include <QPainter>
+#include <QProcess>
+#include <QSvgRenderer>
+#include <QTemporaryDir>
+
+#include "ui/math_typesetter.hpp"
+
+using namespace ll;
+using namespace ll::symbolic;
+using ll::ui::MathBox;
+using ll::ui::MathPiece;
+
+namespace {
+
+std::shared_ptr<DisplayNode> symbolNode(const std::string& base, const std::string& sub = {}) {
+    auto n = std::make_shared<DisplayNode>();
+    n->kind = DisplayKind::Symbol;
+    n->text = n->latex = n->plain = n->name = base;
+    n->subShown = n->subText = n->subLatex = sub;
+    return n;
+}
+
+const MathPiece* pieceWithText(const MathBox& box, const QString& text, int nth = 0) {
+    for (const MathPiece& p : box.pieces)
+        if (p.kind == MathPiece::Text && p.text == text && nth-- == 0) return &p;
+    return nullptr;
+}
+
+// Share of pixels darker than mid-grey.
+double inked(const QImage& image) {
+    qint64 dark = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) dark += qGray(image.pixel(x, y)) < 128;
+    return double(dark) / (double(image.width()) * image.height());
+}
+
+struct Run {
+    int code;
+    QString out, err;
+};
+
+Run run(const QStringList& args, const QString& program = LL_CLI) {
+    QProcess p;
+    p.start(program, args);
+    p.waitForFinished(300000);
+    return {p.exitCode(), QString::fromUtf8(p.readAllStandardOutput()), QString::fromUtf8(p.readAllStandardError())};
+}
+
+QString example(const char* name) { return QString(LL_EXAMPLES_DIR) + "/" + name; }
+
+}  // namespace
+
+class TestMathTypesetter : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase() { QVERIFY2(ui::mathFontsAvailable(), "fonts-lmodern is not installed"); }
+
+    void fractionIsTallerThanItsNumeratorAndCentredOnTheAxis() {
+        const auto a = symbolNode("a"), b = symbolNode("b");
+        const auto fraction = displayNode(DisplayKind::Fraction, {a, b});
+        const MathBox f = ui::layoutMath(*fraction), alone = ui::layoutMath(*a);
+        QVERIFY(f.height() > alone.height());
+        QVERIFY(f.ascent > alone.ascent && f.descent > alone.descent);
+        const MathPiece* numerator = pieceWithText(f, "a");
+        QVERIFY(numerator);
+        QVERIFY(numerator->size < 1.0);  // smaller than the text around it
+        QVERIFY(numerator->at.y() < 0);  // above the baseline
+        const MathPiece* rule = nullptr;
+        for (const MathPiece& p : f.pieces)
+            if (p.kind == MathPiece::Rule) rule = &p;
+        QVERIFY(rule);
+        const double axis = -(rule->at.y() + rule->height / 2);  // the rule's middle on the math axis
+        QVERIFY(std::abs(axis - 0.25 * ui::mathUnitsPerEm) < 0.5);
+    }
+
+    void subscriptSitsLowerAndSmaller() {
+        const MathBox x = ui::layoutMath(*symbolNode("m", "2"));
+        const MathPiece* base = pieceWithText(x, "m");
+        const MathPiece* sub = pieceWithText(x, "2");
+        QVERIFY(base && sub);
+        QVERIFY(sub->at.y() > base->at.y());  // lower (y grows downwards)
+        QVERIFY(sub->size < base->size);
+        QVERIFY(sub->at.x() > base->at.x());
+        QCOMPARE(base->font, 1);  // italic variable
+        QCOMPARE(sub->font, 0);   // upright digit
+        // A superscript sits higher than the baseline and smaller.
+        const auto power = displayNode(DisplayKind::Power, {symbolNode("a"), displayNumber("2", "2", "2")});
+        const MathBox p = ui::layoutMath(*power);
+        const MathPiece* two = pieceWithText(p, "2");
+        QVERIFY(two && two->at.y() < 0 && two->size < 1.0);
+    }
+
+    void matrixBracketsSpanTheRows() {
+        auto m = std::make_shared<DisplayNode>();
+        m->kind = DisplayKind::Matrix;
+        for (const char* r : {"x", "y", "z"}) m->rows.push_back({symbolNode(r)});
+        const MathBox box = ui::layoutMath(*m);
+        const MathPiece *x = pieceWithText(box, "x"), *z = pieceWithText(box, "z");
+        QVERIFY(x && z && z->at.y() > x->at.y());
+        int brackets = 0;
+        for (const MathPiece& p : box.pieces) {
+            if (p.kind != MathPiece::Bracket) continue;
+            ++brackets;
+            QVERIFY(p.at.y() < x->at.y() - 0.5 * ui::mathUnitsPerEm);  // above the first row's letters
+            QVERIFY(p.at.y() + p.height > z->at.y());                 // below the last row's baseline
+        }
+        QCOMPARE(brackets, 2);
+        QVERIFY(box.height() > 3 * ui::layoutMath(*symbolNode("x")).height());
+    }
+
+    void longSumsBreakAndWideMatricesBecomeEntries() {
+        std::vector<DisplayPtr> terms;
+        auto sum = std::make_shared<DisplayNode>();
+        sum->kind = DisplayKind::Sum;
+        for (int i = 0; i < 60; ++i) {
+            sum->children.push_back(displayNode(DisplayKind::Product, {symbolNode("m", std::to_string(i)), symbolNode("a", "1")}));
+            sum->negative.push_back(i % 3 == 0);
+        }
+        const auto equation = displayEquation(symbolNode("b", "11"), sum);
+        const double width = 30 * ui::mathUnitsPerEm;
+        const auto lines = ui::layoutItem(*equation, "b11", width);
+        QVERIFY(lines.size() > 2);
+        for (const MathBox& l : lines) QVERIFY(l.width <= width + 1);
+        auto m = std::make_shared<DisplayNode>();
+        m->kind = DisplayKind::Matrix;
+        m->rows = {{sum, sum}, {sum, sum}};
+        const auto entries = ui::layoutItem(*displayEquation(symbolNode("B"), m), "B", width);
+        QVERIFY(entries.size() > 4 * 2);  // a heading and four entries, each broken
+        QVERIFY(pieceWithText(entries[1], "b"));
+    }
+
+    void pdfOfThe2R() {
+        QTemporaryDir dir;
+        const QString pdf = dir.filePath("2r.pdf");
+        const Run r = run({"derive", example("planar_2r.json"), "--format", "pdf", "--out", pdf});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        const Run text = run({"-layout", pdf, "-"}, "pdftotext");
+        QCOMPARE(text.code, 0);
+        // b11 = I1 + m1 ℓc1² + I2 + m2 (a1² + ℓc2² + 2 a1 ℓc2 c2): its symbols are text.
+        for (const char* s : {"B(q)", "ℓ", "I", "m", "Step 7", "Kinetic energy"})
+            QVERIFY2(text.out.contains(QString::fromUtf8(s)), s);
+        const Run png = run({"-png", "-r", "40", "-f", "4", "-l", "4", pdf, dir.filePath("page")}, "pdftoppm");
+        QCOMPARE(png.code, 0);
+        const QStringList pages = QDir(dir.path()).entryList({"page*.png"});
+        QCOMPARE(pages.size(), 1);
+        const double ink = inked(QImage(dir.filePath(pages[0])));
+        QVERIFY2(ink > 0.002 && ink < 0.5, qPrintable(QString::number(ink)));
+    }
+
+    void svgAndPng() {
+        QTemporaryDir dir;
+        const QString svg = dir.filePath("b.svg"), png = dir.filePath("b.png");
+        QCOMPARE(run({"derive", example("planar_2r.json"), "--format", "svg", "--out", svg, "--steps", "7"}).code, 0);
+        QCOMPARE(run({"derive", example("planar_2r.json"), "--format", "png", "--out", png, "--steps", "7"}).code, 0);
+        QSvgRenderer renderer(svg);
+        QVERIFY(renderer.isValid());
+        QImage image(600, 420, QImage::Format_RGB32);
+        image.fill(Qt::white);
+        QPainter painter(&image);
+        renderer.render(&painter);
+        painter.end();
+        QVERIFY(inked(image) > 0.002);
+        const QImage bitmap(png);
+        QVERIFY(!bitmap.isNull());
+        QVERIFY(inked(bitmap) > 0.002);
+    }
+
+    void badInput_data() {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<QString>("names");
+        QTest::newRow("format") << QStringList{"--format", "docx", "--out", "/tmp/x.docx"} << "--format";
+        QTest::newRow("steps") << QStringList{"--format", "pdf", "--out", "/tmp/x.pdf", "--steps", "3-9"} << "--steps";
+        QTest::newRow("out") << QStringList{"--format", "pdf", "--out", "/nonexistent/dir/x.pdf"} << "--out";
+        QTest::newRow("no out") << QStringList{"--format", "png"} << "--out";
+    }
+    void badInput() {
+        QFETCH(QStringList, args);
+        QFETCH(QString, names);
+        const Run r = run(QStringList{"derive", example("planar_2r.json")} + args);
+        QCOMPARE(r.code, 2);
+        const QStringList lines = r.err.split('\n', Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), 1);
+        QVERIFY2(lines[0].startsWith("error: ") && lines[0].contains(names), qPrintable(lines[0]));
+    }
+};
+
+int main(int argc, char** argv) {
+    if (qEnvironmentVariableIsEmpty("DISPLAY")) qputenv("QT_QPA_PLATFORM", "offscreen");
+    QApplication app(argc, argv);
+    TestMathTypesetter test;
+    return QTest::qExec(&test, argc, argv);
+}
+#include "test_math_typesetter.moc"

@@ -1,0 +1,197 @@
+#include "ui/derivation_pages.hpp"
+
+#include <QBuffer>
+#include <QFileInfo>
+#include <QImage>
+#include <QPainter>
+#include <QPdfWriter>
+#include <QSvgGenerator>
+#include <algorithm>
+
+#include "core/io/atomic_file.hpp"
+
+namespace ll::ui {
+namespace {
+
+// Prose broken into lines of at most maxWidth units at spaces.
+std::vector<MathBox> wrapped(const QString& text, double size, double maxWidth, bool bold = false) {
+    std::vector<MathBox> lines;
+    QString line;
+    for (const QString& w : text.split(' ', Qt::SkipEmptyParts)) {
+        const QString candidate = line.isEmpty() ? w : line + ' ' + w;
+        if (!line.isEmpty() && layoutText(candidate, size, bold).width > maxWidth) {
+            lines.push_back(layoutText(line, size, bold));
+            line = w;
+        } else {
+            line = candidate;
+        }
+    }
+    if (!line.isEmpty()) lines.push_back(layoutText(line, size, bold));
+    return lines;
+}
+
+class Composer {
+public:
+    explicit Composer(DerivationPages& pages) : p_(pages) {
+        const double u = pages.unitsPerPt();
+        width_ = (pages.format.widthPt - 2 * pages.format.marginPt) * u;
+        bottom_ = (pages.format.heightPt - pages.format.marginPt) * u;
+        left_ = top_ = pages.format.marginPt * u;
+        newPage();
+    }
+    double width() const { return width_; }
+
+    // A block of lines kept together on one page when it fits one.
+    void block(const std::vector<MathBox>& lines, double indent, double spaceBefore, double lineGap) {
+        double height = 0;
+        for (const MathBox& l : lines) height += l.height() + lineGap;
+        y_ += spaceBefore;
+        if (y_ + height > bottom_ && y_ > top_ + spaceBefore && height <= bottom_ - top_) newPage();
+        for (const MathBox& l : lines) {
+            if (y_ + l.height() > bottom_ && y_ > top_) newPage();
+            y_ += l.ascent;
+            p_.pages.back().push_back({l, QPointF(left_ + indent, y_)});
+            y_ += l.descent + lineGap;
+        }
+    }
+
+private:
+    DerivationPages& p_;
+    double width_ = 0, bottom_ = 0, left_ = 0, top_ = 0, y_ = 0;
+    void newPage() {
+        p_.pages.emplace_back();
+        y_ = top_;
+    }
+};
+
+}  // namespace
+
+DerivationPages paginate(const symbolic::DisplayDocument& document, const PageFormat& format) {
+    DerivationPages pages;
+    pages.format = format;
+    Composer c(pages);
+    const double em = mathUnitsPerEm;
+    c.block(wrapped(QString::fromStdString("Euler–Lagrange model: " + document.systemName), 1.5, c.width(), true), 0, 0, 0.3 * em);
+    c.block(wrapped("Shorthand: c_i = cos q_i, s_i = sin q_i, c12 = cos(q1 + q2); q̇, q̈ the joint velocities and "
+                    "accelerations.",
+                    0.85, c.width()),
+            0, 0.4 * em, 0.2 * em);
+    for (const symbolic::DisplayStep& step : document.steps) {
+        std::vector<MathBox> head = wrapped(QString("Step %1. %2").arg(step.number).arg(QString::fromStdString(step.title)),
+                                            1.2, c.width(), true);
+        for (const MathBox& l : wrapped(QString::fromStdString(step.formulaText), 0.85, c.width() - em)) {
+            MathBox indented;
+            indented.width = em;
+            indented.ascent = l.ascent;
+            indented.descent = l.descent;
+            for (MathPiece piece : l.pieces) {
+                piece.at += QPointF(em, 0);
+                indented.pieces.push_back(piece);
+            }
+            indented.width += l.width;
+            head.push_back(indented);
+        }
+        c.block(head, 0, 1.4 * em, 0.3 * em);
+        for (const symbolic::DisplayItem& item : step.items)
+            c.block(layoutItem(*item.equation, item.name, c.width() - em), em, 0.7 * em, 0.45 * em);
+    }
+    c.block(wrapped(QString::fromStdString("Actuation: " + document.actuation), 0.9, c.width()), 0, 1.2 * em, 0.2 * em);
+    return pages;
+}
+
+void paintPage(QPainter& painter, const DerivationPages& pages, int index, double devicePerPt) {
+    const double scale = devicePerPt / pages.unitsPerPt();
+    painter.setPen(Qt::black);
+    for (const PlacedBox& b : pages.pages.at(static_cast<std::size_t>(index))) paintMath(painter, b.box, b.origin * scale, scale);
+}
+
+namespace {
+
+bool save(const QString& path, const QByteArray& bytes, std::string& error) {
+    try {
+        saveFileAtomically(path.toStdString(), bytes.toStdString(), Backup::None);
+        return true;
+    } catch (const std::exception& e) {
+        error = e.what();
+        return false;
+    }
+}
+
+QString pagePath(const QString& path, int page) {
+    if (page == 0) return path;
+    const QFileInfo info(path);
+    const QString suffix = info.suffix().isEmpty() ? QString() : "." + info.suffix();
+    return info.path() + "/" + info.completeBaseName() + QString("-%1").arg(page + 1) + suffix;
+}
+
+}  // namespace
+
+bool writePdf(const DerivationPages& pages, const QString& path, std::string& error) {
+    QByteArray bytes;
+    QBuffer buffer(&bytes);
+    buffer.open(QIODevice::WriteOnly);
+    {
+        QPdfWriter pdf(&buffer);
+        constexpr int dpi = 720;  // 10 device units per point: fine positions for text
+        pdf.setResolution(dpi);
+        pdf.setPageSize(QPageSize(QSizeF(pages.format.widthPt, pages.format.heightPt), QPageSize::Point));
+        pdf.setPageMargins(QMarginsF(0, 0, 0, 0));
+        pdf.setTitle("Euler–Lagrange derivation");
+        pdf.setCreator("LagrangeLab");
+        QPainter painter(&pdf);
+        for (std::size_t i = 0; i < pages.pages.size(); ++i) {
+            if (i) pdf.newPage();
+            paintPage(painter, pages, static_cast<int>(i), dpi / 72.0);
+        }
+    }
+    return save(path, bytes, error);
+}
+
+bool writeSvg(const DerivationPages& pages, const QString& path, std::string& error, std::vector<QString>* written) {
+    for (std::size_t i = 0; i < pages.pages.size(); ++i) {
+        QByteArray bytes;
+        QBuffer buffer(&bytes);
+        buffer.open(QIODevice::WriteOnly);
+        {
+            QSvgGenerator svg;
+            svg.setOutputDevice(&buffer);
+            const QSize size(static_cast<int>(pages.format.widthPt), static_cast<int>(pages.format.heightPt));
+            svg.setSize(size);
+            svg.setViewBox(QRect(QPoint(0, 0), size));
+            svg.setResolution(72);
+            svg.setTitle("Euler–Lagrange derivation");
+            QPainter painter(&svg);
+            painter.fillRect(QRect(QPoint(0, 0), size), Qt::white);
+            paintPage(painter, pages, static_cast<int>(i), 1.0);
+        }
+        const QString file = pagePath(path, static_cast<int>(i));
+        if (!save(file, bytes, error)) return false;
+        if (written) written->push_back(file);
+    }
+    return true;
+}
+
+bool writePng(const DerivationPages& pages, const QString& path, std::string& error, std::vector<QString>* written, double dpi) {
+    const double perPt = dpi / 72.0;
+    for (std::size_t i = 0; i < pages.pages.size(); ++i) {
+        QImage image(QSize(static_cast<int>(pages.format.widthPt * perPt), static_cast<int>(pages.format.heightPt * perPt)),
+                     QImage::Format_RGB32);
+        image.fill(Qt::white);
+        {
+            QPainter painter(&image);
+            painter.setRenderHint(QPainter::Antialiasing);
+            painter.setRenderHint(QPainter::TextAntialiasing);
+            paintPage(painter, pages, static_cast<int>(i), perPt);
+        }
+        QByteArray bytes;
+        QBuffer buffer(&bytes);
+        buffer.open(QIODevice::WriteOnly);
+        image.save(&buffer, "PNG");
+        const QString file = pagePath(path, static_cast<int>(i));
+        if (!save(file, bytes, error)) return false;
+        if (written) written->push_back(file);
+    }
+    return true;
+}
+
+}  // namespace ll::ui

@@ -1,0 +1,47 @@
+#pragma once
+// A derivation typeset on pages (ui/math_typesetter): the title, each step's heading and
+// general formula, and this system's results, one item after another; a page breaks
+// between items, never through one (only an item taller than a page is split, between
+// its lines). The same pages are written as PDF (QPdfWriter: text stays text), SVG
+// (QSvgGenerator) and PNG, headless (Qt's offscreen platform is enough).
+#include <QString>
+#include <string>
+#include <vector>
+
+#include "core/symbolic/derivation_document.hpp"
+#include "ui/math_typesetter.hpp"
+
+class QPainter;
+
+namespace ll::ui {
+
+struct PageFormat {
+    double widthPt = 842, heightPt = 595;  // A4 landscape: long entries need the width
+    double marginPt = 42;
+    double fontPt = 11;                    // the em of the formulas
+};
+
+struct PlacedBox {
+    MathBox box;
+    QPointF origin;  // baseline start, in layout units from the page's top-left corner
+};
+
+struct DerivationPages {
+    PageFormat format;
+    std::vector<std::vector<PlacedBox>> pages;
+    double unitsPerPt() const { return mathUnitsPerEm / format.fontPt; }
+};
+
+DerivationPages paginate(const symbolic::DisplayDocument& document, const PageFormat& format = {});
+
+// Page `index` onto a painter whose device has `devicePerPt` device units per point.
+void paintPage(QPainter& painter, const DerivationPages& pages, int index, double devicePerPt);
+
+// Writes the file; false with a one-line reason in `error`. SVG and PNG write page 1 to
+// `path` and page k to path's stem + "-k" + extension; `written` lists the files.
+bool writePdf(const DerivationPages& pages, const QString& path, std::string& error);
+bool writeSvg(const DerivationPages& pages, const QString& path, std::string& error, std::vector<QString>* written = nullptr);
+bool writePng(const DerivationPages& pages, const QString& path, std::string& error, std::vector<QString>* written = nullptr,
+              double dpi = 150);
+
+}  // namespace ll::ui

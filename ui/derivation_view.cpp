@@ -1,0 +1,272 @@
+#include "ui/derivation_view.hpp"
+
+#include <QApplication>
+#include <QClipboard>
+#include <QContextMenuEvent>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QListWidget>
+#include <QMenu>
+#include <QMouseEvent>
+#include <QPainter>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QVBoxLayout>
+#include <algorithm>
+
+#include "core/model/cancellation.hpp"
+#include "core/pipeline/scene_derivation.hpp"
+#include "ui/math_typesetter.hpp"
+
+namespace ll::ui {
+
+// The shown step: its general formula and items, each with a header that collapses it.
+// Lines are typeset on first paint and kept until the zoom or the width changes.
+class DerivationCanvas : public QWidget {
+public:
+    explicit DerivationCanvas(QWidget* parent) : QWidget(parent) {
+        setBackgroundRole(QPalette::Base);
+        setAutoFillBackground(true);
+    }
+
+    void show(const symbolic::DisplayStep* step, double zoom) {
+        step_ = step;
+        zoom_ = zoom;
+        entries_.clear();
+        if (step_)
+            for (std::size_t i = 0; i < step_->items.size(); ++i) entries_.push_back({});
+        relayout();
+    }
+
+    void setZoom(double zoom) {
+        zoom_ = zoom;
+        for (Entry& e : entries_) e.lines.clear();
+        relayout();
+    }
+
+    void relayout() {
+        for (Entry& e : entries_) e.lines.clear();
+        setMinimumHeight(static_cast<int>(contentHeight()));
+        update();
+    }
+
+    QString latex(int index) const {
+        if (!step_ || index < 0 || index >= static_cast<int>(step_->items.size())) return {};
+        return QString::fromStdString(renderDisplay(*step_->items[static_cast<std::size_t>(index)].equation,
+                                                    symbolic::DisplayStyle::Latex));
+    }
+
+protected:
+    void resizeEvent(QResizeEvent*) override {
+        if (std::abs(width() - laidOutWidth_) > 1) relayout();
+    }
+
+    void paintEvent(QPaintEvent* event) override {
+        QPainter p(this);
+        p.setRenderHint(QPainter::Antialiasing);
+        p.setPen(palette().color(QPalette::Text));
+        if (!step_) return;
+        const double s = scale();
+        double y = margin;
+        QFont headerFont = font();
+        const QFontMetricsF fm(headerFont);
+        p.drawText(QPointF(margin, y + fm.ascent()), tr("Step %1. %2").arg(step_->number).arg(QString::fromStdString(step_->title)));
+        y += fm.height() * 1.2;
+        p.setPen(palette().color(QPalette::PlaceholderText));
+        p.drawText(QRectF(margin, y, width() - 2 * margin, fm.height() * 3), Qt::TextWordWrap,
+                   QString::fromStdString(step_->formulaText));
+        y += fm.boundingRect(QRectF(0, 0, width() - 2 * margin, 1e6), Qt::TextWordWrap,
+                             QString::fromStdString(step_->formulaText)).height() + fm.height() * 0.5;
+        for (std::size_t i = 0; i < entries_.size(); ++i) {
+            Entry& e = entries_[i];
+            const symbolic::DisplayItem& item = step_->items[i];
+            e.headerTop = y;
+            p.setPen(palette().color(QPalette::Link));
+            p.drawText(QPointF(margin, y + fm.ascent()),
+                       (e.collapsed ? QString::fromUtf8("▸ ") : QString::fromUtf8("▾ ")) + QString::fromStdString(item.name));
+            y += fm.height() * 1.1;
+            if (e.collapsed) continue;
+            ensureLines(e, item);
+            p.setPen(palette().color(QPalette::Text));
+            for (const MathBox& line : e.lines) {
+                const double top = y, bottom = y + line.height() * s;
+                if (bottom >= event->rect().top() && top <= event->rect().bottom())  // paint only what is exposed
+                    paintMath(p, line, QPointF(margin + indent, y + line.ascent * s), s);
+                y = bottom + 0.35 * mathUnitsPerEm * s;
+            }
+            y += 0.4 * mathUnitsPerEm * s;
+        }
+        if (std::abs(y + margin - minimumHeight()) > 1) setMinimumHeight(static_cast<int>(y + margin));
+    }
+
+    void mousePressEvent(QMouseEvent* event) override {
+        const int index = headerAt(event->position().y());
+        if (index >= 0 && event->button() == Qt::LeftButton) {
+            entries_[static_cast<std::size_t>(index)].collapsed = !entries_[static_cast<std::size_t>(index)].collapsed;
+            update();
+        }
+    }
+
+    void contextMenuEvent(QContextMenuEvent* event) override {
+        const int index = itemAt(event->pos().y());
+        if (index < 0) return;
+        QMenu menu(this);
+        menu.addAction(tr("Copy %1 as LaTeX").arg(QString::fromStdString(step_->items[static_cast<std::size_t>(index)].name)),
+                       [this, index] { QApplication::clipboard()->setText(latex(index)); });
+        menu.exec(event->globalPos());
+    }
+
+private:
+    struct Entry {
+        bool collapsed = false;
+        std::vector<MathBox> lines;
+        double headerTop = 0;
+    };
+    static constexpr double margin = 12, indent = 18;
+    const symbolic::DisplayStep* step_ = nullptr;
+    std::vector<Entry> entries_;
+    double zoom_ = 1.0;
+    int laidOutWidth_ = 0;
+
+    double scale() const { return 15.0 * zoom_ / mathUnitsPerEm; }  // device px per layout unit
+
+    void ensureLines(Entry& e, const symbolic::DisplayItem& item) {
+        if (!e.lines.empty()) return;
+        laidOutWidth_ = width();
+        const double available = std::max(200.0, (width() - 2 * margin - indent) / scale());
+        e.lines = layoutItem(*item.equation, item.name, available);
+    }
+
+    double contentHeight() const { return 400; }  // grows on the first paint
+
+    int headerAt(double y) const {
+        const double h = QFontMetricsF(font()).height() * 1.1;
+        for (std::size_t i = 0; i < entries_.size(); ++i)
+            if (y >= entries_[i].headerTop && y < entries_[i].headerTop + h) return static_cast<int>(i);
+        return -1;
+    }
+    int itemAt(double y) const {
+        int found = -1;
+        for (std::size_t i = 0; i < entries_.size(); ++i)
+            if (y >= entries_[i].headerTop) found = static_cast<int>(i);
+        return found;
+    }
+};
+
+DerivationView::DerivationView(QWidget* parent) : QWidget(parent) {
+    auto* layout = new QHBoxLayout(this);
+    auto* left = new QVBoxLayout;
+    steps_ = new QListWidget(this);
+    const char* titles[] = {QT_TR_NOOP("DH parameters"),       QT_TR_NOOP("Kinematic model"),
+                            QT_TR_NOOP("Centres of mass"),     QT_TR_NOOP("Angular velocities"),
+                            QT_TR_NOOP("Velocities of the centres of mass"), QT_TR_NOOP("Link inertia tensors"),
+                            QT_TR_NOOP("Potential energy"),    QT_TR_NOOP("Kinetic energy, mass matrix"),
+                            QT_TR_NOOP("Equations of motion")};
+    for (int i = 0; i <= 8; ++i) steps_->addItem(tr("Step %1: %2").arg(i).arg(tr(titles[i])));
+    steps_->setMaximumWidth(260);
+    left->addWidget(steps_);
+    auto* buttons = new QHBoxLayout;
+    previous_ = new QPushButton(tr("Previous"), this);
+    next_ = new QPushButton(tr("Next"), this);
+    buttons->addWidget(previous_);
+    buttons->addWidget(next_);
+    left->addLayout(buttons);
+    status_ = new QLabel(tr("No scene"), this);
+    status_->setWordWrap(true);
+    left->addWidget(status_);
+    layout->addLayout(left);
+    scroll_ = new QScrollArea(this);
+    scroll_->setWidgetResizable(true);
+    canvas_ = new DerivationCanvas(scroll_);
+    scroll_->setWidget(canvas_);
+    layout->addWidget(scroll_, 1);
+    connect(steps_, &QListWidget::currentRowChanged, this, [this](int row) {
+        if (row >= 0) showStep(row);
+    });
+    connect(previous_, &QPushButton::clicked, this, &DerivationView::previousStep);
+    connect(next_, &QPushButton::clicked, this, &DerivationView::nextStep);
+    steps_->setCurrentRow(0);
+}
+
+DerivationView::~DerivationView() { reapJobs(true); }
+
+void DerivationView::reapJobs(bool all) {
+    for (auto& job : jobs_)
+        if (all) job->cancel = true;
+    std::erase_if(jobs_, [all](std::unique_ptr<Job>& job) {
+        if (!all && !job->done) return false;
+        if (job->thread.joinable()) job->thread.join();
+        return true;
+    });
+}
+
+void DerivationView::setScene(const ll::Scene& scene) {
+    reapJobs(false);
+    for (auto& job : jobs_) job->cancel = true;  // the newest call wins
+    const int generation = ++generation_;
+    deriving_ = true;
+    status_->setText(tr("Deriving…"));
+    auto job = std::make_unique<Job>();
+    Job* raw = job.get();
+    job->thread = std::thread([this, raw, generation, scene] {
+        std::shared_ptr<const symbolic::DisplayDocument> document;
+        QString error;
+        try {
+            DocumentRequest request;
+            request.format = symbolic::DocumentFormat::Display;
+            request.cancel = &raw->cancel;
+            document = deriveDocument(scene, request).display;
+        } catch (const Cancelled&) {
+            raw->done = true;
+            return;
+        } catch (const std::exception& e) {
+            error = QString::fromStdString(e.what());
+        }
+        if (!raw->cancel)  // the widget joins every job before it dies, so `this` is alive
+            QMetaObject::invokeMethod(
+                this, [this, generation, document, error] { accept(generation, document, error); }, Qt::QueuedConnection);
+        raw->done = true;
+    });
+    jobs_.push_back(std::move(job));
+}
+
+void DerivationView::accept(int generation, std::shared_ptr<const symbolic::DisplayDocument> document, QString error) {
+    if (generation != generation_) return;  // stale
+    deriving_ = false;
+    error_ = error;
+    if (document) document_ = std::move(document);
+    status_->setText(error.isEmpty() && document_ ? QString::fromStdString(document_->systemName) : tr("Error: %1").arg(error));
+    refresh();
+    emit derivationFinished();
+}
+
+void DerivationView::refresh() {
+    const symbolic::DisplayStep* shown = nullptr;
+    if (document_)
+        for (const symbolic::DisplayStep& s : document_->steps)
+            if (s.number == step_) shown = &s;
+    canvas_->show(shown, zoom_);
+    previous_->setEnabled(step_ > 0);
+    next_->setEnabled(step_ < 8);
+}
+
+void DerivationView::showStep(int step) {
+    step = std::clamp(step, 0, 8);
+    const bool changed = step != step_;
+    step_ = step;
+    if (steps_->currentRow() != step) steps_->setCurrentRow(step);
+    refresh();
+    if (changed) emit stepChanged(step);
+}
+
+void DerivationView::nextStep() { showStep(step_ + 1); }
+void DerivationView::previousStep() { showStep(step_ - 1); }
+
+void DerivationView::setZoom(double zoom) {
+    zoom_ = std::clamp(zoom, 0.25, 8.0);
+    canvas_->setZoom(zoom_);
+}
+
+QString DerivationView::itemLatex(int index) const { return canvas_->latex(index); }
+
+}  // namespace ll::ui

@@ -1,0 +1,80 @@
+#pragma once
+// The derivation, step by step, typeset (ui/math_typesetter) for the desktop window:
+// steps 0–8 listed, Previous/Next, the step's general formula and this system's results,
+// each item collapsible, zoom, "Copy as LaTeX" on any item (context menu).
+//
+// setScene takes a copy and re-derives in a worker thread with the core's cancel token:
+// the newest call wins, stale work is cancelled, and the result (plain display trees, no
+// GiNaC) comes back through a queued call, so the window never waits on a large robot.
+// Only the shown step is typeset, lazily and cached per zoom and width.
+#include <QWidget>
+#include <atomic>
+#include <memory>
+#include <thread>
+#include <vector>
+
+#include "core/model/scene.hpp"
+#include "core/symbolic/derivation_document.hpp"
+
+class QListWidget;
+class QPushButton;
+class QLabel;
+class QScrollArea;
+
+namespace ll::ui {
+
+class DerivationCanvas;
+
+class DerivationView : public QWidget {
+    Q_OBJECT
+
+public:
+    explicit DerivationView(QWidget* parent = nullptr);
+    ~DerivationView() override;
+
+    void setScene(const ll::Scene& scene);
+    void showStep(int step);  // 0..8; a step the scene has no items for shows empty
+    int step() const { return step_; }
+    void setZoom(double zoom);  // 1 = 15 px per em; clamped to 0.25..8
+    double zoom() const { return zoom_; }
+
+    bool isDeriving() const { return deriving_; }
+    QString errorText() const { return error_; }  // the last derivation's error, if any
+    // The shown document (null before the first derivation finishes).
+    std::shared_ptr<const symbolic::DisplayDocument> document() const { return document_; }
+    // The LaTeX of item `index` of the shown step ("b_{11} = …"): what Copy as LaTeX copies.
+    QString itemLatex(int index) const;
+
+public slots:
+    void nextStep();
+    void previousStep();
+
+signals:
+    void stepChanged(int step);
+    void derivationFinished();  // a new document (or error) is shown
+
+private:
+    struct Job {
+        std::atomic<bool> cancel{false};
+        std::atomic<bool> done{false};
+        std::thread thread;
+    };
+    void accept(int generation, std::shared_ptr<const symbolic::DisplayDocument> document, QString error);
+    void refresh();
+    void reapJobs(bool all);
+
+    QListWidget* steps_ = nullptr;
+    QPushButton *previous_ = nullptr, *next_ = nullptr;
+    QLabel* status_ = nullptr;
+    QScrollArea* scroll_ = nullptr;
+    DerivationCanvas* canvas_ = nullptr;
+    std::shared_ptr<const symbolic::DisplayDocument> document_;
+    std::vector<std::unique_ptr<Job>> jobs_;
+    int generation_ = 0;
+    int step_ = 0;
+    double zoom_ = 1.0;
+    bool deriving_ = false;
+    QString error_;
+};
+
+}  // namespace ll::ui

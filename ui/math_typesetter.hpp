@@ -1,0 +1,73 @@
+#pragma once
+// A native math typesetter over the display tree (core/symbolic/display_tree.hpp): boxes
+// with width, ascent and descent laid out by TeX's rules for math, in Latin Modern
+// (fonts-lmodern: Latin Modern Roman for letters and digits, Latin Modern Math for
+// Greek, operators and brackets), painted with QPainter on any device — a widget, an
+// SVG (QSvgGenerator), a PDF (QPdfWriter, text stays text), a QImage.
+//
+// Units: layout is in em/40 ("units", 40 per em at size 1); paint scales them. Rules,
+// with Latin Modern Math's constants (per 1000 em): math axis 250; fraction rule 40,
+// numerator and denominator one size smaller (×0.75), centred on the axis with gaps of
+// the rule's thickness; superscripts up 363, subscripts down 247, both at ×0.7 (×0.5
+// in scripts of scripts); dots as accents over the letter; matrices with columns
+// centred 1 em apart, rows 0.5 em apart, brackets drawn to the content's height;
+// upright numbers and function names, italic variables; TeX's spacing: thick space
+// around relations (5/18 em), medium around + and − (4/18 em), thin space beside
+// function names and words (3/18 em), none in scripts.
+#include <QFont>
+#include <QPointF>
+#include <QString>
+#include <memory>
+#include <vector>
+
+#include "core/symbolic/display_tree.hpp"
+
+class QPainter;
+
+namespace ll::ui {
+
+// One thing to draw, relative to the box's origin on its baseline (y grows downwards).
+struct MathPiece {
+    enum Kind { Text, Rule, Bracket } kind = Text;
+    QPointF at;        // Text: baseline start; Rule: top-left; Bracket: top-left
+    QString text;      // Text
+    int font = 0;      // Text: 0 roman, 1 italic, 2 math (Greek, operators)
+    double size = 1;   // Text: relative size (1 normal, 0.7 script)
+    double width = 0, height = 0;  // Rule, Bracket
+    char bracket = '[';            // Bracket: [ ] ( ) |
+};
+
+struct MathBox {
+    double width = 0, ascent = 0, descent = 0;  // units
+    std::vector<MathPiece> pieces;
+    double height() const { return ascent + descent; }
+};
+
+constexpr double mathUnitsPerEm = 40.0;
+
+// node with every sum longer than maxTerms cut to its first terms and "⋯ (N more terms)".
+symbolic::DisplayPtr elided(const symbolic::DisplayPtr& node, std::size_t maxTerms);
+
+// The box of a node at relative size `size` (1 normal, 0.7 script, 0.5 scriptscript).
+MathBox layoutMath(const symbolic::DisplayNode& node, double size = 1.0);
+
+// An item "name = value" set to at most maxWidth units: a sum too wide breaks before
+// its top-level + and − (continuation lines indented past "name = "), and a matrix too
+// wide becomes its named entries listed under it (b11 = …, each breaking the same way).
+// A sum of more than maxTypesetTerms terms shows its first two thirds of that and
+// "⋯ (N more terms)": the text and JSON formats keep every term. Returns the lines.
+inline constexpr std::size_t maxTypesetTerms = 90;
+std::vector<MathBox> layoutItem(const symbolic::DisplayNode& equation, const std::string& name, double maxWidth);
+
+// A line of prose (a step's title or general formula) in the roman or bold font.
+MathBox layoutText(const QString& text, double size = 1.0, bool bold = false);
+
+// Draws box with its origin (baseline start) at `origin`, in units scaled by `scale`
+// device units per layout unit.
+void paintMath(QPainter& painter, const MathBox& box, QPointF origin, double scale);
+
+// The three fonts (roman, italic, math) at a size in units; loads fonts-lmodern's files
+// into Qt's font database on first use. False when the font files are missing.
+bool mathFontsAvailable();
+
+}  // namespace ll::ui
