@@ -184,9 +184,10 @@ int benchCancel(const std::vector<std::string>& scenes) {
 }  // namespace
 
 int benchCommand(const Args& args) {
-    const Options options(args, {"batches"}, {"rhs", "derive", "cancel", "render"});
+    const Options options(args, {"batches"}, {"rhs", "derive", "cancel", "render", "gui"});
     const int batches = static_cast<int>(options.number("batches", 21));
     std::vector<std::string> scenes = options.positional();
+    if (options.has("gui")) return benchGui(scenes, static_cast<int>(options.number("batches", 9)));
     if (options.has("render")) return benchRender(scenes, static_cast<int>(options.number("batches", 3)));
     if (options.has("derive")) {
         if (scenes.empty())
