@@ -102,7 +102,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     updateTitle();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+    // The views and models read the document: they go before it (members die before
+    // QWidget's destructor deletes the children).
+    autosave_.stop();
+    qDeleteAll(findChildren<QWidget*>(QString(), Qt::FindDirectChildrenOnly));
+    qDeleteAll(findChildren<QAbstractItemModel*>(QString(), Qt::FindDirectChildrenOnly));
+}
 
 // ---------------------------------------------------------------- building
 
