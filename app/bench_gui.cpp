@@ -12,7 +12,10 @@
 #include <string>
 #include <vector>
 
+#include <sys/resource.h>
+
 #include <QApplication>
+#include <QFile>
 #include <QElapsedTimer>
 #include <QProcess>
 #include <QRegularExpression>
@@ -37,6 +40,15 @@ double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
     return v.empty() ? 0.0 : v[v.size() / 2];
 }
+
+// CPU seconds used by this process so far (every thread, llvmpipe's included).
+double processCpu() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return usage.ru_utime.tv_sec + usage.ru_stime.tv_sec + 1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
+
+double ms(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); }
 
 // The first joint row with a non-zero numeric `a` (else d) to nudge.
 std::pair<int, int> editableCell(const ui::SceneDocument& doc) {
@@ -65,28 +77,41 @@ void latency(const std::string& path, int runs) {
     const QString original = model.data(cell, Qt::EditRole).toString();
     double value = original.toDouble();
     if (value == 0) value = 0.5;
-    std::vector<double> view, derive;
+    std::vector<double> view, derive, validate, worker, shownAt, cpu;
     for (int k = 0; k < runs; ++k) {
         const long frames = window.sceneView().framesDrawn();
         int shown = -1;
-        auto connection = QObject::connect(&window, &ui::MainWindow::resultShown, [&](int request) { shown = request; });
+        Clock::time_point shownTime;
+        auto connection = QObject::connect(&window, &ui::MainWindow::resultShown, [&](int request) {
+            shown = request;
+            shownTime = Clock::now();
+        });
+        const double cpu0 = processCpu();
         const auto t0 = Clock::now();
         model.setData(cell, QString::number(value * (k % 2 ? 1.0 : 1.02), 'g', 12), Qt::EditRole);
+        waitFor([&] { return !window.document().validating(); }, 30);
+        const auto tValid = Clock::now();
         const int request = window.liveSimulation().latestRequest();
         bool drawn = waitFor([&] { return shown >= request && window.sceneView().framesDrawn() > frames; }, 30);
         const auto t1 = Clock::now();
+        const double cpu1 = processCpu();
         waitFor([&] { return !window.derivationPanel().busy(); }, 60);
         const auto t2 = Clock::now();
         QObject::disconnect(connection);
         if (!drawn) continue;
-        view.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
-        derive.push_back(std::chrono::duration<double, std::milli>(t2 - t0).count());
+        view.push_back(ms(t0, t1));
+        derive.push_back(ms(t0, t2));
+        validate.push_back(ms(t0, tValid));
+        worker.push_back(window.result()->workerSeconds * 1000);
+        shownAt.push_back(ms(t0, shownTime));
+        cpu.push_back((cpu1 - cpu0) * 1000);
     }
-    std::printf("edit-to-updated-view latency, %s (joint %d %s): %.1f ms median of %zu (min %.1f, max %.1f); "
-                "derivation shown after %.1f ms\n",
+    std::printf("edit-to-updated-view latency, %s (joint %d %s): %.1f ms median of %zu (min %.1f, max %.1f): "
+                "validation %.1f ms, worker (simulate + scene) %.1f ms, result on screen at %.1f ms, then the frame; "
+                "process CPU %.1f ms; derivation shown after %.1f ms\n",
                 path.c_str(), row + 1, column == ui::JointTableModel::A ? "a" : "d", median(view), view.size(),
                 view.empty() ? 0 : *std::min_element(view.begin(), view.end()), view.empty() ? 0 : *std::max_element(view.begin(), view.end()),
-                median(derive));
+                median(validate), median(worker), median(shownAt), median(cpu), median(derive));
 }
 
 void frameRate(const std::string& path, int runs) {
@@ -101,9 +126,10 @@ void frameRate(const std::string& path, int runs) {
     view.setVisualScene(visual, true);
     waitFor([&] { return view.framesDrawn() > 2; }, 10);
     Eigen::VectorXd q(sampler.dof()), qd(sampler.dof());
-    std::vector<double> fps;
+    std::vector<double> fps, cpuPerFrame;
     for (int r = 0; r < runs; ++r) {
         const long before = view.framesDrawn();
+        const double cpu0 = processCpu();
         QElapsedTimer clock;
         clock.start();
         double t = 0;
@@ -115,10 +141,11 @@ void frameRate(const std::string& path, int runs) {
             waitFor([&] { return view.framesDrawn() > frames; }, 5);
         }
         fps.push_back((view.framesDrawn() - before) / (clock.elapsed() / 1000.0));
+        cpuPerFrame.push_back((processCpu() - cpu0) * 1000 / std::max(1L, view.framesDrawn() - before));
     }
-    std::printf("animation, %s in a %dx%d view (%s): %.1f frames/s median of %d runs of 2 s\n", path.c_str(),
+    std::printf("animation, %s in a %dx%d view (%s): %.1f frames/s median of %d runs of 2 s, %.1f ms process CPU per frame\n", path.c_str(),
                 static_cast<int>(view.width() * view.devicePixelRatioF()), static_cast<int>(view.height() * view.devicePixelRatioF()),
-                "software GL, Mesa llvmpipe under the current display", median(fps), runs);
+                "software GL, Mesa llvmpipe under the current display", median(fps), runs, median(cpuPerFrame));
 }
 
 void firstFrame(int runs) {
@@ -153,6 +180,9 @@ int benchGui(const std::vector<std::string>& scenes, int runs) {
     static char name[] = "lagrangelab";
     static char* argv[] = {name, nullptr};
     QApplication app(argc, argv);
+    // Wall times depend on what else the machine runs: say how loaded it was.
+    QFile loadavg("/proc/loadavg");
+    if (loadavg.open(QIODevice::ReadOnly)) std::printf("load average at start: %s", loadavg.readLine().constData());
     const std::string examples = LL_EXAMPLES_DIR;
     std::vector<std::string> latencyScenes = scenes;
     if (latencyScenes.empty()) latencyScenes = {examples + "/planar_2r.json", examples + "/puma560.json"};

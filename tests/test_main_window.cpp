@@ -38,6 +38,17 @@ bool settled(MainWindow& w, int seconds = 60) {
     return false;
 }
 
+// Waits until the newest edit has been checked (diagnostics and valid scene up to date).
+bool checked(MainWindow& w) {
+    QElapsedTimer clock;
+    clock.start();
+    while (w.document().validating()) {
+        if (clock.elapsed() > 30000) return false;
+        QTest::qWait(5);
+    }
+    return true;
+}
+
 // Distance between the origins of DH frames 0 and 1 of the drawn scene at q = 0.
 double drawnFirstLink(const MainWindow& w) {
     ll::VisualScene& visual = *w.result()->visual;
@@ -90,6 +101,7 @@ private slots:
 
         JointTableModel& model = w.jointModel();
         QVERIFY(model.setData(model.index(0, JointTableModel::A), "1.5", Qt::EditRole));
+        QVERIFY(checked(w));
         QCOMPARE(w.document().validScene().robot.joints[0].dh.a, 1.5);
         QCOMPARE(model.data(model.index(0, JointTableModel::A), Qt::DisplayRole).toString(), QString("1.5"));
         QVERIFY(settled(w));
@@ -115,6 +127,7 @@ private slots:
         JointTableModel& model = w.jointModel();
         const QModelIndex mass = model.index(1, JointTableModel::Mass);
         QVERIFY(model.setData(mass, "-2", Qt::EditRole));
+        QVERIFY(checked(w));
         QVERIFY(w.document().hasErrors());
         const QString tip = model.data(mass, Qt::ToolTipRole).toString();
         QVERIFY2(tip.startsWith("error:") && tip.contains("-2"), qPrintable(tip));
@@ -128,6 +141,7 @@ private slots:
         QCOMPARE(w.result()->scene->robot.joints[1].link.mass, 1.5);
         // An unknown parameter in an expression names it.
         QVERIFY(model.setData(model.index(0, JointTableModel::A), "a9*2", Qt::EditRole));
+        QVERIFY(checked(w));
         QVERIFY2(model.data(model.index(0, JointTableModel::A), Qt::ToolTipRole).toString().contains("a9"),
                  qPrintable(model.data(model.index(0, JointTableModel::A), Qt::ToolTipRole).toString()));
         QCOMPARE(w.document().validScene().robot.joints[0].dh.a, 1.0);
@@ -143,24 +157,30 @@ private slots:
         JointTableModel& model = w.jointModel();
         const QModelIndex alpha = model.index(1, JointTableModel::D);
         model.setData(alpha, "0.25", Qt::EditRole);
+        QVERIFY(checked(w));
         QCOMPARE(w.document().validScene().robot.joints[1].dh.d, 0.25);
         model.addJoint(1);
+        QVERIFY(checked(w));
         QCOMPARE(w.document().validScene().robot.dof(), 3);
         QCOMPARE(w.document().validScene().initial.q.size(), 3);
         QVERIFY(settled(w));
         QCOMPARE(w.result()->simulation.trajectory.n, 3);
         QCOMPARE(w.document().undoStack()->count(), 2);
         w.document().undoStack()->undo();
+        QVERIFY(checked(w));
         QCOMPARE(w.document().validScene().robot.dof(), 2);
         w.document().undoStack()->undo();
+        QVERIFY(checked(w));
         QCOMPARE(w.document().validScene().robot.joints[1].dh.d, 0.0);
         QCOMPARE(model.data(alpha, Qt::DisplayRole).toString(), QString("0"));
         QVERIFY(!w.document().isModified());
         QVERIFY(settled(w));
         QCOMPARE(w.result()->simulation.trajectory.n, 2);
         w.document().undoStack()->redo();
+        QVERIFY(checked(w));
         QCOMPARE(w.document().validScene().robot.joints[1].dh.d, 0.25);
         w.document().undoStack()->redo();
+        QVERIFY(checked(w));
         QCOMPARE(w.document().validScene().robot.dof(), 3);
         QVERIFY(w.document().isModified());
     }
@@ -175,11 +195,14 @@ private slots:
             JointTableModel& model = w.jointModel();
             model.setDegrees(true);
             model.setData(model.index(1, JointTableModel::Alpha), "90", Qt::EditRole);  // degrees: stored as "90°"
+            QVERIFY(checked(w));
             model.setData(model.index(0, JointTableModel::Mass), "m1*1.25", Qt::EditRole);
+            QVERIFY(checked(w));
             QString error;
             QVERIFY2(w.saveTo(path, &error), qPrintable(error));
             QVERIFY(!w.document().isModified());
             model.setData(model.index(0, JointTableModel::D), "0.1", Qt::EditRole);
+            QVERIFY(checked(w));
             QVERIFY(w.saveTo(path, &error));
             QVERIFY(QFile::exists(path + ".bak"));  // the previous save is the recovery copy
         }
@@ -208,6 +231,7 @@ private slots:
             w->setAskBeforeClosing(false);
             QVERIFY(w->openFile(path, nullptr, true));
             w->jointModel().setData(w->jointModel().index(0, JointTableModel::A), "1.2", Qt::EditRole);
+            QVERIFY(checked(*w));
             w->writeRecovery();  // what the 5 s autosave timer does
             QVERIFY(MainWindow::hasRecovery());
             // The crash: the window goes away without closing (no closeEvent, no save).
@@ -218,13 +242,16 @@ private slots:
         MainWindow next;
         next.setAskBeforeClosing(false);
         QVERIFY(next.restoreRecovery());
+        QVERIFY(checked(next));
         QCOMPARE(next.document().validScene().robot.joints[0].dh.a, 1.2);
         QCOMPARE(next.document().path(), path);
         QVERIFY(next.document().isModified());
         // Undo goes back to the file as saved; saving writes the restored edits there.
         next.document().undoStack()->undo();
+        QVERIFY(checked(next));
         QCOMPARE(next.document().validScene().robot.joints[0].dh.a, 1.0);
         next.document().undoStack()->redo();
+        QVERIFY(checked(next));
         QVERIFY(next.saveTo(path));
         QCOMPARE(ll::loadScene(path.toStdString()).scene.robot.joints[0].dh.a, 1.2);
         QVERIFY(!MainWindow::hasRecovery());  // a save discards the recovery copy
@@ -243,6 +270,7 @@ private slots:
         w.setAskBeforeClosing(false);
         QVERIFY(w.openFile(example("planar_2r.json"), nullptr, true));
         w.jointModel().setData(w.jointModel().index(0, JointTableModel::A), "1.1", Qt::EditRole);
+        QVERIFY(checked(w));
         const std::string text = w.document().text();
         const int edits = w.document().undoStack()->count();
         QStringList errors;

@@ -50,6 +50,12 @@ void DerivationPanel::setScene(const ll::Scene& scene) {
             r.cancel = cancel.get();
             text = QString::fromStdString(deriveDocument(scene, r).document);
         } catch (const Cancelled&) {
+            // Stopped for a newer scene, or for an edit being checked: the text shown stays.
+            QMetaObject::invokeMethod(self, [self, request] {
+                if (request != self->requested_) return;
+                self->delivered_ = request;
+                self->status_->setText(tr("Derivation stopped: the model is being edited"));
+            }, Qt::QueuedConnection);
             return;
         } catch (const InputError& e) {
             for (const Diagnostic& d : e.diagnostics()) error += QString::fromStdString(d.field + ": " + d.message + "\n");
@@ -75,6 +81,10 @@ void DerivationPanel::setScene(const ll::Scene& scene) {
             },
             Qt::QueuedConnection);
     });
+}
+
+void DerivationPanel::cancel() {
+    if (cancel_) cancel_->store(true);
 }
 
 void DerivationPanel::showStep(int n) {

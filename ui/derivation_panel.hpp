@@ -29,6 +29,11 @@ public:
     int step() const { return step_; }
     void setZoom(double factor);
 
+    // Stops the running derivation (its scene is stale: an edit is being checked). Not in
+    // DerivationView's API: the window calls it so a derivation holding the GiNaC lock
+    // does not hold up the check of the next edit.
+    void cancel();
+
     // What is shown (tests), and whether a derivation is still running.
     QString text() const;
     bool busy() const { return delivered_ < requested_; }

@@ -8,6 +8,7 @@ namespace ll::ui {
 FieldListModel::FieldListModel(SceneDocument& document, FieldRows rows, QObject* parent)
     : QAbstractTableModel(parent), doc_(document), make_(std::move(rows)) {
     connect(&doc_, &SceneDocument::changed, this, &FieldListModel::documentChanged);
+    connect(&doc_, &SceneDocument::validated, this, &FieldListModel::documentChanged);
     rows_ = make_(doc_.json());
 }
 

@@ -24,6 +24,7 @@ SceneJson absentValue(int column) { return column == JointTableModel::Type ? Sce
 
 JointTableModel::JointTableModel(SceneDocument& document, QObject* parent) : QAbstractTableModel(parent), doc_(document) {
     connect(&doc_, &SceneDocument::changed, this, &JointTableModel::documentChanged);
+    connect(&doc_, &SceneDocument::validated, this, &JointTableModel::documentChanged);
     documentChanged();
 }
 

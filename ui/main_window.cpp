@@ -86,6 +86,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     statusBar()->addWidget(status_, 1);
 
     connect(&doc_, &SceneDocument::changed, this, &MainWindow::documentChanged);
+    connect(&doc_, &SceneDocument::validated, this, &MainWindow::documentChanged);
+    // A derivation of the previous scene holds the GiNaC lock the check of an edit needs.
+    connect(&doc_, &SceneDocument::changed, derivation_, &DerivationPanel::cancel);
     connect(&doc_, &SceneDocument::validSceneChanged, this, &MainWindow::validSceneChanged);
     connect(doc_.undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
     connect(&live_, &LiveSimulation::finished, this, &MainWindow::showResult);
@@ -560,6 +563,7 @@ void MainWindow::keyPressEvent(QKeyEvent* e) {
 
 bool MainWindow::openFile(const QString& path, QStringList* errors, bool quiet) {
     QStringList found;
+    derivation_->cancel();  // loading checks the scene under the GiNaC lock
     if (!doc_.loadFile(path, &found)) {
         if (errors) *errors = found;
         if (!quiet) {

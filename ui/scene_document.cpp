@@ -27,7 +27,9 @@ private:
     SceneJson before_, after_;
 };
 
-SceneDocument::SceneDocument(QObject* parent) : QObject(parent) {}
+SceneDocument::SceneDocument(QObject* parent) : QObject(parent) { checker_.setMaxThreadCount(1); }
+
+SceneDocument::~SceneDocument() { checker_.waitForDone(); }
 
 namespace {
 
@@ -67,7 +69,10 @@ bool SceneDocument::loadText(const std::string& text, const QString& path, QStri
     }
     undo_.clear();
     path_ = path;
-    setJson(parsed);
+    json_ = parsed;
+    validated_ = ++revision_;
+    emit changed();
+    accept(found, &scene);
     undo_.setClean();
     return true;
 }
@@ -120,18 +125,35 @@ QString SceneDocument::errorAt(const std::string& field) const {
 
 void SceneDocument::setJson(const SceneJson& json) {
     json_ = json;
+    ++revision_;
+    emit changed();
     validate();
 }
 
 void SceneDocument::validate() {
-    Scene scene;
-    diagnostics_ = diagnose(json_.dump(), &scene);
+    const int revision = revision_;
+    checker_.start([self = this, text = json_.dump(), revision] {
+        auto scene = std::make_shared<Scene>();
+        auto found = std::make_shared<std::vector<Diagnostic>>(diagnose(text, scene.get()));
+        QMetaObject::invokeMethod(
+            self,
+            [self, revision, scene, found] {
+                if (revision != self->revision_) return;  // a newer edit is being checked
+                self->validated_ = revision;
+                self->accept(std::move(*found), scene.get());
+            },
+            Qt::QueuedConnection);
+    });
+}
+
+void SceneDocument::accept(std::vector<Diagnostic> diagnostics, Scene* scene) {
+    diagnostics_ = std::move(diagnostics);
     const bool valid = !ll::hasErrors(diagnostics_);
     if (valid) {
-        validScene_ = std::move(scene);
+        validScene_ = std::move(*scene);
         ++validRevision_;
     }
-    emit changed();
+    emit validated();
     if (valid) emit validSceneChanged();
 }
 

@@ -2,15 +2,19 @@
 // The scene being edited in the window: the scene file's JSON as the user typed it
 // (expressions, degrees and parameter names kept), an undo stack whose every command
 // is one edit, and the last valid Scene. After each change the JSON is read by the
-// scene loader (parseScene) and checked by the core (checkScene); the diagnostics name
-// the bad fields with the loader's own paths ("robot.joints[2].a"), and only a document
-// without errors replaces the last valid scene, so a bad cell never blanks the view.
+// scene loader (parseScene) and checked by the core (checkScene) in a worker thread
+// (both take the GiNaC lock, which a running derivation holds: the GUI thread never
+// waits for it); the diagnostics name the bad fields with the loader's own paths
+// ("robot.joints[2].a"), and only a document without errors replaces the last valid
+// scene, so a bad cell never blanks the view. A newer edit makes an older check's
+// result void.
 #include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <QObject>
+#include <QThreadPool>
 #include <QString>
 #include <QStringList>
 #include <QUndoStack>
@@ -27,6 +31,7 @@ class SceneDocument : public QObject {
     Q_OBJECT
 public:
     explicit SceneDocument(QObject* parent = nullptr);
+    ~SceneDocument() override;
 
     // Replaces the whole document (a new file, not an undoable edit). Returns false and
     // fills `errors` (one line each, "FILE: field: message") when `text` is not a
@@ -50,7 +55,10 @@ public:
     // One undoable edit of the whole document (joints added, moved, a block typed anew).
     void replace(const SceneJson& after, const QString& description);
 
-    // Diagnostics of the current JSON (errors and warnings) and of one field.
+    // Whether the newest JSON is still being checked (diagnostics and validScene are then
+    // those of an earlier one).
+    bool validating() const { return validated_ < revision_; }
+    // Diagnostics of the newest checked JSON (errors and warnings) and of one field.
     const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
     QString errorAt(const std::string& field) const;
     bool hasErrors() const { return ll::hasErrors(diagnostics_); }
@@ -66,6 +74,8 @@ public:
 signals:
     // After every change of the JSON (edit, undo, redo, load).
     void changed();
+    // When the check of a change is done (diagnostics() hold it).
+    void validated();
     // When the change gave a valid scene (validScene() holds it).
     void validSceneChanged();
 
@@ -73,6 +83,7 @@ private:
     friend class SceneEditCommand;
     void setJson(const SceneJson& json);  // no undo entry; re-validates
     void validate();
+    void accept(std::vector<Diagnostic> diagnostics, Scene* scene);
 
     SceneJson json_;
     QString path_;
@@ -80,6 +91,8 @@ private:
     std::vector<Diagnostic> diagnostics_;
     Scene validScene_;
     int validRevision_ = 0;
+    int revision_ = 0, validated_ = 0;  // of the JSON, and of the newest check applied
+    QThreadPool checker_;
 };
 
 }  // namespace ll::ui

@@ -83,25 +83,44 @@ void TrajectoryChart::clear() {
 
 void TrajectoryChart::setTrajectory(const Trajectory& trajectory) {
     trajectory_ = trajectory;
-    clear();
+    struct Curve {
+        QString name;
+        QColor color;
+        Qt::PenStyle style;
+        QList<QPointF> points;
+    };
+    std::vector<Curve> curves;
     const Trajectory& traj = trajectory_;
     if (kind_ == Kind::Energy) {
-        addSeries(tr("E_kin"), QColor(34, 139, 34), Qt::SolidLine)->replace(decimated(traj.t, [&](int k) { return traj.Ekin[k]; }));
-        addSeries(tr("E_pot"), QColor(30, 90, 200), Qt::SolidLine)->replace(decimated(traj.t, [&](int k) { return traj.Epot[k]; }));
-        addSeries(tr("E"), QColor(128, 0, 160), Qt::SolidLine)->replace(decimated(traj.t, [&](int k) { return traj.E[k]; }));
+        curves.push_back({tr("E_kin"), QColor(34, 139, 34), Qt::SolidLine, decimated(traj.t, [&](int k) { return traj.Ekin[k]; })});
+        curves.push_back({tr("E_pot"), QColor(30, 90, 200), Qt::SolidLine, decimated(traj.t, [&](int k) { return traj.Epot[k]; })});
+        curves.push_back({tr("E"), QColor(128, 0, 160), Qt::SolidLine, decimated(traj.t, [&](int k) { return traj.E[k]; })});
         if (anyWork(traj)) {
-            addSeries(tr("W"), QColor(200, 30, 30), Qt::SolidLine)->replace(decimated(traj.t, [&](int k) { return traj.work[k]; }));
-            addSeries(tr("E − W"), QColor(128, 0, 160), Qt::DotLine)->replace(decimated(traj.t, [&](int k) { return traj.E[k] - traj.work[k]; }));
+            curves.push_back({tr("W"), QColor(200, 30, 30), Qt::SolidLine, decimated(traj.t, [&](int k) { return traj.work[k]; })});
+            curves.push_back({tr("E − W"), QColor(128, 0, 160), Qt::DotLine, decimated(traj.t, [&](int k) { return traj.E[k] - traj.work[k]; })});
         }
         if (hasGhost_)
-            addSeries(tr("E (ghost)"), QColor(128, 0, 160, 150), Qt::DashLine)->replace(decimated(ghost_.t, [&](int k) { return ghost_.E[k]; }));
+            curves.push_back({tr("E (ghost)"), QColor(128, 0, 160, 150), Qt::DashLine, decimated(ghost_.t, [&](int k) { return ghost_.E[k]; })});
     } else {
         for (int i = 0; i < traj.n && i < 8; ++i) {
             const QString name = QString::fromStdString(traj.coordinateName(i));
-            addSeries(name, kJointColours[i], Qt::SolidLine)->replace(decimated(traj.t, [&](int k) { return traj.q[k][i]; }));
-            addSeries(name + QString::fromUtf8("̇"), kJointColours[i], Qt::DashLine)->replace(decimated(traj.t, [&](int k) { return traj.qd[k][i]; }));
+            curves.push_back({name, kJointColours[i], Qt::SolidLine, decimated(traj.t, [&](int k) { return traj.q[k][i]; })});
+            curves.push_back({"d" + name + "/dt", kJointColours[i], Qt::DashLine, decimated(traj.t, [&](int k) { return traj.qd[k][i]; })});
         }
     }
+    // The same curves as shown (an edit of a value, not of the structure): new points
+    // only, which is much cheaper in Qt Charts than new series.
+    QList<QLineSeries*> shown;
+    for (QAbstractSeries* s : chart()->series())
+        if (s != cursor_) shown.append(static_cast<QLineSeries*>(s));
+    bool same = shown.size() == static_cast<qsizetype>(curves.size());
+    for (qsizetype i = 0; same && i < shown.size(); ++i) same = shown[i]->name() == curves[static_cast<std::size_t>(i)].name;
+    if (!same) {
+        clear();
+        shown.clear();
+        for (const Curve& c : curves) shown.append(addSeries(c.name, c.color, c.style));
+    }
+    for (qsizetype i = 0; i < shown.size(); ++i) shown[i]->replace(curves[static_cast<std::size_t>(i)].points);
     fitAxes();
 }
 
