@@ -188,9 +188,10 @@ int benchCancel(const std::vector<std::string>& scenes) {
 }  // namespace
 
 int benchCommand(const Args& args) {
-    const Options options(args, {"batches", "chains", "cap"}, {"rhs", "derive", "cancel", "render", "typeset"});
+    const Options options(args, {"batches", "chains", "cap"}, {"rhs", "derive", "cancel", "render", "typeset", "gui"});
     const int batches = static_cast<int>(options.number("batches", 21));
     std::vector<std::string> scenes = options.positional();
+    if (options.has("gui")) return benchGui(scenes, static_cast<int>(options.number("batches", 9)));
     if (options.has("render")) return benchRender(scenes, static_cast<int>(options.number("batches", 3)));
     if (options.has("typeset")) return benchTypeset(scenes, static_cast<int>(options.number("batches", 5)));
     if (options.has("chains") && !options.has("derive")) throw UsageError("--chains: only with --derive");

@@ -36,14 +36,16 @@ constexpr std::array<CommandText, 9> commands{{
      "SCENE [--integrators a,b,...] [--tolerances 1e-3..1e-12] [--steps dt1,dt2,...] [--duration T]\n"
      "[--repeats N] [--reference-tol X] [--out plot.svg|png] [--csv FILE]",
      "work-precision: error, energy drift, CPU time, evaluations and steps per integrator and setting"},
-    {"bench", "[SCENE...] [--batches N] [--rhs | --derive | --cancel | --render | --typeset] [--chains A..B] [--cap S]",
+    {"bench", "[SCENE...] [--batches N] [--rhs | --derive | --cancel | --render | --typeset | --gui] [--chains A..B] [--cap S]",
      "median times of B, C, g, forward/inverse dynamics and one simulated second, beside KDL\n"
      "(--rhs: one right-hand side of the PUMA 560 with no effects, gravity only, all effects;\n"
      " --derive: the whole symbolic derivation per parameter mode;\n"
      " --derive --chains 3..12: structured beside expanded on seeded random chains, with sizes;\n"
      " --cancel: how soon a derivation stops after its cancel flag is set;\n"
      " --render: headless export of 10 s of the PUMA 560 to MP4, render-only frames/s, peak memory;\n"
-     " --typeset: one B entry typeset, the 2R and PUMA 560 to PDF, the Panda derived and printed)"},
+     " --typeset: one B entry typeset, the 2R and PUMA 560 to PDF, the Panda derived and printed;\n"
+     " --gui: the window: edit-to-updated-view latency (2R, PUMA 560), PUMA 560 animation frames/s\n"
+     "        at 1280x720, start to first drawn frame; needs a display, e.g. xvfb-run)"},
     {"help", "[COMMAND]", "this overview, or the usage of COMMAND (also: lagrangelab COMMAND --help)"},
 }};
 
@@ -78,7 +80,12 @@ std::string indented(const std::string& text, const std::string& indent) {
 const char* projectVersion() { return LL_VERSION; }
 
 std::string overviewUsage() {
-    std::string s = "usage: lagrangelab <command> [arguments]\n       lagrangelab --version\n\ncommands:\n";
+    std::string s =
+        "usage: lagrangelab <command> [arguments]\n       lagrangelab --version\n"
+        "       lagrangelab [SCENE] [--screenshot FILE.png [--play SECONDS] [--step N] [--teach q1,q2,...]]\n"
+        "           the window (default scene: examples/double_pendulum.json); with --screenshot it\n"
+        "           plays, shows a derivation step or poses the robot, saves the whole window and exits\n"
+        "\ncommands:\n";
     for (const CommandText& c : commands) s += "  " + synopsis(c, 2) + "\n" + indented(c.summary, "      ");
     return s + "\nexit codes: 0 success, 2 bad input, 3 simulation stopped early\n";
 }

@@ -1,6 +1,7 @@
 #pragma once
 // The `lagrangelab <command>` entry points. Each returns the process exit code:
 // 0 success, 2 bad input (scene or command line), 3 the simulation stopped early.
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -22,5 +23,10 @@ int benchDeriveChains(const std::string& range, const std::vector<std::string>& 
 int benchRender(const std::vector<std::string>& scenes, int runs);
 // `bench --typeset`: typesetting and printing the derivation (app/bench_typeset.cpp).
 int benchTypeset(const std::vector<std::string>& scenes, int runs);
+// The desktop window: `lagrangelab [SCENE] [--screenshot FILE.png …]` (app/window_command.cpp).
+int windowCommand(const Args& args, const std::chrono::steady_clock::time_point& processStart);
+// `bench --gui`: edit-to-view latency, animation frame rate, start to first frame (app/bench_gui.cpp).
+int benchGui(const std::vector<std::string>& scenes, int runs);
+bool hasDisplay();
 
 }  // namespace ll::cli

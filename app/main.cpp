@@ -1,6 +1,8 @@
 // lagrangelab: Euler–Lagrange modelling of serial robots, from the command line.
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <string>
 
@@ -13,13 +15,56 @@ namespace {
 
 bool isHelp(const std::string& arg) { return arg == "--help" || arg == "-h"; }
 
+const char* const kCommands[] = {"eval", "simulate", "integrators", "bench", "accuracy", "derive", "render", "codegen", "help", "version", "--version"};
+
+// `lagrangelab`, `lagrangelab SCENE …` and `lagrangelab --screenshot …` open the window:
+// no arguments, or a first argument that is no command but a scene file or an option.
+bool opensWindow(int argc, char** argv) {
+    if (argc < 2) return true;
+    const std::string first = argv[1];
+    if (isHelp(first)) return false;
+    for (const char* c : kCommands)
+        if (first == c) return false;
+    return first.rfind("--", 0) == 0 || first.ends_with(".json") || first.ends_with(".lagrange") ||
+           std::filesystem::is_regular_file(first);
+}
+
+
+// f()'s exit code; its exceptions as one `error:` line each: bad input (exit 2) or a
+// failure (exit 1).
+template <class F>
+int reportingErrors(F&& f) {
+    using namespace ll::cli;
+    try {
+        return f();
+    } catch (const ll::InputError& e) {
+        for (const ll::Diagnostic& d : e.diagnostics())
+            if (d.severity == ll::Severity::Error) std::cerr << "error: " << d.field << ": " << d.message << '\n';
+        return 2;
+    } catch (const UsageError& e) {
+        std::cerr << "error: " << e.what() << '\n';
+        return 2;
+    } catch (const std::invalid_argument& e) {
+        std::cerr << "error: " << e.what() << '\n';
+        return 2;
+    } catch (const std::exception& e) {
+        std::cerr << "error: " << e.what() << '\n';
+        return 1;
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     using namespace ll::cli;
-    if (argc < 2) {
-        std::fputs(overviewUsage().c_str(), stderr);
-        return 2;
+    const auto processStart = std::chrono::steady_clock::now();
+    if (opensWindow(argc, argv)) {
+        if (!hasDisplay()) {
+            std::fputs(overviewUsage().c_str(), stderr);
+            std::fputs("error: no display: the window needs an X server (set DISPLAY, run under xvfb-run, or use `lagrangelab render`)\n", stderr);
+            return 2;
+        }
+        return reportingErrors([&] { return windowCommand(Args(argv + 1, argv + argc), processStart); });
     }
     const std::string command = argv[1];
     const Args args(argv + 2, argv + argc);
@@ -42,7 +87,7 @@ int main(int argc, char** argv) {
         std::fputs(commandUsage(command).c_str(), stdout);
         return 0;
     }
-    try {
+    return reportingErrors([&] {
         if (command == "eval") return evalCommand(args);
         if (command == "simulate") return simulateCommand(args);
         if (command == "integrators") return integratorsCommand(args);
@@ -53,18 +98,5 @@ int main(int argc, char** argv) {
         if (command == "codegen") return codegenCommand(args);
         std::fprintf(stderr, "error: unknown command '%s'\n\n%s", command.c_str(), overviewUsage().c_str());
         return 2;
-    } catch (const ll::InputError& e) {
-        for (const ll::Diagnostic& d : e.diagnostics())
-            if (d.severity == ll::Severity::Error) std::cerr << "error: " << d.field << ": " << d.message << '\n';
-        return 2;
-    } catch (const UsageError& e) {
-        std::cerr << "error: " << e.what() << '\n';
-        return 2;
-    } catch (const std::invalid_argument& e) {
-        std::cerr << "error: " << e.what() << '\n';
-        return 2;
-    } catch (const std::exception& e) {
-        std::cerr << "error: " << e.what() << '\n';
-        return 1;
-    }
+    });
 }

@@ -200,6 +200,11 @@ void DerivationView::reapJobs(bool all) {
     });
 }
 
+void DerivationView::cancel() {
+    for (auto& job : jobs_) job->cancel = true;
+    deriving_ = false;
+}
+
 void DerivationView::setScene(const ll::Scene& scene) {
     reapJobs(false);
     for (auto& job : jobs_) job->cancel = true;  // the newest call wins

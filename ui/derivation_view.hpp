@@ -48,6 +48,8 @@ public:
 public slots:
     void nextStep();
     void previousStep();
+    // Stops the running derivation (its result is dropped); the next setScene starts anew.
+    void cancel();
 
 signals:
     void stepChanged(int step);

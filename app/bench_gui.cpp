@@ -1,0 +1,196 @@
+// `lagrangelab bench --gui [SCENE…] [--batches N]`: what the window costs, in the window
+// itself (needs a display; under xvfb-run on a machine without one):
+//   - edit-to-updated-view latency: a DH cell edited through the editor's model (the
+//     same undoable command a keystroke makes) until the re-simulated scene is drawn in
+//     the 3D view (validation, debounce, worker simulation, VisualScene, plots, one GL
+//     frame); the derivation re-runs beside it in its own thread and is timed apart;
+//   - the PUMA 560 animated in a 1280×720 view (posed at a new time every frame);
+//   - start to the first drawn frame of the simulated default scene, a fresh process.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include <sys/resource.h>
+
+#include <QApplication>
+#include <QFile>
+#include <QElapsedTimer>
+#include <QProcess>
+#include <QRegularExpression>
+
+#include "ui/data_directory.hpp"
+#include "app/commands.hpp"
+#include "app/event_wait.hpp"
+#include "app/scene_loading.hpp"
+#include "core/pipeline/scene_simulation.hpp"
+#include "core/scene/trajectory_sampler.hpp"
+#include "ui/derivation_panel.hpp"
+#include "ui/joint_table_model.hpp"
+#include "ui/main_window.hpp"
+#include "ui/scene_view.hpp"
+
+namespace ll::cli {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0.0 : v[v.size() / 2];
+}
+
+// CPU seconds used by this process so far (every thread, llvmpipe's included).
+double processCpu() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return usage.ru_utime.tv_sec + usage.ru_stime.tv_sec + 1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
+
+double ms(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); }
+
+// The first joint row with a non-zero numeric `a` (else d) to nudge.
+std::pair<int, int> editableCell(const ui::SceneDocument& doc) {
+    const auto joints = doc.value("/robot/joints");
+    for (std::size_t i = 0; i < joints.size(); ++i)
+        for (int column : {ui::JointTableModel::A, ui::JointTableModel::D}) {
+            const auto v = doc.value(ui::JointTableModel::pointer(static_cast<int>(i), column));
+            if (v.is_number() && v.get<double>() != 0) return {static_cast<int>(i), column};
+        }
+    return {0, ui::JointTableModel::A};
+}
+
+void latency(const std::string& path, int runs) {
+    ui::MainWindow window;
+    window.setAskBeforeClosing(false);
+    window.resize(1280, 800);
+    window.show();
+    if (!window.openFile(QString::fromStdString(path), nullptr, true)) {
+        std::printf("%s: cannot open\n", path.c_str());
+        return;
+    }
+    waitFor([&] { return window.result() && !window.derivationPanel().busy(); }, 120);
+    auto [row, column] = editableCell(window.document());
+    ui::JointTableModel& model = window.jointModel();
+    const QModelIndex cell = model.index(row, column);
+    const QString original = model.data(cell, Qt::EditRole).toString();
+    double value = original.toDouble();
+    if (value == 0) value = 0.5;
+    std::vector<double> view, derive, validate, worker, shownAt, cpu;
+    for (int k = 0; k < runs; ++k) {
+        const long frames = window.sceneView().framesDrawn();
+        int shown = -1;
+        Clock::time_point shownTime;
+        auto connection = QObject::connect(&window, &ui::MainWindow::resultShown, [&](int request) {
+            shown = request;
+            shownTime = Clock::now();
+        });
+        const double cpu0 = processCpu();
+        const auto t0 = Clock::now();
+        model.setData(cell, QString::number(value * (k % 2 ? 1.0 : 1.02), 'g', 12), Qt::EditRole);
+        waitFor([&] { return !window.document().validating(); }, 30);
+        const auto tValid = Clock::now();
+        const int request = window.liveSimulation().latestRequest();
+        bool drawn = waitFor([&] { return shown >= request && window.sceneView().framesDrawn() > frames; }, 30);
+        const auto t1 = Clock::now();
+        const double cpu1 = processCpu();
+        waitFor([&] { return !window.derivationPanel().busy(); }, 60);
+        const auto t2 = Clock::now();
+        QObject::disconnect(connection);
+        if (!drawn) continue;
+        view.push_back(ms(t0, t1));
+        derive.push_back(ms(t0, t2));
+        validate.push_back(ms(t0, tValid));
+        worker.push_back(window.result()->workerSeconds * 1000);
+        shownAt.push_back(ms(t0, shownTime));
+        cpu.push_back((cpu1 - cpu0) * 1000);
+    }
+    std::printf("edit-to-updated-view latency, %s (joint %d %s): %.1f ms median of %zu (min %.1f, max %.1f): "
+                "validation %.1f ms, worker (simulate + scene) %.1f ms, result on screen at %.1f ms, then the frame; "
+                "process CPU %.1f ms; derivation shown after %.1f ms\n",
+                path.c_str(), row + 1, column == ui::JointTableModel::A ? "a" : "d", median(view), view.size(),
+                view.empty() ? 0 : *std::min_element(view.begin(), view.end()), view.empty() ? 0 : *std::max_element(view.begin(), view.end()),
+                median(validate), median(worker), median(shownAt), median(cpu), median(derive));
+}
+
+void frameRate(const std::string& path, int runs) {
+    const Scene scene = loadSceneReportingWarnings(path);
+    const SimulationResult result = ll::simulate(scene);
+    auto visual = std::make_shared<VisualScene>(scene);
+    visual->fitToMotion(result.trajectory);
+    const TrajectorySampler sampler(result.trajectory);
+    ui::SceneView view;
+    view.resize(1280, 720);
+    view.show();
+    view.setVisualScene(visual, true);
+    waitFor([&] { return view.framesDrawn() > 2; }, 10);
+    Eigen::VectorXd q(sampler.dof()), qd(sampler.dof());
+    std::vector<double> fps, cpuPerFrame;
+    for (int r = 0; r < runs; ++r) {
+        const long before = view.framesDrawn();
+        const double cpu0 = processCpu();
+        QElapsedTimer clock;
+        clock.start();
+        double t = 0;
+        while (clock.elapsed() < 2000) {
+            t = std::fmod(t + 1.0 / 30, sampler.endTime());
+            sampler.sample(t, q, qd);
+            const long frames = view.framesDrawn();
+            view.setPose(q, t);
+            waitFor([&] { return view.framesDrawn() > frames; }, 5);
+        }
+        fps.push_back((view.framesDrawn() - before) / (clock.elapsed() / 1000.0));
+        cpuPerFrame.push_back((processCpu() - cpu0) * 1000 / std::max(1L, view.framesDrawn() - before));
+    }
+    std::printf("animation, %s in a %dx%d view (%s): %.1f frames/s median of %d runs of 2 s, %.1f ms process CPU per frame\n", path.c_str(),
+                static_cast<int>(view.width() * view.devicePixelRatioF()), static_cast<int>(view.height() * view.devicePixelRatioF()),
+                "software GL, Mesa llvmpipe under the current display", median(fps), runs, median(cpuPerFrame));
+}
+
+void firstFrame(int runs) {
+    std::vector<double> outside, inside;
+    for (int r = 0; r < runs; ++r) {
+        QProcess p;
+        const auto t0 = Clock::now();
+        p.start(QCoreApplication::applicationFilePath(), {"--first-frame"});
+        p.waitForFinished(60000);
+        const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+        const QString out = QString::fromUtf8(p.readAllStandardOutput());
+        const auto m = QRegularExpression("first frame after ([0-9.]+) ms").match(out);
+        if (p.exitCode() != 0 || !m.hasMatch()) {
+            std::printf("start to first frame: the window failed (exit %d): %s\n", p.exitCode(), p.readAllStandardError().constData());
+            return;
+        }
+        inside.push_back(m.captured(1).toDouble());
+        outside.push_back(ms);
+    }
+    std::printf("start to first drawn frame (default scene, simulated): %.0f ms median of %d (from main(); %.0f ms from process "
+                "spawn to exit)\n", median(inside), runs, median(outside));
+}
+
+}  // namespace
+
+int benchGui(const std::vector<std::string>& scenes, int runs) {
+    if (!hasDisplay()) {
+        std::fprintf(stderr, "error: bench --gui: no display (run it under xvfb-run -a -s '-screen 0 1280x800x24')\n");
+        return 2;
+    }
+    static int argc = 1;
+    static char name[] = "lagrangelab";
+    static char* argv[] = {name, nullptr};
+    QApplication app(argc, argv);
+    // Wall times depend on what else the machine runs: say how loaded it was.
+    QFile loadavg("/proc/loadavg");
+    if (loadavg.open(QIODevice::ReadOnly)) std::printf("load average at start: %s", loadavg.readLine().constData());
+    const std::string examples = ui::examplesDirectory().string();
+    std::vector<std::string> latencyScenes = scenes;
+    if (latencyScenes.empty()) latencyScenes = {examples + "/planar_2r.json", examples + "/puma560.json"};
+    for (const std::string& s : latencyScenes) latency(s, runs);
+    frameRate(scenes.empty() ? examples + "/puma560.json" : scenes.front(), 3);
+    firstFrame(std::max(3, runs / 2));
+    return 0;
+}
+
+}  // namespace ll::cli

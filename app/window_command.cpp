@@ -1,0 +1,112 @@
+// `lagrangelab [SCENE] [--screenshot FILE.png [--play SECONDS] [--step N] [--teach q1,...]]`:
+// the desktop window (ui/main_window.hpp).
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+
+#include <QApplication>
+#include <QBuffer>
+#include <QDir>
+#include <QElapsedTimer>
+#include <QEventLoop>
+#include <QFileInfo>
+#include <QImage>
+#include <QTimer>
+
+#include "ui/data_directory.hpp"
+#include "app/cli_options.hpp"
+#include "app/command_usage.hpp"
+#include "app/commands.hpp"
+#include "app/event_wait.hpp"
+#include "core/io/atomic_file.hpp"
+#include "ui/derivation_panel.hpp"
+#include "ui/main_window.hpp"
+#include "ui/playback_bar.hpp"
+#include "ui/scene_view.hpp"
+
+namespace ll::cli {
+
+bool hasDisplay() { return std::getenv("DISPLAY") != nullptr || std::getenv("WAYLAND_DISPLAY") != nullptr; }
+
+int windowCommand(const Args& args, const std::chrono::steady_clock::time_point& processStart) {
+    const Options options(args, {"screenshot", "play", "step", "teach", "size", "first-frame"}, {"first-frame"});
+    if (options.positional().size() > 1) throw UsageError("the window takes one SCENE, got " + std::to_string(options.positional().size()));
+    const std::string scene = options.positional().empty() ? (ui::examplesDirectory() / "double_pendulum.json").string() : options.positional()[0];
+    const std::string screenshot = options.text("screenshot");
+    if (!screenshot.empty() && QFileInfo(QString::fromStdString(screenshot)).suffix().toLower() != "png")
+        throw UsageError("--screenshot: '" + screenshot + "' is not a .png file");
+    const double play = options.number("play", 0);
+    if (play < 0 || play > 600) throw UsageError("--play: " + options.text("play") + " is not between 0 and 600 seconds");
+    const double step = options.number("step", -1);
+    if (options.has("step") && (step < 0 || step > 8 || step != std::floor(step)))
+        throw UsageError("--step: " + options.text("step") + " is not a step 0..8");
+    int width = 1280, height = 800;
+    if (options.has("size") && std::sscanf(options.text("size").c_str(), "%dx%d", &width, &height) != 2)
+        throw UsageError("--size: '" + options.text("size") + "' is not WxH");
+    if (!hasDisplay())
+        throw UsageError("no display: the window needs an X server (set DISPLAY, run under xvfb-run, or use `lagrangelab render`)");
+
+    static int argc = 1;
+    static char name[] = "lagrangelab";
+    static char* argv[] = {name, nullptr};
+    QApplication app(argc, argv);
+    QApplication::setApplicationName("LagrangeLab");
+    ui::MainWindow window;
+    QStringList errors;
+    if (!window.openFile(QString::fromStdString(scene), &errors, true)) {
+        for (const QString& e : errors) std::cerr << "error: " << e.toStdString() << '\n';
+        return 2;
+    }
+    window.resize(width, height);
+    const bool scripted = !screenshot.empty() || options.has("first-frame");
+    if (scripted) window.setAskBeforeClosing(false);
+    window.show();
+    if (!scripted) window.offerRecovery();
+
+    if (options.has("first-frame")) {
+        // Start to the first drawn frame of the simulated scene (benchmarks).
+        const long before = window.sceneView().framesDrawn();
+        if (!waitFor([&] { return window.result() && window.sceneView().framesDrawn() > before; }, 60)) return 1;
+        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - processStart).count();
+        std::printf("first frame after %.1f ms\n", ms);
+        return 0;
+    }
+    if (screenshot.empty()) {
+        window.playback().play();
+        return app.exec();
+    }
+
+    // Scripted: wait for the simulation and the derivation, then play, pose or step.
+    if (!waitFor([&] { return window.result() && !window.derivationPanel().busy(); }, 120)) {
+        std::cerr << "error: " << scene << ": the simulation or derivation did not finish in 120 s\n";
+        return 1;
+    }
+    if (options.has("teach")) {
+        const Eigen::VectorXd q = options.vector("teach", window.document().validScene().dof());
+        window.teach(q);
+    }
+    if (options.has("step")) window.showDerivationStep(static_cast<int>(step));
+    if (play > 0) {
+        window.playback().setLoop(false);
+        window.playback().restart();
+        window.playback().play();
+        pauseFor(play);
+        window.playback().pause();
+    }
+    // Let the last frame reach the screen before grabbing it.
+    const long frames = window.sceneView().framesDrawn();
+    window.sceneView().update();
+    waitFor([&] { return window.sceneView().framesDrawn() > frames; }, 5);
+    pauseFor(0.3);
+    const QImage image = window.screenshot();
+    QByteArray bytes;
+    QBuffer buffer(&bytes);
+    buffer.open(QIODevice::WriteOnly);
+    image.save(&buffer, "PNG");
+    saveFileAtomically(screenshot, bytes.toStdString(), Backup::None);
+    std::fprintf(stderr, "screenshot %dx%d written to %s\n", image.width(), image.height(), screenshot.c_str());
+    return 0;
+}
+
+}  // namespace ll::cli

@@ -1,0 +1,72 @@
+#include "ui/live_simulation.hpp"
+
+#include <chrono>
+
+#include "core/model/diagnostics.hpp"
+#include "core/pipeline/scene_simulation.hpp"
+
+namespace ll::ui {
+
+LiveSimulation::LiveSimulation(QObject* parent) : QObject(parent) {
+    debounce_.setSingleShot(true);
+    debounce_.setInterval(15);
+    connect(&debounce_, &QTimer::timeout, this, &LiveSimulation::start);
+    pool_.setMaxThreadCount(2);
+}
+
+LiveSimulation::~LiveSimulation() {
+    if (cancel_) cancel_->store(true);
+    pool_.waitForDone();
+}
+
+void LiveSimulation::request(const Scene& scene) {
+    pending_ = std::make_shared<const Scene>(scene);
+    ++requested_;
+    debounce_.start();
+}
+
+void LiveSimulation::requestNow(const Scene& scene) {
+    pending_ = std::make_shared<const Scene>(scene);
+    ++requested_;
+    debounce_.stop();
+    start();
+}
+
+void LiveSimulation::start() {
+    if (!pending_) return;
+    if (cancel_) cancel_->store(true);  // the previous run's result would be dropped anyway
+    cancel_ = std::make_shared<std::atomic<bool>>(false);
+    auto scene = std::move(pending_);
+    pending_.reset();
+    const int request = requested_;
+    const SimulationSettings settings = override_.value_or(scene->simulation);
+    pool_.start([self = this, scene, settings, request, cancel = cancel_] {
+        const auto begin = std::chrono::steady_clock::now();
+        auto result = std::make_shared<LiveResult>();
+        result->request = request;
+        result->scene = scene;
+        try {
+            result->simulation = ll::simulate(*scene, settings, {}, cancel.get());
+            if (cancel->load()) return;
+            result->visual = std::make_shared<VisualScene>(*scene);
+            if (result->simulation.trajectory.size() > 0) result->visual->fitToMotion(result->simulation.trajectory);
+            if (result->simulation.status == SimulationStatus::Failed) result->error = result->simulation.message;
+        } catch (const InputError& e) {
+            for (const Diagnostic& d : e.diagnostics()) result->error += d.field + ": " + d.message + "\n";
+        } catch (const std::exception& e) {
+            result->error = e.what();
+        }
+        if (cancel->load()) return;
+        result->workerSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+        QMetaObject::invokeMethod(
+            self,
+            [self, result] {
+                if (result->request < self->requested_) return;  // stale: a newer edit wins
+                self->delivered_ = result->request;
+                emit self->finished(result);
+            },
+            Qt::QueuedConnection);
+    });
+}
+
+}  // namespace ll::ui

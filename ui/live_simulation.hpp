@@ -1,0 +1,65 @@
+#pragma once
+// Re-simulation after every valid edit, off the GUI thread: request(scene) restarts a
+// short debounce; when it fires the newest scene is copied to a worker, the previous
+// worker's run is cancelled (its cancel flag set, its result dropped), and the worker
+// simulates it and builds its VisualScene (fitted to the motion). The result comes
+// back through a queued call as plain data owned by the receiver; results older than
+// the newest request are discarded, so the newest edit always wins.
+#include <atomic>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QThreadPool>
+#include <QTimer>
+
+#include "core/model/scene.hpp"
+#include "core/scene/visual_scene.hpp"
+#include "core/simulation/trajectory.hpp"
+
+namespace ll::ui {
+
+struct LiveResult {
+    int request = 0;                          // which request this answers
+    std::shared_ptr<const Scene> scene;       // the scene simulated
+    SimulationResult simulation;
+    std::shared_ptr<VisualScene> visual;      // posed at the last sample; fitted to the motion
+    std::string error;                        // why there is no trajectory (empty when there is)
+    double workerSeconds = 0.0;               // wall time in the worker
+};
+
+class LiveSimulation : public QObject {
+    Q_OBJECT
+public:
+    explicit LiveSimulation(QObject* parent = nullptr);
+    ~LiveSimulation() override;
+
+    // Settings used instead of the scene's own (e.g. a ghost run with another integrator);
+    // unset: the scene's.
+    void setSettingsOverride(std::optional<SimulationSettings> settings) { override_ = std::move(settings); }
+    void setDebounce(int milliseconds) { debounce_.setInterval(milliseconds); }
+    // Simulates `scene` (copied) after the debounce; a newer request replaces it.
+    void request(const Scene& scene);
+    // Starts now, without the debounce.
+    void requestNow(const Scene& scene);
+    int latestRequest() const { return requested_; }
+    bool busy() const { return delivered_ < requested_; }
+    // Blocks until every worker has finished (tests, shutdown).
+    void wait() { pool_.waitForDone(); }
+
+signals:
+    void finished(std::shared_ptr<const ll::ui::LiveResult> result);
+
+private:
+    void start();
+    QTimer debounce_;
+    QThreadPool pool_;
+    std::shared_ptr<const Scene> pending_;
+    std::optional<SimulationSettings> override_;
+    std::shared_ptr<std::atomic<bool>> cancel_;
+    int requested_ = 0, delivered_ = 0;
+};
+
+}  // namespace ll::ui

@@ -1,0 +1,836 @@
+#include "ui/main_window.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <QAction>
+#include <QActionGroup>
+#include <QBuffer>
+#include <QApplication>
+#include <QCheckBox>
+#include <QCloseEvent>
+#include <QComboBox>
+#include <QDir>
+#include <QDockWidget>
+#include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QInputDialog>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QListWidget>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QPlainTextEdit>
+#include <QProgressDialog>
+#include <QPushButton>
+#include <QScreen>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QStatusBar>
+#include <QTabWidget>
+#include <QTableView>
+#include <QThreadPool>
+#include <QToolBar>
+#include <QToolButton>
+#include <QVBoxLayout>
+#include <QWindow>
+
+#include "core/io/atomic_file.hpp"
+#include "core/pipeline/scene_derivation.hpp"
+#include "ui/animation_export.hpp"
+#include "ui/derivation_panel.hpp"
+#include "ui/derivation_view.hpp"
+#include "ui/field_list_model.hpp"
+#include "ui/joint_table_model.hpp"
+#include "ui/playback_bar.hpp"
+#include "ui/scene_view.hpp"
+#include "ui/teach_panel.hpp"
+#include "ui/trajectory_chart.hpp"
+#include "ui/work_precision_pane.hpp"
+
+// Q_INIT_RESOURCE must stand outside any namespace.
+static void initExampleResources() { Q_INIT_RESOURCE(examples); }
+
+namespace ll::ui {
+
+namespace {
+
+constexpr int kMaxRecent = 8;
+constexpr double kTrailSeconds = 2.0;
+
+QTableView* makeTable(QAbstractItemModel* model, QWidget* parent) {
+    auto* table = new QTableView(parent);
+    table->setModel(model);
+    table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    table->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed | QAbstractItemView::AnyKeyPressed);
+    table->setSelectionBehavior(QAbstractItemView::SelectItems);
+    return table;
+}
+
+QString sceneFilter() { return QObject::tr("LagrangeLab scenes (*.lagrange *.json);;All files (*)"); }
+
+}  // namespace
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
+    initExampleResources();
+    setAcceptDrops(true);
+    resize(1280, 800);
+    buildEditor();
+    buildCentre();
+    buildDocks();
+    buildMenus();
+    status_ = new QLabel(this);
+    statusBar()->addWidget(status_, 1);
+
+    connect(&doc_, &SceneDocument::changed, this, &MainWindow::documentChanged);
+    connect(&doc_, &SceneDocument::validated, this, &MainWindow::documentChanged);
+    // A derivation of the previous scene holds the GiNaC lock the check of an edit needs.
+    connect(&doc_, &SceneDocument::changed, derivation_, &DerivationPanel::cancel);
+    connect(&doc_, &SceneDocument::changed, typeset_, &DerivationView::cancel);
+    connect(&doc_, &SceneDocument::validSceneChanged, this, &MainWindow::validSceneChanged);
+    connect(doc_.undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
+    connect(&live_, &LiveSimulation::finished, this, &MainWindow::showResult);
+    connect(&ghostLive_, &LiveSimulation::finished, this, &MainWindow::showGhost);
+    connect(playback_, &PlaybackBar::timeChanged, this, &MainWindow::showTime);
+    connect(playback_, &PlaybackBar::playingChanged, this, [this](bool playing) {
+        if (playing) teaching_ = false;
+    });
+    autosave_.setInterval(5000);
+    connect(&autosave_, &QTimer::timeout, this, [this] {
+        if (doc_.isModified()) writeRecovery();
+    });
+    autosave_.start();
+    updateTitle();
+}
+
+MainWindow::~MainWindow() {
+    // The views and models read the document: they go before it (members die before
+    // QWidget's destructor deletes the children).
+    autosave_.stop();
+    qDeleteAll(findChildren<QWidget*>(QString(), Qt::FindDirectChildrenOnly));
+    qDeleteAll(findChildren<QAbstractItemModel*>(QString(), Qt::FindDirectChildrenOnly));
+}
+
+// ---------------------------------------------------------------- building
+
+void MainWindow::buildEditor() {
+    joints_ = new JointTableModel(doc_, this);
+    parameters_ = new FieldListModel(doc_, parameterRows, this);
+    initial_ = new FieldListModel(doc_, initialStateRows, this);
+    solver_ = new FieldListModel(doc_, solverRows, this);
+    lagrangian_ = new FieldListModel(doc_, lagrangianRows, this);
+
+    editorTabs_ = new QTabWidget(this);
+
+    // DH table with the convention, degree switch and joint list buttons.
+    auto* dhPage = new QWidget(editorTabs_);
+    auto* dhLayout = new QVBoxLayout(dhPage);
+    auto* dhBar = new QHBoxLayout;
+    convention_ = new QComboBox(dhPage);
+    convention_->addItem(tr("standard (Spong)"), "standard");
+    convention_->addItem(tr("modified (Craig)"), "modified");
+    auto* degrees = new QCheckBox(tr("angles in degrees"), dhPage);
+    dhBar->addWidget(new QLabel(tr("convention"), dhPage));
+    dhBar->addWidget(convention_);
+    dhBar->addWidget(degrees);
+    dhBar->addStretch(1);
+    dhLayout->addLayout(dhBar);
+    dhView_ = makeTable(joints_, dhPage);
+    for (int c = JointTableModel::firstInertialColumn; c <= JointTableModel::lastInertialColumn; ++c) dhView_->setColumnHidden(c, true);
+    dhLayout->addWidget(dhView_, 1);
+    auto* rowBar = new QHBoxLayout;
+    const auto currentRow = [this] { return dhView_->currentIndex().isValid() ? dhView_->currentIndex().row() : joints_->rowCount() - 1; };
+    for (auto [text, action] : std::initializer_list<std::pair<QString, std::function<void()>>>{
+             {tr("Add joint"), [this, currentRow] { joints_->addJoint(currentRow()); }},
+             {tr("Remove"), [this, currentRow] { joints_->removeJoint(currentRow()); }},
+             {tr("Move up"), [this, currentRow] { joints_->moveJoint(currentRow(), -1); }},
+             {tr("Move down"), [this, currentRow] { joints_->moveJoint(currentRow(), +1); }}}) {
+        auto* button = new QPushButton(text, dhPage);
+        connect(button, &QPushButton::clicked, this, action);
+        rowBar->addWidget(button);
+    }
+    rowBar->addStretch(1);
+    dhLayout->addLayout(rowBar);
+    connect(convention_, &QComboBox::activated, this, [this](int i) {
+        doc_.setValue("/robot/convention", convention_->itemData(i).toString().toStdString(), tr("Convention: %1").arg(convention_->itemText(i)));
+    });
+    connect(degrees, &QCheckBox::toggled, joints_, &JointTableModel::setDegrees);
+    editorTabs_->addTab(dhPage, tr("DH"));
+
+    // Inertials with the shape helper.
+    auto* inPage = new QWidget(editorTabs_);
+    auto* inLayout = new QVBoxLayout(inPage);
+    inertialView_ = makeTable(joints_, inPage);
+    for (int c = JointTableModel::firstDhColumn; c <= JointTableModel::lastDhColumn; ++c) inertialView_->setColumnHidden(c, true);
+    inLayout->addWidget(inertialView_, 1);
+    auto* shapeBar = new QHBoxLayout;
+    auto* shape = new QComboBox(inPage);
+    shape->addItem(tr("rod (length L)"), "rod");
+    shape->addItem(tr("cylinder (r, h)"), "cylinder");
+    shape->addItem(tr("disc (r)"), "disc");
+    shape->addItem(tr("box (x, y, z)"), "box");
+    shape->addItem(tr("sphere (r)"), "sphere");
+    auto* fill = new QPushButton(tr("Fill inertia from shape…"), inPage);
+    connect(fill, &QPushButton::clicked, this, [this, shape] {
+        const int row = inertialView_->currentIndex().isValid() ? inertialView_->currentIndex().row() : 0;
+        bool ok = false;
+        const QString dims = QInputDialog::getText(this, tr("Inertia from a shape"),
+                                                   tr("Joint %1, %2: dimensions in metres, comma-separated (numbers or parameters)")
+                                                       .arg(row + 1).arg(shape->currentText()),
+                                                   QLineEdit::Normal, "", &ok);
+        if (ok) joints_->fillInertiaFromShape(row, shape->currentData().toString(), dims.split(','));
+    });
+    shapeBar->addWidget(shape);
+    shapeBar->addWidget(fill);
+    shapeBar->addStretch(1);
+    inLayout->addLayout(shapeBar);
+    editorTabs_->addTab(inPage, tr("Inertials"));
+
+    editorTabs_->addTab(makeTable(parameters_, editorTabs_), tr("Parameters"));
+    editorTabs_->addTab(makeTable(initial_, editorTabs_), tr("Initial && gravity"));
+    editorTabs_->addTab(makeTable(solver_, editorTabs_), tr("Solver"));
+    editorTabs_->addTab(makeTable(lagrangian_, editorTabs_), tr("Lagrangian"));
+
+    // The whole scene as JSON (effects, bodies, anything the tables do not list).
+    auto* jsonPage = new QWidget(editorTabs_);
+    auto* jsonLayout = new QVBoxLayout(jsonPage);
+    jsonEdit_ = new QPlainTextEdit(jsonPage);
+    jsonEdit_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    auto* apply = new QPushButton(tr("Apply (undoable)"), jsonPage);
+    connect(apply, &QPushButton::clicked, this, [this] {
+        try {
+            doc_.replace(SceneJson::parse(jsonEdit_->toPlainText().toStdString()), tr("Edit scene JSON"));
+        } catch (const std::exception& e) {
+            QMessageBox::warning(this, tr("Scene JSON"), QString::fromUtf8(e.what()));
+        }
+    });
+    jsonLayout->addWidget(jsonEdit_, 1);
+    jsonLayout->addWidget(apply);
+    editorTabs_->addTab(jsonPage, tr("JSON"));
+
+    diagnostics_ = new QListWidget(this);
+    diagnostics_->setMaximumHeight(110);
+    diagnostics_->setWordWrap(true);
+
+    // Joint selection in the DH table lights up the joint in the 3D view.
+    auto highlight = [this](const QModelIndex& index) {
+        if (view_) view_->highlightJoint(index.isValid() ? index.row() : -1);
+    };
+    connect(dhView_->selectionModel(), &QItemSelectionModel::currentChanged, this, highlight);
+    connect(inertialView_->selectionModel(), &QItemSelectionModel::currentChanged, this, highlight);
+}
+
+void MainWindow::buildCentre() {
+    auto* centre = new QWidget(this);
+    auto* layout = new QVBoxLayout(centre);
+    layout->setContentsMargins(0, 0, 0, 0);
+    auto* bar = new QToolBar(centre);
+    view_ = new SceneView(centre);
+    bar->addAction(tr("Fit"), view_, &SceneView::fit)->setShortcut(Qt::Key_F);
+    for (const char* name : {"front", "side", "top", "iso"})
+        bar->addAction(tr(name), this, [this, name] { view_->setStandardView(name); });
+    bar->addSeparator();
+    auto toggle = [&](const QString& text, bool on, auto slot) {
+        QAction* a = bar->addAction(text);
+        a->setCheckable(true);
+        a->setChecked(on);
+        connect(a, &QAction::toggled, view_, slot);
+    };
+    toggle(tr("frames"), true, &SceneView::setShowFrames);
+    toggle(tr("COMs"), true, &SceneView::setShowComs);
+    toggle(tr("trail"), true, &SceneView::setShowTrail);
+    playback_ = new PlaybackBar(centre);
+    layout->addWidget(bar);
+    layout->addWidget(view_, 1);
+    layout->addWidget(playback_);
+    setCentralWidget(centre);
+
+    connect(view_, &SceneView::jointClicked, this, [this](int joint) {
+        if (joint >= 0 && joint < joints_->rowCount()) {
+            editorTabs_->setCurrentIndex(0);
+            dhView_->setCurrentIndex(joints_->index(joint, JointTableModel::A));
+        }
+    });
+    connect(view_, &SceneView::jointHovered, this, [this](int joint) {
+        if (joint >= 0 && joint < joints_->rowCount()) dhView_->selectRow(joint);
+        view_->highlightJoint(joint);
+    });
+}
+
+void MainWindow::buildDocks() {
+    modelDock_ = new QDockWidget(tr("Model"), this);
+    modelDock_->setObjectName("model");
+    auto* modelPane = new QWidget(modelDock_);
+    auto* modelLayout = new QVBoxLayout(modelPane);
+    modelLayout->setContentsMargins(2, 2, 2, 2);
+    modelLayout->addWidget(editorTabs_, 1);
+    modelLayout->addWidget(new QLabel(tr("Checks (errors keep the last valid model on screen):"), modelPane));
+    modelLayout->addWidget(diagnostics_);
+    modelDock_->setWidget(modelPane);
+    addDockWidget(Qt::LeftDockWidgetArea, modelDock_);
+
+    auto* derivationDock = new QDockWidget(tr("Derivation"), this);
+    derivationDock->setObjectName("derivation");
+    auto* dpane = new QWidget(derivationDock);
+    auto* dlayout = new QVBoxLayout(dpane);
+    dlayout->setContentsMargins(2, 2, 2, 2);
+    derivation_ = new DerivationPanel(dpane);
+    auto* stepBar = new QHBoxLayout;
+    auto* prev = new QPushButton(tr("◀ Previous step"), dpane);
+    auto* next = new QPushButton(tr("Next step ▶"), dpane);
+    auto* stepLabel = new QLabel(tr("step 0 of 8"), dpane);
+    connect(prev, &QPushButton::clicked, derivation_, &DerivationPanel::previousStep);
+    connect(next, &QPushButton::clicked, derivation_, &DerivationPanel::nextStep);
+    connect(derivation_, &DerivationPanel::stepChanged, stepLabel, [stepLabel](int s) { stepLabel->setText(tr("step %1 of 8").arg(s)); });
+    stepBar->addWidget(prev);
+    stepBar->addWidget(stepLabel);
+    stepBar->addWidget(next);
+    dlayout->addLayout(stepBar);
+    dlayout->addWidget(derivation_, 1);
+    // Two renderings of the same steps: typeset as a textbook prints it, and as plain text
+    // (searchable, copyable). They follow each other's step.
+    typeset_ = new DerivationView(derivationDock);
+    connect(derivation_, &DerivationPanel::stepChanged, typeset_, [this](int s) {
+        if (typeset_->step() != s) typeset_->showStep(s);
+    });
+    connect(typeset_, &DerivationView::stepChanged, derivation_, [this](int s) {
+        if (derivation_->step() != s) derivation_->showStep(s);
+    });
+    auto* derivationTabs = new QTabWidget(derivationDock);
+    derivationTabs->addTab(typeset_, tr("Typeset"));
+    derivationTabs->addTab(dpane, tr("Text"));
+    derivationDock->setWidget(derivationTabs);
+    addDockWidget(Qt::RightDockWidgetArea, derivationDock);
+
+    auto* plotDock = new QDockWidget(tr("Plots"), this);
+    plotDock->setObjectName("plots");
+    bottomTabs_ = new QTabWidget(plotDock);
+    energy_ = new TrajectoryChart(TrajectoryChart::Kind::Energy, bottomTabs_);
+    jointsChart_ = new TrajectoryChart(TrajectoryChart::Kind::Joints, bottomTabs_);
+    teach_ = new TeachPanel(bottomTabs_);
+    workPrecision_ = new WorkPrecisionPane(bottomTabs_);
+    bottomTabs_->addTab(energy_, tr("Energy"));
+    bottomTabs_->addTab(jointsChart_, tr("Joints q, dq/dt"));
+    bottomTabs_->addTab(teach_, tr("Teach"));
+    bottomTabs_->addTab(workPrecision_, tr("Work–precision"));
+    plotDock->setWidget(bottomTabs_);
+    addDockWidget(Qt::BottomDockWidgetArea, plotDock);
+    resizeDocks({modelDock_, derivationDock}, {380, 360}, Qt::Horizontal);
+    resizeDocks({plotDock}, {230}, Qt::Vertical);
+
+    for (TrajectoryChart* chart : {energy_, jointsChart_})
+        connect(chart, &TrajectoryChart::timePicked, playback_, [this](double t) {
+            playback_->pause();
+            playback_->setTime(t);
+        });
+    connect(teach_, &TeachPanel::poseChanged, this, [this](const Eigen::VectorXd& q) {
+        if (!teaching_ || !view_) return;
+        view_->setPose(q, playback_->time());
+    });
+    connect(bottomTabs_, &QTabWidget::currentChanged, this, [this](int index) {
+        teaching_ = bottomTabs_->widget(index) == teach_;
+        if (teaching_) {
+            playback_->pause();
+            view_->setPose(teach_->pose(), playback_->time());
+        } else {
+            showTime(playback_->time());
+        }
+    });
+}
+
+void MainWindow::buildMenus() {
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->addAction(tr("&Open…"), QKeySequence::Open, this, &MainWindow::open);
+    QMenu* examples = file->addMenu(tr("Examples"));
+    for (const QString& name : QDir(":/examples").entryList({"*.json"}, QDir::Files, QDir::Name))
+        examples->addAction(name, this, [this, name] {
+            if (maybeSave()) openFile(":/examples/" + name);
+        });
+    recentMenu_ = file->addMenu(tr("Recent files"));
+    rebuildRecentMenu();
+    file->addAction(tr("&Save"), QKeySequence::Save, this, &MainWindow::save);
+    file->addAction(tr("Save &as…"), QKeySequence::SaveAs, this, &MainWindow::saveAs);
+    file->addSeparator();
+    QMenu* exports = file->addMenu(tr("Export"));
+    exports->addAction(tr("Screenshot (PNG)…"), this, &MainWindow::exportScreenshot);
+    exports->addAction(tr("Plot (PNG, SVG or CSV)…"), this, &MainWindow::exportPlot);
+    exports->addAction(tr("Derivation (LaTeX or text)…"), this, &MainWindow::exportDerivation);
+    exports->addAction(tr("Animation (MP4, WebM, GIF)…"), this, &MainWindow::exportAnimation);
+    file->addSeparator();
+    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    QAction* undo = doc_.undoStack()->createUndoAction(this, tr("&Undo"));
+    undo->setShortcut(QKeySequence::Undo);
+    QAction* redo = doc_.undoStack()->createRedoAction(this, tr("&Redo"));
+    redo->setShortcut(QKeySequence::Redo);
+    edit->addAction(undo);
+    edit->addAction(redo);
+
+    QMenu* sim = menuBar()->addMenu(tr("&Simulation"));
+    sim->addAction(tr("Play / pause"), playback_, &PlaybackBar::togglePlay);
+    sim->addAction(tr("Restart"), playback_, &PlaybackBar::restart);
+    QMenu* ghost = sim->addMenu(tr("Ghost run"));
+    auto* group = new QActionGroup(this);
+    for (const QString& name : {QString(), QString("euler"), QString("midpoint"), QString("rk4"), QString("symplectic_euler"), QString("dopri5 1e-3")}) {
+        QAction* a = ghost->addAction(name.isEmpty() ? tr("none") : name, this, [this, name] { setGhostIntegrator(name); });
+        a->setCheckable(true);
+        a->setChecked(name.isEmpty());
+        group->addAction(a);
+    }
+
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    QAction* present = view->addAction(tr("Presentation mode"), this, [this] { setPresentationMode(!presenting_); });
+    present->setShortcut(Qt::Key_F11);
+    view->addAction(tr("Fit view"), view_, &SceneView::fit);
+
+    auto* tools = addToolBar(tr("Main"));
+    tools->setObjectName("main");
+    tools->addAction(tr("Open"), this, &MainWindow::open);
+    tools->addAction(tr("Save"), this, &MainWindow::save);
+    tools->addAction(undo);
+    tools->addAction(redo);
+    tools->addSeparator();
+    tools->addAction(tr("▶ Play"), playback_, &PlaybackBar::togglePlay);
+    tools->addAction(tr("Teach"), this, [this] { bottomTabs_->setCurrentWidget(teach_); });
+    tools->addAction(tr("Present"), this, [this] { setPresentationMode(!presenting_); });
+}
+
+// ---------------------------------------------------------------- document → views
+
+void MainWindow::documentChanged() {
+    const std::string convention = doc_.value("/robot/convention").is_string() ? doc_.value("/robot/convention").get<std::string>() : "standard";
+    convention_->setCurrentIndex(convention == "modified" ? 1 : 0);
+    if (!jsonEdit_->hasFocus()) jsonEdit_->setPlainText(QString::fromStdString(doc_.text()));
+    diagnostics_->clear();
+    for (const Diagnostic& d : doc_.diagnostics()) {
+        auto* item = new QListWidgetItem(QString::fromStdString(d.toString()), diagnostics_);
+        item->setForeground(d.severity == Severity::Error ? QColor(180, 0, 0) : QColor(140, 100, 0));
+    }
+    if (doc_.diagnostics().empty()) new QListWidgetItem(tr("no errors, no warnings"), diagnostics_);
+    updateTitle();
+}
+
+void MainWindow::validSceneChanged() {
+    const Scene& scene = doc_.validScene();
+    live_.request(scene);
+    if (!ghostIntegrator_.isEmpty()) ghostLive_.request(scene);
+    derivation_->setScene(scene);
+    typeset_->setScene(scene);
+    teach_->setScene(scene);
+    workPrecision_->setScene(scene);
+}
+
+void MainWindow::showResult(std::shared_ptr<const LiveResult> result) {
+    if (!result->visual || result->simulation.trajectory.size() == 0) {
+        status_->setText(tr("Simulation failed: %1").arg(QString::fromStdString(result->error)));
+        return;
+    }
+    result_ = result;
+    const Trajectory& traj = result->simulation.trajectory;
+    sampler_ = std::make_unique<TrajectorySampler>(traj);
+    q_.resize(traj.n);
+    qd_.resize(traj.n);
+    // The end effector at every sample, for the trail.
+    effectorPath_.clear();
+    VisualScene& visual = *result->visual;
+    if (visual.endEffector >= 0) {
+        effectorPath_.reserve(traj.size());
+        for (std::size_t k = 0; k < traj.size(); ++k) {
+            visual.pose(traj.q[k], traj.t[k]);
+            effectorPath_.push_back(visual.endEffectorPosition());
+        }
+    }
+    const int structure = result->scene->dof();
+    const QString name = QString::fromStdString(result->scene->name);
+    const bool refit = structure != shownStructure_ || name != shownName_;
+    shownStructure_ = structure;
+    shownName_ = name;
+    view_->setVisualScene(result->visual, refit);
+    energy_->setTrajectory(traj);
+    jointsChart_->setTrajectory(traj);
+    if (ghost_ && ghost_->simulation.trajectory.size() > 0) energy_->setGhost(&ghost_->simulation.trajectory, ghostIntegrator_);
+    playback_->setRange(sampler_->startTime(), sampler_->endTime());
+    showTime(playback_->time());
+    status_->setText(statusText());
+    emit resultShown(result->request);
+}
+
+void MainWindow::showGhost(std::shared_ptr<const LiveResult> result) {
+    if (ghostIntegrator_.isEmpty() || !result->visual || result->simulation.trajectory.size() == 0) return;
+    ghost_ = result;
+    ghostSampler_ = std::make_unique<TrajectorySampler>(ghost_->simulation.trajectory);
+    view_->setGhost(ghost_->visual);
+    energy_->setGhost(&ghost_->simulation.trajectory, ghostIntegrator_);
+    showTime(playback_->time());
+}
+
+void MainWindow::showTime(double t) {
+    if (!sampler_ || !result_) return;
+    sampler_->sample(t, q_, qd_);
+    if (!teaching_) {
+        std::vector<Eigen::Vector3d> trail;
+        if (!effectorPath_.empty()) {
+            const Trajectory& tr = result_->simulation.trajectory;
+            const auto from = std::lower_bound(tr.t.begin(), tr.t.end(), t - kTrailSeconds) - tr.t.begin();
+            const auto to = std::upper_bound(tr.t.begin(), tr.t.end(), t) - tr.t.begin();
+            trail.assign(effectorPath_.begin() + from, effectorPath_.begin() + to);
+        }
+        view_->setPose(q_, t, &trail);
+        if (!trail.empty() || result_->visual->endEffector >= 0) {
+            // The trail ends at the current (interpolated) position of the end effector.
+            trail.push_back(result_->visual->endEffectorPosition());
+            view_->setPose(q_, t, &trail);
+        }
+        if (ghostSampler_) {
+            Eigen::VectorXd gq(ghostSampler_->dof()), gqd(ghostSampler_->dof());
+            ghostSampler_->sample(t, gq, gqd);
+            view_->setGhostPose(gq, t);
+        }
+    }
+    energy_->setCursorTime(t);
+    jointsChart_->setCursorTime(t);
+}
+
+QString MainWindow::statusText() const {
+    if (!result_) return tr("simulating…");
+    const SimulationStats& s = result_->simulation.stats;
+    const SimulationSettings& settings = result_->scene->simulation;
+    const bool fixed = s.dt > 0;
+    const QString tolerance = fixed ? tr("dt %1 s").arg(s.dt) : tr("tol %1").arg(settings.absTol);
+    const double realTime = s.cpuSeconds > 0 ? s.simulatedSeconds / s.cpuSeconds : 0;
+    int warnings = 0;
+    for (const Diagnostic& d : doc_.diagnostics()) warnings += d.severity == Severity::Warning;
+    QString text = tr("%1 · %2 · %3 steps · |ΔE|/E %4 · %5× real time · simulated in %6 ms")
+                       .arg(QString::fromStdString(s.integrator), tolerance)
+                       .arg(s.steps)
+                       .arg(s.maxRelEnergyError, 0, 'g', 2)
+                       .arg(realTime, 0, 'f', 0)
+                       .arg(result_->workerSeconds * 1000, 0, 'f', 1);
+    if (warnings) text += tr(" · %n warning(s)", "", warnings);
+    if (doc_.hasErrors()) text += tr(" · the model has errors: showing the last valid one");
+    if (!result_->error.empty()) text += " · " + QString::fromStdString(result_->error).trimmed();
+    return text;
+}
+
+QStringList MainWindow::diagnosticLines() const {
+    QStringList lines;
+    for (int i = 0; i < diagnostics_->count(); ++i) lines << diagnostics_->item(i)->text();
+    return lines;
+}
+
+void MainWindow::showDerivationStep(int n) { derivation_->showStep(n); }
+
+void MainWindow::teach(const Eigen::VectorXd& q) {
+    bottomTabs_->setCurrentWidget(teach_);
+    teach_->setPose(q);
+    view_->setPose(teach_->pose(), playback_->time());
+}
+
+void MainWindow::setGhostIntegrator(const QString& integrator) {
+    ghostIntegrator_ = integrator;
+    ghost_.reset();
+    ghostSampler_.reset();
+    view_->setGhost(nullptr);
+    energy_->setGhost(nullptr, {});
+    if (integrator.isEmpty()) return;
+    SimulationSettings settings = doc_.validScene().simulation;
+    const QStringList words = integrator.split(' ');
+    settings.integrator = words[0].toStdString();
+    if (words.size() > 1) settings.absTol = settings.relTol = words[1].toDouble();
+    if (settings.integrator == "euler" || settings.integrator == "midpoint" || settings.integrator == "rk4" || settings.integrator == "symplectic_euler")
+        settings.dt = 0.01;
+    ghostLive_.setSettingsOverride(settings);
+    ghostLive_.requestNow(doc_.validScene());
+}
+
+void MainWindow::setPresentationMode(bool on) {
+    presenting_ = on;
+    modelDock_->setVisible(!on);
+    QFont font = QApplication::font();
+    static const double base = font.pointSizeF() > 0 ? font.pointSizeF() : 10;
+    font.setPointSizeF(on ? base * 1.6 : base);
+    QApplication::setFont(font);
+    derivation_->setZoom(on ? 1.6 : 1.0);
+    typeset_->setZoom(on ? 1.6 : 1.0);
+    on ? showFullScreen() : showNormal();
+}
+
+void MainWindow::keyPressEvent(QKeyEvent* e) {
+    switch (e->key()) {
+        case Qt::Key_Space: playback_->togglePlay(); return;
+        case Qt::Key_Right: derivation_->nextStep(); return;
+        case Qt::Key_Left: derivation_->previousStep(); return;
+        case Qt::Key_F: view_->fit(); return;
+        case Qt::Key_Plus: playback_->faster(); return;
+        case Qt::Key_Minus: playback_->slower(); return;
+        case Qt::Key_Escape:
+            if (presenting_) setPresentationMode(false);
+            return;
+        default: QMainWindow::keyPressEvent(e);
+    }
+}
+
+// ---------------------------------------------------------------- files
+
+bool MainWindow::openFile(const QString& path, QStringList* errors, bool quiet) {
+    QStringList found;
+    typeset_->cancel();
+    derivation_->cancel();  // loading checks the scene under the GiNaC lock
+    if (!doc_.loadFile(path, &found)) {
+        if (errors) *errors = found;
+        if (!quiet) {
+            QMessageBox box(QMessageBox::Warning, tr("Cannot open %1").arg(QFileInfo(path).fileName()),
+                            tr("The scene has errors; the open scene is kept."), QMessageBox::Ok, this);
+            box.setDetailedText(found.join('\n'));
+            box.setInformativeText(found.mid(0, 6).join('\n'));
+            box.exec();
+        }
+        statusBar()->showMessage(tr("%1: %n error(s), nothing changed", "", found.size()).arg(path), 8000);
+        return false;
+    }
+    if (!path.startsWith(":/")) addRecent(QFileInfo(path).absoluteFilePath());
+    playback_->setTime(0);
+    updateTitle();
+    return true;
+}
+
+bool MainWindow::saveTo(const QString& path, QString* error) {
+    try {
+        doc_.saveFile(path);
+    } catch (const std::exception& e) {
+        if (error) *error = QString::fromUtf8(e.what());
+        return false;
+    }
+    addRecent(QFileInfo(path).absoluteFilePath());
+    discardRecovery();
+    updateTitle();
+    return true;
+}
+
+void MainWindow::open() {
+    if (!maybeSave()) return;
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open scene"), QFileInfo(doc_.path()).absolutePath(), sceneFilter());
+    if (!path.isEmpty()) openFile(path);
+}
+
+bool MainWindow::save() {
+    if (doc_.path().isEmpty()) return saveAs();
+    QString error;
+    if (!saveTo(doc_.path(), &error)) {
+        QMessageBox::critical(this, tr("Save"), error);
+        return false;
+    }
+    return true;
+}
+
+bool MainWindow::saveAs() {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save scene as"), doc_.path(), sceneFilter());
+    if (path.isEmpty()) return false;
+    QString error;
+    if (!saveTo(path, &error)) {
+        QMessageBox::critical(this, tr("Save"), error);
+        return false;
+    }
+    return true;
+}
+
+bool MainWindow::maybeSave() {
+    if (!doc_.isModified() || !askBeforeClosing_) return true;
+    const auto answer = QMessageBox::warning(this, tr("Unsaved changes"), tr("The scene has unsaved changes. Save them?"),
+                                             QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+    if (answer == QMessageBox::Save) return save();
+    return answer == QMessageBox::Discard;
+}
+
+void MainWindow::closeEvent(QCloseEvent* e) {
+    if (!maybeSave()) {
+        e->ignore();
+        return;
+    }
+    discardRecovery();
+    e->accept();
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* e) {
+    if (e->mimeData()->hasUrls()) e->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* e) {
+    const QList<QUrl> urls = e->mimeData()->urls();
+    if (!urls.isEmpty() && urls.front().isLocalFile() && maybeSave()) openFile(urls.front().toLocalFile());
+}
+
+void MainWindow::updateTitle() {
+    const QString name = doc_.path().isEmpty() ? QString::fromStdString(doc_.validScene().name) : QFileInfo(doc_.path()).fileName();
+    setWindowTitle(tr("%1%2 — LagrangeLab").arg(name, doc_.isModified() ? "*" : ""));
+}
+
+void MainWindow::addRecent(const QString& path) {
+    QSettings settings("LagrangeLab", "LagrangeLab");
+    QStringList recent = settings.value("recent").toStringList();
+    recent.removeAll(path);
+    recent.prepend(path);
+    settings.setValue("recent", recent.mid(0, kMaxRecent));
+    rebuildRecentMenu();
+}
+
+void MainWindow::rebuildRecentMenu() {
+    recentMenu_->clear();
+    QSettings settings("LagrangeLab", "LagrangeLab");
+    for (const QString& path : settings.value("recent").toStringList())
+        recentMenu_->addAction(path, this, [this, path] {
+            if (maybeSave()) openFile(path);
+        });
+    recentMenu_->setEnabled(!recentMenu_->isEmpty());
+}
+
+// ---------------------------------------------------------------- recovery
+
+QString MainWindow::recoveryDirectory() {
+    const QByteArray env = qgetenv("LAGRANGELAB_RECOVERY_DIR");
+    if (!env.isEmpty()) return QString::fromLocal8Bit(env);
+    return QStandardPaths::writableLocation(QStandardPaths::GenericDataLocation) + "/lagrangelab";
+}
+
+QString MainWindow::recoveryPath() { return recoveryDirectory() + "/recovery.json"; }
+
+bool MainWindow::hasRecovery() { return QFile::exists(recoveryPath()); }
+
+void MainWindow::writeRecovery() {
+    QDir().mkpath(recoveryDirectory());
+    // The recovery copy names the file it belongs to, so a restore can keep saving there.
+    SceneJson wrapper = {{"recovery_of", doc_.path().toStdString()}, {"scene", doc_.json()}};
+    try {
+        saveFileAtomically(recoveryPath().toStdString(), wrapper.dump(2), Backup::None);
+    } catch (const std::exception& e) {
+        statusBar()->showMessage(tr("Autosave failed: %1").arg(QString::fromUtf8(e.what())), 8000);
+    }
+}
+
+void MainWindow::discardRecovery() { QFile::remove(recoveryPath()); }
+
+bool MainWindow::restoreRecovery() {
+    QFile file(recoveryPath());
+    if (!file.open(QIODevice::ReadOnly)) return false;
+    SceneJson wrapper;
+    try {
+        wrapper = SceneJson::parse(file.readAll().toStdString());
+    } catch (const std::exception&) {
+        return false;
+    }
+    if (!wrapper.contains("scene")) return false;
+    const QString original = QString::fromStdString(wrapper.value("recovery_of", std::string()));
+    // The original file (or an empty document) first, then the recovered JSON as an
+    // unsaved, undoable edit on top: saving writes it back to the original.
+    QStringList errors;
+    if (original.isEmpty() || !doc_.loadFile(original, &errors)) doc_.setPath(original);
+    doc_.replace(wrapper["scene"], tr("Restore unsaved edits"));
+    updateTitle();
+    return true;
+}
+
+void MainWindow::offerRecovery() {
+    if (!hasRecovery()) return;
+    const auto answer = QMessageBox::question(this, tr("Restore unsaved work?"),
+                                              tr("LagrangeLab did not close normally. Restore the edits that were not saved?"),
+                                              QMessageBox::Yes | QMessageBox::No);
+    if (answer == QMessageBox::Yes)
+        restoreRecovery();
+    else
+        discardRecovery();
+}
+
+// ---------------------------------------------------------------- exports
+
+QImage MainWindow::screenshot() {
+    // The window as the screen shows it: QWidget::grab() would miss the GL view's overlay.
+    if (QScreen* screen = windowHandle() ? windowHandle()->screen() : QGuiApplication::primaryScreen()) {
+        const QPixmap pixmap = screen->grabWindow(winId());
+        if (!pixmap.isNull()) return pixmap.toImage();
+    }
+    return grab().toImage();
+}
+
+void MainWindow::exportScreenshot() {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save screenshot"), "screenshot.png", tr("PNG images (*.png)"));
+    if (path.isEmpty()) return;
+    QByteArray bytes;
+    QBuffer buffer(&bytes);
+    buffer.open(QIODevice::WriteOnly);
+    screenshot().save(&buffer, "PNG");
+    try {
+        saveFileAtomically(path.toStdString(), bytes.toStdString(), Backup::None);
+    } catch (const std::exception& e) {
+        QMessageBox::critical(this, tr("Screenshot"), QString::fromUtf8(e.what()));
+    }
+}
+
+void MainWindow::exportPlot() {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export plot"), "energy.png", tr("PNG (*.png);;SVG (*.svg);;CSV (*.csv)"));
+    if (path.isEmpty()) return;
+    TrajectoryChart* chart = bottomTabs_->currentWidget() == jointsChart_ ? jointsChart_ : energy_;
+    try {
+        if (path.endsWith(".csv", Qt::CaseInsensitive))
+            chart->exportCsv(path);
+        else
+            chart->exportImage(path);
+    } catch (const std::exception& e) {
+        QMessageBox::critical(this, tr("Export plot"), QString::fromUtf8(e.what()));
+    }
+}
+
+void MainWindow::exportDerivation() {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export derivation"), "derivation.tex", tr("LaTeX (*.tex);;Text (*.txt)"));
+    if (path.isEmpty()) return;
+    DocumentRequest request;
+    request.format = path.endsWith(".tex", Qt::CaseInsensitive) ? symbolic::DocumentFormat::Latex : symbolic::DocumentFormat::Text;
+    try {
+        saveFileAtomically(path.toStdString(), deriveDocument(doc_.validScene(), request).document, Backup::None);
+    } catch (const std::exception& e) {
+        QMessageBox::critical(this, tr("Export derivation"), QString::fromUtf8(e.what()));
+    }
+}
+
+void MainWindow::exportAnimation() {
+    if (!result_) return;
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export animation"), "animation.mp4", tr("MP4 (*.mp4);;WebM (*.webm);;GIF (*.gif)"));
+    if (path.isEmpty()) return;
+    ExportSettings settings;
+    try {
+        settings.out = path.toStdString();
+        settings.kind = outputKindFor(settings.out);
+    } catch (const std::exception& e) {
+        QMessageBox::critical(this, tr("Export animation"), QString::fromUtf8(e.what()));
+        return;
+    }
+    settings.duration = sampler_->endTime() - sampler_->startTime();
+    settings.speed = playback_->speed();
+    auto* dialog = new QProgressDialog(tr("Rendering %1…").arg(QFileInfo(path).fileName()), tr("Cancel"), 0, 1000, this);
+    dialog->setWindowModality(Qt::WindowModal);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    auto cancel = std::make_shared<std::atomic<bool>>(false);
+    connect(dialog, &QProgressDialog::canceled, this, [cancel] { cancel->store(true); });
+    auto result = result_;
+    QThreadPool::globalInstance()->start([this, dialog, cancel, result, settings] {
+        QString error;
+        try {
+            ll::ui::exportAnimation(*result->scene, result->simulation.trajectory, settings, [dialog](double f) {
+                QMetaObject::invokeMethod(dialog, [dialog, f] { dialog->setValue(static_cast<int>(f * 1000)); }, Qt::QueuedConnection);
+            }, cancel.get());
+        } catch (const std::exception& e) {
+            error = QString::fromUtf8(e.what());
+        }
+        QMetaObject::invokeMethod(dialog, [this, dialog, error] {
+            dialog->close();
+            if (!error.isEmpty() && error != "cancelled") QMessageBox::critical(this, tr("Export animation"), error);
+        }, Qt::QueuedConnection);
+    });
+    dialog->show();
+}
+
+}  // namespace ll::ui

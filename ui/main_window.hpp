@@ -1,0 +1,153 @@
+#pragma once
+// The LagrangeLab window: the model editor (left), the 3D view with playback (centre),
+// the derivation (right), the plots, teach mode and work–precision (bottom) and a status
+// line. Every edit goes through the SceneDocument's undo stack; each valid edit is
+// re-simulated (LiveSimulation) and re-derived (DerivationPanel) in worker threads, and
+// the newest result replaces the views. Files: open, save, save as (atomic, PATH.bak),
+// recent files, the example gallery, drag and drop, an autosaved recovery copy offered
+// back after a crash, a question before unsaved work is closed.
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include <QMainWindow>
+#include <QStringList>
+#include <QTimer>
+
+#include "core/scene/trajectory_sampler.hpp"
+#include "ui/live_simulation.hpp"
+#include "ui/scene_document.hpp"
+
+class QAction;
+class QLabel;
+class QListWidget;
+class QMenu;
+class QPlainTextEdit;
+class QProgressBar;
+class QTabWidget;
+class QTableView;
+class QComboBox;
+
+namespace ll::ui {
+
+class DerivationPanel;
+class DerivationView;
+class FieldListModel;
+class JointTableModel;
+class PlaybackBar;
+class SceneView;
+class TeachPanel;
+class TrajectoryChart;
+class WorkPrecisionPane;
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    explicit MainWindow(QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    // Opens `path` (a file or a ":/examples/…" resource). On failure the errors are shown
+    // (a dialog unless `quiet`), returned in *errors, and the open document is kept.
+    bool openFile(const QString& path, QStringList* errors = nullptr, bool quiet = false);
+    bool saveTo(const QString& path, QString* error = nullptr);
+
+    // Autosave: where the recovery copy is written (default: the app's data folder, or
+    // $LAGRANGELAB_RECOVERY_DIR); whether one is there; restore it as unsaved edits.
+    static QString recoveryDirectory();
+    static QString recoveryPath();
+    static bool hasRecovery();
+    bool restoreRecovery();
+    void writeRecovery();
+    void discardRecovery();
+    // Asks whether to restore a recovery copy left by a crash (when there is one).
+    void offerRecovery();
+
+    // Screenshot of the whole window, GL view included.
+    QImage screenshot();
+    void setAskBeforeClosing(bool on) { askBeforeClosing_ = on; }
+
+    // For tests and benchmarks.
+    SceneDocument& document() { return doc_; }
+    JointTableModel& jointModel() { return *joints_; }
+    SceneView& sceneView() { return *view_; }
+    DerivationPanel& derivationPanel() { return *derivation_; }
+    TrajectoryChart& energyChart() { return *energy_; }
+    PlaybackBar& playback() { return *playback_; }
+    TeachPanel& teachPanel() { return *teach_; }
+    LiveSimulation& liveSimulation() { return live_; }
+    const LiveResult* result() const { return result_.get(); }
+    QString statusText() const;
+    QStringList diagnosticLines() const;
+    // Shows `n` 0..8 of the derivation; poses the robot (teach mode).
+    void showDerivationStep(int n);
+    void teach(const Eigen::VectorXd& q);
+    // Runs a ghost with `integrator` ("" removes it).
+    void setGhostIntegrator(const QString& integrator);
+    void setPresentationMode(bool on);
+
+signals:
+    // A simulation result is on screen (the 3D view, plots and playback updated).
+    void resultShown(int request);
+
+protected:
+    void closeEvent(QCloseEvent* e) override;
+    void dragEnterEvent(QDragEnterEvent* e) override;
+    void dropEvent(QDropEvent* e) override;
+    void keyPressEvent(QKeyEvent* e) override;
+
+private:
+    void buildEditor();
+    void buildCentre();
+    void buildDocks();
+    void buildMenus();
+    void documentChanged();
+    void validSceneChanged();
+    void showResult(std::shared_ptr<const LiveResult> result);
+    void showGhost(std::shared_ptr<const LiveResult> result);
+    void showTime(double t);
+    void updateTitle();
+    void addRecent(const QString& path);
+    void rebuildRecentMenu();
+    bool maybeSave();
+    void open();
+    bool save();
+    bool saveAs();
+    void exportScreenshot();
+    void exportPlot();
+    void exportDerivation();
+    void exportAnimation();
+
+    SceneDocument doc_;
+    LiveSimulation live_, ghostLive_;
+    std::shared_ptr<const LiveResult> result_, ghost_;
+    std::unique_ptr<TrajectorySampler> sampler_, ghostSampler_;
+    std::vector<Eigen::Vector3d> effectorPath_;  // end effector at every sample
+    Eigen::VectorXd q_, qd_;
+    QString ghostIntegrator_;
+
+    JointTableModel* joints_ = nullptr;
+    FieldListModel *parameters_ = nullptr, *initial_ = nullptr, *solver_ = nullptr, *lagrangian_ = nullptr;
+    QTableView *dhView_ = nullptr, *inertialView_ = nullptr;
+    QComboBox* convention_ = nullptr;
+    QPlainTextEdit* jsonEdit_ = nullptr;
+    QListWidget* diagnostics_ = nullptr;
+    SceneView* view_ = nullptr;
+    PlaybackBar* playback_ = nullptr;
+    DerivationPanel* derivation_ = nullptr;
+    DerivationView* typeset_ = nullptr;
+    TrajectoryChart *energy_ = nullptr, *jointsChart_ = nullptr;
+    TeachPanel* teach_ = nullptr;
+    WorkPrecisionPane* workPrecision_ = nullptr;
+    QTabWidget *editorTabs_ = nullptr, *bottomTabs_ = nullptr;
+    QLabel* status_ = nullptr;
+    QMenu* recentMenu_ = nullptr;
+    QDockWidget *modelDock_ = nullptr;
+    QTimer autosave_;
+    bool askBeforeClosing_ = true;
+    bool presenting_ = false;
+    bool teaching_ = false;
+    int shownStructure_ = -1;  // joints/coordinates of the scene on screen (a change refits the camera)
+    QString shownName_;
+};
+
+}  // namespace ll::ui

@@ -1,0 +1,178 @@
+#include "ui/scene_document.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include <QFile>
+#include <QUndoCommand>
+
+#include "core/io/atomic_file.hpp"
+#include "core/io/scene_file.hpp"
+#include "core/pipeline/scene_check.hpp"
+
+namespace ll::ui {
+
+// One edit: the whole JSON before and after (a scene is a few kilobytes, so a snapshot
+// is cheaper to get right than an inverse per kind of edit).
+class SceneEditCommand : public QUndoCommand {
+public:
+    SceneEditCommand(SceneDocument& doc, SceneJson before, SceneJson after, const QString& text)
+        : QUndoCommand(text), doc_(doc), before_(std::move(before)), after_(std::move(after)) {}
+    void undo() override { doc_.setJson(before_); }
+    void redo() override { doc_.setJson(after_); }
+
+private:
+    SceneDocument& doc_;
+    SceneJson before_, after_;
+};
+
+SceneDocument::SceneDocument(QObject* parent) : QObject(parent) { checker_.setMaxThreadCount(1); }
+
+SceneDocument::~SceneDocument() { checker_.waitForDone(); }
+
+namespace {
+
+// Whole-text problems (JSON syntax, unknown keys, bad values) as the loader reports them,
+// or the errors of checkScene, each "field: message".
+std::vector<Diagnostic> diagnose(const std::string& text, Scene* scene) {
+    try {
+        Scene parsed = parseScene(text);
+        std::vector<Diagnostic> found = checkScene(parsed);
+        if (scene) *scene = std::move(parsed);
+        return found;
+    } catch (const InputError& e) {
+        return e.diagnostics();
+    } catch (const std::exception& e) {
+        return {Diagnostic{Severity::Error, "scene", e.what()}};
+    }
+}
+
+}  // namespace
+
+bool SceneDocument::loadText(const std::string& text, const QString& path, QStringList* errors) {
+    const QString prefix = path.isEmpty() ? QString() : path + ": ";
+    Scene scene;
+    const std::vector<Diagnostic> found = diagnose(text, &scene);
+    if (ll::hasErrors(found)) {
+        if (errors)
+            for (const Diagnostic& d : found)
+                if (d.severity == Severity::Error) *errors << prefix + QString::fromStdString(d.field + ": " + d.message);
+        return false;
+    }
+    SceneJson parsed;
+    try {
+        parsed = SceneJson::parse(text);
+    } catch (const std::exception& e) {
+        if (errors) *errors << prefix + QString::fromUtf8(e.what());
+        return false;
+    }
+    undo_.clear();
+    path_ = path;
+    json_ = parsed;
+    validated_ = ++revision_;
+    emit changed();
+    accept(found, &scene);
+    undo_.setClean();
+    return true;
+}
+
+bool SceneDocument::loadFile(const QString& path, QStringList* errors) {
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        if (errors) *errors << path + ": " + file.errorString();
+        return false;
+    }
+    const QByteArray bytes = file.readAll();
+    return loadText(bytes.toStdString(), path.startsWith(":/") ? QString() : path, errors);
+}
+
+void SceneDocument::saveFile(const QString& path) {
+    saveFileAtomically(path.toStdString(), text() + "\n", Backup::Keep);
+    path_ = path;
+    undo_.setClean();
+}
+
+SceneJson SceneDocument::value(const std::string& pointer) const {
+    const SceneJson::json_pointer p(pointer);
+    return json_.contains(p) ? json_.at(p) : SceneJson();
+}
+
+void SceneDocument::setValue(const std::string& pointer, const SceneJson& v, const QString& description) {
+    SceneJson after = json_;
+    const SceneJson::json_pointer p(pointer);
+    if (v.is_null()) {
+        if (!after.contains(p)) return;
+        after.at(p.parent_pointer()).erase(p.back());
+    } else {
+        if (after.contains(p) && after.at(p) == v) return;
+        after[p] = v;
+    }
+    replace(after, description);
+}
+
+void SceneDocument::replace(const SceneJson& after, const QString& description) {
+    if (after == json_) return;
+    undo_.push(new SceneEditCommand(*this, json_, after, description));
+}
+
+QString SceneDocument::errorAt(const std::string& field) const {
+    QStringList found;
+    for (const Diagnostic& d : diagnostics_)
+        if (d.field == field) found << QString::fromStdString((d.severity == Severity::Error ? "error: " : "warning: ") + d.message);
+    return found.join('\n');
+}
+
+void SceneDocument::setJson(const SceneJson& json) {
+    json_ = json;
+    ++revision_;
+    emit changed();
+    validate();
+}
+
+void SceneDocument::validate() {
+    const int revision = revision_;
+    checker_.start([self = this, text = json_.dump(), revision] {
+        auto scene = std::make_shared<Scene>();
+        auto found = std::make_shared<std::vector<Diagnostic>>(diagnose(text, scene.get()));
+        QMetaObject::invokeMethod(
+            self,
+            [self, revision, scene, found] {
+                if (revision != self->revision_) return;  // a newer edit is being checked
+                self->validated_ = revision;
+                self->accept(std::move(*found), scene.get());
+            },
+            Qt::QueuedConnection);
+    });
+}
+
+void SceneDocument::accept(std::vector<Diagnostic> diagnostics, Scene* scene) {
+    diagnostics_ = std::move(diagnostics);
+    const bool valid = !ll::hasErrors(diagnostics_);
+    if (valid) {
+        validScene_ = std::move(*scene);
+        ++validRevision_;
+    }
+    emit validated();
+    if (valid) emit validSceneChanged();
+}
+
+QString SceneDocument::display(const SceneJson& v) {
+    if (v.is_string()) return QString::fromStdString(v.get<std::string>());
+    if (v.is_number_integer()) return QString::number(v.get<long long>());
+    if (v.is_number()) return QString::number(v.get<double>(), 'g', 15).replace("e+", "e");
+    if (v.is_null()) return {};
+    return QString::fromStdString(v.dump());
+}
+
+SceneJson SceneDocument::parseCell(const QString& text) {
+    const QString t = text.trimmed();
+    bool ok = false;
+    const long long i = t.toLongLong(&ok);
+    if (ok) return i;
+    const double d = t.toDouble(&ok);
+    if (ok && std::isfinite(d)) return d;
+    return t.toStdString();
+}
+
+}  // namespace ll::ui

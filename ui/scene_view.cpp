@@ -1,0 +1,291 @@
+#include "ui/scene_view.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <QMouseEvent>
+#include <QSurfaceFormat>
+#include <QWheelEvent>
+#include <osg/BlendFunc>
+#include <osg/Depth>
+#include <osg/Material>
+#include <osgUtil/LineSegmentIntersector>
+#include <osgViewer/Viewer>
+
+namespace ll::ui {
+
+namespace {
+
+// What Debian's OSG needs: a compatibility context. Requesting no version gives one
+// on Mesa (a versioned request without DeprecatedFunctions silently gives core 4.5).
+QSurfaceFormat viewFormat() {
+    QSurfaceFormat format;
+    format.setDepthBufferSize(24);
+    format.setStencilBufferSize(8);
+    format.setSamples(0);
+    return format;
+}
+
+osg::Vec3d toOsg(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+
+}  // namespace
+
+SceneView::SceneView(QWidget* parent) : QOpenGLWidget(parent) {
+    setFormat(viewFormat());
+    setMouseTracking(true);
+    setFocusPolicy(Qt::StrongFocus);
+    setMinimumSize(200, 150);
+    viewer_ = new osgViewer::Viewer;
+    viewer_->setThreadingModel(osgViewer::Viewer::SingleThreaded);
+    window_ = viewer_->setUpViewerAsEmbeddedInWindow(0, 0, 640, 480);
+    viewer_->getCamera()->setClearColor(osg::Vec4(0.93f, 0.94f, 0.96f, 1.0f));
+    viewer_->setKeyEventSetsDone(0);
+    root_ = new osg::Group;
+    viewer_->setSceneData(root_);
+}
+
+SceneView::~SceneView() {
+    makeCurrent();
+    viewer_ = nullptr;
+    window_ = nullptr;
+    doneCurrent();
+}
+
+void SceneView::setVisualScene(std::shared_ptr<VisualScene> scene, bool fitCamera) {
+    visual_ = std::move(scene);
+    trail_.clear();
+    rebuild();
+    if (fitCamera) {
+        const CameraSpec::Preset preset = visual_ && looksPlanar(*visual_) ? CameraSpec::Preset::Front : CameraSpec::Preset::Iso;
+        azimuth_ = preset == CameraSpec::Preset::Front ? 0 : 45;
+        elevation_ = preset == CameraSpec::Preset::Front ? 0 : 30;
+        distance_ = 0;
+        pan_.setZero();
+    }
+    applyCamera();
+    update();
+}
+
+void SceneView::rebuild() {
+    root_->removeChildren(0, root_->getNumChildren());
+    osg_.reset();
+    ghost_.reset();
+    if (visual_) {
+        osg_ = std::make_unique<OsgScene>(*visual_, options_);
+        root_->addChild(osg_->root());
+        for (std::size_t i = 0; i < visual_->parts.size(); ++i)
+            if (visual_->parts[i].role == PartRole::CentreOfMass)
+                const_cast<osg::MatrixTransform*>(osg_->partTransform(static_cast<int>(i)))->setNodeMask(coms_ ? ~0u : 0u);
+        if (options_.trail) osg_->setTrail(trail_);
+    }
+    if (ghostVisual_) {
+        OsgSceneOptions ghostOptions;
+        ghostOptions.frames = ghostOptions.frameLabels = ghostOptions.grid = ghostOptions.trail = false;
+        ghost_ = std::make_unique<OsgScene>(*ghostVisual_, ghostOptions);
+        // Translucent: blended, drawn after the opaque robot, not writing depth.
+        osg::StateSet* ss = ghost_->root()->getOrCreateStateSet();
+        ss->setMode(GL_BLEND, osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
+        ss->setAttributeAndModes(new osg::BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA), osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
+        auto* material = new osg::Material;
+        material->setDiffuse(osg::Material::FRONT_AND_BACK, osg::Vec4(0.2f, 0.45f, 0.95f, 0.35f));
+        material->setAmbient(osg::Material::FRONT_AND_BACK, osg::Vec4(0.1f, 0.2f, 0.5f, 0.35f));
+        ss->setAttributeAndModes(material, osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
+        ss->setAttributeAndModes(new osg::Depth(osg::Depth::LESS, 0, 1, false), osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
+        ss->setRenderingHint(osg::StateSet::TRANSPARENT_BIN);
+        root_->addChild(ghost_->root());
+    }
+    applyHighlight();
+}
+
+void SceneView::setPose(const Eigen::VectorXd& q, double t, const std::vector<Eigen::Vector3d>* trail) {
+    if (!visual_ || !osg_ || q.size() != visual_->dof()) return;
+    visual_->pose(q, t);
+    osg_->update(*visual_);
+    if (trail && options_.trail) {
+        trail_ = *trail;
+        osg_->setTrail(trail_);
+    }
+    update();
+}
+
+void SceneView::setGhost(std::shared_ptr<VisualScene> ghost) {
+    ghostVisual_ = std::move(ghost);
+    rebuild();
+    update();
+}
+
+void SceneView::setGhostPose(const Eigen::VectorXd& q, double t) {
+    if (!ghostVisual_ || !ghost_ || q.size() != ghostVisual_->dof()) return;
+    ghostVisual_->pose(q, t);
+    ghost_->update(*ghostVisual_);
+    update();
+}
+
+void SceneView::setShowFrames(bool on) {
+    options_.frames = on;
+    rebuild();
+    update();
+}
+
+void SceneView::setShowComs(bool on) {
+    coms_ = on;
+    rebuild();
+    update();
+}
+
+void SceneView::setShowTrail(bool on) {
+    options_.trail = on;
+    if (!on) trail_.clear();
+    rebuild();
+    update();
+}
+
+void SceneView::highlightJoint(int joint) {
+    if (joint == highlighted_) return;
+    highlighted_ = joint;
+    applyHighlight();
+    update();
+}
+
+void SceneView::applyHighlight() {
+    if (!visual_ || !osg_) return;
+    for (std::size_t i = 0; i < visual_->parts.size(); ++i) {
+        const VisualPart& part = visual_->parts[i];
+        auto* node = const_cast<osg::MatrixTransform*>(osg_->partTransform(static_cast<int>(i)));
+        const bool lit = highlighted_ >= 0 && part.coordinate == highlighted_ && (part.role == PartRole::Joint || part.role == PartRole::Link);
+        if (lit) {
+            auto* material = new osg::Material;
+            material->setDiffuse(osg::Material::FRONT_AND_BACK, osg::Vec4(1.0f, 0.75f, 0.1f, 1.0f));
+            material->setEmission(osg::Material::FRONT_AND_BACK, osg::Vec4(0.45f, 0.3f, 0.0f, 1.0f));
+            node->getOrCreateStateSet()->setAttributeAndModes(material, osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
+        } else if (node->getStateSet()) {
+            node->getStateSet()->removeAttribute(osg::StateAttribute::MATERIAL);
+        }
+    }
+}
+
+int SceneView::jointAt(const QPoint& p) {
+    if (!visual_ || !osg_ || !viewer_) return -1;
+    const double r = devicePixelRatioF();
+    auto picker = osg::ref_ptr<osgUtil::LineSegmentIntersector>(
+        new osgUtil::LineSegmentIntersector(osgUtil::Intersector::WINDOW, p.x() * r, (height() - p.y()) * r));
+    osgUtil::IntersectionVisitor visitor(picker.get());
+    viewer_->getCamera()->accept(visitor);
+    if (!picker->containsIntersections()) return -1;
+    for (const auto& hit : picker->getIntersections()) {
+        for (osg::Node* node : hit.nodePath)
+            for (std::size_t i = 0; i < visual_->parts.size(); ++i)
+                if (node == osg_->partTransform(static_cast<int>(i))) {
+                    const VisualPart& part = visual_->parts[i];
+                    if (part.coordinate >= 0 && (part.role == PartRole::Joint || part.role == PartRole::Link || part.role == PartRole::CentreOfMass))
+                        return part.coordinate;
+                }
+    }
+    return -1;
+}
+
+void SceneView::fit() {
+    distance_ = 0;
+    pan_.setZero();
+    applyCamera();
+    update();
+}
+
+void SceneView::setStandardView(const QString& name) {
+    const CameraSpec spec = parseCameraSpec(name.toStdString());
+    switch (spec.preset) {
+        case CameraSpec::Preset::Front: azimuth_ = 0, elevation_ = 0; break;
+        case CameraSpec::Preset::Side: azimuth_ = 90, elevation_ = 0; break;
+        case CameraSpec::Preset::Top: azimuth_ = 0, elevation_ = 89.9; break;
+        default: azimuth_ = 45, elevation_ = 30; break;
+    }
+    fit();
+}
+
+void SceneView::applyCamera() {
+    if (!visual_ || !viewer_) return;
+    CameraSpec spec;
+    spec.preset = CameraSpec::Preset::Angles;
+    spec.azimuth = azimuth_;
+    spec.elevation = elevation_;
+    spec.distance = distance_;
+    const double aspect = double(std::max(width(), 1)) / std::max(height(), 1);
+    CameraView view = cameraView(*visual_, spec, aspect);
+    if (distance_ <= 0) distance_ = (view.eye - view.centre).norm();
+    view.eye += pan_;
+    view.centre += pan_;
+    const double radius = std::max(visual_->bounds.radius(), 1e-6);
+    view.zNear = std::max(1e-3 * distance_, distance_ - 3 * radius);
+    view.zFar = distance_ + 4 * radius + pan_.norm();
+    applyCameraView(*viewer_->getCamera(), view, aspect);
+}
+
+void SceneView::initializeGL() {}
+
+void SceneView::resizeGL(int w, int h) {
+    const double r = devicePixelRatioF();
+    const int pw = static_cast<int>(w * r), ph = static_cast<int>(h * r);
+    window_->resized(0, 0, pw, ph);
+    window_->getEventQueue()->windowResize(0, 0, pw, ph);
+    viewer_->getCamera()->setViewport(0, 0, pw, ph);
+    applyCamera();
+}
+
+void SceneView::paintGL() {
+    // QOpenGLWidget draws into its own framebuffer object, whose id changes on resize.
+    window_->setDefaultFboId(defaultFramebufferObject());
+    viewer_->frame();
+    ++frames_;
+    emit frameDrawn();
+}
+
+void SceneView::mousePressEvent(QMouseEvent* e) {
+    last_ = e->pos();
+    dragging_ = e->button();
+    if (e->button() == Qt::LeftButton) {
+        const int joint = jointAt(e->pos());
+        if (joint >= 0) emit jointClicked(joint);
+    }
+}
+
+void SceneView::mouseMoveEvent(QMouseEvent* e) {
+    const QPoint delta = e->pos() - last_;
+    last_ = e->pos();
+    if (!visual_) return;
+    if (e->buttons() & Qt::LeftButton) {
+        azimuth_ -= delta.x() * 0.4;
+        elevation_ = std::clamp(elevation_ + delta.y() * 0.4, -89.9, 89.9);
+        applyCamera();
+        update();
+    } else if (e->buttons() & (Qt::RightButton | Qt::MiddleButton)) {
+        // Move the looked-at point in the picture plane, a pixel's worth of the view.
+        osg::Vec3d eye, centre, up;
+        viewer_->getCamera()->getViewMatrixAsLookAt(eye, centre, up);
+        osg::Vec3d forward = centre - eye;
+        forward.normalize();
+        osg::Vec3d right = forward ^ up;
+        right.normalize();
+        const osg::Vec3d pictureUp = right ^ forward;
+        const double perPixel = 2 * distance_ * std::tan(15.0 * M_PI / 180) / std::max(height(), 1);
+        const osg::Vec3d shift = (right * -delta.x() + pictureUp * delta.y()) * perPixel;
+        pan_ += Eigen::Vector3d(shift.x(), shift.y(), shift.z());
+        applyCamera();
+        update();
+    } else {
+        const int joint = jointAt(e->pos());
+        if (joint != hovered_) {
+            hovered_ = joint;
+            emit jointHovered(joint);
+        }
+    }
+}
+
+void SceneView::mouseReleaseEvent(QMouseEvent*) { dragging_ = Qt::NoButton; }
+
+void SceneView::wheelEvent(QWheelEvent* e) {
+    distance_ *= std::pow(0.9, e->angleDelta().y() / 120.0);
+    applyCamera();
+    update();
+}
+
+}  // namespace ll::ui

@@ -1,0 +1,219 @@
+#include "ui/trajectory_chart.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include <QBuffer>
+#include <QChart>
+#include <QLegendMarker>
+#include <QLineSeries>
+#include <QMouseEvent>
+#include <QPainter>
+#include <QSvgGenerator>
+#include <QValueAxis>
+
+#include "core/io/atomic_file.hpp"
+
+namespace ll::ui {
+
+namespace {
+
+// At most about `target` points of (t, y(k)): every stride-th sample plus the last.
+template <class Y>
+QList<QPointF> decimated(const std::vector<double>& t, Y&& y, int target = 1600) {
+    QList<QPointF> points;
+    const int n = static_cast<int>(t.size());
+    if (n == 0) return points;
+    const int stride = std::max(1, n / target);
+    points.reserve(n / stride + 2);
+    for (int k = 0; k < n; k += stride) points.append(QPointF(t[k], y(k)));
+    if ((n - 1) % stride != 0) points.append(QPointF(t[n - 1], y(n - 1)));
+    return points;
+}
+
+bool anyWork(const Trajectory& tr) {
+    return std::any_of(tr.work.begin(), tr.work.end(), [](double w) { return std::abs(w) > 1e-12; });
+}
+
+const QColor kJointColours[] = {QColor(31, 119, 180), QColor(255, 127, 14), QColor(44, 160, 44), QColor(214, 39, 40),
+                                QColor(148, 103, 189), QColor(140, 86, 75), QColor(227, 119, 194), QColor(127, 127, 127)};
+
+}  // namespace
+
+TrajectoryChart::TrajectoryChart(Kind kind, QWidget* parent) : QChartView(parent), kind_(kind) {
+    auto* chart = new QChart;
+    chart->setAnimationOptions(QChart::NoAnimation);
+    chart->legend()->setAlignment(Qt::AlignRight);
+    chart->setMargins(QMargins(4, 4, 4, 4));
+    setChart(chart);
+    setRenderHint(QPainter::Antialiasing);
+    axisX_ = new QValueAxis;
+    axisX_->setTitleText(tr("t [s]"));
+    axisY_ = new QValueAxis;
+    axisY_->setTitleText(kind == Kind::Energy ? tr("energy [J]") : tr("q [rad or m], q̇ [rad/s or m/s]"));
+    chart->addAxis(axisX_, Qt::AlignBottom);
+    chart->addAxis(axisY_, Qt::AlignLeft);
+    cursor_ = new QLineSeries;
+    cursor_->setName(tr("t"));
+    cursor_->setPen(QPen(QColor(60, 60, 60), 1.2, Qt::SolidLine));
+    chart->addSeries(cursor_);
+    cursor_->attachAxis(axisX_);
+    cursor_->attachAxis(axisY_);
+    for (QLegendMarker* m : chart->legend()->markers(cursor_)) m->setVisible(false);
+}
+
+QLineSeries* TrajectoryChart::addSeries(const QString& name, const QColor& color, Qt::PenStyle style) {
+    auto* s = new QLineSeries;
+    s->setName(name);
+    s->setPen(QPen(color, 1.8, style));
+    chart()->addSeries(s);
+    s->attachAxis(axisX_);
+    s->attachAxis(axisY_);
+    return s;
+}
+
+void TrajectoryChart::clear() {
+    for (QAbstractSeries* s : chart()->series())
+        if (s != cursor_) {
+            chart()->removeSeries(s);
+            delete s;
+        }
+}
+
+void TrajectoryChart::setTrajectory(const Trajectory& trajectory) {
+    trajectory_ = trajectory;
+    struct Curve {
+        QString name;
+        QColor color;
+        Qt::PenStyle style;
+        QList<QPointF> points;
+    };
+    std::vector<Curve> curves;
+    const Trajectory& traj = trajectory_;
+    if (kind_ == Kind::Energy) {
+        curves.push_back({tr("E_kin"), QColor(34, 139, 34), Qt::SolidLine, decimated(traj.t, [&](int k) { return traj.Ekin[k]; })});
+        curves.push_back({tr("E_pot"), QColor(30, 90, 200), Qt::SolidLine, decimated(traj.t, [&](int k) { return traj.Epot[k]; })});
+        curves.push_back({tr("E"), QColor(128, 0, 160), Qt::SolidLine, decimated(traj.t, [&](int k) { return traj.E[k]; })});
+        if (anyWork(traj)) {
+            curves.push_back({tr("W"), QColor(200, 30, 30), Qt::SolidLine, decimated(traj.t, [&](int k) { return traj.work[k]; })});
+            curves.push_back({tr("E − W"), QColor(128, 0, 160), Qt::DotLine, decimated(traj.t, [&](int k) { return traj.E[k] - traj.work[k]; })});
+        }
+        if (hasGhost_)
+            curves.push_back({tr("E (ghost)"), QColor(128, 0, 160, 150), Qt::DashLine, decimated(ghost_.t, [&](int k) { return ghost_.E[k]; })});
+    } else {
+        for (int i = 0; i < traj.n && i < 8; ++i) {
+            const QString name = QString::fromStdString(traj.coordinateName(i));
+            curves.push_back({name, kJointColours[i], Qt::SolidLine, decimated(traj.t, [&](int k) { return traj.q[k][i]; })});
+            curves.push_back({"d" + name + "/dt", kJointColours[i], Qt::DashLine, decimated(traj.t, [&](int k) { return traj.qd[k][i]; })});
+        }
+    }
+    // The same curves as shown (an edit of a value, not of the structure): new points
+    // only, which is much cheaper in Qt Charts than new series.
+    QList<QLineSeries*> shown;
+    for (QAbstractSeries* s : chart()->series())
+        if (s != cursor_) shown.append(static_cast<QLineSeries*>(s));
+    bool same = shown.size() == static_cast<qsizetype>(curves.size());
+    for (qsizetype i = 0; same && i < shown.size(); ++i) same = shown[i]->name() == curves[static_cast<std::size_t>(i)].name;
+    if (!same) {
+        clear();
+        shown.clear();
+        for (const Curve& c : curves) shown.append(addSeries(c.name, c.color, c.style));
+    }
+    for (qsizetype i = 0; i < shown.size(); ++i) shown[i]->replace(curves[static_cast<std::size_t>(i)].points);
+    fitAxes();
+}
+
+void TrajectoryChart::setGhost(const Trajectory* ghost, const QString& label) {
+    hasGhost_ = ghost != nullptr;
+    if (ghost) ghost_ = *ghost;
+    Q_UNUSED(label);
+    setTrajectory(Trajectory(trajectory_));
+}
+
+void TrajectoryChart::fitAxes() {
+    double lo = 1e300, hi = -1e300, tEnd = 0;
+    for (QAbstractSeries* a : chart()->series()) {
+        if (a == cursor_) continue;
+        for (const QPointF& p : static_cast<QLineSeries*>(a)->points()) {
+            lo = std::min(lo, p.y()), hi = std::max(hi, p.y());
+            tEnd = std::max(tEnd, p.x());
+        }
+    }
+    if (lo > hi) lo = 0, hi = 1;
+    const double pad = std::max((hi - lo) * 0.05, 1e-9 + 1e-6 * std::abs(hi));
+    yMin_ = lo - pad, yMax_ = hi + pad;
+    axisY_->setRange(yMin_, yMax_);
+    axisX_->setRange(trajectory_.t.empty() ? 0 : trajectory_.t.front(), std::max(tEnd, 1e-6));
+    setCursorTime(trajectory_.t.empty() ? 0 : trajectory_.t.front());
+}
+
+void TrajectoryChart::setCursorTime(double t) {
+    cursor_->replace(QList<QPointF>{QPointF(t, yMin_), QPointF(t, yMax_)});
+}
+
+int TrajectoryChart::curvePoints() const {
+    int n = 0;
+    for (QAbstractSeries* a : chart()->series())
+        if (a != cursor_) n += static_cast<int>(static_cast<QLineSeries*>(a)->count());
+    return n;
+}
+
+void TrajectoryChart::mousePressEvent(QMouseEvent* e) {
+    if (e->button() == Qt::LeftButton) emit timePicked(chart()->mapToValue(e->position()).x());
+    QChartView::mousePressEvent(e);
+}
+
+void TrajectoryChart::mouseMoveEvent(QMouseEvent* e) {
+    if (e->buttons() & Qt::LeftButton) emit timePicked(chart()->mapToValue(e->position()).x());
+    QChartView::mouseMoveEvent(e);
+}
+
+void TrajectoryChart::exportImage(const QString& path) {
+    if (path.endsWith(".svg", Qt::CaseInsensitive)) {
+        QByteArray bytes;
+        QBuffer buffer(&bytes);
+        buffer.open(QIODevice::WriteOnly);
+        QSvgGenerator svg;
+        svg.setOutputDevice(&buffer);
+        svg.setSize(size());
+        svg.setViewBox(rect());
+        svg.setTitle(chart()->title());
+        QPainter painter(&svg);
+        render(&painter);
+        painter.end();
+        saveFileAtomically(path.toStdString(), bytes.toStdString(), Backup::None);
+        return;
+    }
+    const QPixmap pixmap = grab();
+    QByteArray bytes;
+    QBuffer buffer(&bytes);
+    buffer.open(QIODevice::WriteOnly);
+    pixmap.save(&buffer, "PNG");
+    saveFileAtomically(path.toStdString(), bytes.toStdString(), Backup::None);
+}
+
+void TrajectoryChart::exportCsv(const QString& path) {
+    const Trajectory& tr = trajectory_;
+    saveFileAtomically(path.toStdString(), [&](std::ostream& out) {
+        out.precision(12);
+        if (kind_ == Kind::Energy) {
+            out << "t [s],Ekin [J],Epot [J],E [J],W [J]\n";
+            for (std::size_t k = 0; k < tr.size(); ++k)
+                out << tr.t[k] << ',' << tr.Ekin[k] << ',' << tr.Epot[k] << ',' << tr.E[k] << ',' << tr.work[k] << '\n';
+        } else {
+            out << "t [s]";
+            for (int i = 0; i < tr.n; ++i) out << ',' << tr.coordinateName(i);
+            for (int i = 0; i < tr.n; ++i) out << ",d" << tr.coordinateName(i) << "/dt";
+            out << '\n';
+            for (std::size_t k = 0; k < tr.size(); ++k) {
+                out << tr.t[k];
+                for (int i = 0; i < tr.n; ++i) out << ',' << tr.q[k][i];
+                for (int i = 0; i < tr.n; ++i) out << ',' << tr.qd[k][i];
+                out << '\n';
+            }
+        }
+    }, Backup::None);
+}
+
+}  // namespace ll::ui

@@ -1,0 +1,56 @@
+#pragma once
+// A Qt Charts plot of a trajectory against simulation time with a cursor at the
+// playback time: the energies (E_kin green, E_pot blue, E purple, and W, the work of
+// friction and torques, red when there is any; a ghost run's E dashed) or the joints
+// (q_i solid, q̇_i dashed). Series are replaced once per trajectory, decimated to about
+// two points per pixel column, fixed axis ranges, no animations (Qt Charts 6.4's
+// append is quadratic). Exports PNG, SVG and CSV (with units).
+#include <QChartView>
+#include <QString>
+
+#include "core/simulation/trajectory.hpp"
+
+class QLineSeries;
+class QValueAxis;
+
+namespace ll::ui {
+
+class TrajectoryChart : public QChartView {
+    Q_OBJECT
+public:
+    enum class Kind { Energy, Joints };
+    explicit TrajectoryChart(Kind kind, QWidget* parent = nullptr);
+
+    void setTrajectory(const Trajectory& trajectory);
+    void setGhost(const Trajectory* ghost, const QString& label);  // null: none
+    void setCursorTime(double t);
+    void clear();
+
+    // Points drawn in the curves (not the cursor): a test's "there are curves".
+    int curvePoints() const;
+
+    // Writes the plot; throws std::runtime_error naming the file.
+    void exportImage(const QString& path);  // .png or .svg
+    void exportCsv(const QString& path);
+
+signals:
+    // The user clicked or dragged in the plot at time t (to scrub the playback).
+    void timePicked(double t);
+
+protected:
+    void mousePressEvent(QMouseEvent* e) override;
+    void mouseMoveEvent(QMouseEvent* e) override;
+
+private:
+    QLineSeries* addSeries(const QString& name, const QColor& color, Qt::PenStyle style);
+    void fitAxes();
+
+    Kind kind_;
+    Trajectory trajectory_, ghost_;
+    bool hasGhost_ = false;
+    QValueAxis *axisX_, *axisY_;
+    QLineSeries* cursor_;
+    double yMin_ = 0, yMax_ = 1;
+};
+
+}  // namespace ll::ui

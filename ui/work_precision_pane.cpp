@@ -1,0 +1,108 @@
+#include "ui/work_precision_pane.hpp"
+
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPainter>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+#include "core/model/cancellation.hpp"
+#include "core/pipeline/scene_simulation.hpp"
+#include "ui/work_precision_plot.hpp"
+
+namespace ll::ui {
+
+WorkPrecisionPane::WorkPrecisionPane(QWidget* parent) : QWidget(parent) {
+    auto* layout = new QVBoxLayout(this);
+    auto* row = new QHBoxLayout;
+    run_ = new QPushButton(tr("Run work–precision sweep"), this);
+    cancel_ = new QPushButton(tr("Cancel"), this);
+    cancel_->setEnabled(false);
+    progress_ = new QProgressBar(this);
+    progress_->setRange(0, 1000);
+    label_ = new QLabel(tr("Error and energy drift against CPU time for every integrator (1 repeat, tolerances 1e-3…1e-10)."), this);
+    row->addWidget(run_);
+    row->addWidget(cancel_);
+    row->addWidget(progress_, 1);
+    layout->addLayout(row);
+    layout->addWidget(label_);
+    layout->addStretch(1);
+    pool_.setMaxThreadCount(1);
+    connect(run_, &QPushButton::clicked, this, &WorkPrecisionPane::run);
+    connect(cancel_, &QPushButton::clicked, this, &WorkPrecisionPane::cancel);
+}
+
+WorkPrecisionPane::~WorkPrecisionPane() {
+    cancel();
+    pool_.waitForDone();
+}
+
+void WorkPrecisionPane::setScene(const Scene& scene) { scene_ = scene; }
+
+void WorkPrecisionPane::cancel() {
+    if (stop_) stop_->store(true);
+}
+
+void WorkPrecisionPane::run() {
+    cancel();
+    stop_ = std::make_shared<std::atomic<bool>>(false);
+    const int generation = ++generation_;
+    run_->setEnabled(false);
+    cancel_->setEnabled(true);
+    progress_->setValue(0);
+    WorkPrecisionSettings settings;
+    settings.repeats = 1;
+    settings.tolerances = {1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10};
+    settings.steps = {1e-2, 3e-3, 1e-3};
+    settings.duration = std::min(scene_.simulation.duration, 5.0);
+    pool_.start([self = this, scene = scene_, settings, generation, stop = stop_] {
+        std::optional<WorkPrecisionResult> result;
+        QString error;
+        try {
+            result = ll::runWorkPrecision(scene, settings, [self, generation](double fraction, const std::string& what) {
+                QMetaObject::invokeMethod(self, [self, generation, fraction, text = QString::fromStdString(what)] {
+                    if (generation != self->generation_) return;
+                    self->progress_->setValue(static_cast<int>(fraction * 1000));
+                    self->label_->setText(text);
+                }, Qt::QueuedConnection);
+            }, stop.get());
+            if (stop->load()) result.reset(), error = tr("cancelled");
+        } catch (const std::exception& e) {
+            error = QString::fromStdString(e.what());
+        }
+        QMetaObject::invokeMethod(self, [self, generation, result = std::move(result), error] {
+            if (generation != self->generation_) return;
+            self->run_->setEnabled(true);
+            self->cancel_->setEnabled(false);
+            if (result) {
+                self->result_ = result;
+                self->progress_->setValue(1000);
+                self->label_->setText(tr("Done: %1 runs.").arg(result->points.size()));
+            } else {
+                self->label_->setText(tr("Stopped: %1").arg(error));
+            }
+            self->update();
+            emit self->finished();
+        }, Qt::QueuedConnection);
+    });
+}
+
+void WorkPrecisionPane::paintEvent(QPaintEvent* e) {
+    QWidget::paintEvent(e);
+    if (!result_) return;
+    QPainter painter(this);
+    const int top = label_->geometry().bottom() + 6;
+    painter.fillRect(QRect(0, top, width(), height() - top), Qt::white);
+    paintWorkPrecision(painter, QRectF(0, top, width(), height() - top), *result_);
+}
+
+bool WorkPrecisionPane::saveImage(const QString& path, QString* error) {
+    if (!result_) {
+        if (error) *error = tr("no work–precision result yet: run the sweep first");
+        return false;
+    }
+    return saveWorkPrecisionPlot(*result_, path, error);
+}
+
+}  // namespace ll::ui

@@ -1,0 +1,50 @@
+#pragma once
+// The work–precision tab: runs `lagrangelab accuracy`'s sweep (core/pipeline
+// runWorkPrecision) on the current scene in a worker thread with a progress bar and a
+// cancel button, and paints the result with the same painter as the CLI's plot.
+#include <atomic>
+#include <memory>
+#include <optional>
+
+#include <QThreadPool>
+#include <QWidget>
+
+#include "core/model/scene.hpp"
+#include "core/simulation/work_precision.hpp"
+
+class QLabel;
+class QProgressBar;
+class QPushButton;
+
+namespace ll::ui {
+
+class WorkPrecisionPane : public QWidget {
+    Q_OBJECT
+public:
+    explicit WorkPrecisionPane(QWidget* parent = nullptr);
+    ~WorkPrecisionPane() override;
+
+    void setScene(const Scene& scene);
+    void run();
+    void cancel();
+    bool hasResult() const { return result_.has_value(); }
+    bool saveImage(const QString& path, QString* error);
+
+signals:
+    void finished();
+
+protected:
+    void paintEvent(QPaintEvent* e) override;
+
+private:
+    Scene scene_;
+    std::optional<WorkPrecisionResult> result_;
+    QPushButton *run_, *cancel_;
+    QProgressBar* progress_;
+    QLabel* label_;
+    QThreadPool pool_;
+    std::shared_ptr<std::atomic<bool>> stop_;
+    int generation_ = 0;
+};
+
+}  // namespace ll::ui
