@@ -57,6 +57,8 @@ private slots:
                 for (int x = image.width() / 3; x < image.width(); ++x) dark += qGray(image.pixel(x, y)) < 100;
             return dark;
         };
+        if (!qEnvironmentVariableIsEmpty("LL_SAVE_GRAB"))  // to look at it: LL_SAVE_GRAB=view.png
+            view.grab().save(qEnvironmentVariable("LL_SAVE_GRAB"));
         const qint64 at1 = ink();
         QVERIFY(at1 > 200);
         view.setZoom(2.0);
