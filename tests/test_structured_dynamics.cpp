@@ -8,7 +8,7 @@
 #include <filesystem>
 
 #include "core/dynamics/coriolis.hpp"
-#include "core/dynamics/gravity.hpp"
+#include "core/dynamics/potential_gradient.hpp"
 #include "core/dynamics/mass_matrix.hpp"
 #include "core/io/scene_file.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
@@ -71,7 +71,7 @@ Numbers numeric(const Scene& scene, const Eigen::VectorXd& q, const Eigen::Vecto
     forwardKinematics(scene.robot, data, q);
     computeMassMatrix(scene.robot, data);
     computeCoriolisMatrix(scene.robot, data, qd);
-    computeGravity(scene.robot, data, scene.effects, q);
+    computePotentialGradient(scene.robot, data, scene.effects, q);
     return {data.B, data.C, data.g};
 }
 

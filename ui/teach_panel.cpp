@@ -12,7 +12,7 @@
 #include <QSlider>
 
 #include "core/dynamics/energy.hpp"
-#include "core/dynamics/gravity.hpp"
+#include "core/dynamics/potential_gradient.hpp"
 #include "core/dynamics/mass_matrix.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
 #include "core/model/robot_data.hpp"
@@ -107,7 +107,7 @@ void TeachPanel::evaluate() {
     Model& m = *model_;
     forwardKinematics(m.scene.robot, m.data, q_);
     computeMassMatrix(m.scene.robot, m.data);
-    computeGravity(m.scene.robot, m.data, m.scene.effects, q_);
+    computePotentialGradient(m.scene.robot, m.data, m.scene.effects, q_);
     const double epot = potentialEnergy(m.scene.robot, m.data, m.scene.effects, q_);
     std::ostringstream out;
     out.precision(5);
