@@ -27,6 +27,7 @@
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/angle_units.hpp"
 #include "core/model/utf8_text.hpp"
+#include "core/model/usable_number.hpp"
 
 namespace ll {
 
@@ -274,9 +275,11 @@ private:
         if (value.is_number()) {
             const double number = value.get<double>();
             if (angle == Angle::Yes) warnIfDegrees(path, number);
-            if (std::isfinite(number)) return number;
-            error(path, "value is not finite (" + value.dump() + ")");
-            return std::nullopt;
+            if (auto why = unusableNumber(number)) {
+                error(path, *why);
+                return std::nullopt;
+            }
+            return number;
         }
         if (value.is_string()) {
             const std::string text = value.get<std::string>();

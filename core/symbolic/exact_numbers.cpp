@@ -33,4 +33,15 @@ GiNaC::ex exactAngle(double value) {
     return exactNumber(value);
 }
 
+GiNaC::ex exactFloats(const GiNaC::ex& e) {
+    struct Exact : GiNaC::map_function {
+        GiNaC::ex operator()(const GiNaC::ex& x) override {
+            if (!GiNaC::is_a<GiNaC::numeric>(x)) return x.map(*this);
+            const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(x);
+            return n.is_real() && !n.is_rational() ? exactNumber(n.to_double()) : x;
+        }
+    } exact;
+    return exact(e);
+}
+
 }  // namespace ll::symbolic
