@@ -111,6 +111,22 @@ private slots:
         QCOMPARE(b11(decimal.out), b11(exact.out));
     }
 
+    // Found by the mutation run: an angle offset that is not a multiple of pi/12
+    // (theta 0.3, or 1e300) stopped `derive` with GiNaC's "rem: ..." naming no field; it
+    // is refused naming the field, while eval still takes it.
+    void derivationRefusesOtherAngleOffsetsNamingTheField() {
+        for (const char* theta : {"0.3", "1e300"}) {
+            QTemporaryDir dir;
+            const QString scene = edited(dir, "planar_2r.json", "\"a\": \"a1\", \"alpha\": 0, \"d\": 0, \"theta\": 0",
+                                         QString("\"a\": \"a1\", \"alpha\": 0, \"d\": 0, \"theta\": %1").arg(theta));
+            const Run derive = run({"derive", scene});
+            QCOMPARE(derive.exitCode, 2);
+            QVERIFY2(derive.err.contains("robot.joints[1].theta: the symbolic derivation takes angle offsets"),
+                     qPrintable(derive.err));
+            QCOMPARE(run({"eval", scene}).exitCode, 0);
+        }
+    }
+
     // A finite scene evaluated at a state where a term overflows: refused naming the
     // quantity at that state, for a robot (g) and a hand-typed Lagrangian (E_pot).
     void overflowAtAGivenStateIsAnError() {

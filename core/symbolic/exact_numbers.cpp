@@ -28,7 +28,7 @@ GiNaC::ex exactNumber(double value) {
 GiNaC::ex exactAngle(double value) {
     const double twelfths = value / (std::numbers::pi / 12);
     const double k = std::round(twelfths);
-    if (std::abs(twelfths - k) < 1e-12 * std::max(1.0, std::abs(k)))
+    if (std::abs(k) < 1e15 && std::abs(twelfths - k) < 1e-12 * std::max(1.0, std::abs(k)))  // k fits a long
         return GiNaC::numeric(static_cast<long>(k), 12) * GiNaC::Pi;
     return exactNumber(value);
 }

@@ -34,8 +34,18 @@ public:
         return textbookSymbol(name, number);
     }
 
-    // An angle: never a textbook symbol; exact multiples of π stay exact.
-    GiNaC::ex angle(const std::string& field, double number) { return read(field, number, true); }
+    // An angle: never a textbook symbol; exact multiples of π stay exact. The trig
+    // reductions work on sin/cos of multiples of π/12 only: any other number (θ = 0.3)
+    // stopped the derivation with GiNaC's "rem: arguments must be polynomials over the
+    // rationals", so it is refused naming the field.
+    GiNaC::ex angle(const std::string& field, double number) {
+        const GiNaC::ex e = read(field, number, true);
+        if (GiNaC::is_a<GiNaC::numeric>(e) && !e.is_zero())
+            throw InputError(field, "the symbolic derivation takes angle offsets that are multiples of 15 degrees "
+                                    "(pi/12) only, got " + formatValue(number) +
+                                    " rad: write e.g. 90° or pi/2 (eval and simulate take any angle)");
+        return e;
+    }
 
     GiNaC::symbol textbookSymbol(const std::string& name, double number) {
         GiNaC::symbol symbol(name);
