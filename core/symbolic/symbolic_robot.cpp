@@ -35,12 +35,13 @@ public:
     }
 
     // An angle: never a textbook symbol; exact multiples of π stay exact. The trig
-    // reductions work on sin/cos of multiples of π/12 only: any other number (θ = 0.3)
+    // reductions work on sin/cos of DH offsets that are multiples of π/12 only: any other (θ = 0.3)
     // stopped the derivation with GiNaC's "rem: arguments must be polynomials over the
     // rationals", so it is refused naming the field.
     GiNaC::ex angle(const std::string& field, double number) {
         const GiNaC::ex e = read(field, number, true);
-        if (GiNaC::is_a<GiNaC::numeric>(e) && !e.is_zero())
+        const bool offset = field.ends_with(".alpha") || field.ends_with(".theta");  // not a torque's phase
+        if (offset && GiNaC::is_a<GiNaC::numeric>(e) && !e.is_zero())
             throw InputError(field, "the symbolic derivation takes angle offsets that are multiples of 15 degrees "
                                     "(pi/12) only, got " + formatValue(number) +
                                     " rad: write e.g. 90° or pi/2 (eval and simulate take any angle)");
