@@ -27,6 +27,7 @@
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/angle_units.hpp"
 #include "core/model/utf8_text.hpp"
+#include "core/model/usable_number.hpp"
 
 namespace ll {
 
@@ -163,6 +164,15 @@ Json parseJson(const std::string& text, std::vector<Diagnostic>& duplicates) {
         std::string reason = e.what();
         const std::size_t dash = reason.find(" - ");
         if (dash != std::string::npos) reason = reason.substr(dash + 3);
+        // "last read: '<everything since the token began>'" can be a whole description:
+        // keep its last 40 bytes (whole characters), so the message stays one short line.
+        const std::size_t read = reason.find("last read: '");
+        const std::size_t quoted = read == std::string::npos ? read : read + 12;
+        if (quoted != std::string::npos && reason.size() > quoted + 60) {
+            std::size_t from = reason.size() - 41;
+            while (from < reason.size() && (static_cast<unsigned char>(reason[from]) & 0xC0) == 0x80) ++from;
+            reason = reason.substr(0, quoted) + "..." + reason.substr(from);
+        }
         throw InputError(kDocument, "JSON syntax error " + at(text, e.byte > 0 ? e.byte - 1 : 0) + ": " + reason);
     } catch (const Json::out_of_range& e) {
         // "number overflow parsing '1e400'" has no position; find the number.
@@ -274,9 +284,11 @@ private:
         if (value.is_number()) {
             const double number = value.get<double>();
             if (angle == Angle::Yes) warnIfDegrees(path, number);
-            if (std::isfinite(number)) return number;
-            error(path, "value is not finite (" + value.dump() + ")");
-            return std::nullopt;
+            if (auto why = unusableNumber(number)) {
+                error(path, *why);
+                return std::nullopt;
+            }
+            return number;
         }
         if (value.is_string()) {
             const std::string text = value.get<std::string>();

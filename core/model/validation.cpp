@@ -6,6 +6,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "core/model/unit_slips.hpp"
+#include "core/model/usable_number.hpp"
 
 namespace ll {
 namespace {
@@ -20,8 +21,9 @@ void warning(std::vector<Diagnostic>& out, std::string field, std::string messag
     out.push_back({Severity::Warning, std::move(field), std::move(message)});
 }
 
+// Finite and not subnormal (core/model/usable_number.hpp).
 void requireFinite(std::vector<Diagnostic>& out, const std::string& field, double value) {
-    if (!std::isfinite(value)) error(out, field, "value is not finite (" + fmt(value) + ")");
+    if (auto why = unusableNumber(value)) error(out, field, *why);
 }
 
 void validateInertia(std::vector<Diagnostic>& out, int j, const Eigen::Matrix3d& I) {

@@ -1,5 +1,6 @@
 #include "core/pipeline/scene_simulation.hpp"
 
+#include "core/dynamics/finite_terms.hpp"
 #include "core/symbolic/compiled_derivation.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/lagrangian_derivation.hpp"
@@ -11,6 +12,11 @@ SimulationInput prepareSimulation(const Scene& scene) {
     if (scene.lagrangian) {
         const auto lock = symbolic::lockGinac();
         input.lagrangian = symbolic::compileDerivation(symbolic::deriveLagrangian(scene, symbolic::ParameterMode::Numeric));
+        // A robot's initial terms are checked by requireValidScene; a Lagrangian's here.
+        if (scene.initial.q.size() == scene.dof() && scene.initial.qd.size() == scene.dof())
+            if (auto bad = nonFiniteTerm(input.lagrangian->terms(scene.initial.q, scene.initial.qd, 0.0), Eigen::VectorXd(),
+                                         scene.initial.q, scene.initial.qd, "at the initial state (t = 0)"))
+                throw InputError({*bad});
     }
     return input;
 }

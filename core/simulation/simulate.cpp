@@ -48,7 +48,8 @@ public:
         }
     }
 
-    void record(double t, const OdeState& x) {
+    // False (and nothing recorded) when an energy is not finite: no sample shows inf.
+    bool record(double t, const OdeState& x) {
         const int n = traj_.n;
         Eigen::VectorXd q(n), qd(n);
         for (int i = 0; i < n; ++i) {
@@ -64,6 +65,11 @@ public:
             Ekin = kineticEnergy(data_, qd);
             Epot = potentialEnergy(scene_.robot, data_, scene_.effects, q);
         }
+        if (!std::isfinite(Ekin) || !std::isfinite(Epot)) {
+            problem_ = std::string(std::isfinite(Ekin) ? "E_pot" : "E_kin") + " became non-finite (" +
+                       std::to_string(std::isfinite(Ekin) ? Epot : Ekin) + ") at t = " + std::to_string(t) + " s";
+            return false;
+        }
         traj_.t.push_back(t);
         traj_.q.push_back(q);
         traj_.qd.push_back(qd);
@@ -71,13 +77,16 @@ public:
         traj_.Epot.push_back(Epot);
         traj_.E.push_back(Ekin + Epot);
         traj_.work.push_back(x[2 * n]);
+        return true;
     }
+    const std::string& problem() const { return problem_; }
 
 private:
     const Scene& scene_;
     Trajectory& traj_;
     const LagrangianOde* lagrangian_;
     RobotData data_;
+    std::string problem_;
 };
 
 void energyBalance(const Trajectory& traj, SimulationStats& stats) {
@@ -128,7 +137,15 @@ SimulationResult simulate(SimulationInput input, const SimulationSettings& setti
     Recorder recorder(scene, result.trajectory, lagrangian ? &*lagrangian : nullptr);
 
     const auto observe = [&](double t, const OdeState& state) {
-        recorder.record(t, state);
+        if (!recorder.record(t, state)) {
+            result.status = SimulationStatus::Failed;
+            const bool adaptive = findIntegrator(settings.integrator)->adaptive;
+            result.message = recorder.problem() + " with " + settings.integrator +
+                             ": the motion blew up (" +
+                             (adaptive ? "tighten the tolerances" : "the step is too large: reduce dt or use an adaptive integrator") +
+                             ") or a number in the scene is too large for double precision";
+            return false;
+        }
         if (progress) progress(t / settings.duration);
         if (cancel && cancel->load(std::memory_order_relaxed)) {
             result.status = SimulationStatus::Cancelled;

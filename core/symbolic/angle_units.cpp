@@ -137,6 +137,7 @@ DegreeReading readAsDegrees(double value) {
     DegreeReading reading{shortNumber(value) + "°", ""};
     for (int q = 1; q <= 12; ++q) {
         const double p = value * q / 180.0;
+        if (!(std::abs(p) < 1e15)) break;  // no exact multiple of pi to offer (and lround would overflow)
         if (std::abs(p - std::round(p)) > 1e-9) continue;
         const long numerator = std::lround(p);
         if (numerator == 0) {

@@ -28,9 +28,20 @@ GiNaC::ex exactNumber(double value) {
 GiNaC::ex exactAngle(double value) {
     const double twelfths = value / (std::numbers::pi / 12);
     const double k = std::round(twelfths);
-    if (std::abs(twelfths - k) < 1e-12 * std::max(1.0, std::abs(k)))
+    if (std::abs(k) < 1e15 && std::abs(twelfths - k) < 1e-12 * std::max(1.0, std::abs(k)))  // k fits a long
         return GiNaC::numeric(static_cast<long>(k), 12) * GiNaC::Pi;
     return exactNumber(value);
+}
+
+GiNaC::ex exactFloats(const GiNaC::ex& e) {
+    struct Exact : GiNaC::map_function {
+        GiNaC::ex operator()(const GiNaC::ex& x) override {
+            if (!GiNaC::is_a<GiNaC::numeric>(x)) return x.map(*this);
+            const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(x);
+            return n.is_real() && !n.is_rational() ? exactNumber(n.to_double()) : x;
+        }
+    } exact;
+    return exact(e);
 }
 
 }  // namespace ll::symbolic

@@ -12,4 +12,8 @@ GiNaC::ex exactNumber(double value);
 // exactNumber, but a multiple of π/12 (to 1e-12) becomes k/12·Pi.
 GiNaC::ex exactAngle(double value);
 
+// `e` with every floating-point number in it made exact by exactNumber: a field typed as
+// "0.5*m1" keeps m1 and gets 1/2 (the derivation's polynomial reductions refuse floats).
+GiNaC::ex exactFloats(const GiNaC::ex& e);
+
 }  // namespace ll::symbolic

@@ -15,6 +15,7 @@
 
 #include "core/symbolic/angle_units.hpp"
 #include "core/model/diagnostics.hpp"
+#include "core/model/usable_number.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 
 namespace ll {
@@ -205,7 +206,8 @@ std::optional<std::string> ParameterTable::whyNotAName(const std::string& name) 
 void ParameterTable::add(const std::string& field, const std::string& name, double value, GiNaC::ex definition) {
     if (auto why = whyNotAName(name)) throw InputError(field, *why);
     if (contains(name)) throw InputError(field, "parameter '" + name + "' is defined twice");
-    if (!std::isfinite(value)) throw InputError(field, "value is not finite (" + formatDouble(value) + ")");
+    // Finite and not subnormal: GiNaC::numeric cannot hold inf, NaN or a subnormal double.
+    if (auto why = unusableNumber(value)) throw InputError(field, *why);
     Parameter parameter{GiNaC::symbol(name), value, definition};
     symbols_[name] = parameter.symbol;
     names_.push_back(name);
@@ -213,8 +215,7 @@ void ParameterTable::add(const std::string& field, const std::string& name, doub
 }
 
 void ParameterTable::define(const std::string& field, const std::string& name, double value) {
-    // GiNaC::numeric cannot hold inf or NaN.
-    add(field, name, value, std::isfinite(value) ? GiNaC::ex(GiNaC::numeric(value)) : GiNaC::ex());
+    add(field, name, value, unusableNumber(value) ? GiNaC::ex() : GiNaC::ex(GiNaC::numeric(value)));
 }
 
 double ParameterTable::define(const std::string& field, const std::string& name, const std::string& text) {
@@ -287,6 +288,16 @@ double ParameterTable::evaluate(const std::string& field, const std::string& tex
     return toNumber(field, source, parse(field, source, {}, false));
 }
 
+namespace {
+
+std::string tooSmall(const PreparedExpression& source) {
+    return "a value in " + source.quoted() +
+           " is too close to zero for double precision (non-zero but below 2.2e-308 in magnitude, underflow): "
+           "write 0 if you mean zero, else check the exponent";
+}
+
+}  // namespace
+
 double ParameterTable::toNumber(const std::string& field, const PreparedExpression& source,
                                 const GiNaC::ex& expression) const {
     // Parameter values enter as doubles, so CLN computes in doubles and signals
@@ -306,8 +317,11 @@ double ParameterTable::toNumber(const std::string& field, const PreparedExpressi
             throw InputError(field, std::string("value is not finite (") + (number.is_negative() ? "-inf" : "inf") +
                                         ") in " + source.quoted());
         const double value = number.to_double();
-        if (!std::isfinite(value))
-            throw InputError(field, "value is not finite (" + formatDouble(value) + ") in " + source.quoted());
+        if (auto why = unusableNumber(value)) throw InputError(field, *why + " in " + source.quoted());
+        // A typed number below the normal range is refused (CLN reads "1e-310" exactly, to_double
+        // gives 0); a computed one underflows to 0 as in C++ ("tiny*tiny").
+        if (value == 0.0 && !number.is_zero() && GiNaC::is_a<GiNaC::numeric>(expression))
+            throw InputError(field, tooSmall(source));
         return value;
     } catch (const InputError&) {
         throw;
@@ -319,7 +333,7 @@ double ParameterTable::toNumber(const std::string& field, const PreparedExpressi
     } catch (const cln::floating_point_overflow_exception&) {
         throw InputError(field, "value is not finite (overflow) in " + source.quoted());
     } catch (const cln::floating_point_underflow_exception&) {
-        throw InputError(field, "a value in " + source.quoted() + " is too close to zero for a double (underflow)");
+        throw InputError(field, tooSmall(source));
     } catch (const std::exception& e) {
         throw InputError(field, "cannot evaluate " + source.quoted() + ": " + e.what());
     }

@@ -55,7 +55,8 @@ public:
 private:
     GiNaC::ex read(const std::string& field, double number, bool isAngle) {
         const auto it = scene_.expressions.find(field);
-        if (mode_ == ParameterMode::Parametric && it != scene_.expressions.end()) return table_.parse(field, it->second);
+        if (mode_ == ParameterMode::Parametric && it != scene_.expressions.end())
+            return exactFloats(table_.parse(field, it->second));
         if (it != scene_.expressions.end() && isAngle) {
             // "pi/2" stays exact in every mode.
             const GiNaC::ex e = table_.parse(field, it->second).subs(table_.values());
