@@ -5,7 +5,7 @@
 #include "core/dynamics/coriolis.hpp"
 #include "core/dynamics/energy.hpp"
 #include "core/dynamics/forward_dynamics.hpp"
-#include "core/dynamics/gravity.hpp"
+#include "core/dynamics/potential_gradient.hpp"
 #include "core/dynamics/mass_matrix.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
 #include "core/simulation/generalized_forces.hpp"
@@ -29,7 +29,7 @@ RobotEvaluation evaluateRobot(const Scene& scene, const Eigen::VectorXd& q, cons
     forwardKinematics(robot, data, q);
     computeMassMatrix(robot, data);
     computeCoriolisMatrix(robot, data, qd);
-    computeGravity(robot, data, scene.effects, q);
+    computePotentialGradient(robot, data, scene.effects, q);
     m.B = data.B;
     m.C = data.C;
     m.g = data.g;
