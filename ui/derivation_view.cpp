@@ -3,6 +3,7 @@
 #include <QApplication>
 #include <QClipboard>
 #include <QContextMenuEvent>
+#include <QBoxLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QListWidget>
@@ -154,7 +155,7 @@ private:
 };
 
 DerivationView::DerivationView(QWidget* parent) : QWidget(parent) {
-    auto* layout = new QHBoxLayout(this);
+    layout_ = new QBoxLayout(QBoxLayout::LeftToRight, this);
     auto* left = new QVBoxLayout;
     steps_ = new QListWidget(this);
     const char* titles[] = {QT_TR_NOOP("DH parameters"),       QT_TR_NOOP("Kinematic model"),
@@ -174,18 +175,28 @@ DerivationView::DerivationView(QWidget* parent) : QWidget(parent) {
     status_ = new QLabel(tr("No scene"), this);
     status_->setWordWrap(true);
     left->addWidget(status_);
-    layout->addLayout(left);
+    layout_->addLayout(left);
     scroll_ = new QScrollArea(this);
     scroll_->setWidgetResizable(true);
     canvas_ = new DerivationCanvas(scroll_);
     scroll_->setWidget(canvas_);
-    layout->addWidget(scroll_, 1);
+    layout_->addWidget(scroll_, 1);
     connect(steps_, &QListWidget::currentRowChanged, this, [this](int row) {
         if (row >= 0) showStep(row);
     });
     connect(previous_, &QPushButton::clicked, this, &DerivationView::previousStep);
     connect(next_, &QPushButton::clicked, this, &DerivationView::nextStep);
     steps_->setCurrentRow(0);
+}
+
+// Narrow (a dock beside the 3D view): the step list goes above the page, a few rows
+// high, so the typeset page gets the whole width; wide: the list sits at the left.
+void DerivationView::resizeEvent(QResizeEvent* event) {
+    const bool narrow = width() < 640;
+    layout_->setDirection(narrow ? QBoxLayout::TopToBottom : QBoxLayout::LeftToRight);
+    steps_->setMaximumWidth(narrow ? QWIDGETSIZE_MAX : 260);
+    steps_->setMaximumHeight(narrow ? 4 * steps_->sizeHintForRow(0) + 2 * steps_->frameWidth() : QWIDGETSIZE_MAX);
+    QWidget::resizeEvent(event);
 }
 
 DerivationView::~DerivationView() { reapJobs(true); }

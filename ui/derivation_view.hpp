@@ -16,7 +16,9 @@
 #include "core/model/scene.hpp"
 #include "core/symbolic/derivation_document.hpp"
 
+class QBoxLayout;
 class QListWidget;
+class QResizeEvent;
 class QPushButton;
 class QLabel;
 class QScrollArea;
@@ -55,6 +57,9 @@ signals:
     void stepChanged(int step);
     void derivationFinished();  // a new document (or error) is shown
 
+protected:
+    void resizeEvent(QResizeEvent* event) override;
+
 private:
     struct Job {
         std::atomic<bool> cancel{false};
@@ -65,6 +70,7 @@ private:
     void refresh();
     void reapJobs(bool all);
 
+    QBoxLayout* layout_ = nullptr;
     QListWidget* steps_ = nullptr;
     QPushButton *previous_ = nullptr, *next_ = nullptr;
     QLabel* status_ = nullptr;

@@ -319,7 +319,7 @@ void MainWindow::buildDocks() {
     bottomTabs_->addTab(workPrecision_, tr("Work–precision"));
     plotDock->setWidget(bottomTabs_);
     addDockWidget(Qt::BottomDockWidgetArea, plotDock);
-    resizeDocks({modelDock_, derivationDock}, {380, 360}, Qt::Horizontal);
+    resizeDocks({modelDock_, derivationDock}, {360, 440}, Qt::Horizontal);
     resizeDocks({plotDock}, {230}, Qt::Vertical);
 
     for (TrajectoryChart* chart : {energy_, jointsChart_})
