@@ -12,6 +12,7 @@
 #include "core/io/scene_file.hpp"
 #include "ui/derivation_panel.hpp"
 #include "ui/joint_table_model.hpp"
+#include "ui/derivation_view.hpp"
 #include "ui/main_window.hpp"
 #include "ui/playback_bar.hpp"
 #include "ui/scene_view.hpp"
@@ -327,8 +328,17 @@ private slots:
         // The derivation: all steps, with the equations of motion.
         const QString text = w.derivationPanel().text();
         QVERIFY2(text.contains("Step 8.") && text.count('\n') > 20, qPrintable(text.left(400)));
-        const QRect pane(w.derivationPanel().mapTo(&w, QPoint(0, 0)), w.derivationPanel().size());
-        QVERIFY(content(shot, pane.adjusted(4, 30, -20, -20)).first > 0.01);
+        // What the dock shows: the typeset step (its tab is in front), the kinetic energy
+        // and B of step 7 drawn on its page.
+        w.showDerivationStep(7);
+        QTRY_VERIFY_WITH_TIMEOUT(!w.derivationView().isDeriving() && w.derivationView().document(), 120000);
+        QCOMPARE(w.derivationView().step(), 7);
+        QVERIFY(w.derivationView().isVisible());
+        QTest::qWait(100);
+        const QImage page = w.screenshot();
+        const QRect pane(w.derivationView().mapTo(&w, QPoint(0, 0)), w.derivationView().size());
+        const auto [typeset, inks] = content(page, pane.adjusted(4, pane.height() / 3, -20, -20));
+        QVERIFY2(typeset > 0.01 && inks > 1, qPrintable(QString("typeset pane: %1 drawn").arg(typeset)));
     }
 
     // Teach mode poses the robot and evaluates E_pot, g and B at the pose.

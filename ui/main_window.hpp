@@ -71,6 +71,7 @@ public:
     JointTableModel& jointModel() { return *joints_; }
     SceneView& sceneView() { return *view_; }
     DerivationPanel& derivationPanel() { return *derivation_; }
+    DerivationView& derivationView() { return *typeset_; }
     TrajectoryChart& energyChart() { return *energy_; }
     PlaybackBar& playback() { return *playback_; }
     TeachPanel& teachPanel() { return *teach_; }
