@@ -180,7 +180,7 @@ OsgScene::OsgScene(const VisualScene& scene, const OsgSceneOptions& options) : o
             osg::ref_ptr<osg::MatrixTransform> transform = new osg::MatrixTransform;
             transform->setDataVariance(osg::Object::DYNAMIC);
             transform->addChild(triad(frame.axisLength));
-            if (font) {
+            if (font && !frame.label.empty()) {  // frames sharing an origin share one label
                 osg::ref_ptr<osg::Geode> text = new osg::Geode;
                 text->addDrawable(label(frame.label, frame.axisLength, options_.labelPixels, font.get()));
                 // Labels stay readable in front of the solids.

@@ -94,23 +94,42 @@ CameraView cameraView(const VisualScene& scene, const CameraSpec& spec, double a
     const Eigen::Vector3d toEye =
         (std::cos(el) * (-std::cos(az) * basis.back + std::sin(az) * basis.right) + std::sin(el) * basis.up).normalized();
 
+    // What must stay in view: the spheres the scene collected, or the corners of its bounds.
+    std::vector<Eigen::Vector4d> keep = scene.keepInView;
+    if (keep.empty() && !scene.bounds.empty())
+        for (const Eigen::Vector3d& p : corners(scene.bounds)) keep.emplace_back(p.x(), p.y(), p.z(), 0.0);
+
     CameraView view;
     view.centre = scene.bounds.empty() ? Eigen::Vector3d::Zero() : scene.bounds.centre();
     // The picture's up: the scene's up, or (looking straight down or up) the back direction.
     view.up = std::abs(toEye.dot(basis.up)) > 0.999 ? Eigen::Vector3d(basis.back * (toEye.dot(basis.up) > 0 ? 1 : -1)) : basis.up;
     const Eigen::Vector3d right = (-toEye).cross(view.up).normalized();
     const Eigen::Vector3d upInPicture = right.cross(-toEye);
+    // Centre the picture on the middle of what it shows (not on the middle of the box,
+    // whose corners a slanted view sees far outside the robot).
+    if (!keep.empty()) {
+        double lowR = 1e300, highR = -1e300, lowU = 1e300, highU = -1e300;
+        for (const Eigen::Vector4d& s : keep) {
+            const Eigen::Vector3d v = s.head<3>() - view.centre;
+            lowR = std::min(lowR, v.dot(right) - s[3]), highR = std::max(highR, v.dot(right) + s[3]);
+            lowU = std::min(lowU, v.dot(upInPicture) - s[3]), highU = std::max(highU, v.dot(upInPicture) + s[3]);
+        }
+        view.centre += right * (lowR + highR) / 2 + upInPicture * (lowU + highU) / 2;
+    }
 
     double distance = spec.distance;
     const double radius = std::max(scene.bounds.radius(), 1e-6);
     if (distance <= 0) {
-        // Every corner inside the frustum, with 5 % to spare on each side.
+        // Every sphere inside the frustum, with 5 % to spare on each side: a sphere of
+        // radius r at depth z stays inside when its centre's offset plus r·(1 + tan²)^½
+        // is within z·tan; checking offset + r against (z − r)·tan is a little stricter.
         const double tanY = std::tan(view.fovy * kDegree / 2) * 0.95, tanX = tanY * aspect;
         distance = 0.0;
-        for (const Eigen::Vector3d& p : corners(scene.bounds)) {
-            const Eigen::Vector3d v = p - view.centre;
-            const double towardEye = v.dot(toEye);
-            distance = std::max({distance, towardEye + std::abs(v.dot(right)) / tanX, towardEye + std::abs(v.dot(upInPicture)) / tanY});
+        for (const Eigen::Vector4d& s : keep) {
+            const Eigen::Vector3d v = s.head<3>() - view.centre;
+            const double towardEye = v.dot(toEye) + s[3];
+            distance = std::max({distance, towardEye + (std::abs(v.dot(right)) + s[3]) / tanX,
+                                 towardEye + (std::abs(v.dot(upInPicture)) + s[3]) / tanY});
         }
     }
     view.eye = view.centre + distance * toEye;

@@ -251,10 +251,38 @@ VisualScene::VisualScene(const Scene& scene) : rig_(std::make_unique<Rig>()) {
             add(tip, {Rule::EndEffector, n - 1, false});
         }
         for (int k = 0; k <= n; ++k) frames.push_back({std::to_string(k), kTriadLength * R, Eigen::Isometry3d::Identity()});
+        labelCoincidentFrames(scene.initial.q);
         pose(scene.initial.q, 0.0);
     }
     bounds = currentBounds();
+    forEachExtent([this](const Eigen::Vector3d& point, double radius) { keepInView.emplace_back(point.x(), point.y(), point.z(), radius); });
     placeGround();
+}
+
+void VisualScene::labelCoincidentFrames(const Eigen::VectorXd& q0) {
+    // Frames whose origins coincide at every pose (the PUMA's wrist: 4, 5 and 6) share
+    // one label, "4,5,6", on the first of them; their own labels would print on top of
+    // each other. Coincidence is checked at the initial state and at two poses no
+    // robot is built around, so frames that only meet at q0 keep their own labels.
+    const int n = rig_->n;
+    std::vector<bool> together(static_cast<std::size_t>(n), true);  // frame k+1 on frame k
+    for (int probe = 0; probe < 3; ++probe) {
+        Eigen::VectorXd q = q0;
+        if (probe > 0)
+            for (int i = 0; i < n; ++i) q[i] = 0.3 + 0.7 * probe + 0.53 * i;  // [rad] or [m]
+        forwardKinematics(rig_->robot, *rig_->data, q);
+        for (int k = 0; k < n; ++k) {
+            const double gap = (rig_->data->T_0i[k + 1].translation() - rig_->data->T_0i[k].translation()).norm();
+            if (gap > 1e-9 * scale) together[k] = false;
+        }
+    }
+    for (int k = 0; k < n; ++k) {
+        if (!together[k]) continue;
+        int first = k;
+        while (first > 0 && frames[first].label.empty()) --first;
+        frames[first].label += "," + frames[k + 1].label;
+        frames[k + 1].label.clear();
+    }
 }
 
 void VisualScene::pose(const Eigen::VectorXd& q, double t) {
@@ -307,28 +335,33 @@ void VisualScene::pose(const Eigen::VectorXd& q, double t) {
     for (std::size_t k = 0; k < frames.size(); ++k) frames[k].pose = data.T_0i[k];
 }
 
-VisualBounds VisualScene::currentBounds() const {
-    VisualBounds b;
+template <class Add>
+void VisualScene::forEachExtent(Add add) const {
     for (const VisualPart& part : parts) {
         // Tight enough that a flat mechanism stays flat: shapes along z by their two
         // ends, boxes by their corners.
         const Eigen::Vector3d c = part.pose.translation(), z = part.pose.linear().col(2);
         switch (part.shape) {
-            case PartShape::Sphere: b.add(c, part.radius); break;
+            case PartShape::Sphere: add(c, part.radius); break;
             case PartShape::Box:
                 for (int k = 0; k < 8; ++k)
-                    b.add(part.pose * Eigen::Vector3d((k & 1 ? 0.5 : -0.5) * part.box.x(), (k & 2 ? 0.5 : -0.5) * part.box.y(),
-                                                      (k & 4 ? 0.5 : -0.5) * part.box.z()),
-                          0.0);
+                    add(part.pose * Eigen::Vector3d((k & 1 ? 0.5 : -0.5) * part.box.x(), (k & 2 ? 0.5 : -0.5) * part.box.y(),
+                                                    (k & 4 ? 0.5 : -0.5) * part.box.z()),
+                        0.0);
                 break;
             default: {
                 const double across = part.shape == PartShape::Bar || part.shape == PartShape::Sleeve ? std::sqrt(2.0) * part.radius : part.radius;
-                b.add(c - z * part.length / 2, across);
-                b.add(c + z * part.length / 2, across);
+                add(c - z * part.length / 2, across);
+                add(c + z * part.length / 2, across);
             }
         }
     }
-    for (const VisualFrame& frame : frames) b.add(frame.pose.translation(), frame.axisLength);
+    for (const VisualFrame& frame : frames) add(frame.pose.translation(), frame.axisLength);
+}
+
+VisualBounds VisualScene::currentBounds() const {
+    VisualBounds b;
+    forEachExtent([&b](const Eigen::Vector3d& point, double radius) { b.add(point, radius); });
     return b;
 }
 
@@ -343,9 +376,10 @@ void VisualScene::fitToMotion(const Trajectory& trajectory, int maxSamples) {
     for (int k = 0; k < used; ++k) {
         const int s = count == 1 ? 0 : static_cast<int>(std::lround(static_cast<double>(k) * (count - 1) / (used - 1)));
         pose(trajectory.q[s], trajectory.t[s]);
-        const VisualBounds now = currentBounds();
-        bounds.add(now.min, 0.0);
-        bounds.add(now.max, 0.0);
+        forEachExtent([this](const Eigen::Vector3d& point, double radius) {
+            bounds.add(point, radius);
+            keepInView.emplace_back(point.x(), point.y(), point.z(), radius);
+        });
     }
     placeGround();
 }

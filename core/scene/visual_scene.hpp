@@ -66,7 +66,8 @@ struct VisualPart {
 
 // A coordinate frame drawn as an x/y/z triad (red/green/blue).
 struct VisualFrame {
-    std::string label;                // "0".."n" for the DH frames, "world"
+    std::string label;                // "0".."n" for the DH frames ("4,5,6" on the first of frames
+                                      // whose origins always coincide, empty on the others), "world"
     double axisLength = 0.0;          // [m]
     Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  // filled by pose(q, t)
 };
@@ -107,6 +108,10 @@ public:
     int endEffector = -1;              // the part whose path the trail draws; -1: none
     VisualGround ground;
     VisualBounds bounds;               // of the initial pose, then of the motion (fitToMotion)
+    // Spheres (centre x, y, z, radius [m]) that hold every part and triad at the initial
+    // pose, then at every pose fitToMotion sampled: what a camera must keep in view.
+    // Tighter than the corners of `bounds`, so a fitted camera frames the robot, not its box.
+    std::vector<Eigen::Vector4d> keepInView;
 
     int dof() const;
     // Moves every part and frame to the configuration q (one value per coordinate) at
@@ -127,6 +132,10 @@ private:
     std::unique_ptr<Rig> rig_;
 
     void placeGround();
+    void labelCoincidentFrames(const Eigen::VectorXd& q0);
+    // Calls add(centre, radius) for spheres that hold each part and triad at the current pose.
+    template <class Add>
+    void forEachExtent(Add add) const;
 };
 
 }  // namespace ll
