@@ -44,11 +44,11 @@ double median(std::vector<double> v) {
 }
 
 // Frames per second of `frames` frames of the trajectory (pose + draw [+ read-back]).
-double framesPerSecond(const Scene& scene, const Trajectory& trajectory, int samples, bool readBack, int frames) {
+double framesPerSecond(const Scene& scene, const Trajectory& trajectory, int antialiasing, bool readBack, int frames) {
     VisualScene visual(scene);
     visual.fitToMotion(trajectory);
     ui::OsgScene graph(visual);
-    ui::HeadlessRenderer gl(1280, 720, samples);
+    ui::HeadlessRenderer gl(1280, 720, antialiasing);
     gl.setScene(graph.root());
     ui::applyCameraView(*gl.camera(), cameraView(visual, CameraSpec{}, gl.aspect()), gl.aspect());
     const TrajectorySampler sampler(trajectory);
@@ -110,26 +110,31 @@ int benchRender(const std::vector<std::string>& scenes, int runs) {
     settings.out = video.string();
     settings.duration = 10.0;
     ui::ExportTimings last;
-    for (int samples : {4, 0}) {
-        settings.samples = samples;
+    struct Mode {
+        int antialiasing;
+        const char* name;
+    };
+    for (const Mode mode : {Mode{ui::kAutoAntialiasing, "--msaa auto (default)"}, Mode{4, "--msaa 4"}, Mode{0, "--msaa 0"}}) {
+        settings.antialiasing = mode.antialiasing;
         std::vector<double> wall;
         for (int r = 0; r < runs; ++r) {
             last = ui::exportAnimation(scene, trajectory, settings);
             wall.push_back(last.total);
             fs::remove(video);
         }
-        std::printf("render 10 s at 30 fps to MP4 (H.264) with overlays, 300 frames, %s: %.2f s wall (median of %d; %.1f frames/s, "
-                    "%.2fx real time)\n",
-                    samples ? "4x MSAA (default)" : "--msaa 0", median(wall), runs, 300 / median(wall), 10.0 / median(wall));
+        std::printf("render 10 s at 30 fps to MP4 (H.264) with overlays, 300 frames, %s = %s: %.2f s wall (median of %d; "
+                    "%.1f frames/s, %.2fx real time)\n",
+                    mode.name, last.antialiasing.c_str(), median(wall), runs, 300 / median(wall), 10.0 / median(wall));
         std::printf("  last run per stage [s]: setup %.2f, pose %.2f, draw %.2f, read-back %.2f, overlay %.2f, to ffmpeg %.2f\n",
                     last.setup, last.pose, last.draw, last.readBack, last.overlay, last.write);
     }
     std::printf("  renderer: %s\n\n", last.renderer.c_str());
 
     std::printf("render only (pose + OSG draw + glFinish), frames/s over 150 frames:\n");
-    std::printf("  4x MSAA %.1f, no MSAA %.1f; with read-back: 4x MSAA %.1f, no MSAA %.1f\n\n",
+    std::printf("  4x MSAA %.1f, no MSAA %.1f; with read-back: 4x MSAA %.1f, no MSAA %.1f, edge smoothing %.1f\n\n",
                 framesPerSecond(scene, trajectory, 4, false, 150), framesPerSecond(scene, trajectory, 0, false, 150),
-                framesPerSecond(scene, trajectory, 4, true, 150), framesPerSecond(scene, trajectory, 0, true, 150));
+                framesPerSecond(scene, trajectory, 4, true, 150), framesPerSecond(scene, trajectory, 0, true, 150),
+                framesPerSecond(scene, trajectory, ui::kEdgeSmoothing, true, 150));
 
     std::printf("peak resident memory of `lagrangelab render` at 1920x1080, MP4:\n");
     for (double seconds : {10.0, 60.0})

@@ -29,7 +29,7 @@ constexpr std::array<CommandText, 9> commands{{
     {"render",
      "SCENE --out FILE.mp4|.webm|.gif|.png|FOLDER [--duration T] [--fps F] [--size WxH]\n"
      "[--camera front|side|top|iso|az,el[,dist]] [--speed X] [--overlay time,energy,name|none]\n"
-     "[--trail on|off] [--frames on|off] [--at T] [--msaa 0|2|4|8]",
+     "[--trail on|off] [--frames on|off] [--at T] [--msaa auto|edges|0|2|4|8]",
      "simulate and render the 3D scene headless (no X server needed) to a video, a still or PNG frames"},
     {"integrators", "", "the integrators with order, kind and when to use each"},
     {"accuracy",

@@ -180,6 +180,7 @@ private slots:
         QTest::newRow("camera") << QStringList{"--camera", "diagonal", "--out", out} << "--camera diagonal";
         QTest::newRow("overlay") << QStringList{"--overlay", "time,clock", "--out", out} << "--overlay time,clock";
         QTest::newRow("trail") << QStringList{"--trail", "maybe", "--out", out} << "--trail maybe";
+        QTest::newRow("msaa") << QStringList{"--msaa", "3", "--out", out} << "--msaa 3";
         QTest::newRow("extension") << QStringList{"--out", "/tmp/movie.avi"} << "--out /tmp/movie.avi";
         QTest::newRow("missing folder") << QStringList{"--out", "/nonexistent/dir/x.mp4"} << "--out /nonexistent/dir/x.mp4";
         QTest::newRow("unwritable folder") << QStringList{"--out", "/proc/x.mp4"} << "--out /proc/x.mp4";

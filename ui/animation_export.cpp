@@ -170,8 +170,9 @@ ExportTimings exportAnimation(const Scene& scene, const Trajectory& trajectory, 
     sceneOptions.trail = s.trail;
     sceneOptions.labelPixels = std::max(10.0, s.height / 40.0);
     OsgScene graph(visual, sceneOptions);
-    HeadlessRenderer gl(s.width, s.height, s.samples);
+    HeadlessRenderer gl(s.width, s.height, s.antialiasing);
     timings.renderer = gl.rendererName();
+    timings.antialiasing = gl.antialiasing();
     gl.setScene(graph.root());
     applyCameraView(*gl.camera(), cameraView(visual, s.camera, gl.aspect()), gl.aspect());
 

@@ -3,7 +3,7 @@
 // `lagrangelab render` (and of the window's export later).
 //
 //   VisualScene (core, posed per frame at t_k = t0 + k·speed/fps from the Hermite
-//   sampler) → OsgScene → HeadlessRenderer (EGL, 4× MSAA) → FrameOverlay (time, name,
+//   sampler) → OsgScene → HeadlessRenderer (EGL; 4× MSAA, or edge smoothing on software GL) → FrameOverlay (time, name,
 //   energy inset) → a sink: ffmpeg (mp4, webm, gif), numbered PNGs in a folder, or one
 //   PNG still.
 //
@@ -45,7 +45,7 @@ struct ExportSettings {
     double trailSeconds = 2;   // [s] simulated
     bool frames = true;        // DH triads
     double at = 0;             // Still: the picture's time [s]
-    int samples = 4;           // MSAA
+    int antialiasing = -1;     // MSAA samples, or kEdgeSmoothing / kAutoAntialiasing (ui/headless_renderer.hpp)
 };
 
 // Wall time spent per stage over the whole export [s].
@@ -53,6 +53,7 @@ struct ExportTimings {
     long frames = 0;
     double setup = 0, pose = 0, draw = 0, readBack = 0, overlay = 0, write = 0, total = 0;
     std::string renderer;      // the GL renderer string
+    std::string antialiasing;  // "4x MSAA", "edge smoothing" or "none"
 };
 
 class ExportCancelled : public std::runtime_error {

@@ -1,5 +1,7 @@
 #include "ui/headless_renderer.hpp"
 
+#include "ui/edge_smoothing.hpp"
+
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 
@@ -33,6 +35,8 @@ struct HeadlessRenderer::Impl {
     EGLContext context = EGL_NO_CONTEXT;
     GLuint drawFbo = 0, resolveFbo = 0, colour = 0, depth = 0, resolveColour = 0;
     int samples = 0;
+    bool smoothEdges = false;
+    EdgeSmoothing edgeSmoothing;
     osg::ref_ptr<osgViewer::Viewer> viewer;
     std::vector<unsigned char> pixels;  // bottom row first, as GL reads them
 
@@ -73,7 +77,7 @@ struct HeadlessRenderer::Impl {
     }
 };
 
-HeadlessRenderer::HeadlessRenderer(int width, int height, int samples)
+HeadlessRenderer::HeadlessRenderer(int width, int height, int antialiasing)
     : impl_(std::make_unique<Impl>()), width_(width), height_(height) {
     Impl& d = *impl_;
     auto getPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
@@ -107,6 +111,9 @@ HeadlessRenderer::HeadlessRenderer(int width, int height, int samples)
 
     GLint maxSamples = 0;
     glGetIntegerv(GL_MAX_SAMPLES, &maxSamples);
+    int samples = antialiasing;
+    if (antialiasing == kAutoAntialiasing) samples = softwareRenderer() ? kEdgeSmoothing : 4;
+    d.smoothEdges = samples == kEdgeSmoothing;
     d.samples = samples > 1 ? std::min(samples, int(maxSamples)) : 0;
     d.drawFbo = d.framebuffer(width, height, d.samples, d.colour, &d.depth);
     if (d.samples > 0) d.resolveFbo = d.framebuffer(width, height, 0, d.resolveColour, nullptr);
@@ -154,6 +161,18 @@ std::string HeadlessRenderer::rendererName() const {
     return name ? name : "?";
 }
 
+std::string HeadlessRenderer::antialiasing() const {
+    if (impl_->smoothEdges) return "edge smoothing";
+    return impl_->samples > 1 ? std::to_string(impl_->samples) + "x MSAA" : "none";
+}
+
+bool HeadlessRenderer::softwareRenderer() const {
+    const std::string name = rendererName();
+    for (const char* software : {"llvmpipe", "softpipe", "swrast"})
+        if (name.find(software) != std::string::npos) return true;
+    return false;
+}
+
 void HeadlessRenderer::draw() {
     Impl& d = *impl_;
     d.makeCurrent();
@@ -188,6 +207,7 @@ void HeadlessRenderer::readBack(QImage& image) {
         std::memcpy(line, d.pixels.data() + row * (height_ - 1 - y), row);
         for (std::size_t x = 3; x < row; x += 4) line[x] = 255;
     }
+    if (d.smoothEdges) d.edgeSmoothing.apply(image);
 }
 
 }  // namespace ll::ui
