@@ -52,11 +52,16 @@ std::string trigKey(const std::vector<Trig>& trig) {
 // trig with one power of each of `remove` taken out and one of each of `add` put in.
 std::vector<Trig> changed(std::vector<Trig> trig, std::initializer_list<std::pair<char, Mask>> remove,
                           std::initializer_list<std::pair<char, Mask>> add) {
-    for (const auto& [kind, mask] : remove) {
+    // Plain copies, not structured bindings: clang 14 (the fuzz build) cannot capture those.
+    for (const std::pair<char, Mask>& r : remove) {
+        const char kind = r.first;
+        const Mask mask = r.second;
         auto it = std::find_if(trig.begin(), trig.end(), [&](const Trig& t) { return t.kind == kind && t.mask == mask; });
         if (--it->exp == 0) trig.erase(it);
     }
-    for (const auto& [kind, mask] : add) {
+    for (const std::pair<char, Mask>& a : add) {
+        const char kind = a.first;
+        const Mask mask = a.second;
         auto it = std::find_if(trig.begin(), trig.end(), [&](const Trig& t) { return t.kind == kind && t.mask == mask; });
         if (it != trig.end())
             ++it->exp;
