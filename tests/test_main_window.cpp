@@ -14,6 +14,9 @@
 #include <QLineSeries>
 #include <QMimeData>
 #include <QProgressBar>
+#include <QLineEdit>
+#include <QSlider>
+#include <QTableView>
 #include <QPushButton>
 
 #include "core/io/scene_file.hpp"
@@ -510,7 +513,7 @@ private slots:
         QVERIFY(w.presenting());
         QCOMPARE(QApplication::font().pointSizeF(), font * 1.6);
         QVERIFY(!w.findChild<QDockWidget*>("model")->isVisible());
-        QTest::qWait(200);
+        QTest::qWait(1000);
         w.screenshot().save(dir_.filePath("presentation.png"));
         // The focus on a push button, which would take the space as a click.
         auto* next = w.derivationView().findChild<QPushButton*>();
@@ -696,6 +699,86 @@ private slots:
         QVERIFY(checked(w));
         QCOMPARE(value("m2"), 1.5);
         QCOMPARE(w.document().undoStack()->count(), 3);  // add, use, remove m2 (the undone removal of m3 was dropped)
+    }
+
+    // A student's session, driven by keyboard and mouse events only: open the 2R from the
+    // example gallery, type a new a1 in the DH table, undo and redo with the keys, play,
+    // scrub in the energy plot, pose the arm with a teach slider, export the plot. Each
+    // stage is saved as a screenshot (LL_TEST_KEEP=1 keeps them to look at).
+    void aStudentsSession() {
+        MainWindow w;
+        w.setAskBeforeClosing(false);
+        w.resize(1280, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.activateWindow();  // shortcuts (Ctrl+Z) go to the active window only
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QVERIFY(w.openFile(":/examples/planar_2r.json", nullptr, true));
+        QVERIFY(settled(w, 120));
+        const auto shot = [&](const char* name) { w.screenshot().save(dir_.filePath(QString("student-%1.png").arg(name))); };
+        shot("1-opened");
+        // The DH table: select joint 1's a, type 1.2, Enter.
+        QTableView* dh = nullptr;
+        for (QTableView* t : w.findChildren<QTableView*>())
+            if (t->model() == &w.jointModel() && !t->isColumnHidden(JointTableModel::A) && t->isVisible()) dh = t;
+        QVERIFY(dh);
+        dh->setFocus();
+        dh->setCurrentIndex(w.jointModel().index(0, JointTableModel::A));
+        QTest::keyClick(dh, '1');  // any key opens the cell's editor with that key typed
+        auto* editor = dh->viewport()->findChild<QLineEdit*>();
+        QVERIFY(editor && editor->isVisible());
+        QTest::keyClicks(editor, ".2");
+        QCOMPARE(editor->text(), QString("1.2"));
+        QTest::keyClick(editor, Qt::Key_Return);  // the delegate commits by a queued call
+        QTRY_COMPARE_WITH_TIMEOUT(w.document().validScene().robot.joints[0].dh.a, 1.2, 30000);
+        QVERIFY(settled(w));
+        QVERIFY(w.derivationPanel().text().section("Step 1.", 0, 0).contains("6/5"));
+        QVERIFY(w.windowTitle().contains('*'));
+        shot("2-edited");
+        // Ctrl+Z, Ctrl+Shift+Z.
+        dh->setFocus();
+        QTest::keyClick(dh, Qt::Key_Z, Qt::ControlModifier);
+        QVERIFY(checked(w));
+        QCOMPARE(w.document().validScene().robot.joints[0].dh.a, 1.0);
+        QVERIFY(!w.windowTitle().contains('*'));
+        QTest::keyClick(dh, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+        QVERIFY(checked(w));
+        QCOMPARE(w.document().validScene().robot.joints[0].dh.a, 1.2);
+        QVERIFY(settled(w));
+        // Play from the toolbar for a second of wall time.
+        QAction* play = nullptr;
+        for (QAction* a : w.findChildren<QAction*>())
+            if (a->text().contains("Play") && !a->text().contains("pause")) play = a;
+        QVERIFY(play);
+        w.playback().restart();
+        w.playback().pause();
+        play->trigger();
+        QVERIFY(w.playback().isPlaying());
+        QTest::qWait(1000);
+        QVERIFY2(w.playback().time() > 0.2, qPrintable(QString::number(w.playback().time())));
+        shot("3-playing");
+        // Scrub: a click in the energy plot at 60 % of its width pauses there.
+        auto& chart = w.energyChart();
+        const QRectF area = chart.chart()->plotArea();
+        const QPoint at = chart.mapFromScene(QPointF(area.left() + 0.6 * area.width(), area.center().y()));
+        QTest::mouseClick(chart.viewport(), Qt::LeftButton, {}, at);
+        QVERIFY(!w.playback().isPlaying());
+        const double end = w.result()->simulation.trajectory.t.back();
+        QVERIFY2(std::abs(w.playback().time() - 0.6 * end) < 0.02 * end, qPrintable(QString::number(w.playback().time())));
+        shot("4-scrubbed");
+        // Teach: the tab, then joint 2's slider moved by the keyboard.
+        w.teach(w.teachPanel().pose());
+        auto sliders = w.teachPanel().findChildren<QSlider*>();
+        QCOMPARE(sliders.size(), 2);
+        const QString readout = w.teachPanel().readout();
+        sliders[1]->setFocus();
+        for (int k = 0; k < 10; ++k) QTest::keyClick(sliders[1], Qt::Key_PageUp);
+        QVERIFY(w.teachPanel().pose()[1] != 0);
+        QVERIFY(w.teachPanel().readout() != readout);
+        shot("5-teach");
+        QString error;
+        QVERIFY2(w.exportPlotTo(dir_.filePath("student-energy.png"), &error), qPrintable(error));
+        QVERIFY(!QImage(dir_.filePath("student-energy.png")).isNull());
     }
 
     // The command a README picture comes from: `lagrangelab SCENE --screenshot FILE`.
