@@ -715,7 +715,10 @@ private slots:
         QVERIFY(QTest::qWaitForWindowActive(&w));
         QVERIFY(w.openFile(":/examples/planar_2r.json", nullptr, true));
         QVERIFY(settled(w, 120));
-        const auto shot = [&](const char* name) { w.screenshot().save(dir_.filePath(QString("student-%1.png").arg(name))); };
+        const auto shot = [&](const char* name) {
+            QTest::qWait(300);  // the window repainted before the screen is grabbed
+            w.screenshot().save(dir_.filePath(QString("student-%1.png").arg(name)));
+        };
         shot("1-opened");
         // The DH table: select joint 1's a, type 1.2, Enter.
         QTableView* dh = nullptr;
