@@ -26,7 +26,6 @@
 #include "app/scene_loading.hpp"
 #include "core/pipeline/scene_simulation.hpp"
 #include "core/scene/trajectory_sampler.hpp"
-#include "ui/derivation_panel.hpp"
 #include "ui/joint_table_model.hpp"
 #include "ui/main_window.hpp"
 #include "ui/scene_view.hpp"
@@ -71,7 +70,7 @@ void latency(const std::string& path, int runs) {
         std::printf("%s: cannot open\n", path.c_str());
         return;
     }
-    waitFor([&] { return window.result() && !window.derivationPanel().busy(); }, 120);
+    waitFor([&] { return window.result() && !window.liveDerivation().busy(); }, 120);
     auto [row, column] = editableCell(window.document());
     ui::JointTableModel& model = window.jointModel();
     const QModelIndex cell = model.index(row, column);
@@ -96,7 +95,7 @@ void latency(const std::string& path, int runs) {
         bool drawn = waitFor([&] { return shown >= request && window.sceneView().framesDrawn() > frames; }, 30);
         const auto t1 = Clock::now();
         const double cpu1 = processCpu();
-        waitFor([&] { return !window.derivationPanel().busy(); }, 60);
+        waitFor([&] { return !window.liveDerivation().busy(); }, 60);
         const auto t2 = Clock::now();
         QObject::disconnect(connection);
         if (!drawn) continue;

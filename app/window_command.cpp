@@ -20,7 +20,6 @@
 #include "app/commands.hpp"
 #include "app/event_wait.hpp"
 #include "core/io/atomic_file.hpp"
-#include "ui/derivation_panel.hpp"
 #include "ui/main_window.hpp"
 #include "ui/playback_bar.hpp"
 #include "ui/scene_view.hpp"
@@ -78,7 +77,7 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
     }
 
     // Scripted: wait for the simulation and the derivation, then play, pose or step.
-    if (!waitFor([&] { return window.result() && !window.derivationPanel().busy(); }, 120)) {
+    if (!waitFor([&] { return window.result() && !window.liveDerivation().busy(); }, 120)) {
         std::cerr << "error: " << scene << ": the simulation or derivation did not finish in 120 s\n";
         return 1;
     }

@@ -9,7 +9,18 @@
 #include <QSettings>
 #include <QTemporaryDir>
 
+#include <QChart>
+#include <QDockWidget>
+#include <QLineSeries>
+#include <QMimeData>
+#include <QProgressBar>
+#include <QLineEdit>
+#include <QSlider>
+#include <QTableView>
+#include <QPushButton>
+
 #include "core/io/scene_file.hpp"
+#include "core/pipeline/scene_derivation.hpp"
 #include "ui/derivation_panel.hpp"
 #include "ui/joint_table_model.hpp"
 #include "ui/derivation_view.hpp"
@@ -18,6 +29,7 @@
 #include "ui/scene_view.hpp"
 #include "ui/teach_panel.hpp"
 #include "ui/trajectory_chart.hpp"
+#include "ui/work_precision_pane.hpp"
 
 using ll::ui::JointTableModel;
 using ll::ui::MainWindow;
@@ -33,7 +45,7 @@ bool settled(MainWindow& w, int seconds = 60) {
     clock.start();
     while (clock.elapsed() < seconds * 1000) {
         QTest::qWait(20);
-        if (w.result() && !w.liveSimulation().busy() && !w.derivationPanel().busy() && w.result()->request == w.liveSimulation().latestRequest())
+        if (w.result() && !w.liveSimulation().busy() && !w.liveDerivation().busy() && w.result()->request == w.liveSimulation().latestRequest())
             return true;
     }
     return false;
@@ -74,15 +86,52 @@ std::pair<double, int> content(const QImage& image, const QRect& rect) {
     return {double(differing) / std::max(total, 1L), static_cast<int>(colours.size())};
 }
 
+// Fraction of pixels that differ by more than a little between two images of one size.
+double differing(const QImage& a, const QImage& b) {
+    if (a.size() != b.size()) return 1.0;
+    long n = 0, total = 0;
+    for (int y = 0; y < a.height(); y += 2)
+        for (int x = 0; x < a.width(); x += 2) {
+            const QRgb p = a.pixel(x, y), q = b.pixel(x, y);
+            ++total;
+            n += std::abs(qRed(p) - qRed(q)) + std::abs(qGreen(p) - qGreen(q)) + std::abs(qBlue(p) - qBlue(q)) > 30;
+        }
+    return double(n) / std::max(total, 1L);
+}
+
+// The GL view's picture after the next frame is drawn.
+QImage nextFrame(MainWindow& w) {
+    const long frames = w.sceneView().framesDrawn();
+    w.sceneView().update();
+    QElapsedTimer clock;
+    clock.start();
+    while (w.sceneView().framesDrawn() <= frames && clock.elapsed() < 10000) QTest::qWait(10);
+    return w.sceneView().grabView();
+}
+
+// Opens an example in a shown window and waits for its simulation and derivation.
+bool openShown(MainWindow& w, const char* scene) {
+    w.setAskBeforeClosing(false);
+    w.resize(1280, 800);
+    w.show();
+    return QTest::qWaitForWindowExposed(&w) && w.openFile(example(scene), nullptr, true) && settled(w, 120);
+}
+
+QByteArray readAll(const QString& path) {
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
 }  // namespace
 
 class TestMainWindow : public QObject {
     Q_OBJECT
-    QTemporaryDir dir_;
+    QTemporaryDir dir_{qEnvironmentVariableIsSet("LL_TEST_KEEP") ? "/tmp/ll-test-main-window-XXXXXX" : QDir::tempPath() + "/ll-XXXXXX"};
 
 private slots:
     void initTestCase() {
         QVERIFY(dir_.isValid());
+        dir_.setAutoRemove(!qEnvironmentVariableIsSet("LL_TEST_KEEP"));  // LL_TEST_KEEP=1: keep the screenshots to look at
         // Recovery copies and recent files go to the temporary folder, not the user's.
         qputenv("LAGRANGELAB_RECOVERY_DIR", dir_.filePath("recovery").toLocal8Bit());
         QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, dir_.filePath("settings"));
@@ -358,6 +407,381 @@ private slots:
         // The drawn end effector is at (a1, a2) = (1, 0.8).
         const Eigen::Vector3d tip = w.result()->visual->endEffectorPosition();
         QVERIFY2((tip - Eigen::Vector3d(1.0, 0.8, 0)).norm() < 1e-3, qPrintable(QString("%1 %2 %3").arg(tip.x()).arg(tip.y()).arg(tip.z())));
+    }
+
+
+    // One edit, one derivation: the typeset and text tabs show the same result of one
+    // deriveDocument call (they used to derive twice, one after the other on the lock).
+    void oneEditDerivesOnce() {
+        MainWindow w;
+        QVERIFY(openShown(w, "planar_2r.json"));
+        QTest::qWait(200);
+        const long before = ll::documentDerivations();
+        JointTableModel& model = w.jointModel();
+        QVERIFY(model.setData(model.index(0, JointTableModel::A), "1.5", Qt::EditRole));
+        QVERIFY(checked(w));
+        QVERIFY(settled(w));
+        QTest::qWait(300);  // anything else that would derive has had its chance
+        QCOMPARE(ll::documentDerivations() - before, 1L);
+        QVERIFY(w.derivation() && w.derivation()->display);
+        QCOMPARE(w.derivationView().document().get(), w.derivation()->display.get());
+        QCOMPARE(w.derivationPanel().text(), w.derivation()->text);
+        QVERIFY(w.derivationPanel().text().section("Step 1.", 0, 0).contains("3/2"));
+        // An invalid edit stops nothing for good: the valid scene's derivation is shown.
+        // a1 = 5/4 is checked and starts deriving; the bad mass typed next stops that
+        // derivation (its check needs the GiNaC lock), and once the mass is found bad the
+        // valid scene, a1 = 5/4, is derived again and shown.
+        QVERIFY(model.setData(model.index(0, JointTableModel::A), "1.25", Qt::EditRole));
+        QVERIFY(checked(w));
+        QVERIFY(w.liveDerivation().busy());
+        QVERIFY(model.setData(model.index(1, JointTableModel::Mass), "-1", Qt::EditRole));
+        QVERIFY(checked(w));
+        QVERIFY(w.document().hasErrors());
+        QTRY_VERIFY_WITH_TIMEOUT(!w.liveDerivation().busy(), 60000);
+        QVERIFY(!w.derivation()->stopped);
+        QVERIFY2(w.derivationPanel().text().section("Step 1.", 0, 0).contains("5/4"), qPrintable(w.derivationPanel().text().left(400)));
+    }
+
+    // A ghost run with explicit Euler: a second, translucent robot in the 3D view and its
+    // energy dashed in the plot, drifting where dopri5's stays put.
+    void ghostRunShowsAnotherIntegrator() {
+        MainWindow w;
+        QVERIFY(openShown(w, "double_pendulum.json"));
+        w.playback().pause();
+        w.playback().setTime(3.0);
+        const QImage alone = nextFrame(w);
+        w.setGhostIntegrator("euler");
+        QTRY_VERIFY_WITH_TIMEOUT(w.ghostResult() != nullptr, 60000);
+        QCOMPARE(QString::fromStdString(w.ghostResult()->simulation.stats.integrator), QString("euler"));
+        // The classic lesson: Euler's energy drifts by orders of magnitude more.
+        const double drift = w.ghostResult()->simulation.stats.maxRelEnergyError;
+        const double reference = w.result()->simulation.stats.maxRelEnergyError;
+        QVERIFY2(drift > 100 * reference && drift > 1e-3, qPrintable(QString("euler %1, dopri5 %2").arg(drift).arg(reference)));
+        w.playback().setTime(3.0);
+        const QImage withGhost = nextFrame(w);
+        QVERIFY2(differing(alone, withGhost) > 0.002, qPrintable(QString("%1 of the view changed").arg(differing(alone, withGhost))));
+        // The energy plot: a dashed E of the ghost, named after its integrator.
+        QLineSeries* dashed = nullptr;
+        for (QAbstractSeries* a : w.energyChart().chart()->series())
+            if (auto* line = qobject_cast<QLineSeries*>(a); line && line->pen().style() == Qt::DashLine && line->name().contains("euler"))
+                dashed = line;
+        QVERIFY(dashed);
+        QVERIFY(dashed->count() > 50);
+        w.screenshot().save(dir_.filePath("ghost.png"));
+        w.setGhostIntegrator("");
+        QVERIFY(!w.ghostResult());
+        int dashedLeft = 0;
+        for (QAbstractSeries* a : w.energyChart().chart()->series())
+            if (auto* line = qobject_cast<QLineSeries*>(a); line && line->name().contains("euler")) ++dashedLeft;
+        QCOMPARE(dashedLeft, 0);
+        QVERIFY(differing(alone, nextFrame(w)) < 0.002);
+    }
+
+    // The work–precision tab runs the sweep on a worker with a progress bar that moves.
+    void workPrecisionTabRunsWithProgress() {
+        MainWindow w;
+        QVERIFY(openShown(w, "simple_pendulum.json"));
+        ll::ui::WorkPrecisionPane& pane = w.workPrecisionPane();
+        auto* bar = pane.findChild<QProgressBar*>();
+        QVERIFY(bar);
+        QSet<int> seen;
+        connect(bar, &QProgressBar::valueChanged, this, [&](int v) { seen.insert(v); });
+        QSignalSpy done(&pane, &ll::ui::WorkPrecisionPane::finished);
+        pane.run();
+        QVERIFY(done.wait(300000));
+        QVERIFY(pane.hasResult());
+        QCOMPARE(bar->value(), 1000);
+        QVERIFY2(seen.size() >= 5, qPrintable(QString("%1 progress values").arg(seen.size())));
+        const QString png = dir_.filePath("wp.png");
+        QString error;
+        QVERIFY2(pane.saveImage(png, &error), qPrintable(error));
+        const QImage image(png);
+        QVERIFY(!image.isNull());
+        QVERIFY(content(image, image.rect().adjusted(60, 40, -60, -60)).second > 4);
+        w.screenshot().save(dir_.filePath("work_precision_tab.png"));
+    }
+
+    // Presentation mode: full screen, larger fonts, the model hidden; space, the arrows
+    // and F work wherever the focus is, and Escape leaves.
+    void presentationModeKeys() {
+        MainWindow w;
+        QVERIFY(openShown(w, "planar_2r.json"));
+        w.playback().pause();
+        const double font = QApplication::font().pointSizeF();
+        w.setPresentationMode(true);
+        QTRY_VERIFY(w.isFullScreen());
+        QVERIFY(w.presenting());
+        QCOMPARE(QApplication::font().pointSizeF(), font * 1.6);
+        QVERIFY(!w.findChild<QDockWidget*>("model")->isVisible());
+        QTest::qWait(1000);
+        w.screenshot().save(dir_.filePath("presentation.png"));
+        // The focus on a push button, which would take the space as a click.
+        auto* next = w.derivationView().findChild<QPushButton*>();
+        QVERIFY(next);
+        next->setFocus();
+        const int step = w.derivationView().step();
+        QTest::keyClick(next, Qt::Key_Right);
+        QCOMPARE(w.derivationView().step(), step + 1);
+        QTest::keyClick(next, Qt::Key_Left);
+        QCOMPARE(w.derivationView().step(), step);
+        QVERIFY(!w.playback().isPlaying());
+        QTest::keyClick(next, Qt::Key_Space);
+        QVERIFY(w.playback().isPlaying());
+        QTest::keyClick(next, Qt::Key_Space);
+        QVERIFY(!w.playback().isPlaying());
+        w.playback().setTime(0);
+        // Zoom in with the wheel, then F fits the view again (fitted first at this size:
+        // the fit of the smaller window before full screen kept its distance).
+        QTest::keyClick(next, Qt::Key_F);
+        const QImage before = nextFrame(w);
+        const QPoint centre = w.sceneView().rect().center();
+        QWheelEvent wheel(centre, w.sceneView().mapToGlobal(centre), QPoint(), QPoint(0, 600), Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(&w.sceneView(), &wheel);
+        const QImage zoomed = nextFrame(w);
+        QVERIFY2(differing(before, zoomed) > 0.01, qPrintable(QString::number(differing(before, zoomed))));
+        QTest::keyClick(next, Qt::Key_F);
+        const QImage refitted = nextFrame(w);
+        QVERIFY2(differing(before, refitted) < 0.002, qPrintable(QString::number(differing(before, refitted))));
+        QTest::keyClick(next, Qt::Key_Escape);
+        QTRY_VERIFY(!w.isFullScreen());
+        QVERIFY(!w.presenting());
+        QCOMPARE(QApplication::font().pointSizeF(), font);
+        QVERIFY(w.findChild<QDockWidget*>("model")->isVisible());
+    }
+
+    // A scene file dropped on the window opens.
+    void droppingASceneFileOpensIt() {
+        MainWindow w;
+        QVERIFY(openShown(w, "planar_2r.json"));
+        const QString path = dir_.filePath("dropped.lagrange");
+        QFile::remove(path);
+        QVERIFY(QFile::copy(example("scara.json"), path));
+        QMimeData mime;
+        mime.setUrls({QUrl::fromLocalFile(path)});
+        const QPoint at = w.rect().center();
+        QDragEnterEvent enter(at, Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(&w, &enter);
+        QVERIFY(enter.isAccepted());
+        QDropEvent drop(at, Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(&w, &drop);
+        QTRY_COMPARE_WITH_TIMEOUT(w.document().path(), path, 30000);
+        QCOMPARE(w.document().validScene().robot.dof(), ll::loadScene(path.toStdString()).scene.robot.dof());
+        QVERIFY(settled(w));
+        QCOMPARE(QString::fromStdString(w.result()->scene->name), QString::fromStdString(ll::loadScene(path.toStdString()).scene.name));
+    }
+
+    // Opening a file checks it on a worker: the window's event loop keeps running.
+    void openingChecksOnAWorker() {
+        MainWindow w;
+        QVERIFY(openShown(w, "planar_2r.json"));
+        int ticks = 0;
+        QTimer timer;
+        timer.setInterval(0);
+        connect(&timer, &QTimer::timeout, this, [&] { ++ticks; });
+        timer.start();
+        QVERIFY(w.openFile(example("puma560.json"), nullptr, true));
+        timer.stop();
+        QVERIFY2(ticks > 0, "the GUI thread did not process events while the file was checked");
+        QCOMPARE(w.document().validScene().robot.dof(), 6);
+    }
+
+    // Exports: the plot as PNG, SVG and CSV, the derivation as PDF (typeset, as `derive
+    // --format pdf`) and LaTeX, the animation by the offscreen renderer.
+    void exportsWriteValidFiles() {
+        MainWindow w;
+        QVERIFY(openShown(w, "planar_2r.json"));
+        QString error;
+        const QString png = dir_.filePath("energy.png"), svg = dir_.filePath("energy.svg"), csv = dir_.filePath("energy.csv");
+        QVERIFY2(w.exportPlotTo(png, &error), qPrintable(error));
+        QVERIFY2(w.exportPlotTo(svg, &error), qPrintable(error));
+        QVERIFY2(w.exportPlotTo(csv, &error), qPrintable(error));
+        const QImage plot(png);
+        QVERIFY(!plot.isNull());
+        QVERIFY(content(plot, plot.rect().adjusted(60, 20, -150, -40)).first > 0.005);
+        const QByteArray svgText = readAll(svg);
+        QVERIFY(svgText.contains("<svg") && (svgText.contains("<path") || svgText.contains("<polyline")));
+        const QList<QByteArray> rows = readAll(csv).trimmed().split('\n');
+        QCOMPARE(rows.front(), QByteArray("t [s],Ekin [J],Epot [J],E [J],W [J]"));
+        QCOMPARE(static_cast<std::size_t>(rows.size() - 1), w.result()->simulation.trajectory.size());
+        // E = Ekin + Epot in every row.
+        for (const QByteArray& row : rows.mid(1)) {
+            const QList<QByteArray> v = row.split(',');
+            QVERIFY(std::abs(v[1].toDouble() + v[2].toDouble() - v[3].toDouble()) < 1e-9 * (1 + std::abs(v[3].toDouble())));
+        }
+        QVERIFY(!w.exportPlotTo(dir_.filePath("missing/energy.png"), &error));
+        QVERIFY(!error.isEmpty());
+
+        QSignalSpy exported(&w, &MainWindow::exportFinished);
+        const QString pdf = dir_.filePath("derivation.pdf"), tex = dir_.filePath("derivation.tex");
+        const long derivations = ll::documentDerivations();
+        QVERIFY2(w.exportDerivationTo(pdf, &error), qPrintable(error));
+        QVERIFY(exported.wait(60000));
+        QCOMPARE(exported.back().at(1).toString(), QString());
+        QVERIFY(readAll(pdf).startsWith("%PDF-"));
+        QVERIFY2(w.exportDerivationTo(tex, &error), qPrintable(error));
+        QVERIFY(exported.wait(60000));
+        const QByteArray latex = readAll(tex);
+        QVERIFY(latex.startsWith("\\documentclass") && latex.contains("\\end{document}"));
+        QCOMPARE(ll::documentDerivations(), derivations);  // the document on screen, not derived anew
+        if (!QStandardPaths::findExecutable("pdftotext").isEmpty()) {
+            QProcess text;
+            text.start("pdftotext", {pdf, "-"});
+            QVERIFY(text.waitForFinished(30000));
+            const QString words = QString::fromUtf8(text.readAllStandardOutput());
+            QVERIFY2(words.contains("Step 7") && words.contains("B(q)"), qPrintable(words.left(300)));
+        }
+        QVERIFY(!w.exportDerivationTo(dir_.filePath("derivation.doc"), &error));
+
+        // The animation: 0.5 s at 30 fps as a folder of frames, then as MP4.
+        const QString frames = dir_.filePath("frames/");
+        QVERIFY2(w.exportAnimationTo(frames, &error, 0.5, false), qPrintable(error));
+        QVERIFY(exported.wait(120000));
+        QCOMPARE(exported.back().at(1).toString(), QString());
+        const QStringList files = QDir(frames).entryList({"*.png"}, QDir::Files, QDir::Name);
+        QVERIFY2(files.size() >= 15, qPrintable(files.join(' ')));
+        const QImage first(frames + files.front()), last(frames + files.back());
+        QCOMPARE(first.size(), QSize(1280, 720));
+        QVERIFY(differing(first, last) > 0.001);  // the arm moved
+        if (!QStandardPaths::findExecutable("ffprobe").isEmpty()) {
+            const QString mp4 = dir_.filePath("animation.mp4");
+            QVERIFY2(w.exportAnimationTo(mp4, &error, 0.5, false), qPrintable(error));
+            QVERIFY(exported.wait(120000));
+            QCOMPARE(exported.back().at(1).toString(), QString());
+            QProcess probe;
+            probe.start("ffprobe", {"-v", "error", "-count_frames", "-select_streams", "v:0", "-show_entries", "stream=nb_read_frames,width,height", "-of", "csv=p=0", mp4});
+            QVERIFY(probe.waitForFinished(30000));
+            const QStringList fields = QString::fromUtf8(probe.readAllStandardOutput()).trimmed().split(',');
+            QCOMPARE(fields.size(), 3);
+            QCOMPARE(fields[0], QString("1280"));
+            QCOMPARE(fields[1], QString("720"));
+            QCOMPARE(fields[2].toInt(), files.size());
+        }
+    }
+
+    // Parameters are added and removed as undoable edits; removing one in use is an error
+    // that keeps the last valid model.
+    void parametersAddAndRemove() {
+        MainWindow w;
+        w.setAskBeforeClosing(false);
+        QVERIFY(w.openFile(example("planar_2r.json"), nullptr, true));
+        const auto value = [&](const std::string& name) {
+            for (const auto& [n, v] : w.document().validScene().parameters)
+                if (n == name) return v;
+            return std::nan("");
+        };
+        QString error;
+        QVERIFY2(w.addParameter("m3", "0.75", &error), qPrintable(error));
+        QVERIFY(checked(w));
+        QCOMPARE(value("m3"), 0.75);
+        QVERIFY(!w.addParameter("m3", "1", &error));
+        QVERIFY(error.contains("m3"));
+        QVERIFY(!w.addParameter("3m", "1", &error));
+        // Using it: the mass of link 2 becomes m3.
+        w.jointModel().setData(w.jointModel().index(1, JointTableModel::Mass), "m3", Qt::EditRole);
+        QVERIFY(checked(w));
+        QCOMPARE(w.document().validScene().robot.joints[1].link.mass, 0.75);
+        // Removing a parameter in use: the loader names it, the valid model stays.
+        w.removeParameter("m3");
+        QVERIFY(checked(w));
+        QVERIFY(w.document().hasErrors());
+        QVERIFY2(w.diagnosticLines().join('\n').contains("m3"), qPrintable(w.diagnosticLines().join('\n')));
+        QCOMPARE(w.document().validScene().robot.joints[1].link.mass, 0.75);
+        w.document().undoStack()->undo();
+        QVERIFY(checked(w));
+        QVERIFY(!w.document().hasErrors());
+        QCOMPARE(value("m3"), 0.75);
+        // Unused: removed cleanly; undo brings it back.
+        w.removeParameter("m2");
+        QVERIFY(checked(w));
+        QVERIFY(!w.document().hasErrors());
+        QVERIFY(std::isnan(value("m2")));
+        w.document().undoStack()->undo();
+        QVERIFY(checked(w));
+        QCOMPARE(value("m2"), 1.5);
+        QCOMPARE(w.document().undoStack()->count(), 3);  // add, use, remove m2 (the undone removal of m3 was dropped)
+    }
+
+    // A student's session, driven by keyboard and mouse events only: open the 2R from the
+    // example gallery, type a new a1 in the DH table, undo and redo with the keys, play,
+    // scrub in the energy plot, pose the arm with a teach slider, export the plot. Each
+    // stage is saved as a screenshot (LL_TEST_KEEP=1 keeps them to look at).
+    void aStudentsSession() {
+        MainWindow w;
+        w.setAskBeforeClosing(false);
+        w.resize(1280, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.activateWindow();  // shortcuts (Ctrl+Z) go to the active window only
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QVERIFY(w.openFile(":/examples/planar_2r.json", nullptr, true));
+        QVERIFY(settled(w, 120));
+        const auto shot = [&](const char* name) {
+            QTest::qWait(300);  // the window repainted before the screen is grabbed
+            w.screenshot().save(dir_.filePath(QString("student-%1.png").arg(name)));
+        };
+        shot("1-opened");
+        // The DH table: select joint 1's a, type 1.2, Enter.
+        QTableView* dh = nullptr;
+        for (QTableView* t : w.findChildren<QTableView*>())
+            if (t->model() == &w.jointModel() && !t->isColumnHidden(JointTableModel::A) && t->isVisible()) dh = t;
+        QVERIFY(dh);
+        dh->setFocus();
+        dh->setCurrentIndex(w.jointModel().index(0, JointTableModel::A));
+        QTest::keyClick(dh, '1');  // any key opens the cell's editor with that key typed
+        auto* editor = dh->viewport()->findChild<QLineEdit*>();
+        QVERIFY(editor && editor->isVisible());
+        QTest::keyClicks(editor, ".2");
+        QCOMPARE(editor->text(), QString("1.2"));
+        QTest::keyClick(editor, Qt::Key_Return);  // the delegate commits by a queued call
+        QTRY_COMPARE_WITH_TIMEOUT(w.document().validScene().robot.joints[0].dh.a, 1.2, 30000);
+        QVERIFY(settled(w));
+        QVERIFY(w.derivationPanel().text().section("Step 1.", 0, 0).contains("6/5"));
+        QVERIFY(w.windowTitle().contains('*'));
+        shot("2-edited");
+        // Ctrl+Z, Ctrl+Shift+Z.
+        dh->setFocus();
+        QTest::keyClick(dh, Qt::Key_Z, Qt::ControlModifier);
+        QVERIFY(checked(w));
+        QCOMPARE(w.document().validScene().robot.joints[0].dh.a, 1.0);
+        QVERIFY(!w.windowTitle().contains('*'));
+        QTest::keyClick(dh, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+        QVERIFY(checked(w));
+        QCOMPARE(w.document().validScene().robot.joints[0].dh.a, 1.2);
+        QVERIFY(settled(w));
+        // Play from the toolbar for a second of wall time.
+        QAction* play = nullptr;
+        for (QAction* a : w.findChildren<QAction*>())
+            if (a->text().contains("Play") && !a->text().contains("pause")) play = a;
+        QVERIFY(play);
+        w.playback().restart();
+        w.playback().pause();
+        play->trigger();
+        QVERIFY(w.playback().isPlaying());
+        QTest::qWait(1000);
+        QVERIFY2(w.playback().time() > 0.2, qPrintable(QString::number(w.playback().time())));
+        shot("3-playing");
+        // Scrub: a click in the energy plot at 60 % of its width pauses there.
+        auto& chart = w.energyChart();
+        const QRectF area = chart.chart()->plotArea();
+        const QPoint at = chart.mapFromScene(QPointF(area.left() + 0.6 * area.width(), area.center().y()));
+        QTest::mouseClick(chart.viewport(), Qt::LeftButton, {}, at);
+        QVERIFY(!w.playback().isPlaying());
+        const double end = w.result()->simulation.trajectory.t.back();
+        QVERIFY2(std::abs(w.playback().time() - 0.6 * end) < 0.02 * end, qPrintable(QString::number(w.playback().time())));
+        shot("4-scrubbed");
+        // Teach: the tab, then joint 2's slider moved by the keyboard.
+        w.teach(w.teachPanel().pose());
+        auto sliders = w.teachPanel().findChildren<QSlider*>();
+        QCOMPARE(sliders.size(), 2);
+        const QString readout = w.teachPanel().readout();
+        sliders[1]->setFocus();
+        for (int k = 0; k < 10; ++k) QTest::keyClick(sliders[1], Qt::Key_PageUp);
+        QVERIFY(w.teachPanel().pose()[1] != 0);
+        QVERIFY(w.teachPanel().readout() != readout);
+        shot("5-teach");
+        QString error;
+        QVERIFY2(w.exportPlotTo(dir_.filePath("student-energy.png"), &error), qPrintable(error));
+        QVERIFY(!QImage(dir_.filePath("student-energy.png")).isNull());
     }
 
     // The command a README picture comes from: `lagrangelab SCENE --screenshot FILE`.

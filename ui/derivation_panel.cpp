@@ -1,7 +1,5 @@
 #include "ui/derivation_panel.hpp"
 
-#include <chrono>
-
 #include <QFontDatabase>
 #include <QLabel>
 #include <QPlainTextEdit>
@@ -10,9 +8,7 @@
 #include <QTextBlock>
 #include <QVBoxLayout>
 
-#include "core/model/cancellation.hpp"
-#include "core/model/diagnostics.hpp"
-#include "core/pipeline/scene_derivation.hpp"
+#include "ui/live_derivation.hpp"
 
 namespace ll::ui {
 
@@ -28,63 +24,29 @@ DerivationPanel::DerivationPanel(QWidget* parent) : QWidget(parent) {
     view_->setFont(font);
     layout->addWidget(status_);
     layout->addWidget(view_, 1);
-    pool_.setMaxThreadCount(1);
 }
 
-DerivationPanel::~DerivationPanel() {
-    if (cancel_) cancel_->store(true);
-    pool_.waitForDone();
-}
-
-void DerivationPanel::setScene(const ll::Scene& scene) {
-    if (cancel_) cancel_->store(true);
-    cancel_ = std::make_shared<std::atomic<bool>>(false);
-    const int request = ++requested_;
+void DerivationPanel::setDeriving() {
+    busy_ = true;
     status_->setText(tr("Deriving…"));
-    pool_.start([self = this, scene, request, cancel = cancel_] {
-        const auto begin = std::chrono::steady_clock::now();
-        QString text, error;
-        try {
-            DocumentRequest r;
-            r.format = symbolic::DocumentFormat::Text;
-            r.cancel = cancel.get();
-            text = QString::fromStdString(deriveDocument(scene, r).document);
-        } catch (const Cancelled&) {
-            // Stopped for a newer scene, or for an edit being checked: the text shown stays.
-            QMetaObject::invokeMethod(self, [self, request] {
-                if (request != self->requested_) return;
-                self->delivered_ = request;
-                self->status_->setText(tr("Derivation stopped: the model is being edited"));
-            }, Qt::QueuedConnection);
-            return;
-        } catch (const InputError& e) {
-            for (const Diagnostic& d : e.diagnostics()) error += QString::fromStdString(d.field + ": " + d.message + "\n");
-        } catch (const std::exception& e) {
-            error = QString::fromStdString(e.what());
-        }
-        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
-        QMetaObject::invokeMethod(
-            self,
-            [self, request, text, error, seconds] {
-                if (request < self->requested_) return;
-                self->delivered_ = request;
-                if (!error.isEmpty()) {
-                    self->status_->setText(tr("The derivation stopped: %1").arg(error.trimmed()));
-                } else {
-                    self->status_->setText(tr("Derived in %1 ms").arg(seconds * 1000, 0, 'f', 0));
-                    const int bar = self->view_->verticalScrollBar()->value();
-                    self->view_->setPlainText(text);
-                    self->view_->verticalScrollBar()->setValue(bar);
-                    if (self->step_ > 0) self->showStep(self->step_);
-                }
-                emit self->derived();
-            },
-            Qt::QueuedConnection);
-    });
 }
 
-void DerivationPanel::cancel() {
-    if (cancel_) cancel_->store(true);
+void DerivationPanel::setDerivation(const DerivationResult& result) {
+    busy_ = false;
+    if (result.stopped) {
+        status_->setText(tr("Derivation stopped: the model is being edited"));
+        return;
+    }
+    if (!result.error.isEmpty()) {
+        status_->setText(tr("The derivation stopped: %1").arg(result.error.trimmed()));
+    } else {
+        status_->setText(tr("Derived in %1 ms").arg(result.seconds * 1000, 0, 'f', 0));
+        const int bar = view_->verticalScrollBar()->value();
+        view_->setPlainText(result.text);
+        view_->verticalScrollBar()->setValue(bar);
+        if (step_ > 0) showStep(step_);
+    }
+    emit derived();
 }
 
 void DerivationPanel::showStep(int n) {

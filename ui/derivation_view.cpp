@@ -246,6 +246,18 @@ void DerivationView::setScene(const ll::Scene& scene) {
     jobs_.push_back(std::move(job));
 }
 
+void DerivationView::setDeriving() {
+    for (auto& job : jobs_) job->cancel = true;
+    ++generation_;
+    deriving_ = true;
+    status_->setText(tr("Deriving…"));
+}
+
+void DerivationView::setDerivation(std::shared_ptr<const symbolic::DisplayDocument> document, const QString& error) {
+    for (auto& job : jobs_) job->cancel = true;
+    accept(++generation_, std::move(document), error);
+}
+
 void DerivationView::accept(int generation, std::shared_ptr<const symbolic::DisplayDocument> document, QString error) {
     if (generation != generation_) return;  // stale
     deriving_ = false;

@@ -35,6 +35,11 @@ public:
     ~DerivationView() override;
 
     void setScene(const ll::Scene& scene);
+    // A derivation run elsewhere (the window derives once per edit for all its views):
+    // setDeriving marks one as started, setDerivation shows its document (or error) as
+    // if this view had derived it. Either drops a derivation of this view's own.
+    void setDeriving();
+    void setDerivation(std::shared_ptr<const symbolic::DisplayDocument> document, const QString& error = {});
     void showStep(int step);  // 0..8; a step the scene has no items for shows empty
     int step() const { return step_; }
     void setZoom(double zoom);  // 1 = 15 px per em; clamped to 0.25..8

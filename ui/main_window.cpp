@@ -12,6 +12,7 @@
 #include <QComboBox>
 #include <QDir>
 #include <QDockWidget>
+#include <QEventLoop>
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -26,7 +27,9 @@
 #include <QMimeData>
 #include <QPlainTextEdit>
 #include <QProgressDialog>
+#include <QPointer>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QScreen>
 #include <QSettings>
 #include <QStandardPaths>
@@ -42,6 +45,7 @@
 #include "core/io/atomic_file.hpp"
 #include "core/pipeline/scene_derivation.hpp"
 #include "ui/animation_export.hpp"
+#include "ui/derivation_pages.hpp"
 #include "ui/derivation_panel.hpp"
 #include "ui/derivation_view.hpp"
 #include "ui/field_list_model.hpp"
@@ -88,9 +92,17 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 
     connect(&doc_, &SceneDocument::changed, this, &MainWindow::documentChanged);
     connect(&doc_, &SceneDocument::validated, this, &MainWindow::documentChanged);
-    // A derivation of the previous scene holds the GiNaC lock the check of an edit needs.
-    connect(&doc_, &SceneDocument::changed, derivation_, &DerivationPanel::cancel);
-    connect(&doc_, &SceneDocument::changed, typeset_, &DerivationView::cancel);
+    // A derivation of the previous scene holds the GiNaC lock the check of an edit needs:
+    // it stops, and derives again when the edit turns out invalid (the valid scene stays).
+    connect(&doc_, &SceneDocument::changed, &derive_, &LiveDerivation::cancel);
+    connect(&doc_, &SceneDocument::validated, this, [this] {
+        if (doc_.hasErrors()) derive_.resume();
+    });
+    connect(&derive_, &LiveDerivation::started, this, [this] {
+        derivation_->setDeriving();
+        typeset_->setDeriving();
+    });
+    connect(&derive_, &LiveDerivation::finished, this, &MainWindow::showDerivation);
     connect(&doc_, &SceneDocument::validSceneChanged, this, &MainWindow::validSceneChanged);
     connect(doc_.undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
     connect(&live_, &LiveSimulation::finished, this, &MainWindow::showResult);
@@ -190,7 +202,33 @@ void MainWindow::buildEditor() {
     inLayout->addLayout(shapeBar);
     editorTabs_->addTab(inPage, tr("Inertials"));
 
-    editorTabs_->addTab(makeTable(parameters_, editorTabs_), tr("Parameters"));
+    // Parameters with add and remove (each one undoable edit).
+    auto* parameterPage = new QWidget(editorTabs_);
+    auto* parameterLayout = new QVBoxLayout(parameterPage);
+    parameterView_ = makeTable(parameters_, parameterPage);
+    parameterLayout->addWidget(parameterView_, 1);
+    auto* parameterBar = new QHBoxLayout;
+    auto* addParameterButton = new QPushButton(tr("Add parameter…"), parameterPage);
+    auto* removeParameterButton = new QPushButton(tr("Remove"), parameterPage);
+    connect(addParameterButton, &QPushButton::clicked, this, [this] {
+        bool ok = false;
+        const QString name = QInputDialog::getText(this, tr("Add parameter"), tr("Name (letters, digits, _; e.g. m3, l2, k):"),
+                                                   QLineEdit::Normal, "", &ok);
+        if (!ok || name.isEmpty()) return;
+        const QString value = QInputDialog::getText(this, tr("Add parameter"), tr("Value of %1 (a number, SI units):").arg(name),
+                                                    QLineEdit::Normal, "1", &ok);
+        QString error;
+        if (ok && !addParameter(name, value, &error)) QMessageBox::warning(this, tr("Add parameter"), error);
+    });
+    connect(removeParameterButton, &QPushButton::clicked, this, [this] {
+        const QModelIndex index = parameterView_->currentIndex();
+        if (index.isValid()) removeParameter(parameters_->row(index.row()).name);
+    });
+    parameterBar->addWidget(addParameterButton);
+    parameterBar->addWidget(removeParameterButton);
+    parameterBar->addStretch(1);
+    parameterLayout->addLayout(parameterBar);
+    editorTabs_->addTab(parameterPage, tr("Parameters"));
     editorTabs_->addTab(makeTable(initial_, editorTabs_), tr("Initial && gravity"));
     editorTabs_->addTab(makeTable(solver_, editorTabs_), tr("Solver"));
     editorTabs_->addTab(makeTable(lagrangian_, editorTabs_), tr("Lagrangian"));
@@ -358,7 +396,7 @@ void MainWindow::buildMenus() {
     QMenu* exports = file->addMenu(tr("Export"));
     exports->addAction(tr("Screenshot (PNG)…"), this, &MainWindow::exportScreenshot);
     exports->addAction(tr("Plot (PNG, SVG or CSV)…"), this, &MainWindow::exportPlot);
-    exports->addAction(tr("Derivation (LaTeX or text)…"), this, &MainWindow::exportDerivation);
+    exports->addAction(tr("Derivation (PDF, LaTeX or text)…"), this, &MainWindow::exportDerivation);
     exports->addAction(tr("Animation (MP4, WebM, GIF)…"), this, &MainWindow::exportAnimation);
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
@@ -381,6 +419,25 @@ void MainWindow::buildMenus() {
         a->setCheckable(true);
         a->setChecked(name.isEmpty());
         group->addAction(a);
+    }
+
+    // Presentation mode's keys, whichever widget has the focus (a button would take the
+    // space, the step list the arrows); off otherwise, so the editors keep their keys. F
+    // (fit) is the 3D view bar's shortcut, always on.
+    for (auto [key, slot] : std::initializer_list<std::pair<QKeySequence, std::function<void()>>>{
+             {Qt::Key_Space, [this] { playback_->togglePlay(); }},
+             {Qt::Key_Right, [this] { derivation_->nextStep(); }},
+             {Qt::Key_Left, [this] { derivation_->previousStep(); }},
+             {Qt::Key_Plus, [this] { playback_->faster(); }},
+             {Qt::Key_Minus, [this] { playback_->slower(); }},
+             {Qt::Key_Escape, [this] { setPresentationMode(false); }}}) {
+        auto* action = new QAction(this);
+        action->setShortcut(key);
+        action->setShortcutContext(Qt::WindowShortcut);
+        action->setEnabled(false);
+        connect(action, &QAction::triggered, this, slot);
+        addAction(action);
+        presentationKeys_ << action;
     }
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
@@ -419,8 +476,7 @@ void MainWindow::validSceneChanged() {
     const Scene& scene = doc_.validScene();
     live_.request(scene);
     if (!ghostIntegrator_.isEmpty()) ghostLive_.request(scene);
-    derivation_->setScene(scene);
-    typeset_->setScene(scene);
+    derive_.request(scene);
     teach_->setScene(scene);
     workPrecision_->setScene(scene);
 }
@@ -458,6 +514,16 @@ void MainWindow::showResult(std::shared_ptr<const LiveResult> result) {
     showTime(playback_->time());
     status_->setText(statusText());
     emit resultShown(result->request);
+}
+
+void MainWindow::showDerivation(std::shared_ptr<const DerivationResult> result) {
+    derivation_->setDerivation(*result);
+    if (result->stopped) {
+        typeset_->cancel();
+        return;
+    }
+    derived_ = result;
+    typeset_->setDerivation(result->display, result->error);
 }
 
 void MainWindow::showGhost(std::shared_ptr<const LiveResult> result) {
@@ -557,6 +623,7 @@ void MainWindow::setPresentationMode(bool on) {
     QApplication::setFont(font);
     derivation_->setZoom(on ? 1.6 : 1.0);
     typeset_->setZoom(on ? 1.6 : 1.0);
+    for (QAction* key : presentationKeys_) key->setEnabled(on);
     on ? showFullScreen() : showNormal();
 }
 
@@ -578,10 +645,28 @@ void MainWindow::keyPressEvent(QKeyEvent* e) {
 // ---------------------------------------------------------------- files
 
 bool MainWindow::openFile(const QString& path, QStringList* errors, bool quiet) {
+    if (opening_) {
+        if (errors) *errors = QStringList{tr("%1: another file is being opened").arg(path)};
+        return false;
+    }
+    derive_.cancel();  // loading checks the scene under the GiNaC lock
+    // The check runs on the document's worker; the window keeps drawing meanwhile.
+    opening_ = true;
+    statusBar()->showMessage(tr("Opening %1…").arg(QFileInfo(path).fileName()));
+    QEventLoop loop;
+    bool done = false, loaded = false;
     QStringList found;
-    typeset_->cancel();
-    derivation_->cancel();  // loading checks the scene under the GiNaC lock
-    if (!doc_.loadFile(path, &found)) {
+    doc_.loadFileInBackground(path, [&](bool ok, const QStringList& lines) {
+        done = true;
+        loaded = ok;
+        found = lines;
+        loop.quit();
+    });
+    if (!done) loop.exec(QEventLoop::ExcludeUserInputEvents);
+    opening_ = false;
+    statusBar()->clearMessage();
+    if (!loaded) {
+        derive_.resume();
         if (errors) *errors = found;
         if (!quiet) {
             QMessageBox box(QMessageBox::Warning, tr("Cannot open %1").arg(QFileInfo(path).fileName()),
@@ -662,7 +747,13 @@ void MainWindow::dragEnterEvent(QDragEnterEvent* e) {
 
 void MainWindow::dropEvent(QDropEvent* e) {
     const QList<QUrl> urls = e->mimeData()->urls();
-    if (!urls.isEmpty() && urls.front().isLocalFile() && maybeSave()) openFile(urls.front().toLocalFile());
+    if (urls.isEmpty() || !urls.front().isLocalFile()) return;
+    e->acceptProposedAction();
+    // Opened once the drop is over (the drag source is not kept waiting on the check).
+    const QString path = urls.front().toLocalFile();
+    QTimer::singleShot(0, this, [this, path] {
+        if (maybeSave()) openFile(path);
+    });
 }
 
 void MainWindow::updateTitle() {
@@ -772,65 +863,158 @@ void MainWindow::exportScreenshot() {
 
 void MainWindow::exportPlot() {
     const QString path = QFileDialog::getSaveFileName(this, tr("Export plot"), "energy.png", tr("PNG (*.png);;SVG (*.svg);;CSV (*.csv)"));
-    if (path.isEmpty()) return;
+    QString error;
+    if (!path.isEmpty() && !exportPlotTo(path, &error)) QMessageBox::critical(this, tr("Export plot"), error);
+}
+
+bool MainWindow::exportPlotTo(const QString& path, QString* error) {
     TrajectoryChart* chart = bottomTabs_->currentWidget() == jointsChart_ ? jointsChart_ : energy_;
     try {
+        if (!result_) throw std::runtime_error(tr("nothing to export: the simulation has not finished").toStdString());
         if (path.endsWith(".csv", Qt::CaseInsensitive))
             chart->exportCsv(path);
         else
             chart->exportImage(path);
     } catch (const std::exception& e) {
-        QMessageBox::critical(this, tr("Export plot"), QString::fromUtf8(e.what()));
+        if (error) *error = QString::fromUtf8(e.what());
+        return false;
     }
+    statusBar()->showMessage(tr("Plot written to %1").arg(path), 8000);
+    return true;
+}
+
+// An export finished on a worker: said in the status bar, an error in a dialog unless the
+// caller is a test or script (no dialog asked).
+static void reportExport(MainWindow* window, QStatusBar* bar, const QString& path, const QString& error, bool dialog) {
+    if (error.isEmpty())
+        bar->showMessage(MainWindow::tr("Written: %1").arg(path), 10000);
+    else if (error != "cancelled" && dialog)
+        QMessageBox::critical(window, MainWindow::tr("Export"), error);
+    else
+        bar->showMessage(MainWindow::tr("Export of %1 stopped: %2").arg(path, error), 10000);
 }
 
 void MainWindow::exportDerivation() {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export derivation"), "derivation.tex", tr("LaTeX (*.tex);;Text (*.txt)"));
-    if (path.isEmpty()) return;
-    DocumentRequest request;
-    request.format = path.endsWith(".tex", Qt::CaseInsensitive) ? symbolic::DocumentFormat::Latex : symbolic::DocumentFormat::Text;
-    try {
-        saveFileAtomically(path.toStdString(), deriveDocument(doc_.validScene(), request).document, Backup::None);
-    } catch (const std::exception& e) {
-        QMessageBox::critical(this, tr("Export derivation"), QString::fromUtf8(e.what()));
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export derivation"), "derivation.pdf",
+                                                      tr("PDF, typeset (*.pdf);;LaTeX (*.tex);;Text (*.txt)"));
+    QString error;
+    if (!path.isEmpty() && !exportDerivationTo(path, &error)) QMessageBox::critical(this, tr("Export derivation"), error);
+}
+
+bool MainWindow::exportDerivationTo(const QString& path, QString* error) {
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    if (suffix != "pdf" && suffix != "tex" && suffix != "txt") {
+        if (error) *error = tr("%1: expected a .pdf, .tex or .txt file").arg(path);
+        return false;
     }
+    if (!derived_ || !derived_->display) {
+        if (error) *error = tr("nothing to export: the derivation has not finished");
+        return false;
+    }
+    // The document on screen: no new derivation. Typeset pages as `derive --format pdf`
+    // (ui/derivation_pages), LaTeX and text rendered from the same display trees.
+    auto display = derived_->display;
+    QThreadPool::globalInstance()->start([this, display, path, suffix, self = QPointer<MainWindow>(this)] {
+        QString failure;
+        try {
+            if (suffix == "pdf") {
+                std::string reason;
+                if (!writePdf(paginate(*display), path, reason)) failure = QString::fromStdString(reason);
+            } else {
+                const auto format = suffix == "tex" ? symbolic::DocumentFormat::Latex : symbolic::DocumentFormat::Text;
+                saveFileAtomically(path.toStdString(), symbolic::renderDocument(*display, format), Backup::None);
+            }
+        } catch (const std::exception& e) {
+            failure = QString::fromUtf8(e.what());
+        }
+        QMetaObject::invokeMethod(qApp, [self, path, failure] {
+            if (!self) return;
+            reportExport(self, self->statusBar(), path, failure, self->isVisible());
+            emit self->exportFinished(path, failure);
+        }, Qt::QueuedConnection);
+    });
+    statusBar()->showMessage(tr("Writing %1…").arg(path));
+    return true;
 }
 
 void MainWindow::exportAnimation() {
-    if (!result_) return;
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export animation"), "animation.mp4", tr("MP4 (*.mp4);;WebM (*.webm);;GIF (*.gif)"));
-    if (path.isEmpty()) return;
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export animation"), "animation.mp4", tr("MP4 (*.mp4);;WebM (*.webm);;GIF (*.gif);;PNG still (*.png)"));
+    QString error;
+    if (!path.isEmpty() && !exportAnimationTo(path, &error)) QMessageBox::critical(this, tr("Export animation"), error);
+}
+
+bool MainWindow::exportAnimationTo(const QString& path, QString* error, double duration, bool withDialog) {
+    if (!result_ || !sampler_) {
+        if (error) *error = tr("nothing to export: the simulation has not finished");
+        return false;
+    }
     ExportSettings settings;
     try {
         settings.out = path.toStdString();
         settings.kind = outputKindFor(settings.out);
+        const std::string problem = outputProblem(settings.out, settings.kind);
+        if (!problem.empty()) throw std::runtime_error(problem);
     } catch (const std::exception& e) {
-        QMessageBox::critical(this, tr("Export animation"), QString::fromUtf8(e.what()));
-        return;
+        if (error) *error = QString::fromUtf8(e.what());
+        return false;
     }
-    settings.duration = sampler_->endTime() - sampler_->startTime();
+    settings.duration = duration > 0 ? std::min(duration, sampler_->endTime() - sampler_->startTime()) : sampler_->endTime() - sampler_->startTime();
     settings.speed = playback_->speed();
-    auto* dialog = new QProgressDialog(tr("Rendering %1…").arg(QFileInfo(path).fileName()), tr("Cancel"), 0, 1000, this);
-    dialog->setWindowModality(Qt::WindowModal);
-    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    settings.at = playback_->time();
+    settings.trail = view_->showTrail();
+    settings.frames = view_->showFrames();
+    QPointer<QProgressDialog> dialog;
     auto cancel = std::make_shared<std::atomic<bool>>(false);
-    connect(dialog, &QProgressDialog::canceled, this, [cancel] { cancel->store(true); });
+    if (withDialog) {
+        dialog = new QProgressDialog(tr("Rendering %1…").arg(QFileInfo(path).fileName()), tr("Cancel"), 0, 1000, this);
+        dialog->setWindowModality(Qt::WindowModal);
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        dialog->setMinimumDuration(0);
+        connect(dialog, &QProgressDialog::canceled, this, [cancel] { cancel->store(true); });
+        dialog->show();
+    }
     auto result = result_;
-    QThreadPool::globalInstance()->start([this, dialog, cancel, result, settings] {
-        QString error;
+    QThreadPool::globalInstance()->start([self = QPointer<MainWindow>(this), dialog, cancel, result, settings, path, withDialog] {
+        QString failure;
         try {
             ll::ui::exportAnimation(*result->scene, result->simulation.trajectory, settings, [dialog](double f) {
-                QMetaObject::invokeMethod(dialog, [dialog, f] { dialog->setValue(static_cast<int>(f * 1000)); }, Qt::QueuedConnection);
+                QMetaObject::invokeMethod(qApp, [dialog, f] {
+                    if (dialog) dialog->setValue(static_cast<int>(f * 1000));
+                }, Qt::QueuedConnection);
             }, cancel.get());
         } catch (const std::exception& e) {
-            error = QString::fromUtf8(e.what());
+            failure = QString::fromUtf8(e.what());
         }
-        QMetaObject::invokeMethod(dialog, [this, dialog, error] {
-            dialog->close();
-            if (!error.isEmpty() && error != "cancelled") QMessageBox::critical(this, tr("Export animation"), error);
+        QMetaObject::invokeMethod(qApp, [self, dialog, path, failure, withDialog] {
+            if (dialog) dialog->close();
+            if (!self) return;
+            reportExport(self, self->statusBar(), path, failure, withDialog);
+            emit self->exportFinished(path, failure);
         }, Qt::QueuedConnection);
     });
-    dialog->show();
+    return true;
+}
+
+// ---------------------------------------------------------------- parameters
+
+bool MainWindow::addParameter(const QString& name, const QString& value, QString* error) {
+    static const QRegularExpression identifier("^[A-Za-z_][A-Za-z0-9_]*$");
+    const QString trimmed = name.trimmed();
+    if (!identifier.match(trimmed).hasMatch()) {
+        if (error) *error = tr("parameter name '%1': letters, digits and _ only, starting with a letter").arg(name);
+        return false;
+    }
+    if (!doc_.value("/parameters/" + trimmed.toStdString()).is_null()) {
+        if (error) *error = tr("parameter name '%1': there is a parameter of that name").arg(trimmed);
+        return false;
+    }
+    // The loader checks the rest (reserved names such as c1 or s12, the value) and marks it.
+    doc_.setValue("/parameters/" + trimmed.toStdString(), SceneDocument::parseCell(value), tr("Add parameter %1").arg(trimmed));
+    return true;
+}
+
+void MainWindow::removeParameter(const QString& name) {
+    doc_.setValue("/parameters/" + name.toStdString(), SceneJson(), tr("Remove parameter %1").arg(name));
 }
 
 }  // namespace ll::ui

@@ -2,8 +2,9 @@
 // The LagrangeLab window: the model editor (left), the 3D view with playback (centre),
 // the derivation (right), the plots, teach mode and work–precision (bottom) and a status
 // line. Every edit goes through the SceneDocument's undo stack; each valid edit is
-// re-simulated (LiveSimulation) and re-derived (DerivationPanel) in worker threads, and
-// the newest result replaces the views. Files: open, save, save as (atomic, PATH.bak),
+// re-simulated (LiveSimulation) and re-derived once (LiveDerivation: one worker whose
+// result both derivation tabs show) in worker threads, and the newest result replaces
+// the views. Files: open, save, save as (atomic, PATH.bak),
 // recent files, the example gallery, drag and drop, an autosaved recovery copy offered
 // back after a crash, a question before unsaved work is closed.
 #include <memory>
@@ -15,6 +16,7 @@
 #include <QTimer>
 
 #include "core/scene/trajectory_sampler.hpp"
+#include "ui/live_derivation.hpp"
 #include "ui/live_simulation.hpp"
 #include "ui/scene_document.hpp"
 
@@ -46,8 +48,10 @@ public:
     explicit MainWindow(QWidget* parent = nullptr);
     ~MainWindow() override;
 
-    // Opens `path` (a file or a ":/examples/…" resource). On failure the errors are shown
-    // (a dialog unless `quiet`), returned in *errors, and the open document is kept.
+    // Opens `path` (a file or a ":/examples/…" resource). The scene is checked on a worker
+    // thread while the window keeps drawing (this call waits in a local event loop). On
+    // failure the errors are shown (a dialog unless `quiet`), returned in *errors, and the
+    // open document is kept.
     bool openFile(const QString& path, QStringList* errors = nullptr, bool quiet = false);
     bool saveTo(const QString& path, QString* error = nullptr);
 
@@ -76,7 +80,13 @@ public:
     PlaybackBar& playback() { return *playback_; }
     TeachPanel& teachPanel() { return *teach_; }
     LiveSimulation& liveSimulation() { return live_; }
+    LiveDerivation& liveDerivation() { return derive_; }
+    WorkPrecisionPane& workPrecisionPane() { return *workPrecision_; }
     const LiveResult* result() const { return result_.get(); }
+    const LiveResult* ghostResult() const { return ghost_.get(); }
+    // The newest derivation shown (null before the first one).
+    const DerivationResult* derivation() const { return derived_.get(); }
+    bool presenting() const { return presenting_; }
     QString statusText() const;
     QStringList diagnosticLines() const;
     // Shows `n` 0..8 of the derivation; poses the robot (teach mode).
@@ -85,10 +95,28 @@ public:
     // Runs a ghost with `integrator` ("" removes it).
     void setGhostIntegrator(const QString& integrator);
     void setPresentationMode(bool on);
+    // Parameters: one undoable edit each. addParameter refuses a name that is not an
+    // identifier or is taken (false, the reason in *error).
+    bool addParameter(const QString& name, const QString& value, QString* error = nullptr);
+    void removeParameter(const QString& name);
+
+    // Exports without a file dialog (the menu's entries ask for the path, then call
+    // these). Plot: the tab shown (energy or joints) as .png, .svg or .csv, at once.
+    // Derivation: .pdf (typeset, as `derive --format pdf`), .tex or .txt, from the
+    // derivation on screen, written on a worker. Animation: .mp4, .webm, .gif, a .png
+    // still or a folder of frames by the offscreen renderer (`render`), on a worker with
+    // `progress` (optional) and a cancel button when `withDialog`. The two on workers
+    // emit exportFinished when done; all return false with the reason when they cannot
+    // start.
+    bool exportPlotTo(const QString& path, QString* error = nullptr);
+    bool exportDerivationTo(const QString& path, QString* error = nullptr);
+    bool exportAnimationTo(const QString& path, QString* error = nullptr, double duration = -1, bool withDialog = true);
 
 signals:
     // A simulation result is on screen (the 3D view, plots and playback updated).
     void resultShown(int request);
+    // An export on a worker is done: `error` empty when `path` was written.
+    void exportFinished(const QString& path, const QString& error);
 
 protected:
     void closeEvent(QCloseEvent* e) override;
@@ -105,6 +133,7 @@ private:
     void validSceneChanged();
     void showResult(std::shared_ptr<const LiveResult> result);
     void showGhost(std::shared_ptr<const LiveResult> result);
+    void showDerivation(std::shared_ptr<const DerivationResult> result);
     void showTime(double t);
     void updateTitle();
     void addRecent(const QString& path);
@@ -120,6 +149,8 @@ private:
 
     SceneDocument doc_;
     LiveSimulation live_, ghostLive_;
+    LiveDerivation derive_;
+    std::shared_ptr<const DerivationResult> derived_;
     std::shared_ptr<const LiveResult> result_, ghost_;
     std::unique_ptr<TrajectorySampler> sampler_, ghostSampler_;
     std::vector<Eigen::Vector3d> effectorPath_;  // end effector at every sample
@@ -143,10 +174,13 @@ private:
     QLabel* status_ = nullptr;
     QMenu* recentMenu_ = nullptr;
     QDockWidget *modelDock_ = nullptr;
+    QTableView* parameterView_ = nullptr;
+    QList<QAction*> presentationKeys_;  // space, arrows, F, +, −: live only when presenting
     QTimer autosave_;
     bool askBeforeClosing_ = true;
     bool presenting_ = false;
     bool teaching_ = false;
+    bool opening_ = false;  // a file is being checked (openFile waits for its worker)
     int shownStructure_ = -1;  // joints/coordinates of the scene on screen (a change refits the camera)
     QString shownName_;
 };

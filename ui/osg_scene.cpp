@@ -247,6 +247,20 @@ void OsgScene::setTrail(const std::vector<Eigen::Vector3d>& points) {
     trail_->dirtyBound();
 }
 
+void OsgScene::setPartVisible(int i, bool on) { parts_[static_cast<std::size_t>(i)]->setNodeMask(on ? ~0u : 0u); }
+
+void OsgScene::setPartHighlighted(int i, bool on) {
+    osg::MatrixTransform& node = *parts_[static_cast<std::size_t>(i)];
+    if (on) {
+        auto* material = new osg::Material;
+        material->setDiffuse(osg::Material::FRONT_AND_BACK, osg::Vec4(1.0f, 0.75f, 0.1f, 1.0f));
+        material->setEmission(osg::Material::FRONT_AND_BACK, osg::Vec4(0.45f, 0.3f, 0.0f, 1.0f));
+        node.getOrCreateStateSet()->setAttributeAndModes(material, osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
+    } else if (node.getStateSet()) {
+        node.getStateSet()->removeAttribute(osg::StateAttribute::MATERIAL);
+    }
+}
+
 void applyCameraView(osg::Camera& camera, const CameraView& view, double aspect) {
     camera.setViewMatrixAsLookAt(toOsg(view.eye), toOsg(view.centre), toOsg(view.up));
     camera.setProjectionMatrixAsPerspective(view.fovy, aspect, view.zNear, view.zFar);

@@ -42,6 +42,10 @@ public:
 
     // The transform of part i (what a test reads back as "drawn").
     const osg::MatrixTransform* partTransform(int i) const { return parts_[i].get(); }
+    // Shows or hides part i (the window's centre-of-mass toggle).
+    void setPartVisible(int i, bool on);
+    // Draws part i in the highlight colour (a joint selected or hovered in the window).
+    void setPartHighlighted(int i, bool on);
 
 private:
     OsgSceneOptions options_;

@@ -51,9 +51,14 @@ std::vector<Diagnostic> diagnose(const std::string& text, Scene* scene) {
 }  // namespace
 
 bool SceneDocument::loadText(const std::string& text, const QString& path, QStringList* errors) {
-    const QString prefix = path.isEmpty() ? QString() : path + ": ";
     Scene scene;
-    const std::vector<Diagnostic> found = diagnose(text, &scene);
+    std::vector<Diagnostic> found = diagnose(text, &scene);
+    return adopt(text, path, std::move(found), scene, errors);
+}
+
+bool SceneDocument::adopt(const std::string& text, const QString& path, std::vector<Diagnostic> found, Scene& scene,
+                          QStringList* errors) {
+    const QString prefix = path.isEmpty() ? QString() : path + ": ";
     if (ll::hasErrors(found)) {
         if (errors)
             for (const Diagnostic& d : found)
@@ -72,19 +77,49 @@ bool SceneDocument::loadText(const std::string& text, const QString& path, QStri
     json_ = parsed;
     validated_ = ++revision_;
     emit changed();
-    accept(found, &scene);
+    accept(std::move(found), &scene);
     undo_.setClean();
     return true;
 }
 
-bool SceneDocument::loadFile(const QString& path, QStringList* errors) {
+namespace {
+
+// The file's bytes, or false with the reason in `errors`.
+bool readScene(const QString& path, std::string& text, QStringList* errors) {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) {
         if (errors) *errors << path + ": " + file.errorString();
         return false;
     }
-    const QByteArray bytes = file.readAll();
-    return loadText(bytes.toStdString(), path.startsWith(":/") ? QString() : path, errors);
+    text = file.readAll().toStdString();
+    return true;
+}
+
+QString shownPath(const QString& path) { return path.startsWith(":/") ? QString() : path; }
+
+}  // namespace
+
+bool SceneDocument::loadFile(const QString& path, QStringList* errors) {
+    std::string text;
+    return readScene(path, text, errors) && loadText(text, shownPath(path), errors);
+}
+
+void SceneDocument::loadFileInBackground(const QString& path, std::function<void(bool, const QStringList&)> done) {
+    auto text = std::make_shared<std::string>();
+    QStringList errors;
+    if (!readScene(path, *text, &errors)) {
+        done(false, errors);
+        return;
+    }
+    checker_.start([self = this, text, path, done = std::move(done)] {
+        auto scene = std::make_shared<Scene>();
+        auto found = std::make_shared<std::vector<Diagnostic>>(diagnose(*text, scene.get()));
+        QMetaObject::invokeMethod(self, [self, text, path, done, scene, found] {
+            QStringList lines;
+            const bool ok = self->adopt(*text, shownPath(path), std::move(*found), *scene, &lines);
+            done(ok, lines);
+        }, Qt::QueuedConnection);
+    });
 }
 
 void SceneDocument::saveFile(const QString& path) {

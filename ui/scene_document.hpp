@@ -8,6 +8,7 @@
 // ("robot.joints[2].a"), and only a document without errors replaces the last valid
 // scene, so a bad cell never blanks the view. A newer edit makes an older check's
 // result void.
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -38,6 +39,10 @@ public:
     // valid scene; the document is then unchanged.
     bool loadText(const std::string& text, const QString& path, QStringList* errors);
     bool loadFile(const QString& path, QStringList* errors);
+    // loadFile with the check (parse, checkScene: under the GiNaC lock, which a running
+    // derivation may hold) on the document's worker: `done(loaded, errors)` is called on
+    // this object's thread when it is over (at once when the file cannot be read).
+    void loadFileInBackground(const QString& path, std::function<void(bool, const QStringList&)> done);
     // Writes the JSON atomically, keeping PATH.bak; throws std::runtime_error.
     void saveFile(const QString& path);
 
@@ -82,6 +87,8 @@ signals:
 private:
     friend class SceneEditCommand;
     void setJson(const SceneJson& json);  // no undo entry; re-validates
+    // The checked text becomes the document (a load), or the errors are listed.
+    bool adopt(const std::string& text, const QString& path, std::vector<Diagnostic> found, Scene& scene, QStringList* errors);
     void validate();
     void accept(std::vector<Diagnostic> diagnostics, Scene* scene);
 

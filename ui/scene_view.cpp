@@ -75,7 +75,7 @@ void SceneView::rebuild() {
         root_->addChild(osg_->root());
         for (std::size_t i = 0; i < visual_->parts.size(); ++i)
             if (visual_->parts[i].role == PartRole::CentreOfMass)
-                const_cast<osg::MatrixTransform*>(osg_->partTransform(static_cast<int>(i)))->setNodeMask(coms_ ? ~0u : 0u);
+                osg_->setPartVisible(static_cast<int>(i), coms_);
         if (options_.trail) osg_->setTrail(trail_);
     }
     if (ghostVisual_) {
@@ -151,16 +151,8 @@ void SceneView::applyHighlight() {
     if (!visual_ || !osg_) return;
     for (std::size_t i = 0; i < visual_->parts.size(); ++i) {
         const VisualPart& part = visual_->parts[i];
-        auto* node = const_cast<osg::MatrixTransform*>(osg_->partTransform(static_cast<int>(i)));
-        const bool lit = highlighted_ >= 0 && part.coordinate == highlighted_ && (part.role == PartRole::Joint || part.role == PartRole::Link);
-        if (lit) {
-            auto* material = new osg::Material;
-            material->setDiffuse(osg::Material::FRONT_AND_BACK, osg::Vec4(1.0f, 0.75f, 0.1f, 1.0f));
-            material->setEmission(osg::Material::FRONT_AND_BACK, osg::Vec4(0.45f, 0.3f, 0.0f, 1.0f));
-            node->getOrCreateStateSet()->setAttributeAndModes(material, osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
-        } else if (node->getStateSet()) {
-            node->getStateSet()->removeAttribute(osg::StateAttribute::MATERIAL);
-        }
+        osg_->setPartHighlighted(static_cast<int>(i), highlighted_ >= 0 && part.coordinate == highlighted_ &&
+                                                          (part.role == PartRole::Joint || part.role == PartRole::Link));
     }
 }
 

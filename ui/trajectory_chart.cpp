@@ -100,7 +100,7 @@ void TrajectoryChart::setTrajectory(const Trajectory& trajectory) {
             curves.push_back({tr("E − W"), QColor(128, 0, 160), Qt::DotLine, decimated(traj.t, [&](int k) { return traj.E[k] - traj.work[k]; })});
         }
         if (hasGhost_)
-            curves.push_back({tr("E (ghost)"), QColor(128, 0, 160, 150), Qt::DashLine, decimated(ghost_.t, [&](int k) { return ghost_.E[k]; })});
+            curves.push_back({tr("E, ghost (%1)").arg(ghostLabel_), QColor(128, 0, 160, 150), Qt::DashLine, decimated(ghost_.t, [&](int k) { return ghost_.E[k]; })});
     } else {
         for (int i = 0; i < traj.n && i < 8; ++i) {
             const QString name = QString::fromStdString(traj.coordinateName(i));
@@ -127,7 +127,7 @@ void TrajectoryChart::setTrajectory(const Trajectory& trajectory) {
 void TrajectoryChart::setGhost(const Trajectory* ghost, const QString& label) {
     hasGhost_ = ghost != nullptr;
     if (ghost) ghost_ = *ghost;
-    Q_UNUSED(label);
+    ghostLabel_ = label;
     setTrajectory(Trajectory(trajectory_));
 }
 

@@ -48,6 +48,7 @@ private:
     Kind kind_;
     Trajectory trajectory_, ghost_;
     bool hasGhost_ = false;
+    QString ghostLabel_;  // the ghost run's integrator, named in the legend
     QValueAxis *axisX_, *axisY_;
     QLineSeries* cursor_;
     double yMin_ = 0, yMax_ = 1;

@@ -1,5 +1,6 @@
 #include "core/pipeline/scene_derivation.hpp"
 
+#include <atomic>
 #include <chrono>
 
 #include "core/symbolic/ginac_lock.hpp"
@@ -17,7 +18,14 @@ const char* modeName(symbolic::ParameterMode mode) {
     return "parameters";
 }
 
+namespace {
+std::atomic<long> derivations{0};
+}  // namespace
+
+long documentDerivations() { return derivations.load(); }
+
 DerivedDocument deriveDocument(const Scene& scene, const DocumentRequest& request) {
+    derivations.fetch_add(1);
     const auto lock = symbolic::lockGinac();
     symbolic::DerivationOptions options;
     options.mode = request.mode;

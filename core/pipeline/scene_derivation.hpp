@@ -44,4 +44,8 @@ const char* modeName(symbolic::ParameterMode mode);
 // Throws InputError for a Lagrangian's input errors and Cancelled when cancelled.
 DerivedDocument deriveDocument(const Scene& scene, const DocumentRequest& request);
 
+// How many times this process has called deriveDocument (any thread): what a window
+// test counts to check that one edit costs one derivation.
+long documentDerivations();
+
 }  // namespace ll

@@ -1,0 +1,67 @@
+#include "ui/live_derivation.hpp"
+
+#include <chrono>
+
+#include "core/model/cancellation.hpp"
+#include "core/model/diagnostics.hpp"
+#include "core/pipeline/scene_derivation.hpp"
+
+namespace ll::ui {
+
+LiveDerivation::LiveDerivation(QObject* parent) : QObject(parent) { pool_.setMaxThreadCount(1); }
+
+LiveDerivation::~LiveDerivation() {
+    if (cancel_) cancel_->store(true);
+    pool_.waitForDone();
+}
+
+void LiveDerivation::cancel() {
+    if (cancel_ && busy()) {
+        cancel_->store(true);
+        stopped_ = true;
+    }
+}
+
+void LiveDerivation::resume() {
+    if (stopped_ && scene_) request(*scene_);
+}
+
+void LiveDerivation::request(const Scene& scene) {
+    if (cancel_) cancel_->store(true);
+    cancel_ = std::make_shared<std::atomic<bool>>(false);
+    scene_ = std::make_shared<const Scene>(scene);
+    stopped_ = false;
+    const int request = ++requested_;
+    ++runs_;
+    emit started(request);
+    pool_.start([self = this, scene = scene_, request, cancel = cancel_] {
+        const auto begin = std::chrono::steady_clock::now();
+        auto result = std::make_shared<DerivationResult>();
+        result->request = request;
+        try {
+            DocumentRequest r;
+            r.format = symbolic::DocumentFormat::Display;
+            r.cancel = cancel.get();
+            result->display = deriveDocument(*scene, r).display;
+            // Text from the same trees, outside the GiNaC lock.
+            result->text = QString::fromStdString(symbolic::renderDocument(*result->display, symbolic::DocumentFormat::Text));
+        } catch (const Cancelled&) {
+            result->stopped = true;
+        } catch (const InputError& e) {
+            for (const Diagnostic& d : e.diagnostics()) result->error += QString::fromStdString(d.field + ": " + d.message + "\n");
+        } catch (const std::exception& e) {
+            result->error = QString::fromStdString(e.what());
+        }
+        result->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+        QMetaObject::invokeMethod(
+            self,
+            [self, result] {
+                if (result->request < self->requested_) return;  // stale: a newer scene is deriving
+                self->delivered_ = result->request;
+                emit self->finished(result);
+            },
+            Qt::QueuedConnection);
+    });
+}
+
+}  // namespace ll::ui
