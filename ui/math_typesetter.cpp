@@ -641,9 +641,17 @@ std::vector<MathBox> layoutItem(const DisplayNode& full, const std::string& name
                 auto label = std::make_shared<DisplayNode>();
                 label->kind = DisplayKind::Symbol;
                 const bool single = name.size() == 1;
-                label->text = single ? std::string(1, static_cast<char>(std::tolower(static_cast<unsigned char>(name[0])))) : name;
-                label->subShown = column ? std::to_string(i + 1) : std::to_string(i + 1) + std::to_string(j + 1);
-                if (!single) label->upright = true;
+                const std::string indices = column ? std::to_string(i + 1) : std::to_string(i + 1) + std::to_string(j + 1);
+                const bool shownName = lhs.kind == DisplayKind::Raw && !lhs.children.empty() &&
+                                       lhs.children[0]->kind == DisplayKind::Symbol && !lhs.children[0]->upright;
+                if (shownName && !single) {  // J_{v,c6} → J_{v,c6,12}: the matrix's own name with the entry's indices
+                    *label = *lhs.children[0];
+                    label->subShown += (label->subShown.empty() ? "" : ",") + indices;
+                } else {
+                    label->text = single ? std::string(1, static_cast<char>(std::tolower(static_cast<unsigned char>(name[0])))) : name;
+                    label->subShown = indices;
+                    if (!single) label->upright = true;
+                }
                 const auto entry = symbolic::displayEquation(label, rhs.rows[i][j]);
                 for (MathBox& line : layoutItem(*entry, name, maxWidth - 1.5 * e)) {
                     MathBox indented;
@@ -679,10 +687,42 @@ std::vector<MathBox> layoutItem(const DisplayNode& full, const std::string& name
     return lines;
 }
 
+namespace {
+
+// Runs of the same font, size and baseline that continue one another (letters set one by
+// one: italic m, 2, a) merged into one piece: a PDF or SVG pays per drawText call (shaping,
+// a text object), so fewer calls make the Panda's 70 pages several times cheaper. Only
+// pieces that start exactly where the previous one's advance ends are merged.
+std::vector<MathPiece> mergedRuns(const std::vector<MathPiece>& pieces) {
+    std::vector<MathPiece> out;
+    out.reserve(pieces.size());
+    double end = 0;
+    for (const MathPiece& p : pieces) {
+        if (p.kind == MathPiece::Text && p.font == 3) {  // bold prose: as it is
+            out.push_back(p);
+            continue;
+        }
+        if (p.kind == MathPiece::Text && !out.empty()) {
+            MathPiece& last = out.back();
+            if (last.kind == MathPiece::Text && last.font == p.font && last.size == p.size && last.at.y() == p.at.y() &&
+                std::abs(end - p.at.x()) < 1e-9) {
+                last.text += p.text;
+                end += measure(p.text, p.font, p.size).width;
+                continue;
+            }
+        }
+        out.push_back(p);
+        if (p.kind == MathPiece::Text) end = p.at.x() + measure(p.text, p.font, p.size).width;
+    }
+    return out;
+}
+
+}  // namespace
+
 void paintMath(QPainter& painter, const MathBox& box, QPointF origin, double scale) {
     painter.save();
     const QColor ink = painter.pen().color();
-    for (const MathPiece& p : box.pieces) {
+    for (const MathPiece& p : mergedRuns(box.pieces)) {
         const QPointF at = origin + p.at * scale;
         switch (p.kind) {
         case MathPiece::Text: {
