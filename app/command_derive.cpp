@@ -1,8 +1,8 @@
 // `lagrangelab derive SCENE [--format text|latex|json|pdf|svg|png] [--out FILE]
 // [--steps 0-8] [--symbolic] [--numeric] [--timings] [--form auto|structured|expanded]
 // [--entry B11,C23,g4] [--verify]`: the course notes' procedure, step by step, expanded or
-// structured (derivation_forms.hpp); pdf, svg and png typeset the expanded form
-// (ui/derivation_pages) headless into --out.
+// structured (derivation_forms.hpp); pdf, svg and png typeset the same form (auto:
+// expanded when cheap, else structured; ui/derivation_pages) headless into --out.
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
@@ -15,6 +15,7 @@
 #include "app/scene_loading.hpp"
 #include "app/offscreen_gui.hpp"
 #include "core/pipeline/derivation_forms.hpp"
+#include "core/pipeline/display_derivation.hpp"
 #include "core/pipeline/scene_derivation.hpp"
 #include "ui/derivation_pages.hpp"
 
@@ -73,22 +74,17 @@ int deriveCommand(const Args& args) {
     request.firstStep = range.first;
     request.lastStep = range.last;
     request.format = format == "text" ? DocumentFormat::Text : format == "latex" ? DocumentFormat::Latex : DocumentFormat::Json;
-    if (typeset) {  // the typeset pages show the expanded textbook form
-        if (form == "structured" || options.has("entry") || options.has("verify"))
-            throw UsageError("--format " + format + ": typesets the expanded form; --form structured, --entry and --verify are for text, latex and json");
-        std::string reason;
-        if (form == "auto" && !expandedIsCheap(scene, reason))
-            throw UsageError("--format " + format + ": " + reason +
-                             "; the structured form is printed by --format text, latex or json (or force --form expanded)");
-        request.format = DocumentFormat::Display;
-    }
+    const DerivationForm chosenForm =
+        form == "structured" ? DerivationForm::Structured : form == "expanded" ? DerivationForm::Expanded : DerivationForm::Auto;
+    if (typeset && (options.has("entry") || options.has("verify")))  // the typeset pages show the form auto (or --form) picks
+        throw UsageError("--format " + format + ": typesets whole derivations; --entry and --verify are for text, latex and json");
     FormDocument result;
     if (typeset) {
-        result.derived = inSceneFile(options.positional()[0], [&] { return deriveDocument(scene, request); });
+        result.derived = inSceneFile(options.positional()[0], [&] { return deriveDisplay(scene, request, chosenForm); });
     } else {
         FormRequest formRequest;
         formRequest.document = request;
-        formRequest.form = form == "structured" ? DerivationForm::Structured : form == "expanded" ? DerivationForm::Expanded : DerivationForm::Auto;
+        formRequest.form = chosenForm;
         formRequest.verify = options.has("verify");
         if (options.has("entry")) {
             const std::string list = options.text("entry");

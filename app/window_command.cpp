@@ -19,6 +19,7 @@
 #include "app/command_usage.hpp"
 #include "app/commands.hpp"
 #include "app/event_wait.hpp"
+#include "app/offscreen_gui.hpp"
 #include "core/io/atomic_file.hpp"
 #include "ui/main_window.hpp"
 #include "ui/playback_bar.hpp"
@@ -49,6 +50,7 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
     static int argc = 1;
     static char name[] = "lagrangelab";
     static char* argv[] = {name, nullptr};
+    providePrivateRuntimeDirectory();  // no "XDG_RUNTIME_DIR not set" line from Qt
     QApplication app(argc, argv);
     QApplication::setApplicationName("LagrangeLab");
     ui::MainWindow window;

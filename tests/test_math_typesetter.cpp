@@ -157,6 +157,71 @@ private slots:
         QVERIFY2(ink > 0.002 && ink < 0.5, qPrintable(QString::number(ink)));
     }
 
+    // The dot of q̇ sits over the q: its ink centred over the letter's bowl (within 0.12
+    // em; italic skew allows a little to the right), a small gap above the x-height,
+    // not above the ascenders (it was left of the q and 0.6 em too high).
+    void dotSitsOverTheLetter() {
+        auto q = symbolNode("q");
+        q->dots = 1;
+        const MathBox box = ui::layoutMath(*q);
+        const double scale = 4;  // px per unit: an em is 160 px
+        const double em = ui::mathUnitsPerEm * scale;
+        QImage image(int(box.width * scale) + 80, int(box.height() * scale) + 80, QImage::Format_RGB32);
+        image.fill(Qt::white);
+        QPainter painter(&image);
+        painter.setPen(Qt::black);
+        const double baseline = 40 + box.ascent * scale;
+        ui::paintMath(painter, box, QPointF(40, baseline), scale);
+        painter.end();
+        // Rows with ink from the top: the dot, a blank gap, then the letter.
+        const auto rowInk = [&](int y, int& left, int& right) {
+            left = image.width(), right = -1;
+            for (int x = 0; x < image.width(); ++x)
+                if (qGray(image.pixel(x, y)) < 128) left = std::min(left, x), right = std::max(right, x);
+            return right >= 0;
+        };
+        int y = 0, l = 0, r = 0;
+        while (y < image.height() && !rowInk(y, l, r)) ++y;
+        double dotLeft = 1e9, dotRight = -1;
+        const int dotTop = y;
+        for (; y < image.height() && rowInk(y, l, r); ++y) dotLeft = std::min<double>(dotLeft, l), dotRight = std::max<double>(dotRight, r);
+        const int dotBottom = y;
+        while (y < image.height() && !rowInk(y, l, r)) ++y;
+        const int letterTop = y;
+        double bowlLeft = 1e9, bowlRight = -1;  // the letter above the baseline (not q's tail)
+        for (; y < baseline; ++y)
+            if (rowInk(y, l, r)) bowlLeft = std::min<double>(bowlLeft, l), bowlRight = std::max<double>(bowlRight, r);
+        QVERIFY2(dotTop < dotBottom && dotBottom < letterTop && bowlRight > bowlLeft, "no dot above the letter");
+        const double dx = (dotLeft + dotRight) / 2 - (bowlLeft + bowlRight) / 2;
+        const double gap = letterTop - dotBottom;
+        QVERIFY2(dx > -0.05 * em && dx < 0.12 * em, qPrintable(QString("dot off centre by %1 em").arg(dx / em)));
+        QVERIFY2(gap > 0.02 * em && gap < 0.2 * em, qPrintable(QString("gap %1 em").arg(gap / em)));
+        QVERIFY2(baseline - dotTop < 0.8 * em, qPrintable(QString("dot top %1 em above the baseline").arg((baseline - dotTop) / em)));
+    }
+
+    // A 7-joint arm typesets its structured form (it used to be refused): the names with
+    // their meaning, B as sums; text stays text; no line from Qt on stderr.
+    void pdfOfThePandaStructured() {
+        QTemporaryDir dir;
+        const QString pdf = dir.filePath("panda.pdf");
+        QProcess p;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.remove("XDG_RUNTIME_DIR");
+        p.setProcessEnvironment(env);
+        p.start(LL_CLI, {"derive", example("panda.json"), "--format", "pdf", "--out", pdf});
+        QVERIFY(p.waitForFinished(300000));
+        QCOMPARE(p.exitCode(), 0);
+        const QString err = QString::fromUtf8(p.readAllStandardError());
+        QVERIFY2(err.isEmpty(), qPrintable(err));
+        const Run text = run({"-layout", pdf, "-"}, "pdftotext");
+        QCOMPARE(text.code, 0);
+        for (const char* s : {"Form: structured", "Jacobian columns", "in the frame of link 7", "depends on q", "contribution of link"})
+            QVERIFY2(text.out.contains(QString::fromUtf8(s)), s);
+        const Run info = run({pdf}, "pdfinfo");
+        const QRegularExpressionMatch pages = QRegularExpression(R"(Pages:\s+(\d+))").match(info.out);
+        QVERIFY(pages.hasMatch() && pages.captured(1).toInt() > 10);
+    }
+
     void svgAndPng() {
         QTemporaryDir dir;
         const QString svg = dir.filePath("b.svg"), png = dir.filePath("b.png");

@@ -76,24 +76,33 @@ DerivationPages paginate(const symbolic::DisplayDocument& document, const PageFo
                     "accelerations.",
                     0.85, c.width()),
             0, 0.4 * em, 0.2 * em);
+    if (!document.form.empty())
+        c.block(wrapped(QString::fromStdString("Form: " + document.form + " (" + document.formReason + ")"), 0.85, c.width()), 0,
+                0.2 * em, 0.2 * em);
+    const auto indented = [&](const MathBox& l) {
+        MathBox out;
+        hcat(out, l, em);
+        return out;
+    };
     for (const symbolic::DisplayStep& step : document.steps) {
         std::vector<MathBox> head = wrapped(QString("Step %1. %2").arg(step.number).arg(QString::fromStdString(step.title)),
                                             1.2, c.width(), true);
-        for (const MathBox& l : wrapped(QString::fromStdString(step.formulaText), 0.85, c.width() - em)) {
-            MathBox indented;
-            indented.width = em;
-            indented.ascent = l.ascent;
-            indented.descent = l.descent;
-            for (MathPiece piece : l.pieces) {
-                piece.at += QPointF(em, 0);
-                indented.pieces.push_back(piece);
-            }
-            indented.width += l.width;
-            head.push_back(indented);
-        }
+        if (step.formula)  // the notes' general formula, typeset
+            for (const MathBox& l : layoutFormula(*step.formula, (c.width() - em) / 0.9, 0.9)) head.push_back(indented(l));
+        else
+            for (const MathBox& l : wrapped(QString::fromStdString(step.formulaText), 0.85, c.width() - em)) head.push_back(indented(l));
         c.block(head, 0, 1.4 * em, 0.3 * em);
-        for (const symbolic::DisplayItem& item : step.items)
-            c.block(layoutItem(*item.equation, item.name, c.width() - em), em, 0.7 * em, 0.45 * em);
+        for (const symbolic::DisplayItem& item : step.items) {
+            std::vector<MathBox> lines = layoutItem(*item.equation, item.name, c.width() - em);
+            if (!item.note.empty()) {  // what a name means, beside it when it fits, else under it
+                const MathBox note = layoutText(QString::fromStdString(item.note), 0.75);
+                if (lines.size() == 1 && lines[0].width + 2 * em + note.width <= c.width() - em)
+                    hcat(lines[0], note, 2 * em);
+                else
+                    for (const MathBox& l : wrapped(QString::fromStdString(item.note), 0.75, c.width() - 3 * em)) lines.push_back(indented(l));
+            }
+            c.block(lines, em, (item.note.empty() ? 0.7 : 0.35) * em, 0.45 * em);
+        }
     }
     c.block(wrapped(QString::fromStdString("Actuation: " + document.actuation), 0.9, c.width()), 0, 1.2 * em, 0.2 * em);
     return pages;

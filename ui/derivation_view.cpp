@@ -16,7 +16,7 @@
 #include <algorithm>
 
 #include "core/model/cancellation.hpp"
-#include "core/pipeline/scene_derivation.hpp"
+#include "core/pipeline/display_derivation.hpp"
 #include "ui/math_typesetter.hpp"
 
 namespace ll::ui {
@@ -47,6 +47,7 @@ public:
 
     void relayout() {
         for (Entry& e : entries_) e.lines.clear();
+        formulaLines_.clear();
         setMinimumHeight(static_cast<int>(contentHeight()));
         update();
     }
@@ -74,17 +75,32 @@ protected:
         p.drawText(QPointF(margin, y + fm.ascent()), tr("Step %1. %2").arg(step_->number).arg(QString::fromStdString(step_->title)));
         y += fm.height() * 1.2;
         p.setPen(palette().color(QPalette::PlaceholderText));
-        p.drawText(QRectF(margin, y, width() - 2 * margin, fm.height() * 3), Qt::TextWordWrap,
-                   QString::fromStdString(step_->formulaText));
-        y += fm.boundingRect(QRectF(0, 0, width() - 2 * margin, 1e6), Qt::TextWordWrap,
-                             QString::fromStdString(step_->formulaText)).height() + fm.height() * 0.5;
+        if (step_->formula) {  // the general formula typeset, smaller than the results
+            ensureFormula();
+            for (const MathBox& line : formulaLines_) {
+                paintMath(p, line, QPointF(margin, y + line.ascent * s * formulaScale), s * formulaScale);
+                y += (line.height() + 0.3 * mathUnitsPerEm) * s * formulaScale;
+            }
+            y += fm.height() * 0.3;
+        } else {
+            p.drawText(QRectF(margin, y, width() - 2 * margin, fm.height() * 3), Qt::TextWordWrap,
+                       QString::fromStdString(step_->formulaText));
+            y += fm.boundingRect(QRectF(0, 0, width() - 2 * margin, 1e6), Qt::TextWordWrap,
+                                 QString::fromStdString(step_->formulaText)).height() + fm.height() * 0.5;
+        }
         for (std::size_t i = 0; i < entries_.size(); ++i) {
             Entry& e = entries_[i];
             const symbolic::DisplayItem& item = step_->items[i];
             e.headerTop = y;
             p.setPen(palette().color(QPalette::Link));
-            p.drawText(QPointF(margin, y + fm.ascent()),
-                       (e.collapsed ? QString::fromUtf8("▸ ") : QString::fromUtf8("▾ ")) + QString::fromStdString(item.name));
+            const QString head = (e.collapsed ? QString::fromUtf8("▸ ") : QString::fromUtf8("▾ ")) + QString::fromStdString(item.name);
+            p.drawText(QPointF(margin, y + fm.ascent()), head);
+            if (!item.note.empty()) {  // what the name means (the structured form)
+                const double x = margin + fm.horizontalAdvance(head + "  ");
+                p.setPen(palette().color(QPalette::PlaceholderText));
+                p.drawText(QPointF(x, y + fm.ascent()),
+                           fm.elidedText(QString::fromStdString(item.note), Qt::ElideRight, std::max(0.0, width() - margin - x)));
+            }
             y += fm.height() * 1.1;
             if (e.collapsed) continue;
             ensureLines(e, item);
@@ -130,6 +146,15 @@ private:
     int laidOutWidth_ = 0;
 
     double scale() const { return 15.0 * zoom_ / mathUnitsPerEm; }  // device px per layout unit
+
+    static constexpr double formulaScale = 0.85;
+    std::vector<MathBox> formulaLines_;
+
+    void ensureFormula() {
+        if (!formulaLines_.empty() || !step_ || !step_->formula) return;
+        const double available = std::max(200.0, (width() - 2 * margin) / (scale() * formulaScale));
+        formulaLines_ = layoutFormula(*step_->formula, available);
+    }
 
     void ensureLines(Entry& e, const symbolic::DisplayItem& item) {
         if (!e.lines.empty()) return;
@@ -229,9 +254,8 @@ void DerivationView::setScene(const ll::Scene& scene) {
         QString error;
         try {
             DocumentRequest request;
-            request.format = symbolic::DocumentFormat::Display;
             request.cancel = &raw->cancel;
-            document = deriveDocument(scene, request).display;
+            document = deriveDisplay(scene, request).display;  // the form auto picks: structured for large robots
         } catch (const Cancelled&) {
             raw->done = true;
             return;
@@ -263,7 +287,13 @@ void DerivationView::accept(int generation, std::shared_ptr<const symbolic::Disp
     deriving_ = false;
     error_ = error;
     if (document) document_ = std::move(document);
-    status_->setText(error.isEmpty() && document_ ? QString::fromStdString(document_->systemName) : tr("Error: %1").arg(error));
+    if (!error.isEmpty() || !document_)
+        status_->setText(tr("Error: %1").arg(error));
+    else if (document_->form.empty())
+        status_->setText(QString::fromStdString(document_->systemName));
+    else
+        status_->setText(tr("%1 (%2 form)").arg(QString::fromStdString(document_->systemName),
+                                                document_->form == "structured" ? tr("structured") : tr("expanded")));
     refresh();
     emit derivationFinished();
 }

@@ -4,6 +4,7 @@
 #include <QFontMetricsF>
 #include <QHash>
 #include <QPainter>
+#include <QRawFont>
 #include <QPainterPath>
 #include <algorithm>
 #include <cmath>
@@ -70,12 +71,23 @@ Metrics measure(const QString& text, int which, double size) {
 
 double em(double size) { return mathUnitsPerEm * size; }
 
-// The ink rectangle of a run in layout units (y down; above the baseline negative).
+// The ink rectangle of a run in layout units (y down; above the baseline negative), from
+// the glyphs' outlines: QFontMetricsF::tightBoundingRect reaches down to the baseline for
+// accents (˙ in Latin Modern: 0.675 em tall instead of 0.125), which set the dots of q̇
+// far too high.
 QRectF inkOf(const QString& text, int which, double size) {
     const QFont f = font(which, size);
     const double scale = f.pixelSize() / (mathUnitsPerEm * size);
-    const QRectF r = QFontMetricsF(f).tightBoundingRect(text);
-    return QRectF(r.left() / scale, r.top() / scale, r.width() / scale, r.height() / scale);
+    const QRawFont raw = QRawFont::fromFont(f);
+    const QList<quint32> glyphs = raw.glyphIndexesForString(text);
+    const QList<QPointF> advances = raw.advancesForGlyphIndexes(glyphs);
+    QRectF ink;
+    double x = 0;
+    for (qsizetype i = 0; i < glyphs.size(); ++i) {
+        ink = ink.united(raw.boundingRect(glyphs[i]).translated(x, 0));
+        x += advances.value(i).x();
+    }
+    return QRectF(ink.left() / scale, ink.top() / scale, ink.width() / scale, ink.height() / scale);
 }
 
 // Moves the pieces of box (a temporary, usually) into `to`, shifted.
@@ -87,8 +99,9 @@ void append(MathBox& to, MathBox box, double dx, double dy = 0) {
     }
 }
 
-// Boxes side by side on one baseline.
-void hcat(MathBox& to, MathBox box, double gap = 0) {
+}  // namespace
+
+void hcat(MathBox& to, MathBox box, double gap) {
     to.width += gap;
     const double w = box.width, a = box.ascent, d = box.descent;
     append(to, std::move(box), to.width);
@@ -96,6 +109,8 @@ void hcat(MathBox& to, MathBox box, double gap = 0) {
     to.ascent = std::max(to.ascent, a);
     to.descent = std::max(to.descent, d);
 }
+
+namespace {
 
 MathBox run(const QString& text, int which, double size) {
     MathBox b;
@@ -116,7 +131,9 @@ MathBox run(const QString& text, int which, double size) {
 // Greek and letter-like symbols come from the math font: lowercase Greek as math
 // italic (U+1D6FC…), capitals and ℓ upright as TeX sets them.
 bool isGreekLower(char32_t c) { return c >= 0x03B1 && c <= 0x03C9; }
-bool isMathSymbol(char32_t c) { return (c >= 0x0391 && c <= 0x03C9) || c == 0x2113 || c == 0x2112 || c == 0x2202; }
+bool isMathSymbol(char32_t c) {
+    return (c >= 0x0391 && c <= 0x03C9) || c == 0x2113 || c == 0x2112 || (c >= 0x2200 && c <= 0x22FF);
+}
 
 // A word: Latin letters italic (upright when `upright`), digits and punctuation roman,
 // Greek and ℓ from the math font; combining dots over the letter before them.
@@ -426,9 +443,12 @@ MathBox layout(const DisplayNode& n, double size) {
         hcat(b, run("}", 0, size));
         return b;
     }
-    case DisplayKind::Raw:
-        if (!n.children.empty()) return layout(*n.children[0], size);
-        return run(QString::fromStdString(n.text), 0, size);
+    case DisplayKind::Raw: {
+        if (n.children.empty()) return run(QString::fromStdString(n.text), 0, size);
+        MathBox b;  // a row (a label's shown form, a formula's part): its children side by side
+        for (const symbolic::DisplayPtr& c : n.children) hcat(b, layout(*c, size));
+        return b;
+    }
     }
     return {};
 }
@@ -490,6 +510,18 @@ bool mathFontsAvailable() {
 }
 
 MathBox layoutMath(const DisplayNode& node, double size) { return layout(node, size); }
+
+std::vector<MathBox> layoutFormula(const DisplayNode& formula, double maxWidth, double size) {
+    std::vector<MathBox> lines(1);
+    const double gap = 2 * em(size);
+    for (const symbolic::DisplayPtr& part : formula.children) {
+        const MathBox box = layout(*part, size);
+        if (!lines.back().pieces.empty() && lines.back().width + gap + box.width > maxWidth) lines.emplace_back();
+        hcat(lines.back(), box, lines.back().pieces.empty() ? 0 : gap);
+    }
+    if (formula.children.empty()) lines.back() = run(QString::fromStdString(formula.text), 0, size);
+    return lines;
+}
 
 MathBox layoutText(const QString& text, double size, bool bold) {
     MathBox b = run(text, 0, size);
@@ -609,9 +641,17 @@ std::vector<MathBox> layoutItem(const DisplayNode& full, const std::string& name
                 auto label = std::make_shared<DisplayNode>();
                 label->kind = DisplayKind::Symbol;
                 const bool single = name.size() == 1;
-                label->text = single ? std::string(1, static_cast<char>(std::tolower(static_cast<unsigned char>(name[0])))) : name;
-                label->subShown = column ? std::to_string(i + 1) : std::to_string(i + 1) + std::to_string(j + 1);
-                if (!single) label->upright = true;
+                const std::string indices = column ? std::to_string(i + 1) : std::to_string(i + 1) + std::to_string(j + 1);
+                const bool shownName = lhs.kind == DisplayKind::Raw && !lhs.children.empty() &&
+                                       lhs.children[0]->kind == DisplayKind::Symbol && !lhs.children[0]->upright;
+                if (shownName && !single) {  // J_{v,c6} → J_{v,c6,12}: the matrix's own name with the entry's indices
+                    *label = *lhs.children[0];
+                    label->subShown += (label->subShown.empty() ? "" : ",") + indices;
+                } else {
+                    label->text = single ? std::string(1, static_cast<char>(std::tolower(static_cast<unsigned char>(name[0])))) : name;
+                    label->subShown = indices;
+                    if (!single) label->upright = true;
+                }
                 const auto entry = symbolic::displayEquation(label, rhs.rows[i][j]);
                 for (MathBox& line : layoutItem(*entry, name, maxWidth - 1.5 * e)) {
                     MathBox indented;
@@ -647,10 +687,42 @@ std::vector<MathBox> layoutItem(const DisplayNode& full, const std::string& name
     return lines;
 }
 
+namespace {
+
+// Runs of the same font, size and baseline that continue one another (letters set one by
+// one: italic m, 2, a) merged into one piece: a PDF or SVG pays per drawText call (shaping,
+// a text object), so fewer calls make the Panda's 70 pages several times cheaper. Only
+// pieces that start exactly where the previous one's advance ends are merged.
+std::vector<MathPiece> mergedRuns(const std::vector<MathPiece>& pieces) {
+    std::vector<MathPiece> out;
+    out.reserve(pieces.size());
+    double end = 0;
+    for (const MathPiece& p : pieces) {
+        if (p.kind == MathPiece::Text && p.font == 3) {  // bold prose: as it is
+            out.push_back(p);
+            continue;
+        }
+        if (p.kind == MathPiece::Text && !out.empty()) {
+            MathPiece& last = out.back();
+            if (last.kind == MathPiece::Text && last.font == p.font && last.size == p.size && last.at.y() == p.at.y() &&
+                std::abs(end - p.at.x()) < 1e-9) {
+                last.text += p.text;
+                end += measure(p.text, p.font, p.size).width;
+                continue;
+            }
+        }
+        out.push_back(p);
+        if (p.kind == MathPiece::Text) end = p.at.x() + measure(p.text, p.font, p.size).width;
+    }
+    return out;
+}
+
+}  // namespace
+
 void paintMath(QPainter& painter, const MathBox& box, QPointF origin, double scale) {
     painter.save();
     const QColor ink = painter.pen().color();
-    for (const MathPiece& p : box.pieces) {
+    for (const MathPiece& p : mergedRuns(box.pieces)) {
         const QPointF at = origin + p.at * scale;
         switch (p.kind) {
         case MathPiece::Text: {

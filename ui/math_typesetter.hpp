@@ -45,6 +45,9 @@ struct MathBox {
 
 constexpr double mathUnitsPerEm = 40.0;
 
+// Appends box to the right of `to` (gap units between), on the same baseline.
+void hcat(MathBox& to, MathBox box, double gap = 0);
+
 // node with every sum longer than maxTerms cut to its first terms and "⋯ (N more terms)".
 symbolic::DisplayPtr elided(const symbolic::DisplayPtr& node, std::size_t maxTerms);
 
@@ -58,6 +61,10 @@ MathBox layoutMath(const symbolic::DisplayNode& node, double size = 1.0);
 // "⋯ (N more terms)": the text and JSON formats keep every term. Returns the lines.
 inline constexpr std::size_t maxTypesetTerms = 90;
 std::vector<MathBox> layoutItem(const symbolic::DisplayNode& equation, const std::string& name, double maxWidth);
+
+// A step's general formula (core/symbolic/latex_formula.hpp): its parts side by side,
+// 2 em apart, a new line where the next part would pass maxWidth.
+std::vector<MathBox> layoutFormula(const symbolic::DisplayNode& formula, double maxWidth, double size = 1.0);
 
 // A line of prose (a step's title or general formula) in the roman or bold font.
 MathBox layoutText(const QString& text, double size = 1.0, bool bold = false);

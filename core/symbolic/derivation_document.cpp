@@ -12,6 +12,7 @@
 #include "core/symbolic/angle_sums.hpp"
 #include "core/symbolic/expression_printer.hpp"
 #include "core/symbolic/ginac_lock.hpp"
+#include "core/symbolic/latex_formula.hpp"
 #include "core/symbolic/readable_numbers.hpp"
 #include "core/symbolic/trig_context.hpp"
 
@@ -312,6 +313,9 @@ void writeJson(const Derivation& d, const DisplayDocument& shown, const DisplayR
     out << j.dump(2) << '\n';
 }
 
+const char* const massMatrixFormula =
+    R"(,\quad B(q) = \sum_i \left(m_i\, J_{P,i}^T J_{P,i} + J_{O,i}^T R_i\, I_{li}\, R_i^T J_{O,i}\right))";
+
 std::shared_ptr<const DisplayDocument> shapeDocument(const Derivation& d, Presenter& presenter, DisplayBuilder& build) {
     auto doc = std::make_shared<DisplayDocument>();
     doc->systemName = d.systemName;
@@ -319,7 +323,10 @@ std::shared_ptr<const DisplayDocument> shapeDocument(const Derivation& d, Presen
     doc->actuation = actuationText(d.actuated, d.coordinateNames);
     const DisplayOptions options = displayOptions(printOptionsFor(d, Style::Text));
     for (const DerivationStep& step : d.steps) {
-        DisplayStep s{step.number, step.title, step.formulaText, step.formulaLatex, {}, step.seconds};
+        DisplayStep s{step.number, step.title, step.formulaText, step.formulaLatex, {}, step.seconds, {}};
+        // The notes' general formula typeset; a robot's step 7 also gives B as the notes sum it.
+        const bool robot = d.trigToFunctions.nops() > 0;
+        s.formula = formulaFromLatex(step.formulaLatex + (robot && step.number == 7 ? massMatrixFormula : ""), step.formulaText);
         for (const DerivationItem& item : step.items) s.items.push_back(displayItem(item, presenter, build, options));
         doc->steps.push_back(std::move(s));
     }

@@ -29,6 +29,7 @@ struct DisplayItem {
     std::string latexName;  // b_{11}, B(q)
     DisplayPtr equation;    // name = value (an equation item: B q̈ + C q̇ + g = Q)
     DisplayPtr value;       // the right side alone (for a matrix: the Matrix node)
+    std::string note;       // what it means, in words (the structured form's names); may be empty
 };
 
 struct DisplayStep {
@@ -36,6 +37,7 @@ struct DisplayStep {
     std::string title, formulaText, formulaLatex;
     std::vector<DisplayItem> items;
     double seconds = 0.0;
+    DisplayPtr formula;  // the general formula typeset (null: only formulaText)
 };
 
 struct DisplayDocument {
@@ -43,6 +45,8 @@ struct DisplayDocument {
     std::vector<std::string> coordinateNames;
     std::vector<DisplayStep> steps;
     std::string actuation;  // "q1, q2 actuated" …
+    std::string form;       // "expanded" or "structured" when a form was chosen (empty: not said)
+    std::string formReason; // why that form
 };
 
 // The derivation's displayed form (takes the GiNaC lock).

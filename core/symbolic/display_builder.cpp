@@ -542,6 +542,8 @@ private:
     DisplayPtr namedNode(const GiNaC::symbol& sym) {
         const std::string& name = sym.get_name();
         if (auto it = symbols_.find(name); it != symbols_.end()) return it->second;
+        if (o_.givenSymbols)
+            if (auto it = o_.givenSymbols->find(name); it != o_.givenSymbols->end()) return symbols_[name] = it->second;
         const SymbolInfo& i = info(sym);
         std::shared_ptr<DisplayNode> n;
         if (i.kind == Kind::Trig) {

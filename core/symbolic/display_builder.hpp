@@ -12,6 +12,8 @@
 // c12 → c12 (Plain: cos(q1+q2)), m_cart → m_{\mathrm{cart}}.
 // Must be called with the GiNaC lock held (core/symbolic/ginac_lock.hpp); the tree it
 // returns is plain data.
+#include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -28,6 +30,9 @@ struct DisplayOptions {
     // Whether c<i>, s<i>, c12, c9_10 mean cos/sin of coordinate sums (robots). Off for
     // Lagrangian systems, where c1 may be the user's damping coefficient.
     bool trigSymbols = true;
+    // Symbols drawn as given (the structured form's named quantities: Jx2_4 as
+    // J_{P2,x}^{(4)}), by GiNaC name; any other symbol as above.
+    std::shared_ptr<const std::map<std::string, DisplayPtr>> givenSymbols;
 };
 
 // A scalar, a GiNaC::matrix (Matrix node) or a relational (Equation node). Never expands.

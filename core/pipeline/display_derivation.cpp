@@ -1,0 +1,42 @@
+#include "core/pipeline/display_derivation.hpp"
+
+#include <chrono>
+
+#include "core/symbolic/ginac_lock.hpp"
+#include "core/symbolic/structured_display.hpp"
+
+namespace ll {
+
+DerivedDocument deriveDisplay(const Scene& scene, const DocumentRequest& request, DerivationForm form) {
+    using namespace symbolic;
+    DocumentRequest display = request;
+    display.format = DocumentFormat::Display;
+    std::string reason;
+    const bool cheap = scene.lagrangian || expandedIsCheap(scene, reason);
+    if (scene.lagrangian) reason = "a hand-typed Lagrangian is derived from its E_kin and E_pot";
+    else reason = form == DerivationForm::Auto ? "auto: " + reason : "asked for with --form";
+    const bool expanded = scene.lagrangian || form == DerivationForm::Expanded || (form == DerivationForm::Auto && cheap);
+    DerivedDocument out;
+    if (expanded) {
+        out = deriveDocument(scene, display);
+        auto doc = std::make_shared<DisplayDocument>(*out.display);
+        doc->form = "expanded";
+        doc->formReason = reason;
+        out.display = doc;
+        return out;
+    }
+    const auto lock = lockGinac();
+    DerivationOptions options;
+    options.mode = request.mode;
+    options.progress = request.progress;
+    options.cancel = request.cancel;
+    const StructuredDynamics s = deriveStructured(scene, options);
+    throwIfCancelled(request.cancel);
+    const auto printing = std::chrono::steady_clock::now();
+    out.display = structuredDisplayDocument(s, reason, request.firstStep, request.lastStep);
+    out.printSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - printing).count();
+    out.timings.push_back({0, "structured derivation (steps 1-8)", s.seconds});
+    return out;
+}
+
+}  // namespace ll
