@@ -191,6 +191,7 @@ private slots:
         const Run r = cli({"derive", example("panda.json"), "--form", "expanded", "--entry", "B11,C23,g4", "--format", "json", "--verify"});
         QVERIFY2(r.exitCode == 0, r.err.constData());
         const QJsonObject o = QJsonDocument::fromJson(r.out).object();
+        QCOMPARE(o["form"].toString(), QString("expanded"));  // what was asked for, not "structured"
         const QJsonObject entries = o["entries"].toObject();
         QCOMPARE(entries.keys(), (QStringList{"B11", "C23", "g4"}));
         for (const QString& k : entries.keys()) {
@@ -202,6 +203,51 @@ private slots:
         const QString err = QString::fromUtf8(r.err);
         const int at = err.indexOf("difference ") + 11;
         QVERIFY2(err.mid(at, err.indexOf(' ', at) - at).toDouble() < 1e-10, r.err.constData());
+    }
+
+    // The form each document says it is, in text too, and --steps honoured by the
+    // structured form (text and JSON).
+    void formLabelAndSteps() {
+        const Run text = cli({"derive", example("panda.json"), "--form", "expanded", "--entry", "B77"});
+        QVERIFY2(text.exitCode == 0, text.err.constData());
+        QVERIFY2(text.out.contains("Form: expanded (asked for with --form"), text.out.left(400).constData());
+        const Run structured = cli({"derive", example("panda.json"), "--form", "structured", "--steps", "6-6"});
+        QVERIFY2(structured.exitCode == 0, structured.err.constData());
+        QVERIFY(structured.out.contains("Form: structured"));
+        QVERIFY(structured.out.contains("Step 6.") && structured.out.contains("gamma1_3 ="));
+        QVERIFY(!structured.out.contains("Step 1.") && !structured.out.contains("Step 7.") && !structured.out.contains("beta"));
+        const Run json = cli({"derive", example("panda.json"), "--form", "structured", "--steps", "7-8", "--format", "json"});
+        QVERIFY2(json.exitCode == 0, json.err.constData());
+        const QJsonObject o = QJsonDocument::fromJson(json.out).object();
+        for (const QJsonValue d : o["definitions"].toArray()) QVERIFY(d.toObject()["step"].toInt() >= 7);
+        QVERIFY(o.contains("B") && o.contains("C") && o.contains("g"));
+    }
+
+    // A parameter named like a generated name (here the first name the 2R's structured
+    // form makes) is refused: one line naming it, exit 2, for derive and codegen.
+    void generatedNameClashIsOneLine() {
+        const Run names = cli({"derive", example("planar_2r.json"), "--form", "structured", "--format", "json"});
+        QCOMPARE(names.exitCode, 0);
+        const QString generated = QJsonDocument::fromJson(names.out).object()["definitions"].toArray()[0].toObject()["name"].toString();
+        QVERIFY(!generated.isEmpty());
+        QFile f(example("planar_2r.json"));
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QJsonObject scene = QJsonDocument::fromJson(f.readAll()).object();
+        QJsonObject parameters = scene["parameters"].toObject();
+        parameters[generated] = 0.25;
+        scene["parameters"] = parameters;
+        QTemporaryDir dir;
+        const QString path = dir.filePath("clash.json");
+        QFile out(path);
+        QVERIFY(out.open(QIODevice::WriteOnly));
+        out.write(QJsonDocument(scene).toJson());
+        out.close();
+        for (const QStringList& args : {QStringList{"derive", path, "--form", "structured"}, QStringList{"codegen", path, "--lang", "c"}}) {
+            const Run r = cli(args);
+            QCOMPARE(r.exitCode, 2);
+            QCOMPARE(r.err.count('\n'), 1);
+            QVERIFY2(r.err.contains(("parameters." + generated).toUtf8()) && r.err.startsWith("error: "), r.err.constData());
+        }
     }
 
     void badFormAndEntryAreOneLine_data() {

@@ -320,6 +320,72 @@ private slots:
         auto lock = lockGinac();
         compareWithNumeric(scene, s, 1, 1e-10);
     }
+
+    // The flag set when the derivation reports its last stage (C) still stops it: the
+    // loops after the last progress report (the zero test of ∂b, naming ∂b, C) check
+    // it too, so it never runs to the end once cancelled.
+    void cancellingInTheLastStageStops() {
+        const Scene scene = randomChain(10, 78, DhConvention::Standard, false);
+        for (const char* stage : {"db/dq", "C"}) {
+            std::atomic<bool> cancel{false};
+            DerivationOptions options;
+            options.cancel = &cancel;
+            options.progress = [&](int, const std::string& what) {
+                if (what == stage) cancel = true;
+            };
+            bool cancelled = false;
+            try {
+                (void)deriveStructured(scene, options);
+            } catch (const Cancelled&) {
+                cancelled = true;
+            }
+            QVERIFY2(cancelled, stage);
+        }
+    }
+
+    // The table checks its flag before every new name: a cancelled name() adds nothing,
+    // a cancelled unfold() leaves its memo whole (the same expansion afterwards).
+    void tableStopsBetweenNames() {
+        const auto lock = lockGinac();
+        TrigContext tc({true, true});
+        NamedDefinitions table(tc);
+        std::atomic<bool> cancel{false};
+        table.setCancel(&cancel);
+        const GiNaC::ex a = table.name(tc.c(0) * tc.c(1) + 2, "a1", "a_{1}", "first", 1);
+        const GiNaC::ex b = table.name(a * a + tc.s(1), "b1", "b_{1}", "second", 1);
+        cancel = true;
+        QVERIFY_THROWS_EXCEPTION(Cancelled, table.name(a * b + 1, "c1", "c_{1}", "third", 1));
+        QCOMPARE(table.size(), 2);
+        QVERIFY_THROWS_EXCEPTION(Cancelled, table.unfold(b * b));
+        cancel = false;
+        const GiNaC::ex expected = tc.reduce(GiNaC::pow(GiNaC::pow(tc.c(0) * tc.c(1) + 2, 2) + tc.s(1), 2));
+        QVERIFY((table.unfold(b * b) - expected).expand().is_zero());
+    }
+
+    // A scene parameter spelled like a name the structured form generates is refused,
+    // naming the parameter and what the generated name means; the numbers mode (where
+    // parameters are substituted) derives it.
+    void parameterClashingWithAGeneratedNameIsRefused() {
+        Scene scene = exampleScene("planar_2r.json");
+        DerivationOptions options;
+        const StructuredDynamics s = deriveStructured(scene, options);
+        std::string generated;
+        {
+            const auto lock = lockGinac();
+            generated = s.table->entries().front().symbol.get_name();
+        }
+        scene.parameters.emplace_back(generated, 0.5);
+        try {
+            (void)deriveStructured(scene, options);
+            QFAIL("the clash was not refused");
+        } catch (const InputError& e) {
+            const std::string what = e.what();
+            QVERIFY2(what.find("parameters." + generated) != std::string::npos, e.what());
+            QVERIFY2(what.find("rename the parameter") != std::string::npos, e.what());
+        }
+        options.mode = ParameterMode::Numeric;
+        (void)deriveStructured(scene, options);
+    }
 };
 
 QTEST_GUILESS_MAIN(TestStructuredDynamics)

@@ -134,11 +134,16 @@ FormDocument deriveInForm(const Scene& scene, const FormRequest& request) {
         out.derived = deriveDocument(scene, request.document);
         announceForm(out.derived.document, request.document.format, out.reason);
     } else {
-        out.form = "structured";
+        // With --entry and the expanded form, the document is the entries expanded (and
+        // the names of the structured form they come from): its form is "expanded".
+        out.form = expanded ? "expanded" : "structured";
         StructuredDocumentInfo info;
         info.modeName = modeName(request.document.mode);
-        info.formReason = expanded ? out.reason + "; only the entries asked for are expanded" : out.reason;
+        info.form = out.form;
+        info.formReason = expanded ? out.reason + "; only the entries asked for are expanded, from the structured form's names" : out.reason;
         info.entries = entries;
+        info.firstStep = request.document.firstStep;
+        info.lastStep = request.document.lastStep;
         if (request.form != DerivationForm::Structured)
             for (const EntryRef& e : entries) info.expanded.push_back(expandEntry(*structured, e, request.document.cancel));
         throwIfCancelled(request.document.cancel);

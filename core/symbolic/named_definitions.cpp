@@ -34,6 +34,7 @@ NamedDefinitions::NamedDefinitions(const TrigContext& tc) : tc_(tc) {
 
 GiNaC::ex NamedDefinitions::name(const GiNaC::ex& e, const std::string& plain, const std::string& latex,
                                  const std::string& meaning, int step) {
+    throwIfCancelled(cancel_);
     const GiNaC::ex value = tc_.reduce(e);
     if (value.is_zero() || isAtomic(value)) return value;
     if (const auto it = byValue_.find(value); it != byValue_.end()) return entries_[it->second].symbol;
@@ -93,6 +94,7 @@ GiNaC::ex NamedDefinitions::unfold(const GiNaC::ex& e, const std::atomic<bool>* 
     for (int k : coneOf(e)) {  // ascending: dependencies first
         if (!isUnfolded_[k]) {
             throwIfCancelled(cancel);
+            throwIfCancelled(cancel_);
             GiNaC::exmap direct;
             for (int d : entries_[k].dependencies) direct[entries_[d].symbol] = unfolded_[d];
             unfolded_[k] = tc_.reduce(entries_[k].value.subs(direct, GiNaC::subs_options::no_pattern));
@@ -151,10 +153,12 @@ double evaluate(const GiNaC::ex& e, const std::map<GiNaC::ex, double, GiNaC::ex_
 
 }  // namespace
 
-DefinitionValues::DefinitionValues(const NamedDefinitions& table, const GiNaC::lst& inputs) {
+DefinitionValues::DefinitionValues(const NamedDefinitions& table, const GiNaC::lst& inputs, const std::atomic<bool>* cancel) {
     for (const GiNaC::ex& rel : inputs) values_[rel.lhs()] = evaluate(rel.rhs(), values_);
     magnitudes_ = values_;
+    int count = 0;
     for (const NamedDefinition& d : table.entries()) {
+        if (++count % 64 == 0) throwIfCancelled(cancel);
         values_[d.symbol] = evaluate(d.value, values_);
         magnitudes_[d.symbol] = evaluate(d.value, magnitudes_, true);
     }

@@ -38,6 +38,10 @@ class NamedDefinitions {
 public:
     explicit NamedDefinitions(const TrigContext& tc);
 
+    // When set, name() and unfold() throw Cancelled before each new name or unfolding
+    // step once *cancel is true; the table keeps only whole entries.
+    void setCancel(const std::atomic<bool>* cancel) { cancel_ = cancel; }
+
     // e reduced; returned as it is when it is zero, a number, a symbol or number·symbol;
     // the entry's symbol (or its negative) when e (or −e) was named before; else a new
     // entry named `plain`.
@@ -56,13 +60,15 @@ public:
     std::vector<int> coneOf(const GiNaC::ex& e) const;
 
     // e with every name unfolded into c_i, s_i, q_i and parameters, reduced: the fully
-    // expanded form. Memoised per name; checks `cancel` between names.
+    // expanded form. Memoised per name; checks `cancel` (and the table's own flag)
+    // between names.
     GiNaC::ex unfold(const GiNaC::ex& e, const std::atomic<bool>* cancel = nullptr);
 
     const TrigContext& trig() const { return tc_; }
 
 private:
     const TrigContext& tc_;
+    const std::atomic<bool>* cancel_ = nullptr;
     std::vector<NamedDefinition> entries_;
     std::unordered_map<GiNaC::ex, int, std::hash<GiNaC::ex>, GiNaC::ex_is_equal> byValue_;
     std::map<GiNaC::ex, int, GiNaC::ex_is_less> bySymbol_;
@@ -76,7 +82,8 @@ private:
 // q̇_i and the parameters their values (symbol == number).
 class DefinitionValues {
 public:
-    DefinitionValues(const NamedDefinitions& table, const GiNaC::lst& inputs);
+    // Throws Cancelled when *cancel turns true (checked every few entries).
+    DefinitionValues(const NamedDefinitions& table, const GiNaC::lst& inputs, const std::atomic<bool>* cancel = nullptr);
     double operator()(const GiNaC::ex& e) const;  // any expression over the inputs and names
     // The same with every sum taken over absolute values: the size of the terms whose
     // cancellation gives operator()(e), for telling a rounding residue from a value.

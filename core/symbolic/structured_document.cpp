@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/model/cancellation.hpp"
 #include "core/symbolic/expression_printer.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/readable_numbers.hpp"
@@ -40,6 +41,50 @@ std::string entryLabel(char m, int r, int c, int n) {
     return std::string(1, m) + idx(r) + (wide ? "_" : "") + idx(c);
 }
 
+// Step headings in LaTeX (text mode with math where the notes have it).
+const char* latexStepTitle(int step) {
+    switch (step) {
+        case 1: return "Kinematic model: the axes $x_f, y_f, z_f$ and origin $o_f$ of every frame $f$, in each link's own frame";
+        case 4: return "Jacobian columns $J_{P,j}^{(i)}$ of each centre of mass, in its link's frame ($J_{O,j}^{(i)} = z$ of joint $j$'s axis)";
+        case 6: return "Potential energy: $\\gamma_j^{(i)} = g_0^T J_{P,j}^{(i)}$, so $g_j = \\partial E_{\\mathrm{pot}}/\\partial q_j = -\\sum_{i \\ge j} m_i \\gamma_j^{(i)}$";
+        case 7: return "Mass matrix: $\\beta_{jk}^{(i)} = m_i J_{P,j}^{(i)T} J_{P,k}^{(i)} + z_j^T I_i z_k$, $b_{jk} = \\sum_{i \\ge \\max(j,k)} \\beta_{jk}^{(i)}$";
+        case 8: return "Christoffel symbols: $\\partial b_{jk}/\\partial q_l$ by the Jacobian identities (zero for $l \\le \\min(j,k)$)";
+    }
+    return "";
+}
+
+// Plain words in LaTeX's text mode: its special characters escaped.
+std::string latexText(const std::string& text) {
+    std::string out;
+    for (char c : text) {
+        switch (c) {
+            case '_': out += "\\_"; break;
+            case '^': out += "\\^{}"; break;
+            case '&': out += "\\&"; break;
+            case '%': out += "\\%"; break;
+            case '$': out += "\\$"; break;
+            case '#': out += "\\#"; break;
+            case '{': out += "\\{"; break;
+            case '}': out += "\\}"; break;
+            case '~': out += "\\textasciitilde{}"; break;
+            case '-': out += "-{}"; break;  // "--form" stays two hyphens, not an en dash
+            case '\\': out += "\\textbackslash{}"; break;
+            case '<': out += "$<$"; break;
+            case '>': out += "$>$"; break;
+            default: out += c;
+        }
+    }
+    return out;
+}
+
+// "q2, q3" as LaTeX math: q_{2}, q_{3}.
+std::string latexCoordinateList(std::uint64_t bits, int n) {
+    std::string out;
+    for (int k = 0; k < n; ++k)
+        if (bits & (std::uint64_t(1) << k)) out += (out.empty() ? "$q_{" : ", q_{") + idx(k) + "}";
+    return out.empty() ? "none" : out + "$";
+}
+
 const char* stepTitle(int step) {
     switch (step) {
         case 1: return "Kinematic model: the axes x_f, y_f, z_f and origin o_f of every frame f, in each link's own frame";
@@ -51,27 +96,50 @@ const char* stepTitle(int step) {
     return "";
 }
 
+const GiNaC::ex& valueOf(const StructuredDynamics& s, const EntryRef& e) {
+    return e.matrix == 'B' ? s.B(e.row, e.col) : e.matrix == 'C' ? s.C(e.row, e.col) : s.g(e.row, 0);
+}
+
 struct Selection {
     std::vector<EntryRef> entries;  // what to show of B, C, g
-    std::vector<bool> definitions;  // which names they need
+    std::vector<bool> definitions;  // which names to show: the ones they need, in the steps asked for
+    int needed = 0;                 // how many names all of B, C, g (or the entries asked for) need
+    bool checks = false;            // the zero pattern and the skew check (whole model, step 8)
 };
 
-Selection select(const StructuredDynamics& s, const std::vector<EntryRef>& asked) {
+bool inSteps(int step, const StructuredDocumentInfo& info) { return step >= info.firstStep && step <= info.lastStep; }
+
+// The entries shown (the ones asked for, else B when step 7 is shown and C, g when step 8
+// is) and the names they need: the cone of all of B, C, g, so a name nothing uses (the
+// x and y axes of frame 0, when gravity only needs z) is not listed.
+Selection select(const StructuredDynamics& s, const StructuredDocumentInfo& info) {
     Selection sel;
-    sel.entries = asked;
-    if (sel.entries.empty()) {
-        for (int j = 0; j < s.n; ++j)
-            for (int k = j; k < s.n; ++k) sel.entries.push_back({'B', j, k, entryLabel('B', j, k, s.n)});
-        for (int i = 0; i < s.n; ++i)
-            for (int j = 0; j < s.n; ++j) sel.entries.push_back({'C', i, j, entryLabel('C', i, j, s.n)});
-        for (int j = 0; j < s.n; ++j) sel.entries.push_back({'g', j, 0, entryLabel('g', j, 0, s.n)});
+    std::vector<EntryRef> all;
+    for (int j = 0; j < s.n; ++j)
+        for (int k = j; k < s.n; ++k) all.push_back({'B', j, k, entryLabel('B', j, k, s.n)});
+    for (int i = 0; i < s.n; ++i)
+        for (int j = 0; j < s.n; ++j) all.push_back({'C', i, j, entryLabel('C', i, j, s.n)});
+    for (int j = 0; j < s.n; ++j) all.push_back({'g', j, 0, entryLabel('g', j, 0, s.n)});
+    const std::vector<EntryRef>& needed = info.entries.empty() ? all : info.entries;
+    if (info.entries.empty()) {
+        for (const EntryRef& e : all)
+            if (inSteps(e.matrix == 'B' ? 7 : 8, info)) sel.entries.push_back(e);
+        sel.checks = inSteps(8, info);
+    } else {
+        sel.entries = info.entries;
     }
-    sel.definitions.assign(s.table->size(), asked.empty());
-    if (!asked.empty())
-        for (const EntryRef& e : sel.entries) {
-            const GiNaC::ex& v = e.matrix == 'B' ? s.B(e.row, e.col) : e.matrix == 'C' ? s.C(e.row, e.col) : s.g(e.row, 0);
-            for (int k : s.table->coneOf(v)) sel.definitions[k] = true;
-        }
+    const std::vector<NamedDefinition>& table = s.table->entries();
+    std::vector<bool> used(table.size(), false);
+    for (const EntryRef& e : needed)
+        for (int k : s.table->dependenciesOf(valueOf(s, e))) used[k] = true;
+    for (int k = static_cast<int>(table.size()) - 1; k >= 0; --k)  // dependencies come first in the table
+        if (used[k])
+            for (int d : table[k].dependencies) used[d] = true;
+    sel.definitions.assign(table.size(), false);
+    for (std::size_t k = 0; k < table.size(); ++k) {
+        sel.needed += used[k] ? 1 : 0;
+        sel.definitions[k] = used[k] && inSteps(table[k].step, info);
+    }
     return sel;
 }
 
@@ -97,14 +165,20 @@ void forEachDefinition(const StructuredDynamics& s, const Selection& sel, Headin
     }
 }
 
-const GiNaC::ex& valueOf(const StructuredDynamics& s, const EntryRef& e) {
-    return e.matrix == 'B' ? s.B(e.row, e.col) : e.matrix == 'C' ? s.C(e.row, e.col) : s.g(e.row, 0);
-}
-
 std::string entryMeaning(const StructuredDynamics& s, const EntryRef& e) {
     const std::string deps = coordinateList(s.table->coordinatesOf(valueOf(s, e)), s.n);
     if (e.matrix == 'B') return "sum of the contributions of links " + idx(std::max(e.row, e.col)) + ".." + idx(s.n - 1) + "; depends on " + deps;
     if (e.matrix == 'C') return "sum_k c_" + idx(e.row) + idx(e.col) + "k qd_k; depends on " + deps + " and the velocities";
+    return "depends on " + deps;
+}
+
+// entryMeaning in LaTeX: the sum and the coordinates as math.
+std::string latexEntryMeaning(const StructuredDynamics& s, const EntryRef& e) {
+    const std::string deps = latexCoordinateList(s.table->coordinatesOf(valueOf(s, e)), s.n);
+    if (e.matrix == 'B')
+        return "sum of the contributions of links " + idx(std::max(e.row, e.col)) + "..." + idx(s.n - 1) + "; depends on " + deps;
+    if (e.matrix == 'C')
+        return "$\\sum_k c_{" + idx(e.row) + "," + idx(e.col) + ",k}\\,\\dot q_k$; depends on " + deps + " and the velocities";
     return "depends on " + deps;
 }
 
@@ -126,10 +200,10 @@ std::vector<std::string> zeroPattern(const StructuredDynamics& s) {
 
 void writeText(const StructuredDynamics& s, const StructuredDocumentInfo& info, std::ostream& out) {
     const PrintOptions text = optionsFor(s, Style::Text);
-    const Selection sel = select(s, info.entries);
+    const Selection sel = select(s, info);
     out << s.systemName << "\n" << std::string(s.systemName.size(), '=') << "\n";
-    out << "Form: structured (" << info.formReason << ")\n";
-    out << "B, C and g are short sums over " << s.table->size()
+    out << "Form: " << info.form << " (" << info.formReason << ")\n";
+    out << "B, C and g are short sums over " << sel.needed
         << " named quantities, each a few operations on earlier names; every vector of link i is written in link i's "
            "own frame, where its centre of mass and inertia tensor are constant.\n";
     forEachDefinition(
@@ -138,11 +212,11 @@ void writeText(const StructuredDynamics& s, const StructuredDocumentInfo& info, 
             out << "    " << d.symbol.get_name() << " = " << print(readableNumbers(d.value), text) << "        (" << d.meaning << "; depends on "
                 << coordinateList(d.coordinates, s.n) << ")\n";
         });
-    out << "\nResults over the names\n";
+    if (!sel.entries.empty()) out << "\nResults over the names\n";
     for (const EntryRef& e : sel.entries)
         out << "    " << (e.matrix == 'B' ? "b" : e.matrix == 'C' ? "c" : "g") << e.label.substr(1) << " = "
             << print(readableNumbers(valueOf(s, e)), text) << "        (" << entryMeaning(s, e) << ")\n";
-    if (info.entries.empty()) {
+    if (sel.checks) {
         const int n = s.n, total = n * n * (n + 1) / 2;
         out << "\nZero pattern of d b_jk / d q_l (j <= k; x: non-zero): " << s.nonZeroMassDerivatives() << " of " << total
             << " are non-zero\n";
@@ -154,44 +228,59 @@ void writeText(const StructuredDynamics& s, const StructuredDocumentInfo& info, 
         out << "\nExpanded " << e.ref.label << " (" << e.terms << " terms, " << e.seconds << " s):\n    " << print(readableNumbers(e.value), text) << "\n";
 }
 
+// Each definition is a paragraph of inline math, which TeX breaks after a + or − when
+// it is wider than the page (a display would run off it), then its meaning in small
+// type with the name as the notes write it.
 void writeLatex(const StructuredDynamics& s, const StructuredDocumentInfo& info, std::ostream& out) {
     const PrintOptions latex = optionsFor(s, Style::Latex);
-    const Selection sel = select(s, info.entries);
+    const Selection sel = select(s, info);
+    const auto entryName = [&](const EntryRef& e) {
+        std::string sub = e.label.substr(1);
+        std::replace(sub.begin(), sub.end(), '_', ',');
+        return std::string(e.matrix == 'B' ? "b" : e.matrix == 'C' ? "c" : "g") + "_{" + sub + "}";
+    };
     out << "\\documentclass[a4paper,10pt]{article}\n"
            "\\usepackage[margin=1.5cm,landscape]{geometry}\n"
            "\\usepackage{amsmath,amssymb}\n"
            "\\allowdisplaybreaks\n"
-           "\\title{Euler--Lagrange model (structured form): " << s.systemName << "}\n"
+           "\\setlength{\\parindent}{0pt}\n"
+           "\\raggedright\n"
+           "\\newcommand{\\lldefinition}[2]{\\par\\hangindent=2em\\hangafter=1 #1\\\\{\\small #2}\\par\\smallskip}\n"
+           "\\title{Euler--Lagrange model (structured form): " << latexText(s.systemName) << "}\n"
            "\\author{LagrangeLab}\n\\date{}\n"
            "\\begin{document}\n\\maketitle\n"
-        << "Form: structured (" << info.formReason << "). $B$, $C$ and $g$ are short sums over " << s.table->size()
+        << "Form: " << info.form << " (" << latexText(info.formReason) << "). $B$, $C$ and $g$ are short sums over " << sel.needed
         << " named quantities; every vector of link $i$ is written in its own frame. "
            "Shorthand: $c_{i} = \\cos q_i$, $s_{i} = \\sin q_i$.\n";
     forEachDefinition(
-        s, sel, [&](int step) { out << "\\section*{Step " << step << "}\n" << stepTitle(step) << "\n"; },
-        [&](const NamedDefinition& d) { out << "\\[ " << d.latex << " = " << print(readableNumbers(d.value), latex) << " \\]\n"; });
-    out << "\\section*{Results over the names}\n";
+        s, sel, [&](int step) { out << "\\section*{Step " << step << "}\n" << latexStepTitle(step) << "\n\\medskip\n"; },
+        [&](const NamedDefinition& d) {
+            out << "\\lldefinition{$" << print(d.symbol, latex) << " = " << print(readableNumbers(d.value), latex) << "$}{$" << d.latex
+                << "$: " << latexText(d.meaning) << "; depends on " << latexCoordinateList(d.coordinates, s.n) << "}\n";
+        });
+    if (!sel.entries.empty()) out << "\\section*{Results over the names}\n";
     for (const EntryRef& e : sel.entries)
-        out << "\\[ " << (e.matrix == 'B' ? "b" : e.matrix == 'C' ? "c" : "g") << "_{" << e.label.substr(1) << "} = "
-            << print(readableNumbers(valueOf(s, e)), latex) << " \\]\n";
-    if (info.entries.empty()) {
+        out << "\\lldefinition{$" << entryName(e) << " = " << print(readableNumbers(valueOf(s, e)), latex) << "$}{"
+            << latexEntryMeaning(s, e) << "}\n";
+    if (sel.checks) {
         const int n = s.n;
         out << "\\paragraph{Zero pattern} " << s.nonZeroMassDerivatives() << " of " << n * n * (n + 1) / 2
             << " derivatives $\\partial b_{jk}/\\partial q_l$ ($j \\le k$) are non-zero. "
             << "$\\dot B - 2C$ is " << (skewSymmetric(s) ? "skew-symmetric (checked over the names)" : "not skew-symmetric") << ".\n";
     }
     for (const ExpandedEntry& e : info.expanded)
-        out << "\\paragraph{Expanded " << e.ref.label << "} (" << e.terms << " terms)\n\\[ " << print(readableNumbers(e.value), latex) << " \\]\n";
+        out << "\\paragraph{Expanded $" << entryName(e.ref) << "$} (" << e.terms << " terms)\n\n$" << print(readableNumbers(e.value), latex)
+            << "$\n";
     out << "\\end{document}\n";
 }
 
 void writeJson(const StructuredDynamics& s, const StructuredDocumentInfo& info, std::ostream& out) {
-    const PrintOptions plain = optionsFor(s, Style::Plain), latex = optionsFor(s, Style::Latex);
-    const Selection sel = select(s, info.entries);
+    const PrintOptions plain = optionsFor(s, Style::Plain);
+    const Selection sel = select(s, info);
     nlohmann::ordered_json j;
     j["system"] = s.systemName;
     j["mode"] = info.modeName;
-    j["form"] = "structured";
+    j["form"] = info.form;
     j["form_reason"] = info.formReason;
     std::vector<std::string> coordinates;
     for (int i = 0; i < s.n; ++i) coordinates.push_back("q" + idx(i));
@@ -199,12 +288,14 @@ void writeJson(const StructuredDynamics& s, const StructuredDocumentInfo& info, 
     nlohmann::ordered_json defs = nlohmann::ordered_json::array();
     for (int k : byStep(s, sel)) {
         const NamedDefinition& d = s.table->entries()[k];
-        std::vector<std::string> deps;
+        std::vector<int> deps;  // indices k of the q_k it depends on: [2, 3] (a tenth of the document as "q2", "q3")
         for (int q = 0; q < s.n; ++q)
-            if (d.coordinates & (std::uint64_t(1) << q)) deps.push_back("q" + idx(q));
+            if (d.coordinates & (std::uint64_t(1) << q)) deps.push_back(q + 1);
+        // latex: the name as the notes write it; the right-hand side's LaTeX is expr's
+        // (--format latex sets it), written twice it was 40 % of an 8-joint document.
         defs.push_back({{"name", d.symbol.get_name()},
                         {"expr", print(d.value, plain)},
-                        {"latex", d.latex + " = " + print(readableNumbers(d.value), latex)},
+                        {"latex", d.latex},
                         {"step", d.step},
                         {"meaning", d.meaning},
                         {"depends_on", deps}});
@@ -223,8 +314,8 @@ void writeJson(const StructuredDynamics& s, const StructuredDocumentInfo& info, 
         }
         return rows;
     };
-    if (info.entries.empty()) {
-        j["B"] = matrix(s.B);
+    if (info.entries.empty() && inSteps(7, info)) j["B"] = matrix(s.B);
+    if (sel.checks) {
         j["C"] = matrix(s.C);
         j["g"] = matrix(s.g);
         j["Q"] = matrix(s.Q);
@@ -297,18 +388,28 @@ ExpandedEntry expandEntry(StructuredDynamics& s, const EntryRef& ref, const std:
         out.value = table.unfold(s.B(ref.row, ref.col), cancel);
     } else if (ref.matrix == 'g') {
         out.value = table.unfold(s.g(ref.row, 0), cancel);
-    } else {  // c_ij = Σ_k ½(∂b_ij/∂q_k + ∂b_ik/∂q_j − ∂b_jk/∂q_i) q̇_k, from rows i and j of B expanded
+    } else {
+        // c_ij = Σ_k ½(∂b_ij/∂q_k + ∂b_ik/∂q_j − ∂b_jk/∂q_i) q̇_k from entries of rows i and j
+        // of B expanded, each only when it depends on the coordinate it is differentiated
+        // by (the names say which: b_jk never depends on q_1..q_min(j,k)); for i = j the
+        // last two terms cancel and are not formed.
         const int i = ref.row, j = ref.col;
-        std::vector<GiNaC::ex> rowI(s.n), rowJ(s.n);
-        for (int k = 0; k < s.n; ++k) {
-            rowI[k] = table.unfold(s.B(i, k), cancel);
-            rowJ[k] = table.unfold(s.B(j, k), cancel);
-        }
+        std::map<std::pair<int, int>, GiNaC::ex> expandedB;
+        const auto derivative = [&](int r, int c, int l) -> GiNaC::ex {
+            if (!(table.coordinatesOf(s.B(r, c)) & (std::uint64_t(1) << l))) return 0;
+            const auto key = std::minmax(r, c);
+            auto it = expandedB.find(key);
+            if (it == expandedB.end()) it = expandedB.emplace(key, table.unfold(s.B(r, c), cancel)).first;
+            throwIfCancelled(cancel);
+            return tc.diffq(it->second, l);
+        };
         GiNaC::ex c = 0;
         for (int k = 0; k < s.n; ++k) {
-            throwIfCancelled(cancel);
-            c += GiNaC::numeric(1, 2) * (tc.diffq(rowI[j], k) + tc.diffq(rowI[k], j) - tc.diffq(rowJ[k], i)) * tc.qd(k);
+            GiNaC::ex christoffel = derivative(i, j, k);
+            if (i != j) christoffel += derivative(i, k, j) - derivative(j, k, i);
+            c += GiNaC::numeric(1, 2) * christoffel * tc.qd(k);
         }
+        throwIfCancelled(cancel);
         out.value = tc.reduce(c);
     }
     out.terms = termCount(out.value);

@@ -43,6 +43,12 @@ struct StructuredDocumentInfo {
     std::string formReason;               // why this form ("7 joints: ...")
     std::vector<EntryRef> entries;        // only these of B, C, g (empty: all)
     std::vector<ExpandedEntry> expanded;  // expanded entries to show
+    // "structured", or "expanded" when the entries asked for are shown expanded (the
+    // names they need are listed too): what the document says its form is.
+    std::string form = "structured";
+    // --steps: only the names of these steps of the course notes (1 frames, 4 Jacobian
+    // columns, 6 gamma, 7 beta, 8 derivatives); B needs step 7, C, g and the checks step 8.
+    int firstStep = 0, lastStep = 8;
 };
 
 std::string structuredDocument(const StructuredDynamics& s, DocumentFormat format, const StructuredDocumentInfo& info);

@@ -4,8 +4,10 @@
 #include <chrono>
 #include <cmath>
 #include <random>
+#include <set>
 
 #include "core/model/cancellation.hpp"
+#include "core/model/diagnostics.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/link_transform.hpp"
 #include "core/symbolic/symbolic_robot.hpp"
@@ -79,7 +81,7 @@ public:
         const SymbolicJoint& joint = robot.joints[link];
         const Vec3 com{joint.com(0, 0), joint.com(1, 0), joint.com(2, 0)};
         for (int j = 0; j <= link; ++j)
-            JP[j] = vector(revolute[j] ? cross(Z[j], sub(com, O[j])) : Z[j], "J", idx(j), "J_{P," + idx(j) + "}^{(" + frame_ + ")}",
+            JP[j] = vector(revolute[j] ? cross(Z[j], sub(com, O[j])) : Z[j], "J", idx(j), "J_{P," + idx(j) + ",@}^{(" + frame_ + ")}",
                            "velocity of the centre of mass of link " + frame_ + " per unit qd" + idx(j) +
                                " (J_P column), in its frame",
                            4);
@@ -91,7 +93,7 @@ public:
                     baseR(r, c) = robot.base(c, r);  // world → frame 0
                     R(r, c) = P(r, c);               // frame 0 → link frame
                 }
-            gravity = vector(times(R, times(baseR, g0)), "g", "0", "g_{0}^{(" + frame_ + ")}",
+            gravity = vector(times(R, times(baseR, g0)), "g", "0", "g_{0,@}^{(" + frame_ + ")}",
                              "gravity in the frame of link " + frame_, 6);
         }
         for (int c = 0; c < 3; ++c)
@@ -101,13 +103,15 @@ public:
     }
 
     // Components named "<letter><x|y|z><index>_<link><suffix>" (Jx2_4: x of J_P,2 of link 4),
-    // which the printers set as J_{x2,4}.
+    // which the printers set as J_{x2,4}; '@' in `latex` stands for the component (x, y, z).
     Vec3 vector(const Vec3& v, const std::string& letter, const std::string& index, const std::string& latex,
                 const std::string& meaning, int step, const std::string& suffix = "") {
         Vec3 r;
         for (int c = 0; c < 3; ++c) {
             const std::string comp(1, kAxis[c]);
-            r[c] = table_.name(v[c], letter + comp + index + "_" + frame_ + suffix, latex + "_{" + comp + "}", comp + " of the " + meaning, step);
+            std::string l = latex;
+            l.replace(l.find('@'), 1, comp);
+            r[c] = table_.name(v[c], letter + comp + index + "_" + frame_ + suffix, l, comp + " of the " + meaning, step);
         }
         return r;
     }
@@ -127,7 +131,7 @@ public:
         else if (l < a) d = revolute_[l] ? cross(Z[l], JP[a]) : Vec3{0, 0, 0};
         else d = cross(Z[a], JP[l]);
         if (!isZero(d))
-            d = vector(d, "D", idx(a), "\\partial J_{P," + idx(a) + "}^{(" + frame_ + ")}/\\partial q_{" + idx(l) + "}",
+            d = vector(d, "D", idx(a), "\\partial J_{P," + idx(a) + ",@}^{(" + frame_ + ")}/\\partial q_{" + idx(l) + "}",
                        "derivative of J_P column " + idx(a) + " of link " + frame_ + " by q" + idx(l), 8, "_" + idx(l));
         dJPCache_.emplace(key, d);
         return d;
@@ -154,6 +158,19 @@ private:
     std::string frame_;
     std::map<std::pair<int, int>, Vec3> dJPCache_;
 };
+
+// A scene parameter spelled like a generated name (Jx1_2, beta1_1_2) would make the
+// printed sums ambiguous: JSON's expr would not parse back, codegen would declare the
+// name twice. Refused with the clash named, as a scene input error.
+void refuseGeneratedNameClashes(const Scene& scene, const NamedDefinitions& table) {
+    std::set<std::string> parameters;
+    for (const auto& [name, value] : scene.parameters) parameters.insert(name);
+    for (const NamedDefinition& d : table.entries())
+        if (parameters.count(d.symbol.get_name()))
+            throw InputError("parameters." + d.symbol.get_name(),
+                             "'" + d.symbol.get_name() + "' is also a name the structured form gives to a quantity it derives (" +
+                                 d.meaning + "); rename the parameter");
+}
 
 }  // namespace
 
@@ -192,6 +209,7 @@ StructuredDynamics deriveStructured(const Scene& scene, const DerivationOptions&
     }
     s.table = std::make_shared<NamedDefinitions>(tc);
     NamedDefinitions& table = *s.table;
+    table.setCancel(options.cancel);  // checked before every name: stops within one name's work
 
     std::vector<matrix> inverseA(n);
     for (int f = 0; f < n; ++f) inverseA[f] = tc.reduce(inverseTransform(linkTransform(robot.convention, robot.joints[f], tc, f)));
@@ -256,9 +274,10 @@ StructuredDynamics deriveStructured(const Scene& scene, const DerivationOptions&
             for (double& x : q) x = u(rng);
             s.trigToFunctions = tc.toFunctions();
             s.parameterValues = robot.parameterValues;
-            states.emplace_back(table, structuredInputs(s, q, qd));
+            states.emplace_back(table, structuredInputs(s, q, qd), options.cancel);
         }
-        for (int l = 0; l < n; ++l)
+        for (int l = 0; l < n; ++l) {
+            throwIfCancelled(options.cancel);
             for (int j = 0; j < n; ++j)
                 for (int k = j; k < n; ++k) {
                     const ex& e = s.dB[l](j, k);
@@ -267,6 +286,7 @@ StructuredDynamics deriveStructured(const Scene& scene, const DerivationOptions&
                     for (const DefinitionValues& v : states) zero = zero && std::abs(v(e)) <= 1e-9 * v.magnitude(e);
                     if (zero) s.dB[l](j, k) = 0;
                 }
+        }
     }
     for (int l = 0; l < n; ++l)
         for (int j = 0; j < n; ++j)
@@ -281,6 +301,7 @@ StructuredDynamics deriveStructured(const Scene& scene, const DerivationOptions&
     s.C = matrix(n, n);
     for (int i = 0; i < n; ++i)
         for (int j = 0; j < n; ++j) {
+            throwIfCancelled(options.cancel);
             ex c = 0;
             for (int k = 0; k < n; ++k)
                 c += GiNaC::numeric(1, 2) * (s.dB[k](i, j) + s.dB[j](i, k) - s.dB[i](j, k)) * tc.qd(k);
@@ -289,10 +310,13 @@ StructuredDynamics deriveStructured(const Scene& scene, const DerivationOptions&
     for (const SymbolicTerm& spring : robot.springs)
         s.g(spring.joint, 0) += spring.value * (tc.q(spring.joint) - spring.extra);
     for (int j = 0; j < n; ++j) s.g(j, 0) = s.g(j, 0).expand();
+    throwIfCancelled(options.cancel);
+    if (options.mode == ParameterMode::Parametric) refuseGeneratedNameClashes(scene, table);
     s.Q = effectForces(robot, tc.qd());
     for (int i = 0; i < n; ++i) s.qdd.emplace_back("qdd" + idx(i));
     s.parameterValues = robot.parameterValues;
     s.trigToFunctions = tc.toFunctions();
+    table.setCancel(nullptr);  // the flag may not outlive this call
     s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return s;
 }
