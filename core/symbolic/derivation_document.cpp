@@ -71,9 +71,11 @@ GiNaC::ex commonFactor(const GiNaC::ex& e, const std::vector<GiNaC::symbol>& vel
         if (common.empty()) return 1;
     }
     GiNaC::ex factor = 1;
-    for (const auto& [symbol, power] : common)
+    for (const auto& entry : common) {  // not a structured binding: clang 14 (fuzz build) cannot capture one
+        const auto& symbol = entry.first;
         if (std::none_of(velocities.begin(), velocities.end(), [&](const GiNaC::symbol& v) { return symbol.is_equal(v); }))
-            factor *= GiNaC::pow(symbol, power);
+            factor *= GiNaC::pow(symbol, entry.second);
+    }
     if (factor.is_equal(1)) return 1;
     GiNaC::numeric content = rational ? gcdNum / lcmDen : GiNaC::numeric(1);
     if (allNegative) content = -content;
