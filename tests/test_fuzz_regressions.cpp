@@ -11,6 +11,8 @@
 #include <sstream>
 
 #include "core/io/scene_file.hpp"
+#include "core/symbolic/expression.hpp"
+#include "core/symbolic/ginac_lock.hpp"
 #include "fuzz/fuzz_support.hpp"
 
 class TestFuzzRegressions : public QObject {
@@ -55,6 +57,25 @@ private slots:
             named = e.diagnostics().front().field == "parameters.I2";
         }
         QVERIFY(named);
+    }
+
+    // A function called with no argument ("sin()", found by fuzz_expression and
+    // fuzz_lagrangian: GiNaC's parser crashed on it) is one line naming the field and
+    // the function, whatever surrounds it.
+    void emptyCallsAreRefused() {
+        const auto lock = ll::symbolic::lockGinac();
+        ll::ParameterTable table;
+        table.define("parameters.m", "m", 2.0);
+        for (const char* text : {"sin()", "2*cos( )", "m*exp(\t)+1", "3sin()"}) {
+            QString message;
+            try {
+                (void)table.evaluate("robot.joints[0].a", text, ll::AngleUnits::Refused);
+            } catch (const ll::InputError& e) {
+                message = QString::fromStdString(e.what());
+            }
+            QVERIFY2(message.contains("robot.joints[0].a") && message.contains("()' has no argument"), qPrintable(text + (": " + message)));
+        }
+        for (const char* fine : {"sin(m)", "2*(m)", "cos(0)"}) (void)table.evaluate("robot.joints[0].a", fine, ll::AngleUnits::Refused);
     }
 };
 

@@ -130,6 +130,23 @@ PreparedExpression prepareExpression(const std::string& field, const std::string
         i += length;
     }
     p.position.push_back(asciiPosition.back());
+
+    // 3. A function called with nothing between its brackets, "sin()": GiNaC's parser
+    //    builds the call without an argument and crashes evaluating it (found by
+    //    fuzz_expression and fuzz_lagrangian), so it is refused here, before GiNaC.
+    for (std::size_t open = p.text.find('('); open != std::string::npos; open = p.text.find('(', open + 1)) {
+        const std::size_t close = p.text.find_first_not_of(" \t\n", open + 1);
+        if (close == std::string::npos || p.text[close] != ')') continue;
+        std::size_t start = open;
+        while (start > 0 && (p.text[start - 1] == ' ' || p.text[start - 1] == '\t' || p.text[start - 1] == '\n')) --start;
+        std::size_t nameStart = start;
+        while (nameStart > 0 && isNameChar(p.text[nameStart - 1])) --nameStart;
+        while (nameStart < start && !isNameStart(p.text[nameStart])) ++nameStart;  // "2sin()": the name is "sin"
+        if (nameStart == start) continue;  // "()" alone: GiNaC reports it
+        const std::string name = p.text.substr(nameStart, start - nameStart);
+        throw InputError(field, "'" + name + "()' has no argument" + p.at(nameStart + 1) + " in " + p.quoted() +
+                                    " (write what it applies to, e.g. " + name + "(q1))");
+    }
     return p;
 }
 
