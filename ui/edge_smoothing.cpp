@@ -60,10 +60,11 @@ void EdgeSmoothing::apply(QImage& frame) {
         markEdges(L, w, y, high, low, mark);
         for (int x = 1; x < w - 1; ++x) {
             if (!mark[x]) {
-                // Skip eight flat pixels at a time.
-                std::uint64_t eight = 0;
-                if (x + 8 < w - 1) std::memcpy(&eight, mark + x, 8);
-                if (x + 8 < w - 1 && eight == 0) x += 7;
+                if (x + 8 < w - 1) {  // skip eight flat pixels at a time
+                    std::uint64_t eight = 0;
+                    std::memcpy(&eight, mark + x, 8);
+                    if (eight == 0) x += 7;
+                }
                 continue;
             }
             const std::size_t i = std::size_t(y) * w + x;
