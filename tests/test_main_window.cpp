@@ -117,6 +117,15 @@ bool openShown(MainWindow& w, const char* scene) {
     return QTest::qWaitForWindowExposed(&w) && w.openFile(example(scene), nullptr, true) && settled(w, 120);
 }
 
+// Counts the paint events of the widget it filters.
+struct PaintCounter : QObject {
+    int count = 0;
+    bool eventFilter(QObject*, QEvent* e) override {
+        if (e->type() == QEvent::Paint) ++count;
+        return false;
+    }
+};
+
 QByteArray readAll(const QString& path) {
     QFile f(path);
     return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
@@ -164,6 +173,35 @@ private slots:
         QVERIFY(!step0.contains("a1"));
         // The energy changed with the arm: B grows with a1, so E_kin does along the motion.
         QVERIFY(w.energyChart().curvePoints() > 100);
+    }
+
+    // One frame per edit: the edited cell is painted together with the edit's result, not
+    // in a window frame of its own before it (each frame of a window holding a GL view is
+    // composed through llvmpipe: two frames doubled the 2R's edit latency).
+    void anEditAndItsResultShareOneFrame() {
+        MainWindow w;
+        QVERIFY(openShown(w, "planar_2r.json"));
+        auto* table = w.findChild<QTableView*>("dh-table");
+        QVERIFY(table);
+        PaintCounter paints;
+        table->viewport()->installEventFilter(&paints);
+        int cellPaintsBeforeResult = -1;
+        const auto connection = connect(&w, &MainWindow::resultShown, this, [&] {
+            if (cellPaintsBeforeResult < 0) cellPaintsBeforeResult = paints.count;
+        });
+        JointTableModel& model = w.jointModel();
+        QVERIFY(model.setData(model.index(0, JointTableModel::A), "1.25", Qt::EditRole));
+        QVERIFY(settled(w));
+        QTest::qWait(200);  // the frame after the result
+        disconnect(connection);
+        QCOMPARE(cellPaintsBeforeResult, 0);
+        QVERIFY2(paints.count >= 1, "the edited cell was never painted");
+        // An invalid edit has no result to wait for: its marked cell is painted at once.
+        paints.count = 0;
+        QVERIFY(model.setData(model.index(0, JointTableModel::A), "-", Qt::EditRole));
+        QVERIFY(checked(w));
+        QTest::qWait(60);  // under the 100 ms limit of the hold: painted because it was released
+        QVERIFY(paints.count >= 1);
     }
 
     // An invalid cell is marked with the core's message; the last valid model stays.

@@ -22,6 +22,12 @@ LiveSimulation::~LiveSimulation() {
 void LiveSimulation::request(const Scene& scene) {
     pending_ = std::make_shared<const Scene>(scene);
     ++requested_;
+    // Leading edge: the first edit after a pause starts at once; edits coming faster than
+    // the interval wait for the last of them.
+    if (!debounce_.isActive() && (!lastStart_.isValid() || lastStart_.elapsed() >= debounce_.interval())) {
+        start();
+        return;
+    }
     debounce_.start();
 }
 
@@ -34,6 +40,7 @@ void LiveSimulation::requestNow(const Scene& scene) {
 
 void LiveSimulation::start() {
     if (!pending_) return;
+    lastStart_.start();
     if (cancel_) cancel_->store(true);  // the previous run's result would be dropped anyway
     cancel_ = std::make_shared<std::atomic<bool>>(false);
     auto scene = std::move(pending_);

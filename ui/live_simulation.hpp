@@ -13,6 +13,7 @@
 #include <QElapsedTimer>
 #include <QObject>
 #include <QThreadPool>
+#include <QElapsedTimer>
 #include <QTimer>
 
 #include "core/model/scene.hpp"
@@ -40,7 +41,8 @@ public:
     // unset: the scene's.
     void setSettingsOverride(std::optional<SimulationSettings> settings) { override_ = std::move(settings); }
     void setDebounce(int milliseconds) { debounce_.setInterval(milliseconds); }
-    // Simulates `scene` (copied) after the debounce; a newer request replaces it.
+    // Simulates `scene` (copied): at once after a pause, else after the debounce; a newer
+    // request replaces it.
     void request(const Scene& scene);
     // Starts now, without the debounce.
     void requestNow(const Scene& scene);
@@ -55,6 +57,7 @@ signals:
 private:
     void start();
     QTimer debounce_;
+    QElapsedTimer lastStart_;  // since the last run started (the debounce's leading edge)
     QThreadPool pool_;
     std::shared_ptr<const Scene> pending_;
     std::optional<SimulationSettings> override_;

@@ -90,13 +90,18 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     status_ = new QLabel(this);
     statusBar()->addWidget(status_, 1);
 
+    editFrame_ = new EditFrame(this);
+    connect(&doc_, &SceneDocument::changed, editFrame_, &EditFrame::hold);
     connect(&doc_, &SceneDocument::changed, this, &MainWindow::documentChanged);
     connect(&doc_, &SceneDocument::validated, this, &MainWindow::documentChanged);
     // A derivation of the previous scene holds the GiNaC lock the check of an edit needs:
     // it stops, and derives again when the edit turns out invalid (the valid scene stays).
     connect(&doc_, &SceneDocument::changed, &derive_, &LiveDerivation::cancel);
     connect(&doc_, &SceneDocument::validated, this, [this] {
-        if (doc_.hasErrors()) derive_.resume();
+        if (doc_.hasErrors()) {
+            derive_.resume();
+            editFrame_->release();  // no result to wait for: the marked cell now
+        }
     });
     connect(&derive_, &LiveDerivation::started, this, [this] {
         derivation_->setDeriving();
@@ -152,6 +157,7 @@ void MainWindow::buildEditor() {
     dhBar->addStretch(1);
     dhLayout->addLayout(dhBar);
     dhView_ = makeTable(joints_, dhPage);
+    dhView_->setObjectName("dh-table");
     for (int c = JointTableModel::firstInertialColumn; c <= JointTableModel::lastInertialColumn; ++c) dhView_->setColumnHidden(c, true);
     dhLayout->addWidget(dhView_, 1);
     auto* rowBar = new QHBoxLayout;
@@ -482,6 +488,7 @@ void MainWindow::validSceneChanged() {
 }
 
 void MainWindow::showResult(std::shared_ptr<const LiveResult> result) {
+    if (result->request >= live_.latestRequest()) editFrame_->release();  // painted with this result, below
     if (!result->visual || result->simulation.trajectory.size() == 0) {
         status_->setText(tr("Simulation failed: %1").arg(QString::fromStdString(result->error)));
         return;

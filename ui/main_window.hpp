@@ -17,6 +17,7 @@
 
 #include "core/scene/trajectory_sampler.hpp"
 #include "ui/live_derivation.hpp"
+#include "ui/edit_frame.hpp"
 #include "ui/live_simulation.hpp"
 #include "ui/scene_document.hpp"
 
@@ -177,6 +178,7 @@ private:
     QTableView* parameterView_ = nullptr;
     QList<QAction*> presentationKeys_;  // space, arrows, F, +, −: live only when presenting
     QTimer autosave_;
+    EditFrame* editFrame_ = nullptr;  // one repaint per edit: the cell and its result together
     bool askBeforeClosing_ = true;
     bool presenting_ = false;
     bool teaching_ = false;
