@@ -4,6 +4,7 @@
 // structured (derivation_forms.hpp); pdf, svg and png typeset the same form (auto:
 // expanded when cheap, else structured; ui/derivation_pages) headless into --out.
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <iostream>
 
@@ -119,9 +120,16 @@ int deriveCommand(const Args& args) {
         std::cout << derived.document;
         return 0;
     }
+    using Clock = std::chrono::steady_clock;
+    const auto seconds = [](Clock::time_point since) { return std::chrono::duration<double>(Clock::now() - since).count(); };
+    const Clock::time_point startGui = Clock::now();
     const auto app = makeGuiApplication();
     if (!ui::mathFontsAvailable()) throw std::runtime_error("the Latin Modern fonts are missing: install fonts-lmodern");
+    const double guiSeconds = seconds(startGui);
+    const Clock::time_point startLayout = Clock::now();
     const ui::DerivationPages pages = ui::paginate(*derived.display);
+    const double layoutSeconds = seconds(startLayout);
+    const Clock::time_point startWrite = Clock::now();
     const QString out = QString::fromStdString(options.text("out"));
     std::string error;
     std::vector<QString> written;
@@ -129,7 +137,12 @@ int deriveCommand(const Args& args) {
                     : format == "svg" ? ui::writeSvg(pages, out, error, &written)
                                       : ui::writePng(pages, out, error, &written);
     if (!ok) throw UsageError("--out: " + error);
-    if (options.has("timings")) std::fprintf(stderr, "pages: %zu\n", pages.pages.size());
+    if (options.has("timings")) {
+        std::fprintf(stderr, "fonts and Qt: %.3f ms\n", 1e3 * guiSeconds);
+        std::fprintf(stderr, "layout into pages: %.3f ms\n", 1e3 * layoutSeconds);
+        std::fprintf(stderr, "writing %s: %.3f ms\n", format.c_str(), 1e3 * seconds(startWrite));
+        std::fprintf(stderr, "pages: %zu\n", pages.pages.size());
+    }
     if (written.size() > 1)
         for (const QString& file : written) std::fprintf(stderr, "wrote %s\n", file.toStdString().c_str());
     return 0;
