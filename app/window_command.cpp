@@ -39,8 +39,8 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
     const double play = options.number("play", 0);
     if (play < 0 || play > 600) throw UsageError("--play: " + options.text("play") + " is not between 0 and 600 seconds");
     const double step = options.number("step", -1);
-    if (options.has("step") && (step < 0 || step > 8 || step != std::floor(step)))
-        throw UsageError("--step: " + options.text("step") + " is not a step 0..8");
+    if (options.has("step") && (step < 0 || step > 9 || step != std::floor(step) || (step == 9 && !options.has("teach"))))
+        throw UsageError("--step: " + options.text("step") + " is not a step 0..8 (9, the results at the pose, with --teach)");
     int width = 1280, height = 800;
     if (options.has("size") && std::sscanf(options.text("size").c_str(), "%dx%d", &width, &height) != 2)
         throw UsageError("--size: '" + options.text("size") + "' is not WxH");

@@ -33,6 +33,7 @@
 
 using ll::ui::JointTableModel;
 using ll::ui::MainWindow;
+namespace symbolic = ll::symbolic;
 
 namespace {
 
@@ -445,6 +446,29 @@ private slots:
         // The drawn end effector is at (a1, a2) = (1, 0.8).
         const Eigen::Vector3d tip = w.result()->visual->endEffectorPosition();
         QVERIFY2((tip - Eigen::Vector3d(1.0, 0.8, 0)).norm() < 1e-3, qPrintable(QString("%1 %2 %3").arg(tip.x()).arg(tip.y()).arg(tip.z())));
+        // The typeset derivation gains step 9, its results at the pose, in the closed forms
+        // of the 2R (examples/planar_2r.json's description) at c2 = 0, c12 = 0:
+        // b11 = I1 + m1 lc1² + I2 + m2 (a1² + lc2² + 2 a1 lc2 c2) = 1/6 + 0.5 + 0.08 + 1.5·1.16,
+        // b12 = I2 + m2 (lc2² + a1 lc2 c2) = 0.32, g1 = (m1 lc1 + m2 a1) g c1 + m2 lc2 g c12 = 2.5·9.81.
+        const auto cell = [&](const std::string& name, int i, int j) {
+            const symbolic::DisplayStep* pose = w.derivationView().poseResults();
+            if (!pose) return QString("no step 9");
+            for (const symbolic::DisplayItem& item : pose->items)
+                if (item.name == name && item.value && i < int(item.value->rows.size()))
+                    return QString::fromStdString(symbolic::renderDisplay(*item.value->rows[i][j], symbolic::DisplayStyle::Text));
+            return QString("no ") + QString::fromStdString(name);
+        };
+        QCOMPARE(cell("B", 0, 0), QString("2.487"));
+        QCOMPARE(cell("B", 0, 1), QString("0.32"));
+        QCOMPARE(cell("B", 1, 1), QString("0.32"));
+        QVERIFY2(std::abs(cell("g", 0, 0).toDouble() - 24.525) < 0.006, qPrintable(cell("g", 0, 0)));
+        QCOMPARE(cell("g", 1, 0), QString("0"));  // cos(π/2)'s rounding residue is not shown as 10⁻¹⁶
+        w.showDerivationStep(9);
+        QCOMPARE(w.derivationView().step(), 9);
+        q << 0.0, 0.0;  // stretched out: b11 = 1/6 + 0.5 + 0.08 + 1.5·(1 + 0.16 + 0.8)
+        w.teach(q);
+        QCOMPARE(cell("B", 0, 0), QString("3.687"));
+        QCOMPARE(w.derivationView().step(), 9);
     }
 
 

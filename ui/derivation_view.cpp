@@ -299,17 +299,28 @@ void DerivationView::accept(int generation, std::shared_ptr<const symbolic::Disp
 }
 
 void DerivationView::refresh() {
-    const symbolic::DisplayStep* shown = nullptr;
-    if (document_)
+    const symbolic::DisplayStep* shown = step_ == 9 ? pose_.get() : nullptr;
+    if (document_ && !shown)
         for (const symbolic::DisplayStep& s : document_->steps)
             if (s.number == step_) shown = &s;
     canvas_->show(shown, zoom_);
     previous_->setEnabled(step_ > 0);
-    next_->setEnabled(step_ < 8);
+    next_->setEnabled(step_ < lastStep());
+}
+
+void DerivationView::setPoseResults(std::shared_ptr<const symbolic::DisplayStep> step) {
+    const bool had = pose_ != nullptr;
+    pose_ = std::move(step);
+    if (pose_ && !had) steps_->addItem(tr("Step 9: Results at the teach pose"));
+    if (!pose_ && had) {
+        if (step_ == 9) showStep(8);
+        delete steps_->takeItem(9);
+    }
+    if (step_ == 9 || had != (pose_ != nullptr)) refresh();
 }
 
 void DerivationView::showStep(int step) {
-    step = std::clamp(step, 0, 8);
+    step = std::clamp(step, 0, lastStep());
     const bool changed = step != step_;
     step_ = step;
     if (steps_->currentRow() != step) steps_->setCurrentRow(step);

@@ -40,7 +40,11 @@ public:
     // if this view had derived it. Either drops a derivation of this view's own.
     void setDeriving();
     void setDerivation(std::shared_ptr<const symbolic::DisplayDocument> document, const QString& error = {});
-    void showStep(int step);  // 0..8; a step the scene has no items for shows empty
+    void showStep(int step);  // 0..8 (9: the pose results); a step the scene has no items for shows empty
+    // The results at the teach pose (core/pipeline/pose_results) as step 9, listed after
+    // the derivation's steps; null takes it away (and leaves step 9 for step 8).
+    void setPoseResults(std::shared_ptr<const symbolic::DisplayStep> step);
+    const symbolic::DisplayStep* poseResults() const { return pose_.get(); }
     int step() const { return step_; }
     void setZoom(double zoom);  // 1 = 15 px per em; clamped to 0.25..8
     double zoom() const { return zoom_; }
@@ -82,6 +86,8 @@ private:
     QScrollArea* scroll_ = nullptr;
     DerivationCanvas* canvas_ = nullptr;
     std::shared_ptr<const symbolic::DisplayDocument> document_;
+    std::shared_ptr<const symbolic::DisplayStep> pose_;
+    int lastStep() const { return pose_ ? 9 : 8; }
     std::vector<std::unique_ptr<Job>> jobs_;
     int generation_ = 0;
     int step_ = 0;

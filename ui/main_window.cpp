@@ -43,6 +43,7 @@
 #include <QWindow>
 
 #include "core/io/atomic_file.hpp"
+#include "core/pipeline/pose_results.hpp"
 #include "core/pipeline/scene_derivation.hpp"
 #include "ui/animation_export.hpp"
 #include "ui/derivation_pages.hpp"
@@ -114,7 +115,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(&ghostLive_, &LiveSimulation::finished, this, &MainWindow::showGhost);
     connect(playback_, &PlaybackBar::timeChanged, this, &MainWindow::showTime);
     connect(playback_, &PlaybackBar::playingChanged, this, [this](bool playing) {
-        if (playing) teaching_ = false;
+        if (!playing) return;
+        teaching_ = false;
+        updatePoseResults();  // the pose step goes with teach mode
     });
     autosave_.setInterval(5000);
     connect(&autosave_, &QTimer::timeout, this, [this] {
@@ -339,10 +342,10 @@ void MainWindow::buildDocks() {
     // (searchable, copyable). They follow each other's step.
     typeset_ = new DerivationView(derivationDock);
     connect(derivation_, &DerivationPanel::stepChanged, typeset_, [this](int s) {
-        if (typeset_->step() != s) typeset_->showStep(s);
+        if (typeset_->step() != s && typeset_->step() <= 8) typeset_->showStep(s);
     });
     connect(typeset_, &DerivationView::stepChanged, derivation_, [this](int s) {
-        if (derivation_->step() != s) derivation_->showStep(s);
+        if (s <= 8 && derivation_->step() != s) derivation_->showStep(s);  // step 9 (the pose) is typeset only
     });
     auto* derivationTabs = new QTabWidget(derivationDock);
     derivationTabs->addTab(typeset_, tr("Typeset"));
@@ -374,9 +377,11 @@ void MainWindow::buildDocks() {
     connect(teach_, &TeachPanel::poseChanged, this, [this](const Eigen::VectorXd& q) {
         if (!teaching_ || !view_) return;
         view_->setPose(q, playback_->time());
+        updatePoseResults();
     });
     connect(bottomTabs_, &QTabWidget::currentChanged, this, [this](int index) {
         teaching_ = bottomTabs_->widget(index) == teach_;
+        updatePoseResults();
         if (teaching_) {
             playback_->pause();
             view_->setPose(teach_->pose(), playback_->time());
@@ -484,6 +489,7 @@ void MainWindow::validSceneChanged() {
     if (!ghostIntegrator_.isEmpty()) ghostLive_.request(scene);
     derive_.request(scene);
     teach_->setScene(scene);
+    updatePoseResults();
     workPrecision_->setScene(scene);
 }
 
@@ -596,7 +602,22 @@ QStringList MainWindow::diagnosticLines() const {
     return lines;
 }
 
-void MainWindow::showDerivationStep(int n) { derivation_->showStep(n); }
+void MainWindow::showDerivationStep(int n) {
+    if (n <= 8) derivation_->showStep(n);
+    typeset_->showStep(n);
+}
+
+// Step 9 of the typeset derivation while teaching: B, C, g and the energies at the pose.
+void MainWindow::updatePoseResults() {
+    const Scene& scene = doc_.validScene();
+    const int n = scene.robot.dof();
+    if (!teaching_ || scene.lagrangian || n == 0 || teach_->pose().size() != n) {
+        typeset_->setPoseResults(nullptr);
+        return;
+    }
+    const Eigen::VectorXd qd = scene.initial.qd.size() == n ? scene.initial.qd : Eigen::VectorXd::Zero(n);
+    typeset_->setPoseResults(std::make_shared<const symbolic::DisplayStep>(poseResults(scene, teach_->pose(), qd)));
+}
 
 void MainWindow::teach(const Eigen::VectorXd& q) {
     bottomTabs_->setCurrentWidget(teach_);

@@ -136,6 +136,7 @@ private:
     void showGhost(std::shared_ptr<const LiveResult> result);
     void showDerivation(std::shared_ptr<const DerivationResult> result);
     void showTime(double t);
+    void updatePoseResults();
     void updateTitle();
     void addRecent(const QString& path);
     void rebuildRecentMenu();

@@ -111,9 +111,9 @@ void TeachPanel::evaluate() {
     const double epot = potentialEnergy(m.scene.robot, m.data, m.scene.effects, q_);
     std::ostringstream out;
     out.precision(5);
-    out << "E_pot(q) = " << epot << " J\n\ng(q) [N·m or N] =\n";
+    out << tr("E_pot(q) = %1 J").arg(epot, 0, 'g', 5).toStdString() << "\n\n" << tr("g(q) [N·m or N] =").toStdString() << '\n';
     for (int i = 0; i < m.data.g.size(); ++i) out << "  " << m.data.g[i] << '\n';
-    out << "\nB(q) [kg·m², kg·m or kg] =\n";
+    out << '\n' << tr("B(q) [kg·m², kg·m or kg] =").toStdString() << '\n';
     for (int i = 0; i < m.data.B.rows(); ++i) {
         out << " ";
         for (int j = 0; j < m.data.B.cols(); ++j) {

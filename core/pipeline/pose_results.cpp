@@ -1,0 +1,112 @@
+#include "core/pipeline/pose_results.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "core/dynamics/coriolis.hpp"
+#include "core/dynamics/energy.hpp"
+#include "core/dynamics/mass_matrix.hpp"
+#include "core/dynamics/potential_gradient.hpp"
+#include "core/kinematics/forward_kinematics.hpp"
+#include "core/model/robot_data.hpp"
+#include "core/symbolic/display_builder.hpp"
+
+namespace ll {
+namespace {
+
+using symbolic::DisplayItem;
+using symbolic::DisplayKind;
+using symbolic::DisplayPtr;
+
+// v with 4 significant digits: 0.1234, 12.35, 1.235·10⁻⁵; a negative number as the
+// display builder writes one (a one-term sum with its minus sign).
+DisplayPtr number(double v) {
+    if (v == 0) v = 0;  // no −0
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.4g", std::abs(v));
+    std::string digits = buffer, exponent;
+    if (const auto e = digits.find('e'); e != std::string::npos) {
+        exponent = std::to_string(std::stoi(digits.substr(e + 1)));
+        digits = digits.substr(0, e);
+    }
+    std::snprintf(buffer, sizeof buffer, "%.17g", std::abs(v));
+    DisplayPtr magnitude = symbolic::displayNumber(digits, digits, buffer, exponent);
+    if (v >= 0) return magnitude;
+    auto negated = std::make_shared<symbolic::DisplayNode>();
+    negated->kind = DisplayKind::Sum;
+    negated->children = {magnitude};
+    negated->negative = {true};
+    return negated;
+}
+
+// Entries below 1e-12 of the matrix's largest are rounding (cos(π/2) = 6·10⁻¹⁷): shown 0.
+DisplayPtr matrix(const Eigen::MatrixXd& m) {
+    const double negligible = 1e-12 * (m.size() > 0 ? m.cwiseAbs().maxCoeff() : 0.0);
+    auto node = std::make_shared<symbolic::DisplayNode>();
+    node->kind = DisplayKind::Matrix;
+    for (int i = 0; i < m.rows(); ++i) {
+        std::vector<DisplayPtr> row;
+        for (int j = 0; j < m.cols(); ++j) row.push_back(number(std::abs(m(i, j)) <= negligible ? 0.0 : m(i, j)));
+        node->rows.push_back(std::move(row));
+    }
+    return node;
+}
+
+DisplayItem item(const std::string& name, const std::string& latexName, DisplayPtr value, std::string note) {
+    DisplayItem it;
+    it.name = name;
+    it.latexName = latexName;
+    it.value = value;
+    it.equation = symbolic::displayEquation(symbolic::displayLabel(name, latexName, {}), value);
+    it.note = std::move(note);
+    return it;
+}
+
+// The unit of a joint coordinate's generalized force, velocity… by joint type.
+std::string perJoint(const Scene& scene, const char* revolute, const char* prismatic) {
+    bool anyRevolute = false, anyPrismatic = false;
+    for (const auto& j : scene.robot.joints) (j.dh.type == JointType::Revolute ? anyRevolute : anyPrismatic) = true;
+    if (anyRevolute && anyPrismatic) return std::string(revolute) + " (revolute), " + prismatic + " (prismatic)";
+    return anyPrismatic ? prismatic : revolute;
+}
+
+}  // namespace
+
+symbolic::DisplayStep poseResults(const Scene& scene, const Eigen::VectorXd& q, const Eigen::VectorXd& qd) {
+    const int n = scene.robot.dof();
+    if (scene.lagrangian || n == 0) throw std::invalid_argument("poseResults: a robot scene is needed");
+    if (q.size() != n || qd.size() != n) throw std::invalid_argument("poseResults: q and q̇ need one value per joint");
+    RobotData data(scene.robot);
+    forwardKinematics(scene.robot, data, q);
+    computeMassMatrix(scene.robot, data);
+    computeCoriolisMatrix(scene.robot, data, qd);
+    computePotentialGradient(scene.robot, data, scene.effects, q);
+    const double ekin = kineticEnergy(data, qd), epot = potentialEnergy(scene.robot, data, scene.effects, q);
+
+    // q shown in degrees for revolute joints (as the teach sliders), metres for prismatic.
+    Eigen::VectorXd shown = q;
+    for (int i = 0; i < n; ++i)
+        if (scene.robot.joints[i].dh.type == JointType::Revolute) shown[i] *= 180 / std::numbers::pi;
+
+    symbolic::DisplayStep step;
+    step.number = poseStepNumber;
+    step.title = "The results at the teach pose";
+    step.formulaText = "The mass matrix, the Coriolis matrix, the gravity vector and the energies of steps 6 to 8 "
+                       "evaluated at the pose of the teach sliders, with the scene's initial joint velocities";
+    step.formulaLatex = "B(q),\\ C(q,\\dot q),\\ g(q),\\ E_{\\mathrm{kin}},\\ E_{\\mathrm{pot}} \\text{ at this } q, \\dot q";
+    step.items.push_back(item("q", "q", matrix(shown), perJoint(scene, "°", "m")));
+    step.items.push_back(item("qd", "\\dot{q}", matrix(qd), perJoint(scene, "rad/s", "m/s")));
+    step.items.push_back(item("Ekin", "E_{\\mathrm{kin}}", number(ekin), "J"));
+    step.items.push_back(item("Epot", "E_{\\mathrm{pot}}", number(epot), "J"));
+    bool mixed = false;
+    for (const auto& j : scene.robot.joints) mixed |= j.dh.type != scene.robot.joints[0].dh.type;
+    step.items.push_back(item("B", "B(q)", matrix(data.B), perJoint(scene, "kg·m²", "kg") + (mixed ? "; kg·m where they meet" : "")));
+    step.items.push_back(item("C", "C(q,\\dot{q})", matrix(data.C), perJoint(scene, "kg·m²/s", "kg/s")));
+    step.items.push_back(item("g", "g(q)", matrix(data.g), perJoint(scene, "N·m", "N")));
+    return step;
+}
+
+}  // namespace ll
