@@ -12,6 +12,7 @@
 #include <QChart>
 #include <QDockWidget>
 #include <QLineSeries>
+#include <QValueAxis>
 #include <QMimeData>
 #include <QProgressBar>
 #include <QLineEdit>
@@ -438,7 +439,9 @@ private slots:
         QVERIFY(settled(w));
         Eigen::VectorXd q(2);
         q << 0.0, M_PI / 2;
+        QVERIFY(w.sceneView().trailPoints() >= 1);  // the motion's trail, up to the playback time
         w.teach(q);
+        QCOMPARE(w.sceneView().trailPoints(), std::size_t(0));  // a teach pose is not on the motion's path
         // Planar 2R (examples/planar_2r.json: q1 from the horizontal, gravity −y):
         // E_pot = g (m1 lc1 s1 + m2 (a1 s1 + lc2 s12)); at q = (0, π/2): 9.81·1.5·0.4.
         const QString readout = w.teachPanel().readout();
@@ -570,6 +573,8 @@ private slots:
         QVERIFY(openShown(w, "planar_2r.json"));
         w.playback().pause();
         const double font = QApplication::font().pointSizeF();
+        auto axisFont = [&] { return static_cast<QValueAxis*>(w.energyChart().chart()->axes(Qt::Horizontal).front())->labelsFont().pointSizeF(); };
+        const double chartFont = axisFont();
         w.setPresentationMode(true);
         QTRY_VERIFY(w.isFullScreen());
         QVERIFY(w.presenting());
@@ -577,6 +582,11 @@ private slots:
         QVERIFY(!w.findChild<QDockWidget*>("model")->isVisible());
         QTest::qWait(1000);
         w.screenshot().save(dir_.filePath("presentation.png"));
+        // The plots grow with the window: Qt Charts keeps its own fonts.
+        QCOMPARE(axisFont(), chartFont * 1.4);
+        const auto energyCurves = w.energyChart().chart()->series();
+        QVERIFY(!energyCurves.isEmpty());
+        QCOMPARE(static_cast<QLineSeries*>(energyCurves.back())->pen().widthF(), 1.8 * 1.4);
         // The focus on a push button, which would take the space as a click.
         auto* next = w.derivationView().findChild<QPushButton*>();
         QVERIFY(next);

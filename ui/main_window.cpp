@@ -376,7 +376,7 @@ void MainWindow::buildDocks() {
         });
     connect(teach_, &TeachPanel::poseChanged, this, [this](const Eigen::VectorXd& q) {
         if (!teaching_ || !view_) return;
-        view_->setPose(q, playback_->time());
+        showTeachPose(q);
         updatePoseResults();
     });
     connect(bottomTabs_, &QTabWidget::currentChanged, this, [this](int index) {
@@ -384,7 +384,7 @@ void MainWindow::buildDocks() {
         updatePoseResults();
         if (teaching_) {
             playback_->pause();
-            view_->setPose(teach_->pose(), playback_->time());
+            showTeachPose(teach_->pose());
         } else {
             showTime(playback_->time());
         }
@@ -607,6 +607,12 @@ void MainWindow::showDerivationStep(int n) {
     typeset_->showStep(n);
 }
 
+// The robot at a teach pose, without the trail of the motion (which is not where it is).
+void MainWindow::showTeachPose(const Eigen::VectorXd& q) {
+    static const std::vector<Eigen::Vector3d> noTrail;
+    view_->setPose(q, playback_->time(), &noTrail);
+}
+
 // Step 9 of the typeset derivation while teaching: B, C, g and the energies at the pose.
 void MainWindow::updatePoseResults() {
     const Scene& scene = doc_.validScene();
@@ -622,7 +628,7 @@ void MainWindow::updatePoseResults() {
 void MainWindow::teach(const Eigen::VectorXd& q) {
     bottomTabs_->setCurrentWidget(teach_);
     teach_->setPose(q);
-    view_->setPose(teach_->pose(), playback_->time());
+    showTeachPose(teach_->pose());
 }
 
 void MainWindow::setGhostIntegrator(const QString& integrator) {
@@ -651,6 +657,26 @@ void MainWindow::setPresentationMode(bool on) {
     QApplication::setFont(font);
     derivation_->setZoom(on ? 1.6 : 1.0);
     typeset_->setZoom(on ? 1.6 : 1.0);
+    // The plots: bigger labels and lines need room, so their dock gets more height, and
+    // the dock titles (which the application font does not reach) grow too.
+    for (TrajectoryChart* chart : {energy_, jointsChart_}) chart->setScale(on ? 1.4 : 1.0);
+    // A dock paints its title in the platform's small title font whatever the application
+    // font is, so presenting docks get a label of their own as title.
+    for (QDockWidget* dock : findChildren<QDockWidget*>()) {
+        QWidget* old = dock->titleBarWidget();
+        if (on && !old) {
+            auto* title = new QLabel(dock->windowTitle(), dock);
+            title->setContentsMargins(6, 2, 6, 2);
+            dock->setTitleBarWidget(title);
+        } else if (!on && old) {
+            dock->setTitleBarWidget(nullptr);
+            old->deleteLater();
+        }
+    }
+    if (auto* plots = findChild<QDockWidget*>("plots"); plots && on) {
+        const QRect screen = this->screen() ? this->screen()->availableGeometry() : geometry();
+        resizeDocks({plots}, {std::max(320, screen.height() * 2 / 5)}, Qt::Vertical);
+    }
     for (QAction* key : presentationKeys_) key->setEnabled(on);
     on ? showFullScreen() : showNormal();
 }

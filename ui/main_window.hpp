@@ -137,6 +137,7 @@ private:
     void showDerivation(std::shared_ptr<const DerivationResult> result);
     void showTime(double t);
     void updatePoseResults();
+    void showTeachPose(const Eigen::VectorXd& q);
     void updateTitle();
     void addRecent(const QString& path);
     void rebuildRecentMenu();

@@ -45,6 +45,7 @@ public:
     bool showFrames() const { return options_.frames; }
     bool showComs() const { return coms_; }
     bool showTrail() const { return options_.trail; }
+    std::size_t trailPoints() const { return trail_.size(); }  // of the trail drawn now
 
     // The joint (0-based) drawn highlighted; -1: none.
     void highlightJoint(int joint);

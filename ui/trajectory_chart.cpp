@@ -61,12 +61,38 @@ TrajectoryChart::TrajectoryChart(Kind kind, QWidget* parent) : QChartView(parent
     cursor_->attachAxis(axisX_);
     cursor_->attachAxis(axisY_);
     for (QLegendMarker* m : chart->legend()->markers(cursor_)) m->setVisible(false);
+    baseLabels_ = axisX_->labelsFont();
+    baseTitle_ = axisX_->titleFont();
+    baseLegend_ = chart->legend()->font();
+}
+
+namespace {
+QFont scaled(QFont font, double scale) {
+    if (font.pointSizeF() > 0) font.setPointSizeF(font.pointSizeF() * scale);
+    else if (font.pixelSize() > 0) font.setPixelSize(static_cast<int>(font.pixelSize() * scale + 0.5));
+    return font;
+}
+}  // namespace
+
+void TrajectoryChart::setScale(double scale) {
+    scale_ = scale;
+    for (QValueAxis* axis : {axisX_, axisY_}) {
+        axis->setLabelsFont(scaled(baseLabels_, scale));
+        axis->setTitleFont(scaled(baseTitle_, scale));
+    }
+    chart()->legend()->setFont(scaled(baseLegend_, scale));
+    for (QAbstractSeries* a : chart()->series()) {
+        auto* s = static_cast<QLineSeries*>(a);
+        QPen pen = s->pen();
+        pen.setWidthF((s == cursor_ ? 1.2 : 1.8) * scale);
+        s->setPen(pen);
+    }
 }
 
 QLineSeries* TrajectoryChart::addSeries(const QString& name, const QColor& color, Qt::PenStyle style) {
     auto* s = new QLineSeries;
     s->setName(name);
-    s->setPen(QPen(color, 1.8, style));
+    s->setPen(QPen(color, 1.8 * scale_, style));
     chart()->addSeries(s);
     s->attachAxis(axisX_);
     s->attachAxis(axisY_);
@@ -142,8 +168,9 @@ void TrajectoryChart::fitAxes() {
     }
     if (lo > hi) lo = 0, hi = 1;
     const double pad = std::max((hi - lo) * 0.05, 1e-9 + 1e-6 * std::abs(hi));
-    yMin_ = lo - pad, yMax_ = hi + pad;
-    axisY_->setRange(yMin_, yMax_);
+    axisY_->setRange(lo - pad, hi + pad);
+    axisY_->applyNiceNumbers();  // ticks at round values (no "−0.0" for a 10⁻¹⁵ bound)
+    yMin_ = axisY_->min(), yMax_ = axisY_->max();
     axisX_->setRange(trajectory_.t.empty() ? 0 : trajectory_.t.front(), std::max(tEnd, 1e-6));
     setCursorTime(trajectory_.t.empty() ? 0 : trajectory_.t.front());
 }

@@ -25,6 +25,11 @@ public:
     void setGhost(const Trajectory* ghost, const QString& label);  // null: none
     void setCursorTime(double t);
     void clear();
+    // Presentation mode: axis labels, titles and legend `scale` times their size, curves
+    // as many times as wide (1 = the desktop's). Qt Charts does not follow the
+    // application font, so the window's bigger font alone leaves the plots small.
+    void setScale(double scale);
+    double scale() const { return scale_; }
 
     // Points drawn in the curves (not the cursor): a test's "there are curves".
     int curvePoints() const;
@@ -52,6 +57,8 @@ private:
     QValueAxis *axisX_, *axisY_;
     QLineSeries* cursor_;
     double yMin_ = 0, yMax_ = 1;
+    double scale_ = 1.0;
+    QFont baseLabels_, baseTitle_, baseLegend_;  // the fonts at scale 1
 };
 
 }  // namespace ll::ui
