@@ -1,5 +1,6 @@
 #include "core/pipeline/derivation_forms.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -147,7 +148,9 @@ FormDocument deriveInForm(const Scene& scene, const FormRequest& request) {
         if (request.form != DerivationForm::Structured)
             for (const EntryRef& e : entries) info.expanded.push_back(expandEntry(*structured, e, request.document.cancel));
         throwIfCancelled(request.document.cancel);
+        const auto printing = std::chrono::steady_clock::now();
         out.derived.document = structuredDocument(*structured, request.document.format, info);
+        out.derived.printSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - printing).count();
         out.derived.timings.push_back({0, "structured derivation (steps 1-8)", structured->seconds});
     }
 

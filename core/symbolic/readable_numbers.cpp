@@ -43,7 +43,10 @@ GiNaC::ex readableNumbers(const GiNaC::ex& e) {
             return x.map(*this);
         }
     } map;
-    map.decimals = hasDecimal(e);
+    // Without a scene decimal nothing changes (only decimal fractions would): GiNaC's map
+    // rebuilds every sum and product it walks, so not walking is most of the saving.
+    if (!hasDecimal(e)) return e;
+    map.decimals = true;
     return map(e);
 }
 
