@@ -14,6 +14,7 @@
 #include <QLineSeries>
 #include <QValueAxis>
 #include <QMimeData>
+#include <QPlainTextEdit>
 #include <QProgressBar>
 #include <QLineEdit>
 #include <QSlider>
@@ -175,6 +176,15 @@ private slots:
         QVERIFY(!step0.contains("a1"));
         // The energy changed with the arm: B grows with a1, so E_kin does along the motion.
         QVERIFY(w.energyChart().curvePoints() > 100);
+        // The JSON tab, filled when it is shown, has the edit.
+        auto* json = w.findChild<QPlainTextEdit*>("scene-json");
+        QVERIFY(json);
+        for (QTabWidget* tabs : w.findChildren<QTabWidget*>())
+            for (int i = 0; i < tabs->count(); ++i)
+                if (tabs->tabText(i) == "JSON") tabs->setCurrentIndex(i);
+        QTRY_VERIFY(json->isVisible());
+        const auto shown = ll::ui::SceneJson::parse(json->toPlainText().toStdString());
+        QCOMPARE(shown["robot"]["joints"][0]["a"].get<double>(), 1.5);
     }
 
     // One frame per edit: the edited cell is painted together with the edit's result, not

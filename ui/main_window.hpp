@@ -137,6 +137,7 @@ private:
     void showDerivation(std::shared_ptr<const DerivationResult> result);
     void showTime(double t);
     void updatePoseResults();
+    void refreshJson();
     void showTeachPose(const Eigen::VectorXd& q);
     void updateTitle();
     void addRecent(const QString& path);
@@ -183,6 +184,7 @@ private:
     EditFrame* editFrame_ = nullptr;  // one repaint per edit: the cell and its result together
     bool askBeforeClosing_ = true;
     bool presenting_ = false;
+    bool jsonStale_ = true;  // the JSON tab's text is older than the document
     bool teaching_ = false;
     bool opening_ = false;  // a file is being checked (openFile waits for its worker)
     int shownStructure_ = -1;  // joints/coordinates of the scene on screen (a change refits the camera)
