@@ -3,7 +3,8 @@
 //   - edit-to-updated-view latency: a DH cell edited through the editor's model (the
 //     same undoable command a keystroke makes) until the re-simulated scene is drawn in
 //     the 3D view (validation, debounce, worker simulation, VisualScene, plots, one GL
-//     frame); the derivation re-runs beside it in its own thread and is timed apart;
+//     frame swapped: SceneView::frameSwapped); the derivation re-runs
+//     beside it in its own thread and is timed apart;
 //   - the PUMA 560 animated in a 1280×720 view (posed at a new time every frame);
 //   - start to the first drawn frame of the simulated default scene, a fresh process.
 #include <algorithm>
@@ -81,10 +82,20 @@ void latency(const std::string& path, int runs) {
     for (int k = 0; k < runs; ++k) {
         const long frames = window.sceneView().framesDrawn();
         int shown = -1;
-        Clock::time_point shownTime;
+        Clock::time_point shownTime, swapTime;
+        bool swapped = false;
         auto connection = QObject::connect(&window, &ui::MainWindow::resultShown, [&](int request) {
             shown = request;
             shownTime = Clock::now();
+        });
+        // The first composed frame after the result: the moment the window shows it. (When
+        // the wait below returns, events queued behind that frame, such as the derivation
+        // and its own frame, may have been handled too.)
+        auto swapConnection = QObject::connect(&window.sceneView(), &ui::SceneView::frameSwapped, [&] {
+            if (shown >= window.liveSimulation().latestRequest() && !swapped) {
+                swapped = true;
+                swapTime = Clock::now();
+            }
         });
         const double cpu0 = processCpu();
         const auto t0 = Clock::now();
@@ -92,12 +103,13 @@ void latency(const std::string& path, int runs) {
         waitFor([&] { return !window.document().validating(); }, 30);
         const auto tValid = Clock::now();
         const int request = window.liveSimulation().latestRequest();
-        bool drawn = waitFor([&] { return shown >= request && window.sceneView().framesDrawn() > frames; }, 30);
-        const auto t1 = Clock::now();
+        bool drawn = waitFor([&] { return shown >= request && window.sceneView().framesDrawn() > frames && swapped; }, 30);
+        const auto t1 = swapped ? swapTime : Clock::now();
         const double cpu1 = processCpu();
         waitFor([&] { return !window.liveDerivation().busy(); }, 60);
         const auto t2 = Clock::now();
         QObject::disconnect(connection);
+        QObject::disconnect(swapConnection);
         if (!drawn) continue;
         view.push_back(ms(t0, t1));
         derive.push_back(ms(t0, t2));

@@ -97,7 +97,7 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
     }
     // Let the last frame reach the screen before grabbing it.
     const long frames = window.sceneView().framesDrawn();
-    window.sceneView().update();
+    window.sceneView().requestFrame();
     waitFor([&] { return window.sceneView().framesDrawn() > frames; }, 5);
     pauseFor(0.3);
     const QImage image = window.screenshot();

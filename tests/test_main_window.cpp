@@ -105,7 +105,7 @@ double differing(const QImage& a, const QImage& b) {
 // The GL view's picture after the next frame is drawn.
 QImage nextFrame(MainWindow& w) {
     const long frames = w.sceneView().framesDrawn();
-    w.sceneView().update();
+    w.sceneView().requestFrame();
     QElapsedTimer clock;
     clock.start();
     while (w.sceneView().framesDrawn() <= frames && clock.elapsed() < 10000) QTest::qWait(10);
@@ -618,7 +618,7 @@ private slots:
         const QImage before = nextFrame(w);
         const QPoint centre = w.sceneView().rect().center();
         QWheelEvent wheel(centre, w.sceneView().mapToGlobal(centre), QPoint(), QPoint(0, 600), Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
-        QApplication::sendEvent(&w.sceneView(), &wheel);
+        QApplication::sendEvent(w.sceneView().surface(), &wheel);
         const QImage zoomed = nextFrame(w);
         QVERIFY2(differing(before, zoomed) > 0.01, qPrintable(QString::number(differing(before, zoomed))));
         QTest::keyClick(next, Qt::Key_F);
@@ -629,6 +629,31 @@ private slots:
         QVERIFY(!w.presenting());
         QCOMPARE(QApplication::font().pointSizeF(), font);
         QVERIFY(w.findChild<QDockWidget*>("model")->isVisible());
+    }
+
+    // The mouse over a joint in the 3D view (the GL view's own native window) selects its
+    // DH row and lights the joint up; a click makes the row's cell current.
+    void hoveringAJointSelectsItsRow() {
+        MainWindow w;
+        QVERIFY(openShown(w, "planar_2r.json"));
+        w.playback().pause();
+        nextFrame(w);
+        ll::ui::SceneView& view = w.sceneView();
+        QPoint at;
+        int joint = -1;
+        for (int y = 2; y < view.height() && joint < 0; y += 5)
+            for (int x = 2; x < view.width() && joint < 0; x += 5)
+                if ((joint = view.jointAt({x, y})) >= 0) at = {x, y};
+        QVERIFY2(joint >= 0, "no joint found under any point of the view");
+        auto* table = w.findChild<QTableView*>("dh-table");
+        QVERIFY(table);
+        table->clearSelection();
+        QMouseEvent move(QEvent::MouseMove, QPointF(at), view.surface()->mapToGlobal(QPointF(at)), Qt::NoButton, Qt::NoButton, Qt::NoModifier);
+        QApplication::sendEvent(view.surface(), &move);
+        QVERIFY(table->selectionModel()->isRowSelected(joint, {}));
+        QMouseEvent press(QEvent::MouseButtonPress, QPointF(at), view.surface()->mapToGlobal(QPointF(at)), Qt::LeftButton, Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(view.surface(), &press);
+        QCOMPARE(table->currentIndex().row(), joint);
     }
 
     // A scene file dropped on the window opens.

@@ -23,8 +23,9 @@ void EditFrame::release() {
     if (!holding_) return;
     holding_ = false;
     // Qt sends a window one request until it has painted, so the swallowed one is posted
-    // again (as Qt posts them: low priority, after the queued results).
-    if (swallowed_) QCoreApplication::postEvent(window_, new QEvent(QEvent::UpdateRequest), Qt::LowEventPriority);
+    // again, ahead of queued calls (Qt posts its own at low priority, behind them): a
+    // derivation arriving after the result would otherwise be laid out before the frame.
+    if (swallowed_) QCoreApplication::postEvent(window_, new QEvent(QEvent::UpdateRequest), Qt::HighEventPriority);
     swallowed_ = false;
 }
 

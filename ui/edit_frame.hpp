@@ -3,10 +3,12 @@
 // edit's result (the re-simulated scene) is on screen, or `limit` milliseconds pass, so
 // the typed cell, the robot, the plots and the status line change in the same frame.
 //
-// Why: with a QOpenGLWidget in it, every repaint of the window is composed through
-// OpenGL, under Mesa's llvmpipe 15–40 ms for a 1280×800 window whatever changed. Without
-// the hold an edit cost two such frames (the cell's, then the result's, ~100 ms for the
-// 2R whose validation and simulation take 0.5 and 3 ms); with it, one.
+// Why: when the 3D view was a QOpenGLWidget, every repaint of the window was composed
+// through OpenGL (llvmpipe: 15–40 ms at 1280×800 whatever changed) and an edit cost two
+// such frames, the cell's and then the result's (~100 ms for the 2R, whose validation
+// and simulation take 0.5 and 3 ms). The view now draws in its own native window
+// (ui/scene_view), which made a raster frame cheap; the hold still saves the first one
+// and keeps a half-updated window (new cell, old robot) from ever being seen.
 #include <QObject>
 #include <QTimer>
 

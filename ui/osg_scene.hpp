@@ -3,7 +3,7 @@
 // red/green/blue with optional frame labels, a ground grid and an end-effector trail.
 // Per frame only the part transforms and the trail change (update, setTrail). Knows no
 // GL context: the headless renderer (ui/headless_renderer.hpp) and the desktop
-// window's QOpenGLWidget draw the same root.
+// window's 3D view (a native QOpenGLWindow) draw the same root.
 #include <vector>
 
 #include <Eigen/Core>

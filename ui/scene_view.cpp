@@ -4,7 +4,9 @@
 #include <cmath>
 
 #include <QMouseEvent>
+#include <QOpenGLWindow>
 #include <QSurfaceFormat>
+#include <QVBoxLayout>
 #include <QWheelEvent>
 #include <osg/BlendFunc>
 #include <osg/Depth>
@@ -30,11 +32,34 @@ osg::Vec3d toOsg(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 
 }  // namespace
 
-SceneView::SceneView(QWidget* parent) : QOpenGLWidget(parent) {
-    setFormat(viewFormat());
-    setMouseTracking(true);
-    setFocusPolicy(Qt::StrongFocus);
+// The native window the view draws in. It takes no keyboard focus, so the window's keys
+// (Space, F, arrows) keep working after a click in the view.
+class SceneView::GlWindow : public QOpenGLWindow {
+public:
+    explicit GlWindow(SceneView* view) : QOpenGLWindow(QOpenGLWindow::NoPartialUpdate), view_(view) {
+        setFormat(viewFormat());
+        setFlag(Qt::WindowDoesNotAcceptFocus);
+        connect(this, &QOpenGLWindow::frameSwapped, view, &SceneView::frameSwapped);
+    }
+
+protected:
+    void resizeGL(int w, int h) override { view_->resizeGL(w, h); }
+    void paintGL() override { view_->paintGL(); }
+    void mousePressEvent(QMouseEvent* e) override { view_->press(e); }
+    void mouseMoveEvent(QMouseEvent* e) override { view_->move(e); }
+    void mouseReleaseEvent(QMouseEvent*) override { view_->release(); }
+    void wheelEvent(QWheelEvent* e) override { view_->wheel(e); }
+
+private:
+    SceneView* view_;
+};
+
+SceneView::SceneView(QWidget* parent) : QWidget(parent) {
     setMinimumSize(200, 150);
+    gl_ = new GlWindow(this);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(QWidget::createWindowContainer(gl_, this));
     viewer_ = new osgViewer::Viewer;
     viewer_->setThreadingModel(osgViewer::Viewer::SingleThreaded);
     window_ = viewer_->setUpViewerAsEmbeddedInWindow(0, 0, 640, 480);
@@ -45,10 +70,23 @@ SceneView::SceneView(QWidget* parent) : QOpenGLWidget(parent) {
 }
 
 SceneView::~SceneView() {
-    makeCurrent();
+    // OSG releases its GL objects in the context that made them.
+    const bool current = gl_->isValid();
+    if (current) gl_->makeCurrent();
     viewer_ = nullptr;
     window_ = nullptr;
-    doneCurrent();
+    if (current) gl_->doneCurrent();
+}
+
+void SceneView::requestFrame() { gl_->update(); }
+
+QWindow* SceneView::surface() const { return gl_; }
+
+QImage SceneView::grabView() {
+    if (!gl_->isValid()) return {};
+    gl_->makeCurrent();
+    paintGL();  // into the back buffer, read before any swap
+    return gl_->grabFramebuffer();
 }
 
 void SceneView::setVisualScene(std::shared_ptr<VisualScene> scene, bool fitCamera) {
@@ -63,7 +101,7 @@ void SceneView::setVisualScene(std::shared_ptr<VisualScene> scene, bool fitCamer
         pan_.setZero();
     }
     applyCamera();
-    update();
+    requestFrame();
 }
 
 void SceneView::rebuild() {
@@ -105,46 +143,46 @@ void SceneView::setPose(const Eigen::VectorXd& q, double t, const std::vector<Ei
         trail_ = *trail;
         osg_->setTrail(trail_);
     }
-    update();
+    requestFrame();
 }
 
 void SceneView::setGhost(std::shared_ptr<VisualScene> ghost) {
     ghostVisual_ = std::move(ghost);
     rebuild();
-    update();
+    requestFrame();
 }
 
 void SceneView::setGhostPose(const Eigen::VectorXd& q, double t) {
     if (!ghostVisual_ || !ghost_ || q.size() != ghostVisual_->dof()) return;
     ghostVisual_->pose(q, t);
     ghost_->update(*ghostVisual_);
-    update();
+    requestFrame();
 }
 
 void SceneView::setShowFrames(bool on) {
     options_.frames = on;
     rebuild();
-    update();
+    requestFrame();
 }
 
 void SceneView::setShowComs(bool on) {
     coms_ = on;
     rebuild();
-    update();
+    requestFrame();
 }
 
 void SceneView::setShowTrail(bool on) {
     options_.trail = on;
     if (!on) trail_.clear();
     rebuild();
-    update();
+    requestFrame();
 }
 
 void SceneView::highlightJoint(int joint) {
     if (joint == highlighted_) return;
     highlighted_ = joint;
     applyHighlight();
-    update();
+    requestFrame();
 }
 
 void SceneView::applyHighlight() {
@@ -180,7 +218,7 @@ void SceneView::fit() {
     distance_ = 0;
     pan_.setZero();
     applyCamera();
-    update();
+    requestFrame();
 }
 
 void SceneView::setStandardView(const QString& name) {
@@ -212,8 +250,6 @@ void SceneView::applyCamera() {
     applyCameraView(*viewer_->getCamera(), view, aspect);
 }
 
-void SceneView::initializeGL() {}
-
 void SceneView::resizeGL(int w, int h) {
     const double r = devicePixelRatioF();
     const int pw = static_cast<int>(w * r), ph = static_cast<int>(h * r);
@@ -224,14 +260,13 @@ void SceneView::resizeGL(int w, int h) {
 }
 
 void SceneView::paintGL() {
-    // QOpenGLWidget draws into its own framebuffer object, whose id changes on resize.
-    window_->setDefaultFboId(defaultFramebufferObject());
+    window_->setDefaultFboId(gl_->defaultFramebufferObject());
     viewer_->frame();
     ++frames_;
     emit frameDrawn();
 }
 
-void SceneView::mousePressEvent(QMouseEvent* e) {
+void SceneView::press(QMouseEvent* e) {
     last_ = e->pos();
     dragging_ = e->button();
     if (e->button() == Qt::LeftButton) {
@@ -240,7 +275,7 @@ void SceneView::mousePressEvent(QMouseEvent* e) {
     }
 }
 
-void SceneView::mouseMoveEvent(QMouseEvent* e) {
+void SceneView::move(QMouseEvent* e) {
     const QPoint delta = e->pos() - last_;
     last_ = e->pos();
     if (!visual_) return;
@@ -248,7 +283,7 @@ void SceneView::mouseMoveEvent(QMouseEvent* e) {
         azimuth_ -= delta.x() * 0.4;
         elevation_ = std::clamp(elevation_ + delta.y() * 0.4, -89.9, 89.9);
         applyCamera();
-        update();
+        requestFrame();
     } else if (e->buttons() & (Qt::RightButton | Qt::MiddleButton)) {
         // Move the looked-at point in the picture plane, a pixel's worth of the view.
         osg::Vec3d eye, centre, up;
@@ -262,7 +297,7 @@ void SceneView::mouseMoveEvent(QMouseEvent* e) {
         const osg::Vec3d shift = (right * -delta.x() + pictureUp * delta.y()) * perPixel;
         pan_ += Eigen::Vector3d(shift.x(), shift.y(), shift.z());
         applyCamera();
-        update();
+        requestFrame();
     } else {
         const int joint = jointAt(e->pos());
         if (joint != hovered_) {
@@ -272,12 +307,12 @@ void SceneView::mouseMoveEvent(QMouseEvent* e) {
     }
 }
 
-void SceneView::mouseReleaseEvent(QMouseEvent*) { dragging_ = Qt::NoButton; }
+void SceneView::release() { dragging_ = Qt::NoButton; }
 
-void SceneView::wheelEvent(QWheelEvent* e) {
+void SceneView::wheel(QWheelEvent* e) {
     distance_ *= std::pow(0.9, e->angleDelta().y() / 120.0);
     applyCamera();
-    update();
+    requestFrame();
 }
 
 }  // namespace ll::ui

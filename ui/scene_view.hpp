@@ -1,20 +1,27 @@
 #pragma once
 // The 3D view of the window: the shared OSG scene builder (ui/osg_scene.hpp) drawn in a
-// QOpenGLWidget (compatibility context, GraphicsWindowEmbedded, single-threaded
-// viewer, frame() only in paintGL, the widget's own framebuffer object set before every
-// frame; see shared/notes/platform-facts.md). Left drag orbits, right or middle drag
+// native QOpenGLWindow inside a window container (compatibility context,
+// GraphicsWindowEmbedded, single-threaded viewer, frame() only in paintGL, the window's
+// framebuffer set before every frame; see shared/notes/platform-facts.md).
+// Not a QOpenGLWidget: with one in it, every repaint of the main window, a table cell
+// or the status line, is composed through OpenGL (13 ms for a label under llvmpipe at
+// 1280×800, 0.7 ms with the GL view in its own native window, measured side by side),
+// which doubled the time from an edit to its frame. Left drag orbits, right or middle drag
 // pans, the wheel zooms; fit and the standard views of core/scene/camera_view. Hovering
 // or clicking a joint reports it; highlightJoint lights one up.
 #include <memory>
 #include <vector>
 
 #include <Eigen/Core>
-#include <QOpenGLWidget>
+#include <QImage>
+#include <QWidget>
 #include <osg/ref_ptr>
 
 #include "core/scene/camera_view.hpp"
 #include "core/scene/visual_scene.hpp"
 #include "ui/osg_scene.hpp"
+
+class QWindow;
 
 namespace osgViewer {
 class Viewer;
@@ -23,7 +30,7 @@ class GraphicsWindowEmbedded;
 
 namespace ll::ui {
 
-class SceneView : public QOpenGLWidget {
+class SceneView : public QWidget {
     Q_OBJECT
 public:
     explicit SceneView(QWidget* parent = nullptr);
@@ -54,8 +61,12 @@ public:
 
     // Frames drawn so far (a test or benchmark waits for the next one).
     long framesDrawn() const { return frames_; }
-    // The rendered picture (the GL framebuffer).
-    QImage grabView() { return grabFramebuffer(); }
+    // The native window that draws and takes the mouse (tests send it input events).
+    QWindow* surface() const;
+    // Asks for a new frame (drawn at the GL window's next update).
+    void requestFrame();
+    // The rendered picture: a frame drawn now and read back (null before the view is shown).
+    QImage grabView();
 
 public slots:
     void fit();
@@ -63,23 +74,23 @@ public slots:
 
 signals:
     void frameDrawn();
+    void frameSwapped();  // the frame drawn is on screen
     void jointHovered(int joint);
     void jointClicked(int joint);
 
-protected:
-    void initializeGL() override;
-    void resizeGL(int w, int h) override;
-    void paintGL() override;
-    void mousePressEvent(QMouseEvent* e) override;
-    void mouseMoveEvent(QMouseEvent* e) override;
-    void mouseReleaseEvent(QMouseEvent* e) override;
-    void wheelEvent(QWheelEvent* e) override;
-
 private:
+    class GlWindow;  // the native GL window; forwards its paint, resize and mouse events here
+    void resizeGL(int w, int h);
+    void paintGL();
+    void press(QMouseEvent* e);
+    void move(QMouseEvent* e);
+    void release();
+    void wheel(QWheelEvent* e);
     void rebuild();
     void applyCamera();
     void applyHighlight();
 
+    GlWindow* gl_ = nullptr;  // owned by its container, a child of this widget
     osg::ref_ptr<osgViewer::Viewer> viewer_;
     osg::ref_ptr<osgViewer::GraphicsWindowEmbedded> window_;
     osg::ref_ptr<osg::Group> root_;
