@@ -26,6 +26,7 @@ public:
     // The result is shown (or there is none to wait for): paint what is dirty now.
     void release();
     bool holding() const { return holding_; }
+    void setLimit(int milliseconds) { limit_.setInterval(milliseconds); }
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;

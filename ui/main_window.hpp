@@ -77,6 +77,9 @@ public:
     SceneView& sceneView() { return *view_; }
     DerivationPanel& derivationPanel() { return *derivation_; }
     DerivationView& derivationView() { return *typeset_; }
+    // The longest an edit's repaint waits for its result (100 ms; tests lengthen it so a
+    // loaded machine does not decide what they see).
+    void setEditHoldLimit(int milliseconds) { editFrame_->setLimit(milliseconds); }
     TrajectoryChart& energyChart() { return *energy_; }
     PlaybackBar& playback() { return *playback_; }
     TeachPanel& teachPanel() { return *teach_; }
