@@ -176,6 +176,33 @@ private slots:
         QVERIFY2(eq1.find("− m2 a1 ℓc2 s2 (2 q̇1 q̇2 + q̇2²)") != std::string::npos, eq1.c_str());
     }
 
+    // A matrix too wide for a line is listed entry by entry without its zeros: the PUMA
+    // 560's motor inertia B_m = diag(G_j² Jm_j) lists its 6 diagonal entries, not 36.
+    void wideMatricesListNoZeroEntries() {
+        const auto doc = shown("puma560.json", symbolic::ParameterMode::Parametric);
+        std::string listing;
+        for (const DisplayStep& step : doc->steps)
+            for (const DisplayItem& item : step.items)
+                if (item.name == "B_m") {
+                    const auto& rows = item.value->rows;
+                    QCOMPARE(int(rows.size()), 6);
+                    QVERIFY(isZeroNumber(*rows[0][1]) && !isZeroNumber(*rows[0][0]));
+                    // Narrowed below 160 characters by hand: as the window's dock would.
+                    DisplayItem wide = item;
+                    auto padded = std::make_shared<DisplayNode>(*item.value);
+                    for (std::size_t i = 0; i < padded->rows.size(); ++i)
+                        padded->rows[i][i] = displayEquation(padded->rows[i][i], displayRaw(std::string(30, 'x'), "x", "x"));
+                    wide.value = padded;
+                    wide.equation = displayEquation(displayRaw("B_m", "B_m", "B_m"), padded);
+                    listing = itemText(wide);
+                }
+        QVERIFY2(listing.find("entry by entry, the zeros left out:") != std::string::npos, listing.c_str());
+        int lines = 0;
+        for (char c : listing) lines += c == '\n';
+        QCOMPARE(lines, 6);  // one line per diagonal entry under the heading
+        QVERIFY2(listing.find("= 0\n") == std::string::npos && listing.find("= 0", listing.size() - 3) == std::string::npos, listing.c_str());
+    }
+
     // Plain from the display tree parses back to the same value (the whole document's
     // `expr` comes from it).
     void plainOfDisplayedReparses() {

@@ -323,4 +323,8 @@ void displayLeaves(const DisplayNode& node, std::vector<std::string>& out) {
     for (const DisplayPtr& c : node.children) displayLeaves(*c, out);
 }
 
+bool isZeroNumber(const DisplayNode& node) {
+    return node.kind == DisplayKind::Number && node.text == "0" && node.exponent.empty();
+}
+
 }  // namespace ll::symbolic

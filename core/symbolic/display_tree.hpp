@@ -67,6 +67,9 @@ std::string renderDisplay(const DisplayNode& node, DisplayStyle style, bool keyN
 // listed entry by entry instead (b11 = …), which is what a reader can follow anyway.
 inline constexpr std::size_t maxTextMatrixRow = 160;
 
+// Whether the node is the number 0 (a matrix listed entry by entry leaves those out).
+bool isZeroNumber(const DisplayNode& node);
+
 // Constructors.
 DisplayPtr displayNumber(std::string text, std::string latex, std::string plain, std::string exponent = {});
 DisplayPtr displayNode(DisplayKind kind, std::vector<DisplayPtr> children);
