@@ -50,6 +50,7 @@ TrajectoryChart::TrajectoryChart(Kind kind, QWidget* parent) : QChartView(parent
     setRenderHint(QPainter::Antialiasing);
     axisX_ = new QValueAxis;
     axisX_->setTitleText(tr("t [s]"));
+    axisX_->setLabelFormat("%.4g");  // 1.25 s, not 1.3 (a 5 s run's quarter ticks)
     axisY_ = new QValueAxis;
     axisY_->setTitleText(kind == Kind::Energy ? tr("energy [J]") : tr("q [rad or m], q̇ [rad/s or m/s]"));
     chart->addAxis(axisX_, Qt::AlignBottom);
