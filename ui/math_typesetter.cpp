@@ -2,7 +2,9 @@
 
 #include <QFontDatabase>
 #include <QFontMetricsF>
+#include <QGlyphRun>
 #include <QHash>
+#include <QTextLayout>
 #include <QPainter>
 #include <QRawFont>
 #include <QPainterPath>
@@ -10,6 +12,7 @@
 #include <cmath>
 #include <map>
 #include <mutex>
+#include <unordered_map>
 
 namespace ll::ui {
 namespace {
@@ -724,6 +727,41 @@ std::vector<MathPiece> mergedRuns(const std::vector<MathPiece>& pieces) {
 
 }  // namespace
 
+// The glyphs of a piece of text in a font at a pixel size, shaped once: a page repeats
+// the same few strings (c, 2, =, +, q̇) thousands of times, and drawText shaped each
+// again (HarfBuzz and the font lookup were a fifth of the Panda's 73-page PDF). Glyph
+// runs keep the text real in a PDF: its font subset maps glyphs back to characters.
+// Positions are relative to the baseline. One cache per thread (exports run on workers).
+static const QList<QGlyphRun>& shapedRuns(int which, int pixels, const QString& text) {
+    struct Key {
+        int which, pixels;
+        QString text;
+        bool operator==(const Key& o) const { return which == o.which && pixels == o.pixels && text == o.text; }
+    };
+    struct KeyHash {
+        size_t operator()(const Key& k) const { return qHash(k.text) ^ (size_t(k.which) << 24) ^ size_t(k.pixels); }
+    };
+    thread_local std::unordered_map<Key, QList<QGlyphRun>, KeyHash> cache;
+    Key key{which, pixels, text};
+    if (auto it = cache.find(key); it != cache.end()) return it->second;
+    if (cache.size() > 50000) cache.clear();  // a bound, far above a document's distinct pieces
+    QFont f = font(which == 3 ? 0 : which, 1.0);
+    if (which == 3) f.setBold(true);
+    f.setPixelSize(pixels);
+    QTextLayout layout(text, f);
+    layout.beginLayout();
+    QTextLine line = layout.createLine();
+    layout.endLayout();
+    QList<QGlyphRun> runs = layout.glyphRuns();
+    const double ascent = line.isValid() ? line.ascent() : 0.0;
+    for (QGlyphRun& run : runs) {  // from the layout's top-left to the baseline
+        QList<QPointF> positions = run.positions();
+        for (QPointF& point : positions) point.ry() -= ascent;
+        run.setPositions(positions);
+    }
+    return cache.emplace(std::move(key), std::move(runs)).first->second;
+}
+
 void paintMath(QPainter& painter, const MathBox& box, QPointF origin, double scale) {
     painter.save();
     const QColor ink = painter.pen().color();
@@ -731,14 +769,11 @@ void paintMath(QPainter& painter, const MathBox& box, QPointF origin, double sca
         const QPointF at = origin + p.at * scale;
         switch (p.kind) {
         case MathPiece::Text: {
-            QFont f = font(p.font == 3 ? 0 : p.font, p.size);
-            if (p.font == 3) f.setBold(true);
             // Fonts are set in device pixels: scale the pixel size, not the painter, so
             // the PDF keeps real text at the right size.
-            f.setPixelSize(std::max(1, static_cast<int>(std::lround(mathUnitsPerEm * p.size * scale))));
-            painter.setFont(f);
+            const int pixels = std::max(1, static_cast<int>(std::lround(mathUnitsPerEm * p.size * scale)));
             painter.setPen(ink);
-            painter.drawText(at, p.text);
+            for (const QGlyphRun& run : shapedRuns(p.font, pixels, p.text)) painter.drawGlyphRun(at, run);
             break;
         }
         case MathPiece::Rule:
