@@ -20,6 +20,7 @@
 #include <QElapsedTimer>
 #include <QProcess>
 #include <QRegularExpression>
+#include <QTemporaryDir>
 
 #include "ui/data_directory.hpp"
 #include "app/commands.hpp"
@@ -188,6 +189,10 @@ int benchGui(const std::vector<std::string>& scenes, int runs) {
         std::fprintf(stderr, "error: bench --gui: no display (run it under xvfb-run -a -s '-screen 0 1280x800x24')\n");
         return 2;
     }
+    // The windows edit without saving and are not closed: their autosaves go to a folder
+    // of their own, not the user's recovery copy (which the next start would offer).
+    QTemporaryDir recovery;
+    if (recovery.isValid()) qputenv("LAGRANGELAB_RECOVERY_DIR", recovery.path().toLocal8Bit());
     static int argc = 1;
     static char name[] = "lagrangelab";
     static char* argv[] = {name, nullptr};
