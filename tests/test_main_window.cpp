@@ -27,6 +27,7 @@
 #include "ui/joint_table_model.hpp"
 #include "ui/derivation_view.hpp"
 #include "ui/main_window.hpp"
+#include "ui/parameter_rename.hpp"
 #include "ui/playback_bar.hpp"
 #include "ui/scene_view.hpp"
 #include "ui/teach_panel.hpp"
@@ -767,6 +768,40 @@ private slots:
 
     // Parameters are added and removed as undoable edits; removing one in use is an error
     // that keeps the last valid model.
+    // Renaming a parameter rewrites every expression that uses it, whole names only, in
+    // one undoable edit; prose and other names stay.
+    void renamingAParameterRewritesItsUses() {
+        QCOMPARE(ll::ui::renamedInExpression("a1/2+a10*a1^2-1e1", "a1", "L1"), std::string("L1/2+a10*L1^2-1e1"));
+        QCOMPARE(ll::ui::renamedInExpression("1e1+e1", "e1", "k"), std::string("1e1+k"));
+        MainWindow w;
+        w.setAskBeforeClosing(false);
+        w.show();
+        QVERIFY(w.openFile(example("planar_2r.json"), nullptr, true));
+        QVERIFY(settled(w));
+        const std::string description = w.document().value("/description").get<std::string>();
+        QString error;
+        QVERIFY(!w.renameParameter("a1", "a2", &error));  // taken
+        QVERIFY2(error.contains("a2"), qPrintable(error));
+        QVERIFY(!w.renameParameter("a1", "1x", &error));  // not a name
+        QVERIFY2(w.renameParameter("a1", "L1", &error), qPrintable(error));
+        QVERIFY(checked(w));
+        QVERIFY(!w.document().hasErrors());
+        QCOMPARE(w.document().value("/robot/joints/0/a").get<std::string>(), std::string("L1"));
+        QCOMPARE(w.document().value("/robot/joints/0/com/0").get<std::string>(), std::string("lc1-L1"));
+        QCOMPARE(w.document().value("/parameters").begin().key(), std::string("L1"));  // in its place, first
+        QCOMPARE(w.document().value("/parameters/L1").get<double>(), 1.0);
+        QVERIFY(w.document().value("/parameters/a1").is_null());
+        QCOMPARE(w.document().value("/description").get<std::string>(), description);  // prose untouched
+        QCOMPARE(w.document().validScene().robot.joints[0].dh.a, 1.0);
+        QVERIFY(settled(w));
+        const QString step0 = w.derivationPanel().text().section("Step 1.", 0, 0);
+        QVERIFY2(step0.contains("L1") && !step0.contains("a1"), qPrintable(step0));
+        w.document().undoStack()->undo();
+        QVERIFY(checked(w));
+        QCOMPARE(w.document().value("/robot/joints/0/a").get<std::string>(), std::string("a1"));
+        QVERIFY(w.document().value("/parameters/L1").is_null());
+    }
+
     void parametersAddAndRemove() {
         MainWindow w;
         w.setAskBeforeClosing(false);

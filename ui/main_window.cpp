@@ -1,4 +1,5 @@
 #include "ui/main_window.hpp"
+#include "ui/parameter_rename.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -219,6 +220,17 @@ void MainWindow::buildEditor() {
     auto* parameterBar = new QHBoxLayout;
     auto* addParameterButton = new QPushButton(tr("Add parameter…"), parameterPage);
     auto* removeParameterButton = new QPushButton(tr("Remove"), parameterPage);
+    auto* renameParameterButton = new QPushButton(tr("Rename…"), parameterPage);
+    connect(renameParameterButton, &QPushButton::clicked, this, [this] {
+        const QModelIndex index = parameterView_->currentIndex();
+        if (!index.isValid()) return;
+        const QString from = parameters_->row(index.row()).name;
+        bool ok = false;
+        const QString to = QInputDialog::getText(this, tr("Rename parameter"), tr("New name of %1 (every expression using it follows):").arg(from),
+                                                 QLineEdit::Normal, from, &ok);
+        QString error;
+        if (ok && !renameParameter(from, to, &error)) QMessageBox::warning(this, tr("Rename parameter"), error);
+    });
     connect(addParameterButton, &QPushButton::clicked, this, [this] {
         bool ok = false;
         const QString name = QInputDialog::getText(this, tr("Add parameter"), tr("Name (letters, digits, _; e.g. m3, l2, k):"),
@@ -235,6 +247,7 @@ void MainWindow::buildEditor() {
     });
     parameterBar->addWidget(addParameterButton);
     parameterBar->addWidget(removeParameterButton);
+    parameterBar->addWidget(renameParameterButton);
     parameterBar->addStretch(1);
     parameterLayout->addLayout(parameterBar);
     editorTabs_->addTab(parameterPage, tr("Parameters"));
@@ -1076,6 +1089,28 @@ bool MainWindow::addParameter(const QString& name, const QString& value, QString
     }
     // The loader checks the rest (reserved names such as c1 or s12, the value) and marks it.
     doc_.setValue("/parameters/" + trimmed.toStdString(), SceneDocument::parseCell(value), tr("Add parameter %1").arg(trimmed));
+    return true;
+}
+
+bool MainWindow::renameParameter(const QString& from, const QString& to, QString* error) {
+    static const QRegularExpression identifier("^[A-Za-z_][A-Za-z0-9_]*$");
+    const QString trimmed = to.trimmed();
+    if (doc_.value("/parameters/" + from.toStdString()).is_null()) {
+        if (error) *error = tr("no parameter '%1'").arg(from);
+        return false;
+    }
+    if (!identifier.match(trimmed).hasMatch()) {
+        if (error) *error = tr("parameter name '%1': letters, digits and _ only, starting with a letter").arg(to);
+        return false;
+    }
+    if (trimmed == from) return true;
+    if (!doc_.value("/parameters/" + trimmed.toStdString()).is_null()) {
+        if (error) *error = tr("parameter name '%1': there is a parameter of that name").arg(trimmed);
+        return false;
+    }
+    // The loader checks the rest (a reserved name such as c1, a clash with a coordinate).
+    doc_.replace(renamedParameter(doc_.json(), from.toStdString(), trimmed.toStdString()),
+                 tr("Rename parameter %1 to %2").arg(from, trimmed));
     return true;
 }
 

@@ -103,6 +103,9 @@ public:
     // identifier or is taken (false, the reason in *error).
     bool addParameter(const QString& name, const QString& value, QString* error = nullptr);
     void removeParameter(const QString& name);
+    // Renames a parameter and every expression that uses it (ui/parameter_rename): one
+    // undoable edit. Refuses an invalid or taken name with the reason in `error`.
+    bool renameParameter(const QString& from, const QString& to, QString* error = nullptr);
 
     // Exports without a file dialog (the menu's entries ask for the path, then call
     // these). Plot: the tab shown (energy or joints) as .png, .svg or .csv, at once.
