@@ -12,7 +12,9 @@
 #include "core/symbolic/display_builder.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/pipeline/display_derivation.hpp"
+#include "core/symbolic/robot_derivation.hpp"
 #include "core/symbolic/structured_display.hpp"
+#include "core/model/cancellation.hpp"
 
 using namespace ll;
 using namespace ll::symbolic;
@@ -174,6 +176,22 @@ private slots:
             }
         QVERIFY2(C.find("−m2 a1 ℓc2 s2 (q̇1 + q̇2)") != std::string::npos, C.c_str());
         QVERIFY2(eq1.find("− m2 a1 ℓc2 s2 (2 q̇1 q̇2 + q̇2²)") != std::string::npos, eq1.c_str());
+    }
+
+    // Building the display trees stops at a set cancel flag (between items, under the
+    // GiNaC lock a newer edit's check waits for), in both forms; unset, it finishes.
+    void displayBuildingStopsWhenCancelled() {
+        const Scene scene = loadScene(std::string(LL_EXAMPLES_DIR) + "/scara.json").scene;
+        const auto lock = symbolic::lockGinac();
+        symbolic::DerivationOptions options;
+        const symbolic::Derivation d = symbolic::deriveRobot(scene, options);
+        std::atomic<bool> stop{true};
+        QVERIFY_THROWS_EXCEPTION(Cancelled, symbolic::displayDocument(d, &stop));
+        const symbolic::StructuredDynamics s = symbolic::deriveStructured(scene, options);
+        QVERIFY_THROWS_EXCEPTION(Cancelled, symbolic::structuredDisplayDocument(s, "test", 0, 8, &stop));
+        stop = false;
+        QVERIFY(!symbolic::displayDocument(d, &stop)->steps.empty());
+        QVERIFY(!symbolic::structuredDisplayDocument(s, "test", 0, 8, &stop)->steps.empty());
     }
 
     // A matrix too wide for a line is listed entry by entry without its zeros: the PUMA

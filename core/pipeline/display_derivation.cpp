@@ -33,7 +33,7 @@ DerivedDocument deriveDisplay(const Scene& scene, const DocumentRequest& request
     const StructuredDynamics s = deriveStructured(scene, options);
     throwIfCancelled(request.cancel);
     const auto printing = std::chrono::steady_clock::now();
-    out.display = structuredDisplayDocument(s, reason, request.firstStep, request.lastStep);
+    out.display = structuredDisplayDocument(s, reason, request.firstStep, request.lastStep, request.cancel);
     out.printSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - printing).count();
     out.timings.push_back({0, "structured derivation (steps 1-8)", s.seconds});
     return out;

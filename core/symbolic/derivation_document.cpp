@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/model/actuation.hpp"
+#include "core/model/cancellation.hpp"
 #include "core/symbolic/angle_sums.hpp"
 #include "core/symbolic/expression_printer.hpp"
 #include "core/symbolic/ginac_lock.hpp"
@@ -318,7 +319,8 @@ void writeJson(const Derivation& d, const DisplayDocument& shown, const DisplayR
 const char* const massMatrixFormula =
     R"(,\quad B(q) = \sum_i \left(m_i\, J_{P,i}^T J_{P,i} + J_{O,i}^T R_i\, I_{li}\, R_i^T J_{O,i}\right))";
 
-std::shared_ptr<const DisplayDocument> shapeDocument(const Derivation& d, Presenter& presenter, DisplayBuilder& build) {
+std::shared_ptr<const DisplayDocument> shapeDocument(const Derivation& d, Presenter& presenter, DisplayBuilder& build,
+                                                     const std::atomic<bool>* cancel = nullptr) {
     auto doc = std::make_shared<DisplayDocument>();
     doc->systemName = d.systemName;
     doc->coordinateNames = d.coordinateNames;
@@ -329,7 +331,10 @@ std::shared_ptr<const DisplayDocument> shapeDocument(const Derivation& d, Presen
         // The notes' general formula typeset; a robot's step 7 also gives B as the notes sum it.
         const bool robot = d.trigToFunctions.nops() > 0;
         s.formula = formulaFromLatex(step.formulaLatex + (robot && step.number == 7 ? massMatrixFormula : ""), step.formulaText);
-        for (const DerivationItem& item : step.items) s.items.push_back(displayItem(item, presenter, build, options));
+        for (const DerivationItem& item : step.items) {
+            throwIfCancelled(cancel);  // a newer edit need not wait for this document under the GiNaC lock
+            s.items.push_back(displayItem(item, presenter, build, options));
+        }
         doc->steps.push_back(std::move(s));
     }
     return doc;
@@ -355,11 +360,11 @@ std::string itemText(const DisplayItem& item) {
     return out;
 }
 
-std::shared_ptr<const DisplayDocument> displayDocument(const Derivation& d) {
+std::shared_ptr<const DisplayDocument> displayDocument(const Derivation& d, const std::atomic<bool>* cancel) {
     const auto lock = lockGinac();
     DisplayBuilder build(displayOptions(printOptionsFor(d, Style::Text)));
     Presenter presenter(d, d.trigToFunctions.nops() > 0);
-    return shapeDocument(d, presenter, build);
+    return shapeDocument(d, presenter, build, cancel);
 }
 
 std::string renderDocument(const DisplayDocument& document, DocumentFormat format) {

@@ -12,6 +12,7 @@
 //   Json   every step's items with name, latex, text and a re-parsable plain `expr`,
 //          plus top-level B, C, g, Q, Ekin, Epot, the actuation and warnings.
 // Takes the GiNaC lock; the caller must hold it too while it owns the Derivation.
+#include <atomic>
 #include <memory>
 #include <string>
 #include <vector>
@@ -49,8 +50,9 @@ struct DisplayDocument {
     std::string formReason; // why that form
 };
 
-// The derivation's displayed form (takes the GiNaC lock).
-std::shared_ptr<const DisplayDocument> displayDocument(const Derivation& derivation);
+// The derivation's displayed form (takes the GiNaC lock). Throws Cancelled between items
+// once `cancel` is set.
+std::shared_ptr<const DisplayDocument> displayDocument(const Derivation& derivation, const std::atomic<bool>* cancel = nullptr);
 
 // A document in Text or Latex from its display trees (no GiNaC: any thread).
 std::string renderDocument(const DisplayDocument& document, DocumentFormat format);

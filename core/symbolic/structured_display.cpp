@@ -4,6 +4,7 @@
 #include <map>
 #include <regex>
 
+#include "core/model/cancellation.hpp"
 #include "core/symbolic/display_builder.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/latex_formula.hpp"
@@ -126,7 +127,7 @@ DisplayPtr structuredNameNode(const std::string& name) {
 }
 
 std::shared_ptr<const DisplayDocument> structuredDisplayDocument(const StructuredDynamics& s, const std::string& formReason,
-                                                                 int firstStep, int lastStep) {
+                                                                 int firstStep, int lastStep, const std::atomic<bool>* cancel) {
     const auto lock = lockGinac();
     auto doc = std::make_shared<DisplayDocument>();
     doc->systemName = s.systemName;
@@ -146,6 +147,7 @@ std::shared_ptr<const DisplayDocument> structuredDisplayDocument(const Structure
     for (int k = 0; k < s.table->size(); ++k) byStep[s.table->entries()[k].step].push_back(k);
     const auto shown = [&](int step) { return step >= firstStep && step <= lastStep; };
     const auto item = [&](const std::string& name, const DisplayPtr& label, const GiNaC::ex& value, std::string note) {
+        throwIfCancelled(cancel);  // a newer edit need not wait for this document under the GiNaC lock
         DisplayItem it;
         it.name = name;
         it.latexName = renderDisplay(*label, DisplayStyle::Latex);
