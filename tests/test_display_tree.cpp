@@ -178,6 +178,20 @@ private slots:
         QVERIFY2(eq1.find("− m2 a1 ℓc2 s2 (2 q̇1 q̇2 + q̇2²)") != std::string::npos, eq1.c_str());
     }
 
+    // Decimals with more than 6 significant digits (products of identified inertials)
+    // read rounded in Text and LaTeX; a scene's own short decimals stay as typed; Plain,
+    // which is parsed back, keeps every digit.
+    void longDecimalsReadWithSixDigits() {
+        const auto lock = symbolic::lockGinac();
+        const GiNaC::symbol x("x"), y("y");
+        const DisplayPtr d = buildDisplay(GiNaC::numeric(0.00796990221726315) * x + GiNaC::numeric(0.15005) * y, {});
+        const std::string text = renderDisplay(*d, DisplayStyle::Text), latex = renderDisplay(*d, DisplayStyle::Latex),
+                          plain = renderDisplay(*d, DisplayStyle::Plain);
+        QVERIFY2(text.find("0.0079699 x") != std::string::npos && text.find("0.15005 y") != std::string::npos, text.c_str());
+        QVERIFY2(latex.find("0.0079699") != std::string::npos && latex.find("0.00796990221") == std::string::npos, latex.c_str());
+        QVERIFY2(plain.find("0.0079699022172631") != std::string::npos, plain.c_str());
+    }
+
     // Building the display trees stops at a set cancel flag (between items, under the
     // GiNaC lock a newer edit's check waits for), in both forms; unset, it finishes.
     void displayBuildingStopsWhenCancelled() {

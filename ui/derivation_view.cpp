@@ -21,6 +21,14 @@
 
 namespace ll::ui {
 
+// An item's name as a reader sees it: its equation's left side in Text (β₁₁⁽²⁾ for the
+// structured form's beta1_1_2, b11 for b11), else the plain name.
+static QString shownName(const symbolic::DisplayItem& item) {
+    if (item.equation && item.equation->kind == symbolic::DisplayKind::Equation && !item.equation->children.empty())
+        return QString::fromStdString(symbolic::renderDisplay(*item.equation->children[0], symbolic::DisplayStyle::Text));
+    return QString::fromStdString(item.name);
+}
+
 // The shown step: its general formula and items, each with a header that collapses it.
 // Lines are typeset on first paint and kept until the zoom or the width changes.
 class DerivationCanvas : public QWidget {
@@ -93,7 +101,7 @@ protected:
             const symbolic::DisplayItem& item = step_->items[i];
             e.headerTop = y;
             p.setPen(palette().color(QPalette::Link));
-            const QString head = (e.collapsed ? QString::fromUtf8("▸ ") : QString::fromUtf8("▾ ")) + QString::fromStdString(item.name);
+            const QString head = (e.collapsed ? QString::fromUtf8("▸ ") : QString::fromUtf8("▾ ")) + shownName(item);
             p.drawText(QPointF(margin, y + fm.ascent()), head);
             if (!item.note.empty()) {  // what the name means (the structured form)
                 const double x = margin + fm.horizontalAdvance(head + "  ");
@@ -128,7 +136,7 @@ protected:
         const int index = itemAt(event->pos().y());
         if (index < 0) return;
         QMenu menu(this);
-        menu.addAction(tr("Copy %1 as LaTeX").arg(QString::fromStdString(step_->items[static_cast<std::size_t>(index)].name)),
+        menu.addAction(tr("Copy %1 as LaTeX").arg(shownName(step_->items[static_cast<std::size_t>(index)])),
                        [this, index] { QApplication::clipboard()->setText(latex(index)); });
         menu.exec(event->globalPos());
     }

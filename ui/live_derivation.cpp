@@ -4,6 +4,7 @@
 
 #include "core/model/cancellation.hpp"
 #include "core/model/diagnostics.hpp"
+#include "core/pipeline/display_derivation.hpp"
 #include "core/pipeline/scene_derivation.hpp"
 
 namespace ll::ui {
@@ -42,7 +43,9 @@ void LiveDerivation::request(const Scene& scene) {
             DocumentRequest r;
             r.format = symbolic::DocumentFormat::Display;
             r.cancel = cancel.get();
-            result->display = deriveDocument(*scene, r).display;
+            // The form `derive --form auto` picks: expanded when cheap, else structured (the
+            // Panda's expanded B has thousands of terms of 15-digit products per entry).
+            result->display = deriveDisplay(*scene, r).display;
             // Text from the same trees, outside the GiNaC lock.
             result->text = QString::fromStdString(symbolic::renderDocument(*result->display, symbolic::DocumentFormat::Text));
         } catch (const Cancelled&) {

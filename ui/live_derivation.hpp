@@ -4,7 +4,9 @@
 // cancel token), and derives the display trees (core/symbolic/derivation_document) under
 // the GiNaC lock; the worker then renders the plain text from those trees (no GiNaC).
 // The result comes back through a queued call as plain data shared by the typeset view
-// and the text panel, so an edit costs one derivation whatever the tabs show. Results
+// and the text panel, so an edit costs one derivation whatever the tabs show. The form is
+// the one `derive --form auto` picks (core/pipeline/display_derivation): the structured
+// form for large robots such as the Panda. Results
 // older than the newest request are dropped: the newest edit wins.
 #include <atomic>
 #include <memory>

@@ -187,6 +187,30 @@ std::string shortest(double v) {
     return std::string(buffer, r.ptr);
 }
 
+// A decimal as people read it: the shortest form when it has at most shownDigits
+// significant digits (a scene's 0.15005), else rounded to shownDigits (the Panda's
+// products of identified inertials, 0.00796990221726315 → 0.0079699). Plain keeps
+// every digit (seventeen), so what is re-parsed is exact.
+constexpr int shownDigits = 6;
+std::string readable(double v) {
+    const std::string s = shortest(v);
+    int digits = 0;
+    bool leading = true;
+    for (char c : s) {
+        if (c == 'e' || c == 'E') break;
+        if (c < '0' || c > '9') continue;
+        if (leading && c == '0') continue;
+        leading = false;
+        ++digits;
+    }
+    if (digits <= shownDigits) return s;
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.*g", shownDigits, v);
+    std::string r = buffer;
+    // %g writes 1e-05; the caller splits at 'e' and wants the exponent without padding.
+    return r;
+}
+
 // 17 significant digits, always a float literal for GiNaC's parser (2.0, not 2).
 std::string seventeen(double v) {
     char buffer[64];
@@ -523,7 +547,7 @@ private:
         if (n.is_rational())
             return displayNode(DisplayKind::Fraction, {renderNumber(n.numer()), renderNumber(n.denom())});
         const double v = n.to_double();
-        const std::string s = shortest(v), plain = seventeen(v);
+        const std::string s = readable(v), plain = seventeen(v);
         const auto e = s.find('e');
         if (e == std::string::npos) return displayNumber(s, s, plain);
         const std::string mantissa = s.substr(0, e), exponent = std::to_string(std::stoi(s.substr(e + 1)));
