@@ -2,7 +2,8 @@
 // target runs (tests/fuzz/fuzz_*.cpp): what a fuzzer once found stays fixed. The first
 // files are issue 13's defects: a subnormal parameter (CLN threw "floating point
 // underflow", not InputError), a spring rest at 1e300 (E_pot = inf passed the checks), a
-// subnormal typed in an expression, and a potential that overflows at the initial state.
+// subnormal typed in an expression, and a potential that overflows at the initial state;
+// then what `scripts/lab fuzz` found: "sin()" (a crash) and "4e55555555555" (a hang).
 #include <QtTest>
 
 #include <filesystem>
@@ -14,6 +15,16 @@
 #include "core/symbolic/expression.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "fuzz/fuzz_support.hpp"
+
+// The one line `text` is refused with in a DH cell (empty when it is accepted).
+QString refusal(const ll::ParameterTable& table, const char* text) {
+    try {
+        (void)table.evaluate("robot.joints[0].a", text, ll::AngleUnits::Refused);
+    } catch (const ll::InputError& e) {
+        return QString::fromStdString(e.what());
+    }
+    return {};
+}
 
 class TestFuzzRegressions : public QObject {
     Q_OBJECT
@@ -67,15 +78,24 @@ private slots:
         ll::ParameterTable table;
         table.define("parameters.m", "m", 2.0);
         for (const char* text : {"sin()", "2*cos( )", "m*exp(\t)+1", "3sin()"}) {
-            QString message;
-            try {
-                (void)table.evaluate("robot.joints[0].a", text, ll::AngleUnits::Refused);
-            } catch (const ll::InputError& e) {
-                message = QString::fromStdString(e.what());
-            }
+            const QString message = refusal(table, text);
             QVERIFY2(message.contains("robot.joints[0].a") && message.contains("()' has no argument"), qPrintable(text + (": " + message)));
         }
         for (const char* fine : {"sin(m)", "2*(m)", "cos(0)"}) (void)table.evaluate("robot.joints[0].a", fine, ll::AngleUnits::Refused);
+    }
+
+    // A literal whose exponent is far beyond a double's ("4e55555555555", found by
+    // fuzz_expression as a 36 s timeout: CLN computed the power of ten exactly) is one
+    // line naming the field and the number; exponents a double holds still parse.
+    void hugeExponentsAreRefused() {
+        const auto lock = ll::symbolic::lockGinac();
+        ll::ParameterTable table;
+        for (const char* text : {"4e55555555555", "2*1e-9999", "1E+0401"}) {
+            const QString message = refusal(table, text);
+            QVERIFY2(message.contains("robot.joints[0].a") && message.contains("exponent is beyond"), qPrintable(text + (": " + message)));
+        }
+        QCOMPARE(table.evaluate("robot.joints[0].a", "1e308", ll::AngleUnits::Refused), 1e308);
+        QCOMPARE(table.evaluate("robot.joints[0].a", "2.5e-3", ll::AngleUnits::Refused), 2.5e-3);
     }
 };
 

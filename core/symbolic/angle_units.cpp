@@ -109,6 +109,18 @@ PreparedExpression prepareExpression(const std::string& field, const std::string
         if (isDigit(c) || (c == '.' && i + 1 < ascii.size() && isDigit(ascii[i + 1]))) {
             length = numberLength(ascii, i);
             operand = true;
+            // An exponent far beyond a double's (±308): CLN would compute 10^55555555555
+            // exactly, for minutes and gigabytes (found by fuzz_expression: "4e5555555…").
+            const std::string literal = ascii.substr(i, length);
+            const std::size_t e = literal.find_first_of("eE");
+            if (e != std::string::npos) {
+                std::size_t k = e + 1 + (literal[e + 1] == '+' || literal[e + 1] == '-');
+                while (k + 1 < literal.size() && literal[k] == '0') ++k;
+                if (literal.size() - k > 3 || std::stoi(literal.substr(k)) > 400)
+                    throw InputError(field, "number " + validUtf8(literal.size() > 24 ? literal.substr(0, 24) + "…" : literal) +
+                                                " at position " + std::to_string(asciiPosition[i]) + " in " + p.quoted() +
+                                                ": its exponent is beyond what a number here can hold (about ±308)");
+            }
         } else if (isNameStart(c)) {
             while (i + length < ascii.size() && isNameChar(ascii[i + length])) ++length;
             operand = true;
