@@ -205,6 +205,7 @@ private slots:
         });
         JointTableModel& model = w.jointModel();
         QVERIFY(model.setData(model.index(0, JointTableModel::A), "1.25", Qt::EditRole));
+        QVERIFY(checked(w));  // first the check: before it nothing is busy yet, and settled() would pass at once
         QVERIFY(settled(w));
         QTest::qWait(200);  // the frame after the result
         disconnect(connection);
