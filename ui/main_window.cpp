@@ -1076,38 +1076,37 @@ bool MainWindow::exportAnimationTo(const QString& path, QString* error, double d
 
 // ---------------------------------------------------------------- parameters
 
-bool MainWindow::addParameter(const QString& name, const QString& value, QString* error) {
+// Whether `typed` (trimmed) can name a new parameter: an identifier no parameter has.
+bool MainWindow::freeParameterName(const QString& typed, QString* error) const {
     static const QRegularExpression identifier("^[A-Za-z_][A-Za-z0-9_]*$");
-    const QString trimmed = name.trimmed();
+    const QString trimmed = typed.trimmed();
     if (!identifier.match(trimmed).hasMatch()) {
-        if (error) *error = tr("parameter name '%1': letters, digits and _ only, starting with a letter").arg(name);
+        if (error) *error = tr("parameter name '%1': letters, digits and _ only, starting with a letter").arg(typed);
         return false;
     }
     if (!doc_.value("/parameters/" + trimmed.toStdString()).is_null()) {
         if (error) *error = tr("parameter name '%1': there is a parameter of that name").arg(trimmed);
         return false;
     }
+    return true;
+}
+
+bool MainWindow::addParameter(const QString& name, const QString& value, QString* error) {
+    const QString trimmed = name.trimmed();
+    if (!freeParameterName(name, error)) return false;
     // The loader checks the rest (reserved names such as c1 or s12, the value) and marks it.
     doc_.setValue("/parameters/" + trimmed.toStdString(), SceneDocument::parseCell(value), tr("Add parameter %1").arg(trimmed));
     return true;
 }
 
 bool MainWindow::renameParameter(const QString& from, const QString& to, QString* error) {
-    static const QRegularExpression identifier("^[A-Za-z_][A-Za-z0-9_]*$");
     const QString trimmed = to.trimmed();
     if (doc_.value("/parameters/" + from.toStdString()).is_null()) {
         if (error) *error = tr("no parameter '%1'").arg(from);
         return false;
     }
-    if (!identifier.match(trimmed).hasMatch()) {
-        if (error) *error = tr("parameter name '%1': letters, digits and _ only, starting with a letter").arg(to);
-        return false;
-    }
     if (trimmed == from) return true;
-    if (!doc_.value("/parameters/" + trimmed.toStdString()).is_null()) {
-        if (error) *error = tr("parameter name '%1': there is a parameter of that name").arg(trimmed);
-        return false;
-    }
+    if (!freeParameterName(to, error)) return false;
     // The loader checks the rest (a reserved name such as c1, a clash with a coordinate).
     doc_.replace(renamedParameter(doc_.json(), from.toStdString(), trimmed.toStdString()),
                  tr("Rename parameter %1 to %2").arg(from, trimmed));

@@ -143,6 +143,7 @@ private:
     void showDerivation(std::shared_ptr<const DerivationResult> result);
     void showTime(double t);
     void updatePoseResults();
+    bool freeParameterName(const QString& typed, QString* error) const;
     void refreshJson();
     void showTeachPose(const Eigen::VectorXd& q);
     void updateTitle();

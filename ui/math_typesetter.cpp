@@ -636,9 +636,7 @@ std::vector<MathBox> layoutItem(const DisplayNode& full, const std::string& name
         // The matrix by name, then its entries one by one.
         MathBox head = layout(lhs, 1.0);
         const std::size_t rows = rhs.rows.size(), cols = rows ? rhs.rows[0].size() : 0;
-        bool zeros = false;  // zero entries are left out (B_m of the PUMA: 30 of 36), and said so
-        for (const auto& row : rhs.rows)
-            for (const auto& cell : row) zeros = zeros || symbolic::isZeroNumber(*cell);
+        const bool zeros = symbolic::hasZeroEntry(rhs);  // zero entries are left out (B_m of the PUMA: 30 of 36), and said so
         hcat(head, layoutText(zeros ? QString(" (%1×%2), entry by entry, the zeros left out:").arg(rows).arg(cols)
                                     : QString(" (%1×%2), entry by entry:").arg(rows).arg(cols)), 0.3 * e);
         lines.push_back(head);

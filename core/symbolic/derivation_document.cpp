@@ -348,9 +348,7 @@ std::string itemText(const DisplayItem& item) {
     // Too wide to read as a block: the entries one by one, under the matrix's name.
     const auto& rows = item.value->rows;
     const bool column = !rows.empty() && rows[0].size() == 1;
-    bool zeros = false;  // left out, and said so
-    for (const auto& row : rows)
-        for (const auto& cell : row) zeros = zeros || isZeroNumber(*cell);
+    const bool zeros = hasZeroEntry(*item.value);  // left out, and said so
     std::string out = item.name + " (" + std::to_string(rows.size()) + "×" +
                       std::to_string(rows.empty() ? 0 : rows[0].size()) + "), entry by entry" + (zeros ? ", the zeros left out:" : ":");
     for (std::size_t r = 0; r < rows.size(); ++r)

@@ -327,4 +327,11 @@ bool isZeroNumber(const DisplayNode& node) {
     return node.kind == DisplayKind::Number && node.text == "0" && node.exponent.empty();
 }
 
+bool hasZeroEntry(const DisplayNode& matrix) {
+    for (const auto& row : matrix.rows)
+        for (const auto& cell : row)
+            if (isZeroNumber(*cell)) return true;
+    return false;
+}
+
 }  // namespace ll::symbolic

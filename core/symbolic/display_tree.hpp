@@ -69,6 +69,8 @@ inline constexpr std::size_t maxTextMatrixRow = 160;
 
 // Whether the node is the number 0 (a matrix listed entry by entry leaves those out).
 bool isZeroNumber(const DisplayNode& node);
+// Whether a Matrix node has a zero entry.
+bool hasZeroEntry(const DisplayNode& matrix);
 
 // Constructors.
 DisplayPtr displayNumber(std::string text, std::string latex, std::string plain, std::string exponent = {});
