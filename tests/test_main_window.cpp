@@ -507,15 +507,21 @@ private slots:
         // An invalid edit stops nothing for good: the valid scene's derivation is shown.
         // a1 = 5/4 is checked and starts deriving; the bad mass typed next stops that
         // derivation (its check needs the GiNaC lock), and once the mass is found bad the
-        // valid scene, a1 = 5/4, is derived again and shown.
+        // valid scene, a1 = 5/4, is derived again and shown. The start delay keeps the
+        // first derivation running while the mass is typed (the 2R derives in milliseconds
+        // on a fast machine, and CI's once finished before the test looked).
+        w.liveDerivation().setStartDelay(3000);
         QVERIFY(model.setData(model.index(0, JointTableModel::A), "1.25", Qt::EditRole));
         QVERIFY(checked(w));
         QVERIFY(w.liveDerivation().busy());
+        w.liveDerivation().setStartDelay(0);  // the derivation after the stop starts at once
+        const int runsBefore = w.liveDerivation().runs();
         QVERIFY(model.setData(model.index(1, JointTableModel::Mass), "-1", Qt::EditRole));
         QVERIFY(checked(w));
         QVERIFY(w.document().hasErrors());
         QTRY_VERIFY_WITH_TIMEOUT(!w.liveDerivation().busy(), 60000);
         QVERIFY(!w.derivation()->stopped);
+        QCOMPARE(w.liveDerivation().runs(), runsBefore + 1);  // derived again once, after the stop
         QVERIFY2(w.derivationPanel().text().section("Step 1.", 0, 0).contains("5/4"), qPrintable(w.derivationPanel().text().left(400)));
     }
 

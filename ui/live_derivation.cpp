@@ -1,6 +1,7 @@
 #include "ui/live_derivation.hpp"
 
 #include <chrono>
+#include <thread>
 
 #include "core/model/cancellation.hpp"
 #include "core/model/diagnostics.hpp"
@@ -35,11 +36,15 @@ void LiveDerivation::request(const Scene& scene) {
     const int request = ++requested_;
     ++runs_;
     emit started(request);
-    pool_.start([self = this, scene = scene_, request, cancel = cancel_] {
+    pool_.start([self = this, scene = scene_, request, cancel = cancel_, delay = std::chrono::milliseconds(startDelayMs_)] {
         const auto begin = std::chrono::steady_clock::now();
         auto result = std::make_shared<DerivationResult>();
         result->request = request;
         try {
+            while (std::chrono::steady_clock::now() - begin < delay) {
+                throwIfCancelled(cancel.get());
+                std::this_thread::sleep_for(std::chrono::milliseconds(2));
+            }
             DocumentRequest r;
             r.format = symbolic::DocumentFormat::Display;
             r.cancel = cancel.get();

@@ -49,6 +49,9 @@ public:
     int runs() const { return runs_; }
     // Blocks until the worker has finished (tests, shutdown).
     void wait() { pool_.waitForDone(); }
+    // Tests: every derivation waits this long before it starts (cancellable), so a test can
+    // type its next edit while one is surely running, whatever the machine's speed.
+    void setStartDelay(int milliseconds) { startDelayMs_ = milliseconds; }
 
 signals:
     void started(int request);
@@ -60,6 +63,7 @@ private:
     std::shared_ptr<std::atomic<bool>> cancel_;
     bool stopped_ = false;  // the newest request was cancelled before it finished
     int requested_ = 0, delivered_ = 0, runs_ = 0;
+    int startDelayMs_ = 0;
 };
 
 }  // namespace ll::ui
