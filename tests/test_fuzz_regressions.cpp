@@ -3,7 +3,8 @@
 // files are issue 13's defects: a subnormal parameter (CLN threw "floating point
 // underflow", not InputError), a spring rest at 1e300 (E_pot = inf passed the checks), a
 // subnormal typed in an expression, and a potential that overflows at the initial state;
-// then what `scripts/lab fuzz` found: "sin()" (a crash) and "4e55555555555" (a hang).
+// then what `scripts/lab fuzz` found: "sin()" (a crash) and "4e55555555555" (a hang), and
+// its computed cousin found by hand, "10^(10^10)" (a hang).
 #include <QtTest>
 
 #include <filesystem>
@@ -96,6 +97,30 @@ private slots:
         }
         QCOMPARE(table.evaluate("robot.joints[0].a", "1e308", ll::AngleUnits::Refused), 1e308);
         QCOMPARE(table.evaluate("robot.joints[0].a", "2.5e-3", ll::AngleUnits::Refused), 2.5e-3);
+    }
+
+    // A computed exponent as large ("10^(10^10)", or a^n with the parameter n = 1e10; found
+    // by hand after the fuzzer's literal: GiNaC computed the power exactly, for hours) is
+    // one line naming the field and the exponent's value, before GiNaC computes anything.
+    // Without the check each of these would not return.
+    void computedHugeExponentsAreRefused() {
+        const auto lock = ll::symbolic::lockGinac();
+        ll::ParameterTable table;
+        table.define("parameters.n", "n", 1e10);
+        table.define("parameters.k", "k", 3.0);
+        for (const char* text : {"10^(10^10)", "2^10000000000", "10^n", "(10^10)^(10^10)", "pow(10, 10^10)",
+                                 "1 + 3^(-n)", "2^(2^(2^(2^(2^2))))", "k^(1000*k)"}) {
+            const QString message = refusal(table, text);
+            QVERIFY2(message.contains("robot.joints[0].a") && message.contains("is beyond ±1000") && message.contains("exponent "),
+                     qPrintable(text + (": " + message)));
+        }
+        QVERIFY2(refusal(table, "10^n").contains("exponent 1e+10 after the '^' at position 3"), qPrintable(refusal(table, "10^n")));
+        // Exponents a scene uses still evaluate, to their closed values.
+        QCOMPARE(table.evaluate("robot.joints[0].a", "2^10", ll::AngleUnits::Refused), 1024.0);
+        QCOMPARE(table.evaluate("robot.joints[0].a", "k^(k-1)", ll::AngleUnits::Refused), 9.0);
+        QCOMPARE(table.evaluate("robot.joints[0].a", "pow(2, -k)", ll::AngleUnits::Refused), 0.125);
+        QCOMPARE(table.evaluate("robot.joints[0].a", "(1/2)^3*8", ll::AngleUnits::Refused), 1.0);
+        QCOMPARE(table.evaluate("robot.joints[0].a", "2^(2^(2^2))/65536", ll::AngleUnits::Refused), 1.0);
     }
 };
 

@@ -161,6 +161,60 @@ std::size_t zeroDivisorPosition(const std::string& text, const GiNaC::symtab& sy
     return 0;
 }
 
+// GiNaC computes a number raised to an integer exactly, as soon as it reads it: 10^(10^10),
+// pow(10, 10^10) or a^n with the parameter n = 1e10 would take hours and gigabytes (a
+// scene's physics never needs an exponent beyond a few). So every exponent is evaluated
+// alone first, with the parameters' values, and one beyond ±kLargestExponent is refused.
+// Right to left: an exponent's own exponents, all further right, are checked before it.
+constexpr double kLargestExponent = 1000;
+
+void checkExponents(const std::string& field, const PreparedExpression& source, const GiNaC::symtab& symbols,
+                    const GiNaC::lst& values) {
+    const std::string& text = source.text;
+    struct Exponent {
+        std::size_t at, begin, end;  // the '^' or the call's name; the exponent's text
+    };
+    std::vector<Exponent> exponents;
+    for (std::size_t caret = text.find('^'); caret != std::string::npos; caret = text.find('^', caret + 1))
+        exponents.push_back({caret, caret + 1, operandEnd(text, caret + 1)});
+    static const std::regex call(R"(\b(pow|power)\s*\()");
+    for (auto m = std::sregex_iterator(text.begin(), text.end(), call); m != std::sregex_iterator(); ++m) {
+        const std::size_t open = static_cast<std::size_t>(m->position(0) + m->length(0)) - 1;
+        const std::size_t close = pastClosing(text, open);
+        if (close == std::string::npos) continue;  // the parser reports the missing ')'
+        int depth = 0;
+        for (std::size_t i = open + 1; i + 1 < close; ++i) {
+            if (text[i] == '(') ++depth;
+            if (text[i] == ')') --depth;
+            if (text[i] == ',' && depth == 0) {
+                exponents.push_back({static_cast<std::size_t>(m->position(0)), i + 1, close - 1});
+                break;
+            }
+        }
+    }
+    std::sort(exponents.begin(), exponents.end(), [](const Exponent& a, const Exponent& b) { return a.at > b.at; });
+    for (const Exponent& x : exponents) {
+        const std::string exponent = text.substr(x.begin, x.end - x.begin);
+        double value = 0;
+        try {
+            GiNaC::parser parser(symbols, /*strict=*/true);
+            std::istringstream input(exponent);
+            const GiNaC::ex e = parser(input).subs(values).evalf();
+            if (!GiNaC::is_a<GiNaC::numeric>(e) || !GiNaC::ex_to<GiNaC::numeric>(e).is_real()) continue;
+            value = GiNaC::ex_to<GiNaC::numeric>(e).to_double();
+        } catch (...) {
+            continue;  // not an exponent that reads alone (or an error the whole parse reports)
+        }
+        if (std::abs(value) <= kLargestExponent) continue;
+        std::ostringstream shown;
+        shown.precision(4);
+        shown << value;
+        throw InputError(field, "exponent " + shown.str() + " after the '" + (text[x.at] == '^' ? "^" : "pow") + "'" +
+                                    source.at(x.at + 1) + " in " + source.quoted() + " is beyond ±1000 (a number raised "
+                                    "to it is computed exactly and would not finish)");
+    }
+}
+
 std::string divisorNote(const PreparedExpression& source, std::size_t position) {
     return position == 0 ? "" : " (the divisor after the '/'" + source.at(position) + " is zero)";
 }
@@ -251,6 +305,7 @@ GiNaC::ex ParameterTable::parse(const std::string& field, const PreparedExpressi
     }
     known.insert(known.end(), names_.begin(), names_.end());
     symbols = withConstants(symbols);
+    checkExponents(field, source, symbols, values());
     std::istringstream input(source.text);
     try {
         GiNaC::parser parser(symbols, /*strict=*/true);
