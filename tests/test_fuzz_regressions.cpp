@@ -4,7 +4,8 @@
 // underflow", not InputError), a spring rest at 1e300 (E_pot = inf passed the checks), a
 // subnormal typed in an expression, and a potential that overflows at the initial state;
 // then what `scripts/lab fuzz` found: "sin()" (a crash) and "4e55555555555" (a hang), and
-// its computed cousin found by hand, "10^(10^10)" (a hang).
+// its computed cousins found by hand, "10^(10^10)", "((9^999)^999)^999" and
+// "factorial(10^8)" (hangs).
 #include <QtTest>
 
 #include <filesystem>
@@ -115,12 +116,42 @@ private slots:
                      qPrintable(text + (": " + message)));
         }
         QVERIFY2(refusal(table, "10^n").contains("exponent 1e+10 after the '^' at position 3"), qPrintable(refusal(table, "10^n")));
+        // Each exponent within ±1000, but nested: ((9^999)^999)^999 has about 10^9 digits.
+        for (const char* text : {"((9^999)^999)^999", "(9^999)^999", "pow(pow(9, 999), 999)", "(12345678901234567/1000)^999",
+                                 "(10^300)^(999/2)"}) {
+            const QString message = refusal(table, text);
+            QVERIFY2(message.contains("robot.joints[0].a") && message.contains("digits"),
+                     qPrintable(text + (": " + message)));
+        }
+        QVERIFY2(refusal(table, "(9^999)^999").contains("the power after the '^' at position 8") &&
+                     refusal(table, "(9^999)^999").contains("about 9.524e+05 digits"),
+                 qPrintable(refusal(table, "(9^999)^999")));
+        QCOMPARE(table.evaluate("robot.joints[0].a", "(9^999)^3/(9^999*9^999*9^999)", ll::AngleUnits::Refused), 1.0);  // 2,860 digits: fine
         // Exponents a scene uses still evaluate, to their closed values.
         QCOMPARE(table.evaluate("robot.joints[0].a", "2^10", ll::AngleUnits::Refused), 1024.0);
         QCOMPARE(table.evaluate("robot.joints[0].a", "k^(k-1)", ll::AngleUnits::Refused), 9.0);
         QCOMPARE(table.evaluate("robot.joints[0].a", "pow(2, -k)", ll::AngleUnits::Refused), 0.125);
         QCOMPARE(table.evaluate("robot.joints[0].a", "(1/2)^3*8", ll::AngleUnits::Refused), 1.0);
         QCOMPARE(table.evaluate("robot.joints[0].a", "2^(2^(2^2))/65536", ll::AngleUnits::Refused), 1.0);
+    }
+
+    // GiNaC's parser knows functions that compute exactly and without end on a large
+    // argument (factorial(10^8) ran for minutes, found by hand with the nested powers):
+    // only the functions the simulation compiles (and pow) may be called; the others are
+    // one line naming the field, the function and its position.
+    void unavailableFunctionsAreRefused() {
+        const auto lock = ll::symbolic::lockGinac();
+        ll::ParameterTable table;
+        table.define("parameters.m", "m", 2.0);
+        for (const char* text : {"factorial(100000000)", "1 + tgamma(10^8)", "binomial(10^9, 10^8)", "zeta (100000)",
+                                 "m*lgamma(m)", "Li2(m)"}) {
+            const QString message = refusal(table, text);
+            QVERIFY2(message.contains("robot.joints[0].a") && message.contains("is not available (available: sin"),
+                     qPrintable(text + (": " + message)));
+        }
+        QVERIFY2(refusal(table, "1 + tgamma(10^8)").contains("function 'tgamma' at position 5"), qPrintable(refusal(table, "1 + tgamma(10^8)")));
+        QCOMPARE(table.evaluate("robot.joints[0].a", "sqrt(m^2)*abs(-1)+atan2(0, 1)+step(m)", ll::AngleUnits::Refused), 3.0);
+        QCOMPARE(table.evaluate("robot.joints[0].a", "cosh(0) + tanh(0) + exp(0) + log(1) + csgn(m)", ll::AngleUnits::Refused), 3.0);
     }
 };
 

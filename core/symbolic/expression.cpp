@@ -161,25 +161,68 @@ std::size_t zeroDivisorPosition(const std::string& text, const GiNaC::symtab& sy
     return 0;
 }
 
-// GiNaC computes a number raised to an integer exactly, as soon as it reads it: 10^(10^10),
-// pow(10, 10^10) or a^n with the parameter n = 1e10 would take hours and gigabytes (a
-// scene's physics never needs an exponent beyond a few). So every exponent is evaluated
-// alone first, with the parameters' values, and one beyond ±kLargestExponent is refused.
-// Right to left: an exponent's own exponents, all further right, are checked before it.
-constexpr double kLargestExponent = 1000;
+// The start of the operand before a '^' at `caret`: a number (1.5, 2e-3), a name, a
+// call f(...) or a parenthesised group; npos when there is none.
+std::size_t operandBegin(const std::string& text, std::size_t caret) {
+    std::size_t i = caret;
+    while (i > 0 && std::isspace(static_cast<unsigned char>(text[i - 1]))) --i;
+    if (i == 0) return std::string::npos;
+    if (text[i - 1] == ')') {
+        int depth = 0;
+        std::size_t open = i;
+        while (open > 0) {
+            --open;
+            if (text[open] == ')') ++depth;
+            if (text[open] == '(' && --depth == 0) break;
+        }
+        if (depth != 0) return std::string::npos;
+        std::size_t name = open;
+        while (name > 0 && std::isspace(static_cast<unsigned char>(text[name - 1]))) --name;
+        std::size_t first = name;
+        while (first > 0 && isIdentifierChar(text[first - 1])) --first;
+        return first < name && std::isalpha(static_cast<unsigned char>(text[first])) ? first : open;
+    }
+    std::size_t j = i;
+    while (j > 0) {
+        const char c = text[j - 1];
+        if (isIdentifierChar(c) || c == '.') {
+            --j;
+        } else if ((c == '+' || c == '-') && j >= 3 && (text[j - 2] == 'e' || text[j - 2] == 'E') &&
+                   (std::isdigit(static_cast<unsigned char>(text[j - 3])) || text[j - 3] == '.')) {
+            j -= 2;  // the sign of a number's exponent, 2e-3
+        } else {
+            break;
+        }
+    }
+    return j < i ? j : std::string::npos;
+}
 
-void checkExponents(const std::string& field, const PreparedExpression& source, const GiNaC::symtab& symbols,
-                    const GiNaC::lst& values) {
+// GiNaC computes a number raised to an integer exactly, as soon as it reads it: 10^(10^10),
+// pow(10, 10^10), a^n with the parameter n = 1e10, or ((9^999)^999)^999 would take hours
+// and gigabytes (a scene's physics never needs such numbers). So before GiNaC reads an
+// expression, every power is checked on its own, innermost first (a power's text holds
+// those inside it, so shorter texts go first and what is evaluated is already bounded):
+// its exponent, evaluated with the parameters' values, must lie within ±kLargestExponent,
+// and an exact number raised to it must have at most kLargestDigits digits.
+constexpr double kLargestExponent = 1000;
+constexpr double kLargestDigits = 10000;
+
+void checkPowers(const std::string& field, const PreparedExpression& source, const GiNaC::symtab& symbols,
+                 const GiNaC::lst& values) {
     const std::string& text = source.text;
-    struct Exponent {
-        std::size_t at, begin, end;  // the '^' or the call's name; the exponent's text
+    struct Power {
+        std::size_t at, baseBegin, baseEnd, begin, end;  // the '^' or the call's name; base; exponent
+        std::size_t span() const { return end - std::min(at, baseBegin); }
     };
-    std::vector<Exponent> exponents;
-    for (std::size_t caret = text.find('^'); caret != std::string::npos; caret = text.find('^', caret + 1))
-        exponents.push_back({caret, caret + 1, operandEnd(text, caret + 1)});
+    std::vector<Power> powers;
+    for (std::size_t caret = text.find('^'); caret != std::string::npos; caret = text.find('^', caret + 1)) {
+        const std::size_t base = operandBegin(text, caret);
+        powers.push_back({caret, base == std::string::npos ? caret : base, caret, caret + 1, operandEnd(text, caret + 1)});
+    }
     static const std::regex call(R"(\b(pow|power)\s*\()");
     for (auto m = std::sregex_iterator(text.begin(), text.end(), call); m != std::sregex_iterator(); ++m) {
-        const std::size_t open = static_cast<std::size_t>(m->position(0) + m->length(0)) - 1;
+        const std::size_t name = static_cast<std::size_t>(m->position(0));
+        const std::size_t open = name + static_cast<std::size_t>(m->length(0)) - 1;
         const std::size_t close = pastClosing(text, open);
         if (close == std::string::npos) continue;  // the parser reports the missing ')'
         int depth = 0;
@@ -187,31 +230,81 @@ void checkExponents(const std::string& field, const PreparedExpression& source, 
             if (text[i] == '(') ++depth;
             if (text[i] == ')') --depth;
             if (text[i] == ',' && depth == 0) {
-                exponents.push_back({static_cast<std::size_t>(m->position(0)), i + 1, close - 1});
+                powers.push_back({name, open + 1, i, i + 1, close - 1});
                 break;
             }
         }
     }
-    std::sort(exponents.begin(), exponents.end(), [](const Exponent& a, const Exponent& b) { return a.at > b.at; });
-    for (const Exponent& x : exponents) {
-        const std::string exponent = text.substr(x.begin, x.end - x.begin);
-        double value = 0;
+    std::stable_sort(powers.begin(), powers.end(), [](const Power& a, const Power& b) { return a.span() < b.span(); });
+    // The value of a piece of the text alone, or nothing when it does not read alone (the
+    // whole parse reports that) or is not a real number.
+    const auto valueOf = [&](std::size_t begin, std::size_t end, bool exact) -> std::optional<GiNaC::numeric> {
         try {
             GiNaC::parser parser(symbols, /*strict=*/true);
-            std::istringstream input(exponent);
-            const GiNaC::ex e = parser(input).subs(values).evalf();
-            if (!GiNaC::is_a<GiNaC::numeric>(e) || !GiNaC::ex_to<GiNaC::numeric>(e).is_real()) continue;
-            value = GiNaC::ex_to<GiNaC::numeric>(e).to_double();
+            std::istringstream input(text.substr(begin, end - begin));
+            GiNaC::ex e = parser(input).subs(values);
+            if (!exact) e = e.evalf();
+            if (GiNaC::is_a<GiNaC::numeric>(e) && GiNaC::ex_to<GiNaC::numeric>(e).is_real()) return GiNaC::ex_to<GiNaC::numeric>(e);
         } catch (...) {
-            continue;  // not an exponent that reads alone (or an error the whole parse reports)
         }
-        if (std::abs(value) <= kLargestExponent) continue;
-        std::ostringstream shown;
-        shown.precision(4);
-        shown << value;
-        throw InputError(field, "exponent " + shown.str() + " after the '" + (text[x.at] == '^' ? "^" : "pow") + "'" +
-                                    source.at(x.at + 1) + " in " + source.quoted() + " is beyond ±1000 (a number raised "
-                                    "to it is computed exactly and would not finish)");
+        return std::nullopt;
+    };
+    const auto shown = [](double value) {
+        std::ostringstream out;
+        out.precision(4);
+        out << value;
+        return out.str();
+    };
+    for (const Power& x : powers) {
+        const std::optional<GiNaC::numeric> exponent = valueOf(x.begin, x.end, false);
+        if (!exponent) continue;
+        const double e = exponent->to_double();  // inf when beyond a double
+        const std::string where = std::string(text[x.at] == '^' ? "after the '^'" : "of the 'pow'") + source.at(x.at + 1) +
+                                  " in " + source.quoted();
+        if (!(std::abs(e) <= kLargestExponent))
+            throw InputError(field, "exponent " + shown(e) + " " + where + " is beyond ±1000 (a number raised to it is "
+                                    "computed exactly and would not finish)");
+        const std::optional<GiNaC::numeric> base = valueOf(x.baseBegin, x.baseEnd, true);
+        if (!base || !base->is_rational()) continue;  // a float (a parameter's value) is raised in floating point
+        const double bits = std::max(base->numer().int_length(), base->denom().int_length());
+        const double digits = std::abs(e) * bits * std::log10(2.0);
+        if (digits > kLargestDigits)
+            throw InputError(field, "the power " + where + " would be an exact number of about " + shown(digits) +
+                                    " digits (more than 10000 are refused: it would not finish)");
+    }
+}
+
+// The functions an expression may call: those the simulation compiles
+// (core/symbolic/compiled_expressions) and pow. GiNaC's parser knows more, and some of
+// them compute exactly and without end on a large argument (factorial(10^8),
+// tgamma(10^8), binomial, zeta), so they are refused before GiNaC reads the text.
+const std::set<std::string>& availableFunctions() {
+    static const std::set<std::string> names{"sin",  "cos",  "tan",  "exp",  "log",   "sqrt", "sinh", "cosh", "tanh",
+                                             "asin", "acos", "atan", "atan2", "abs", "step", "csgn", "pow",  "power"};
+    return names;
+}
+
+void checkFunctions(const std::string& field, const PreparedExpression& source) {
+    static const std::set<std::string> known = [] {
+        std::set<std::string> names;
+        for (const auto& [prototype, reader] : GiNaC::get_default_reader()) names.insert(prototype.first);
+        return names;
+    }();
+    const std::string& text = source.text;
+    for (std::size_t i = 0; i < text.size();) {
+        if (!std::isalpha(static_cast<unsigned char>(text[i])) || (i > 0 && isIdentifierChar(text[i - 1]))) {
+            ++i;
+            continue;
+        }
+        std::size_t end = i;
+        while (end < text.size() && isIdentifierChar(text[end])) ++end;
+        const std::string name = text.substr(i, end - i);
+        const std::size_t next = text.find_first_not_of(" \t\n", end);
+        if (next != std::string::npos && text[next] == '(' && known.count(name) && !availableFunctions().count(name))
+            throw InputError(field, "function '" + name + "'" + source.at(i + 1) + " in " + source.quoted() +
+                                        " is not available (available: sin, cos, tan, exp, log, sqrt, sinh, cosh, tanh, "
+                                        "asin, acos, atan, atan2, abs, step, csgn, pow)");
+        i = end;
     }
 }
 
@@ -305,7 +398,8 @@ GiNaC::ex ParameterTable::parse(const std::string& field, const PreparedExpressi
     }
     known.insert(known.end(), names_.begin(), names_.end());
     symbols = withConstants(symbols);
-    checkExponents(field, source, symbols, values());
+    checkFunctions(field, source);
+    checkPowers(field, source, symbols, values());
     std::istringstream input(source.text);
     try {
         GiNaC::parser parser(symbols, /*strict=*/true);
