@@ -262,8 +262,8 @@ void checkPowers(const std::string& field, const PreparedExpression& source, con
         const std::string where = std::string(text[x.at] == '^' ? "after the '^'" : "of the 'pow'") + source.at(x.at + 1) +
                                   " in " + source.quoted();
         if (!(std::abs(e) <= kLargestExponent))
-            throw InputError(field, "exponent " + shown(e) + " " + where + " is beyond ±1000 (a number raised to it is "
-                                    "computed exactly and would not finish)");
+            throw InputError(field, "exponent " + shown(e) + " " + where + " is beyond ±1000 (GiNaC computes powers exactly "
+                                    "and would not finish)");
         const std::optional<GiNaC::numeric> base = valueOf(x.baseBegin, x.baseEnd, true);
         if (!base || !base->is_rational()) continue;  // a float (a parameter's value) is raised in floating point
         const double bits = std::max(base->numer().int_length(), base->denom().int_length());
@@ -272,6 +272,47 @@ void checkPowers(const std::string& field, const PreparedExpression& source, con
             throw InputError(field, "the power " + where + " would be an exact number of about " + shown(digits) +
                                     " digits (more than 10000 are refused: it would not finish)");
     }
+}
+
+// The derivation expands what a user types (E_pot, E_kin, a DH field with symbolic
+// parameters): (θ1 + θ2 + 1)^1000 is half a million terms and never finished. The
+// number of terms each part would expand to is counted on the tree as GiNaC read it
+// (a sum adds, a product multiplies, (k terms)^n gives C(n+k−1, k−1)), every part,
+// function arguments too, and an expression beyond kLargestExpansion is refused.
+constexpr double kLargestExpansion = 10000;
+
+double expandedTerms(const GiNaC::ex& e, double& largest) {
+    double terms = 1;
+    if (GiNaC::is_a<GiNaC::add>(e)) {
+        terms = 0;
+        for (const GiNaC::ex& t : e) terms += expandedTerms(t, largest);
+    } else if (GiNaC::is_a<GiNaC::mul>(e)) {
+        for (const GiNaC::ex& f : e) terms *= expandedTerms(f, largest);
+    } else if (GiNaC::is_a<GiNaC::power>(e)) {
+        const double k = expandedTerms(e.op(0), largest);
+        (void)expandedTerms(e.op(1), largest);
+        const GiNaC::ex& n = e.op(1);
+        if (k > 1 && GiNaC::is_a<GiNaC::numeric>(n) && GiNaC::ex_to<GiNaC::numeric>(n).is_pos_integer()) {
+            const double m = GiNaC::ex_to<GiNaC::numeric>(n).to_double();
+            terms = std::exp(std::lgamma(m + k) - std::lgamma(k) - std::lgamma(m + 1));  // C(m+k−1, k−1)
+        }
+    } else {
+        for (std::size_t i = 0; i < e.nops(); ++i) (void)expandedTerms(e.op(i), largest);
+    }
+    terms = std::min(terms, 1e300);
+    largest = std::max(largest, terms);
+    return terms;
+}
+
+void checkExpansion(const std::string& field, const PreparedExpression& source, const GiNaC::ex& e) {
+    double largest = 0;
+    (void)expandedTerms(e, largest);
+    if (largest <= kLargestExpansion) return;
+    std::ostringstream shown;
+    shown.precision(3);
+    shown << largest;
+    throw InputError(field, source.quoted() + " would expand to about " + shown.str() +
+                                " terms (more than 10000 are refused: the derivation expands it and would not finish)");
 }
 
 // The functions an expression may call: those the simulation compiles
@@ -404,8 +445,11 @@ GiNaC::ex ParameterTable::parse(const std::string& field, const PreparedExpressi
     try {
         GiNaC::parser parser(symbols, /*strict=*/true);
         const GiNaC::ex expression = parser(input);
+        checkExpansion(field, source, expression);
         if (checkValues) (void)expression.subs(values());  // throws for x/(k-2) with k = 2
         return expression;
+    } catch (const InputError&) {
+        throw;  // checkExpansion's, as it is
     } catch (const GiNaC::parse_error& e) {
         input.clear();
         throw InputError(field, describeParseError(source, e.what(), input.tellg()));
