@@ -276,8 +276,8 @@ private:
     void checkKeys(const Json& object, const std::string& path, const Keys& allowed,
                    const std::string& context = "") {
         for (const auto& [key, value] : object.items())
-            if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
-                error(child(path, key), "unknown key" + context + " (expected one of " + joined(allowed) + ")");
+            if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())  // "" is named as typed: ""
+                error(child(path, key.empty() ? "\"\"" : key), "unknown key" + context + " (expected one of " + joined(allowed) + ")");
     }
 
     std::optional<double> number(const Json& value, const std::string& path, Angle angle = Angle::No) {
