@@ -206,6 +206,7 @@ std::size_t operandBegin(const std::string& text, std::size_t caret) {
 // and an exact number raised to it must have at most kLargestDigits digits.
 constexpr double kLargestExponent = 1000;
 constexpr double kLargestDigits = 10000;
+constexpr std::size_t kLargestOperands = 100000;
 
 void checkPowers(const std::string& field, const PreparedExpression& source, const GiNaC::symtab& symbols,
                  const GiNaC::lst& values) {
@@ -236,6 +237,16 @@ void checkPowers(const std::string& field, const PreparedExpression& source, con
         }
     }
     std::stable_sort(powers.begin(), powers.end(), [](const Power& a, const Power& b) { return a.span() < b.span(); });
+    // Each power's base and exponent are read again on their own: deeply nested powers,
+    // 2^(2^(2^…)), would be read over and over (12 KB of them took 1.8 s). Typed
+    // expressions, even long ones, have short operands; beyond kLargestOperands characters
+    // in all the expression is refused rather than checked for seconds.
+    std::size_t operands = 0;
+    for (const Power& x : powers) operands += (x.end - x.begin) + (x.baseEnd - x.baseBegin);
+    if (operands > kLargestOperands)
+        throw InputError(field, "the powers in " + source.quoted() + " are nested too deeply to check (their bases and "
+                                    "exponents add up to " + std::to_string(operands) + " characters; at most " +
+                                    std::to_string(kLargestOperands) + ")");
     // The value of a piece of the text alone, or nothing when it does not read alone (the
     // whole parse reports that) or is not a real number.
     const auto valueOf = [&](std::size_t begin, std::size_t end, bool exact) -> std::optional<GiNaC::numeric> {
