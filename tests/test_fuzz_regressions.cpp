@@ -5,7 +5,8 @@
 // subnormal typed in an expression, and a potential that overflows at the initial state;
 // then what `scripts/lab fuzz` found: "sin()" (a crash) and "4e55555555555" (a hang), and
 // its computed cousins found by hand, "10^(10^10)", "((9^999)^999)^999" and
-// "factorial(10^8)" (hangs), and an empty key named by no field.
+// "factorial(10^8)" (hangs), an empty key and "tau*sin(I)" (each refused naming no
+// field).
 #include <QtTest>
 
 #include <filesystem>
@@ -186,6 +187,30 @@ private slots:
         QVERIFY2(refusedAs("(x+y+1)^1000").contains("about 5.02e+05 terms"), qPrintable(refusedAs("(x+y+1)^1000")));  // C(1002, 2) = 501501
         for (const char* fine : {"K*(x-y)^2/2 + K*x^2/2", "(x+y)^1000", "(x+y+z)^100", "x^1000*y^1000", "(sin(x)+cos(y))^20"})
             QVERIFY2(refusedAs(fine).isEmpty(), qPrintable(fine + (": " + refusedAs(fine))));
+    }
+
+    // A Lagrangian's force "tau*sin(I)" (found by fuzz_lagrangian: GiNaC reads I as the
+    // imaginary unit) could not be compiled and was refused naming no field ("cannot
+    // compile the non-real number I"). A complex number in any expression is one line
+    // naming the field; real constants (Euler, Catalan, pi) still read.
+    void complexNumbersAreRefused() {
+        const auto lock = ll::symbolic::lockGinac();
+        ll::ParameterTable table;
+        table.define("parameters.tau", "tau", 1.0);
+        const GiNaC::symbol x("theta1");
+        for (const char* text : {"tau*sin(I)", "sqrt(-1)*theta1", "log(-2)", "I"}) {
+            QString message;
+            try {
+                (void)table.parse("lagrangian.forces[2]", text, {x});
+            } catch (const ll::InputError& e) {
+                message = QString::fromStdString(e.what());
+            }
+            QVERIFY2(message.contains("lagrangian.forces[2]") && message.contains("is not a real number"), qPrintable(text + (": " + message)));
+        }
+        for (const char* fine : {"tau*sin(theta1)", "Euler*theta1 + Catalan", "sqrt(2)*pi", "asin(1/2)"})
+            (void)table.parse("lagrangian.forces[2]", fine, {x});
+        std::ifstream in(LL_SOURCE_DIR "/tests/fuzz/regressions/lagrangian/imaginary_unit");
+        QVERIFY(in.good());
     }
 
     // GiNaC's parser knows functions that compute exactly and without end on a large

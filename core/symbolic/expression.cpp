@@ -315,6 +315,22 @@ double expandedTerms(const GiNaC::ex& e, double& largest) {
     return terms;
 }
 
+// Quantities here are real: GiNaC's parser reads I as the imaginary unit (a name no
+// parameter may take), and sqrt(-1), log(-2) or asin(2) of numbers become complex
+// numbers at once. A Lagrangian's field with one could not be compiled ("cannot compile
+// the non-real number I", naming no field; found by fuzz_lagrangian: "tau*sin(I)").
+void checkReal(const std::string& field, const PreparedExpression& source, const GiNaC::ex& e) {
+    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::numeric>(*it) && !GiNaC::ex_to<GiNaC::numeric>(*it).is_real()) {
+            std::ostringstream shown;
+            shown << e;
+            std::string value = shown.str();
+            if (value.size() > 60) value = value.substr(0, 60) + "…";
+            throw InputError(field, "value is not a real number (" + value + ") in " + source.quoted() +
+                                        " (I is the imaginary unit; quantities here are real)");
+        }
+}
+
 void checkExpansion(const std::string& field, const PreparedExpression& source, const GiNaC::ex& e) {
     double largest = 0;
     (void)expandedTerms(e, largest);
@@ -457,10 +473,11 @@ GiNaC::ex ParameterTable::parse(const std::string& field, const PreparedExpressi
         GiNaC::parser parser(symbols, /*strict=*/true);
         const GiNaC::ex expression = parser(input);
         checkExpansion(field, source, expression);
+        checkReal(field, source, expression);
         if (checkValues) (void)expression.subs(values());  // throws for x/(k-2) with k = 2
         return expression;
     } catch (const InputError&) {
-        throw;  // checkExpansion's, as it is
+        throw;  // checkExpansion's and checkReal's, as they are
     } catch (const GiNaC::parse_error& e) {
         input.clear();
         throw InputError(field, describeParseError(source, e.what(), input.tellg()));
