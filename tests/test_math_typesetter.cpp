@@ -2,7 +2,8 @@
 // fraction is taller than its numerator and its parts smaller, a subscript sits lower
 // and smaller, a matrix's brackets span its rows, long sums break, wide matrices become
 // entries), and the exports: the 2R's PDF holds b11's symbols as text (pdftotext) and
-// renders non-blank (pdftoppm), SVG and PNG are non-blank, bad input exits 2 in one line.
+// renders non-blank (pdftoppm), SVG and PNG are non-blank, bad input exits 2 in one line;
+// long sums are cut at any depth.
 #include <QtTest>
 
 #include <QApplication>
@@ -56,6 +57,24 @@ Run run(const QStringList& args, const QString& program = LL_CLI) {
 }
 
 QString example(const char* name) { return QString(LL_EXAMPLES_DIR) + "/" + name; }
+
+// m_i·a_1 + m_{i+1}·a_1 + … : `count` terms.
+std::shared_ptr<DisplayNode> sumOf(int count, int first = 0) {
+    auto sum = std::make_shared<DisplayNode>();
+    sum->kind = DisplayKind::Sum;
+    for (int i = first; i < first + count; ++i) {
+        sum->children.push_back(displayNode(DisplayKind::Product, {symbolNode("m", std::to_string(i)), symbolNode("a", "1")}));
+        sum->negative.push_back(i % 3 == 0);
+    }
+    return sum;
+}
+
+// The "⋯ (N more terms)" node of a cut sum, or null.
+const DisplayNode* moreTerms(const DisplayNode& sum) {
+    if (sum.kind != DisplayKind::Sum || sum.children.empty()) return nullptr;
+    const DisplayNode& last = *sum.children.back();
+    return last.kind == DisplayKind::Raw && last.text.find("more terms") != std::string::npos ? &last : nullptr;
+}
 
 }  // namespace
 
@@ -137,6 +156,32 @@ private slots:
         const auto entries = ui::layoutItem(*displayEquation(symbolNode("B"), m), "B", width);
         QVERIFY(entries.size() > 4 * 2);  // a heading and four entries, each broken
         QVERIFY(pieceWithText(entries[1], "b"));
+    }
+
+    // Nobody reads thousands of terms on a page: a long sum is cut wherever it sits (the
+    // expanded Panda's entries are products with a sum of thousands of terms in
+    // parentheses: 415 pages, 23 s). Text and JSON keep every term; short parts stay shared.
+    void sumsAreElidedAtAnyDepth() {
+        const auto longSum = sumOf(300), shortSum = sumOf(5, 400);
+        const auto product = displayNode(DisplayKind::Product, {symbolNode("m", "2"), displayNode(DisplayKind::Fence, {longSum})});
+        const auto fraction = displayNode(DisplayKind::Fraction, {product, shortSum});
+        const auto equation = displayEquation(symbolNode("b", "11"), fraction);
+        const DisplayPtr cut = ui::elided(equation, ui::maxTypesetTerms);
+        const DisplayNode& inner = *cut->children[1]->children[0]->children[1]->children[0];  // = (frac) (num) (fence) sum
+        QCOMPARE(inner.kind, DisplayKind::Sum);
+        QCOMPARE(inner.children.size(), ui::maxTypesetTerms * 2 / 3 + 1);
+        QCOMPARE(inner.negative.size(), inner.children.size());
+        const DisplayNode* more = moreTerms(inner);
+        QVERIFY(more);
+        QCOMPARE(QString::fromStdString(more->text), QString("⋯ (%1 more terms)").arg(300 - int(ui::maxTypesetTerms * 2 / 3)));
+        QCOMPARE(cut->children[1]->children[1], DisplayPtr(shortSum));  // untouched: shared, not copied
+        QVERIFY(longSum->children.size() == 300 && !moreTerms(*longSum));  // the original keeps every term
+        const DisplayPtr same = ui::elided(displayEquation(symbolNode("b", "12"), shortSum), ui::maxTypesetTerms);
+        QVERIFY(!moreTerms(*same->children[1]));
+        // Typeset, the cut entry takes a few lines, not the dozens its 300 terms would.
+        const double width = 40 * ui::mathUnitsPerEm;
+        const auto full = ui::layoutItem(*displayEquation(symbolNode("b", "11"), product), "b11", width);
+        QVERIFY2(full.size() <= 8, qPrintable(QString::number(full.size())));
     }
 
     void pdfOfThe2R() {

@@ -95,7 +95,10 @@ QRectF inkOf(const QString& text, int which, double size) {
 
 // Moves the pieces of box (a temporary, usually) into `to`, shifted.
 void append(MathBox& to, MathBox box, double dx, double dy = 0) {
-    to.pieces.reserve(to.pieces.size() + box.pieces.size());
+    // Room grows geometrically: reserving exactly the sum made a line built chunk by chunk
+    // copy all its pieces on every chunk (quadratic: 20 s for the expanded Panda's pages).
+    if (const std::size_t needed = to.pieces.size() + box.pieces.size(); needed > to.pieces.capacity())
+        to.pieces.reserve(std::max(needed, 2 * to.pieces.capacity()));
     for (MathPiece& p : box.pieces) {
         p.at += QPointF(dx, dy);
         to.pieces.push_back(std::move(p));
@@ -599,26 +602,30 @@ void chunks(const DisplayNode& n, std::vector<Chunk>& out, double maxWidth) {
 
 symbolic::DisplayPtr elided(const symbolic::DisplayPtr& node, std::size_t maxTerms) {
     const DisplayNode& n = *node;
-    if (n.kind == DisplayKind::Matrix) {
-        auto copy = std::make_shared<DisplayNode>(n);
-        for (auto& row : copy->rows)
-            for (auto& cell : row) cell = elided(cell, maxTerms);
-        return copy;
+    std::shared_ptr<DisplayNode> copy;  // made at the first change: most nodes stay shared
+    const auto changed = [&]() -> DisplayNode& {
+        if (!copy) copy = std::make_shared<DisplayNode>(n);
+        return *copy;
+    };
+    std::size_t kept = n.children.size();
+    if (n.kind == DisplayKind::Sum && n.children.size() > maxTerms) {
+        DisplayNode& c = changed();
+        kept = maxTerms * 2 / 3;
+        const std::string more = "⋯ (" + std::to_string(n.children.size() - kept) + " more terms)";
+        c.children.resize(kept);
+        c.negative.resize(kept);
+        c.children.push_back(symbolic::displayRaw(more, "\\cdots", more));
+        c.negative.push_back(false);
     }
-    if (n.kind == DisplayKind::Equation) {
-        auto copy = std::make_shared<DisplayNode>(n);
-        for (auto& c : copy->children) c = elided(c, maxTerms);
-        return copy;
-    }
-    if (n.kind != DisplayKind::Sum || n.children.size() <= maxTerms) return node;
-    auto copy = std::make_shared<DisplayNode>(n);
-    const std::size_t keep = maxTerms * 2 / 3, rest = n.children.size() - keep;
-    copy->children.resize(keep);
-    copy->negative.resize(keep);
-    const std::string more = "⋯ (" + std::to_string(rest) + " more terms)";
-    copy->children.push_back(symbolic::displayRaw(more, "\\cdots", more));
-    copy->negative.push_back(false);
-    return copy;
+    // Sums anywhere: inside a product's parentheses, a fraction, a matrix entry.
+    for (std::size_t i = 0; i < kept; ++i)
+        if (n.children[i])
+            if (symbolic::DisplayPtr e = elided(n.children[i], maxTerms); e != n.children[i]) changed().children[i] = std::move(e);
+    for (std::size_t r = 0; r < n.rows.size(); ++r)
+        for (std::size_t j = 0; j < n.rows[r].size(); ++j)
+            if (n.rows[r][j])
+                if (symbolic::DisplayPtr e = elided(n.rows[r][j], maxTerms); e != n.rows[r][j]) changed().rows[r][j] = std::move(e);
+    return copy ? copy : node;
 }
 
 std::vector<MathBox> layoutItem(const DisplayNode& full, const std::string& name, double maxWidth) {
@@ -693,38 +700,6 @@ std::vector<MathBox> layoutItem(const DisplayNode& full, const std::string& name
     return lines;
 }
 
-namespace {
-
-// Runs of the same font, size and baseline that continue one another (letters set one by
-// one: italic m, 2, a) merged into one piece: a PDF or SVG pays per drawText call (shaping,
-// a text object), so fewer calls make the Panda's 70 pages several times cheaper. Only
-// pieces that start exactly where the previous one's advance ends are merged.
-std::vector<MathPiece> mergedRuns(const std::vector<MathPiece>& pieces) {
-    std::vector<MathPiece> out;
-    out.reserve(pieces.size());
-    double end = 0;
-    for (const MathPiece& p : pieces) {
-        if (p.kind == MathPiece::Text && p.font == 3) {  // bold prose: as it is
-            out.push_back(p);
-            continue;
-        }
-        if (p.kind == MathPiece::Text && !out.empty()) {
-            MathPiece& last = out.back();
-            if (last.kind == MathPiece::Text && last.font == p.font && last.size == p.size && last.at.y() == p.at.y() &&
-                std::abs(end - p.at.x()) < 1e-9) {
-                last.text += p.text;
-                end += measure(p.text, p.font, p.size).width;
-                continue;
-            }
-        }
-        out.push_back(p);
-        if (p.kind == MathPiece::Text) end = p.at.x() + measure(p.text, p.font, p.size).width;
-    }
-    return out;
-}
-
-}  // namespace
-
 // The glyphs of a piece of text in a font at a pixel size, shaped once: a page repeats
 // the same few strings (c, 2, =, +, q̇) thousands of times, and drawText shaped each
 // again (HarfBuzz and the font lookup were a fifth of the Panda's 73-page PDF). Glyph
@@ -760,22 +735,43 @@ static const QList<QGlyphRun>& shapedRuns(int which, int pixels, const QString& 
     return cache.emplace(std::move(key), std::move(runs)).first->second;
 }
 
+namespace {
+
+// Glyphs of one font at one pixel size, gathered from every piece of a box.
+struct GlyphsOfAFont {
+    QRawFont font;
+    QList<quint32> glyphs;
+    QList<QPointF> positions;
+};
+
+}  // namespace
+
 void paintMath(QPainter& painter, const MathBox& box, QPointF origin, double scale) {
     painter.save();
     const QColor ink = painter.pen().color();
-    for (const MathPiece& p : mergedRuns(box.pieces)) {
-        const QPointF at = origin + p.at * scale;
+    // One glyph run per font and size for the whole box, drawn after the rules and
+    // brackets: a PDF or SVG pays per run (a text object with its font, colour and
+    // matrix), and a formula set letter by letter (italic m, subscript 2, roman a…) was
+    // one run per piece, 69,000 in the Panda's 71 pages.
+    std::vector<GlyphsOfAFont> fonts;
+    for (const MathPiece& p : box.pieces) {
         switch (p.kind) {
         case MathPiece::Text: {
             // Fonts are set in device pixels: scale the pixel size, not the painter, so
             // the PDF keeps real text at the right size.
             const int pixels = std::max(1, static_cast<int>(std::lround(mathUnitsPerEm * p.size * scale)));
-            painter.setPen(ink);
-            for (const QGlyphRun& run : shapedRuns(p.font, pixels, p.text)) painter.drawGlyphRun(at, run);
+            const QPointF at = p.at * scale;
+            for (const QGlyphRun& run : shapedRuns(p.font, pixels, p.text)) {
+                const QRawFont raw = run.rawFont();
+                auto same = std::find_if(fonts.begin(), fonts.end(), [&](const GlyphsOfAFont& f) { return f.font == raw; });
+                if (same == fonts.end()) same = fonts.insert(fonts.end(), GlyphsOfAFont{raw, {}, {}});
+                same->glyphs.append(run.glyphIndexes());
+                for (const QPointF& position : run.positions()) same->positions.append(position + at);
+            }
             break;
         }
         case MathPiece::Rule:
-            painter.fillRect(QRectF(at, QSizeF(p.width * scale, p.height * scale)), ink);
+            painter.fillRect(QRectF(origin + p.at * scale, QSizeF(p.width * scale, p.height * scale)), ink);
             break;
         case MathPiece::Bracket: {
             MathPiece shifted = p;
@@ -784,6 +780,14 @@ void paintMath(QPainter& painter, const MathBox& box, QPointF origin, double sca
             break;
         }
         }
+    }
+    painter.setPen(ink);
+    for (const GlyphsOfAFont& f : fonts) {
+        QGlyphRun run;
+        run.setRawFont(f.font);
+        run.setGlyphIndexes(f.glyphs);
+        run.setPositions(f.positions);
+        painter.drawGlyphRun(origin, run);
     }
     painter.restore();
 }

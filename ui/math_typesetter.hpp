@@ -48,7 +48,8 @@ constexpr double mathUnitsPerEm = 40.0;
 // Appends box to the right of `to` (gap units between), on the same baseline.
 void hcat(MathBox& to, MathBox box, double gap = 0);
 
-// node with every sum longer than maxTerms cut to its first terms and "⋯ (N more terms)".
+// node with every sum longer than maxTerms cut to its first terms and "⋯ (N more terms)",
+// wherever it is (an entry, a product's parentheses, a fraction, a matrix cell).
 symbolic::DisplayPtr elided(const symbolic::DisplayPtr& node, std::size_t maxTerms);
 
 // The box of a node at relative size `size` (1 normal, 0.7 script, 0.5 scriptscript).
@@ -57,7 +58,7 @@ MathBox layoutMath(const symbolic::DisplayNode& node, double size = 1.0);
 // An item "name = value" set to at most maxWidth units: a sum too wide breaks before
 // its top-level + and − (continuation lines indented past "name = "), and a matrix too
 // wide becomes its named entries listed under it (b11 = …, each breaking the same way).
-// A sum of more than maxTypesetTerms terms shows its first two thirds of that and
+// A sum of more than maxTypesetTerms terms, at any depth, shows its first two thirds of that and
 // "⋯ (N more terms)": the text and JSON formats keep every term. Returns the lines.
 inline constexpr std::size_t maxTypesetTerms = 90;
 std::vector<MathBox> layoutItem(const symbolic::DisplayNode& equation, const std::string& name, double maxWidth);
