@@ -80,7 +80,7 @@ void toPdf(const Scene& scene, symbolic::ParameterMode mode, const QString& path
     request.mode = mode;
     const DerivedDocument d = deriveDisplay(scene, request);
     std::string error;
-    if (!ui::writePdf(ui::paginate(*d.display), path, error)) throw std::runtime_error(error);
+    if (!ui::writePdf(*d.display, path, error)) throw std::runtime_error(error);
 }
 
 }  // namespace

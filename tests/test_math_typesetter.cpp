@@ -3,7 +3,8 @@
 // and smaller, a matrix's brackets span its rows, long sums break, wide matrices become
 // entries), and the exports: the 2R's PDF holds b11's symbols as text (pdftotext) and
 // renders non-blank (pdftoppm), SVG and PNG are non-blank, bad input exits 2 in one line;
-// long sums are cut at any depth.
+// long sums are cut at any depth; a PDF laid out on a second thread has every page, in
+// order, with one text object per font of a formula.
 #include <QtTest>
 
 #include <QApplication>
@@ -13,6 +14,7 @@
 #include <QSvgRenderer>
 #include <QTemporaryDir>
 
+#include "ui/derivation_pages.hpp"
 #include "ui/math_typesetter.hpp"
 
 using namespace ll;
@@ -75,6 +77,29 @@ const DisplayNode* moreTerms(const DisplayNode& sum) {
     const DisplayNode& last = *sum.children.back();
     return last.kind == DisplayKind::Raw && last.text.find("more terms") != std::string::npos ? &last : nullptr;
 }
+
+// The text objects (BT … ET) in a PDF's content streams, inflated with qUncompress.
+int pdfTextObjects(const QByteArray& pdf) {
+    int objects = 0;
+    for (qsizetype at = 0; (at = pdf.indexOf("stream", at)) >= 0;) {
+        qsizetype start = at + 6;
+        if (pdf.mid(start, 2) == "\r\n") start += 2;
+        else if (pdf.at(start) == '\n') start += 1;
+        else {  // "endstream"
+            at = start;
+            continue;
+        }
+        const qsizetype end = pdf.indexOf("endstream", start);
+        if (end < 0) break;
+        at = end + 9;
+        if (quint8(pdf.at(start)) != 0x78) continue;  // not deflated (the XMP metadata)
+        QByteArray sized("\x00\x10\x00\x00", 4);  // qUncompress's size hint (it grows as needed)
+        sized += pdf.mid(start, end - start);
+        objects += int(qUncompress(sized).count("BT\n"));
+    }
+    return objects;
+}
+
 
 }  // namespace
 
@@ -182,6 +207,65 @@ private slots:
         const double width = 40 * ui::mathUnitsPerEm;
         const auto full = ui::layoutItem(*displayEquation(symbolNode("b", "11"), product), "b11", width);
         QVERIFY2(full.size() <= 8, qPrintable(QString::number(full.size())));
+    }
+
+    // The document is laid out on a second thread while QPdfWriter writes the finished
+    // pages: every page arrives, in order, and each formula's glyphs are one text object
+    // per font (they were one per letter or subscript: 69,000 in the Panda's PDF).
+    void pdfLaidOutWhileWritten() {
+        DisplayDocument document;
+        document.systemName = "pipeline";
+        DisplayStep step;
+        step.number = 4;
+        step.title = "Sums";
+        step.formulaText = "b = sum";
+        const int items = 300;
+        for (int i = 0; i < items; ++i) {
+            DisplayItem item;
+            item.name = "b" + std::to_string(i);
+            item.equation = displayEquation(symbolNode("b", std::to_string(i)), sumOf(12, i));
+            item.value = item.equation->children[1];
+            item.note = "item " + std::to_string(i + 1) + " of " + std::to_string(items);
+            step.items.push_back(item);
+        }
+        document.steps.push_back(step);
+        document.actuation = "all actuated";
+        const ui::DerivationPages pages = ui::paginate(document);
+        QVERIFY(pages.pages.size() > 5);
+        std::size_t boxes = 0;
+        for (const auto& page : pages.pages) boxes += page.size();
+
+        QTemporaryDir dir;
+        const QString pdf = dir.filePath("pipeline.pdf");
+        std::string error;
+        int written = 0;
+        QVERIFY2(ui::writePdf(document, pdf, error, {}, &written), error.c_str());
+        QCOMPARE(written, int(pages.pages.size()));
+        const Run info = run({pdf}, "pdfinfo");
+        const QRegularExpressionMatch count = QRegularExpression(R"(Pages:\s+(\d+))").match(info.out);
+        QVERIFY(count.hasMatch());
+        QCOMPARE(count.captured(1).toInt(), int(pages.pages.size()));
+        const Run text = run({"-layout", pdf, "-"}, "pdftotext");
+        QCOMPARE(text.code, 0);
+        qsizetype last = -1;
+        for (int i : {1, 2, items / 2, items - 1, items}) {  // present and in order
+            const qsizetype at = text.out.indexOf(QString("item %1 of %2").arg(i).arg(items));
+            QVERIFY2(at > last, qPrintable(QString("item %1").arg(i)));
+            last = at;
+        }
+        QFile file(pdf);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const int objects = pdfTextObjects(file.readAll());
+        // Per box at most roman, italic, math and bold, each at text and script size (here
+        // about 4); one per letter or subscript it was over 40 for each of these entries.
+        QVERIFY2(objects >= int(pages.pages.size()) && objects <= 8 * int(boxes),
+                 qPrintable(QString("%1 text objects for %2 boxes").arg(objects).arg(boxes)));
+
+        // A failing write names its reason and leaves no file.
+        const QString blocked = dir.filePath("no/such/folder/x.pdf");
+        QVERIFY(!ui::writePdf(document, blocked, error));
+        QVERIFY(!error.empty());
+        QVERIFY(!QFileInfo::exists(blocked));
     }
 
     void pdfOfThe2R() {

@@ -5,6 +5,7 @@
 // its lines). The same pages are written as PDF (QPdfWriter: text stays text), SVG
 // (QSvgGenerator) and PNG, headless (Qt's offscreen platform is enough).
 #include <QString>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -34,12 +35,18 @@ struct DerivationPages {
 
 DerivationPages paginate(const symbolic::DisplayDocument& document, const PageFormat& format = {});
 
+// The same, handing each page to `sink` as soon as it is complete, in order.
+using PageSink = std::function<void(std::vector<PlacedBox>&&)>;
+void paginate(const symbolic::DisplayDocument& document, const PageFormat& format, const PageSink& sink);
+
 // Page `index` onto a painter whose device has `devicePerPt` device units per point.
 void paintPage(QPainter& painter, const DerivationPages& pages, int index, double devicePerPt);
 
 // Writes the file; false with a one-line reason in `error`. SVG and PNG write page 1 to
 // `path` and page k to path's stem + "-k" + extension; `written` lists the files.
-bool writePdf(const DerivationPages& pages, const QString& path, std::string& error);
+// The PDF is laid out on a second thread while this one writes the finished pages.
+bool writePdf(const symbolic::DisplayDocument& document, const QString& path, std::string& error, const PageFormat& format = {},
+              int* pageCount = nullptr);
 bool writeSvg(const DerivationPages& pages, const QString& path, std::string& error, std::vector<QString>* written = nullptr);
 bool writePng(const DerivationPages& pages, const QString& path, std::string& error, std::vector<QString>* written = nullptr,
               double dpi = 150);

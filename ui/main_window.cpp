@@ -998,7 +998,7 @@ bool MainWindow::exportDerivationTo(const QString& path, QString* error) {
         try {
             if (suffix == "pdf") {
                 std::string reason;
-                if (!writePdf(paginate(*display), path, reason)) failure = QString::fromStdString(reason);
+                if (!writePdf(*display, path, reason)) failure = QString::fromStdString(reason);
             } else {
                 const auto format = suffix == "tex" ? symbolic::DocumentFormat::Latex : symbolic::DocumentFormat::Text;
                 saveFileAtomically(path.toStdString(), symbolic::renderDocument(*display, format), Backup::None);

@@ -1,0 +1,102 @@
+// The typeset PDF's threads (ui/derivation_pages): a second thread lays out the pages
+// while QPdfWriter writes the finished ones, and the window may export two documents at
+// once. Labelled `threads`: `scripts/lab tsan` runs it under ThreadSanitizer, which must
+// report no race.
+//
+// Every PDF is compared with the same document laid out alone first: its page count, and
+// every word's position read back by pdftotext -bbox, so a race that drops, reorders or
+// corrupts a page fails here even without the sanitizer.
+#include <QtTest>
+
+#include <QGuiApplication>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <thread>
+
+#include "core/io/scene_file.hpp"
+#include "core/pipeline/display_derivation.hpp"
+#include "ui/derivation_pages.hpp"
+#include "ui/math_typesetter.hpp"
+
+using namespace ll;
+
+namespace {
+
+std::shared_ptr<const symbolic::DisplayDocument> documentOf(const char* example) {
+    const Scene scene = loadScene(std::string(LL_EXAMPLES_DIR) + "/" + example).scene;
+    return deriveDisplay(scene, DocumentRequest{}).display;
+}
+
+// Each word of the PDF with its page and box, as pdftotext reads them back.
+QString wordsOf(const QString& pdf) {
+    QProcess p;
+    p.start("pdftotext", {"-bbox", pdf, "-"});
+    if (!p.waitForFinished(300000) || p.exitCode() != 0) return "pdftotext failed: " + QString::fromUtf8(p.readAllStandardError());
+    QString words = QString::fromUtf8(p.readAllStandardOutput());
+    words.remove(QRegularExpression("<head>.*</head>", QRegularExpression::DotMatchesEverythingOption));  // title, producer, date
+    return words;
+}
+
+struct Written {
+    bool ok = false;
+    int pages = 0;
+    std::string error;
+};
+
+Written write(const symbolic::DisplayDocument& document, const QString& path) {
+    Written w;
+    w.ok = ui::writePdf(document, path, w.error, {}, &w.pages);
+    return w;
+}
+
+}  // namespace
+
+class TestPdfThreads : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase() { QVERIFY2(ui::mathFontsAvailable(), "fonts-lmodern is not installed"); }
+
+    // One document: layout and writing overlap; every page arrives, in order.
+    void pagesWrittenAreThePagesLaidOut() {
+        QTemporaryDir dir;
+        for (const char* example : {"planar_2r.json", "scara.json", "panda.json"}) {
+            const auto document = documentOf(example);
+            const std::size_t pages = ui::paginate(*document).pages.size();
+            const Written first = write(*document, dir.filePath("first.pdf"));
+            QVERIFY2(first.ok, first.error.c_str());
+            QCOMPARE(std::size_t(first.pages), pages);
+            const QString words = wordsOf(dir.filePath("first.pdf"));
+            QVERIFY2(words.count("<page ") == int(pages), example);
+            QVERIFY(words.count("<word ") > 100);
+            const Written again = write(*document, dir.filePath("again.pdf"));
+            QVERIFY2(again.ok, again.error.c_str());
+            QCOMPARE(wordsOf(dir.filePath("again.pdf")), words);
+        }
+    }
+
+    // Two exports at once (the window exports on a pool thread while the CLI or another
+    // export runs): four threads share the fonts; each PDF equals the one written alone.
+    void twoExportsAtOnce() {
+        QTemporaryDir dir;
+        const auto scara = documentOf("scara.json");
+        const auto panda = documentOf("panda.json");
+        QVERIFY(write(*scara, dir.filePath("scara-alone.pdf")).ok);
+        QVERIFY(write(*panda, dir.filePath("panda-alone.pdf")).ok);
+        Written a, b;
+        std::thread other([&] { a = write(*scara, dir.filePath("scara-together.pdf")); });
+        b = write(*panda, dir.filePath("panda-together.pdf"));
+        other.join();
+        QVERIFY2(a.ok && b.ok, (a.error + b.error).c_str());
+        QCOMPARE(wordsOf(dir.filePath("scara-together.pdf")), wordsOf(dir.filePath("scara-alone.pdf")));
+        QCOMPARE(wordsOf(dir.filePath("panda-together.pdf")), wordsOf(dir.filePath("panda-alone.pdf")));
+    }
+};
+
+int main(int argc, char** argv) {
+    qputenv("QT_QPA_PLATFORM", "offscreen");
+    QGuiApplication app(argc, argv);
+    TestPdfThreads test;
+    return QTest::qExec(&test, argc, argv);
+}
+#include "test_pdf_threads.moc"
