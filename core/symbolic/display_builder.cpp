@@ -359,6 +359,8 @@ private:
     std::unordered_map<unsigned, DisplayPtr> symbolByHash_;
     ExMap<std::vector<Term>> terms_;
     ExMap<FactorKey> factorKeys_[2];  // by negated
+    std::unordered_map<unsigned, FactorKey> symbolKeys_;  // by a symbol's hash
+    ExMap<std::vector<std::pair<numeric, DisplayPtr>>> powers_;  // base^exponent, shown
     ExMap<DisplayPtr> atoms_;
 
     bool isCoordinate(const std::string& name) const {
@@ -417,18 +419,20 @@ private:
         return k;
     }
 
+    // Every node, parents first (recursion: GiNaC's preorder iterator allocates a stack).
     void scan(const ex& e, TermKey& k) {
-        for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
-            if (is_a<GiNaC::symbol>(*it)) {
-                const SymbolInfo& i = info(ex_to<GiNaC::symbol>(*it));
-                if (i.kind == Kind::Trig) k.trig = true;
-                if (i.kind != Kind::Velocity && !i.indices.empty())
-                    k.maxIndex = std::max(k.maxIndex, *std::max_element(i.indices.begin(), i.indices.end()));
-            } else if (is_a<GiNaC::function>(*it)) {
-                const std::string name = ex_to<GiNaC::function>(*it).get_name();
-                if (name == "sin" || name == "cos" || name == "tan") k.trig = true;
-            }
+        if (is_a<GiNaC::symbol>(e)) {
+            const SymbolInfo& i = info(ex_to<GiNaC::symbol>(e));
+            if (i.kind == Kind::Trig) k.trig = true;
+            if (i.kind != Kind::Velocity && !i.indices.empty())
+                k.maxIndex = std::max(k.maxIndex, *std::max_element(i.indices.begin(), i.indices.end()));
+            return;
         }
+        if (is_a<GiNaC::function>(e)) {
+            const std::string& name = ex_to<GiNaC::function>(e).get_name();
+            if (name == "sin" || name == "cos" || name == "tan") k.trig = true;
+        }
+        for (std::size_t i = 0; i < e.nops(); ++i) scan(e.op(i), k);
     }
 
     static numeric degree(const ex& e) {
@@ -477,12 +481,14 @@ private:
             for (const ex& x : e) one(x);
         else
             one(e);
-        std::vector<std::pair<FactorKey, Factor>> keyed;
         auto order = [this](std::vector<Factor>& fs) {
             if (fs.size() < 2) return;
-            std::vector<std::pair<FactorKey, Factor>> k;
-            for (Factor& f : fs) k.emplace_back(factorKey(f), std::move(f));
-            std::stable_sort(k.begin(), k.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+            // Sorted by pointers to the cached keys: a key holds a vector and a string,
+            // and copying them for every factor of every term was a tenth of the printing.
+            std::vector<std::pair<const FactorKey*, Factor>> k;
+            k.reserve(fs.size());
+            for (Factor& f : fs) k.emplace_back(&factorKey(f), std::move(f));
+            std::stable_sort(k.begin(), k.end(), [](const auto& a, const auto& b) { return *a.first < *b.first; });
             for (std::size_t i = 0; i < fs.size(); ++i) fs[i] = std::move(k[i].second);
         };
         order(d.num);
@@ -491,14 +497,19 @@ private:
     }
 
     // Number, constants, masses, parameters, coordinates, c/s, functions, sums, velocities.
-    FactorKey factorKey(const Factor& f) {
+    // (A reference into a cache: node-based maps keep their elements in place.)
+    const FactorKey& factorKey(const Factor& f) {
         const ex& b = f.base;
         if (is_a<GiNaC::symbol>(b)) {
-            const SymbolInfo& i = info(ex_to<GiNaC::symbol>(b));
+            const GiNaC::symbol& sym = ex_to<GiNaC::symbol>(b);
+            const unsigned hash = sym.gethash();  // by serial number, checked by name as in info()
+            if (auto it = symbolKeys_.find(hash); it != symbolKeys_.end() && std::get<2>(it->second) == sym.get_name())
+                return it->second;
+            const SymbolInfo& i = info(sym);
             static const int rank[] = {1, 2, 3, 4, 7};  // by Kind; functions 5, sums 6
             std::vector<int> sub = i.indices.empty() ? std::vector<int>{INT_MAX} : i.indices;
             if (i.trig) sub.push_back(i.trig->kind == 'c' ? 0 : 1);  // c1 before s1
-            return {rank[static_cast<int>(i.kind)], sub, ex_to<GiNaC::symbol>(b).get_name()};
+            return symbolKeys_[hash] = FactorKey{rank[static_cast<int>(i.kind)], sub, sym.get_name()};
         }
         ExMap<FactorKey>& cache = factorKeys_[f.negated ? 1 : 0];
         if (auto it = cache.find(b); it != cache.end()) return it->second;
@@ -694,8 +705,22 @@ private:
 
     DisplayPtr renderFactor(const Factor& f) {
         const numeric& k = f.exp;
-        const DisplayPtr b = f.negated ? renderSum(f.base, true) : renderAtom(f.base);
-        if (k == 1) return fenced(b, ProductPrec + 1);
+        if (f.negated || k == 1) {
+            const DisplayPtr b = f.negated ? renderSum(f.base, true) : renderAtom(f.base);
+            if (k == 1) return fenced(b, ProductPrec + 1);
+            return power(b, f);
+        }
+        // The same powers (c2², q̇1²) recur in thousands of terms: each is built once.
+        std::vector<std::pair<numeric, DisplayPtr>>& shown = powers_[f.base];
+        for (const auto& [exponent, node] : shown)
+            if (exponent == k) return node;
+        DisplayPtr node = power(renderAtom(f.base), f);
+        shown.emplace_back(k, node);
+        return node;
+    }
+
+    DisplayPtr power(const DisplayPtr& b, const Factor& f) {
+        const numeric& k = f.exp;
         if (k == numeric(1, 2)) return displayNode(DisplayKind::Root, {b});
         const std::string power = str(k);
         DisplayPtr exponent;
