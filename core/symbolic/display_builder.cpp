@@ -362,6 +362,7 @@ private:
     std::unordered_map<unsigned, FactorKey> symbolKeys_;  // by a symbol's hash
     ExMap<std::vector<std::pair<numeric, DisplayPtr>>> powers_;  // base^exponent, shown
     ExMap<DisplayPtr> atoms_;
+    ExMap<DisplayPtr> sums_[2];  // by negate
 
     bool isCoordinate(const std::string& name) const {
         if (o_.coordinateNames.empty()) return startsWith(name, "q") && allDigits(name.substr(1));
@@ -525,7 +526,11 @@ private:
 
     // ---- sums
 
+    // (Cached: JSON shows B, C, g again beside the steps, and a sum factor's sort key
+    // renders the sum it then shows.)
     DisplayPtr renderSum(const ex& e, bool negate) {
+        ExMap<DisplayPtr>& cache = sums_[negate ? 1 : 0];
+        if (auto it = cache.find(e); it != cache.end()) return it->second;
         auto n = std::make_shared<DisplayNode>();
         n->kind = DisplayKind::Sum;
         for (const Term& t : terms(e)) {
@@ -538,7 +543,7 @@ private:
                 n->children.push_back(withCoefficient(c, *t.d, t.body));
             }
         }
-        return n;
+        return cache.emplace(e, std::move(n)).first->second;
     }
 
     // ---- numbers
