@@ -51,16 +51,15 @@ std::string verificationLine(const std::string& what, double error, int states) 
 void announceForm(std::string& document, symbolic::DocumentFormat format, const std::string& reason) {
     switch (format) {
         case symbolic::DocumentFormat::Json: {
-            const nlohmann::ordered_json in = nlohmann::ordered_json::parse(document);
-            nlohmann::ordered_json out;
-            for (const auto& [key, value] : in.items()) {
-                out[key] = value;
-                if (key == "mode") {
-                    out["form"] = "expanded";
-                    out["form_reason"] = reason;
-                }
-            }
-            document = out.dump(2) + "\n";
+            // After the top-level "mode" line of the document (dump(2): two spaces, never
+            // the last key). Inserted as text: parsing and dumping the expanded Panda's
+            // 23 MB again took 0.2 s.
+            const std::string mode = "\n  \"mode\": ";
+            const std::size_t at = document.find(mode);
+            const std::size_t end = at == std::string::npos ? at : document.find('\n', at + 1);
+            if (end == std::string::npos || document[end - 1] != ',')
+                throw std::logic_error("announceForm: the JSON document has no top-level \"mode\" line before other keys");
+            document.insert(end + 1, "  \"form\": \"expanded\",\n  \"form_reason\": " + nlohmann::json(reason).dump() + ",\n");
             break;
         }
         case symbolic::DocumentFormat::Text: {
