@@ -196,13 +196,22 @@ bool writePdf(const symbolic::DisplayDocument& document, const QString& path, st
     std::deque<std::vector<PlacedBox>> ready;
     bool laidOut = false, stop = false;
     std::exception_ptr failure;
+    // Written pages go back to the layout thread, which frees them (outside the lock) and
+    // reuses their memory: it is that thread's malloc arena, and freeing it from this
+    // thread took the arena's lock while layout allocated in it (each thread ran at
+    // half speed).
+    std::vector<std::vector<PlacedBox>> written;
     std::thread layout([&] {
         try {
             paginate(document, format, [&](std::vector<PlacedBox>&& page) {
-                std::lock_guard lock(mutex);
-                if (stop) throw Cancelled{};
-                ready.push_back(std::move(page));
-                changed.notify_one();
+                std::vector<std::vector<PlacedBox>> done;
+                {
+                    std::lock_guard lock(mutex);
+                    if (stop) throw Cancelled{};
+                    ready.push_back(std::move(page));
+                    done.swap(written);
+                    changed.notify_one();
+                }
             });
         } catch (const Cancelled&) {
         } catch (...) {
@@ -225,10 +234,6 @@ bool writePdf(const symbolic::DisplayDocument& document, const QString& path, st
         }
     } join{layout, mutex, stop};
     int pages = 0;
-    // Written pages are freed at the end, not here: their memory belongs to the layout
-    // thread's malloc arena, and freeing it from this thread took that arena's lock
-    // while layout allocated in it (each thread ran at half speed).
-    std::vector<std::vector<PlacedBox>> written;
     const bool ok = writePdfOf(
         format,
         [&](std::vector<PlacedBox>& page) {
