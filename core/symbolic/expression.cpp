@@ -352,12 +352,18 @@ const std::set<std::string>& availableFunctions() {
     return names;
 }
 
-void checkFunctions(const std::string& field, const PreparedExpression& source) {
-    static const std::set<std::string> known = [] {
-        std::set<std::string> names;
-        for (const auto& [prototype, reader] : GiNaC::get_default_reader()) names.insert(prototype.first);
-        return names;
+// Every function GiNaC's parser reads (about 50).
+const std::set<std::string>& ginacFunctionNames() {
+    static const std::set<std::string> names = [] {
+        std::set<std::string> n;
+        for (const auto& [prototype, reader] : GiNaC::get_default_reader()) n.insert(prototype.first);
+        return n;
     }();
+    return names;
+}
+
+void checkFunctions(const std::string& field, const PreparedExpression& source) {
+    const std::set<std::string>& known = ginacFunctionNames();
     const std::string& text = source.text;
     for (std::size_t i = 0; i < text.size();) {
         if (!std::isalpha(static_cast<unsigned char>(text[i])) || (i > 0 && isIdentifierChar(text[i - 1]))) {
@@ -399,7 +405,7 @@ GiNaC::symtab withConstants(GiNaC::symtab symbols) {
 const std::set<std::string>& reservedWords() {
     static const std::set<std::string> words = [] {
         std::set<std::string> w{"pi", "Pi", "I", "Euler", "Catalan", "t", "deg_unit_"};
-        for (const auto& [prototype, reader] : GiNaC::get_default_reader()) w.insert(prototype.first);
+        w.insert(ginacFunctionNames().begin(), ginacFunctionNames().end());
         return w;
     }();
     return words;
