@@ -38,7 +38,7 @@ std::vector<MathBox> wrapped(const QString& text, double size, double maxWidth, 
 class Composer {
 public:
     Composer(const PageFormat& format, const PageSink& sink) : sink_(sink) {
-        const double u = mathUnitsPerEm / format.fontPt;
+        const double u = format.unitsPerPt();
         width_ = (format.widthPt - 2 * format.marginPt) * u;
         bottom_ = (format.heightPt - format.marginPt) * u;
         left_ = top_ = format.marginPt * u;
@@ -124,7 +124,7 @@ void paginate(const symbolic::DisplayDocument& document, const PageFormat& forma
 namespace {
 
 void paintBoxes(QPainter& painter, const std::vector<PlacedBox>& page, const PageFormat& format, double devicePerPt) {
-    const double scale = devicePerPt * format.fontPt / mathUnitsPerEm;
+    const double scale = devicePerPt / format.unitsPerPt();
     painter.setPen(Qt::black);
     for (const PlacedBox& b : page) paintMath(painter, b.box, b.origin * scale, scale);
 }

@@ -20,6 +20,7 @@ struct PageFormat {
     double widthPt = 842, heightPt = 595;  // A4 landscape: long entries need the width
     double marginPt = 42;
     double fontPt = 11;                    // the em of the formulas
+    double unitsPerPt() const { return mathUnitsPerEm / fontPt; }  // layout units per point
 };
 
 struct PlacedBox {
@@ -30,7 +31,6 @@ struct PlacedBox {
 struct DerivationPages {
     PageFormat format;
     std::vector<std::vector<PlacedBox>> pages;
-    double unitsPerPt() const { return mathUnitsPerEm / format.fontPt; }
 };
 
 DerivationPages paginate(const symbolic::DisplayDocument& document, const PageFormat& format = {});
