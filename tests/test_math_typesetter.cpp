@@ -16,6 +16,7 @@
 
 #include "ui/derivation_pages.hpp"
 #include "ui/math_typesetter.hpp"
+#include "pdf_streams.hpp"
 
 using namespace ll;
 using namespace ll::symbolic;
@@ -78,28 +79,12 @@ const DisplayNode* moreTerms(const DisplayNode& sum) {
     return last.kind == DisplayKind::Raw && last.text.find("more terms") != std::string::npos ? &last : nullptr;
 }
 
-// The text objects (BT … ET) in a PDF's content streams, inflated with qUncompress.
+// The text objects (BT … ET) in a PDF's content streams.
 int pdfTextObjects(const QByteArray& pdf) {
     int objects = 0;
-    for (qsizetype at = 0; (at = pdf.indexOf("stream", at)) >= 0;) {
-        qsizetype start = at + 6;
-        if (pdf.mid(start, 2) == "\r\n") start += 2;
-        else if (pdf.at(start) == '\n') start += 1;
-        else {  // "endstream"
-            at = start;
-            continue;
-        }
-        const qsizetype end = pdf.indexOf("endstream", start);
-        if (end < 0) break;
-        at = end + 9;
-        if (quint8(pdf.at(start)) != 0x78) continue;  // not deflated (the XMP metadata)
-        QByteArray sized("\x00\x10\x00\x00", 4);  // qUncompress's size hint (it grows as needed)
-        sized += pdf.mid(start, end - start);
-        objects += int(qUncompress(sized).count("BT\n"));
-    }
+    for (const QByteArray& stream : test::inflatedStreams(pdf)) objects += int(stream.count("BT\n"));
     return objects;
 }
-
 
 }  // namespace
 

@@ -17,6 +17,7 @@
 #include "core/pipeline/display_derivation.hpp"
 #include "ui/derivation_pages.hpp"
 #include "ui/math_typesetter.hpp"
+#include "pdf_streams.hpp"
 
 using namespace ll;
 
@@ -27,24 +28,13 @@ std::shared_ptr<const symbolic::DisplayDocument> documentOf(const char* example)
     return deriveDisplay(scene, DocumentRequest{}).display;
 }
 
-// The PDF's streams inflated (pages' drawing, font subsets, their character maps), in
-// file order: everything it shows, without its creation date. Read here, not by
-// pdftotext: under ThreadSanitizer a process that has run threads may not fork.
+// The PDF's streams inflated (tests/pdf_streams.hpp): everything it shows, without its
+// creation date. Read here, not by pdftotext: under ThreadSanitizer a process that has
+// run threads may not fork.
 QList<QByteArray> streamsOf(const QString& path) {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) return {};
-    const QByteArray pdf = file.readAll();
-    QList<QByteArray> streams;
-    for (qsizetype at = 0; (at = pdf.indexOf("stream\n", at)) >= 0;) {
-        const qsizetype start = at + 7, end = pdf.indexOf("endstream", start);
-        if (end < 0) break;
-        at = end + 9;
-        if (quint8(pdf.at(start)) != 0x78) continue;  // not deflated: the XMP metadata (its date)
-        QByteArray sized("\x00\x10\x00\x00", 4);    // qUncompress's size hint; it grows as needed
-        sized += pdf.mid(start, end - start);
-        streams.push_back(qUncompress(sized));
-    }
-    return streams;
+    return test::inflatedStreams(file.readAll());
 }
 
 // Pages: content streams begin by setting the graphics state and flipping y.
