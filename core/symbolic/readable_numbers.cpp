@@ -2,24 +2,34 @@
 
 namespace ll::symbolic {
 
-bool isDecimalFraction(const GiNaC::numeric& v) {
-    if (!v.is_rational() || v.is_integer()) return false;
-    GiNaC::numeric d = v.denom();
-    for (int p : {2, 5})
-        while (GiNaC::irem(d, p).is_zero()) d = d / p;
-    return d.is_equal(1) && v.denom() > 8;
-}
-
 namespace {
+
+// Whether a positive integer has no prime factor but 2 and 5. Denominators are checked
+// for every number of every printed expression (thousands of terms in an expanded
+// entry), so those that fit a machine word are not divided as bignums.
+bool onlyTwosAndFives(const GiNaC::numeric& d) {
+    if (d.int_length() < 63) {
+        unsigned long long n = static_cast<unsigned long long>(d.to_long());
+        while (n % 2 == 0) n /= 2;
+        while (n % 5 == 0) n /= 5;
+        return n == 1;
+    }
+    GiNaC::numeric r = d;
+    for (int p : {2, 5})
+        while (GiNaC::irem(r, p).is_zero()) r = r / p;
+    return r.is_equal(1);
+}
 
 // A fraction whose decimal expansion ends (denominator 2^a 5^b): 1/5 = 0.2, 3/8 = 0.375.
 bool terminates(const GiNaC::numeric& v) {
-    if (!v.is_rational() || v.is_integer()) return false;
-    GiNaC::numeric d = v.denom();
-    for (int p : {2, 5})
-        while (GiNaC::irem(d, p).is_zero()) d = d / p;
-    return d.is_equal(1);
+    return v.is_rational() && !v.is_integer() && onlyTwosAndFives(v.denom());
 }
+
+}  // namespace
+
+bool isDecimalFraction(const GiNaC::numeric& v) { return terminates(v) && v.denom() > 8; }
+
+namespace {
 
 bool hasDecimal(const GiNaC::ex& e) {
     if (GiNaC::is_a<GiNaC::numeric>(e)) return isDecimalFraction(GiNaC::ex_to<GiNaC::numeric>(e));
