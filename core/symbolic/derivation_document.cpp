@@ -6,13 +6,12 @@
 #include <sstream>
 #include <unordered_map>
 
-#include <nlohmann/json.hpp>
-
 #include "core/model/actuation.hpp"
 #include "core/model/cancellation.hpp"
 #include "core/symbolic/angle_sums.hpp"
 #include "core/symbolic/expression_printer.hpp"
 #include "core/symbolic/ginac_lock.hpp"
+#include "core/symbolic/json_writer.hpp"
 #include "core/symbolic/latex_formula.hpp"
 #include "core/symbolic/readable_numbers.hpp"
 #include "core/symbolic/trig_context.hpp"
@@ -215,27 +214,25 @@ std::size_t widestLine(const std::string& s) {
 // Plain (re-parsable) from the displayed tree: a matrix as rows of entries (a column
 // as a list), an equation as "lhs = rhs". The displayed form has the same value as the
 // derived one (grouping and angle sums keep it; decimals print with 17 digits).
-nlohmann::json plainJson(const DisplayNode& value) {
+void writePlain(JsonWriter& json, const DisplayNode& value) {
     auto plain = [](const DisplayNode& e) { return renderDisplay(e, DisplayStyle::Plain); };
-    if (value.kind == DisplayKind::Matrix) {
-        nlohmann::json rows = nlohmann::json::array();
-        for (const auto& r : value.rows) {
-            if (r.size() == 1) {
-                rows.push_back(plain(*r[0]));
-                continue;
-            }
-            nlohmann::json row = nlohmann::json::array();
-            for (const DisplayPtr& c : r) row.push_back(plain(*c));
-            rows.push_back(row);
+    if (value.kind != DisplayKind::Matrix) return json.value(plain(value));
+    json.beginArray();
+    for (const auto& r : value.rows) {
+        if (r.size() == 1) {
+            json.value(plain(*r[0]));
+            continue;
         }
-        return rows;
+        json.beginArray();
+        for (const DisplayPtr& c : r) json.value(plain(*c));
+        json.endArray();
     }
-    return plain(value);
+    json.endArray();
 }
 
-nlohmann::json plainJson(const DisplayItem& item) {
-    if (item.name.rfind("equation_", 0) == 0) return renderDisplay(*item.equation, DisplayStyle::Plain);
-    return plainJson(*item.value);
+void writePlain(JsonWriter& json, const DisplayItem& item) {
+    if (item.name.rfind("equation_", 0) == 0) return json.value(renderDisplay(*item.equation, DisplayStyle::Plain));
+    writePlain(json, *item.value);
 }
 
 // Plain text for a LaTeX paragraph: < and _ would print as ¡ or start a subscript.
@@ -275,45 +272,67 @@ void writeLatex(const DisplayDocument& d, std::ostream& out) {
 }
 
 void writeJson(const Derivation& d, const DisplayDocument& shown, const DisplayResults& results, const std::string& mode,
-               std::ostream& out) {
-    nlohmann::ordered_json j;
-    j["system"] = d.systemName;
-    j["mode"] = mode;
-    j["coordinates"] = d.coordinateNames;
-    nlohmann::ordered_json steps = nlohmann::ordered_json::array();
+               std::string& out) {
+    JsonWriter json(out);
+    json.beginObject();
+    json.key("system");
+    json.value(d.systemName);
+    json.key("mode");
+    json.value(mode);
+    json.key("coordinates");
+    json.value(d.coordinateNames);
+    json.key("steps");
+    json.beginArray();
     for (std::size_t k = 0; k < d.steps.size(); ++k) {
         const DerivationStep& step = d.steps[k];
-        nlohmann::ordered_json s;
-        s["number"] = step.number;
-        s["title"] = step.title;
-        s["formula"] = {{"text", step.formulaText}, {"latex", step.formulaLatex}};
-        s["seconds"] = step.seconds;
-        nlohmann::ordered_json items = nlohmann::ordered_json::array();
+        json.beginObject();
+        json.key("number");
+        json.value(step.number);
+        json.key("title");
+        json.value(step.title);
+        json.key("formula");
+        json.beginObject();
+        json.key("text");
+        json.value(step.formulaText);
+        json.key("latex");
+        json.value(step.formulaLatex);
+        json.endObject();
+        json.key("seconds");
+        json.value(step.seconds);
+        json.key("items");
+        json.beginArray();
         for (std::size_t i = 0; i < step.items.size(); ++i) {
             const DisplayItem& item = shown.steps[k].items[i];
-            nlohmann::ordered_json it;
-            it["name"] = item.name;
-            it["latex"] = itemLatex(item);
-            it["text"] = itemText(item);
-            it["expr"] = plainJson(item);
-            items.push_back(it);
+            json.beginObject();
+            json.key("name");
+            json.value(item.name);
+            json.key("latex");
+            json.value(itemLatex(item));
+            json.key("text");
+            json.value(itemText(item));
+            json.key("expr");
+            writePlain(json, item);
+            json.endObject();
         }
-        s["items"] = items;
-        steps.push_back(s);
+        json.endArray();
+        json.endObject();
     }
-    j["steps"] = steps;
-    j["B"] = plainJson(*results.B);
-    j["C"] = plainJson(*results.C);
-    j["g"] = plainJson(*results.g);
-    j["Q"] = plainJson(*results.Q);
-    j["Ekin"] = plainJson(*results.Ekin);
-    j["Epot"] = plainJson(*results.Epot);
+    json.endArray();
+    for (const auto& [name, value] : {std::pair{"B", &results.B}, {"C", &results.C}, {"g", &results.g}, {"Q", &results.Q},
+                                      {"Ekin", &results.Ekin}, {"Epot", &results.Epot}}) {
+        json.key(name);
+        writePlain(json, **value);
+    }
     std::vector<std::string> actuated;
     for (int a : d.actuated) actuated.push_back(d.coordinateNames[a]);
-    j["actuated"] = actuated;
-    j["underactuated"] = d.underactuated;
-    j["warnings"] = d.warnings;
-    out << j.dump(2) << '\n';
+    json.key("actuated");
+    json.value(actuated);
+    json.key("underactuated");
+    json.value(d.underactuated);
+    json.key("warnings");
+    json.value(d.warnings);
+    json.endObject();
+    out += '\n';
 }
 
 const char* const massMatrixFormula =
@@ -381,9 +400,9 @@ std::string derivationDocument(const Derivation& d, DocumentFormat format, const
     const DisplayResults results{build(presenter.present("B", d.B)),       build(presenter.present("C", d.C)),
                                  build(presenter.present("g", d.g)),       build(presenter.present("Q", d.Q)),
                                  build(presenter.present("E_kin", d.Ekin)), build(presenter.present("E_pot", d.Epot))};
-    std::ostringstream out;
+    std::string out;
     writeJson(d, *shown, results, modeName, out);
-    return out.str();
+    return out;
 }
 
 }  // namespace ll::symbolic

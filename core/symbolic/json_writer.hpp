@@ -1,0 +1,53 @@
+#pragma once
+// JSON written as it is produced, byte for byte in the layout of nlohmann's dump(2)
+// (two-space indents, "key": value, [] and {} when empty, UTF-8 kept as is). The
+// derivation's JSON is tens of megabytes for an expanded 7-joint arm; building it as a
+// nlohmann document first copied every string into the document, then into the dump,
+// and took a fifth of the whole command. Strings are checked to be UTF-8 as nlohmann
+// checks them: anything else throws std::invalid_argument naming the byte.
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace ll::symbolic {
+
+class JsonWriter {
+public:
+    explicit JsonWriter(std::string& out) : out_(out) {}
+
+    void beginObject() { open('{', true); }
+    void endObject() { close('}'); }
+    void beginArray() { open('[', false); }
+    void endArray() { close(']'); }
+    // The next member of the open object; its value follows.
+    void key(std::string_view name);
+
+    void value(std::string_view s);
+    void value(const char* s) { value(std::string_view(s)); }
+    void value(long long n);
+    void value(int n) { value(static_cast<long long>(n)); }
+    void value(double x);  // as nlohmann prints it: 0.008, 1e-05, 2.0
+    void value(bool b);
+    void value(const std::vector<std::string>& strings);  // an array of them
+
+    // Whole, every object and array closed.
+    bool complete() const { return levels_.empty() && started_; }
+
+private:
+    struct Level {
+        bool object;
+        bool empty = true;
+    };
+    void open(char bracket, bool object);
+    void close(char bracket);
+    void beforeValue();
+    void newline();
+    void quoted(std::string_view s);
+
+    std::string& out_;
+    std::vector<Level> levels_;
+    bool afterKey_ = false;
+    bool started_ = false;
+};
+
+}  // namespace ll::symbolic
