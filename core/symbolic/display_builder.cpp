@@ -1,15 +1,18 @@
 #include "core/symbolic/display_builder.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cctype>
 #include <charconv>
 #include <climits>
+#include <cstdint>
 #include <cstdio>
 #include <map>
 #include <optional>
 #include <sstream>
 #include <tuple>
 #include <unordered_map>
+#include <utility>
 
 #include "core/symbolic/angle_sums.hpp"
 
@@ -262,7 +265,7 @@ struct Term {
     ex e;
     std::optional<Decomposed> d;  // none for a number
     TermKey key;
-    DisplayPtr body;  // the product without its coefficient
+    DisplayPtr shown;  // |coefficient| times the factors, built once for every sign the sum shows with
     bool negative() const {
         const numeric& c = d ? d->coef : ex_to<numeric>(e);
         return c.is_real() && c.is_negative();
@@ -363,6 +366,9 @@ private:
     ExMap<std::vector<std::pair<numeric, DisplayPtr>>> powers_;  // base^exponent, shown
     ExMap<DisplayPtr> atoms_;
     ExMap<DisplayPtr> sums_[2];  // by negate
+    std::unordered_map<const DisplayNode*, std::pair<DisplayPtr, std::string>> factorTexts_;
+    std::unordered_map<std::uint64_t, DisplayPtr> decimals_;  // a float's node, by its bits
+    std::unordered_map<long, DisplayPtr> integers_;      // a machine integer's node
 
     bool isCoordinate(const std::string& name) const {
         if (o_.coordinateNames.empty()) return startsWith(name, "q") && allDigits(name.substr(1));
@@ -390,13 +396,22 @@ private:
             Term term{t, std::nullopt, {}, nullptr};
             if (!is_a<numeric>(t)) {
                 term.d = decompose(t);
-                term.body = renderProduct(*term.d, false);
+                numeric c = term.d->coef;
+                if (c.is_real()) c = abs(c);
+                term.shown = withCoefficient(c, *term.d);
             }
             term.key = termKey(term);
             out.push_back(std::move(term));
         }
-        std::stable_sort(out.begin(), out.end(), [](const Term& a, const Term& b) { return a.key < b.key; });
-        return terms_.emplace(sum, std::move(out)).first->second;
+        // Indices sorted, then each term moved once: sorting the terms themselves moved
+        // every one of them (a product, a key, a node) several times.
+        std::vector<std::uint32_t> at(out.size());
+        for (std::uint32_t i = 0; i < at.size(); ++i) at[i] = i;
+        std::stable_sort(at.begin(), at.end(), [&](std::uint32_t a, std::uint32_t b) { return out[a].key < out[b].key; });
+        std::vector<Term> sorted;
+        sorted.reserve(out.size());
+        for (std::uint32_t i : at) sorted.push_back(std::move(out[i]));
+        return terms_.emplace(sum, std::move(sorted)).first->second;
     }
 
     TermKey termKey(const Term& t) {
@@ -407,17 +422,45 @@ private:
             return k;
         }
         k.coef = t.d->coef.is_real() ? t.d->coef.to_double() : 0.0;
-        for (const Factor& f : t.d->num)
+        // From the factors, not the term: walking a GiNaC product makes each power anew.
+        for (const Factor& f : t.d->num) {
             if (is_a<GiNaC::symbol>(f.base) && f.exp.is_pos_integer()) {
                 const SymbolInfo& i = info(ex_to<GiNaC::symbol>(f.base));
                 if (i.kind == Kind::Velocity)
                     k.velocities.insert(k.velocities.end(), f.exp.to_int(), i.indices.empty() ? 0 : i.indices.back());
             }
+            scan(f.base, k);
+            k.degree += degree(f.base) * f.exp;
+        }
+        for (const Factor& f : t.d->den) {
+            scan(f.base, k);
+            k.degree -= degree(f.base) * f.exp;
+        }
         std::sort(k.velocities.begin(), k.velocities.end());
-        scan(t.e, k);
-        k.degree = degree(t.e);
-        k.text = keyText(*t.body);
+        k.text = bodyKeyText(*t.d);
         return k;
+    }
+
+    // The Plain spelling (with c/s names) of the term without its coefficient, as
+    // renderDisplay prints the product of its factors: the order's last tie-break. Made
+    // from the factors' spellings, which recur in thousands of terms, without building
+    // the product.
+    std::string bodyKeyText(const Decomposed& d) {
+        if (!d.den.empty()) return keyText(*renderProduct(d, false));
+        if (d.num.empty()) return "1";
+        std::string s;
+        for (const Factor& f : d.num) {
+            if (!s.empty()) s += '*';
+            s += factorText(renderFactor(f));
+        }
+        return s;
+    }
+
+    // (Cached by node; the cache holds the node, so its address is not reused.)
+    const std::string& factorText(const DisplayPtr& node) {
+        auto [it, added] = factorTexts_.try_emplace(node.get());
+        if (added) it->second = {node, keyText(*node)};
+        return it->second.second;
     }
 
     // Every node, parents first (recursion: GiNaC's preorder iterator allocates a stack).
@@ -478,14 +521,29 @@ private:
                 d.num.push_back(f);
             }
         };
-        if (is_a<GiNaC::mul>(e))
+        if (is_a<GiNaC::mul>(e)) {
+            d.num.reserve(e.nops());  // grown one factor at a time, a term allocated four times
             for (const ex& x : e) one(x);
-        else
+        } else {
             one(e);
+        }
         auto order = [this](std::vector<Factor>& fs) {
             if (fs.size() < 2) return;
             // Sorted by pointers to the cached keys: a key holds a vector and a string,
             // and copying them for every factor of every term was a tenth of the printing.
+            // A term has a handful of factors: an insertion sort (stable, as only a
+            // smaller key moves a factor forward) needs no buffer, stable_sort allocates one.
+            constexpr std::size_t onStack = 32;
+            if (fs.size() <= onStack) {
+                const FactorKey* keys[onStack];
+                for (std::size_t i = 0; i < fs.size(); ++i) keys[i] = &factorKey(fs[i]);
+                for (std::size_t i = 1; i < fs.size(); ++i)
+                    for (std::size_t j = i; j > 0 && *keys[j] < *keys[j - 1]; --j) {
+                        std::swap(keys[j], keys[j - 1]);
+                        std::swap(fs[j], fs[j - 1]);
+                    }
+                return;
+            }
             std::vector<std::pair<const FactorKey*, Factor>> k;
             k.reserve(fs.size());
             for (Factor& f : fs) k.emplace_back(&factorKey(f), std::move(f));
@@ -533,14 +591,15 @@ private:
         if (auto it = cache.find(e); it != cache.end()) return it->second;
         auto n = std::make_shared<DisplayNode>();
         n->kind = DisplayKind::Sum;
-        for (const Term& t : terms(e)) {
+        const std::vector<Term>& ts = terms(e);
+        n->children.reserve(ts.size());
+        n->negative.reserve(ts.size());
+        for (const Term& t : ts) {
             n->negative.push_back(t.negative() != negate);
             if (!t.d) {
                 n->children.push_back(renderNumber(abs(ex_to<numeric>(t.e))));
             } else {
-                numeric c = t.d->coef;
-                if (c.is_real()) c = abs(c);
-                n->children.push_back(withCoefficient(c, *t.d, t.body));
+                n->children.push_back(t.shown);
             }
         }
         return cache.emplace(e, std::move(n)).first->second;
@@ -556,13 +615,25 @@ private:
             return displayRaw("(" + plain.str() + ")", "(" + latex.str() + ")", "(" + plain.str() + ")");
         }
         if (n.is_negative()) return negated(renderNumber(-n));
+        // Coefficients recur (C is made of B's, the equations of both): each is built once.
         if (n.is_integer()) {
+            const bool small = n.int_length() < 63;
+            if (small)
+                if (auto it = integers_.find(n.to_long()); it != integers_.end()) return it->second;
             const std::string s = str(n);
-            return displayNumber(s, s, s);
+            DisplayPtr node = displayNumber(s, s, s);
+            if (small) integers_.emplace(n.to_long(), node);
+            return node;
         }
         if (n.is_rational())
             return displayNode(DisplayKind::Fraction, {renderNumber(n.numer()), renderNumber(n.denom())});
         const double v = n.to_double();
+        const auto bits = std::bit_cast<std::uint64_t>(v);
+        if (auto it = decimals_.find(bits); it != decimals_.end()) return it->second;
+        return decimals_[bits] = decimalNode(v);
+    }
+
+    static DisplayPtr decimalNode(double v) {
         const std::string s = readable(v), plain = seventeen(v);
         const auto e = s.find('e');
         if (e == std::string::npos) return displayNumber(s, s, plain);
@@ -745,26 +816,18 @@ private:
 
     // The product as decomposed (its sign is the caller's: coef ≥ 0 here).
     DisplayPtr renderProduct(const Decomposed& d, bool withCoef = true) {
-        return withCoefficient(withCoef ? d.coef : numeric(1), d, nullptr);
+        return withCoefficient(withCoef ? d.coef : numeric(1), d);
     }
 
-    // c times the product of d's factors; `body` the product without coefficient when
-    // already built (a term of a sum is built once for its key and its display).
-    DisplayPtr withCoefficient(const numeric& c, const Decomposed& d, const DisplayPtr& body) {
+    // c times the product of d's factors.
+    DisplayPtr withCoefficient(const numeric& c, const Decomposed& d) {
         std::vector<DisplayPtr> num, den;
+        num.reserve(d.num.size() + 1);
         if (d.den.empty() || !c.is_rational()) {
             if (c != 1) num.push_back(renderNumber(c));  // 2, 1/2, 0.5 in front
         } else {
             if (c.numer() != 1) num.push_back(renderNumber(c.numer()));
             if (c.denom() != 1) den.push_back(renderNumber(c.denom()));
-        }
-        if (body && d.den.empty()) {
-            if (num.empty()) return body;
-            if (body->kind == DisplayKind::Product)
-                num.insert(num.end(), body->children.begin(), body->children.end());
-            else
-                num.push_back(body);
-            return productOf(std::move(num));
         }
         for (const Factor& f : d.num) num.push_back(renderFactor(f));
         for (const Factor& f : d.den) den.push_back(renderFactor(f));
