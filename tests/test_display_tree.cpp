@@ -235,6 +235,51 @@ private slots:
         QVERIFY2(listing.find("= 0\n") == std::string::npos && listing.find("= 0", listing.size() - 3) == std::string::npos, listing.c_str());
     }
 
+    // itemText decides block or listing without writing the block when an entry alone
+    // is too wide (a lower bound of its columns). Around the 160-column edge, with sums
+    // of n one-column terms (4n − 3 columns) bare, negated and inside a product's
+    // parentheses, the decision is the one the written block gives.
+    void wideEntryShortcutAgreesWithTheBlock() {
+        auto columns = [](const std::string& s) {
+            int widest = 0;
+            for (const QString& line : QString::fromStdString(s).split('\n')) {
+                int n = 0;
+                for (QChar c : line) n += !(c.unicode() >= 0x0300 && c.unicode() <= 0x036F) && !c.isLowSurrogate();
+                widest = std::max(widest, n);
+            }
+            return widest;
+        };
+        const DisplayPtr zero = displayNumber("0", "0", "0"), x = displaySymbolName("x");
+        int blocks = 0, listings = 0;
+        for (int n = 36; n <= 46; ++n)
+            for (int shape = 0; shape < 3; ++shape) {
+                std::vector<DisplayPtr> terms;
+                for (int k = 0; k < n; ++k) terms.push_back(displayNumber(std::to_string(k % 10), "d", "d"));
+                DisplayPtr entry = displaySumOf(terms);
+                if (shape == 1) {  // −0 − 1 + 2 − 3 …: a leading minus, minus signs between
+                    auto signs = std::make_shared<DisplayNode>(*entry);
+                    for (std::size_t k = 0; k < signs->negative.size(); ++k) signs->negative[k] = k % 2 == 0;
+                    entry = signs;
+                }
+                if (shape == 2) entry = displayNode(DisplayKind::Product, {x, displayNode(DisplayKind::Fence, {entry})});
+                auto matrix = std::make_shared<DisplayNode>();
+                matrix->kind = DisplayKind::Matrix;
+                matrix->rows = {{entry, zero}, {zero, x}};
+                DisplayItem item{"M", "M", displayEquation(displayRaw("M", "M", "M"), matrix), matrix, {}};
+                const std::string block = renderDisplay(*item.equation, DisplayStyle::Text), text = itemText(item);
+                if (columns(block) <= int(maxTextMatrixRow)) {
+                    QCOMPARE(QString::fromStdString(text), QString::fromStdString(block));
+                    ++blocks;
+                } else {
+                    const std::string expected = "M (2×2), entry by entry, the zeros left out:\n  m11 = " +
+                                                 renderDisplay(*entry, DisplayStyle::Text) + "\n  m22 = x";
+                    QCOMPARE(QString::fromStdString(text), QString::fromStdString(expected));
+                    ++listings;
+                }
+            }
+        QVERIFY(blocks >= 6 && listings >= 6);  // both sides of the edge were reached
+    }
+
     // Plain from the display tree parses back to the same value (the whole document's
     // `expr` comes from it).
     void plainOfDisplayedReparses() {

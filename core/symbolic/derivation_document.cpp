@@ -361,9 +361,35 @@ std::shared_ptr<const DisplayDocument> shapeDocument(const Derivation& d, Presen
 
 }  // namespace
 
+// A lower bound of the columns a node takes in Text, counted no further than `limit`:
+// every symbol or number at least one column, " + " between terms, a space between
+// factors, parentheses around a fence.
+std::size_t textColumnsAtLeast(const DisplayNode& n, std::size_t limit) {
+    std::size_t count = 0;
+    auto add = [&](std::size_t k) { count = std::min(limit, count + k); };
+    switch (n.kind) {
+    case DisplayKind::Sum:
+    case DisplayKind::Product:
+        for (std::size_t i = 0; i < n.children.size() && count < limit; ++i)
+            add(textColumnsAtLeast(*n.children[i], limit - count) + (i ? (n.kind == DisplayKind::Sum ? 3 : 1) : 0));
+        return count;
+    case DisplayKind::Fence: return std::min(limit, textColumnsAtLeast(*n.children[0], limit) + 2);
+    default: return 1;
+    }
+}
+
 std::string itemText(const DisplayItem& item) {
-    const std::string whole = renderDisplay(*item.equation, DisplayStyle::Text);
-    if (item.value->kind != DisplayKind::Matrix || widestLine(whole) <= maxTextMatrixRow) return whole;
+    // A block whose entry alone is wider than a row may be is listed entry by entry
+    // without being written as a block first (the expanded Panda's C: megabytes).
+    bool tooWide = false;
+    if (item.value->kind == DisplayKind::Matrix)
+        for (const auto& row : item.value->rows)
+            for (const DisplayPtr& cell : row)
+                tooWide = tooWide || textColumnsAtLeast(*cell, maxTextMatrixRow + 1) > maxTextMatrixRow;
+    if (!tooWide) {
+        std::string whole = renderDisplay(*item.equation, DisplayStyle::Text);
+        if (item.value->kind != DisplayKind::Matrix || widestLine(whole) <= maxTextMatrixRow) return whole;
+    }
     // Too wide to read as a block: the entries one by one, under the matrix's name.
     const auto& rows = item.value->rows;
     const bool column = !rows.empty() && rows[0].size() == 1;

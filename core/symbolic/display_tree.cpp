@@ -66,10 +66,15 @@ public:
 
     std::string operator()(const DisplayNode& n) const {
         switch (n.kind) {
-        case DisplayKind::Symbol: return symbol(n);
-        case DisplayKind::Number: return number(n);
-        case DisplayKind::Sum: return sum(n);
-        case DisplayKind::Product: return product(n);
+        case DisplayKind::Symbol:
+        case DisplayKind::Number:
+        case DisplayKind::Sum:
+        case DisplayKind::Product:
+        case DisplayKind::Fence: {
+            std::string s;
+            append(n, s);
+            return s;
+        }
         case DisplayKind::Fraction: return fraction(n);
         case DisplayKind::Power: return power(n);
         case DisplayKind::Root: {
@@ -78,7 +83,6 @@ public:
             if (style_ == DisplayStyle::Plain) return "sqrt(" + c + ")";
             return "√" + (displayPrecedence(*n.children[0]) < 3 ? "(" + c + ")" : c);
         }
-        case DisplayKind::Fence: return paren((*this)(*n.children[0]));
         case DisplayKind::Function: return function(n, "");
         case DisplayKind::Matrix: return matrix(n);
         case DisplayKind::Equation: return equation(n);
@@ -92,64 +96,94 @@ public:
         return {};
     }
 
+    // n's rendering added to out. Sums and products, the bulk of an expanded entry, go
+    // into one buffer: returning a string per node copied each term's text once per level.
+    void append(const DisplayNode& n, std::string& out) const {
+        switch (n.kind) {
+        case DisplayKind::Symbol: return symbol(n, out);
+        case DisplayKind::Number: return number(n, out);
+        case DisplayKind::Sum: return sum(n, out);
+        case DisplayKind::Product: return product(n, out);
+        case DisplayKind::Fence:
+            out += style_ == DisplayStyle::Latex ? "\\left(" : "(";
+            append(*n.children[0], out);
+            out += style_ == DisplayStyle::Latex ? "\\right)" : ")";
+            return;
+        default: out += (*this)(n);
+        }
+    }
+
 private:
     DisplayStyle style_;
     bool key_;
 
     bool plain() const { return style_ == DisplayStyle::Plain; }
-    std::string minus() const { return style_ == DisplayStyle::Text ? "−" : "-"; }
-    std::string paren(const std::string& s) const {
-        return style_ == DisplayStyle::Latex ? "\\left(" + s + "\\right)" : "(" + s + ")";
+
+    void symbol(const DisplayNode& n, std::string& out) const {
+        if (plain()) {
+            out += key_ ? n.name : n.plain;
+        } else if (style_ == DisplayStyle::Text) {
+            out += n.dots ? withDots(n.text, n.dots) : n.text;
+            out += n.subText;
+            out += n.supText;
+        } else {
+            if (n.dots) out += n.dots == 1 ? "\\dot{" : "\\ddot{";
+            out += n.latex;
+            if (n.dots) out += '}';
+            if (!n.subLatex.empty()) out += "_{" + n.subLatex + "}";
+            if (!n.supLatex.empty()) out += "^{" + n.supLatex + "}";
+        }
     }
 
-    std::string symbol(const DisplayNode& n) const {
-        if (plain()) return key_ ? n.name : n.plain;
-        if (style_ == DisplayStyle::Text) return withDots(n.text, n.dots) + n.subText + n.supText;
-        std::string head = n.latex;
-        if (n.dots) head = (n.dots == 1 ? "\\dot{" : "\\ddot{") + head + "}";
-        if (!n.subLatex.empty()) head += "_{" + n.subLatex + "}";
-        if (!n.supLatex.empty()) head += "^{" + n.supLatex + "}";
-        return head;
+    void number(const DisplayNode& n, std::string& out) const {
+        if (plain()) {
+            out += n.plain;
+        } else if (n.exponent.empty()) {
+            out += style_ == DisplayStyle::Latex ? n.latex : n.text;
+        } else if (style_ == DisplayStyle::Latex) {
+            out += n.latex + " \\cdot 10^{" + n.exponent + "}";
+        } else {
+            out += n.text + "·10" + superscript(n.exponent);
+        }
     }
 
-    std::string number(const DisplayNode& n) const {
-        if (plain()) return n.plain;
-        if (n.exponent.empty()) return style_ == DisplayStyle::Latex ? n.latex : n.text;
-        if (style_ == DisplayStyle::Latex) return n.latex + " \\cdot 10^{" + n.exponent + "}";
-        return n.text + "·10" + superscript(n.exponent);
-    }
-
-    std::string sum(const DisplayNode& n) const {
-        std::string s;
+    void sum(const DisplayNode& n, std::string& out) const {
+        const char* const minus = style_ == DisplayStyle::Text ? "−" : "-";
         for (std::size_t i = 0; i < n.children.size(); ++i) {
             const bool neg = n.negative[i];
-            if (i == 0)
-                s += neg ? minus() : "";
-            else
-                s += plain() ? (neg ? "-" : "+") : (neg ? " " + minus() + " " : " + ");
-            s += (*this)(*n.children[i]);
+            if (i == 0) {
+                if (neg) out += minus;
+            } else if (plain()) {
+                out += neg ? '-' : '+';
+            } else if (neg) {
+                out += ' ';
+                out += minus;
+                out += ' ';
+            } else {
+                out += " + ";
+            }
+            append(*n.children[i], out);
         }
-        return s;
     }
 
     // * in Plain; a space (· before a digit) in Text; in LaTeX a space, \, beside
-    // functions and words, \cdot before a digit.
-    std::string product(const DisplayNode& n) const {
-        std::string s, previous;
+    // functions and words, \cdot before a digit. (The separator goes in once the
+    // factor is written and its first character known.)
+    void product(const DisplayNode& n, std::string& out) const {
         for (std::size_t i = 0; i < n.children.size(); ++i) {
-            const std::string piece = (*this)(*n.children[i]);
-            if (i > 0) {
-                const bool digit = !piece.empty() && piece[0] >= '0' && piece[0] <= '9';
-                if (plain())
-                    s += "*";
-                else if (style_ == DisplayStyle::Text)
-                    s += digit ? "·" : " ";
-                else
-                    s += digit ? " \\cdot " : (isWord(*n.children[i]) || isWord(*n.children[i - 1]) ? "\\, " : " ");
-            }
-            s += piece;
+            const std::size_t at = out.size();
+            append(*n.children[i], out);
+            if (i == 0) continue;
+            const bool digit = out.size() > at && out[at] >= '0' && out[at] <= '9';
+            const char* separator;
+            if (plain())
+                separator = "*";
+            else if (style_ == DisplayStyle::Text)
+                separator = digit ? "·" : " ";
+            else
+                separator = digit ? " \\cdot " : (isWord(*n.children[i]) || isWord(*n.children[i - 1]) ? "\\, " : " ");
+            out.insert(at, separator);
         }
-        return s;
     }
 
     std::string fraction(const DisplayNode& n) const {
