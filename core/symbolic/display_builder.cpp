@@ -262,7 +262,7 @@ bool operator<(const TermKey& a, const TermKey& b) {
 }
 
 struct Term {
-    ex e;
+    ex e;                         // the number; for a product, the product without its coefficient
     std::optional<Decomposed> d;  // none for a number
     TermKey key;
     DisplayPtr shown;  // |coefficient| times the factors, built once for every sign the sum shows with
@@ -276,6 +276,17 @@ using FactorKey = std::tuple<int, std::vector<int>, std::string>;
 
 template <class T>
 using ExMap = std::unordered_map<ex, T, std::hash<ex>, GiNaC::ex_is_equal>;
+
+// GiNaC keeps a sum as (rest, coefficient) pairs and a number, a product as (base,
+// exponent) pairs and a coefficient; op(i) makes each term or power anew (for a sum
+// of thousands of terms, a product allocated and evaluated per term). The builder
+// reads the pairs in place: a pointer to the protected members, formed through this
+// derived class as the language allows, applies to any sum or product. No object is
+// ever cast to this class, or made.
+struct Pairs : GiNaC::expairseq {
+    static const GiNaC::epvector& of(const GiNaC::expairseq& e) { return e.*(&Pairs::seq); }
+    static const ex& overall(const GiNaC::expairseq& e) { return e.*(&Pairs::overall_coeff); }
+};
 
 class Builder {
 public:
@@ -392,14 +403,20 @@ private:
         if (auto it = terms_.find(sum); it != terms_.end()) return it->second;
         std::vector<Term> out;
         out.reserve(sum.nops());
-        for (const ex& t : sum) {
-            Term term{t, std::nullopt, {}, nullptr};
-            if (!is_a<numeric>(t)) {
-                term.d = decompose(t);
-                numeric c = term.d->coef;
-                if (c.is_real()) c = abs(c);
-                term.shown = withCoefficient(c, *term.d);
-            }
+        // The (rest, coefficient) pairs in place, in op()'s order, then the number: op(i)
+        // would make a product rest·coefficient for every term.
+        const GiNaC::add& terms = ex_to<GiNaC::add>(sum);
+        for (const GiNaC::expair& p : Pairs::of(terms)) {
+            Term term{p.rest, decompose(p.rest), {}, nullptr};
+            term.d->coef *= ex_to<numeric>(p.coeff);
+            numeric c = term.d->coef;
+            if (c.is_real()) c = abs(c);
+            term.shown = withCoefficient(c, *term.d);
+            term.key = termKey(term);
+            out.push_back(std::move(term));
+        }
+        if (const ex& number = Pairs::overall(terms); !number.is_zero()) {
+            Term term{number, std::nullopt, {}, nullptr};
             term.key = termKey(term);
             out.push_back(std::move(term));
         }
@@ -502,14 +519,7 @@ private:
     // with the leading term in *our* order positive, an odd power's sign moved to coef.
     Decomposed decompose(const ex& e) {
         Decomposed d;
-        auto one = [&](const ex& x) {
-            if (is_a<numeric>(x)) {
-                d.coef *= ex_to<numeric>(x);
-                return;
-            }
-            Factor f{x, 1};
-            if (is_a<GiNaC::power>(x) && is_a<numeric>(x.op(1)) && ex_to<numeric>(x.op(1)).is_real())
-                f = {x.op(0), ex_to<numeric>(x.op(1))};
+        auto factor = [&](Factor f) {
             if (is_a<GiNaC::add>(f.base) && f.exp.is_integer() && terms(f.base).front().negative()) {
                 f.negated = true;
                 if (f.exp.is_odd()) d.coef = -d.coef;
@@ -521,9 +531,27 @@ private:
                 d.num.push_back(f);
             }
         };
+        auto one = [&](const ex& x) {
+            if (is_a<numeric>(x)) {
+                d.coef *= ex_to<numeric>(x);
+            } else if (is_a<GiNaC::power>(x) && is_a<numeric>(x.op(1)) && ex_to<numeric>(x.op(1)).is_real()) {
+                factor({x.op(0), ex_to<numeric>(x.op(1))});
+            } else {
+                factor({x, 1});
+            }
+        };
         if (is_a<GiNaC::mul>(e)) {
-            d.num.reserve(e.nops());  // grown one factor at a time, a term allocated four times
-            for (const ex& x : e) one(x);
+            // Its (base, exponent) pairs in place, in op()'s order, then its coefficient.
+            const GiNaC::epvector& pairs = Pairs::of(ex_to<GiNaC::mul>(e));
+            d.num.reserve(pairs.size());  // grown one factor at a time, a term allocated four times
+            for (const GiNaC::expair& p : pairs) {
+                const numeric& k = ex_to<numeric>(p.coeff);
+                if (k.is_equal(1) || !k.is_real())
+                    one(k.is_equal(1) ? p.rest : GiNaC::pow(p.rest, p.coeff));  // as op() gives it
+                else
+                    factor({p.rest, k});
+            }
+            d.coef *= ex_to<numeric>(Pairs::overall(ex_to<GiNaC::mul>(e)));
         } else {
             one(e);
         }
