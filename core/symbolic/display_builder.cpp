@@ -272,6 +272,12 @@ struct Term {
     }
 };
 
+// A term of a sum as shown: its magnitude's node and its sign.
+struct ShownTerm {
+    DisplayPtr node;
+    bool negative;
+};
+
 using FactorKey = std::tuple<int, std::vector<int>, std::string>;
 
 template <class T>
@@ -371,7 +377,7 @@ private:
     std::unordered_map<unsigned, std::pair<std::string, SymbolInfo>> infoByHash_;
     std::map<std::string, DisplayPtr> symbols_;
     std::unordered_map<unsigned, DisplayPtr> symbolByHash_;
-    ExMap<std::vector<Term>> terms_;
+    ExMap<std::vector<ShownTerm>> terms_;
     ExMap<FactorKey> factorKeys_[2];  // by negated
     std::unordered_map<unsigned, FactorKey> symbolKeys_;  // by a symbol's hash
     ExMap<std::vector<std::pair<numeric, DisplayPtr>>> powers_;  // base^exponent, shown
@@ -398,8 +404,10 @@ private:
 
     // ---- order
 
-    // The terms of a sum in display order (cached: a sum factor is ordered once).
-    const std::vector<Term>& terms(const ex& sum) {
+    // The terms of a sum in display order (cached: a sum factor is ordered once). Only
+    // each term's node and sign are kept: the products and keys that ordered them are
+    // freed at once, and their memory serves the next sum.
+    const std::vector<ShownTerm>& terms(const ex& sum) {
         if (auto it = terms_.find(sum); it != terms_.end()) return it->second;
         std::vector<Term> out;
         out.reserve(sum.nops());
@@ -425,9 +433,12 @@ private:
         std::vector<std::uint32_t> at(out.size());
         for (std::uint32_t i = 0; i < at.size(); ++i) at[i] = i;
         std::stable_sort(at.begin(), at.end(), [&](std::uint32_t a, std::uint32_t b) { return out[a].key < out[b].key; });
-        std::vector<Term> sorted;
+        std::vector<ShownTerm> sorted;
         sorted.reserve(out.size());
-        for (std::uint32_t i : at) sorted.push_back(std::move(out[i]));
+        for (std::uint32_t i : at) {
+            const Term& t = out[i];
+            sorted.push_back({t.d ? t.shown : renderNumber(abs(ex_to<numeric>(t.e))), t.negative()});
+        }
         return terms_.emplace(sum, std::move(sorted)).first->second;
     }
 
@@ -520,7 +531,7 @@ private:
     Decomposed decompose(const ex& e) {
         Decomposed d;
         auto factor = [&](Factor f) {
-            if (is_a<GiNaC::add>(f.base) && f.exp.is_integer() && terms(f.base).front().negative()) {
+            if (is_a<GiNaC::add>(f.base) && f.exp.is_integer() && terms(f.base).front().negative) {
                 f.negated = true;
                 if (f.exp.is_odd()) d.coef = -d.coef;
             }
@@ -619,16 +630,12 @@ private:
         if (auto it = cache.find(e); it != cache.end()) return it->second;
         auto n = std::make_shared<DisplayNode>();
         n->kind = DisplayKind::Sum;
-        const std::vector<Term>& ts = terms(e);
+        const std::vector<ShownTerm>& ts = terms(e);
         n->children.reserve(ts.size());
         n->negative.reserve(ts.size());
-        for (const Term& t : ts) {
-            n->negative.push_back(t.negative() != negate);
-            if (!t.d) {
-                n->children.push_back(renderNumber(abs(ex_to<numeric>(t.e))));
-            } else {
-                n->children.push_back(t.shown);
-            }
+        for (const ShownTerm& t : ts) {
+            n->negative.push_back(t.negative != negate);
+            n->children.push_back(t.node);
         }
         return cache.emplace(e, std::move(n)).first->second;
     }
