@@ -15,6 +15,7 @@
 #include <utility>
 
 #include "core/symbolic/angle_sums.hpp"
+#include "core/symbolic/ginac_pairs.hpp"
 
 namespace ll::symbolic {
 namespace {
@@ -283,17 +284,6 @@ using FactorKey = std::tuple<int, std::vector<int>, std::string>;
 template <class T>
 using ExMap = std::unordered_map<ex, T, std::hash<ex>, GiNaC::ex_is_equal>;
 
-// GiNaC keeps a sum as (rest, coefficient) pairs and a number, a product as (base,
-// exponent) pairs and a coefficient; op(i) makes each term or power anew (for a sum
-// of thousands of terms, a product allocated and evaluated per term). The builder
-// reads the pairs in place: a pointer to the protected members, formed through this
-// derived class as the language allows, applies to any sum or product. No object is
-// ever cast to this class, or made.
-struct Pairs : GiNaC::expairseq {
-    static const GiNaC::epvector& of(const GiNaC::expairseq& e) { return e.*(&Pairs::seq); }
-    static const ex& overall(const GiNaC::expairseq& e) { return e.*(&Pairs::overall_coeff); }
-};
-
 class Builder {
 public:
     explicit Builder(const DisplayOptions& o) : o_(o) { n_ = static_cast<int>(o.coordinateNames.size()); }
@@ -412,9 +402,9 @@ private:
         std::vector<Term> out;
         out.reserve(sum.nops());
         // The (rest, coefficient) pairs in place, in op()'s order, then the number: op(i)
-        // would make a product rest·coefficient for every term.
+        // would make a product rest·coefficient for every term (core/symbolic/ginac_pairs).
         const GiNaC::add& terms = ex_to<GiNaC::add>(sum);
-        for (const GiNaC::expair& p : Pairs::of(terms)) {
+        for (const GiNaC::expair& p : GinacPairs::of(terms)) {
             Term term{p.rest, decompose(p.rest), {}, nullptr};
             term.d->coef *= ex_to<numeric>(p.coeff);
             numeric c = term.d->coef;
@@ -423,7 +413,7 @@ private:
             term.key = termKey(term);
             out.push_back(std::move(term));
         }
-        if (const ex& number = Pairs::overall(terms); !number.is_zero()) {
+        if (const ex& number = GinacPairs::number(terms); !number.is_zero()) {
             Term term{number, std::nullopt, {}, nullptr};
             term.key = termKey(term);
             out.push_back(std::move(term));
@@ -553,7 +543,7 @@ private:
         };
         if (is_a<GiNaC::mul>(e)) {
             // Its (base, exponent) pairs in place, in op()'s order, then its coefficient.
-            const GiNaC::epvector& pairs = Pairs::of(ex_to<GiNaC::mul>(e));
+            const GiNaC::epvector& pairs = GinacPairs::of(ex_to<GiNaC::mul>(e));
             d.num.reserve(pairs.size());  // grown one factor at a time, a term allocated four times
             for (const GiNaC::expair& p : pairs) {
                 const numeric& k = ex_to<numeric>(p.coeff);
@@ -562,7 +552,7 @@ private:
                 else
                     factor({p.rest, k});
             }
-            d.coef *= ex_to<numeric>(Pairs::overall(ex_to<GiNaC::mul>(e)));
+            d.coef *= ex_to<numeric>(GinacPairs::number(ex_to<GiNaC::mul>(e)));
         } else {
             one(e);
         }

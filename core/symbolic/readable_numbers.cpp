@@ -1,5 +1,9 @@
 #include "core/symbolic/readable_numbers.hpp"
 
+#include <optional>
+
+#include "core/symbolic/ginac_pairs.hpp"
+
 namespace ll::symbolic {
 
 namespace {
@@ -31,6 +35,39 @@ bool isDecimalFraction(const GiNaC::numeric& v) { return terminates(v) && v.deno
 
 namespace {
 
+// Whether a terminating fraction occurs anywhere in e (a coefficient, an exponent, a
+// number inside a function): read through sums' and products' pairs without making them.
+bool anyTerminating(const GiNaC::ex& e) {
+    if (GiNaC::is_a<GiNaC::numeric>(e)) return terminates(GiNaC::ex_to<GiNaC::numeric>(e));
+    if (GiNaC::is_a<GiNaC::add>(e) || GiNaC::is_a<GiNaC::mul>(e)) {
+        const auto& seq = GiNaC::ex_to<GiNaC::expairseq>(e);
+        for (const GiNaC::expair& p : GinacPairs::of(seq))
+            if (anyTerminating(p.rest) || anyTerminating(p.coeff)) return true;
+        return anyTerminating(GinacPairs::number(seq));
+    }
+    for (std::size_t i = 0; i < e.nops(); ++i)
+        if (anyTerminating(e.op(i))) return true;
+    return false;
+}
+
+GiNaC::ex readable(const GiNaC::numeric& v) { return terminates(v) ? v.evalf() : GiNaC::ex(v); }
+
+// A sum whose terms' rests hold no such number (an expanded entry: monomials with
+// integer powers), with only its coefficients and number made decimal: the pairs and
+// the constructor GiNaC's map would end with, without making a product per term and
+// splitting it again (map's cost on a sum of thousands of terms).
+std::optional<GiNaC::ex> withReadableCoefficients(const GiNaC::ex& e) {
+    if (!GiNaC::is_a<GiNaC::add>(e)) return std::nullopt;
+    const auto& sum = GiNaC::ex_to<GiNaC::add>(e);
+    const GiNaC::epvector& pairs = GinacPairs::of(sum);
+    for (const GiNaC::expair& p : pairs)
+        if (anyTerminating(p.rest)) return std::nullopt;
+    GiNaC::epvector shown;
+    shown.reserve(pairs.size() + 1);
+    for (const GiNaC::expair& p : pairs) shown.emplace_back(p.rest, readable(GiNaC::ex_to<GiNaC::numeric>(p.coeff)));
+    return GiNaC::ex(GiNaC::dynallocate<GiNaC::add>(std::move(shown), readable(GiNaC::ex_to<GiNaC::numeric>(GinacPairs::number(sum)))));
+}
+
 bool hasDecimal(const GiNaC::ex& e) {
     if (GiNaC::is_a<GiNaC::numeric>(e)) return isDecimalFraction(GiNaC::ex_to<GiNaC::numeric>(e));
     for (std::size_t i = 0; i < e.nops(); ++i)
@@ -56,6 +93,7 @@ GiNaC::ex readableNumbers(const GiNaC::ex& e) {
     // Without a scene decimal nothing changes (only decimal fractions would): GiNaC's map
     // rebuilds every sum and product it walks, so not walking is most of the saving.
     if (!hasDecimal(e)) return e;
+    if (auto sum = withReadableCoefficients(e)) return *sum;
     map.decimals = true;
     return map(e);
 }
