@@ -442,10 +442,13 @@ private:
         k.coef = t.d->coef.is_real() ? t.d->coef.to_double() : 0.0;
         // From the factors, not the term: walking a GiNaC product makes each power anew.
         for (const Factor& f : t.d->num) {
-            if (is_a<GiNaC::symbol>(f.base) && f.exp.is_pos_integer()) {
+            if (is_a<GiNaC::symbol>(f.base)) {  // most factors: looked up once, degree 1
                 const SymbolInfo& i = info(ex_to<GiNaC::symbol>(f.base));
-                if (i.kind == Kind::Velocity)
+                if (i.kind == Kind::Velocity && f.exp.is_pos_integer())
                     k.velocities.insert(k.velocities.end(), f.exp.to_int(), i.indices.empty() ? 0 : i.indices.back());
+                note(i, k);
+                k.degree += f.exp;
+                continue;
             }
             scan(f.base, k);
             k.degree += degree(f.base) * f.exp;
@@ -481,15 +484,16 @@ private:
         return it->second.second;
     }
 
+    // What a symbol adds to a key: whether it is a c/s, and its index unless a velocity's.
+    static void note(const SymbolInfo& i, TermKey& k) {
+        if (i.kind == Kind::Trig) k.trig = true;
+        if (i.kind != Kind::Velocity && !i.indices.empty())
+            k.maxIndex = std::max(k.maxIndex, *std::max_element(i.indices.begin(), i.indices.end()));
+    }
+
     // Every node, parents first (recursion: GiNaC's preorder iterator allocates a stack).
     void scan(const ex& e, TermKey& k) {
-        if (is_a<GiNaC::symbol>(e)) {
-            const SymbolInfo& i = info(ex_to<GiNaC::symbol>(e));
-            if (i.kind == Kind::Trig) k.trig = true;
-            if (i.kind != Kind::Velocity && !i.indices.empty())
-                k.maxIndex = std::max(k.maxIndex, *std::max_element(i.indices.begin(), i.indices.end()));
-            return;
-        }
+        if (is_a<GiNaC::symbol>(e)) return note(info(ex_to<GiNaC::symbol>(e)), k);
         if (is_a<GiNaC::function>(e)) {
             const std::string& name = ex_to<GiNaC::function>(e).get_name();
             if (name == "sin" || name == "cos" || name == "tan") k.trig = true;
