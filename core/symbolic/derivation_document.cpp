@@ -5,6 +5,7 @@
 #include <map>
 #include <sstream>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "core/model/actuation.hpp"
 #include "core/model/cancellation.hpp"
@@ -211,28 +212,45 @@ std::size_t widestLine(const std::string& s) {
     return std::max(widest, n);
 }
 
+// Plain renderings of the nodes JSON writes twice: B, C, g, Q and the energies are
+// items of their steps and the document's results too (the same nodes: the builder
+// shares them). Written once, kept for the second time.
+class PlainTexts {
+public:
+    explicit PlainTexts(const std::vector<const DisplayNode*>& twice) : twice_(twice.begin(), twice.end()) {}
+    void write(JsonWriter& json, const DisplayNode& n) {
+        if (!twice_.count(&n)) return json.value(renderDisplay(n, DisplayStyle::Plain));
+        auto [it, added] = kept_.try_emplace(&n);
+        if (added) it->second = renderDisplay(n, DisplayStyle::Plain);
+        json.value(it->second);
+    }
+
+private:
+    std::unordered_set<const DisplayNode*> twice_;
+    std::unordered_map<const DisplayNode*, std::string> kept_;
+};
+
 // Plain (re-parsable) from the displayed tree: a matrix as rows of entries (a column
 // as a list), an equation as "lhs = rhs". The displayed form has the same value as the
 // derived one (grouping and angle sums keep it; decimals print with 17 digits).
-void writePlain(JsonWriter& json, const DisplayNode& value) {
-    auto plain = [](const DisplayNode& e) { return renderDisplay(e, DisplayStyle::Plain); };
-    if (value.kind != DisplayKind::Matrix) return json.value(plain(value));
+void writePlain(JsonWriter& json, const DisplayNode& value, PlainTexts& plain) {
+    if (value.kind != DisplayKind::Matrix) return plain.write(json, value);
     json.beginArray();
     for (const auto& r : value.rows) {
         if (r.size() == 1) {
-            json.value(plain(*r[0]));
+            plain.write(json, *r[0]);
             continue;
         }
         json.beginArray();
-        for (const DisplayPtr& c : r) json.value(plain(*c));
+        for (const DisplayPtr& c : r) plain.write(json, *c);
         json.endArray();
     }
     json.endArray();
 }
 
-void writePlain(JsonWriter& json, const DisplayItem& item) {
+void writePlain(JsonWriter& json, const DisplayItem& item, PlainTexts& plain) {
     if (item.name.rfind("equation_", 0) == 0) return json.value(renderDisplay(*item.equation, DisplayStyle::Plain));
-    writePlain(json, *item.value);
+    writePlain(json, *item.value, plain);
 }
 
 // Plain text for a LaTeX paragraph: < and _ would print as ¡ or start a subscript.
@@ -273,6 +291,13 @@ void writeLatex(const DisplayDocument& d, std::ostream& out) {
 
 void writeJson(const Derivation& d, const DisplayDocument& shown, const DisplayResults& results, const std::string& mode,
                std::string& out) {
+    std::vector<const DisplayNode*> twice;
+    for (const DisplayPtr& r : {results.B, results.C, results.g, results.Q, results.Ekin, results.Epot}) {
+        twice.push_back(r.get());
+        for (const auto& row : r->rows)
+            for (const DisplayPtr& cell : row) twice.push_back(cell.get());
+    }
+    PlainTexts plain(twice);
     JsonWriter json(out);
     json.beginObject();
     json.key("system");
@@ -311,7 +336,7 @@ void writeJson(const Derivation& d, const DisplayDocument& shown, const DisplayR
             json.key("text");
             json.value(itemText(item));
             json.key("expr");
-            writePlain(json, item);
+            writePlain(json, item, plain);
             json.endObject();
         }
         json.endArray();
@@ -321,7 +346,7 @@ void writeJson(const Derivation& d, const DisplayDocument& shown, const DisplayR
     for (const auto& [name, value] : {std::pair{"B", &results.B}, {"C", &results.C}, {"g", &results.g}, {"Q", &results.Q},
                                       {"Ekin", &results.Ekin}, {"Epot", &results.Epot}}) {
         json.key(name);
-        writePlain(json, **value);
+        writePlain(json, **value, plain);
     }
     std::vector<std::string> actuated;
     for (int a : d.actuated) actuated.push_back(d.coordinateNames[a]);
