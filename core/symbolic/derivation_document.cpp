@@ -217,7 +217,13 @@ std::size_t widestLine(const std::string& s) {
 // shares them). Written once, kept for the second time.
 class PlainTexts {
 public:
-    explicit PlainTexts(const std::vector<const DisplayNode*>& twice) : twice_(twice.begin(), twice.end()) {}
+    explicit PlainTexts(const DisplayResults& results) {
+        for (const DisplayPtr& r : {results.B, results.C, results.g, results.Q, results.Ekin, results.Epot}) {
+            twice_.insert(r.get());
+            for (const auto& row : r->rows)
+                for (const DisplayPtr& cell : row) twice_.insert(cell.get());
+        }
+    }
     void write(JsonWriter& json, const DisplayNode& n) {
         if (!twice_.count(&n)) return json.value(renderDisplay(n, DisplayStyle::Plain));
         auto [it, added] = kept_.try_emplace(&n);
@@ -291,13 +297,7 @@ void writeLatex(const DisplayDocument& d, std::ostream& out) {
 
 void writeJson(const Derivation& d, const DisplayDocument& shown, const DisplayResults& results, const std::string& mode,
                std::string& out) {
-    std::vector<const DisplayNode*> twice;
-    for (const DisplayPtr& r : {results.B, results.C, results.g, results.Q, results.Ekin, results.Epot}) {
-        twice.push_back(r.get());
-        for (const auto& row : r->rows)
-            for (const DisplayPtr& cell : row) twice.push_back(cell.get());
-    }
-    PlainTexts plain(twice);
+    PlainTexts plain(results);
     JsonWriter json(out);
     json.beginObject();
     json.key("system");
@@ -386,6 +386,8 @@ std::shared_ptr<const DisplayDocument> shapeDocument(const Derivation& d, Presen
 
 }  // namespace
 
+namespace {
+
 // A lower bound of the columns a node takes in Text, counted no further than `limit`:
 // every symbol or number at least one column, " + " between terms, a space between
 // factors, parentheses around a fence.
@@ -402,6 +404,8 @@ std::size_t textColumnsAtLeast(const DisplayNode& n, std::size_t limit) {
     default: return 1;
     }
 }
+
+}  // namespace
 
 std::string itemText(const DisplayItem& item) {
     // A block whose entry alone is wider than a row may be is listed entry by entry
