@@ -125,16 +125,14 @@ int deriveCommand(const Args& args) {
     const Clock::time_point startGui = Clock::now();
     const auto app = makeGuiApplication();
     if (!ui::mathFontsAvailable()) throw std::runtime_error("the Latin Modern fonts are missing: install fonts-lmodern");
-    const double guiSeconds = seconds(startGui);
+    if (options.has("timings")) std::fprintf(stderr, "fonts and Qt: %.3f ms\n", 1e3 * seconds(startGui));
     const QString out = QString::fromStdString(options.text("out"));
     std::string error;
-    std::vector<QString> written;
     if (format == "pdf") {  // laid out on a second thread while the pages are written
         const Clock::time_point start = Clock::now();
         int pageCount = 0;
         if (!ui::writePdf(*derived.display, out, error, {}, &pageCount)) throw UsageError("--out: " + error);
         if (options.has("timings")) {
-            std::fprintf(stderr, "fonts and Qt: %.3f ms\n", 1e3 * guiSeconds);
             std::fprintf(stderr, "layout and writing pdf (two threads): %.3f ms\n", 1e3 * seconds(start));
             std::fprintf(stderr, "pages: %d\n", pageCount);
         }
@@ -144,10 +142,10 @@ int deriveCommand(const Args& args) {
     const ui::DerivationPages pages = ui::paginate(*derived.display);
     const double layoutSeconds = seconds(startLayout);
     const Clock::time_point startWrite = Clock::now();
+    std::vector<QString> written;
     const bool ok = format == "svg" ? ui::writeSvg(pages, out, error, &written) : ui::writePng(pages, out, error, &written);
     if (!ok) throw UsageError("--out: " + error);
     if (options.has("timings")) {
-        std::fprintf(stderr, "fonts and Qt: %.3f ms\n", 1e3 * guiSeconds);
         std::fprintf(stderr, "layout into pages: %.3f ms\n", 1e3 * layoutSeconds);
         std::fprintf(stderr, "writing %s: %.3f ms\n", format.c_str(), 1e3 * seconds(startWrite));
         std::fprintf(stderr, "pages: %zu\n", pages.pages.size());
