@@ -5,7 +5,6 @@
 #include <QImage>
 #include <QPainter>
 #include <QPdfWriter>
-#include <QSvgGenerator>
 #include <algorithm>
 #include <condition_variable>
 #include <deque>
@@ -14,6 +13,7 @@
 #include <thread>
 
 #include "core/io/atomic_file.hpp"
+#include "ui/svg_page.hpp"
 
 namespace ll::ui {
 namespace {
@@ -137,9 +137,9 @@ void paintPage(QPainter& painter, const DerivationPages& pages, int index, doubl
 
 namespace {
 
-bool save(const QString& path, const QByteArray& bytes, std::string& error) {
+bool save(const QString& path, const std::string& bytes, std::string& error) {
     try {
-        saveFileAtomically(path.toStdString(), bytes.toStdString(), Backup::None);
+        saveFileAtomically(path.toStdString(), bytes, Backup::None);
         return true;
     } catch (const std::exception& e) {
         error = e.what();
@@ -182,7 +182,7 @@ bool writePdfOf(const PageFormat& format, NextPage&& next, const QString& path, 
             paintBoxes(painter, page, format, dpi / 72.0);
         }
     }
-    return save(path, bytes, error);
+    return save(path, bytes.toStdString(), error);
 }
 
 }  // namespace
@@ -253,24 +253,14 @@ bool writePdf(const symbolic::DisplayDocument& document, const QString& path, st
 }
 
 bool writeSvg(const DerivationPages& pages, const QString& path, std::string& error, std::vector<QString>* written) {
+    SvgGlyphs glyphs;  // each outline made once for all the pages
+    const double scale = 1.0 / (glyphs.ptPerDevice() * pages.format.unitsPerPt());
+    const QSizeF size(pages.format.widthPt, pages.format.heightPt);
     for (std::size_t i = 0; i < pages.pages.size(); ++i) {
-        QByteArray bytes;
-        QBuffer buffer(&bytes);
-        buffer.open(QIODevice::WriteOnly);
-        {
-            QSvgGenerator svg;
-            svg.setOutputDevice(&buffer);
-            const QSize size(static_cast<int>(pages.format.widthPt), static_cast<int>(pages.format.heightPt));
-            svg.setSize(size);
-            svg.setViewBox(QRect(QPoint(0, 0), size));
-            svg.setResolution(72);
-            svg.setTitle("Euler–Lagrange derivation");
-            QPainter painter(&svg);
-            painter.fillRect(QRect(QPoint(0, 0), size), Qt::white);
-            paintPage(painter, pages, static_cast<int>(i), 1.0);
-        }
+        MathMarks marks;
+        for (const PlacedBox& b : pages.pages[i]) collectMarks(b.box, b.origin * scale, scale, marks);
         const QString file = pagePath(path, static_cast<int>(i));
-        if (!save(file, bytes, error)) return false;
+        if (!save(file, svgPage(marks, size, "Euler–Lagrange derivation", glyphs), error)) return false;
         if (written) written->push_back(file);
     }
     return true;
@@ -293,7 +283,7 @@ bool writePng(const DerivationPages& pages, const QString& path, std::string& er
         buffer.open(QIODevice::WriteOnly);
         image.save(&buffer, "PNG");
         const QString file = pagePath(path, static_cast<int>(i));
-        if (!save(file, bytes, error)) return false;
+        if (!save(file, bytes.toStdString(), error)) return false;
         if (written) written->push_back(file);
     }
     return true;

@@ -3,7 +3,8 @@
 // general formula, and this system's results, one item after another; a page breaks
 // between items, never through one (only an item taller than a page is split, between
 // its lines). The same pages are written as PDF (QPdfWriter: text stays text), SVG
-// (QSvgGenerator) and PNG, headless (Qt's offscreen platform is enough).
+// (ui/svg_page: each glyph's outline defined once) and PNG, headless (Qt's offscreen
+// platform is enough).
 #include <QString>
 #include <functional>
 #include <string>

@@ -459,20 +459,23 @@ MathBox layout(const DisplayNode& n, double size) {
     return {};
 }
 
-void drawBracket(QPainter& p, const MathPiece& b, double scale) {
+// A bracket's marks in device units: rectangles for [ ] and |, a filled crescent for
+// ( ), a stroked tick for the radical sign.
+void bracketShapes(const MathPiece& b, double scale, std::vector<MathMarks::Shape>& out) {
+    using Shape = MathMarks::Shape;
     const double e = em(b.size), t = 0.045 * e;
     const QRectF r(b.at.x() * scale, b.at.y() * scale, b.width * scale, b.height * scale);
     QPainterPath path;
     const double x0 = r.left() + 0.1 * e * scale, x1 = r.right() - 0.08 * e * scale;
+    const auto rect = [&](const QRectF& box) { out.push_back({Shape::Rect, box, {}, 0}); };
     switch (b.bracket) {
     case '[':
     case ']': {
         const bool open = b.bracket == '[';
         const double stem = open ? x0 : x1, arm = open ? x1 : x0;
-        p.fillRect(QRectF(std::min(stem, stem + (open ? 0 : -t * scale)), r.top(), t * scale, r.height()), p.pen().color());
-        p.fillRect(QRectF(std::min(stem, arm), r.top(), std::abs(arm - stem), t * scale * 0.9), p.pen().color());
-        p.fillRect(QRectF(std::min(stem, arm), r.bottom() - t * scale * 0.9, std::abs(arm - stem), t * scale * 0.9),
-                   p.pen().color());
+        rect(QRectF(std::min(stem, stem + (open ? 0 : -t * scale)), r.top(), t * scale, r.height()));
+        rect(QRectF(std::min(stem, arm), r.top(), std::abs(arm - stem), t * scale * 0.9));
+        rect(QRectF(std::min(stem, arm), r.bottom() - t * scale * 0.9, std::abs(arm - stem), t * scale * 0.9));
         return;
     }
     case '(':
@@ -485,23 +488,18 @@ void drawBracket(QPainter& p, const MathPiece& b, double scale) {
         path.quadTo(bulge, mid, tip, r.bottom());
         path.quadTo(bulge + dir * 2.2 * t * scale, mid, tip, r.top());
         path.closeSubpath();
-        p.fillPath(path, p.pen().color());
+        out.push_back({Shape::Fill, {}, path, 0});
         return;
     }
     case '|':
-        p.fillRect(QRectF(r.center().x() - t * scale / 2, r.top(), t * scale, r.height()), p.pen().color());
+        rect(QRectF(r.center().x() - t * scale / 2, r.top(), t * scale, r.height()));
         return;
     case 'r': {  // radical sign
-        QPen pen = p.pen();
-        pen.setWidthF(t * scale);
-        p.save();
-        p.setPen(pen);
         path.moveTo(r.left(), r.bottom() - r.height() * 0.35);
         path.lineTo(r.left() + r.width() * 0.3, r.bottom() - r.height() * 0.42);
         path.lineTo(r.left() + r.width() * 0.55, r.bottom());
         path.lineTo(r.right(), r.top() + t * scale / 2);
-        p.drawPath(path);
-        p.restore();
+        out.push_back({Shape::Stroke, {}, path, t * scale});
         return;
     }
     default: return;
@@ -735,25 +733,11 @@ static const QList<QGlyphRun>& shapedRuns(int which, int pixels, const QString& 
     return cache.emplace(std::move(key), std::move(runs)).first->second;
 }
 
-namespace {
-
-// Glyphs of one font at one pixel size, gathered from every piece of a box.
-struct GlyphsOfAFont {
-    QRawFont font;
-    QList<quint32> glyphs;
-    QList<QPointF> positions;
-};
-
-}  // namespace
-
-void paintMath(QPainter& painter, const MathBox& box, QPointF origin, double scale) {
-    painter.save();
-    const QColor ink = painter.pen().color();
-    // One glyph run per font and size for the whole box, drawn after the rules and
-    // brackets: a PDF or SVG pays per run (a text object with its font, colour and
-    // matrix), and a formula set letter by letter (italic m, subscript 2, roman a…) was
-    // one run per piece, 69,000 in the Panda's 71 pages.
-    std::vector<GlyphsOfAFont> fonts;
+void collectMarks(const MathBox& box, QPointF origin, double scale, MathMarks& marks) {
+    // One glyph run per font and size, however many boxes: a PDF or SVG pays per run (a
+    // text object with its font, colour and matrix), and a formula set letter by letter
+    // (italic m, subscript 2, roman a…) was one run per piece, 69,000 in the Panda's 71
+    // pages.
     for (const MathPiece& p : box.pieces) {
         switch (p.kind) {
         case MathPiece::Text: {
@@ -763,33 +747,61 @@ void paintMath(QPainter& painter, const MathBox& box, QPointF origin, double sca
             const QPointF at = p.at * scale;
             for (const QGlyphRun& run : shapedRuns(p.font, pixels, p.text)) {
                 const QRawFont raw = run.rawFont();
-                auto same = std::find_if(fonts.begin(), fonts.end(), [&](const GlyphsOfAFont& f) { return f.font == raw; });
-                if (same == fonts.end()) same = fonts.insert(fonts.end(), GlyphsOfAFont{raw, {}, {}});
-                same->glyphs.append(run.glyphIndexes());
-                for (const QPointF& position : run.positions()) same->positions.append(position + at);
+                auto same = std::find_if(marks.glyphs.begin(), marks.glyphs.end(),
+                                         [&](const MathMarks::Glyphs& g) { return g.font == raw; });
+                if (same == marks.glyphs.end()) same = marks.glyphs.insert(marks.glyphs.end(), MathMarks::Glyphs{raw, {}, {}});
+                same->indexes.append(run.glyphIndexes());
+                for (const QPointF& position : run.positions()) same->positions.append(origin + (position + at));
             }
             break;
         }
         case MathPiece::Rule:
-            painter.fillRect(QRectF(origin + p.at * scale, QSizeF(p.width * scale, p.height * scale)), ink);
+            marks.shapes.push_back({MathMarks::Shape::Rect, QRectF(origin + p.at * scale, QSizeF(p.width * scale, p.height * scale)), {}, 0});
             break;
         case MathPiece::Bracket: {
             MathPiece shifted = p;
             shifted.at = p.at + (origin / scale);
-            drawBracket(painter, shifted, scale);
+            bracketShapes(shifted, scale, marks.shapes);
             break;
         }
         }
     }
+}
+
+void paintMarks(QPainter& painter, const MathMarks& marks) {
+    painter.save();
+    const QColor ink = painter.pen().color();
+    for (const MathMarks::Shape& s : marks.shapes) {
+        switch (s.kind) {
+        case MathMarks::Shape::Rect: painter.fillRect(s.rect, ink); break;
+        case MathMarks::Shape::Fill: painter.fillPath(s.path, ink); break;
+        case MathMarks::Shape::Stroke: {
+            QPen pen = painter.pen();
+            pen.setWidthF(s.penWidth);
+            painter.save();
+            painter.setPen(pen);
+            painter.drawPath(s.path);
+            painter.restore();
+            break;
+        }
+        }
+    }
+    // After the rules and brackets, each font's glyphs as one run.
     painter.setPen(ink);
-    for (const GlyphsOfAFont& f : fonts) {
+    for (const MathMarks::Glyphs& g : marks.glyphs) {
         QGlyphRun run;
-        run.setRawFont(f.font);
-        run.setGlyphIndexes(f.glyphs);
-        run.setPositions(f.positions);
-        painter.drawGlyphRun(origin, run);
+        run.setRawFont(g.font);
+        run.setGlyphIndexes(g.indexes);
+        run.setPositions(g.positions);
+        painter.drawGlyphRun(QPointF(0, 0), run);
     }
     painter.restore();
+}
+
+void paintMath(QPainter& painter, const MathBox& box, QPointF origin, double scale) {
+    MathMarks marks;
+    collectMarks(box, origin, scale, marks);
+    paintMarks(painter, marks);
 }
 
 }  // namespace ll::ui

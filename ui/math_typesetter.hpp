@@ -3,7 +3,8 @@
 // with width, ascent and descent laid out by TeX's rules for math, in Latin Modern
 // (fonts-lmodern: Latin Modern Roman for letters and digits, Latin Modern Math for
 // Greek, operators and brackets), painted with QPainter on any device — a widget, an
-// SVG (QSvgGenerator), a PDF (QPdfWriter, text stays text), a QImage.
+// PDF (QPdfWriter, text stays text), a QImage; its marks are also written as SVG
+// (ui/svg_page).
 //
 // Units: layout is in em/40 ("units", 40 per em at size 1); paint scales them. Rules,
 // with Latin Modern Math's constants (per 1000 em): math axis 250; fraction rule 40,
@@ -15,7 +16,11 @@
 // around relations (5/18 em), medium around + and − (4/18 em), thin space beside
 // function names and words (3/18 em), none in scripts.
 #include <QFont>
+#include <QList>
+#include <QPainterPath>
 #include <QPointF>
+#include <QRawFont>
+#include <QRectF>
 #include <QString>
 #include <memory>
 #include <vector>
@@ -70,8 +75,34 @@ std::vector<MathBox> layoutFormula(const symbolic::DisplayNode& formula, double 
 // A line of prose (a step's title or general formula) in the roman or bold font.
 MathBox layoutText(const QString& text, double size = 1.0, bool bold = false);
 
-// Draws box with its origin (baseline start) at `origin`, in units scaled by `scale`
+// What boxes draw, in device units: every glyph of a font at one pixel size as one run,
+// and the rules and brackets in the boxes' order. The one description both paintMarks
+// (any QPainter) and the SVG writer (ui/svg_page) draw from.
+struct MathMarks {
+    struct Glyphs {
+        QRawFont font;  // a family and style at a pixel size
+        QList<quint32> indexes;
+        QList<QPointF> positions;  // each glyph's origin on its baseline
+    };
+    struct Shape {
+        enum Kind { Rect, Fill, Stroke } kind = Rect;
+        QRectF rect;         // Rect: filled
+        QPainterPath path;   // Fill: filled (its own fill rule); Stroke: drawn with the pen
+        double penWidth = 0; // Stroke
+    };
+    std::vector<Glyphs> glyphs;
+    std::vector<Shape> shapes;
+};
+
+// Adds box's marks, its origin (baseline start) at `origin`, in units scaled by `scale`
 // device units per layout unit.
+void collectMarks(const MathBox& box, QPointF origin, double scale, MathMarks& marks);
+
+// Paints marks in the painter's pen colour: the shapes, then the glyph runs.
+void paintMarks(QPainter& painter, const MathMarks& marks);
+
+// Draws box with its origin (baseline start) at `origin`, in units scaled by `scale`
+// device units per layout unit (collectMarks, then paintMarks).
 void paintMath(QPainter& painter, const MathBox& box, QPointF origin, double scale);
 
 // The three fonts (roman, italic, math) at a size in units; loads fonts-lmodern's files
