@@ -1,12 +1,14 @@
 // `lagrangelab bench [SCENE...] [--batches N] [--rhs | --derive | --render | --typeset]`: median times of our dynamics
-// beside KDL's solvers, measured in the same run on the same random states; with --rhs,
-// one right-hand-side evaluation with no effects, gravity only and all effects.
+// on seeded random states (app/bench_timing.hpp; KDL's solvers on the same states:
+// tests/oracle/bench_kdl.cpp); with --rhs, one right-hand-side evaluation with no
+// effects, gravity only and all effects.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <random>
 #include <thread>
 
+#include "app/bench_timing.hpp"
 #include "app/cli_options.hpp"
 #include "app/commands.hpp"
 #include "app/scene_loading.hpp"
@@ -23,59 +25,12 @@
 #include "core/symbolic/lagrangian_derivation.hpp"
 #include "core/symbolic/robot_derivation.hpp"
 #include "ui/data_directory.hpp"
-#ifdef LL_HAVE_KDL
-#include "tests/oracle/kdl_chain.hpp"
-#endif
 
 namespace ll::cli {
 namespace {
 
 // An installed example scene by name (bench's default scenes).
 std::string example(const char* name) { return (ui::examplesDirectory() / (std::string(name) + ".json")).string(); }
-
-struct States {
-    std::vector<Eigen::VectorXd> q, qd, tau;
-};
-
-States randomStates(const RobotModel& robot, int count) {
-    std::mt19937 rng(2024);
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
-    States s;
-    const int n = robot.dof();
-    for (int k = 0; k < count; ++k) {
-        Eigen::VectorXd q(n), qd(n), tau(n);
-        for (int i = 0; i < n; ++i) {
-            q[i] = robot.joints[i].dh.type == JointType::Revolute ? 3.0 * u(rng) : 0.2 * u(rng);
-            qd[i] = 2.0 * u(rng);
-            tau[i] = 5.0 * u(rng);
-        }
-        s.q.push_back(q);
-        s.qd.push_back(qd);
-        s.tau.push_back(tau);
-    }
-    return s;
-}
-
-// Median over batches of the time per call [µs]; each batch cycles through the states.
-template <class F>
-double medianMicros(int batches, int statesCount, F&& call) {
-    using clock = std::chrono::steady_clock;
-    int perBatch = 64;
-    for (;;) {  // calibrate: a batch should take about 2 ms
-        const auto start = clock::now();
-        for (int r = 0; r < perBatch; ++r) call(r % statesCount);
-        if (std::chrono::duration<double>(clock::now() - start).count() > 2e-3 || perBatch > (1 << 22)) break;
-        perBatch *= 2;
-    }
-    std::vector<double> times;
-    for (int b = 0; b < batches; ++b) {
-        const auto start = clock::now();
-        for (int r = 0; r < perBatch; ++r) call(r % statesCount);
-        times.push_back(std::chrono::duration<double, std::micro>(clock::now() - start).count() / perBatch);
-    }
-    std::nth_element(times.begin(), times.begin() + times.size() / 2, times.end());
-    return times[times.size() / 2];
-}
 
 // `bench --rhs`: one right-hand-side evaluation (RobotOde, composed from the declared
 // effects) with no effects, gravity only, and every effect, on the same states.
@@ -221,9 +176,6 @@ int benchCommand(const Args& args) {
     std::printf("median time per call [µs] over %d batches of random states; 'sim 1 s' is CPU time [ms] for one\n"
                 "simulated second with the scene's integrator and tolerances (median of 5)\n\n", batches);
     std::printf("%-24s %2s | %7s %7s %7s %7s %7s %9s", "robot", "n", "B", "C", "g", "FD", "RNEA", "sim 1 s");
-#ifdef LL_HAVE_KDL
-    std::printf(" | %9s %9s %9s %9s %9s", "KDL B", "KDL Cq̇", "KDL g", "KDL FD", "KDL RNEA");
-#endif
     std::printf("\n");
     for (const std::string& path : scenes) {
         const Scene scene = loadSceneReportingWarnings(path);
@@ -231,54 +183,19 @@ int benchCommand(const Args& args) {
         const Effects& effects = scene.effects;
         const int n = robot.dof();
         const States s = randomStates(robot, 64);
-        RobotData data(robot);
-        const int count = static_cast<int>(s.q.size());
-
-        const double tB = medianMicros(batches, count, [&](int k) {
-            forwardKinematics(robot, data, s.q[k]);
-            computeMassMatrix(robot, data);
-        });
-        const double tC = medianMicros(batches, count, [&](int k) {
-            forwardKinematics(robot, data, s.q[k]);
-            computeMassMatrix(robot, data);
-            computeCoriolisMatrix(robot, data, s.qd[k]);
-        });
-        const double tG = medianMicros(batches, count, [&](int k) {
-            forwardKinematics(robot, data, s.q[k]);
-            computePotentialGradient(robot, data, effects, s.q[k]);
-        });
-        const double tFD = medianMicros(batches, count, [&](int k) { forwardDynamics(robot, data, effects, s.q[k], s.qd[k], s.tau[k]); });
-        const double tID = medianMicros(batches, count, [&](int k) { inverseDynamics(robot, data, effects, s.q[k], s.qd[k], s.tau[k]); });
+        const DynamicsTimes t = dynamicsTimes(robot, effects, s, batches);
         std::vector<double> simMs;
         SimulationSettings oneSecond = scene.simulation;
         oneSecond.duration = 1.0;
         for (int r = 0; r < 5; ++r) simMs.push_back(1e3 * simulate(scene, oneSecond).stats.cpuSeconds);
         std::sort(simMs.begin(), simMs.end());
 
-        std::printf("%-24.24s %2d | %7.3f %7.3f %7.3f %7.3f %7.3f %9.3f", scene.name.c_str(), n, tB, tC, tG, tFD, tID, simMs[2]);
-#ifdef LL_HAVE_KDL
-        KdlOracle kdl(robot, effects, KdlChainLayout::Compact);
-        const auto kdlTime = [&](auto&& solve) {
-            return medianMicros(batches, count, [&](int k) {
-                kdl.setState(s.q[k], s.qd[k]);
-                kdl.setTorque(s.tau[k]);
-                kdl.setAcceleration(s.tau[k]);
-                solve();
-            });
-        };
-        const double setOnly = kdlTime([] {});
-        const double kB = kdlTime([&] { kdl.kdlMassMatrix(); }) - setOnly;
-        const double kC = kdlTime([&] { kdl.kdlCoriolis(); }) - setOnly;
-        const double kG = kdlTime([&] { kdl.kdlGravity(); }) - setOnly;
-        const double kFD = kdlTime([&] { kdl.kdlForwardDynamics(); }) - setOnly;
-        const double kID = kdlTime([&] { kdl.kdlInverseDynamics(); }) - setOnly;
-        std::printf(" | %9.3f %9.3f %9.3f %9.3f %9.3f", kB, kC, kG, kFD, kID);
-#endif
+        std::printf("%-24.24s %2d | %7.3f %7.3f %7.3f %7.3f %7.3f %9.3f", scene.name.c_str(), n, t.B, t.C, t.g, t.FD, t.RNEA, simMs[2]);
         std::printf("\n");
     }
     std::printf("\nB: kinematics + CRBA; C: + Christoffel matrix; FD: q̈ = B⁻¹(Q − C q̇ − g); RNEA: inverse dynamics.\n"
-                "KDL columns: ChainDynParam JntToMass/JntToCoriolis/JntToGravity, ChainFdSolver_RNE, ChainIdSolver_RNE\n"
-                "(copying the inputs into KDL arrays is measured separately and subtracted).\n");
+                "KDL's solvers on the same states: build/tests/lagrangelab_bench_kdl (KDL is a test oracle, not\n"
+                "linked into the program).\n");
     return 0;
 }
 

@@ -37,7 +37,7 @@ constexpr std::array<CommandText, 9> commands{{
      "[--repeats N] [--reference-tol X] [--out plot.svg|png] [--csv FILE]",
      "work-precision: error, energy drift, CPU time, evaluations and steps per integrator and setting"},
     {"bench", "[SCENE...] [--batches N] [--rhs | --derive | --cancel | --render | --typeset | --gui] [--chains A..B] [--cap S]",
-     "median times of B, C, g, forward/inverse dynamics and one simulated second, beside KDL\n"
+     "median times of B, C, g, forward/inverse dynamics and one simulated second\n"
      "(--rhs: one right-hand side of the PUMA 560 with no effects, gravity only, all effects;\n"
      " --derive: the whole symbolic derivation per parameter mode;\n"
      " --derive --chains 3..12: structured beside expanded on seeded random chains, with sizes;\n"
