@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/io/scene_file.hpp"
+#include "core/pipeline/scene_derivation.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/structured_document.hpp"
 #include "core/symbolic/structured_dynamics.hpp"
@@ -37,7 +38,7 @@ Scene randomChain(int n, unsigned seed) {
 }
 
 // What a LaTeX run would choke on, or "" when none: unbalanced braces or \begin/\end,
-// an odd number of $ (inline math), _ ^ & % # outside math, a double subscript or
+// an odd number of $ (inline math; \[ \] display math), _ ^ & % # outside math, a double subscript or
 // superscript (x_{a}_{b}), \left without \right in one formula.
 std::string latexProblem(const std::string& doc) {
     std::vector<std::string> environments;
@@ -53,7 +54,12 @@ std::string latexProblem(const std::string& doc) {
             std::size_t j = i + 1;
             while (j < doc.size() && std::isalpha(static_cast<unsigned char>(doc[j]))) ++j;
             std::string command = doc.substr(i + 1, j - i - 1);
-            if (command.empty()) {  // \\, \{, \_, \$: a control symbol
+            if (command.empty()) {  // \\, \{, \_, \$: a control symbol; \[ and \] open and close display math
+                if (j < doc.size() && (doc[j] == '[' || doc[j] == ']')) {
+                    if (doc[j] == ']' && lefts != 0) return "\\left without \\right in the formula ending at line " + line(i);
+                    math = doc[j] == '[';
+                    lefts = 0;
+                }
                 i = j;
                 if (lastScript.size() > static_cast<std::size_t>(depth)) lastScript[depth] = 0;
                 continue;
@@ -148,6 +154,8 @@ private slots:
         QTest::newRow("left") << R"($\left( a$)" << false;
         QTest::newRow("environment") << R"(\begin{document} x)" << false;
         QTest::newRow("percent") << R"(100% sure)" << false;
+        QTest::newRow("display math") << R"(\[ \begin{pmatrix} a_{1} & b \\[2pt] c & d \end{pmatrix} \] and \_)" << true;
+        QTest::newRow("after display math") << R"(\[ a_{1} \] b_2)" << false;
     }
     void checkerFindsLatexErrors() {
         QFETCH(QString, latex);
@@ -182,6 +190,23 @@ private slots:
             info.expanded = {expandEntry(copy, info.entries[0])};
             const std::string one = latexProblem(document(copy, DocumentFormat::Latex, info));
             QVERIFY2(one.empty(), one.c_str());
+        }
+    }
+
+    // The expanded form's LaTeX (core/symbolic/derivation_document) too: with a scene
+    // named with LaTeX's specials it is well-formed, the name escaped in the title.
+    void expandedLatexIsWellFormed() {
+        for (const char* name : {"planar_2r.json", "scara.json", "cart_pole.json"}) {
+            Scene sc = exampleScene(name);
+            sc.name = "my_robot #2 & 50% {x} ~^ $";
+            DocumentRequest request;
+            request.format = DocumentFormat::Latex;
+            const std::string latex = deriveDocument(sc, request).document;
+            const std::string problem = latexProblem(latex);
+            QVERIFY2(problem.empty(), (std::string(name) + ": " + problem).c_str());
+            QVERIFY(latex.find("\\title{Euler--Lagrange model: my\\_robot \\#2 \\& 50\\% \\{x\\} \\textasciitilde{}\\^{} \\$}") !=
+                    std::string::npos);
+            QVERIFY(latex.find("\\section*{Step 7: ") != std::string::npos);
         }
     }
 

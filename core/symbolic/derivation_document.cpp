@@ -14,6 +14,7 @@
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/json_writer.hpp"
 #include "core/symbolic/latex_formula.hpp"
+#include "core/symbolic/latex_text.hpp"
 #include "core/symbolic/readable_numbers.hpp"
 #include "core/symbolic/trig_context.hpp"
 
@@ -174,7 +175,7 @@ struct DisplayResults {
 
 DisplayItem displayItem(const DerivationItem& item, Presenter& presenter, DisplayBuilder& build,
                         const DisplayOptions& options) {
-    DisplayItem out{item.name, item.latexName, nullptr, nullptr};
+    DisplayItem out{item.name, item.latexName, nullptr, nullptr, {}};
     if (item.name.rfind("equation_", 0) == 0) {
         const int row = std::stoi(item.name.substr(9)) - 1;
         std::vector<DisplayPtr> parts;
@@ -259,13 +260,6 @@ void writePlain(JsonWriter& json, const DisplayItem& item, PlainTexts& plain) {
     writePlain(json, *item.value, plain);
 }
 
-// Plain text for a LaTeX paragraph: < and _ would print as ¡ or start a subscript.
-std::string latexText(const std::string& text) {
-    std::string out;
-    for (char c : text) out += c == '<' ? "$<$" : c == '_' ? "\\_" : std::string(1, c);
-    return out;
-}
-
 std::string itemLatex(const DisplayItem& item) { return renderDisplay(*item.equation, DisplayStyle::Latex); }
 
 void writeText(const DisplayDocument& d, std::ostream& out) {
@@ -283,12 +277,12 @@ void writeLatex(const DisplayDocument& d, std::ostream& out) {
            "\\usepackage{amsmath,amssymb}\n"
            "\\allowdisplaybreaks\n"
            "\\setcounter{MaxMatrixCols}{20}\n"
-           "\\title{Euler--Lagrange model: " << d.systemName << "}\n"
+           "\\title{Euler--Lagrange model: " << latexText(d.systemName) << "}\n"
            "\\author{LagrangeLab}\n\\date{}\n"
            "\\begin{document}\n\\maketitle\n"
            "Shorthand: $c_{i} = \\cos q_i$, $s_{i} = \\sin q_i$, $c_{12} = \\cos(q_1 + q_2)$, $\\dot{q}_i$ the joint velocities.\n";
     for (const DisplayStep& step : d.steps) {
-        out << "\\section*{Step " << step.number << ": " << step.title << "}\n\\[ " << step.formulaLatex << " \\]\n";
+        out << "\\section*{Step " << step.number << ": " << latexText(step.title) << "}\n\\[ " << step.formulaLatex << " \\]\n";
         for (const DisplayItem& item : step.items) out << "\\[ " << itemLatex(item) << " \\]\n";
     }
     out << "\\paragraph{Actuation} " << latexText(d.actuation) << ".\n"

@@ -11,6 +11,7 @@
 #include "core/model/cancellation.hpp"
 #include "core/symbolic/expression_printer.hpp"
 #include "core/symbolic/ginac_lock.hpp"
+#include "core/symbolic/latex_text.hpp"
 #include "core/symbolic/readable_numbers.hpp"
 
 namespace ll::symbolic {
@@ -51,30 +52,6 @@ const char* latexStepTitle(int step) {
         case 8: return "Christoffel symbols: $\\partial b_{jk}/\\partial q_l$ by the Jacobian identities (zero for $l \\le \\min(j,k)$)";
     }
     return "";
-}
-
-// Plain words in LaTeX's text mode: its special characters escaped.
-std::string latexText(const std::string& text) {
-    std::string out;
-    for (char c : text) {
-        switch (c) {
-            case '_': out += "\\_"; break;
-            case '^': out += "\\^{}"; break;
-            case '&': out += "\\&"; break;
-            case '%': out += "\\%"; break;
-            case '$': out += "\\$"; break;
-            case '#': out += "\\#"; break;
-            case '{': out += "\\{"; break;
-            case '}': out += "\\}"; break;
-            case '~': out += "\\textasciitilde{}"; break;
-            case '-': out += "-{}"; break;  // "--form" stays two hyphens, not an en dash
-            case '\\': out += "\\textbackslash{}"; break;
-            case '<': out += "$<$"; break;
-            case '>': out += "$>$"; break;
-            default: out += c;
-        }
-    }
-    return out;
 }
 
 // "q2, q3" as LaTeX math: q_{2}, q_{3}.
@@ -435,6 +412,8 @@ std::string structuredDocument(const StructuredDynamics& s, DocumentFormat forma
         case DocumentFormat::Text: writeText(s, info, out); break;
         case DocumentFormat::Latex: writeLatex(s, info, out); break;
         case DocumentFormat::Json: writeJson(s, info, out); break;
+        case DocumentFormat::Display:  // a tree, not a string: structuredDisplayDocument (structured_display.hpp)
+            throw std::invalid_argument("structuredDocument: the display form is structuredDisplayDocument's");
     }
     return out.str();
 }
