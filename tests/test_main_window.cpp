@@ -8,6 +8,8 @@
 #include <QProcess>
 #include <QSettings>
 #include <QTemporaryDir>
+#include <QPainter>
+#include <QSvgRenderer>
 
 #include <QChart>
 #include <QDockWidget>
@@ -23,6 +25,7 @@
 
 #include "core/io/scene_file.hpp"
 #include "core/pipeline/scene_derivation.hpp"
+#include "ui/derivation_pages.hpp"
 #include "ui/derivation_panel.hpp"
 #include "ui/joint_table_model.hpp"
 #include "ui/derivation_view.hpp"
@@ -746,6 +749,34 @@ private slots:
             QVERIFY2(words.contains("Step 7") && words.contains("B(q)"), qPrintable(words.left(300)));
         }
         QVERIFY(!w.exportDerivationTo(dir_.filePath("derivation.doc"), &error));
+        // Typeset pages as SVG and PNG, a file per page, as many as the PDF has; each
+        // opens and shows ink.
+        const int pdfPages = static_cast<int>(ll::ui::paginate(*w.derivation()->display).pages.size());
+        for (const char* suffix : {"svg", "png"}) {
+            const QString file = dir_.filePath(QString("slides/derivation.%1").arg(suffix));
+            QVERIFY(QDir().mkpath(dir_.filePath("slides")));
+            QVERIFY2(w.exportDerivationTo(file, &error), qPrintable(error));
+            QVERIFY(exported.wait(60000));
+            QCOMPARE(exported.back().at(1).toString(), QString());
+            const QStringList written = QDir(dir_.filePath("slides")).entryList({QString("*.%1").arg(suffix)});
+            QCOMPARE(written.size(), pdfPages);
+            QImage page;
+            if (QString(suffix) == "png") {
+                page = QImage(file);
+            } else {
+                QSvgRenderer svg(file);
+                QVERIFY(svg.isValid());
+                page = QImage(842, 595, QImage::Format_RGB32);
+                page.fill(Qt::white);
+                QPainter painter(&page);
+                svg.render(&painter);
+            }
+            QVERIFY(!page.isNull());
+            int dark = 0;
+            for (int y = 0; y < page.height(); ++y)
+                for (int x = 0; x < page.width(); ++x) dark += qGray(page.pixel(x, y)) < 128;
+            QVERIFY2(dark > 500, qPrintable(QString("%1: %2 dark pixels").arg(suffix).arg(dark)));
+        }
 
         // The animation: 0.5 s at 30 fps as a folder of frames, then as MP4.
         const QString frames = dir_.filePath("frames/");

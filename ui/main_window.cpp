@@ -423,7 +423,7 @@ void MainWindow::buildMenus() {
     QMenu* exports = file->addMenu(tr("Export"));
     exports->addAction(tr("Screenshot (PNG)…"), this, &MainWindow::exportScreenshot);
     exports->addAction(tr("Plot (PNG, SVG or CSV)…"), this, &MainWindow::exportPlot);
-    exports->addAction(tr("Derivation (PDF, LaTeX or text)…"), this, &MainWindow::exportDerivation);
+    exports->addAction(tr("Derivation (PDF, SVG, PNG, LaTeX or text)…"), this, &MainWindow::exportDerivation);
     exports->addAction(tr("Animation (MP4, WebM, GIF)…"), this, &MainWindow::exportAnimation);
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
@@ -974,24 +974,26 @@ static void reportExport(MainWindow* window, QStatusBar* bar, const QString& pat
 }
 
 void MainWindow::exportDerivation() {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export derivation"), "derivation.pdf",
-                                                      tr("PDF, typeset (*.pdf);;LaTeX (*.tex);;Text (*.txt)"));
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Export derivation"), "derivation.pdf",
+        tr("PDF, typeset (*.pdf);;SVG, typeset, a file per page (*.svg);;PNG, typeset, a file per page (*.png);;LaTeX (*.tex);;Text (*.txt)"));
     QString error;
     if (!path.isEmpty() && !exportDerivationTo(path, &error)) QMessageBox::critical(this, tr("Export derivation"), error);
 }
 
 bool MainWindow::exportDerivationTo(const QString& path, QString* error) {
     const QString suffix = QFileInfo(path).suffix().toLower();
-    if (suffix != "pdf" && suffix != "tex" && suffix != "txt") {
-        if (error) *error = tr("%1: expected a .pdf, .tex or .txt file").arg(path);
+    if (suffix != "pdf" && suffix != "svg" && suffix != "png" && suffix != "tex" && suffix != "txt") {
+        if (error) *error = tr("%1: expected a .pdf, .svg, .png, .tex or .txt file").arg(path);
         return false;
     }
     if (!derived_ || !derived_->display) {
         if (error) *error = tr("nothing to export: the derivation has not finished");
         return false;
     }
-    // The document on screen: no new derivation. Typeset pages as `derive --format pdf`
-    // (ui/derivation_pages), LaTeX and text rendered from the same display trees.
+    // The document on screen: no new derivation. Typeset pages as `derive --format
+    // pdf|svg|png` (ui/derivation_pages: SVG and PNG write page k beside FILE as
+    // FILE-k), LaTeX and text rendered from the same display trees.
     auto display = derived_->display;
     QThreadPool::globalInstance()->start([this, display, path, suffix, self = QPointer<MainWindow>(this)] {
         QString failure;
@@ -999,6 +1001,11 @@ bool MainWindow::exportDerivationTo(const QString& path, QString* error) {
             if (suffix == "pdf") {
                 std::string reason;
                 if (!writePdf(*display, path, reason)) failure = QString::fromStdString(reason);
+            } else if (suffix == "svg" || suffix == "png") {
+                std::string reason;
+                const DerivationPages pages = paginate(*display);
+                if (!(suffix == "svg" ? writeSvg(pages, path, reason) : writePng(pages, path, reason)))
+                    failure = QString::fromStdString(reason);
             } else {
                 const auto format = suffix == "tex" ? symbolic::DocumentFormat::Latex : symbolic::DocumentFormat::Text;
                 saveFileAtomically(path.toStdString(), symbolic::renderDocument(*display, format), Backup::None);
