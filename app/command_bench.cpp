@@ -4,6 +4,7 @@
 // effects, gravity only and all effects.
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <random>
 #include <thread>
@@ -144,20 +145,27 @@ int benchCancel(const std::vector<std::string>& scenes) {
 
 int benchCommand(const Args& args) {
     const Options options(args, {"batches", "chains", "cap"}, {"rhs", "derive", "cancel", "render", "typeset", "gui"});
-    const int batches = static_cast<int>(options.number("batches", 21));
+    // --batches N, or each mode's default: a whole number from 1 to 1000 (0 batches have
+    // no median).
+    const auto batchesOr = [&](int fallback) {
+        const double n = options.number("batches", fallback);
+        if (n < 1 || n > 1000 || n != std::floor(n))
+            throw UsageError("--batches: expected a whole number from 1 to 1000, got '" + options.text("batches") + "'");
+        return static_cast<int>(n);
+    };
+    const int batches = batchesOr(21);
     std::vector<std::string> scenes = options.positional();
-    if (options.has("gui")) return benchGui(scenes, static_cast<int>(options.number("batches", 9)));
-    if (options.has("render")) return benchRender(scenes, static_cast<int>(options.number("batches", 3)));
-    if (options.has("typeset")) return benchTypeset(scenes, static_cast<int>(options.number("batches", 5)));
+    if (options.has("gui")) return benchGui(scenes, batchesOr(9));
+    if (options.has("render")) return benchRender(scenes, batchesOr(3));
+    if (options.has("typeset")) return benchTypeset(scenes, batchesOr(5));
     if (options.has("chains") && !options.has("derive")) throw UsageError("--chains: only with --derive");
     if (options.has("derive") && options.has("chains"))
-        return benchDeriveChains(options.text("chains"), scenes, static_cast<int>(options.number("batches", 5)),
-                                 options.number("cap", 20.0));
+        return benchDeriveChains(options.text("chains"), scenes, batchesOr(5), options.number("cap", 20.0));
     if (options.has("derive")) {
         if (scenes.empty())
             for (const char* name : {"planar_2r", "scara", "cart_pole", "puma560", "stanford_arm", "mass_spring_pair_lagrangian"})
                 scenes.push_back(example(name));
-        return benchDerive(scenes, static_cast<int>(options.number("batches", 5)));
+        return benchDerive(scenes, batchesOr(5));
     }
     if (options.has("cancel")) {
         if (scenes.empty())
@@ -194,8 +202,8 @@ int benchCommand(const Args& args) {
         std::printf("\n");
     }
     std::printf("\nB: kinematics + CRBA; C: + Christoffel matrix; FD: q̈ = B⁻¹(Q − C q̇ − g); RNEA: inverse dynamics.\n"
-                "KDL's solvers on the same states: build/tests/lagrangelab_bench_kdl (KDL is a test oracle, not\n"
-                "linked into the program).\n");
+                "KDL's solvers on the same states: build/tests/lagrangelab_bench_kdl in a build tree with\n"
+                "orocos-kdl (KDL is a test oracle, not linked into the program).\n");
     return 0;
 }
 

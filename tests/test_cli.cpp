@@ -337,6 +337,11 @@ private slots:
         QCOMPARE(run({"simulate", example("puma560.json"), "--integrator", "nope"}).exitCode, 2);
         QCOMPARE(run({"simulate", example("puma560.json"), "--duration", "abc"}).exitCode, 2);
         QCOMPARE(run({"frobnicate"}).exitCode, 2);
+        for (const char* batches : {"0", "-3", "2.5", "1e9"}) {  // a median needs whole batches (0 crashed)
+            const Run r = run({"bench", example("planar_2r.json"), "--batches", batches});
+            QCOMPARE(r.exitCode, 2);
+            QVERIFY2(r.err.startsWith("error: --batches: ") && r.err.count('\n') == 1 && r.err.contains(batches), r.err.constData());
+        }
     }
 
     // A scene whose parameters are named like the derivation's shorthand (c1 = cos q1,

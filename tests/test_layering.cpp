@@ -17,7 +17,7 @@ namespace fs = std::filesystem;
 // Ordinary string literals: moc does not parse raw strings holding '#' and quotes.
 const char* const kCoreForbidden = "^\\s*#\\s*include\\s*[<\"](Q[A-Za-z]|osg|ui/|app/)";
 const char* const kUiForbidden = "^\\s*#\\s*include\\s*\"app/";
-const char* const kTestsForbidden = "^\\s*#\\s*include\\s*\"tests/";
+const char* const kTestsForbidden = "^\\s*#\\s*include\\s*[<\"]tests/";
 
 class TestLayering : public QObject {
     Q_OBJECT
@@ -118,6 +118,8 @@ private slots:
     void programTakesNothingFromTests() {
         const std::regex forbidden(kTestsForbidden);
         QVERIFY(std::regex_search("#include \"tests/oracle/kdl_chain.hpp\"", forbidden));
+        QVERIFY(std::regex_search("#include <tests/oracle/kdl_chain.hpp>", forbidden));
+        QVERIFY(!std::regex_search("#include \"core/io/tests.hpp\"", forbidden));
         QStringList bad;
         for (const char* folder : {"app", "ui", "core"}) bad << offending(folder, forbidden);
         QVERIFY2(bad.isEmpty(), qPrintable(bad.join('\n')));

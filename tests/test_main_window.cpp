@@ -9,6 +9,7 @@
 #include <QSettings>
 #include <QTemporaryDir>
 #include <QPainter>
+#include <QStatusBar>
 #include <QSvgRenderer>
 
 #include <QChart>
@@ -760,6 +761,9 @@ private slots:
             QCOMPARE(exported.back().at(1).toString(), QString());
             const QStringList written = QDir(dir_.filePath("slides")).entryList({QString("*.%1").arg(suffix)});
             QCOMPARE(written.size(), pdfPages);
+            // The status bar names the first page and the last.
+            const QString status = w.statusBar()->currentMessage();
+            QVERIFY2(status.contains(file) && status.contains(QString("derivation-%1.%2").arg(pdfPages).arg(suffix)), qPrintable(status));
             QImage page;
             if (QString(suffix) == "png") {
                 page = QImage(file);

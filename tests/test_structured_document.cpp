@@ -15,7 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/io/scene_file.hpp"
-#include "core/pipeline/scene_derivation.hpp"
+#include "core/pipeline/derivation_forms.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/structured_document.hpp"
 #include "core/symbolic/structured_dynamics.hpp"
@@ -193,21 +193,34 @@ private slots:
         }
     }
 
-    // The expanded form's LaTeX (core/symbolic/derivation_document) too: with a scene
-    // named with LaTeX's specials it is well-formed, the name escaped in the title.
+    // The expanded form's LaTeX (core/symbolic/derivation_document) too, as `derive
+    // --format latex` makes it (with its "Form:" line): with a scene named with LaTeX's
+    // specials it is well-formed, the name escaped in the title; the form's reason
+    // ("asked for with --form", a Lagrangian's "E_kin and E_pot") escaped as well.
+    void expandedLatexIsWellFormed_data() {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<int>("form");
+        for (const char* name : {"planar_2r.json", "scara.json", "cart_pole.json", "mass_spring_pair_lagrangian.json"})
+            QTest::newRow(name) << name << int(DerivationForm::Auto);
+        QTest::newRow("planar_2r.json, --form expanded") << "planar_2r.json" << int(DerivationForm::Expanded);
+    }
     void expandedLatexIsWellFormed() {
-        for (const char* name : {"planar_2r.json", "scara.json", "cart_pole.json"}) {
-            Scene sc = exampleScene(name);
-            sc.name = "my_robot #2 & 50% {x} ~^ $";
-            DocumentRequest request;
-            request.format = DocumentFormat::Latex;
-            const std::string latex = deriveDocument(sc, request).document;
-            const std::string problem = latexProblem(latex);
-            QVERIFY2(problem.empty(), (std::string(name) + ": " + problem).c_str());
-            QVERIFY(latex.find("\\title{Euler--Lagrange model: my\\_robot \\#2 \\& 50\\% \\{x\\} \\textasciitilde{}\\^{} \\$}") !=
-                    std::string::npos);
-            QVERIFY(latex.find("\\section*{Step 7: ") != std::string::npos);
-        }
+        QFETCH(QString, scene);
+        QFETCH(int, form);
+        Scene sc = exampleScene(scene.toStdString());
+        sc.name = "my_robot #2 & 50% {x} ~^ $";
+        FormRequest request;
+        request.document.format = DocumentFormat::Latex;
+        request.form = DerivationForm(form);
+        const FormDocument out = deriveInForm(sc, request);
+        QCOMPARE(QString::fromStdString(out.form), QString("expanded"));
+        const std::string& latex = out.derived.document;
+        const std::string problem = latexProblem(latex);
+        QVERIFY2(problem.empty(), problem.c_str());
+        QVERIFY(latex.find("\\title{Euler--Lagrange model: my\\_robot \\#2 \\& 50\\% \\{x\\} \\textasciitilde{}\\^{} \\$}") !=
+                std::string::npos);
+        QVERIFY(latex.find("Form: expanded (") != std::string::npos);
+        if (form == int(DerivationForm::Expanded)) QVERIFY(latex.find("asked for with -{}-{}form") != std::string::npos);
     }
 
     // pdflatex, when installed, compiles the PUMA 560's structured LaTeX without an error.

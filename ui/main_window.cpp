@@ -974,9 +974,14 @@ static void reportExport(MainWindow* window, QStatusBar* bar, const QString& pat
 }
 
 void MainWindow::exportDerivation() {
-    const QString path = QFileDialog::getSaveFileName(
+    QString filter;
+    QString path = QFileDialog::getSaveFileName(
         this, tr("Export derivation"), "derivation.pdf",
-        tr("PDF, typeset (*.pdf);;SVG, typeset, a file per page (*.svg);;PNG, typeset, a file per page (*.png);;LaTeX (*.tex);;Text (*.txt)"));
+        tr("PDF, typeset (*.pdf);;SVG, typeset, a file per page (*.svg);;PNG, typeset, a file per page (*.png);;LaTeX (*.tex);;Text (*.txt)"),
+        &filter);
+    // A name typed without an extension takes the chosen filter's (*.svg → .svg).
+    if (const qsizetype star = filter.indexOf("(*."); !path.isEmpty() && QFileInfo(path).suffix().isEmpty() && star >= 0)
+        path += filter.mid(star + 2, filter.indexOf(')', star) - star - 2);
     QString error;
     if (!path.isEmpty() && !exportDerivationTo(path, &error)) QMessageBox::critical(this, tr("Export derivation"), error);
 }
@@ -993,10 +998,10 @@ bool MainWindow::exportDerivationTo(const QString& path, QString* error) {
     }
     // The document on screen: no new derivation. Typeset pages as `derive --format
     // pdf|svg|png` (ui/derivation_pages: SVG and PNG write page k beside FILE as
-    // FILE-k), LaTeX and text rendered from the same display trees.
+    // STEM-k.EXT), LaTeX and text rendered from the same display trees.
     auto display = derived_->display;
     QThreadPool::globalInstance()->start([this, display, path, suffix, self = QPointer<MainWindow>(this)] {
-        QString failure;
+        QString failure, shown = path;  // shown: what the status bar names
         try {
             if (suffix == "pdf") {
                 std::string reason;
@@ -1004,8 +1009,11 @@ bool MainWindow::exportDerivationTo(const QString& path, QString* error) {
             } else if (suffix == "svg" || suffix == "png") {
                 std::string reason;
                 const DerivationPages pages = paginate(*display);
-                if (!(suffix == "svg" ? writeSvg(pages, path, reason) : writePng(pages, path, reason)))
+                std::vector<QString> written;
+                if (!(suffix == "svg" ? writeSvg(pages, path, reason, &written) : writePng(pages, path, reason, &written)))
                     failure = QString::fromStdString(reason);
+                else if (written.size() > 1)
+                    shown = tr("%1 … %2 (%n pages)", nullptr, static_cast<int>(written.size())).arg(path, QFileInfo(written.back()).fileName());
             } else {
                 const auto format = suffix == "tex" ? symbolic::DocumentFormat::Latex : symbolic::DocumentFormat::Text;
                 saveFileAtomically(path.toStdString(), symbolic::renderDocument(*display, format), Backup::None);
@@ -1013,9 +1021,9 @@ bool MainWindow::exportDerivationTo(const QString& path, QString* error) {
         } catch (const std::exception& e) {
             failure = QString::fromUtf8(e.what());
         }
-        QMetaObject::invokeMethod(qApp, [self, path, failure] {
+        QMetaObject::invokeMethod(qApp, [self, path, shown, failure] {
             if (!self) return;
-            reportExport(self, self->statusBar(), path, failure, self->isVisible());
+            reportExport(self, self->statusBar(), shown, failure, self->isVisible());
             emit self->exportFinished(path, failure);
         }, Qt::QueuedConnection);
     });

@@ -775,11 +775,10 @@ void paintMarks(QPainter& painter, const MathMarks& marks) {
         switch (s.kind) {
         case MathMarks::Shape::Rect: painter.fillRect(s.rect, ink); break;
         case MathMarks::Shape::Fill: painter.fillPath(s.path, ink); break;
-        case MathMarks::Shape::Stroke: {
-            QPen pen = painter.pen();
-            pen.setWidthF(s.penWidth);
+        case MathMarks::Shape::Stroke: {  // as svg_page writes it: square caps, bevelled joins, no fill
             painter.save();
-            painter.setPen(pen);
+            painter.setPen(QPen(ink, s.penWidth, Qt::SolidLine, Qt::SquareCap, Qt::BevelJoin));
+            painter.setBrush(Qt::NoBrush);
             painter.drawPath(s.path);
             painter.restore();
             break;

@@ -8,8 +8,13 @@
 namespace ll::ui {
 namespace {
 
-// x with at most three decimals (a thousandth of a point), no trailing zeros, no "-0".
+// x with at most three decimals (a thousandth of a point), no trailing zeros, no "-0";
+// 0 for what is not a finite number (nan or inf would make the file invalid).
 void appendNumber(std::string& out, double x) {
+    if (!std::isfinite(x) || std::abs(x) > 1e15) {
+        out += '0';
+        return;
+    }
     double rounded = std::round(x * 1000.0) / 1000.0;
     if (rounded == 0) rounded = 0;  // -0 → 0
     char buffer[64];

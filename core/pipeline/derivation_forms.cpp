@@ -15,6 +15,7 @@
 #include "core/kinematics/forward_kinematics.hpp"
 #include "core/symbolic/derivation_evaluator.hpp"
 #include "core/symbolic/ginac_lock.hpp"
+#include "core/symbolic/latex_text.hpp"
 #include "core/symbolic/robot_derivation.hpp"
 #include "core/symbolic/structured_document.hpp"
 
@@ -70,7 +71,7 @@ void announceForm(std::string& document, symbolic::DocumentFormat format, const 
         case symbolic::DocumentFormat::Latex: {
             const std::string mark = "\\maketitle\n";
             const std::size_t at = document.find(mark);
-            if (at != std::string::npos) document.insert(at + mark.size(), "Form: expanded (" + reason + ").\n");
+            if (at != std::string::npos) document.insert(at + mark.size(), "Form: expanded (" + symbolic::latexText(reason) + ").\n");
             break;
         }
     }
