@@ -220,7 +220,7 @@ private slots:
         QVERIFY(latex.find("\\title{Euler--Lagrange model: my\\_robot \\#2 \\& 50\\% \\{x\\} \\textasciitilde{}\\^{} \\$}") !=
                 std::string::npos);
         QVERIFY(latex.find("Form: expanded (") != std::string::npos);
-        if (form == int(DerivationForm::Expanded)) QVERIFY(latex.find("asked for with -{}-{}form") != std::string::npos);
+        if (form == int(DerivationForm::Expanded)) QVERIFY(latex.find("asked for with -{}-form") != std::string::npos);
     }
 
     // pdflatex, when installed, compiles the PUMA 560's structured LaTeX without an error.

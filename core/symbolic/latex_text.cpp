@@ -4,7 +4,8 @@ namespace ll::symbolic {
 
 std::string latexText(const std::string& text) {
     std::string out;
-    for (char c : text) {
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
         switch (c) {
             case '_': out += "\\_"; break;
             case '^': out += "\\^{}"; break;
@@ -15,7 +16,9 @@ std::string latexText(const std::string& text) {
             case '{': out += "\\{"; break;
             case '}': out += "\\}"; break;
             case '~': out += "\\textasciitilde{}"; break;
-            case '-': out += "-{}"; break;  // "--form" stays two hyphens, not an en dash
+            case '-':  // "--form" stays two hyphens, not an en dash; "mass-spring" stays as typed
+                out += i + 1 < text.size() && text[i + 1] == '-' ? "-{}" : "-";
+                break;
             case '\\': out += "\\textbackslash{}"; break;
             case '<': out += "$<$"; break;
             case '>': out += "$>$"; break;
