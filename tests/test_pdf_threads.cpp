@@ -1,6 +1,6 @@
 // The typeset PDF's threads (ui/derivation_pages): a second thread lays out the pages
 // while QPdfWriter writes the finished ones, and the window may export two documents at
-// once. Labelled `threads`: `scripts/lab tsan` runs it under ThreadSanitizer, which must
+// once (a PDF beside SVG or PNG pages too). Labelled `threads`: `scripts/lab tsan` runs it under ThreadSanitizer, which must
 // report no race.
 //
 // Every PDF is compared with the same document written alone first: its page count and
@@ -9,7 +9,9 @@
 #include <QtTest>
 
 #include <QGuiApplication>
+#include <QDir>
 #include <QFile>
+#include <QImage>
 #include <QTemporaryDir>
 #include <thread>
 
@@ -101,6 +103,50 @@ private slots:
         QVERIFY(streamsOf(dir.filePath("scara-together.pdf")) == streamsOf(dir.filePath("scara-alone.pdf")));
         QVERIFY(streamsOf(dir.filePath("panda-together.pdf")) == streamsOf(dir.filePath("panda-alone.pdf")));
         QVERIFY(pagesIn(streamsOf(dir.filePath("panda-together.pdf"))) > 10);
+    }
+
+    // The window's SVG and PNG pages (File ▸ Export ▸ Derivation) on pool threads while
+    // a PDF is written: each file equals the one written alone (the SVG byte for byte:
+    // it has no date; the PNG pixel for pixel).
+    void svgAndPngBesideAPdf() {
+        QTemporaryDir dir;
+        const auto scara = documentOf("scara.json");
+        const auto planar = documentOf("planar_2r.json");
+        const ui::DerivationPages scaraPages = ui::paginate(*scara), planarPages = ui::paginate(*planar);
+        std::string error;
+        std::vector<QString> svgAlone, pngAlone, svgTogether, pngTogether;
+        QVERIFY(QDir().mkpath(dir.filePath("alone")));
+        QVERIFY2(ui::writeSvg(scaraPages, dir.filePath("alone/s.svg"), error, &svgAlone), error.c_str());
+        QVERIFY(ui::writePng(planarPages, dir.filePath("alone/p.png"), error, &pngAlone, 72));
+        QVERIFY(QDir().mkpath(dir.filePath("together")));
+        bool svgOk = false, pngOk = false;
+        std::string svgError, pngError;
+        std::thread svg([&] {
+            const ui::DerivationPages pages = ui::paginate(*scara);  // laid out on this thread, as the window does
+            svgOk = ui::writeSvg(pages, dir.filePath("together/s.svg"), svgError, &svgTogether);
+        });
+        std::thread png([&] {
+            const ui::DerivationPages pages = ui::paginate(*planar);
+            pngOk = ui::writePng(pages, dir.filePath("together/p.png"), pngError, &pngTogether, 72);
+        });
+        const Written pdf = write(*scara, dir.filePath("together/s.pdf"));
+        svg.join();
+        png.join();
+        QVERIFY2(svgOk && pngOk && pdf.ok, (svgError + pngError + pdf.error).c_str());
+        QCOMPARE(svgTogether.size(), svgAlone.size());
+        QCOMPARE(pngTogether.size(), pngAlone.size());
+        QVERIFY(svgAlone.size() >= 3);
+        const auto bytes = [](const QString& path) {
+            QFile f(path);
+            return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+        };
+        for (std::size_t i = 0; i < svgAlone.size(); ++i) {
+            const QByteArray a = bytes(svgAlone[i]);
+            QVERIFY(a.contains("<use "));
+            QVERIFY2(a == bytes(svgTogether[i]), qPrintable(svgTogether[i]));
+        }
+        for (std::size_t i = 0; i < pngAlone.size(); ++i)
+            QVERIFY2(QImage(pngAlone[i]) == QImage(pngTogether[i]), qPrintable(pngTogether[i]));
     }
 };
 
