@@ -5,7 +5,10 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <random>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "core/dynamics/coriolis.hpp"
@@ -38,6 +41,14 @@ inline States randomStates(const RobotModel& robot, int count) {
         s.tau.push_back(tau);
     }
     return s;
+}
+
+// --batches N read as `n` from `typed`: a whole number from 1 to 1000 (a median needs a
+// batch), else std::invalid_argument naming the option and the value as typed.
+inline int checkedBatches(double n, const std::string& typed) {
+    if (!(n >= 1 && n <= 1000) || n != std::floor(n))
+        throw std::invalid_argument("--batches: expected a whole number from 1 to 1000, got '" + typed + "'");
+    return static_cast<int>(n);
 }
 
 // Median over batches of the time per call [µs]; each batch cycles through the states.

@@ -4,7 +4,6 @@
 // effects, gravity only and all effects.
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <random>
 #include <thread>
@@ -147,12 +146,7 @@ int benchCommand(const Args& args) {
     const Options options(args, {"batches", "chains", "cap"}, {"rhs", "derive", "cancel", "render", "typeset", "gui"});
     // --batches N, or each mode's default: a whole number from 1 to 1000 (0 batches have
     // no median).
-    const auto batchesOr = [&](int fallback) {
-        const double n = options.number("batches", fallback);
-        if (n < 1 || n > 1000 || n != std::floor(n))
-            throw UsageError("--batches: expected a whole number from 1 to 1000, got '" + options.text("batches") + "'");
-        return static_cast<int>(n);
-    };
+    const auto batchesOr = [&](int fallback) { return checkedBatches(options.number("batches", fallback), options.text("batches")); };
     const int batches = batchesOr(21);
     std::vector<std::string> scenes = options.positional();
     if (options.has("gui")) return benchGui(scenes, batchesOr(9));

@@ -70,11 +70,11 @@ int SvgGlyphs::font(const QRawFont& raw) {
     return static_cast<int>(fonts_.size() - 1);
 }
 
-int SvgGlyphs::number(int font, quint32 glyph, const QRawFont& raw) {
+int SvgGlyphs::number(int font, quint32 glyph) {
     const std::uint64_t key = (static_cast<std::uint64_t>(font) << 32) | glyph;
     if (auto it = numbers_.find(key); it != numbers_.end()) return it->second;
     const int n = static_cast<int>(outlines_.size());
-    outlines_.push_back(pathData(raw.pathForGlyph(glyph), perDevice_));
+    outlines_.push_back(pathData(fonts_[static_cast<std::size_t>(font)].pathForGlyph(glyph), perDevice_));
     numbers_.emplace(key, n);
     return n;
 }
@@ -91,7 +91,7 @@ std::string svgPage(const MathMarks& marks, QSizeF sizePt, const std::string& ti
         const int font = glyphs.font(run.font);
         numbers[r].reserve(static_cast<std::size_t>(run.indexes.size()));
         for (const quint32 g : run.indexes) {
-            const int n = glyphs.number(font, g, run.font);
+            const int n = glyphs.number(font, g);
             numbers[r].push_back(n);
             if (static_cast<std::size_t>(n) >= seen.size()) seen.resize(static_cast<std::size_t>(n) + 1, 0);
             if (!seen[static_cast<std::size_t>(n)] && !glyphs.outline(n).empty()) used.push_back(n);

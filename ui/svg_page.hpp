@@ -23,10 +23,11 @@ class SvgGlyphs {
 public:
     explicit SvgGlyphs(double devicePerPt = 10) : perDevice_(1.0 / devicePerPt) {}
     double ptPerDevice() const { return perDevice_; }
-    // The glyph's number among those seen; its outline is outline(number).
-    int number(int font, quint32 glyph, const QRawFont& raw);
     // A font (family, style and pixel size)'s number: compared once per run, not per glyph.
     int font(const QRawFont& raw);
+    // The number of glyph `glyph` of font number `font` among those seen; its outline is
+    // outline(number).
+    int number(int font, quint32 glyph);
     const std::string& outline(int number) const { return outlines_[static_cast<std::size_t>(number)]; }
 
 private:

@@ -2,6 +2,7 @@
 // inverse dynamics beside KDL's solvers, timed in the same run on the same seeded random
 // states as `lagrangelab bench` (app/bench_timing.hpp). KDL is a test oracle: the
 // program does not link it, so its timings live here, beside the tests that use it.
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -21,12 +22,14 @@ int main(int argc, char** argv) {
         const std::string arg = argv[i];
         if (arg == "--batches" && i + 1 < argc) {
             char* end = nullptr;
-            const long n = std::strtol(argv[++i], &end, 10);
-            if (*end != '\0' || n < 1 || n > 1000) {
-                std::fprintf(stderr, "error: --batches: expected a whole number from 1 to 1000, got '%s'\n", argv[i]);
+            const char* typed = argv[++i];
+            const double n = std::strtod(typed, &end);
+            try {
+                batches = checkedBatches(*end == '\0' && end != typed ? n : NAN, typed);
+            } catch (const std::invalid_argument& e) {
+                std::fprintf(stderr, "error: %s\n", e.what());
                 return 2;
             }
-            batches = static_cast<int>(n);
         } else if (arg.rfind("--", 0) == 0) {
             std::fprintf(stderr, "error: %s: unknown option (usage: lagrangelab_bench_kdl [SCENE...] [--batches N])\n", arg.c_str());
             return 2;
