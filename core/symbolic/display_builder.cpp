@@ -250,27 +250,31 @@ struct TermKey {
     bool trig = false;
     numeric degree;
     std::string text;  // Plain, without the coefficient
-    double coef = 0;
 };
 
-bool operator<(const TermKey& a, const TermKey& b) {
-    if (a.velocities != b.velocities) return a.velocities < b.velocities;
-    if (a.maxIndex != b.maxIndex) return a.maxIndex < b.maxIndex;
-    if (a.trig != b.trig) return !a.trig;
-    if (a.degree != b.degree) return a.degree < b.degree;
-    if (a.text != b.text) return a.text < b.text;
-    return a.coef < b.coef;
+// Display order of two terms by everything but their coefficients: <0, 0 or >0.
+int compareKeys(const TermKey& a, const TermKey& b) {
+    if (a.velocities != b.velocities) return a.velocities < b.velocities ? -1 : 1;
+    if (a.maxIndex != b.maxIndex) return a.maxIndex < b.maxIndex ? -1 : 1;
+    if (a.trig != b.trig) return a.trig ? 1 : -1;
+    if (a.degree != b.degree) return a.degree < b.degree ? -1 : 1;
+    return a.text.compare(b.text);
 }
 
-struct Term {
-    ex e;                         // the number; for a product, the product without its coefficient
-    std::optional<Decomposed> d;  // none for a number
+// A product term's factors in display order and its sort key, without the coefficient
+// the sum gives it. A sum and its multiples share them: GiNaC writes ½ q̇2 c_12 as
+// ½ q̇2 (2 c_12) with the ½ pulled out of every term, the rests unchanged.
+struct TermBody {
+    Decomposed d;  // d.coef: the rest's own sign (a negated sum factor's), not the term's
     TermKey key;
-    DisplayPtr shown;  // |coefficient| times the factors, built once for every sign the sum shows with
-    bool negative() const {
-        const numeric& c = d ? d->coef : ex_to<numeric>(e);
-        return c.is_real() && c.is_negative();
-    }
+};
+
+struct Term {
+    const TermBody* body;  // the number's is numberBody
+    numeric coef;          // the term's coefficient; the number itself
+    double keyCoef = 0;    // the last tie-break of the order
+    DisplayPtr shown;      // |coefficient| times the factors, built once for every sign the sum shows with
+    bool negative() const { return coef.is_real() && coef.is_negative(); }
 };
 
 // A term of a sum as shown: its magnitude's node and its sign.
@@ -279,10 +283,24 @@ struct ShownTerm {
     bool negative;
 };
 
-using FactorKey = std::tuple<int, std::vector<int>, std::string>;
+// A factor's place in a product: rank (number, constants, masses, parameters,
+// coordinates, c/s, functions, sums, velocities), then indices, then the Plain spelling.
+// The spelling of a sum or function is made only when rank and indices tie: a sum's is
+// as long as the sum, and the expanded Panda's (C q̇)_i has tens of thousands of terms.
+struct FactorKey {
+    int rank = 0;
+    std::vector<int> sub;
+    mutable std::optional<std::string> text;  // a symbol's name at once; others when first needed
+    ex base;                                  // what the text spells, and whether negated
+    bool negated = false;
+};
 
 template <class T>
 using ExMap = std::unordered_map<ex, T, std::hash<ex>, GiNaC::ex_is_equal>;
+
+// A sum this long keeps its terms' bodies: one that comes back as a multiple of itself
+// is ordered without decomposing its terms again. (Shorter ones cost little to redo.)
+constexpr std::size_t keptBodiesFrom = 300;
 
 class Builder {
 public:
@@ -368,6 +386,7 @@ private:
     std::map<std::string, DisplayPtr> symbols_;
     std::unordered_map<unsigned, DisplayPtr> symbolByHash_;
     ExMap<std::vector<ShownTerm>> terms_;
+    ExMap<TermBody> bodies_;  // by a term's rest, for the terms of sums of keptBodiesFrom terms or more
     ExMap<FactorKey> factorKeys_[2];  // by negated
     std::unordered_map<unsigned, FactorKey> symbolKeys_;  // by a symbol's hash
     ExMap<std::vector<std::pair<numeric, DisplayPtr>>> powers_;  // base^exponent, shown
@@ -395,53 +414,62 @@ private:
     // ---- order
 
     // The terms of a sum in display order (cached: a sum factor is ordered once). Only
-    // each term's node and sign are kept: the products and keys that ordered them are
-    // freed at once, and their memory serves the next sum.
+    // each term's node and sign are kept; the bodies that ordered them only for sums
+    // long enough to come back as a multiple (the expanded Panda's (C q̇)_i): the rest
+    // are freed at once, and their memory serves the next sum.
     const std::vector<ShownTerm>& terms(const ex& sum) {
         if (auto it = terms_.find(sum); it != terms_.end()) return it->second;
+        const GiNaC::add& terms = ex_to<GiNaC::add>(sum);
+        const GiNaC::epvector& pairs = GinacPairs::of(terms);
+        const bool keep = pairs.size() >= keptBodiesFrom;
+        std::vector<TermBody> local;
+        local.reserve(keep ? 0 : pairs.size());  // never reallocated: terms point into it
         std::vector<Term> out;
-        out.reserve(sum.nops());
+        out.reserve(pairs.size() + 1);
         // The (rest, coefficient) pairs in place, in op()'s order, then the number: op(i)
         // would make a product rest·coefficient for every term (core/symbolic/ginac_pairs).
-        const GiNaC::add& terms = ex_to<GiNaC::add>(sum);
-        for (const GiNaC::expair& p : GinacPairs::of(terms)) {
-            Term term{p.rest, decompose(p.rest), {}, nullptr};
-            term.d->coef *= ex_to<numeric>(p.coeff);
-            numeric c = term.d->coef;
-            if (c.is_real()) c = abs(c);
-            term.shown = withCoefficient(c, *term.d);
-            term.key = termKey(term);
+        for (const GiNaC::expair& p : pairs) {
+            const TermBody* body = nullptr;
+            if (keep) {
+                auto [it, added] = bodies_.try_emplace(p.rest);
+                if (added) it->second = bodyOf(p.rest);
+                body = &it->second;
+            } else {
+                body = &local.emplace_back(bodyOf(p.rest));
+            }
+            Term term{body, body->d.coef * ex_to<numeric>(p.coeff), 0.0, nullptr};
+            term.keyCoef = term.coef.is_real() ? term.coef.to_double() : 0.0;
+            term.shown = withCoefficient(term.coef.is_real() ? abs(term.coef) : term.coef, body->d);
             out.push_back(std::move(term));
         }
         if (const ex& number = GinacPairs::number(terms); !number.is_zero()) {
-            Term term{number, std::nullopt, {}, nullptr};
-            term.key = termKey(term);
-            out.push_back(std::move(term));
+            const numeric& n = ex_to<numeric>(number);
+            out.push_back({&numberBody(), n, n.is_real() ? n.to_double() : 0.0, renderNumber(abs(n))});
         }
-        // Indices sorted, then each term moved once: sorting the terms themselves moved
-        // every one of them (a product, a key, a node) several times.
+        // Indices sorted, then each term's node taken once.
         std::vector<std::uint32_t> at(out.size());
         for (std::uint32_t i = 0; i < at.size(); ++i) at[i] = i;
-        std::stable_sort(at.begin(), at.end(), [&](std::uint32_t a, std::uint32_t b) { return out[a].key < out[b].key; });
+        std::stable_sort(at.begin(), at.end(), [&](std::uint32_t a, std::uint32_t b) {
+            const Term &x = out[a], &y = out[b];
+            const int c = x.body == y.body ? 0 : compareKeys(x.body->key, y.body->key);
+            return c != 0 ? c < 0 : x.keyCoef < y.keyCoef;
+        });
         std::vector<ShownTerm> sorted;
         sorted.reserve(out.size());
-        for (std::uint32_t i : at) {
-            const Term& t = out[i];
-            sorted.push_back({t.d ? t.shown : renderNumber(abs(ex_to<numeric>(t.e))), t.negative()});
-        }
+        for (std::uint32_t i : at) sorted.push_back({std::move(out[i].shown), out[i].negative()});
         return terms_.emplace(sum, std::move(sorted)).first->second;
     }
 
-    TermKey termKey(const Term& t) {
-        TermKey k;
-        if (!t.d) {
-            k.coef = ex_to<numeric>(t.e).is_real() ? ex_to<numeric>(t.e).to_double() : 0.0;
-            k.text = "1";
-            return k;
-        }
-        k.coef = t.d->coef.is_real() ? t.d->coef.to_double() : 0.0;
+    static const TermBody& numberBody() {
+        static const TermBody body{{}, {{}, -1, false, 0, "1"}};
+        return body;
+    }
+
+    TermBody bodyOf(const ex& rest) {
+        TermBody b{decompose(rest), {}};
+        TermKey& k = b.key;
         // From the factors, not the term: walking a GiNaC product makes each power anew.
-        for (const Factor& f : t.d->num) {
+        for (const Factor& f : b.d.num) {
             if (is_a<GiNaC::symbol>(f.base)) {  // most factors: looked up once, degree 1
                 const SymbolInfo& i = info(ex_to<GiNaC::symbol>(f.base));
                 if (i.kind == Kind::Velocity && f.exp.is_pos_integer())
@@ -453,13 +481,13 @@ private:
             scan(f.base, k);
             k.degree += degree(f.base) * f.exp;
         }
-        for (const Factor& f : t.d->den) {
+        for (const Factor& f : b.d.den) {
             scan(f.base, k);
             k.degree -= degree(f.base) * f.exp;
         }
         std::sort(k.velocities.begin(), k.velocities.end());
-        k.text = bodyKeyText(*t.d);
-        return k;
+        k.text = bodyKeyText(b.d);
+        return b;
     }
 
     // The Plain spelling (with c/s names) of the term without its coefficient, as
@@ -571,7 +599,7 @@ private:
                 const FactorKey* keys[onStack];
                 for (std::size_t i = 0; i < fs.size(); ++i) keys[i] = &factorKey(fs[i]);
                 for (std::size_t i = 1; i < fs.size(); ++i)
-                    for (std::size_t j = i; j > 0 && *keys[j] < *keys[j - 1]; --j) {
+                    for (std::size_t j = i; j > 0 && less(*keys[j], *keys[j - 1]); --j) {
                         std::swap(keys[j], keys[j - 1]);
                         std::swap(fs[j], fs[j - 1]);
                     }
@@ -580,7 +608,7 @@ private:
             std::vector<std::pair<const FactorKey*, Factor>> k;
             k.reserve(fs.size());
             for (Factor& f : fs) k.emplace_back(&factorKey(f), std::move(f));
-            std::stable_sort(k.begin(), k.end(), [](const auto& a, const auto& b) { return *a.first < *b.first; });
+            std::stable_sort(k.begin(), k.end(), [this](const auto& a, const auto& b) { return less(*a.first, *b.first); });
             for (std::size_t i = 0; i < fs.size(); ++i) fs[i] = std::move(k[i].second);
         };
         order(d.num);
@@ -595,24 +623,29 @@ private:
         if (is_a<GiNaC::symbol>(b)) {
             const GiNaC::symbol& sym = ex_to<GiNaC::symbol>(b);
             const unsigned hash = sym.gethash();  // by serial number, checked by name as in info()
-            if (auto it = symbolKeys_.find(hash); it != symbolKeys_.end() && std::get<2>(it->second) == sym.get_name())
+            if (auto it = symbolKeys_.find(hash); it != symbolKeys_.end() && *it->second.text == sym.get_name())
                 return it->second;
             const SymbolInfo& i = info(sym);
             static const int rank[] = {1, 2, 3, 4, 7};  // by Kind; functions 5, sums 6
             std::vector<int> sub = i.indices.empty() ? std::vector<int>{INT_MAX} : i.indices;
             if (i.trig) sub.push_back(i.trig->kind == 'c' ? 0 : 1);  // c1 before s1
-            return symbolKeys_[hash] = FactorKey{rank[static_cast<int>(i.kind)], sub, sym.get_name()};
+            return symbolKeys_[hash] = FactorKey{rank[static_cast<int>(i.kind)], sub, sym.get_name(), b, false};
         }
         ExMap<FactorKey>& cache = factorKeys_[f.negated ? 1 : 0];
         if (auto it = cache.find(b); it != cache.end()) return it->second;
-        FactorKey key;
-        if (is_a<numeric>(b) || is_a<GiNaC::constant>(b))
-            key = {0, {}, keyText(*render(b))};
-        else if (is_a<GiNaC::add>(b))
-            key = {6, {}, keyText(*renderSum(b, f.negated))};
-        else
-            key = {is_a<GiNaC::function>(b) ? 5 : 6, {}, keyText(*render(b))};
-        return cache.emplace(b, key).first->second;
+        const int rank = is_a<numeric>(b) || is_a<GiNaC::constant>(b) ? 0 : is_a<GiNaC::function>(b) ? 5 : 6;
+        return cache.emplace(b, FactorKey{rank, {}, std::nullopt, b, f.negated}).first->second;
+    }
+
+    bool less(const FactorKey& a, const FactorKey& b) {
+        if (a.rank != b.rank) return a.rank < b.rank;
+        if (a.sub != b.sub) return a.sub < b.sub;
+        return spelling(a) < spelling(b);
+    }
+
+    const std::string& spelling(const FactorKey& k) {
+        if (!k.text) k.text = keyText(*(is_a<GiNaC::add>(k.base) ? renderSum(k.base, k.negated) : render(k.base)));
+        return *k.text;
     }
 
     // ---- sums
