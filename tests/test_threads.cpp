@@ -9,6 +9,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <map>
 #include <string>
 #include <thread>
 #include <vector>
@@ -18,6 +19,9 @@
 #include "core/pipeline/scene_check.hpp"
 #include "core/pipeline/scene_derivation.hpp"
 #include "core/pipeline/scene_simulation.hpp"
+#include "core/symbolic/derivation_document.hpp"
+
+#include <nlohmann/json.hpp>
 
 using namespace ll;
 
@@ -125,6 +129,61 @@ private slots:
         const Scene planar = example("planar_2r.json");
         QVERIFY(derive(planar, symbolic::ParameterMode::Numeric, symbolic::DocumentFormat::Text).find("B = ") !=
                 std::string::npos);
+    }
+
+    // A text, LaTeX or JSON document is written on a second thread while the GiNaC thread
+    // shapes the next step (derivationDocument). It must say exactly what the display
+    // trees say when rendered afterwards on one thread: the same text and LaTeX, and
+    // JSON whose every item, and the B, C, g, Q and energies it repeats at the top level
+    // (written from a cache of the items' renderings), match the trees.
+    void documentsWrittenBesideTheirShaping() {
+        for (const char* name : {"planar_2r.json", "puma560.json", "mass_spring_pair_lagrangian.json"}) {
+            const Scene scene = example(name);
+            for (const auto mode : {symbolic::ParameterMode::Parametric, symbolic::ParameterMode::Textbook}) {
+                DocumentRequest request;
+                request.mode = mode;
+                request.format = symbolic::DocumentFormat::Display;
+                const auto display = deriveDocument(scene, request).display;
+                QVERIFY(display && !display->steps.empty());
+                for (const auto format : {symbolic::DocumentFormat::Text, symbolic::DocumentFormat::Latex})
+                    QCOMPARE(derive(scene, mode, format), symbolic::renderDocument(*display, format));
+
+                const auto json = nlohmann::json::parse(derive(scene, mode, symbolic::DocumentFormat::Json));
+                QCOMPARE(json["steps"].size(), display->steps.size());
+                std::map<std::string, const symbolic::DisplayItem*> results;
+                for (std::size_t k = 0; k < display->steps.size(); ++k) {
+                    const auto& items = display->steps[k].items;
+                    QCOMPARE(json["steps"][k]["items"].size(), items.size());
+                    for (std::size_t i = 0; i < items.size(); ++i) {
+                        const auto& written = json["steps"][k]["items"][i];
+                        QCOMPARE(written["name"].get<std::string>(), items[i].name);
+                        QCOMPARE(written["text"].get<std::string>(), symbolic::itemText(items[i]));
+                        QCOMPARE(written["latex"].get<std::string>(),
+                                 symbolic::renderDisplay(*items[i].equation, symbolic::DisplayStyle::Latex));
+                        results[items[i].name] = &items[i];
+                    }
+                }
+                int repeated = 0;
+                for (const auto& [top, item] : {std::pair{"B", "B"}, {"C", "C"}, {"g", "g"}, {"Ekin", "E_kin"}, {"Epot", "E_pot"}}) {
+                    if (!results.count(item)) continue;
+                    const symbolic::DisplayNode& value = *results[item]->value;
+                    const auto& plain = json[top];
+                    if (value.kind != symbolic::DisplayKind::Matrix) {
+                        QCOMPARE(plain.get<std::string>(), symbolic::renderDisplay(value, symbolic::DisplayStyle::Plain));
+                    } else {
+                        QCOMPARE(plain.size(), value.rows.size());
+                        for (std::size_t r = 0; r < value.rows.size(); ++r)
+                            for (std::size_t c = 0; c < value.rows[r].size(); ++c) {
+                                const auto& cell = value.rows[r].size() == 1 ? plain[r] : plain[r][c];
+                                QCOMPARE(cell.get<std::string>(),
+                                         symbolic::renderDisplay(*value.rows[r][c], symbolic::DisplayStyle::Plain));
+                            }
+                    }
+                    ++repeated;
+                }
+                QVERIFY2(repeated >= 4, name);
+            }
+        }
     }
 
     // A long simulation and a work–precision analysis on workers stop with status

@@ -2,10 +2,15 @@
 
 #include <algorithm>
 #include <cctype>
+#include <condition_variable>
+#include <deque>
+#include <exception>
 #include <map>
+#include <mutex>
+#include <optional>
 #include <sstream>
+#include <thread>
 #include <unordered_map>
-#include <unordered_set>
 
 #include "core/model/actuation.hpp"
 #include "core/model/cancellation.hpp"
@@ -215,41 +220,39 @@ std::size_t widestLine(const std::string& s) {
 
 // Plain renderings of the nodes JSON writes twice: B, C, g, Q and the energies are
 // items of their steps and the document's results too (the same nodes: the builder
-// shares them). Written once, kept for the second time.
+// shares them). The renderings of those items' values and entries are kept as they are
+// written, for the second time. (The results come after the steps: what is kept is
+// chosen by the items' names.)
 class PlainTexts {
 public:
-    explicit PlainTexts(const DisplayResults& results) {
-        for (const DisplayPtr& r : {results.B, results.C, results.g, results.Q, results.Ekin, results.Epot}) {
-            twice_.insert(r.get());
-            for (const auto& row : r->rows)
-                for (const DisplayPtr& cell : row) twice_.insert(cell.get());
-        }
+    static bool isResult(const std::string& itemName) {
+        for (const char* name : {"B", "C", "g", "Q", "E_kin", "E_pot"})
+            if (itemName == name) return true;
+        return false;
     }
-    void write(JsonWriter& json, const DisplayNode& n) {
-        if (!twice_.count(&n)) return json.value(renderDisplay(n, DisplayStyle::Plain));
-        auto [it, added] = kept_.try_emplace(&n);
-        if (added) it->second = renderDisplay(n, DisplayStyle::Plain);
-        json.value(it->second);
+    void write(JsonWriter& json, const DisplayNode& n, bool keep) {
+        if (auto it = kept_.find(&n); it != kept_.end()) return json.value(it->second);
+        if (!keep) return json.value(renderDisplay(n, DisplayStyle::Plain));
+        json.value(kept_.emplace(&n, renderDisplay(n, DisplayStyle::Plain)).first->second);
     }
 
 private:
-    std::unordered_set<const DisplayNode*> twice_;
     std::unordered_map<const DisplayNode*, std::string> kept_;
 };
 
 // Plain (re-parsable) from the displayed tree: a matrix as rows of entries (a column
 // as a list), an equation as "lhs = rhs". The displayed form has the same value as the
 // derived one (grouping and angle sums keep it; decimals print with 17 digits).
-void writePlain(JsonWriter& json, const DisplayNode& value, PlainTexts& plain) {
-    if (value.kind != DisplayKind::Matrix) return plain.write(json, value);
+void writePlain(JsonWriter& json, const DisplayNode& value, PlainTexts& plain, bool keep) {
+    if (value.kind != DisplayKind::Matrix) return plain.write(json, value, keep);
     json.beginArray();
     for (const auto& r : value.rows) {
         if (r.size() == 1) {
-            plain.write(json, *r[0]);
+            plain.write(json, *r[0], keep);
             continue;
         }
         json.beginArray();
-        for (const DisplayPtr& c : r) plain.write(json, *c);
+        for (const DisplayPtr& c : r) plain.write(json, *c, keep);
         json.endArray();
     }
     json.endArray();
@@ -257,42 +260,48 @@ void writePlain(JsonWriter& json, const DisplayNode& value, PlainTexts& plain) {
 
 void writePlain(JsonWriter& json, const DisplayItem& item, PlainTexts& plain) {
     if (item.name.rfind("equation_", 0) == 0) return json.value(renderDisplay(*item.equation, DisplayStyle::Plain));
-    writePlain(json, *item.value, plain);
+    writePlain(json, *item.value, plain, PlainTexts::isResult(item.name));
 }
 
 std::string itemLatex(const DisplayItem& item) { return renderDisplay(*item.equation, DisplayStyle::Latex); }
 
-void writeText(const DisplayDocument& d, std::ostream& out) {
-    out << d.systemName << "\n" << std::string(d.systemName.size(), '=') << "\n";
-    for (const DisplayStep& step : d.steps) {
-        out << "\nStep " << step.number << ". " << step.title << "\n    " << step.formulaText << "\n\n";
-        for (const DisplayItem& item : step.items) out << itemText(item) << "\n\n";
-    }
-    out << "Actuation: " << d.actuation << "\n";
+// The documents in three parts (head, each step, tail): a step is written as soon as it
+// is shaped (derivationDocument).
+
+void writeTextHead(const std::string& systemName, std::ostream& out) {
+    out << systemName << "\n" << std::string(systemName.size(), '=') << "\n";
 }
 
-void writeLatex(const DisplayDocument& d, std::ostream& out) {
+void writeTextStep(const DisplayStep& step, std::ostream& out) {
+    out << "\nStep " << step.number << ". " << step.title << "\n    " << step.formulaText << "\n\n";
+    for (const DisplayItem& item : step.items) out << itemText(item) << "\n\n";
+}
+
+void writeTextTail(const std::string& actuation, std::ostream& out) { out << "Actuation: " << actuation << "\n"; }
+
+void writeLatexHead(const std::string& systemName, std::ostream& out) {
     out << "\\documentclass[a4paper,10pt]{article}\n"
            "\\usepackage[margin=1.5cm,landscape]{geometry}\n"
            "\\usepackage{amsmath,amssymb}\n"
            "\\allowdisplaybreaks\n"
            "\\setcounter{MaxMatrixCols}{20}\n"
-           "\\title{Euler--Lagrange model: " << latexText(d.systemName) << "}\n"
+           "\\title{Euler--Lagrange model: " << latexText(systemName) << "}\n"
            "\\author{LagrangeLab}\n\\date{}\n"
            "\\begin{document}\n\\maketitle\n"
            "Shorthand: $c_{i} = \\cos q_i$, $s_{i} = \\sin q_i$, $c_{12} = \\cos(q_1 + q_2)$, $\\dot{q}_i$ the joint velocities.\n";
-    for (const DisplayStep& step : d.steps) {
-        out << "\\section*{Step " << step.number << ": " << latexText(step.title) << "}\n\\[ " << step.formulaLatex << " \\]\n";
-        for (const DisplayItem& item : step.items) out << "\\[ " << itemLatex(item) << " \\]\n";
-    }
-    out << "\\paragraph{Actuation} " << latexText(d.actuation) << ".\n"
+}
+
+void writeLatexStep(const DisplayStep& step, std::ostream& out) {
+    out << "\\section*{Step " << step.number << ": " << latexText(step.title) << "}\n\\[ " << step.formulaLatex << " \\]\n";
+    for (const DisplayItem& item : step.items) out << "\\[ " << itemLatex(item) << " \\]\n";
+}
+
+void writeLatexTail(const std::string& actuation, std::ostream& out) {
+    out << "\\paragraph{Actuation} " << latexText(actuation) << ".\n"
         << "\\end{document}\n";
 }
 
-void writeJson(const Derivation& d, const DisplayDocument& shown, const DisplayResults& results, const std::string& mode,
-               std::string& out) {
-    PlainTexts plain(results);
-    JsonWriter json(out);
+void writeJsonHead(const Derivation& d, const std::string& mode, JsonWriter& json) {
     json.beginObject();
     json.key("system");
     json.value(d.systemName);
@@ -302,45 +311,48 @@ void writeJson(const Derivation& d, const DisplayDocument& shown, const DisplayR
     json.value(d.coordinateNames);
     json.key("steps");
     json.beginArray();
-    for (std::size_t k = 0; k < d.steps.size(); ++k) {
-        const DerivationStep& step = d.steps[k];
+}
+
+// Step `shown` of the document; `step` is the derivation's (its number, title, formula, time).
+void writeJsonStep(const DerivationStep& step, const DisplayStep& shown, PlainTexts& plain, JsonWriter& json) {
+    json.beginObject();
+    json.key("number");
+    json.value(step.number);
+    json.key("title");
+    json.value(step.title);
+    json.key("formula");
+    json.beginObject();
+    json.key("text");
+    json.value(step.formulaText);
+    json.key("latex");
+    json.value(step.formulaLatex);
+    json.endObject();
+    json.key("seconds");
+    json.value(step.seconds);
+    json.key("items");
+    json.beginArray();
+    for (const DisplayItem& item : shown.items) {
         json.beginObject();
-        json.key("number");
-        json.value(step.number);
-        json.key("title");
-        json.value(step.title);
-        json.key("formula");
-        json.beginObject();
-        json.key("text");
-        json.value(step.formulaText);
+        json.key("name");
+        json.value(item.name);
         json.key("latex");
-        json.value(step.formulaLatex);
-        json.endObject();
-        json.key("seconds");
-        json.value(step.seconds);
-        json.key("items");
-        json.beginArray();
-        for (std::size_t i = 0; i < step.items.size(); ++i) {
-            const DisplayItem& item = shown.steps[k].items[i];
-            json.beginObject();
-            json.key("name");
-            json.value(item.name);
-            json.key("latex");
-            json.value(itemLatex(item));
-            json.key("text");
-            json.value(itemText(item));
-            json.key("expr");
-            writePlain(json, item, plain);
-            json.endObject();
-        }
-        json.endArray();
+        json.value(itemLatex(item));
+        json.key("text");
+        json.value(itemText(item));
+        json.key("expr");
+        writePlain(json, item, plain);
         json.endObject();
     }
+    json.endArray();
+    json.endObject();
+}
+
+void writeJsonTail(const Derivation& d, const DisplayResults& results, PlainTexts& plain, JsonWriter& json) {
     json.endArray();
     for (const auto& [name, value] : {std::pair{"B", &results.B}, {"C", &results.C}, {"g", &results.g}, {"Q", &results.Q},
                                       {"Ekin", &results.Ekin}, {"Epot", &results.Epot}}) {
         json.key(name);
-        writePlain(json, **value, plain);
+        writePlain(json, **value, plain, false);
     }
     std::vector<std::string> actuated;
     for (int a : d.actuated) actuated.push_back(d.coordinateNames[a]);
@@ -351,11 +363,23 @@ void writeJson(const Derivation& d, const DisplayDocument& shown, const DisplayR
     json.key("warnings");
     json.value(d.warnings);
     json.endObject();
-    out += '\n';
 }
 
 const char* const massMatrixFormula =
     R"(,\quad B(q) = \sum_i \left(m_i\, J_{P,i}^T J_{P,i} + J_{O,i}^T R_i\, I_{li}\, R_i^T J_{O,i}\right))";
+
+DisplayStep shapeStep(const Derivation& d, const DerivationStep& step, Presenter& presenter, DisplayBuilder& build,
+                      const DisplayOptions& options, const std::atomic<bool>* cancel) {
+    DisplayStep s{step.number, step.title, step.formulaText, step.formulaLatex, {}, step.seconds, {}};
+    // The notes' general formula typeset; a robot's step 7 also gives B as the notes sum it.
+    const bool robot = d.trigToFunctions.nops() > 0;
+    s.formula = formulaFromLatex(step.formulaLatex + (robot && step.number == 7 ? massMatrixFormula : ""), step.formulaText);
+    for (const DerivationItem& item : step.items) {
+        throwIfCancelled(cancel);  // a newer edit need not wait for this document under the GiNaC lock
+        s.items.push_back(displayItem(item, presenter, build, options));
+    }
+    return s;
+}
 
 std::shared_ptr<const DisplayDocument> shapeDocument(const Derivation& d, Presenter& presenter, DisplayBuilder& build,
                                                      const std::atomic<bool>* cancel = nullptr) {
@@ -364,18 +388,80 @@ std::shared_ptr<const DisplayDocument> shapeDocument(const Derivation& d, Presen
     doc->coordinateNames = d.coordinateNames;
     doc->actuation = actuationText(d.actuated, d.coordinateNames);
     const DisplayOptions options = displayOptions(printOptionsFor(d, Style::Text));
-    for (const DerivationStep& step : d.steps) {
-        DisplayStep s{step.number, step.title, step.formulaText, step.formulaLatex, {}, step.seconds, {}};
-        // The notes' general formula typeset; a robot's step 7 also gives B as the notes sum it.
-        const bool robot = d.trigToFunctions.nops() > 0;
-        s.formula = formulaFromLatex(step.formulaLatex + (robot && step.number == 7 ? massMatrixFormula : ""), step.formulaText);
-        for (const DerivationItem& item : step.items) {
-            throwIfCancelled(cancel);  // a newer edit need not wait for this document under the GiNaC lock
-            s.items.push_back(displayItem(item, presenter, build, options));
-        }
-        doc->steps.push_back(std::move(s));
-    }
+    for (const DerivationStep& step : d.steps) doc->steps.push_back(shapeStep(d, step, presenter, build, options, cancel));
     return doc;
+}
+
+// Shaped steps handed from the thread that shapes them (GiNaC, under its lock) to the
+// one that writes them (display trees only, no GiNaC): a step is written while the next
+// is shaped, on the second core. JSON's results (B, C, g, ...) come after the last step.
+class StepHandover {
+public:
+    void put(DisplayStep step) {
+        {
+            const std::lock_guard lock(mutex_);
+            steps_.push_back(std::move(step));
+        }
+        ready_.notify_one();
+    }
+    // No more steps; `results` for JSON. Not finished normally: the writer stops.
+    void finish(std::optional<DisplayResults> results, bool failed = false) {
+        {
+            const std::lock_guard lock(mutex_);
+            results_ = std::move(results);
+            finished_ = true;
+            failed_ = failed;
+        }
+        ready_.notify_one();
+    }
+    // The next step (kept here, in place, until the handover ends), or null after the
+    // last one.
+    const DisplayStep* next() {
+        std::unique_lock lock(mutex_);
+        ready_.wait(lock, [&] { return taken_ < steps_.size() || finished_; });
+        if (failed_) return nullptr;
+        return taken_ < steps_.size() ? &steps_[taken_++] : nullptr;
+    }
+    // After next() gave null: whether the steps ended normally, and the results.
+    bool failed() {
+        const std::lock_guard lock(mutex_);
+        return failed_;
+    }
+    const std::optional<DisplayResults>& results() {
+        const std::lock_guard lock(mutex_);
+        return results_;
+    }
+
+private:
+    std::mutex mutex_;
+    std::condition_variable ready_;
+    std::deque<DisplayStep> steps_;  // a deque: push_back leaves the given steps in place
+    std::size_t taken_ = 0;
+    bool finished_ = false, failed_ = false;
+    std::optional<DisplayResults> results_;
+};
+
+// The writer's side: the document in `format` from the handed-over steps.
+void writeHandedOver(const Derivation& d, DocumentFormat format, const std::string& modeName, StepHandover& steps,
+                     std::string& out) {
+    if (format == DocumentFormat::Json) {
+        PlainTexts plain;
+        JsonWriter json(out);
+        writeJsonHead(d, modeName, json);
+        for (std::size_t k = 0; const DisplayStep* step = steps.next(); ++k) writeJsonStep(d.steps[k], *step, plain, json);
+        if (steps.failed()) return;
+        writeJsonTail(d, *steps.results(), plain, json);
+        out += '\n';
+        return;
+    }
+    std::ostringstream text;
+    const bool latex = format == DocumentFormat::Latex;
+    latex ? writeLatexHead(d.systemName, text) : writeTextHead(d.systemName, text);
+    while (const DisplayStep* step = steps.next()) latex ? writeLatexStep(*step, text) : writeTextStep(*step, text);
+    if (steps.failed()) return;
+    const std::string actuation = actuationText(d.actuated, d.coordinateNames);
+    latex ? writeLatexTail(actuation, text) : writeTextTail(actuation, text);
+    out = std::move(text).str();
 }
 
 }  // namespace
@@ -435,22 +521,54 @@ std::shared_ptr<const DisplayDocument> displayDocument(const Derivation& d, cons
 
 std::string renderDocument(const DisplayDocument& document, DocumentFormat format) {
     std::ostringstream out;
-    if (format == DocumentFormat::Text) writeText(document, out);
-    if (format == DocumentFormat::Latex) writeLatex(document, out);
+    if (format == DocumentFormat::Text) {
+        writeTextHead(document.systemName, out);
+        for (const DisplayStep& step : document.steps) writeTextStep(step, out);
+        writeTextTail(document.actuation, out);
+    }
+    if (format == DocumentFormat::Latex) {
+        writeLatexHead(document.systemName, out);
+        for (const DisplayStep& step : document.steps) writeLatexStep(step, out);
+        writeLatexTail(document.actuation, out);
+    }
     return out.str();
 }
 
 std::string derivationDocument(const Derivation& d, DocumentFormat format, const std::string& modeName) {
+    if (format == DocumentFormat::Display) return {};
     const auto lock = lockGinac();
-    if (format != DocumentFormat::Json) return renderDocument(*displayDocument(d), format);
-    DisplayBuilder build(displayOptions(printOptionsFor(d, Style::Text)));
-    Presenter presenter(d, d.trigToFunctions.nops() > 0);
-    const auto shown = shapeDocument(d, presenter, build);
-    const DisplayResults results{build(presenter.present("B", d.B)),       build(presenter.present("C", d.C)),
-                                 build(presenter.present("g", d.g)),       build(presenter.present("Q", d.Q)),
-                                 build(presenter.present("E_kin", d.Ekin)), build(presenter.present("E_pot", d.Epot))};
+    const DisplayOptions options = displayOptions(printOptionsFor(d, Style::Text));
+    auto build = std::make_unique<DisplayBuilder>(options);
+    auto presenter = std::make_unique<Presenter>(d, d.trigToFunctions.nops() > 0);
+    StepHandover steps;
     std::string out;
-    writeJson(d, *shown, results, modeName, out);
+    std::exception_ptr writeFailed;
+    std::thread writer([&] {
+        try {
+            writeHandedOver(d, format, modeName, steps, out);
+        } catch (...) {
+            writeFailed = std::current_exception();
+        }
+    });
+    try {
+        for (const DerivationStep& step : d.steps) steps.put(shapeStep(d, step, *presenter, *build, options, nullptr));
+        std::optional<DisplayResults> results;
+        if (format == DocumentFormat::Json) {
+            auto shown = [&](const char* name, const GiNaC::ex& value) { return (*build)(presenter->present(name, value)); };
+            results = DisplayResults{shown("B", d.B), shown("C", d.C), shown("g", d.g),
+                                     shown("Q", d.Q), shown("E_kin", d.Ekin), shown("E_pot", d.Epot)};
+        }
+        steps.finish(std::move(results));
+        // Their caches are freed while the writer finishes (the trees it reads are the steps').
+        presenter.reset();
+        build.reset();
+    } catch (...) {
+        steps.finish(std::nullopt, true);
+        writer.join();
+        throw;
+    }
+    writer.join();
+    if (writeFailed) std::rethrow_exception(writeFailed);
     return out;
 }
 
