@@ -211,6 +211,34 @@ private slots:
             QCOMPARE(rects, rules + 1);
         }
     }
+
+    // Two exports (the 2R and the SCARA, each with its own glyph numbering) inlined in
+    // one HTML page share one id namespace: an id names one outline in both, and a glyph
+    // both draw has one id.
+    void idsNameOneOutlineAcrossExports() {
+        QHash<QString, QString> outlineOf;
+        QSet<QString> seen[2];
+        const char* scenes[] = {"planar_2r.json", "scara.json"};
+        for (int e = 0; e < 2; ++e) {
+            const ui::DerivationPages pages = ui::paginate(*documentOf(scenes[e]));
+            ui::SvgGlyphs glyphs;
+            for (std::size_t i = 0; i < pages.pages.size(); ++i) {
+                const std::string svg = ui::svgPage(marksOf(pages, i, glyphs),
+                                                    QSizeF(pages.format.widthPt, pages.format.heightPt), scenes[e], glyphs);
+                QXmlStreamReader xml(QString::fromStdString(svg));
+                while (!xml.atEnd()) {
+                    xml.readNext();
+                    if (!xml.isStartElement() || xml.name() != u"path" || !xml.attributes().hasAttribute("id")) continue;
+                    const QString id = xml.attributes().value("id").toString(), d = xml.attributes().value("d").toString();
+                    QVERIFY2(outlineOf.value(id, d) == d, qPrintable("two outlines named " + id));
+                    outlineOf.insert(id, d);
+                    seen[e].insert(id);
+                }
+            }
+        }
+        QVERIFY(seen[0].size() > 30 && seen[1].size() > 30);
+        QVERIFY(QSet<QString>(seen[0]).intersect(seen[1]).size() > 20);
+    }
 };
 
 int main(int argc, char** argv) {

@@ -4,6 +4,9 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
+#include <string_view>
+#include <unordered_set>
 
 namespace ll::ui {
 namespace {
@@ -75,6 +78,11 @@ int SvgGlyphs::number(int font, quint32 glyph) {
     if (auto it = numbers_.find(key); it != numbers_.end()) return it->second;
     const int n = static_cast<int>(outlines_.size());
     outlines_.push_back(pathData(fonts_[static_cast<std::size_t>(font)].pathForGlyph(glyph), perDevice_));
+    std::uint64_t hash = 0xcbf29ce484222325ull;  // FNV-1a
+    for (const char c : outlines_.back()) hash = (hash ^ static_cast<unsigned char>(c)) * 0x100000001b3ull;
+    char id[24];
+    std::snprintf(id, sizeof id, "g%016llx", static_cast<unsigned long long>(hash));
+    ids_.emplace_back(id);
     numbers_.emplace(key, n);
     return n;
 }
@@ -115,8 +123,10 @@ std::string svgPage(const MathMarks& marks, QSizeF sizePt, const std::string& ti
     out += "\">\n<title>";
     appendEscaped(out, title);
     out += "</title>\n<defs>\n";
+    std::unordered_set<std::string_view> defined;  // two glyphs of one outline (one id): defined once
     for (const int n : used) {
-        out += "<path id=\"g" + std::to_string(n) + "\" d=\"";
+        if (!defined.insert(glyphs.id(n)).second) continue;
+        out += "<path id=\"" + glyphs.id(n) + "\" d=\"";
         out += glyphs.outline(n);
         out += "\"/>\n";
     }
@@ -153,7 +163,7 @@ std::string svgPage(const MathMarks& marks, QSizeF sizePt, const std::string& ti
         for (qsizetype i = 0; i < run.indexes.size(); ++i) {
             const int n = numbers[r][static_cast<std::size_t>(i)];
             if (glyphs.outline(n).empty()) continue;
-            out += "<use xlink:href=\"#g" + std::to_string(n) + "\" x=\"";
+            out += "<use xlink:href=\"#" + glyphs.id(n) + "\" x=\"";
             appendNumber(out, k * run.positions[i].x());
             out += "\" y=\"";
             appendNumber(out, k * run.positions[i].y());

@@ -29,12 +29,16 @@ public:
     // outline(number).
     int number(int font, quint32 glyph);
     const std::string& outline(int number) const { return outlines_[static_cast<std::size_t>(number)]; }
+    // Its element id: "g" and a 64-bit hash of the outline, so that two SVGs inlined in
+    // one HTML page (other exports, other robots) give one id only to one shape.
+    const std::string& id(int number) const { return ids_[static_cast<std::size_t>(number)]; }
 
 private:
     double perDevice_;
     std::vector<QRawFont> fonts_;
     std::unordered_map<std::uint64_t, int> numbers_;  // by font << 32 | glyph
     std::vector<std::string> outlines_;               // empty for a blank glyph (a space)
+    std::vector<std::string> ids_;
 };
 
 // The SVG document of one page sizePt points large, black marks on white; the marks are
