@@ -19,12 +19,19 @@ namespace {
 
 std::string idx(int i) { return std::to_string(i + 1); }
 
+// q1, q2, … (appended: GCC 12 warns falsely, -Wrestrict, on "q" + idx(i) inlined)
+std::string coordinateName(int i) {
+    std::string name(1, 'q');
+    name += idx(i);
+    return name;
+}
+
 std::size_t termCount(const GiNaC::ex& e) { return e.is_zero() ? 0 : GiNaC::is_a<GiNaC::add>(e) ? e.nops() : 1; }
 
 PrintOptions optionsFor(const StructuredDynamics& s, Style style) {
     PrintOptions o;
     o.style = style;
-    for (int i = 0; i < s.n; ++i) o.coordinateNames.push_back("q" + idx(i));
+    for (int i = 0; i < s.n; ++i) o.coordinateNames.push_back(coordinateName(i));
     o.trigSymbols = true;
     return o;
 }
@@ -32,14 +39,20 @@ PrintOptions optionsFor(const StructuredDynamics& s, Style style) {
 std::string coordinateList(std::uint64_t bits, int n) {
     std::string out;
     for (int k = 0; k < n; ++k)
-        if (bits & (std::uint64_t(1) << k)) out += (out.empty() ? "q" : ", q") + idx(k);
+        if (bits & (std::uint64_t(1) << k)) {
+            out += out.empty() ? "q" : ", q";
+            out += idx(k);
+        }
     return out.empty() ? "none" : out;
 }
 
 std::string entryLabel(char m, int r, int c, int n) {
-    const bool wide = n >= 10;
-    if (m == 'g') return "g" + idx(r);
-    return std::string(1, m) + idx(r) + (wide ? "_" : "") + idx(c);
+    std::string label(1, m);  // appended, for the -Wrestrict false positive (coordinateName)
+    label += idx(r);
+    if (m == 'g') return label;
+    if (n >= 10) label += '_';
+    label += idx(c);
+    return label;
 }
 
 // Step headings in LaTeX (text mode with math where the notes have it).
@@ -260,7 +273,7 @@ void writeJson(const StructuredDynamics& s, const StructuredDocumentInfo& info, 
     j["form"] = info.form;
     j["form_reason"] = info.formReason;
     std::vector<std::string> coordinates;
-    for (int i = 0; i < s.n; ++i) coordinates.push_back("q" + idx(i));
+    for (int i = 0; i < s.n; ++i) coordinates.push_back(coordinateName(i));
     j["coordinates"] = coordinates;
     nlohmann::ordered_json defs = nlohmann::ordered_json::array();
     for (int k : byStep(s, sel)) {
