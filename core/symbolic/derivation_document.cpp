@@ -219,8 +219,8 @@ std::size_t widestLine(const std::string& s) {
 }
 
 // Plain renderings of the nodes JSON writes twice: B, C, g, Q and the energies are
-// items of their steps and the document's results too (the same nodes: the builder
-// shares them). The renderings of those items' values and entries are kept as they are
+// items of their steps and the document's results too (their sums are the same nodes:
+// the builder caches them; a matrix node itself is made anew). The renderings of those items' values and entries are kept as they are
 // written, for the second time. (The results come after the steps: what is kept is
 // chosen by the items' names.)
 class PlainTexts {

@@ -431,8 +431,8 @@ private:
         for (const GiNaC::expair& p : pairs) {
             const TermBody* body = nullptr;
             if (keep) {
-                auto [it, added] = bodies_.try_emplace(p.rest);
-                if (added) it->second = bodyOf(p.rest);
+                auto it = bodies_.find(p.rest);  // (bodyOf may add to bodies_: made before emplacing)
+                if (it == bodies_.end()) it = bodies_.emplace(p.rest, bodyOf(p.rest)).first;
                 body = &it->second;
             } else {
                 body = &local.emplace_back(bodyOf(p.rest));
