@@ -756,14 +756,26 @@ private slots:
         for (const char* suffix : {"svg", "png"}) {
             const QString file = dir_.filePath(QString("slides/derivation.%1").arg(suffix));
             QVERIFY(QDir().mkpath(dir_.filePath("slides")));
+            // Two pages of an earlier, longer SVG export are there already: named, kept.
+            const bool older = QString(suffix) == "svg";
+            if (older)
+                for (int k : {pdfPages + 1, pdfPages + 2}) {
+                    QFile stale(dir_.filePath(QString("slides/derivation-%1.svg").arg(k)));
+                    QVERIFY(stale.open(QIODevice::WriteOnly) && stale.write("<svg/>") == 6);
+                }
             QVERIFY2(w.exportDerivationTo(file, &error), qPrintable(error));
             QVERIFY(exported.wait(60000));
             QCOMPARE(exported.back().at(1).toString(), QString());
             const QStringList written = QDir(dir_.filePath("slides")).entryList({QString("*.%1").arg(suffix)});
-            QCOMPARE(written.size(), pdfPages);
-            // The status bar names the first page and the last.
+            QCOMPARE(written.size(), pdfPages + (older ? 2 : 0));
+            // The status bar names the first page and the last (and the older pages).
             const QString status = w.statusBar()->currentMessage();
             QVERIFY2(status.contains(file) && status.contains(QString("derivation-%1.%2").arg(pdfPages).arg(suffix)), qPrintable(status));
+            QCOMPARE(status.contains(QString("2 page files of an earlier, longer export remain beside it, not deleted: derivation-%1.svg … derivation-%2.svg")
+                                         .arg(pdfPages + 1)
+                                         .arg(pdfPages + 2)),
+                     older);
+            if (older) QCOMPARE(readAll(dir_.filePath(QString("slides/derivation-%1.svg").arg(pdfPages + 2))), QByteArray("<svg/>"));
             QImage page;
             if (QString(suffix) == "png") {
                 page = QImage(file);

@@ -354,6 +354,38 @@ private slots:
         QVERIFY(inked(bitmap) > 0.002);
     }
 
+    // Pages of an earlier, longer export into the same name are named on stderr and left
+    // as they were (nothing deletes a user's files).
+    void olderPagesNamedNotDeleted() {
+        QTemporaryDir dir;
+        const QString svg = dir.filePath("b.svg");
+        QCOMPARE(run({"derive", example("planar_2r.json"), "--format", "svg", "--out", svg}).code, 0);
+        const QStringList all = QDir(dir.path()).entryList({"b*.svg"}, QDir::Files);
+        QVERIFY(all.size() >= 3);
+        QFile last(dir.filePath(QString("b-%1.svg").arg(all.size())));
+        QVERIFY(last.open(QIODevice::ReadOnly));
+        const QByteArray lastBytes = last.readAll();
+        last.close();
+
+        const Run again = run({"derive", example("planar_2r.json"), "--format", "svg", "--out", svg, "--steps", "7"});
+        QCOMPARE(again.code, 0);
+        const int now = static_cast<int>(again.err.count("wrote ")) > 0 ? static_cast<int>(again.err.count("wrote ")) : 1;
+        QVERIFY(now < all.size());
+        const QString note = QString("note: %1 page file%2 of an earlier, longer export remain")
+                                 .arg(all.size() - now)
+                                 .arg(all.size() - now == 1 ? "" : "s");
+        QVERIFY2(again.err.contains(note), qPrintable(again.err));
+        QVERIFY2(again.err.contains(QString("b-%1.svg").arg(now + 1)), qPrintable(again.err));
+        QCOMPARE(QDir(dir.path()).entryList({"b*.svg"}, QDir::Files).size(), all.size());
+        QVERIFY(last.open(QIODevice::ReadOnly));
+        QCOMPARE(last.readAll(), lastBytes);
+
+        // The same number of pages again: nothing to say.
+        const Run same = run({"derive", example("planar_2r.json"), "--format", "svg", "--out", svg});
+        QCOMPARE(same.code, 0);
+        QVERIFY2(!same.err.contains("note:"), qPrintable(same.err));
+    }
+
     void badInput_data() {
         QTest::addColumn<QStringList>("args");
         QTest::addColumn<QString>("names");

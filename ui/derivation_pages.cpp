@@ -266,6 +266,15 @@ bool writeSvg(const DerivationPages& pages, const QString& path, std::string& er
     return true;
 }
 
+std::vector<QString> pagesBeyond(const QString& path, int pageCount) {
+    std::vector<QString> files;
+    for (int i = std::max(pageCount, 1);; ++i) {
+        const QString file = pagePath(path, i);
+        if (!QFileInfo::exists(file)) return files;
+        files.push_back(file);
+    }
+}
+
 bool writePng(const DerivationPages& pages, const QString& path, std::string& error, std::vector<QString>* written, double dpi) {
     const double perPt = dpi / 72.0;
     for (std::size_t i = 0; i < pages.pages.size(); ++i) {

@@ -52,4 +52,9 @@ bool writeSvg(const DerivationPages& pages, const QString& path, std::string& er
 bool writePng(const DerivationPages& pages, const QString& path, std::string& error, std::vector<QString>* written = nullptr,
               double dpi = 150);
 
+// The page files beside `path` past its first `pageCount` (STEM-(pageCount+1).EXT and on,
+// while they exist): left by an earlier, longer export into the same name. They are
+// named to the user, never deleted (they may be kept on purpose).
+std::vector<QString> pagesBeyond(const QString& path, int pageCount);
+
 }  // namespace ll::ui
