@@ -285,7 +285,13 @@ bool writePng(const DerivationPages& pages, const QString& path, std::string& er
             QPainter painter(&image);
             painter.setRenderHint(QPainter::Antialiasing);
             painter.setRenderHint(QPainter::TextAntialiasing);
-            paintPage(painter, pages, static_cast<int>(i), perPt);
+            // Shaped at ten device units per point as the PDF and SVG are, then scaled to
+            // the image: shaped at the image's own pixel size, a glyph's advance is
+            // rounded to whole pixels and a line of prose came out about 1 % longer or
+            // shorter than in the PDF.
+            constexpr double shapedPerPt = 10;
+            painter.scale(perPt / shapedPerPt, perPt / shapedPerPt);
+            paintPage(painter, pages, static_cast<int>(i), shapedPerPt);
         }
         QByteArray bytes;
         QBuffer buffer(&bytes);
