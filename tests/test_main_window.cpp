@@ -5,6 +5,8 @@
 
 #include <QApplication>
 #include <QFile>
+#include <QFileDialog>
+#include <QMessageBox>
 #include <QProcess>
 #include <QSettings>
 #include <QTemporaryDir>
@@ -702,6 +704,53 @@ private slots:
         timer.stop();
         QVERIFY2(ticks > 0, "the GUI thread did not process events while the file was checked");
         QCOMPARE(w.document().validScene().robot.dof(), 6);
+    }
+
+    // File ▸ Export ▸ Derivation through its dialog, as a user does it: the SVG filter
+    // chosen and a name typed without an extension; the pages are written under that
+    // name with the filter's extension.
+    void exportDialogTakesTheFiltersExtension() {
+        MainWindow w;
+        QVERIFY(openShown(w, "planar_2r.json"));
+        QAction* action = nullptr;
+        for (QAction* a : w.findChildren<QAction*>())
+            if (a->text().startsWith(MainWindow::tr("Derivation (PDF"))) action = a;
+        QVERIFY(action);
+        QVERIFY(QDir().mkpath(dir_.filePath("dialog")));
+        const QString stem = dir_.filePath("dialog/slides");
+        QString chosen, refused;
+        int polls = 0;
+        QTimer poll;
+        poll.setInterval(50);
+        connect(&poll, &QTimer::timeout, [&] {
+            QWidget* modal = QApplication::activeModalWidget();
+            if (auto* box = qobject_cast<QMessageBox*>(modal)) {  // a refusal: noted and closed, never waited on
+                refused = box->text();
+                box->reject();
+                return;
+            }
+            auto* dialog = qobject_cast<QFileDialog*>(modal);
+            if (!dialog || !chosen.isEmpty()) {
+                if (++polls > 200) poll.stop();  // no dialog: the test fails below
+                return;
+            }
+            for (const QString& filter : dialog->nameFilters())
+                if (filter.startsWith("SVG")) chosen = filter;
+            dialog->selectNameFilter(chosen);
+            dialog->selectFile(stem);
+            static_cast<QDialog*>(dialog)->accept();  // QFileDialog::accept, through QDialog (protected in QFileDialog)
+        });
+        poll.start();
+        QSignalSpy exported(&w, &MainWindow::exportFinished);
+        action->trigger();  // returns when the dialog is accepted
+        QVERIFY2(chosen.startsWith("SVG") && chosen.contains("(*.svg)"), qPrintable(chosen));
+        QVERIFY2(refused.isEmpty(), qPrintable(refused));
+        QVERIFY(exported.wait(60000));
+        QCOMPARE(exported.back().at(0).toString(), stem + ".svg");
+        QCOMPARE(exported.back().at(1).toString(), QString());
+        QVERIFY(QSvgRenderer(stem + ".svg").isValid());
+        QVERIFY(QFileInfo::exists(stem + "-2.svg"));
+        QVERIFY(!QFileInfo::exists(stem));
     }
 
     // Exports: the plot as PNG, SVG and CSV, the derivation as PDF (typeset, as `derive
