@@ -737,7 +737,12 @@ private slots:
             for (const QString& filter : dialog->nameFilters())
                 if (filter.startsWith("SVG")) chosen = filter;
             dialog->selectNameFilter(chosen);
-            dialog->selectFile(stem);
+            dialog->setDirectory(QFileInfo(stem).absolutePath());
+            // Typed into the name box, as a user types it (selectFile lost the race with the
+            // filter's own rename of the proposed name when the whole suite ran).
+            auto* name = dialog->findChild<QLineEdit*>("fileNameEdit");
+            if (name) name->setText(QFileInfo(stem).fileName());
+            else dialog->selectFile(stem);
             static_cast<QDialog*>(dialog)->accept();  // QFileDialog::accept, through QDialog (protected in QFileDialog)
         });
         poll.start();
