@@ -153,10 +153,9 @@ int deriveCommand(const Args& args) {
     if (written.size() > 1)
         for (const QString& file : written) std::fprintf(stderr, "wrote %s\n", file.toStdString().c_str());
     if (const auto older = ui::pagesBeyond(out, static_cast<int>(written.size())); !older.empty())
-        std::fprintf(stderr, "note: %zu page file%s of an earlier, longer export remain%s beside %s, not rewritten and not deleted: %s%s%s\n",
+        std::fprintf(stderr, "note: %zu page file%s of an earlier, longer export remain%s beside %s, not rewritten and not deleted: %s\n",
                      older.size(), older.size() == 1 ? "" : "s", older.size() == 1 ? "s" : "", written.size() == 1 ? "it" : "these",
-                     QFileInfo(older.front()).fileName().toStdString().c_str(), older.size() > 1 ? " … " : "",
-                     older.size() > 1 ? QFileInfo(older.back()).fileName().toStdString().c_str() : "");
+                     ui::fileNameRange(older).toStdString().c_str());
     return 0;
 }
 

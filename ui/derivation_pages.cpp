@@ -275,6 +275,12 @@ std::vector<QString> pagesBeyond(const QString& path, int pageCount) {
     }
 }
 
+QString fileNameRange(const std::vector<QString>& files) {
+    if (files.empty()) return {};
+    const QString first = QFileInfo(files.front()).fileName();
+    return files.size() == 1 ? first : first + " … " + QFileInfo(files.back()).fileName();
+}
+
 bool writePng(const DerivationPages& pages, const QString& path, std::string& error, std::vector<QString>* written, double dpi) {
     const double perPt = dpi / 72.0;
     for (std::size_t i = 0; i < pages.pages.size(); ++i) {

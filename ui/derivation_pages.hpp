@@ -56,5 +56,7 @@ bool writePng(const DerivationPages& pages, const QString& path, std::string& er
 // while they exist): left by an earlier, longer export into the same name. They are
 // named to the user, never deleted (they may be kept on purpose).
 std::vector<QString> pagesBeyond(const QString& path, int pageCount);
+// Their names as a message gives them: "b-5.svg", or "b-5.svg … b-9.svg".
+QString fileNameRange(const std::vector<QString>& files);
 
 }  // namespace ll::ui

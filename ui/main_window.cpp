@@ -1016,12 +1016,11 @@ bool MainWindow::exportDerivationTo(const QString& path, QString* error) {
                     shown = tr("%1 … %2 (%n pages)", nullptr, static_cast<int>(written.size())).arg(path, QFileInfo(written.back()).fileName());
                 if (failure.isEmpty())
                     if (const auto older = pagesBeyond(path, static_cast<int>(written.size())); !older.empty())
-                        shown += older.size() == 1
-                                     ? tr("; 1 page file of an earlier, longer export remains beside it, not deleted: %1")
-                                           .arg(QFileInfo(older.front()).fileName())
-                                     : tr("; %n page files of an earlier, longer export remain beside it, not deleted: %1 … %2",
-                                          nullptr, static_cast<int>(older.size()))
-                                           .arg(QFileInfo(older.front()).fileName(), QFileInfo(older.back()).fileName());
+                        shown += (older.size() == 1
+                                      ? tr("; 1 page file of an earlier, longer export remains beside it, not deleted: %1")
+                                      : tr("; %n page files of an earlier, longer export remain beside it, not deleted: %1",
+                                           nullptr, static_cast<int>(older.size())))
+                                     .arg(fileNameRange(older));
             } else {
                 const auto format = suffix == "tex" ? symbolic::DocumentFormat::Latex : symbolic::DocumentFormat::Text;
                 saveFileAtomically(path.toStdString(), symbolic::renderDocument(*display, format), Backup::None);

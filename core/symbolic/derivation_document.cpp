@@ -301,6 +301,18 @@ void writeLatexTail(const std::string& actuation, std::ostream& out) {
         << "\\end{document}\n";
 }
 
+// The text and LaTeX documents' three parts, by format.
+struct StreamWriters {
+    void (*head)(const std::string& systemName, std::ostream& out);
+    void (*step)(const DisplayStep& step, std::ostream& out);
+    void (*tail)(const std::string& actuation, std::ostream& out);
+};
+
+StreamWriters streamWriters(DocumentFormat format) {
+    if (format == DocumentFormat::Latex) return {writeLatexHead, writeLatexStep, writeLatexTail};
+    return {writeTextHead, writeTextStep, writeTextTail};
+}
+
 void writeJsonHead(const Derivation& d, const std::string& mode, JsonWriter& json) {
     json.beginObject();
     json.key("system");
@@ -455,12 +467,11 @@ void writeHandedOver(const Derivation& d, DocumentFormat format, const std::stri
         return;
     }
     std::ostringstream text;
-    const bool latex = format == DocumentFormat::Latex;
-    latex ? writeLatexHead(d.systemName, text) : writeTextHead(d.systemName, text);
-    while (const DisplayStep* step = steps.next()) latex ? writeLatexStep(*step, text) : writeTextStep(*step, text);
+    const StreamWriters write = streamWriters(format);
+    write.head(d.systemName, text);
+    while (const DisplayStep* step = steps.next()) write.step(*step, text);
     if (steps.failed()) return;
-    const std::string actuation = actuationText(d.actuated, d.coordinateNames);
-    latex ? writeLatexTail(actuation, text) : writeTextTail(actuation, text);
+    write.tail(actuationText(d.actuated, d.coordinateNames), text);
     out = std::move(text).str();
 }
 
@@ -520,17 +531,12 @@ std::shared_ptr<const DisplayDocument> displayDocument(const Derivation& d, cons
 }
 
 std::string renderDocument(const DisplayDocument& document, DocumentFormat format) {
+    if (format != DocumentFormat::Text && format != DocumentFormat::Latex) return {};
     std::ostringstream out;
-    if (format == DocumentFormat::Text) {
-        writeTextHead(document.systemName, out);
-        for (const DisplayStep& step : document.steps) writeTextStep(step, out);
-        writeTextTail(document.actuation, out);
-    }
-    if (format == DocumentFormat::Latex) {
-        writeLatexHead(document.systemName, out);
-        for (const DisplayStep& step : document.steps) writeLatexStep(step, out);
-        writeLatexTail(document.actuation, out);
-    }
+    const StreamWriters write = streamWriters(format);
+    write.head(document.systemName, out);
+    for (const DisplayStep& step : document.steps) write.step(step, out);
+    write.tail(document.actuation, out);
     return out.str();
 }
 
