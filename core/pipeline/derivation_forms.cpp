@@ -74,6 +74,7 @@ void announceForm(std::string& document, symbolic::DocumentFormat format, const 
             if (at != std::string::npos) document.insert(at + mark.size(), "Form: expanded (" + symbolic::latexText(reason) + ").\n");
             break;
         }
+        case symbolic::DocumentFormat::Display: break;  // no string document: the trees carry no form line
     }
 }
 

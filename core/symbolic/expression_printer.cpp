@@ -32,7 +32,12 @@ DisplayStyle displayStyle(Style s) {
 
 }  // namespace
 
-DisplayOptions displayOptions(const PrintOptions& options) { return {options.coordinateNames, options.trigSymbols}; }
+DisplayOptions displayOptions(const PrintOptions& options) {
+    DisplayOptions out;
+    out.coordinateNames = options.coordinateNames;
+    out.trigSymbols = options.trigSymbols;
+    return out;
+}
 
 std::string textCoordinateName(const std::string& name, int dots) {
     return renderDisplay(*displaySymbolName(name, dots), DisplayStyle::Text);

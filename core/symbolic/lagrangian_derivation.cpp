@@ -180,7 +180,7 @@ private:
             ex V = 0;
             for (int k = integrand.ldegree(s); k <= integrand.degree(s); ++k)
                 V += integrand.coeff(s, k) / (k + 1);
-            potential = " " + str(V.normal());
+            potential = str(V.normal()).insert(0, 1, ' ');  // not " " + …: GCC 12's -Wrestrict misreads it
         }
         std::vector<Diagnostic> errors;
         for (int i : conservative)
@@ -298,9 +298,10 @@ private:
         v /= v[largest];
         std::string velocities = "(", values = "(", eigenvalues;
         for (int i = 0; i < n_; ++i) {
-            velocities += (i ? ", " : "") + s_.qd[i].get_name();
-            values += (i ? ", " : "") + number(v[i]);
-            eigenvalues += (i ? ", " : "") + number(lambda[i]);
+            const char* comma = i ? ", " : "";  // appended piece by piece (GCC 12's -Wrestrict misreads "" + string)
+            velocities.append(comma).append(s_.qd[i].get_name());
+            values.append(comma).append(number(v[i]));
+            eigenvalues.append(comma).append(number(lambda[i]));
         }
         velocities += ")";
         values += ")";
