@@ -79,6 +79,8 @@ int deriveCommand(const Args& args) {
         form == "structured" ? DerivationForm::Structured : form == "expanded" ? DerivationForm::Expanded : DerivationForm::Auto;
     if (typeset && (options.has("entry") || options.has("verify")))  // the typeset pages show the form auto (or --form) picks
         throw UsageError("--format " + format + ": typesets whole derivations; --entry and --verify are for text, latex and json");
+    DocumentWriting writing;  // how the expanded text, LaTeX or JSON shared its rendering (--timings)
+    request.writing = &writing;
     FormDocument result;
     if (typeset) {
         result.derived = inSceneFile(options.positional()[0], [&] { return deriveDisplay(scene, request, chosenForm); });
@@ -114,6 +116,8 @@ int deriveCommand(const Args& args) {
         }
         std::fprintf(stderr, "total: %.3f ms\n", 1e3 * total);
         std::fprintf(stderr, "printing: %.3f ms\n", 1e3 * derived.printSeconds);
+        if (writing.parts > 0)
+            std::fprintf(stderr, "item renderings: %zu, %zu of them on the shaping thread\n", writing.parts, writing.renderedByShaper);
     }
     for (const std::string& w : derived.warnings) std::cerr << "warning: " << w << '\n';
     if (!typeset) {

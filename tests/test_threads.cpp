@@ -194,6 +194,46 @@ private slots:
         }
     }
 
+    // The last items' renderings are shared: once everything is shaped, the shaping
+    // thread renders from the last item back while the writer goes on from the front.
+    // Held until that thread has taken its first, the writer meets renderings made by
+    // the other thread; the documents are the same as when the writer makes them all.
+    void documentsRenderedByBothThreads() {
+        for (const char* name : {"planar_2r.json", "puma560.json", "mass_spring_pair_lagrangian.json"}) {
+            const Scene scene = example(name);
+            for (const auto mode : {symbolic::ParameterMode::Parametric, symbolic::ParameterMode::Textbook}) {
+                DocumentRequest display;
+                display.mode = mode;
+                display.format = symbolic::DocumentFormat::Display;
+                const auto trees = deriveDocument(scene, display).display;
+                std::size_t items = 0;
+                for (const auto& step : trees->steps) items += step.items.size();
+                for (const auto format : {symbolic::DocumentFormat::Text, symbolic::DocumentFormat::Latex, symbolic::DocumentFormat::Json}) {
+                    symbolic::DocumentWriting shared;
+                    shared.writerWaitsForHelper = true;
+                    DocumentRequest request;
+                    request.mode = mode;
+                    request.format = format;
+                    request.writing = &shared;
+                    const std::string document = deriveDocument(scene, request).document;
+                    const std::size_t parts = format == symbolic::DocumentFormat::Json ? 3 : 1;
+                    QCOMPARE(shared.parts, parts * items);
+                    QVERIFY2(shared.renderedByShaper >= 1, name);
+                    if (format == symbolic::DocumentFormat::Json) {
+                        auto timeless = [](const std::string& text) {  // each derivation times its steps anew
+                            nlohmann::json j = nlohmann::json::parse(text);
+                            for (auto& step : j["steps"]) step.erase("seconds");
+                            return j;
+                        };
+                        QVERIFY2(timeless(document) == timeless(derive(scene, mode, format)), name);
+                    } else {
+                        QCOMPARE(document, symbolic::renderDocument(*trees, format));
+                    }
+                }
+            }
+        }
+    }
+
     // A long simulation and a work–precision analysis on workers stop with status
     // Cancelled and a partial result.
     void cancelStopsSimulationAndAccuracy() {

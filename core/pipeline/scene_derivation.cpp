@@ -49,7 +49,7 @@ DerivedDocument deriveDocument(const Scene& scene, const DocumentRequest& reques
     if (request.format == symbolic::DocumentFormat::Display)
         out.display = symbolic::displayDocument(d, request.cancel);
     else
-        out.document = symbolic::derivationDocument(d, request.format, modeName(request.mode));
+        out.document = symbolic::derivationDocument(d, request.format, modeName(request.mode), request.writing);
     out.printSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - printing).count();
     for (const symbolic::DerivationStep& step : d.steps) out.timings.push_back({step.number, step.title, step.seconds});
     out.warnings = d.warnings;

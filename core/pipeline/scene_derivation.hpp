@@ -22,6 +22,7 @@ struct DocumentRequest {
     symbolic::DocumentFormat format = symbolic::DocumentFormat::Text;
     std::function<void(int step, const std::string& what)> progress;  // optional, on the deriving thread
     const std::atomic<bool>* cancel = nullptr;                          // optional: throws Cancelled
+    symbolic::DocumentWriting* writing = nullptr;  // optional: how text, LaTeX or JSON was rendered on two threads
 };
 
 struct StepTiming {

@@ -218,11 +218,38 @@ std::size_t widestLine(const std::string& s) {
     return std::max(widest, n);
 }
 
+// The item renderings a document is made of, by format: JSON writes LaTeX, Text and
+// Plain of every item, the text and LaTeX documents one each.
+enum class Part { Latex, Text, Plain };
+
+std::vector<Part> partsOf(DocumentFormat format) {
+    if (format == DocumentFormat::Json) return {Part::Latex, Part::Text, Part::Plain};
+    if (format == DocumentFormat::Latex) return {Part::Latex};
+    return {Part::Text};
+}
+
+std::string itemLatex(const DisplayItem& item) { return renderDisplay(*item.equation, DisplayStyle::Latex); }
+
+// Part of an item as strings: one, or for the Plain of a matrix its entries row by row
+// (JSON writes it as rows of entries, a column as a list). Plain comes from the
+// displayed tree, which has the same value as the derived one (grouping and angle sums
+// keep it; decimals print with 17 digits), so it stays re-parsable.
+std::vector<std::string> renderPart(const DisplayItem& item, Part part) {
+    if (part == Part::Latex) return {itemLatex(item)};
+    if (part == Part::Text) return {itemText(item)};
+    if (item.name.rfind("equation_", 0) == 0) return {renderDisplay(*item.equation, DisplayStyle::Plain)};
+    if (item.value->kind != DisplayKind::Matrix) return {renderDisplay(*item.value, DisplayStyle::Plain)};
+    std::vector<std::string> entries;
+    for (const auto& row : item.value->rows)
+        for (const DisplayPtr& cell : row) entries.push_back(renderDisplay(*cell, DisplayStyle::Plain));
+    return entries;
+}
+
 // Plain renderings of the nodes JSON writes twice: B, C, g, Q and the energies are
 // items of their steps and the document's results too (their sums are the same nodes:
-// the builder caches them; a matrix node itself is made anew). The renderings of those items' values and entries are kept as they are
-// written, for the second time. (The results come after the steps: what is kept is
-// chosen by the items' names.)
+// the builder caches them; a matrix node itself is made anew). The renderings of those
+// items' values and entries are kept as they are written, for the second time. (The
+// results come after the steps: what is kept is chosen by the items' names.)
 class PlainTexts {
 public:
     static bool isResult(const std::string& itemName) {
@@ -230,43 +257,47 @@ public:
             if (itemName == name) return true;
         return false;
     }
-    void write(JsonWriter& json, const DisplayNode& n, bool keep) {
-        if (auto it = kept_.find(&n); it != kept_.end()) return json.value(it->second);
-        if (!keep) return json.value(renderDisplay(n, DisplayStyle::Plain));
-        json.value(kept_.emplace(&n, renderDisplay(n, DisplayStyle::Plain)).first->second);
+    // Writes `quoted`, the Plain of n as a JSON string, and keeps it when asked.
+    void write(JsonWriter& json, const DisplayNode& n, std::string&& quoted, bool keep) {
+        json.quotedValue(quoted);
+        if (keep) kept_.emplace(&n, std::move(quoted));
+    }
+    // The Plain of n, kept or rendered now.
+    void write(JsonWriter& json, const DisplayNode& n) {
+        if (auto it = kept_.find(&n); it != kept_.end()) return json.quotedValue(it->second);
+        json.value(renderDisplay(n, DisplayStyle::Plain));
     }
 
 private:
     std::unordered_map<const DisplayNode*, std::string> kept_;
 };
 
-// Plain (re-parsable) from the displayed tree: a matrix as rows of entries (a column
-// as a list), an equation as "lhs = rhs". The displayed form has the same value as the
-// derived one (grouping and angle sums keep it; decimals print with 17 digits).
-void writePlain(JsonWriter& json, const DisplayNode& value, PlainTexts& plain, bool keep) {
-    if (value.kind != DisplayKind::Matrix) return plain.write(json, value, keep);
+// A value's Plain in JSON: a matrix as rows of entries (a column as a list), from its
+// entries' renderings (`entries`, row by row, quoted) or, with none given, rendered or
+// kept ones.
+void writePlain(JsonWriter& json, const DisplayNode& value, PlainTexts& plain, std::vector<std::string>* entries = nullptr,
+                bool keep = false) {
+    std::size_t next = 0;
+    auto cell = [&](const DisplayNode& n) {
+        if (entries) return plain.write(json, n, std::move((*entries)[next++]), keep);
+        plain.write(json, n);
+    };
+    if (value.kind != DisplayKind::Matrix) return cell(value);
     json.beginArray();
     for (const auto& r : value.rows) {
         if (r.size() == 1) {
-            plain.write(json, *r[0], keep);
+            cell(*r[0]);
             continue;
         }
         json.beginArray();
-        for (const DisplayPtr& c : r) plain.write(json, *c, keep);
+        for (const DisplayPtr& c : r) cell(*c);
         json.endArray();
     }
     json.endArray();
 }
 
-void writePlain(JsonWriter& json, const DisplayItem& item, PlainTexts& plain) {
-    if (item.name.rfind("equation_", 0) == 0) return json.value(renderDisplay(*item.equation, DisplayStyle::Plain));
-    writePlain(json, *item.value, plain, PlainTexts::isResult(item.name));
-}
-
-std::string itemLatex(const DisplayItem& item) { return renderDisplay(*item.equation, DisplayStyle::Latex); }
-
-// The documents in three parts (head, each step, tail): a step is written as soon as it
-// is shaped (derivationDocument).
+// The documents in parts (head, each step's start, each item, tail): an item is written
+// as soon as it is shaped and rendered (derivationDocument).
 
 void writeTextHead(const std::string& systemName, std::ostream& out) {
     out << systemName << "\n" << std::string(systemName.size(), '=') << "\n";
@@ -274,8 +305,9 @@ void writeTextHead(const std::string& systemName, std::ostream& out) {
 
 void writeTextStep(const DisplayStep& step, std::ostream& out) {
     out << "\nStep " << step.number << ". " << step.title << "\n    " << step.formulaText << "\n\n";
-    for (const DisplayItem& item : step.items) out << itemText(item) << "\n\n";
 }
+
+void writeTextItem(const std::string& text, std::ostream& out) { out << text << "\n\n"; }
 
 void writeTextTail(const std::string& actuation, std::ostream& out) { out << "Actuation: " << actuation << "\n"; }
 
@@ -293,24 +325,26 @@ void writeLatexHead(const std::string& systemName, std::ostream& out) {
 
 void writeLatexStep(const DisplayStep& step, std::ostream& out) {
     out << "\\section*{Step " << step.number << ": " << latexText(step.title) << "}\n\\[ " << step.formulaLatex << " \\]\n";
-    for (const DisplayItem& item : step.items) out << "\\[ " << itemLatex(item) << " \\]\n";
 }
+
+void writeLatexItem(const std::string& latex, std::ostream& out) { out << "\\[ " << latex << " \\]\n"; }
 
 void writeLatexTail(const std::string& actuation, std::ostream& out) {
     out << "\\paragraph{Actuation} " << latexText(actuation) << ".\n"
         << "\\end{document}\n";
 }
 
-// The text and LaTeX documents' three parts, by format.
+// The text and LaTeX documents' parts, by format. An item comes as its one rendering.
 struct StreamWriters {
     void (*head)(const std::string& systemName, std::ostream& out);
-    void (*step)(const DisplayStep& step, std::ostream& out);
+    void (*step)(const DisplayStep& step, std::ostream& out);  // the step's start: its items follow
+    void (*item)(const std::string& rendering, std::ostream& out);
     void (*tail)(const std::string& actuation, std::ostream& out);
 };
 
 StreamWriters streamWriters(DocumentFormat format) {
-    if (format == DocumentFormat::Latex) return {writeLatexHead, writeLatexStep, writeLatexTail};
-    return {writeTextHead, writeTextStep, writeTextTail};
+    if (format == DocumentFormat::Latex) return {writeLatexHead, writeLatexStep, writeLatexItem, writeLatexTail};
+    return {writeTextHead, writeTextStep, writeTextItem, writeTextTail};
 }
 
 void writeJsonHead(const Derivation& d, const std::string& mode, JsonWriter& json) {
@@ -325,8 +359,8 @@ void writeJsonHead(const Derivation& d, const std::string& mode, JsonWriter& jso
     json.beginArray();
 }
 
-// Step `shown` of the document; `step` is the derivation's (its number, title, formula, time).
-void writeJsonStep(const DerivationStep& step, const DisplayStep& shown, PlainTexts& plain, JsonWriter& json) {
+// A step's start: its number, title, formula and time; its items follow.
+void writeJsonStep(const DisplayStep& step, JsonWriter& json) {
     json.beginObject();
     json.key("number");
     json.value(step.number);
@@ -343,19 +377,27 @@ void writeJsonStep(const DerivationStep& step, const DisplayStep& shown, PlainTe
     json.value(step.seconds);
     json.key("items");
     json.beginArray();
-    for (const DisplayItem& item : shown.items) {
-        json.beginObject();
-        json.key("name");
-        json.value(item.name);
-        json.key("latex");
-        json.value(itemLatex(item));
-        json.key("text");
-        json.value(itemText(item));
-        json.key("expr");
-        writePlain(json, item, plain);
-        json.endObject();
-    }
+}
+
+void endJsonStep(JsonWriter& json) {
     json.endArray();
+    json.endObject();
+}
+
+// An item from its renderings in partsOf(Json) order, quoted (moved from).
+void writeJsonItem(const DisplayItem& item, std::vector<std::string>* parts[3], PlainTexts& plain, JsonWriter& json) {
+    json.beginObject();
+    json.key("name");
+    json.value(item.name);
+    json.key("latex");
+    json.quotedValue(parts[0]->front());
+    json.key("text");
+    json.quotedValue(parts[1]->front());
+    json.key("expr");
+    if (item.name.rfind("equation_", 0) == 0)
+        json.quotedValue(parts[2]->front());
+    else
+        writePlain(json, *item.value, plain, parts[2], PlainTexts::isResult(item.name));
     json.endObject();
 }
 
@@ -364,7 +406,7 @@ void writeJsonTail(const Derivation& d, const DisplayResults& results, PlainText
     for (const auto& [name, value] : {std::pair{"B", &results.B}, {"C", &results.C}, {"g", &results.g}, {"Q", &results.Q},
                                       {"Ekin", &results.Ekin}, {"Epot", &results.Epot}}) {
         json.key(name);
-        writePlain(json, **value, plain, false);
+        writePlain(json, **value, plain);
     }
     std::vector<std::string> actuated;
     for (int a : d.actuated) actuated.push_back(d.coordinateNames[a]);
@@ -380,12 +422,18 @@ void writeJsonTail(const Derivation& d, const DisplayResults& results, PlainText
 const char* const massMatrixFormula =
     R"(,\quad B(q) = \sum_i \left(m_i\, J_{P,i}^T J_{P,i} + J_{O,i}^T R_i\, I_{li}\, R_i^T J_{O,i}\right))";
 
-DisplayStep shapeStep(const Derivation& d, const DerivationStep& step, Presenter& presenter, DisplayBuilder& build,
-                      const DisplayOptions& options, const std::atomic<bool>* cancel) {
+// A step as displayed, without its items yet.
+DisplayStep stepHead(const Derivation& d, const DerivationStep& step) {
     DisplayStep s{step.number, step.title, step.formulaText, step.formulaLatex, {}, step.seconds, {}};
     // The notes' general formula typeset; a robot's step 7 also gives B as the notes sum it.
     const bool robot = d.trigToFunctions.nops() > 0;
     s.formula = formulaFromLatex(step.formulaLatex + (robot && step.number == 7 ? massMatrixFormula : ""), step.formulaText);
+    return s;
+}
+
+DisplayStep shapeStep(const Derivation& d, const DerivationStep& step, Presenter& presenter, DisplayBuilder& build,
+                      const DisplayOptions& options, const std::atomic<bool>* cancel) {
+    DisplayStep s = stepHead(d, step);
     for (const DerivationItem& item : step.items) {
         throwIfCancelled(cancel);  // a newer edit need not wait for this document under the GiNaC lock
         s.items.push_back(displayItem(item, presenter, build, options));
@@ -404,37 +452,78 @@ std::shared_ptr<const DisplayDocument> shapeDocument(const Derivation& d, Presen
     return doc;
 }
 
-// Shaped steps handed from the thread that shapes them (GiNaC, under its lock) to the
-// one that writes them (display trees only, no GiNaC): a step is written while the next
-// is shaped, on the second core. JSON's results (B, C, g, ...) come after the last step.
-class StepHandover {
+// What derivationDocument hands from the thread that shapes (GiNaC, under its lock) to
+// the one that writes (display trees only, no GiNaC), in document order: each step's
+// start, then its items as they are shaped. An item is written while the next is shaped,
+// on the second core. Its renderings are made by whichever thread claims them first: the
+// writer going forward, and, once everything is shaped, the shaping thread going back
+// from the last (the long tail of C and the equations, rendered by both threads).
+class Handover {
 public:
-    void put(DisplayStep step) {
+    struct Rendering {
+        Part part;
+        std::atomic<int> state{0};  // open, claimed, done
+        std::vector<std::string> strings;
+    };
+    struct Entry {
+        std::optional<DisplayStep> step;  // a step starts (without its items)
+        std::optional<DisplayItem> item;
+        std::deque<Rendering> renderings;  // one per part (atomics do not move: a deque)
+    };
+
+    Handover(DocumentFormat format, DocumentWriting* writing)
+        : parts_(partsOf(format)), json_(format == DocumentFormat::Json), writing_(writing) {}
+
+    void putStep(DisplayStep head) {
         {
             const std::lock_guard lock(mutex_);
-            steps_.push_back(std::move(step));
+            entries_.emplace_back().step = std::move(head);
         }
-        ready_.notify_one();
+        changed_.notify_all();
     }
-    // No more steps; `results` for JSON. Not finished normally: the writer stops.
+    void putItem(DisplayItem item) {
+        {
+            const std::lock_guard lock(mutex_);
+            Entry& e = entries_.emplace_back();
+            e.item = std::move(item);
+            for (const Part part : parts_) e.renderings.emplace_back().part = part;
+        }
+        changed_.notify_all();
+    }
+    // No more entries; `results` for JSON. Not finished normally: the writer stops.
+    // (Said again after a failure while helping: the results stay as they were given.)
     void finish(std::optional<DisplayResults> results, bool failed = false) {
         {
             const std::lock_guard lock(mutex_);
-            results_ = std::move(results);
+            if (!finished_) results_ = std::move(results);
             finished_ = true;
-            failed_ = failed;
+            failed_ = failed_ || failed;
         }
-        ready_.notify_one();
+        changed_.notify_all();
     }
-    // The next step (kept here, in place, until the handover ends), or null after the
-    // last one.
-    const DisplayStep* next() {
+
+    // The writer's side. The next entry (kept here, in place, until the handover ends),
+    // or null after the last one or once the handover failed.
+    Entry* next() {
         std::unique_lock lock(mutex_);
-        ready_.wait(lock, [&] { return taken_ < steps_.size() || finished_; });
+        changed_.wait(lock, [&] { return failed_ || ((taken_ < entries_.size() || finished_) && (!holdWriter() || helperStarted_)); });
         if (failed_) return nullptr;
-        return taken_ < steps_.size() ? &steps_[taken_++] : nullptr;
+        return taken_ < entries_.size() ? &entries_[taken_++] : nullptr;
     }
-    // After next() gave null: whether the steps ended normally, and the results.
+    // An item's rendering, made now or, when the shaping thread claimed it, waited for.
+    // Null once the handover failed.
+    std::vector<std::string>* rendered(Entry& e, std::size_t k) {
+        Rendering& r = e.renderings[k];
+        if (claim(r)) {
+            r.strings = render(*e.item, r.part);
+            ++renderedByWriter_;
+            return &r.strings;
+        }
+        std::unique_lock lock(mutex_);
+        changed_.wait(lock, [&] { return failed_ || r.state.load() == 2; });
+        return failed_ ? nullptr : &r.strings;
+    }
+    // After next() gave null: whether the entries ended normally, and the results.
     bool failed() {
         const std::lock_guard lock(mutex_);
         return failed_;
@@ -443,38 +532,133 @@ public:
         const std::lock_guard lock(mutex_);
         return results_;
     }
+    void writerDone() {
+        if (writing_) writing_->parts = renderedByWriter_ + renderedByShaper_.load();
+    }
+
+    // The shaping thread's side, after finish(): renders from the last item back until
+    // it meets what the writer has claimed. A rendering that throws fails the handover.
+    void help() {
+        try {
+            renderFromTheEnd();
+            started();
+        } catch (...) {
+            {
+                const std::lock_guard lock(mutex_);
+                failed_ = true;
+            }
+            changed_.notify_all();
+            throw;
+        }
+        if (writing_) writing_->renderedByShaper = renderedByShaper_.load();
+    }
 
 private:
+    void renderFromTheEnd() {
+        for (std::size_t i = entries_.size(); i-- > 0;) {  // no more entries come: no lock needed to walk them
+            Entry& e = entries_[i];
+            for (std::size_t k = e.renderings.size(); k-- > 0;) {
+                Rendering& r = e.renderings[k];
+                if (!claim(r)) return;
+                started();
+                r.strings = render(*e.item, r.part);
+                ++renderedByShaper_;
+                {
+                    const std::lock_guard lock(mutex_);
+                    r.state = 2;
+                }
+                changed_.notify_all();
+            }
+        }
+    }
+    // A part as the document writes it: for JSON quoted (by either thread, not the
+    // writer's JsonWriter alone: tens of megabytes).
+    std::vector<std::string> render(const DisplayItem& item, Part part) const {
+        std::vector<std::string> strings = renderPart(item, part);
+        if (json_)
+            for (std::string& s : strings) {
+                std::string quoted;
+                quoted.reserve(s.size() + s.size() / 8 + 2);
+                JsonWriter::quote(s, quoted);
+                s = std::move(quoted);
+            }
+        return strings;
+    }
+    static bool claim(Rendering& r) {
+        int open = 0;
+        return r.state.compare_exchange_strong(open, 1);
+    }
+    bool holdWriter() const { return writing_ && writing_->writerWaitsForHelper; }
+    // The shaping thread has claimed its first rendering, or found none to claim.
+    void started() {
+        if (helperStarted_) return;
+        {
+            const std::lock_guard lock(mutex_);
+            helperStarted_ = true;
+        }
+        changed_.notify_all();
+    }
+
+    const std::vector<Part> parts_;
+    const bool json_;
+    DocumentWriting* writing_;
     std::mutex mutex_;
-    std::condition_variable ready_;
-    std::deque<DisplayStep> steps_;  // a deque: push_back leaves the given steps in place
+    std::condition_variable changed_;
+    std::deque<Entry> entries_;  // a deque: emplace_back leaves the given entries in place
     std::size_t taken_ = 0;
-    bool finished_ = false, failed_ = false;
+    bool finished_ = false, failed_ = false, helperStarted_ = false;
     std::optional<DisplayResults> results_;
+    std::size_t renderedByWriter_ = 0;
+    std::atomic<std::size_t> renderedByShaper_{0};
 };
 
-// The writer's side: the document in `format` from the handed-over steps.
-void writeHandedOver(const Derivation& d, DocumentFormat format, const std::string& modeName, StepHandover& steps,
+// The writer's side: the document in `format` from the handed-over entries. A rendering
+// is freed once written.
+void writeHandedOver(const Derivation& d, DocumentFormat format, const std::string& modeName, Handover& handover,
                      std::string& out) {
     if (format == DocumentFormat::Json) {
         PlainTexts plain;
         JsonWriter json(out);
         writeJsonHead(d, modeName, json);
-        for (std::size_t k = 0; const DisplayStep* step = steps.next(); ++k) writeJsonStep(d.steps[k], *step, plain, json);
-        if (steps.failed()) return;
-        writeJsonTail(d, *steps.results(), plain, json);
+        bool inStep = false;
+        while (Handover::Entry* e = handover.next()) {
+            if (e->step) {
+                if (inStep) endJsonStep(json);
+                writeJsonStep(*e->step, json);
+                inStep = true;
+                continue;
+            }
+            std::vector<std::string>* parts[3];
+            for (std::size_t k = 0; k < 3; ++k)
+                if (!(parts[k] = handover.rendered(*e, k))) return;
+            writeJsonItem(*e->item, parts, plain, json);
+            for (std::vector<std::string>* p : parts) std::vector<std::string>().swap(*p);
+        }
+        if (handover.failed()) return;
+        if (inStep) endJsonStep(json);
+        writeJsonTail(d, *handover.results(), plain, json);
+        handover.writerDone();
         out += '\n';
         return;
     }
     std::ostringstream text;
     const StreamWriters write = streamWriters(format);
     write.head(d.systemName, text);
-    while (const DisplayStep* step = steps.next()) write.step(*step, text);
-    if (steps.failed()) return;
+    while (Handover::Entry* e = handover.next()) {
+        if (e->step) {
+            write.step(*e->step, text);
+            continue;
+        }
+        std::vector<std::string>* rendering = handover.rendered(*e, 0);
+        if (!rendering) return;
+        write.item(rendering->front(), text);
+        std::vector<std::string>().swap(*rendering);
+    }
+    if (handover.failed()) return;
     write.tail(actuationText(d.actuated, d.coordinateNames), text);
+    handover.writerDone();
     out = std::move(text).str();
 }
-
 }  // namespace
 
 namespace {
@@ -535,41 +719,51 @@ std::string renderDocument(const DisplayDocument& document, DocumentFormat forma
     std::ostringstream out;
     const StreamWriters write = streamWriters(format);
     write.head(document.systemName, out);
-    for (const DisplayStep& step : document.steps) write.step(step, out);
+    const Part part = partsOf(format).front();
+    for (const DisplayStep& step : document.steps) {
+        write.step(step, out);
+        for (const DisplayItem& item : step.items) write.item(renderPart(item, part).front(), out);
+    }
     write.tail(document.actuation, out);
     return out.str();
 }
 
-std::string derivationDocument(const Derivation& d, DocumentFormat format, const std::string& modeName) {
+std::string derivationDocument(const Derivation& d, DocumentFormat format, const std::string& modeName,
+                               DocumentWriting* writing) {
     if (format == DocumentFormat::Display) return {};
     const auto lock = lockGinac();
     const DisplayOptions options = displayOptions(printOptionsFor(d, Style::Text));
     auto build = std::make_unique<DisplayBuilder>(options);
     auto presenter = std::make_unique<Presenter>(d, d.trigToFunctions.nops() > 0);
-    StepHandover steps;
+    Handover handover(format, writing);
     std::string out;
     std::exception_ptr writeFailed;
     std::thread writer([&] {
         try {
-            writeHandedOver(d, format, modeName, steps, out);
+            writeHandedOver(d, format, modeName, handover, out);
         } catch (...) {
             writeFailed = std::current_exception();
         }
     });
     try {
-        for (const DerivationStep& step : d.steps) steps.put(shapeStep(d, step, *presenter, *build, options, nullptr));
+        for (const DerivationStep& step : d.steps) {
+            handover.putStep(stepHead(d, step));
+            for (const DerivationItem& item : step.items) handover.putItem(displayItem(item, *presenter, *build, options));
+        }
         std::optional<DisplayResults> results;
         if (format == DocumentFormat::Json) {
             auto shown = [&](const char* name, const GiNaC::ex& value) { return (*build)(presenter->present(name, value)); };
             results = DisplayResults{shown("B", d.B), shown("C", d.C), shown("g", d.g),
                                      shown("Q", d.Q), shown("E_kin", d.Ekin), shown("E_pot", d.Epot)};
         }
-        steps.finish(std::move(results));
-        // Their caches are freed while the writer finishes (the trees it reads are the steps').
+        handover.finish(std::move(results));
+        // Their caches are freed while the writer goes on (the trees it reads are the
+        // items'); then this thread renders the last items' parts beside it.
         presenter.reset();
         build.reset();
+        handover.help();
     } catch (...) {
-        steps.finish(std::nullopt, true);
+        handover.finish(std::nullopt, true);
         writer.join();
         throw;
     }

@@ -13,6 +13,7 @@
 //          plus top-level B, C, g, Q, Ekin, Epot, the actuation and warnings.
 // Takes the GiNaC lock; the caller must hold it too while it owns the Derivation.
 #include <atomic>
+#include <cstddef>
 #include <memory>
 #include <string>
 #include <vector>
@@ -60,7 +61,18 @@ std::string renderDocument(const DisplayDocument& document, DocumentFormat forma
 // An item's Text rendering as the text document prints it.
 std::string itemText(const DisplayItem& item);
 
+// How derivationDocument shared the rendering of the items between its two threads: the
+// writer renders them in document order as they are shaped; the shaping thread, once
+// done, renders from the last item back until the two meet.
+struct DocumentWriting {
+    bool writerWaitsForHelper = false;  // in: the writer starts only once the shaping thread renders (tests)
+    std::size_t parts = 0;              // out: item renderings made (JSON: three per item)
+    std::size_t renderedByShaper = 0;   // out: of those, made by the shaping thread
+};
+
 // modeName ("parameters", "numeric", "symbolic") is recorded in the JSON. Display gives "".
-std::string derivationDocument(const Derivation& derivation, DocumentFormat format, const std::string& modeName);
+// The items are shaped (GiNaC) on this thread and written on a second one as they come.
+std::string derivationDocument(const Derivation& derivation, DocumentFormat format, const std::string& modeName,
+                               DocumentWriting* writing = nullptr);
 
 }  // namespace ll::symbolic

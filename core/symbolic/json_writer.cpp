@@ -60,7 +60,7 @@ void JsonWriter::key(std::string_view name) {
     if (!top.empty) out_ += ',';
     top.empty = false;
     newline();
-    quoted(name);
+    quote(name, out_);
     out_ += ": ";
     afterKey_ = true;
 }
@@ -80,8 +80,8 @@ void JsonWriter::close(char bracket) {
     out_ += bracket;
 }
 
-void JsonWriter::quoted(std::string_view s) {
-    out_ += '"';
+void JsonWriter::quote(std::string_view s, std::string& out) {
+    out += '"';
     std::size_t run = 0;  // start of the bytes not yet written
     for (std::size_t i = 0; i < s.size();) {
         const unsigned char c = static_cast<unsigned char>(s[i]);
@@ -100,30 +100,35 @@ void JsonWriter::quoted(std::string_view s) {
             i += n;
             continue;
         }
-        out_.append(s.data() + run, i - run);
+        out.append(s.data() + run, i - run);
         switch (c) {
-        case '"': out_ += "\\\""; break;
-        case '\\': out_ += "\\\\"; break;
-        case '\b': out_ += "\\b"; break;
-        case '\t': out_ += "\\t"; break;
-        case '\n': out_ += "\\n"; break;
-        case '\f': out_ += "\\f"; break;
-        case '\r': out_ += "\\r"; break;
+        case '"': out += "\\\""; break;
+        case '\\': out += "\\\\"; break;
+        case '\b': out += "\\b"; break;
+        case '\t': out += "\\t"; break;
+        case '\n': out += "\\n"; break;
+        case '\f': out += "\\f"; break;
+        case '\r': out += "\\r"; break;
         default: {
             char escaped[8];
             std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
-            out_ += escaped;
+            out += escaped;
         }
         }
         run = ++i;
     }
-    out_.append(s.data() + run, s.size() - run);
-    out_ += '"';
+    out.append(s.data() + run, s.size() - run);
+    out += '"';
 }
 
 void JsonWriter::value(std::string_view s) {
     beforeValue();
-    quoted(s);
+    quote(s, out_);
+}
+
+void JsonWriter::quotedValue(std::string_view json) {
+    beforeValue();
+    out_ += json;
 }
 
 void JsonWriter::value(long long n) {

@@ -29,6 +29,12 @@ public:
     void value(double x);  // as nlohmann prints it: 0.008, 1e-05, 2.0
     void value(bool b);
     void value(const std::vector<std::string>& strings);  // an array of them
+    // A string already in JSON's quoted form (from quote()): written as it is.
+    void quotedValue(std::string_view json);
+
+    // s as a JSON string, quotes included, appended to `out` (any thread: no writer).
+    // Throws std::invalid_argument when s is not UTF-8.
+    static void quote(std::string_view s, std::string& out);
 
     // Whole, every object and array closed.
     bool complete() const { return levels_.empty() && started_; }
@@ -42,7 +48,6 @@ private:
     void close(char bracket);
     void beforeValue();
     void newline();
-    void quoted(std::string_view s);
 
     std::string& out_;
     std::vector<Level> levels_;
