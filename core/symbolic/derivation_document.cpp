@@ -523,6 +523,14 @@ public:
         changed_.wait(lock, [&] { return failed_ || r.state.load() == 2; });
         return failed_ ? nullptr : &r.strings;
     }
+    // The writer failed: the shaping thread stops handing over and does not help.
+    void fail() {
+        {
+            const std::lock_guard lock(mutex_);
+            failed_ = true;
+        }
+        changed_.notify_all();
+    }
     // After next() gave null: whether the entries ended normally, and the results.
     bool failed() {
         const std::lock_guard lock(mutex_);
@@ -539,6 +547,7 @@ public:
     // The shaping thread's side, after finish(): renders from the last item back until
     // it meets what the writer has claimed. A rendering that throws fails the handover.
     void help() {
+        if (failed()) return;
         try {
             renderFromTheEnd();
             started();
@@ -559,7 +568,7 @@ private:
             Entry& e = entries_[i];
             for (std::size_t k = e.renderings.size(); k-- > 0;) {
                 Rendering& r = e.renderings[k];
-                if (!claim(r)) return;
+                if (failed() || !claim(r)) return;
                 started();
                 r.strings = render(*e.item, r.part);
                 ++renderedByShaper_;
@@ -743,10 +752,12 @@ std::string derivationDocument(const Derivation& d, DocumentFormat format, const
             writeHandedOver(d, format, modeName, handover, out);
         } catch (...) {
             writeFailed = std::current_exception();
+            handover.fail();  // shaping and helping stop: nothing more will be written
         }
     });
     try {
         for (const DerivationStep& step : d.steps) {
+            if (handover.failed()) break;
             handover.putStep(stepHead(d, step));
             for (const DerivationItem& item : step.items) handover.putItem(displayItem(item, *presenter, *build, options));
         }
@@ -765,6 +776,8 @@ std::string derivationDocument(const Derivation& d, DocumentFormat format, const
     } catch (...) {
         handover.finish(std::nullopt, true);
         writer.join();
+        // The writer's error first: it met its string earlier in the document.
+        if (writeFailed) std::rethrow_exception(writeFailed);
         throw;
     }
     writer.join();

@@ -65,7 +65,8 @@ std::string itemText(const DisplayItem& item);
 // writer renders them in document order as they are shaped; the shaping thread, once
 // done, renders from the last item back until the two meet.
 struct DocumentWriting {
-    bool writerWaitsForHelper = false;  // in: the writer starts only once the shaping thread renders (tests)
+    bool writerWaitsForHelper = false;  // in (tests): the writer, past the head, is held through all of the
+                                        // shaping until the shaping thread has claimed its first rendering
     std::size_t parts = 0;              // out: item renderings made (JSON: three per item)
     std::size_t renderedByShaper = 0;   // out: of those, made by the shaping thread
 };
