@@ -29,11 +29,21 @@ namespace {
 
 Scene example(const std::string& name) { return loadScene(std::string(LL_EXAMPLES_DIR) + "/" + name).scene; }
 
-std::string derive(const Scene& scene, symbolic::ParameterMode mode, symbolic::DocumentFormat format) {
+std::string derive(const Scene& scene, symbolic::ParameterMode mode, symbolic::DocumentFormat format,
+                   symbolic::DocumentWriting* writing = nullptr) {
     DocumentRequest request;
     request.mode = mode;
     request.format = format;
+    request.writing = writing;
     return deriveDocument(scene, request).document;
+}
+
+// The display trees the documents are rendered from.
+std::shared_ptr<const symbolic::DisplayDocument> displayTrees(const Scene& scene, symbolic::ParameterMode mode) {
+    DocumentRequest request;
+    request.mode = mode;
+    request.format = symbolic::DocumentFormat::Display;
+    return deriveDocument(scene, request).display;
 }
 
 // Every JSON item (name, text, LaTeX, Plain) and the top-level results against the
@@ -186,10 +196,7 @@ private slots:
         for (const char* name : {"planar_2r.json", "puma560.json", "mass_spring_pair_lagrangian.json"}) {
             const Scene scene = example(name);
             for (const auto mode : {symbolic::ParameterMode::Parametric, symbolic::ParameterMode::Textbook}) {
-                DocumentRequest request;
-                request.mode = mode;
-                request.format = symbolic::DocumentFormat::Display;
-                const auto display = deriveDocument(scene, request).display;
+                const auto display = displayTrees(scene, mode);
                 QVERIFY(display && !display->steps.empty());
                 for (const auto format : {symbolic::DocumentFormat::Text, symbolic::DocumentFormat::Latex})
                     QCOMPARE(derive(scene, mode, format), symbolic::renderDocument(*display, format));
@@ -210,20 +217,14 @@ private slots:
         for (const char* name : {"planar_2r.json", "puma560.json", "mass_spring_pair_lagrangian.json"}) {
             const Scene scene = example(name);
             for (const auto mode : {symbolic::ParameterMode::Parametric, symbolic::ParameterMode::Textbook}) {
-                DocumentRequest display;
-                display.mode = mode;
-                display.format = symbolic::DocumentFormat::Display;
-                const auto trees = deriveDocument(scene, display).display;
+                const auto trees = displayTrees(scene, mode);
+                QVERIFY(trees && !trees->steps.empty());
                 std::size_t items = 0;
                 for (const auto& step : trees->steps) items += step.items.size();
                 for (const auto format : {symbolic::DocumentFormat::Text, symbolic::DocumentFormat::Latex, symbolic::DocumentFormat::Json}) {
                     symbolic::DocumentWriting shared;
                     shared.writerWaitsForHelper = true;
-                    DocumentRequest request;
-                    request.mode = mode;
-                    request.format = format;
-                    request.writing = &shared;
-                    const std::string document = deriveDocument(scene, request).document;
+                    const std::string document = derive(scene, mode, format, &shared);
                     const std::size_t parts = format == symbolic::DocumentFormat::Json ? 3 : 1;
                     QCOMPARE(shared.parts, parts * items);
                     QVERIFY2(shared.renderedByShaper >= 1, name);
