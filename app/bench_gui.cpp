@@ -22,8 +22,9 @@
 #include <QRegularExpression>
 #include <QTemporaryDir>
 
-#include "ui/data_directory.hpp"
+#include "core/io/data_directory.hpp"
 #include "app/commands.hpp"
+#include "app/graphics_handoff.hpp"
 #include "app/event_wait.hpp"
 #include "app/scene_loading.hpp"
 #include "core/pipeline/scene_simulation.hpp"
@@ -200,7 +201,7 @@ int benchGui(const std::vector<std::string>& scenes, int runs) {
     // Wall times depend on what else the machine runs: say how loaded it was.
     QFile loadavg("/proc/loadavg");
     if (loadavg.open(QIODevice::ReadOnly)) std::printf("load average at start: %s", loadavg.readLine().constData());
-    const std::string examples = ui::examplesDirectory().string();
+    const std::string examples = examplesDirectory().string();
     std::vector<std::string> latencyScenes = scenes;
     if (latencyScenes.empty()) latencyScenes = {examples + "/planar_2r.json", examples + "/puma560.json"};
     for (const std::string& s : latencyScenes) latency(s, runs);

@@ -26,7 +26,7 @@
 #include "core/scene/visual_scene.hpp"
 #include "core/pipeline/scene_simulation.hpp"
 #include "ui/animation_export.hpp"
-#include "ui/data_directory.hpp"
+#include "core/io/data_directory.hpp"
 #include "ui/headless_renderer.hpp"
 #include "ui/osg_scene.hpp"
 
@@ -97,7 +97,7 @@ std::string peakMemory(const std::string& scene, double duration, const fs::path
 }  // namespace
 
 int benchRender(const std::vector<std::string>& scenes, int runs) {
-    const std::string path = scenes.empty() ? (ui::examplesDirectory() / "puma560.json").string() : scenes.front();
+    const std::string path = scenes.empty() ? (examplesDirectory() / "puma560.json").string() : scenes.front();
     Scene scene = loadSceneReportingWarnings(path);
     scene.simulation.duration = 10.0;
     const auto app = makeGuiApplication();

@@ -12,7 +12,7 @@
 #include <ctime>
 #include <functional>
 
-#include "ui/data_directory.hpp"
+#include "core/io/data_directory.hpp"
 #include "app/commands.hpp"
 #include "app/offscreen_gui.hpp"
 #include "app/scene_loading.hpp"
@@ -89,7 +89,7 @@ int benchTypeset(const std::vector<std::string>& scenes, int runs) {
     const auto app = makeGuiApplication();
     if (!ui::mathFontsAvailable()) throw std::runtime_error("the Latin Modern fonts are missing: install fonts-lmodern");
     QTemporaryDir dir;
-    const std::string examples = ui::examplesDirectory().string();
+    const std::string examples = examplesDirectory().string();
     const Scene planar = loadSceneReportingWarnings(examples + "/planar_2r.json");
     std::printf("medians of %d runs; wall [ms] and CPU [ms] of this process\n\n", runs);
 

@@ -1,26 +1,23 @@
 // `lagrangelab accuracy SCENE [--integrators a,b,...] [--tolerances 1e-3..1e-12]
 // [--steps ...] [--duration T] [--repeats N] [--reference-tol X] [--out plot.svg|png]
 // [--csv FILE]`: the work–precision analysis of core/simulation/work_precision.hpp as a
-// table, a CSV file and a log–log plot rendered headless.
+// table, a CSV file and a log–log plot rendered headless (app/accuracy_plot.cpp).
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
 #include <sstream>
 
-#include <QGuiApplication>
 #include <unistd.h>
 
 #include "app/cli_options.hpp"
 #include "app/command_usage.hpp"
 #include "app/commands.hpp"
-#include "app/offscreen_gui.hpp"
 #include "app/scene_loading.hpp"
 #include "core/simulation/scene_validation.hpp"
 #include "core/io/atomic_file.hpp"
 #include "core/simulation/integrators.hpp"
 #include "core/pipeline/scene_simulation.hpp"
-#include "ui/work_precision_plot.hpp"
 
 namespace ll::cli {
 namespace {
@@ -140,10 +137,7 @@ int accuracyCommand(const Args& args) {
     if (options.has("csv"))
         saveFileAtomically(options.text("csv"), [&](std::ostream& out) { writeCsv(result, out); }, Backup::None);
     if (!plot.empty()) {
-        const auto app = makeGuiApplication();  // fonts
-        QString error;
-        if (!ui::saveWorkPrecisionPlot(result, QString::fromStdString(plot), &error))
-            throw std::runtime_error(error.toStdString());
+        saveAccuracyPlot(result, plot);
         std::fprintf(stderr, "plot written to %s\n", plot.c_str());
     }
     return 0;

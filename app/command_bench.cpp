@@ -24,13 +24,13 @@
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/lagrangian_derivation.hpp"
 #include "core/symbolic/robot_derivation.hpp"
-#include "ui/data_directory.hpp"
+#include "core/io/data_directory.hpp"
 
 namespace ll::cli {
 namespace {
 
 // An installed example scene by name (bench's default scenes).
-std::string example(const char* name) { return (ui::examplesDirectory() / (std::string(name) + ".json")).string(); }
+std::string example(const char* name) { return (examplesDirectory() / (std::string(name) + ".json")).string(); }
 
 // `bench --rhs`: one right-hand-side evaluation (RobotOde, composed from the declared
 // effects) with no effects, gravity only, and every effect, on the same states.

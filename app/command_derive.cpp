@@ -2,23 +2,21 @@
 // [--steps 0-8] [--symbolic] [--numeric] [--timings] [--form auto|structured|expanded]
 // [--entry B11,C23,g4] [--verify]`: the course notes' procedure, step by step, expanded or
 // structured (derivation_forms.hpp); pdf, svg and png typeset the same form (auto:
-// expanded when cheap, else structured; ui/derivation_pages) headless into --out.
+// expanded when cheap, else structured) headless into --out (app/derive_pages.cpp).
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
-#include <QFileInfo>
+#include <unistd.h>
 
 #include "app/cli_options.hpp"
 #include "app/command_usage.hpp"
 #include "app/commands.hpp"
 #include "app/scene_loading.hpp"
-#include "app/offscreen_gui.hpp"
 #include "core/pipeline/derivation_forms.hpp"
 #include "core/pipeline/display_derivation.hpp"
 #include "core/pipeline/scene_derivation.hpp"
-#include "ui/derivation_pages.hpp"
 
 namespace ll::cli {
 namespace {
@@ -56,10 +54,12 @@ int deriveCommand(const Args& args) {
     if (typeset && !options.has("out")) throw UsageError("--out: --format " + format + " writes a file; give --out FILE");
     if (!typeset && options.has("out")) throw UsageError("--out: only for --format pdf, svg or png (text, latex and json go to stdout)");
     if (typeset) {  // before the work: a file that cannot be written is known now
-        const QFileInfo dir(QFileInfo(QString::fromStdString(options.text("out"))).absolutePath());
-        if (!dir.isDir() || !dir.isWritable())
+        std::error_code error;
+        const std::filesystem::path dir = std::filesystem::absolute(options.text("out"), error).parent_path();
+        const bool isDir = !error && std::filesystem::is_directory(dir, error);
+        if (!isDir || ::access(dir.c_str(), W_OK) != 0)
             throw UsageError("--out: cannot write '" + options.text("out") + "': " +
-                             (dir.isDir() ? "the folder is not writable" : "no such folder"));
+                             (isDir ? "the folder is not writable" : "no such folder"));
     }
     if (options.has("symbolic") && options.has("numeric")) throw UsageError("--symbolic and --numeric exclude each other");
     const std::string form = options.text("form", "auto");
@@ -124,43 +124,7 @@ int deriveCommand(const Args& args) {
         std::cout << derived.document;
         return 0;
     }
-    using Clock = std::chrono::steady_clock;
-    const auto seconds = [](Clock::time_point since) { return std::chrono::duration<double>(Clock::now() - since).count(); };
-    const Clock::time_point startGui = Clock::now();
-    const auto app = makeGuiApplication();
-    if (!ui::mathFontsAvailable()) throw std::runtime_error("the Latin Modern fonts are missing: install fonts-lmodern");
-    if (options.has("timings")) std::fprintf(stderr, "fonts and Qt: %.3f ms\n", 1e3 * seconds(startGui));
-    const QString out = QString::fromStdString(options.text("out"));
-    std::string error;
-    if (format == "pdf") {  // laid out on a second thread while the pages are written
-        const Clock::time_point start = Clock::now();
-        int pageCount = 0;
-        if (!ui::writePdf(*derived.display, out, error, {}, &pageCount)) throw UsageError("--out: " + error);
-        if (options.has("timings")) {
-            std::fprintf(stderr, "layout and writing pdf (two threads): %.3f ms\n", 1e3 * seconds(start));
-            std::fprintf(stderr, "pages: %d\n", pageCount);
-        }
-        return 0;
-    }
-    const Clock::time_point startLayout = Clock::now();
-    const ui::DerivationPages pages = ui::paginate(*derived.display);
-    const double layoutSeconds = seconds(startLayout);
-    const Clock::time_point startWrite = Clock::now();
-    std::vector<QString> written;
-    const bool ok = format == "svg" ? ui::writeSvg(pages, out, error, &written) : ui::writePng(pages, out, error, &written);
-    if (!ok) throw UsageError("--out: " + error);
-    if (options.has("timings")) {
-        std::fprintf(stderr, "layout into pages: %.3f ms\n", 1e3 * layoutSeconds);
-        std::fprintf(stderr, "writing %s: %.3f ms\n", format.c_str(), 1e3 * seconds(startWrite));
-        std::fprintf(stderr, "pages: %zu\n", pages.pages.size());
-    }
-    if (written.size() > 1)
-        for (const QString& file : written) std::fprintf(stderr, "wrote %s\n", file.toStdString().c_str());
-    if (const auto older = ui::pagesBeyond(out, static_cast<int>(written.size())); !older.empty())
-        std::fprintf(stderr, "note: %zu page file%s of an earlier, longer export remain%s beside %s, not rewritten and not deleted: %s\n",
-                     older.size(), older.size() == 1 ? "" : "s", older.size() == 1 ? "s" : "", written.size() == 1 ? "it" : "these",
-                     ui::fileNameRange(older).toStdString().c_str());
-    return 0;
+    return writeDerivationPages(*derived.display, format, options.text("out"), options.has("timings"));
 }
 
 }  // namespace ll::cli

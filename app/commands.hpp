@@ -5,6 +5,13 @@
 #include <string>
 #include <vector>
 
+namespace ll {
+struct WorkPrecisionResult;
+namespace symbolic {
+struct DisplayDocument;
+}
+}  // namespace ll
+
 namespace ll::cli {
 
 using Args = std::vector<std::string>;
@@ -23,10 +30,21 @@ int benchDeriveChains(const std::string& range, const std::vector<std::string>& 
 int benchRender(const std::vector<std::string>& scenes, int runs);
 // `bench --typeset`: typesetting and printing the derivation (app/bench_typeset.cpp).
 int benchTypeset(const std::vector<std::string>& scenes, int runs);
+// Whether `lagrangelab COMMAND ARGS…` paints (Qt, OpenSceneGraph): the window, render,
+// derive --format pdf|svg|png, accuracy --out, bench --gui|--render|--typeset. Those run in
+// lagrangelab-gui; the rest run in lagrangelab, which loads neither (app/graphics_handoff.hpp).
+bool commandPaints(const std::string& command, const Args& args);
+
+// The painting parts, defined in lagrangelab-gui (in lagrangelab they hand the command
+// line over to it).
+// derive --format pdf|svg|png: the typeset pages (app/derive_pages.cpp).
+int writeDerivationPages(const symbolic::DisplayDocument& display, const std::string& format, const std::string& outPath,
+                         bool timings);
+// accuracy --out: the work–precision plot, .svg or .png (app/accuracy_plot.cpp).
+void saveAccuracyPlot(const WorkPrecisionResult& result, const std::string& path);
 // The desktop window: `lagrangelab [SCENE] [--screenshot FILE.png …]` (app/window_command.cpp).
 int windowCommand(const Args& args, const std::chrono::steady_clock::time_point& processStart);
 // `bench --gui`: edit-to-view latency, animation frame rate, start to first frame (app/bench_gui.cpp).
 int benchGui(const std::vector<std::string>& scenes, int runs);
-bool hasDisplay();
 
 }  // namespace ll::cli

@@ -1,4 +1,6 @@
-// lagrangelab: Euler–Lagrange modelling of serial robots, from the command line.
+// lagrangelab: Euler–Lagrange modelling of serial robots, from the command line; and
+// lagrangelab-gui, the same with the window and everything that paints
+// (app/graphics_handoff.hpp). LL_PROGRAM_PAINTS tells which one this is.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -9,6 +11,7 @@
 #include "app/cli_options.hpp"
 #include "app/command_usage.hpp"
 #include "app/commands.hpp"
+#include "app/graphics_handoff.hpp"
 #include "core/model/diagnostics.hpp"
 
 namespace {
@@ -58,6 +61,7 @@ int reportingErrors(F&& f) {
 int main(int argc, char** argv) {
     using namespace ll::cli;
     const auto processStart = std::chrono::steady_clock::now();
+    rememberCommandLine(argv);
     if (opensWindow(argc, argv)) {
         if (!hasDisplay()) {
             std::fputs(overviewUsage().c_str(), stderr);
@@ -87,6 +91,10 @@ int main(int argc, char** argv) {
         std::fputs(commandUsage(command).c_str(), stdout);
         return 0;
     }
+#if !LL_PROGRAM_PAINTS
+    // This is lagrangelab, without Qt and OpenSceneGraph: what paints runs in lagrangelab-gui.
+    if (commandPaints(command, args)) return handOverToGraphicsProgram();
+#endif
     return reportingErrors([&] {
         if (command == "eval") return evalCommand(args);
         if (command == "simulate") return simulateCommand(args);

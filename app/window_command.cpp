@@ -14,10 +14,11 @@
 #include <QImage>
 #include <QTimer>
 
-#include "ui/data_directory.hpp"
+#include "core/io/data_directory.hpp"
 #include "app/cli_options.hpp"
 #include "app/command_usage.hpp"
 #include "app/commands.hpp"
+#include "app/graphics_handoff.hpp"
 #include "app/event_wait.hpp"
 #include "app/offscreen_gui.hpp"
 #include "core/io/atomic_file.hpp"
@@ -27,12 +28,10 @@
 
 namespace ll::cli {
 
-bool hasDisplay() { return std::getenv("DISPLAY") != nullptr || std::getenv("WAYLAND_DISPLAY") != nullptr; }
-
 int windowCommand(const Args& args, const std::chrono::steady_clock::time_point& processStart) {
     const Options options(args, {"screenshot", "play", "step", "teach", "size", "first-frame"}, {"first-frame"});
     if (options.positional().size() > 1) throw UsageError("the window takes one SCENE, got " + std::to_string(options.positional().size()));
-    const std::string scene = options.positional().empty() ? (ui::examplesDirectory() / "double_pendulum.json").string() : options.positional()[0];
+    const std::string scene = options.positional().empty() ? (examplesDirectory() / "double_pendulum.json").string() : options.positional()[0];
     const std::string screenshot = options.text("screenshot");
     if (!screenshot.empty() && QFileInfo(QString::fromStdString(screenshot)).suffix().toLower() != "png")
         throw UsageError("--screenshot: '" + screenshot + "' is not a .png file");

@@ -2,7 +2,8 @@
 // program run from there with the working directory elsewhere and the source and build
 // trees out of reach (as root: a private mount namespace with empty tmpfs over them;
 // otherwise only the working directory moves): --version, derive and render on an
-// installed example, bench with its default scene from the installed data, the man
+// installed example, bench with its default scene from the installed data (by both
+// programs: lagrangelab and lagrangelab-gui in libexec/lagrangelab), the man
 // page, the desktop entry and AppStream metainfo validated, and the scene MIME type
 // found for a .lagrange file through the installed MIME database.
 #include <QtTest>
@@ -109,6 +110,9 @@ private slots:
 
     void layout() {
         QVERIFY(QFileInfo(prefix_ + "/bin/lagrangelab").isExecutable());
+        // What lagrangelab hands the painting commands over to, off the PATH.
+        QVERIFY(QFileInfo(prefix_ + "/libexec/lagrangelab/lagrangelab-gui").isExecutable());
+        QVERIFY(!QFileInfo::exists(prefix_ + "/bin/lagrangelab-gui"));
         // Every example, as in the source tree.
         const QStringList installedExamples = filesUnder(prefix_ + "/share/lagrangelab/examples");
         QVERIFY(installedExamples.contains("planar_2r.json"));
@@ -130,14 +134,16 @@ private slots:
     }
 
     void binaryHoldsNoSourcePath() {
-        QFile exe(prefix_ + "/bin/lagrangelab");
-        QVERIFY(exe.open(QIODevice::ReadOnly));
-        const QByteArray bytes = exe.readAll();
-        QVERIFY(!bytes.contains(QByteArray(LL_SOURCE_DIR) + "/"));
-        QVERIFY(!bytes.contains(QByteArray(LL_BUILD_DIR)));
-        // KDL is a test oracle: the installed program neither links nor names it.
-        QVERIFY(bytes.contains("libginac"));  // the check reads the dynamic section's names
-        QVERIFY(!bytes.contains("liborocos"));
+        for (const QString& program : {QString("/bin/lagrangelab"), QString("/libexec/lagrangelab/lagrangelab-gui")}) {
+            QFile exe(prefix_ + program);
+            QVERIFY(exe.open(QIODevice::ReadOnly));
+            const QByteArray bytes = exe.readAll();
+            QVERIFY(!bytes.contains(QByteArray(LL_SOURCE_DIR) + "/"));
+            QVERIFY(!bytes.contains(QByteArray(LL_BUILD_DIR)));
+            // KDL is a test oracle: the installed programs neither link nor name it.
+            QVERIFY(bytes.contains("libginac"));  // the check reads the dynamic section's names
+            QVERIFY(!bytes.contains("liborocos"));
+        }
     }
 
     void version() {
@@ -185,6 +191,14 @@ private slots:
         const ProcessRun r = installed({"bench", "--rhs", "--batches", "1"});
         QVERIFY2(r.exitCode == 0, r.err.constData());
         QVERIFY2(r.out.contains("PUMA 560"), r.out.constData());
+    }
+
+    // lagrangelab-gui, one folder deeper (libexec/lagrangelab/), finds the installed
+    // data too: bench --typeset's default scenes (the 2R, the PUMA 560, the Panda).
+    void graphicsProgramFindsTheData() {
+        const ProcessRun r = installed({"bench", "--typeset", "--batches", "1"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        QVERIFY2(r.out.contains("planar_2r.json") && r.out.contains("puma560.json") && r.out.contains("panda.json"), r.out.constData());
     }
 
     // The man page, written at build time from --help, lists every command.

@@ -82,7 +82,8 @@ private slots:
         QVERIFY2(r.exitCode == 0, r.err.constData());
         for (const QByteArray& line : r.out.split('\n'))
             if (line.startsWith('-')) files_ << QString::fromUtf8(line.mid(line.indexOf("./") + 1));
-        for (const QString& file : {QString("/usr/bin/lagrangelab"), QString("/usr/share/lagrangelab/examples/planar_2r.json"),
+        for (const QString& file : {QString("/usr/bin/lagrangelab"), QString("/usr/libexec/lagrangelab/lagrangelab-gui"),
+                                    QString("/usr/share/lagrangelab/examples/planar_2r.json"),
                                     QString("/usr/share/lagrangelab/examples/hard/stiff_spring.json"),
                                     "/usr/share/applications/" + kAppId + ".desktop",
                                     "/usr/share/icons/hicolor/scalable/apps/" + kAppId + ".svg",
@@ -105,6 +106,12 @@ private slots:
         QTemporaryDir work;
         const ProcessRun version = runProcess("/usr/bin/lagrangelab", {"--version"}, work.path());
         const ProcessRun derive = runProcess("/usr/bin/lagrangelab", {"derive", "/usr/share/lagrangelab/examples/simple_pendulum.json"}, work.path());
+        // Typeset pages: handed over to the packaged lagrangelab-gui.
+        const ProcessRun pages = runProcess("/usr/bin/lagrangelab",
+                                            {"derive", "/usr/share/lagrangelab/examples/simple_pendulum.json", "--steps", "7", "--format", "svg",
+                                             "--out", work.path() + "/b.svg"},
+                                            work.path());
+        const qint64 svgSize = QFileInfo(work.path() + "/b.svg").size();
         // The dpkg trigger of shared-mime-info updated the system database.
         QFile::copy("/usr/share/lagrangelab/examples/simple_pendulum.json", work.path() + "/pendulum.lagrange");
         QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
@@ -125,6 +132,8 @@ private slots:
         QVERIFY2(version.exitCode == 0, version.err.constData());
         QCOMPARE(version.out, QByteArray("lagrangelab " LL_VERSION "\n"));
         QVERIFY2(derive.exitCode == 0, derive.err.constData());
+        QVERIFY2(pages.exitCode == 0, pages.err.constData());
+        QVERIFY(svgSize > 1000);
         const ProcessRun built = runProcess(LL_CLI, {"derive", LL_EXAMPLES_DIR "/simple_pendulum.json"});
         QCOMPARE(derive.out, built.out);  // the packaged program derives what the built one does
         if (mime.out != "skipped") QCOMPARE(mime.out.trimmed(), QByteArray("application/x-lagrangelab-scene"));

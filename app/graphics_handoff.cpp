@@ -1,0 +1,84 @@
+#include "app/graphics_handoff.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <optional>
+#include <string>
+#include <system_error>
+
+#include <unistd.h>
+
+#include "app/commands.hpp"
+#include "core/io/data_directory.hpp"
+
+namespace ll::cli {
+namespace {
+
+char** rememberedArgv = nullptr;
+
+// The value `--name` gets, read the way Options reads it (`--name value`, `--name=value`,
+// the last one wins); nullopt when absent.
+std::optional<std::string> optionValue(const Args& args, const std::string& name) {
+    std::optional<std::string> value;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        if (args[i] == "--" + name) {
+            if (i + 1 < args.size()) value = args[++i];
+        } else if (args[i].rfind("--" + name + "=", 0) == 0) {
+            value = args[i].substr(name.size() + 3);
+        }
+    }
+    return value;
+}
+
+bool hasFlag(const Args& args, const std::string& name) {
+    for (const std::string& a : args)
+        if (a == "--" + name || a.rfind("--" + name + "=", 0) == 0) return true;
+    return false;
+}
+
+}  // namespace
+
+// A wrong answer costs time, never a result: lagrangelab's own painting functions hand
+// the command line over too, only later (app/text_only_program.cpp).
+bool commandPaints(const std::string& command, const Args& args) {
+    if (command == "render") return true;
+    if (command == "derive") {
+        const std::optional<std::string> format = optionValue(args, "format");
+        return format && (*format == "pdf" || *format == "svg" || *format == "png");
+    }
+    if (command == "accuracy") return optionValue(args, "out").has_value();
+    if (command == "bench") return hasFlag(args, "gui") || hasFlag(args, "render") || hasFlag(args, "typeset");
+    return false;
+}
+
+void rememberCommandLine(char** argv) { rememberedArgv = argv; }
+
+std::filesystem::path graphicsProgram() {
+    if (const char* chosen = std::getenv("LAGRANGELAB_GUI"); chosen != nullptr && *chosen != '\0') return chosen;
+    const std::filesystem::path dir = executableDirectory();
+    std::error_code error;
+    if (std::filesystem::exists(dir / "lagrangelab-gui", error)) return dir / "lagrangelab-gui";
+    return (dir / ".." / "libexec" / "lagrangelab" / "lagrangelab-gui").lexically_normal();
+}
+
+int handOverToGraphicsProgram() {
+    std::string program;
+    try {
+        program = graphicsProgram().string();
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "error: %s\n", e.what());
+        return 1;
+    }
+    std::fflush(stdout);
+    std::fflush(stderr);
+    ::execv(program.c_str(), rememberedArgv);
+    std::fprintf(stderr, "error: cannot start %s, which draws the window, videos, plots and typeset pages: %s\n",
+                 program.c_str(), std::strerror(errno));
+    return 1;
+}
+
+bool hasDisplay() { return std::getenv("DISPLAY") != nullptr || std::getenv("WAYLAND_DISPLAY") != nullptr; }
+
+}  // namespace ll::cli

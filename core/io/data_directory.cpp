@@ -1,0 +1,28 @@
+#include "core/io/data_directory.hpp"
+
+#include <stdexcept>
+#include <system_error>
+
+namespace ll {
+
+namespace fs = std::filesystem;
+
+fs::path executableDirectory() {
+    std::error_code error;
+    const fs::path exe = fs::read_symlink("/proc/self/exe", error);
+    if (error) throw std::runtime_error("cannot find the program's own location (/proc/self/exe: " + error.message() + ")");
+    return exe.parent_path();
+}
+
+fs::path dataDirectory() {
+    const fs::path exe = executableDirectory();
+    const fs::path beside = (exe / ".." / "share" / "lagrangelab").lexically_normal();
+    const fs::path deeper = (exe / ".." / ".." / "share" / "lagrangelab").lexically_normal();
+    std::error_code error;
+    if (!fs::is_directory(beside, error) && fs::is_directory(deeper, error)) return deeper;
+    return beside;
+}
+
+fs::path examplesDirectory() { return dataDirectory() / "examples"; }
+
+}  // namespace ll

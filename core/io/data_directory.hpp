@@ -1,0 +1,25 @@
+#pragma once
+// Where LagrangeLab's run-time data (examples/, …) lives: found from the running
+// executable, never from a path compiled in, so an install works wherever its prefix
+// is, also after the prefix was moved.
+//   installed:  PREFIX/bin/lagrangelab                      -> PREFIX/share/lagrangelab
+//               PREFIX/libexec/lagrangelab/lagrangelab-gui  -> PREFIX/share/lagrangelab
+//   build tree: BUILD/app/lagrangelab(-gui)                 -> BUILD/share/lagrangelab (the
+//               build links BUILD/share/lagrangelab/examples to the source examples)
+#include <filesystem>
+
+namespace ll {
+
+// The folder of the running executable (/proc/self/exe, links resolved).
+// Throws std::runtime_error when it cannot be read.
+std::filesystem::path executableDirectory();
+
+// executableDirectory()/../share/lagrangelab, or ../../share/lagrangelab for a program
+// installed one level deeper (libexec/lagrangelab/); normalised. The first that exists,
+// else the first.
+std::filesystem::path dataDirectory();
+
+// dataDirectory()/examples: the example scenes.
+std::filesystem::path examplesDirectory();
+
+}  // namespace ll
