@@ -15,6 +15,7 @@
 #include <utility>
 
 #include "core/symbolic/angle_sums.hpp"
+#include "core/symbolic/ginac_kind.hpp"
 #include "core/symbolic/ginac_pairs.hpp"
 
 namespace ll::symbolic {
@@ -320,10 +321,11 @@ public:
     }
 
     DisplayPtr render(const ex& e) {
-        if (is_a<GiNaC::add>(e)) return renderSum(e, false);
-        if (is_a<numeric>(e)) return renderNumber(ex_to<numeric>(e));
-        if (is_a<GiNaC::relational>(e) || is_a<GiNaC::lst>(e)) return renderAtom(e);
-        if (is_a<GiNaC::symbol>(e)) return renderSymbol(ex_to<GiNaC::symbol>(e));
+        const GinacKind kind = ginacKind(e);
+        if (kind == GinacKind::Add) return renderSum(e, false);
+        if (kind == GinacKind::Numeric) return renderNumber(ex_to<numeric>(e));
+        if (kind == GinacKind::Symbol) return renderSymbol(ex_to<GiNaC::symbol>(e));
+        if (kind == GinacKind::Other && (is_a<GiNaC::relational>(e) || is_a<GiNaC::lst>(e))) return renderAtom(e);
         Decomposed d = decompose(e);
         if (!d.coef.is_real() || !d.coef.is_negative()) return renderProduct(d);
         d.coef = -d.coef;
@@ -470,7 +472,7 @@ private:
         TermKey& k = b.key;
         // From the factors, not the term: walking a GiNaC product makes each power anew.
         for (const Factor& f : b.d.num) {
-            if (is_a<GiNaC::symbol>(f.base)) {  // most factors: looked up once, degree 1
+            if (isKind(f.base, GinacKind::Symbol)) {  // most factors: looked up once, degree 1
                 const SymbolInfo& i = info(ex_to<GiNaC::symbol>(f.base));
                 if (i.kind == Kind::Velocity && f.exp.is_pos_integer())
                     k.velocities.insert(k.velocities.end(), f.exp.to_int(), i.indices.empty() ? 0 : i.indices.back());
@@ -521,8 +523,8 @@ private:
 
     // Every node, parents first (recursion: GiNaC's preorder iterator allocates a stack).
     void scan(const ex& e, TermKey& k) {
-        if (is_a<GiNaC::symbol>(e)) return note(info(ex_to<GiNaC::symbol>(e)), k);
-        if (is_a<GiNaC::function>(e)) {
+        if (isKind(e, GinacKind::Symbol)) return note(info(ex_to<GiNaC::symbol>(e)), k);
+        if (isKind(e, GinacKind::Function)) {
             const std::string& name = ex_to<GiNaC::function>(e).get_name();
             if (name == "sin" || name == "cos" || name == "tan") k.trig = true;
         }
@@ -530,19 +532,19 @@ private:
     }
 
     static numeric degree(const ex& e) {
-        if (is_a<numeric>(e) || is_a<GiNaC::constant>(e)) return 0;
-        if (is_a<GiNaC::add>(e)) {
+        if (isKind(e, GinacKind::Numeric) || isKind(e, GinacKind::Constant)) return 0;
+        if (isKind(e, GinacKind::Add)) {
             numeric d = 0;
             for (const ex& t : e)
                 if (const numeric dt = degree(t); d < dt) d = dt;
             return d;
         }
-        if (is_a<GiNaC::mul>(e)) {
+        if (isKind(e, GinacKind::Mul)) {
             numeric d = 0;
             for (const ex& f : e) d += degree(f);
             return d;
         }
-        if (is_a<GiNaC::power>(e) && is_a<numeric>(e.op(1)) && ex_to<numeric>(e.op(1)).is_real())
+        if (isKind(e, GinacKind::Power) && isKind(e.op(1), GinacKind::Numeric) && ex_to<numeric>(e.op(1)).is_real())
             return degree(e.op(0)) * ex_to<numeric>(e.op(1));
         return 1;
     }
@@ -553,7 +555,7 @@ private:
     Decomposed decompose(const ex& e) {
         Decomposed d;
         auto factor = [&](Factor f) {
-            if (is_a<GiNaC::add>(f.base) && f.exp.is_integer() && terms(f.base).front().negative) {
+            if (isKind(f.base, GinacKind::Add) && f.exp.is_integer() && terms(f.base).front().negative) {
                 f.negated = true;
                 if (f.exp.is_odd()) d.coef = -d.coef;
             }
@@ -565,15 +567,15 @@ private:
             }
         };
         auto one = [&](const ex& x) {
-            if (is_a<numeric>(x)) {
+            if (isKind(x, GinacKind::Numeric)) {
                 d.coef *= ex_to<numeric>(x);
-            } else if (is_a<GiNaC::power>(x) && is_a<numeric>(x.op(1)) && ex_to<numeric>(x.op(1)).is_real()) {
+            } else if (isKind(x, GinacKind::Power) && isKind(x.op(1), GinacKind::Numeric) && ex_to<numeric>(x.op(1)).is_real()) {
                 factor({x.op(0), ex_to<numeric>(x.op(1))});
             } else {
                 factor({x, 1});
             }
         };
-        if (is_a<GiNaC::mul>(e)) {
+        if (isKind(e, GinacKind::Mul)) {
             // Its (base, exponent) pairs in place, in op()'s order, then its coefficient.
             const GiNaC::epvector& pairs = GinacPairs::of(ex_to<GiNaC::mul>(e));
             d.num.reserve(pairs.size());  // grown one factor at a time, a term allocated four times
@@ -620,7 +622,7 @@ private:
     // (A reference into a cache: node-based maps keep their elements in place.)
     const FactorKey& factorKey(const Factor& f) {
         const ex& b = f.base;
-        if (is_a<GiNaC::symbol>(b)) {
+        if (isKind(b, GinacKind::Symbol)) {
             const GiNaC::symbol& sym = ex_to<GiNaC::symbol>(b);
             const unsigned hash = sym.gethash();  // by serial number, checked by name as in info()
             if (auto it = symbolKeys_.find(hash); it != symbolKeys_.end() && *it->second.text == sym.get_name())
@@ -633,7 +635,7 @@ private:
         }
         ExMap<FactorKey>& cache = factorKeys_[f.negated ? 1 : 0];
         if (auto it = cache.find(b); it != cache.end()) return it->second;
-        const int rank = is_a<numeric>(b) || is_a<GiNaC::constant>(b) ? 0 : is_a<GiNaC::function>(b) ? 5 : 6;
+        const int rank = isKind(b, GinacKind::Numeric) || isKind(b, GinacKind::Constant) ? 0 : isKind(b, GinacKind::Function) ? 5 : 6;
         return cache.emplace(b, FactorKey{rank, {}, std::nullopt, b, f.negated}).first->second;
     }
 
@@ -644,7 +646,7 @@ private:
     }
 
     const std::string& spelling(const FactorKey& k) {
-        if (!k.text) k.text = keyText(*(is_a<GiNaC::add>(k.base) ? renderSum(k.base, k.negated) : render(k.base)));
+        if (!k.text) k.text = keyText(*(isKind(k.base, GinacKind::Add) ? renderSum(k.base, k.negated) : render(k.base)));
         return *k.text;
     }
 
@@ -804,19 +806,19 @@ private:
     }
 
     DisplayPtr renderAtom(const ex& e) {
-        if (is_a<GiNaC::symbol>(e)) return renderSymbol(ex_to<GiNaC::symbol>(e));
-        if (is_a<numeric>(e)) return renderNumber(ex_to<numeric>(e));
+        if (isKind(e, GinacKind::Symbol)) return renderSymbol(ex_to<GiNaC::symbol>(e));
+        if (isKind(e, GinacKind::Numeric)) return renderNumber(ex_to<numeric>(e));
         if (auto it = atoms_.find(e); it != atoms_.end()) return it->second;
         DisplayPtr out;
-        if (is_a<GiNaC::constant>(e)) {
+        if (isKind(e, GinacKind::Constant)) {
             out = renderConstant(e);
-        } else if (is_a<GiNaC::function>(e)) {
+        } else if (isKind(e, GinacKind::Function)) {
             out = renderFunction(e);
-        } else if (is_a<GiNaC::add>(e)) {
+        } else if (isKind(e, GinacKind::Add)) {
             out = renderSum(e, false);
-        } else if (is_a<GiNaC::power>(e)) {  // symbolic exponent
+        } else if (isKind(e, GinacKind::Power)) {  // symbolic exponent
             out = displayNode(DisplayKind::Power, {fenced(render(e.op(0)), AtomPrec), render(e.op(1))});
-        } else if (is_a<GiNaC::mul>(e)) {
+        } else if (isKind(e, GinacKind::Mul)) {
             out = render(e);
         } else if (is_a<GiNaC::relational>(e)) {
             out = renderRelational(ex_to<GiNaC::relational>(e));
@@ -866,7 +868,7 @@ private:
             exponent = displayNumber(power, power, power);
         else
             exponent = displayNumber(power, power, seventeen(k.to_double()));
-        const bool function = is_a<GiNaC::function>(f.base);
+        const bool function = isKind(f.base, GinacKind::Function);
         return displayNode(DisplayKind::Power, {function ? b : fenced(b, AtomPrec), exponent});
     }
 

@@ -5,6 +5,8 @@
 #include <stdexcept>
 
 #include "core/model/cancellation.hpp"
+#include "core/symbolic/ginac_kind.hpp"
+#include "core/symbolic/ginac_pairs.hpp"
 
 namespace ll::symbolic {
 namespace {
@@ -19,7 +21,7 @@ bool isAtomic(const GiNaC::ex& e) {
 template <class Visit>
 void forEachSymbol(const GiNaC::ex& e, Visit visit) {
     for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
-        if (GiNaC::is_a<GiNaC::symbol>(*it)) visit(*it);
+        if (ginacKind(*it) == GinacKind::Symbol) visit(*it);
 }
 
 }  // namespace
@@ -107,46 +109,74 @@ GiNaC::ex NamedDefinitions::unfold(const GiNaC::ex& e, const std::atomic<bool>* 
 
 namespace {
 
-double evaluate(const GiNaC::ex& e, const std::map<GiNaC::ex, double, GiNaC::ex_is_less>& values, bool absolute = false) {
+bool isOne(const GiNaC::numeric& x) {
+    static const GiNaC::numeric one(1);  // made on first use: GiNaC is initialised by then
+    return x.is_equal(one);
+}
+
+template <class Values>
+double evaluate(const GiNaC::ex& e, const Values& values, bool absolute = false);
+
+template <class Values>
+double powerValue(const GiNaC::ex& base, const GiNaC::ex& exponent, const Values& values, bool absolute) {
     using namespace GiNaC;
-    if (is_a<numeric>(e)) return absolute ? std::abs(ex_to<numeric>(e).to_double()) : ex_to<numeric>(e).to_double();
-    if (is_a<symbol>(e)) {
-        const auto it = values.find(e);
-        if (it == values.end()) throw std::invalid_argument("no value for " + ex_to<symbol>(e).get_name());
-        return absolute ? std::abs(it->second) : it->second;
-    }
-    if (is_a<constant>(e)) {
-        const double v = ex_to<numeric>(e.evalf()).to_double();
-        return absolute ? std::abs(v) : v;
-    }
-    if (is_a<add>(e)) {
-        double s = 0;
-        for (size_t k = 0; k < e.nops(); ++k) s += evaluate(e.op(k), values, absolute);
-        return s;
-    }
-    if (is_a<mul>(e)) {
-        double p = 1;
-        for (size_t k = 0; k < e.nops(); ++k) p *= evaluate(e.op(k), values, absolute);
-        return p;
-    }
-    if (is_a<power>(e)) {
-        const ex& exponent = e.op(1);
-        const double b = evaluate(e.op(0), values, absolute);
-        if (is_a<numeric>(exponent) && ex_to<numeric>(exponent).is_integer()) return std::pow(b, ex_to<numeric>(exponent).to_int());
-        return std::pow(b, evaluate(exponent, values));
-    }
-    if (is_a<function>(e)) {
-        const std::string f = ex_to<function>(e).get_name();
-        const double x = evaluate(e.op(0), values);
-        if (absolute) return std::abs(evaluate(e, values));
-        if (f == "cos") return std::cos(x);
-        if (f == "sin") return std::sin(x);
-        if (f == "tan") return std::tan(x);
-        if (f == "exp") return std::exp(x);
-        if (f == "log") return std::log(x);
-        if (f == "tanh") return std::tanh(x);
-        if (f == "abs") return std::abs(x);
-        throw std::invalid_argument("cannot evaluate " + f);
+    const double b = evaluate(base, values, absolute);
+    if (ginacKind(exponent) == GinacKind::Numeric && ex_to<numeric>(exponent).is_integer())
+        return std::pow(b, ex_to<numeric>(exponent).to_int());
+    return std::pow(b, evaluate(exponent, values));
+}
+
+template <class Values>
+double evaluate(const GiNaC::ex& e, const Values& values, bool absolute) {
+    using namespace GiNaC;
+    const auto sized = [absolute](double v) { return absolute ? std::abs(v) : v; };
+    switch (ginacKind(e)) {
+        case GinacKind::Numeric: return sized(ex_to<numeric>(e).to_double());
+        case GinacKind::Symbol: {
+            const auto it = values.find(e);
+            if (it == values.end()) throw std::invalid_argument("no value for " + ex_to<symbol>(e).get_name());
+            return sized(it->second);
+        }
+        case GinacKind::Constant: return sized(ex_to<numeric>(e.evalf()).to_double());
+        // Sums and products read in place (ginac_pairs.hpp): op(k) would make each term
+        // (rest·coefficient) and each power anew. The same operations in op()'s order.
+        case GinacKind::Add: {
+            const add& sum = ex_to<add>(e);
+            double s = 0;
+            for (const expair& term : GinacPairs::of(sum)) {
+                const numeric& c = ex_to<numeric>(term.coeff);
+                const double rest = evaluate(term.rest, values, absolute);
+                s += isOne(c) ? rest : rest * sized(c.to_double());
+            }
+            const numeric& number = ex_to<numeric>(GinacPairs::number(sum));
+            if (!number.is_zero()) s += sized(number.to_double());
+            return s;
+        }
+        case GinacKind::Mul: {
+            const mul& product = ex_to<mul>(e);
+            double p = 1;
+            for (const expair& factor : GinacPairs::of(product))
+                p *= isOne(ex_to<numeric>(factor.coeff)) ? evaluate(factor.rest, values, absolute)
+                                                         : powerValue(factor.rest, factor.coeff, values, absolute);
+            const numeric& number = ex_to<numeric>(GinacPairs::number(product));
+            if (!isOne(number)) p *= sized(number.to_double());
+            return p;
+        }
+        case GinacKind::Power: return powerValue(e.op(0), e.op(1), values, absolute);
+        case GinacKind::Function: {
+            const std::string f = ex_to<function>(e).get_name();
+            const double x = evaluate(e.op(0), values);
+            if (absolute) return std::abs(evaluate(e, values));
+            if (f == "cos") return std::cos(x);
+            if (f == "sin") return std::sin(x);
+            if (f == "tan") return std::tan(x);
+            if (f == "exp") return std::exp(x);
+            if (f == "log") return std::log(x);
+            if (f == "tanh") return std::tanh(x);
+            if (f == "abs") return std::abs(x);
+            throw std::invalid_argument("cannot evaluate " + f);
+        }
+        case GinacKind::Other: break;
     }
     throw std::invalid_argument("cannot evaluate an expression of this kind");
 }
@@ -154,6 +184,7 @@ double evaluate(const GiNaC::ex& e, const std::map<GiNaC::ex, double, GiNaC::ex_
 }  // namespace
 
 DefinitionValues::DefinitionValues(const NamedDefinitions& table, const GiNaC::lst& inputs, const std::atomic<bool>* cancel) {
+    values_.reserve(inputs.nops() + table.entries().size());
     for (const GiNaC::ex& rel : inputs) values_[rel.lhs()] = evaluate(rel.rhs(), values_);
     magnitudes_ = values_;
     int count = 0;

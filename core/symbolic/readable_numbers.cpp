@@ -2,6 +2,7 @@
 
 #include <optional>
 
+#include "core/symbolic/ginac_kind.hpp"
 #include "core/symbolic/ginac_pairs.hpp"
 
 namespace ll::symbolic {
@@ -38,8 +39,9 @@ namespace {
 // Whether a terminating fraction occurs anywhere in e (a coefficient, an exponent, a
 // number inside a function): read through sums' and products' pairs without making them.
 bool anyTerminating(const GiNaC::ex& e) {
-    if (GiNaC::is_a<GiNaC::numeric>(e)) return terminates(GiNaC::ex_to<GiNaC::numeric>(e));
-    if (GiNaC::is_a<GiNaC::add>(e) || GiNaC::is_a<GiNaC::mul>(e)) {
+    const GinacKind kind = ginacKind(e);
+    if (kind == GinacKind::Numeric) return terminates(GiNaC::ex_to<GiNaC::numeric>(e));
+    if (kind == GinacKind::Add || kind == GinacKind::Mul) {
         const auto& seq = GiNaC::ex_to<GiNaC::expairseq>(e);
         for (const GiNaC::expair& p : GinacPairs::of(seq))
             if (anyTerminating(p.rest) || anyTerminating(p.coeff)) return true;
@@ -69,7 +71,7 @@ std::optional<GiNaC::ex> withReadableCoefficients(const GiNaC::ex& e) {
 }
 
 bool hasDecimal(const GiNaC::ex& e) {
-    if (GiNaC::is_a<GiNaC::numeric>(e)) return isDecimalFraction(GiNaC::ex_to<GiNaC::numeric>(e));
+    if (ginacKind(e) == GinacKind::Numeric) return isDecimalFraction(GiNaC::ex_to<GiNaC::numeric>(e));
     for (std::size_t i = 0; i < e.nops(); ++i)
         if (hasDecimal(e.op(i))) return true;
     return false;
