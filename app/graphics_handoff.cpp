@@ -63,6 +63,13 @@ std::filesystem::path graphicsProgram() {
     return (dir / ".." / "libexec" / "lagrangelab" / "lagrangelab-gui").lexically_normal();
 }
 
+std::filesystem::path textProgram() {
+    const std::filesystem::path dir = executableDirectory();
+    std::error_code error;
+    if (std::filesystem::exists(dir / "lagrangelab", error)) return dir / "lagrangelab";
+    return (dir / ".." / ".." / "bin" / "lagrangelab").lexically_normal();
+}
+
 int handOverToGraphicsProgram() {
     std::string program;
     try {

@@ -14,6 +14,10 @@ void rememberCommandLine(char** argv);
 // else PREFIX/libexec/lagrangelab/lagrangelab-gui (installed).
 std::filesystem::path graphicsProgram();
 
+// lagrangelab, as a user starts it (bench --gui's start to first frame): beside the
+// running program (build tree), else PREFIX/bin/lagrangelab seen from libexec/lagrangelab/.
+std::filesystem::path textProgram();
+
 // Replaces this process with lagrangelab-gui on the remembered command line. Returns only
 // when that fails, with exit code 1 after one error line.
 int handOverToGraphicsProgram();
