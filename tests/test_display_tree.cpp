@@ -14,6 +14,7 @@
 #include "core/pipeline/display_derivation.hpp"
 #include "core/symbolic/robot_derivation.hpp"
 #include "core/symbolic/structured_display.hpp"
+#include "core/symbolic/structured_dynamics.hpp"
 #include "core/model/cancellation.hpp"
 
 using namespace ll;
@@ -135,6 +136,35 @@ private slots:
         QVERIFY(items > n * n);                // names, then b_jk, g_j, c_ij
         QVERIFY(names.count("b11") && names.count("g2") && names.count("c23"));
         QVERIFY2(sums >= 3, std::to_string(sums).c_str());  // b11 = Σ_i β11^(i) (+ armature), not expanded
+    }
+
+    // A builder that keeps only the symbols between expressions (the structured
+    // documents' printer) shows each expression as a fresh builder does: every name and
+    // entry of the Panda's and the PUMA 560's structured models, in the three styles.
+    void symbolSharingBuilderAgreesWithFreshOnes() {
+        for (const char* example : {"puma560.json", "panda.json"}) {
+            const Scene scene = loadScene(std::string(LL_EXAMPLES_DIR) + "/" + example).scene;
+            const auto lock = lockGinac();
+            const StructuredDynamics s = deriveStructured(scene, {});
+            DisplayOptions options;
+            for (int i = 0; i < s.n; ++i) options.coordinateNames.push_back("q" + std::to_string(i + 1));
+            DisplayBuilder shared(options, DisplayBuilder::Sharing::Symbols);
+            std::vector<GiNaC::ex> all;
+            for (const NamedDefinition& d : s.table->entries()) all.push_back(d.value);
+            for (const GiNaC::matrix* m : {&s.B, &s.C, &s.g})
+                for (unsigned i = 0; i < m->nops(); ++i) all.push_back(m->op(i));
+            all.push_back(s.B);  // a matrix, after its entries
+            int compared = 0;
+            for (const GiNaC::ex& e : all) {
+                const DisplayPtr a = shared(e), b = buildDisplay(e, options);
+                for (DisplayStyle style : {DisplayStyle::Plain, DisplayStyle::Text, DisplayStyle::Latex}) {
+                    const std::string x = renderDisplay(*a, style), y = renderDisplay(*b, style);
+                    QVERIFY2(x == y, (x + "\n" + y).c_str());
+                }
+                ++compared;
+            }
+            QVERIFY(compared > 300);
+        }
     }
 
     void structuredNamesInTextbookNotation() {

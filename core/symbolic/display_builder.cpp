@@ -380,6 +380,18 @@ public:
         return infos_[name] = i;
     }
 
+    // Drops what was kept of expressions (ordered sums, sort keys, shown powers and
+    // atoms); keeps the symbols' nodes and keys and the numbers'.
+    void forgetExpressions() {
+        terms_.clear();
+        bodies_.clear();
+        for (auto& k : factorKeys_) k.clear();
+        powers_.clear();
+        atoms_.clear();
+        for (auto& s : sums_) s.clear();
+        factorTexts_.clear();
+    }
+
 private:
     const DisplayOptions& o_;
     int n_ = 0;
@@ -905,12 +917,17 @@ private:
 struct DisplayBuilder::Impl {
     DisplayOptions options;
     Builder builder;
-    explicit Impl(const DisplayOptions& o) : options(o), builder(options) {}
+    DisplayBuilder::Sharing sharing;
+    Impl(const DisplayOptions& o, DisplayBuilder::Sharing s) : options(o), builder(options), sharing(s) {}
 };
 
-DisplayBuilder::DisplayBuilder(const DisplayOptions& options) : impl_(new Impl(options)) {}
+DisplayBuilder::DisplayBuilder(const DisplayOptions& options, Sharing sharing) : impl_(new Impl(options, sharing)) {}
 DisplayBuilder::~DisplayBuilder() { delete impl_; }
-DisplayPtr DisplayBuilder::operator()(const ex& e) { return impl_->builder.build(e); }
+DisplayPtr DisplayBuilder::operator()(const ex& e) {
+    DisplayPtr node = impl_->builder.build(e);
+    if (impl_->sharing == Sharing::Symbols) impl_->builder.forgetExpressions();
+    return node;
+}
 
 DisplayPtr buildDisplay(const ex& e, const DisplayOptions& options) { return Builder(options).build(e); }
 

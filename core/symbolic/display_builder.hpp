@@ -42,7 +42,11 @@ DisplayPtr buildDisplay(const GiNaC::ex& e, const DisplayOptions& options);
 // of subexpressions that repeat (the same sum in several entries of C).
 class DisplayBuilder {
 public:
-    explicit DisplayBuilder(const DisplayOptions& options);
+    // Everything: sums that repeat across expressions (the expanded C). Symbols: only
+    // the symbols' and numbers' nodes and keys; each expression's own caches are freed
+    // after it (many short expressions over the same names: the structured form).
+    enum class Sharing { Everything, Symbols };
+    explicit DisplayBuilder(const DisplayOptions& options, Sharing sharing = Sharing::Everything);
     ~DisplayBuilder();
     DisplayBuilder(const DisplayBuilder&) = delete;
     DisplayBuilder& operator=(const DisplayBuilder&) = delete;

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/model/cancellation.hpp"
+#include "core/symbolic/display_builder.hpp"
 #include "core/symbolic/expression_printer.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/latex_text.hpp"
@@ -35,6 +36,18 @@ PrintOptions optionsFor(const StructuredDynamics& s, Style style) {
     o.trigSymbols = true;
     return o;
 }
+
+class Printer {
+public:
+    Printer(const StructuredDynamics& s, Style style)
+        : build_(displayOptions(optionsFor(s, style)), DisplayBuilder::Sharing::Symbols),
+          style_(style == Style::Plain ? DisplayStyle::Plain : style == Style::Latex ? DisplayStyle::Latex : DisplayStyle::Text) {}
+    std::string operator()(const GiNaC::ex& e) { return renderDisplay(*build_(e), style_); }
+
+private:
+    DisplayBuilder build_;
+    DisplayStyle style_;
+};
 
 std::string coordinateList(std::uint64_t bits, int n) {
     std::string out;
@@ -189,7 +202,7 @@ std::vector<std::string> zeroPattern(const StructuredDynamics& s) {
 }
 
 void writeText(const StructuredDynamics& s, const StructuredDocumentInfo& info, std::ostream& out) {
-    const PrintOptions text = optionsFor(s, Style::Text);
+    Printer text(s, Style::Text);
     const Selection sel = select(s, info);
     out << s.systemName << "\n" << std::string(s.systemName.size(), '=') << "\n";
     out << "Form: " << info.form << " (" << info.formReason << ")\n";
@@ -199,13 +212,13 @@ void writeText(const StructuredDynamics& s, const StructuredDocumentInfo& info, 
     forEachDefinition(
         s, sel, [&](int step) { out << "\nStep " << step << ". " << stepTitle(step) << "\n"; },
         [&](const NamedDefinition& d) {
-            out << "    " << d.symbol.get_name() << " = " << print(readableNumbers(d.value), text) << "        (" << d.meaning << "; depends on "
+            out << "    " << d.symbol.get_name() << " = " << text(readableNumbers(d.value)) << "        (" << d.meaning << "; depends on "
                 << coordinateList(d.coordinates, s.n) << ")\n";
         });
     if (!sel.entries.empty()) out << "\nResults over the names\n";
     for (const EntryRef& e : sel.entries)
         out << "    " << (e.matrix == 'B' ? "b" : e.matrix == 'C' ? "c" : "g") << e.label.substr(1) << " = "
-            << print(readableNumbers(valueOf(s, e)), text) << "        (" << entryMeaning(s, e) << ")\n";
+            << text(readableNumbers(valueOf(s, e))) << "        (" << entryMeaning(s, e) << ")\n";
     if (sel.checks) {
         const int n = s.n, total = n * n * (n + 1) / 2;
         out << "\nZero pattern of d b_jk / d q_l (j <= k; x: non-zero): " << s.nonZeroMassDerivatives() << " of " << total
@@ -215,14 +228,14 @@ void writeText(const StructuredDynamics& s, const StructuredDocumentInfo& info, 
             << (skewSymmetric(s) ? "skew-symmetric (checked)" : "NOT skew-symmetric") << "\n";
     }
     for (const ExpandedEntry& e : info.expanded)
-        out << "\nExpanded " << e.ref.label << " (" << e.terms << " terms, " << e.seconds << " s):\n    " << print(readableNumbers(e.value), text) << "\n";
+        out << "\nExpanded " << e.ref.label << " (" << e.terms << " terms, " << e.seconds << " s):\n    " << text(readableNumbers(e.value)) << "\n";
 }
 
 // Each definition is a paragraph of inline math, which TeX breaks after a + or − when
 // it is wider than the page (a display would run off it), then its meaning in small
 // type with the name as the notes write it.
 void writeLatex(const StructuredDynamics& s, const StructuredDocumentInfo& info, std::ostream& out) {
-    const PrintOptions latex = optionsFor(s, Style::Latex);
+    Printer latex(s, Style::Latex);
     const Selection sel = select(s, info);
     const auto entryName = [&](const EntryRef& e) {
         std::string sub = e.label.substr(1);
@@ -245,12 +258,12 @@ void writeLatex(const StructuredDynamics& s, const StructuredDocumentInfo& info,
     forEachDefinition(
         s, sel, [&](int step) { out << "\\section*{Step " << step << "}\n" << latexStepTitle(step) << "\n\\medskip\n"; },
         [&](const NamedDefinition& d) {
-            out << "\\lldefinition{$" << print(d.symbol, latex) << " = " << print(readableNumbers(d.value), latex) << "$}{$" << d.latex
+            out << "\\lldefinition{$" << latex(d.symbol) << " = " << latex(readableNumbers(d.value)) << "$}{$" << d.latex
                 << "$: " << latexText(d.meaning) << "; depends on " << latexCoordinateList(d.coordinates, s.n) << "}\n";
         });
     if (!sel.entries.empty()) out << "\\section*{Results over the names}\n";
     for (const EntryRef& e : sel.entries)
-        out << "\\lldefinition{$" << entryName(e) << " = " << print(readableNumbers(valueOf(s, e)), latex) << "$}{"
+        out << "\\lldefinition{$" << entryName(e) << " = " << latex(readableNumbers(valueOf(s, e))) << "$}{"
             << latexEntryMeaning(s, e) << "}\n";
     if (sel.checks) {
         const int n = s.n;
@@ -259,13 +272,13 @@ void writeLatex(const StructuredDynamics& s, const StructuredDocumentInfo& info,
             << "$\\dot B - 2C$ is " << (skewSymmetric(s) ? "skew-symmetric (checked over the names)" : "not skew-symmetric") << ".\n";
     }
     for (const ExpandedEntry& e : info.expanded)
-        out << "\\paragraph{Expanded $" << entryName(e.ref) << "$} (" << e.terms << " terms)\n\n$" << print(readableNumbers(e.value), latex)
+        out << "\\paragraph{Expanded $" << entryName(e.ref) << "$} (" << e.terms << " terms)\n\n$" << latex(readableNumbers(e.value))
             << "$\n";
     out << "\\end{document}\n";
 }
 
 void writeJson(const StructuredDynamics& s, const StructuredDocumentInfo& info, std::ostream& out) {
-    const PrintOptions plain = optionsFor(s, Style::Plain);
+    Printer plain(s, Style::Plain);
     const Selection sel = select(s, info);
     nlohmann::ordered_json j;
     j["system"] = s.systemName;
@@ -284,7 +297,7 @@ void writeJson(const StructuredDynamics& s, const StructuredDocumentInfo& info, 
         // latex: the name as the notes write it; the right-hand side's LaTeX is expr's
         // (--format latex sets it), written twice it was 40 % of an 8-joint document.
         defs.push_back({{"name", d.symbol.get_name()},
-                        {"expr", print(d.value, plain)},
+                        {"expr", plain(d.value)},
                         {"latex", d.latex},
                         {"step", d.step},
                         {"meaning", d.meaning},
@@ -295,11 +308,11 @@ void writeJson(const StructuredDynamics& s, const StructuredDocumentInfo& info, 
         nlohmann::ordered_json rows = nlohmann::ordered_json::array();
         for (unsigned r = 0; r < m.rows(); ++r) {
             if (m.cols() == 1) {
-                rows.push_back(print(m(r, 0), plain));
+                rows.push_back(plain(m(r, 0)));
                 continue;
             }
             nlohmann::ordered_json row = nlohmann::ordered_json::array();
-            for (unsigned c = 0; c < m.cols(); ++c) row.push_back(print(m(r, c), plain));
+            for (unsigned c = 0; c < m.cols(); ++c) row.push_back(plain(m(r, c)));
             rows.push_back(row);
         }
         return rows;
@@ -315,10 +328,10 @@ void writeJson(const StructuredDynamics& s, const StructuredDocumentInfo& info, 
     }
     nlohmann::ordered_json entries = nlohmann::ordered_json::object();
     for (const EntryRef& e : info.entries) {
-        nlohmann::ordered_json entry{{"structured", print(valueOf(s, e), plain)}};
+        nlohmann::ordered_json entry{{"structured", plain(valueOf(s, e))}};
         for (const ExpandedEntry& x : info.expanded)
             if (x.ref.label == e.label) {
-                entry["expr"] = print(x.value, plain);
+                entry["expr"] = plain(x.value);
                 entry["terms"] = x.terms;
                 entry["seconds"] = x.seconds;
             }
