@@ -17,6 +17,9 @@ namespace ll::cli {
 namespace {
 
 char** rememberedArgv = nullptr;
+// Set in the environment of the exec, so that lagrangelab-gui's children (bench --gui
+// starts lagrangelab) are unaffected once it clears it.
+constexpr const char* kHandedOver = "LAGRANGELAB_HANDED_OVER";
 
 // The value `--name` gets, read the way Options reads it (`--name value`, `--name=value`,
 // the last one wins); nullopt when absent.
@@ -40,15 +43,20 @@ bool hasFlag(const Args& args, const std::string& name) {
 
 }  // namespace
 
-// A wrong answer costs time, never a result: lagrangelab's own painting functions hand
-// the command line over too, only later (app/text_only_program.cpp).
+// lagrangelab's own painting functions hand the command line over too, only later
+// (app/text_only_program.cpp): a command this misses would still paint, but after its
+// work, which then runs again (and prints again) in lagrangelab-gui. It agrees with
+// Options on every valid command line (tests/test_graphics_handoff).
 bool commandPaints(const std::string& command, const Args& args) {
     if (command == "render") return true;
     if (command == "derive") {
         const std::optional<std::string> format = optionValue(args, "format");
         return format && (*format == "pdf" || *format == "svg" || *format == "png");
     }
-    if (command == "accuracy") return optionValue(args, "out").has_value();
+    if (command == "accuracy") {  // an empty --out draws no plot
+        const std::optional<std::string> out = optionValue(args, "out");
+        return out && !out->empty();
+    }
     if (command == "bench") return hasFlag(args, "gui") || hasFlag(args, "render") || hasFlag(args, "typeset");
     return false;
 }
@@ -78,13 +86,27 @@ int handOverToGraphicsProgram() {
         std::fprintf(stderr, "error: %s\n", e.what());
         return 1;
     }
+    // Handed over once only: a LAGRANGELAB_GUI that names lagrangelab (or a script
+    // starting it) would otherwise exec forever. lagrangelab-gui clears the mark.
+    if (std::getenv(kHandedOver) != nullptr) {
+        std::fprintf(stderr, "error: %s handed the command back instead of running it: LAGRANGELAB_GUI must name lagrangelab-gui\n",
+                     program.c_str());
+        return 1;
+    }
+    ::setenv(kHandedOver, "1", 1);
     std::fflush(stdout);
     std::fflush(stderr);
     ::execv(program.c_str(), rememberedArgv);
-    std::fprintf(stderr, "error: cannot start %s, which draws the window, videos, plots and typeset pages: %s\n",
-                 program.c_str(), std::strerror(errno));
+    const int error = errno;
+    ::unsetenv(kHandedOver);
+    std::fprintf(stderr,
+                 "error: cannot start %s, which draws the window, videos, plots and typeset pages: %s (reinstall lagrangelab, "
+                 "or set LAGRANGELAB_GUI to lagrangelab-gui)\n",
+                 program.c_str(), std::strerror(error));
     return 1;
 }
+
+void clearHandoverMark() { ::unsetenv(kHandedOver); }
 
 bool hasDisplay() { return std::getenv("DISPLAY") != nullptr || std::getenv("WAYLAND_DISPLAY") != nullptr; }
 

@@ -22,6 +22,10 @@ std::filesystem::path textProgram();
 // when that fails, with exit code 1 after one error line.
 int handOverToGraphicsProgram();
 
+// lagrangelab-gui, first thing: forgets that it was handed a command line, so that what
+// it starts (bench --gui starts lagrangelab) may hand over again.
+void clearHandoverMark();
+
 // An X or Wayland display to open the window on.
 bool hasDisplay();
 

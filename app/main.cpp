@@ -62,6 +62,9 @@ int main(int argc, char** argv) {
     using namespace ll::cli;
     const auto processStart = std::chrono::steady_clock::now();
     rememberCommandLine(argv);
+#if LL_PROGRAM_PAINTS
+    clearHandoverMark();
+#endif
     if (opensWindow(argc, argv)) {
         if (!hasDisplay()) {
             std::fputs(overviewUsage().c_str(), stderr);

@@ -1,6 +1,7 @@
 // lagrangelab's painting functions: it links neither Qt nor OpenSceneGraph, so each hands
 // the whole command line over to lagrangelab-gui (app/graphics_handoff.hpp). main hands
 // over before any work when commandPaints() says so; these are reached only if it did not.
+#include <cstdio>
 #include <cstdlib>
 
 #include "app/commands.hpp"
@@ -9,7 +10,12 @@
 namespace ll::cli {
 namespace {
 
-[[noreturn]] void handOver() { std::exit(handOverToGraphicsProgram()); }
+// _Exit: as if the exec had replaced the process; nothing of this one is to run on.
+[[noreturn]] void handOver() {
+    const int code = handOverToGraphicsProgram();
+    std::fflush(nullptr);
+    std::_Exit(code);
+}
 
 }  // namespace
 

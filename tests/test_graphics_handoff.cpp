@@ -2,7 +2,8 @@
 // links neither Qt nor OpenSceneGraph; every command that paints is handed over to
 // lagrangelab-gui with its command line unchanged, and every other command runs without
 // it. LAGRANGELAB_GUI points the handover at a missing program (then a painting command
-// fails in one line, exit 1, before any work) or at a script that prints what it got.
+// fails in one line, exit 1, before any work), at lagrangelab itself (no endless
+// handover) or at a script that prints what it got.
 #include <QtTest>
 
 #include <QFile>
@@ -109,6 +110,16 @@ private slots:
         const ProcessRun bad = runProcess(LL_CLI, {"derive", example("planar_2r.json"), "--format", "pdf"}, tmp_.path(),
                                           withGui(missing()));
         QCOMPARE(bad.exitCode, 1);
+    }
+
+    // A LAGRANGELAB_GUI naming lagrangelab itself hands back once, then stops in one
+    // line (it would exec itself forever).
+    void noHandoverLoop() {
+        const ProcessRun r = runProcess(LL_CLI, {"render", example("simple_pendulum.json"), "--out", tmp_.path() + "/loop.png"},
+                                        tmp_.path(), withGui(LL_CLI), 20000);
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains("handed the command back"), r.err.constData());
+        QCOMPARE(r.err.count('\n'), 1);
     }
 
     // The handover keeps the command line as typed (spaces, '=', the order), the

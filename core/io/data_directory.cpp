@@ -16,11 +16,8 @@ fs::path executableDirectory() {
 
 fs::path dataDirectory() {
     const fs::path exe = executableDirectory();
-    const fs::path beside = (exe / ".." / "share" / "lagrangelab").lexically_normal();
-    const fs::path deeper = (exe / ".." / ".." / "share" / "lagrangelab").lexically_normal();
-    std::error_code error;
-    if (!fs::is_directory(beside, error) && fs::is_directory(deeper, error)) return deeper;
-    return beside;
+    const bool inLibexec = exe.filename() == "lagrangelab" && exe.parent_path().filename() == "libexec";
+    return (exe / (inLibexec ? "../.." : "..") / "share" / "lagrangelab").lexically_normal();
 }
 
 fs::path examplesDirectory() { return dataDirectory() / "examples"; }

@@ -14,9 +14,8 @@ namespace ll {
 // Throws std::runtime_error when it cannot be read.
 std::filesystem::path executableDirectory();
 
-// executableDirectory()/../share/lagrangelab, or ../../share/lagrangelab for a program
-// installed one level deeper (libexec/lagrangelab/); normalised. The first that exists,
-// else the first.
+// executableDirectory()/../share/lagrangelab, or ../../share/lagrangelab when that folder
+// is PREFIX/libexec/lagrangelab; normalised.
 std::filesystem::path dataDirectory();
 
 // dataDirectory()/examples: the example scenes.
