@@ -1,5 +1,6 @@
 // DerivationView: derives in a worker thread (the newest scene wins), steps through 0–8
-// with Previous/Next and stepChanged, copies an item as LaTeX, and paints typeset math.
+// with Previous/Next and stepChanged, titles and copies an item as LaTeX, and paints
+// typeset math.
 #include <QtTest>
 
 #include <QApplication>
@@ -38,6 +39,11 @@ private slots:
         QCOMPARE(view.step(), 8);
         view.nextStep();  // stays at the last step
         QCOMPARE(view.step(), 8);
+        // Step 8's headers: g, C, Q by their names, the equations by number (not by
+        // their whole left side, the row of B q̈ + C q̇ + g written out).
+        const QStringList titles = {view.itemTitle(0), view.itemTitle(1), view.itemTitle(2), view.itemTitle(3), view.itemTitle(4)};
+        QCOMPARE(titles, (QStringList{"g", "C", "Q", "equation 1", "equation 2"}));
+        QCOMPARE(view.itemTitle(5), QString());
         view.previousStep();
         QCOMPARE(view.step(), 7);
         QCOMPARE(steps.count(), 3);

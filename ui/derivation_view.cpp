@@ -23,7 +23,11 @@ namespace ll::ui {
 
 // An item's name as a reader sees it: its equation's left side in Text (β₁₁⁽²⁾ for the
 // structured form's beta1_1_2, b11 for b11), else the plain name.
+// An item's header: its left side as text (b11, g(q), T_2^0), or "equation 1" for an
+// equation of motion, whose left side is the whole row of B q̈ + C q̇ + g.
 static QString shownName(const symbolic::DisplayItem& item) {
+    if (item.name.rfind("equation_", 0) == 0)
+        return QCoreApplication::translate("ll::ui::DerivationView", "equation %1").arg(QString::fromStdString(item.name.substr(9)));
     if (item.equation && item.equation->kind == symbolic::DisplayKind::Equation && !item.equation->children.empty())
         return QString::fromStdString(symbolic::renderDisplay(*item.equation->children[0], symbolic::DisplayStyle::Text));
     return QString::fromStdString(item.name);
@@ -58,6 +62,11 @@ public:
         formulaLines_.clear();
         setMinimumHeight(static_cast<int>(contentHeight()));
         update();
+    }
+
+    QString title(int index) const {
+        if (!step_ || index < 0 || index >= static_cast<int>(step_->items.size())) return {};
+        return shownName(step_->items[static_cast<std::size_t>(index)]);
     }
 
     QString latex(int index) const {
@@ -345,5 +354,7 @@ void DerivationView::setZoom(double zoom) {
 }
 
 QString DerivationView::itemLatex(int index) const { return canvas_->latex(index); }
+
+QString DerivationView::itemTitle(int index) const { return canvas_->title(index); }
 
 }  // namespace ll::ui

@@ -55,6 +55,8 @@ public:
     std::shared_ptr<const symbolic::DisplayDocument> document() const { return document_; }
     // The LaTeX of item `index` of the shown step ("b_{11} = …"): what Copy as LaTeX copies.
     QString itemLatex(int index) const;
+    // Item `index`'s header (and the name in its Copy menu): b11, g(q), equation 1.
+    QString itemTitle(int index) const;
 
 public slots:
     void nextStep();
