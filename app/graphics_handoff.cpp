@@ -45,8 +45,9 @@ bool hasFlag(const Args& args, const std::string& name) {
 
 // lagrangelab's own painting functions hand the command line over too, only later
 // (app/text_only_program.cpp): a command this misses would still paint, but after its
-// work, which then runs again (and prints again) in lagrangelab-gui. It agrees with
-// Options on every valid command line (tests/test_graphics_handoff).
+// work, which then runs again (and prints again) in lagrangelab-gui. It reads options
+// as Options does (`--name value`, `--name=value`, the last wins); the command lines of
+// tests/test_graphics_handoff check it.
 bool commandPaints(const std::string& command, const Args& args) {
     if (command == "render") return true;
     if (command == "derive") {
