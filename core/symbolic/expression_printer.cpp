@@ -26,11 +26,11 @@ bool isMassName(const std::string& name, std::string& digits) {
     return name == "m" || (name[0] == 'm' && (name[1] == '_' || numbered));
 }
 
+}  // namespace
+
 DisplayStyle displayStyle(Style s) {
     return s == Style::Plain ? DisplayStyle::Plain : s == Style::Latex ? DisplayStyle::Latex : DisplayStyle::Text;
 }
-
-}  // namespace
 
 DisplayOptions displayOptions(const PrintOptions& options) {
     DisplayOptions out;

@@ -38,6 +38,9 @@ struct PrintOptions {
     bool trigSymbols = true;
 };
 
+// The display tree's style that renders `style`.
+DisplayStyle displayStyle(Style style);
+
 // The display tree's options (coordinates, trig shorthand) of these print options.
 DisplayOptions displayOptions(const PrintOptions& options);
 

@@ -41,7 +41,7 @@ class Printer {
 public:
     Printer(const StructuredDynamics& s, Style style)
         : build_(displayOptions(optionsFor(s, style)), DisplayBuilder::Sharing::Symbols),
-          style_(style == Style::Plain ? DisplayStyle::Plain : style == Style::Latex ? DisplayStyle::Latex : DisplayStyle::Text) {}
+          style_(displayStyle(style)) {}
     std::string operator()(const GiNaC::ex& e) { return renderDisplay(*build_(e), style_); }
 
 private:
