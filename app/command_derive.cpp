@@ -41,6 +41,22 @@ StepRange parseSteps(const std::string& text) {
     return range;
 }
 
+// --timings (when asked) and the warnings, on stderr.
+void report(const DerivedDocument& derived, const DocumentWriting& writing, bool timings) {
+    if (timings) {
+        double total = 0;
+        for (const StepTiming& step : derived.timings) {
+            std::fprintf(stderr, "step %d (%s): %.3f ms\n", step.number, step.title.c_str(), 1e3 * step.seconds);
+            total += step.seconds;
+        }
+        std::fprintf(stderr, "total: %.3f ms\n", 1e3 * total);
+        std::fprintf(stderr, "printing: %.3f ms\n", 1e3 * derived.printSeconds);
+        if (writing.parts > 0)
+            std::fprintf(stderr, "item renderings: %zu, %zu of them on the shaping thread\n", writing.parts, writing.renderedByShaper);
+    }
+    for (const std::string& w : derived.warnings) std::cerr << "warning: " << w << '\n';
+}
+
 }  // namespace
 
 int deriveCommand(const Args& args) {
@@ -81,50 +97,39 @@ int deriveCommand(const Args& args) {
         throw UsageError("--format " + format + ": typesets whole derivations; --entry and --verify are for text, latex and json");
     DocumentWriting writing;  // how the expanded text, LaTeX or JSON shared its rendering (--timings)
     request.writing = &writing;
-    FormDocument result;
-    if (typeset) {
-        result.derived = inSceneFile(options.positional()[0], [&] { return deriveDisplay(scene, request, chosenForm); });
-    } else {
-        FormRequest formRequest;
-        formRequest.document = request;
-        formRequest.form = chosenForm;
-        formRequest.verify = options.has("verify");
-        if (options.has("entry")) {
-            const std::string list = options.text("entry");
-            for (std::size_t start = 0; start <= list.size();) {
-                const std::size_t end = std::min(list.find(',', start), list.size());
-                formRequest.entries.push_back(list.substr(start, end - start));
-                start = end + 1;
-            }
+    const bool timings = options.has("timings");
+    if (typeset)
+        return writeDerivationPages(
+            [&](symbolic::DisplayStream* stream) {
+                request.displayStream = stream;
+                const DerivedDocument derived = inSceneFile(options.positional()[0], [&] { return deriveDisplay(scene, request, chosenForm); });
+                report(derived, writing, timings);
+                return derived.display;
+            },
+            format, options.text("out"), timings);
+    FormRequest formRequest;
+    formRequest.document = request;
+    formRequest.form = chosenForm;
+    formRequest.verify = options.has("verify");
+    if (options.has("entry")) {
+        const std::string list = options.text("entry");
+        for (std::size_t start = 0; start <= list.size();) {
+            const std::size_t end = std::min(list.find(',', start), list.size());
+            formRequest.entries.push_back(list.substr(start, end - start));
+            start = end + 1;
         }
-        result = inSceneFile(options.positional()[0], [&] {
-            try {
-                return deriveInForm(scene, formRequest);
-            } catch (const std::invalid_argument& e) {  // a bad --entry
-                throw UsageError(e.what());
-            }
-        });
     }
-    const DerivedDocument& derived = result.derived;
+    const FormDocument result = inSceneFile(options.positional()[0], [&] {
+        try {
+            return deriveInForm(scene, formRequest);
+        } catch (const std::invalid_argument& e) {  // a bad --entry
+            throw UsageError(e.what());
+        }
+    });
     for (const std::string& line : result.verification) std::cerr << "verify: " << line << '\n';
-
-    if (options.has("timings")) {
-        double total = 0;
-        for (const StepTiming& step : derived.timings) {
-            std::fprintf(stderr, "step %d (%s): %.3f ms\n", step.number, step.title.c_str(), 1e3 * step.seconds);
-            total += step.seconds;
-        }
-        std::fprintf(stderr, "total: %.3f ms\n", 1e3 * total);
-        std::fprintf(stderr, "printing: %.3f ms\n", 1e3 * derived.printSeconds);
-        if (writing.parts > 0)
-            std::fprintf(stderr, "item renderings: %zu, %zu of them on the shaping thread\n", writing.parts, writing.renderedByShaper);
-    }
-    for (const std::string& w : derived.warnings) std::cerr << "warning: " << w << '\n';
-    if (!typeset) {
-        std::cout << derived.document;
-        return 0;
-    }
-    return writeDerivationPages(*derived.display, format, options.text("out"), options.has("timings"));
+    report(result.derived, writing, timings);
+    std::cout << result.derived.document;
+    return 0;
 }
 
 }  // namespace ll::cli

@@ -16,7 +16,9 @@
 #include <thread>
 
 #include "core/io/scene_file.hpp"
+#include "core/model/cancellation.hpp"
 #include "core/pipeline/display_derivation.hpp"
+#include "core/symbolic/display_stream.hpp"
 #include "ui/derivation_pages.hpp"
 #include "ui/math_typesetter.hpp"
 #include "pdf_streams.hpp"
@@ -147,6 +149,94 @@ private slots:
         }
         for (std::size_t i = 0; i < pngAlone.size(); ++i)
             QVERIFY2(QImage(pngAlone[i]) == QImage(pngTogether[i]), qPrintable(pngTogether[i]));
+    }
+
+    // `derive --format pdf`: the pages are laid out and written on two threads while this
+    // one still shapes the document (core/symbolic/display_stream). The PDF equals the one
+    // written from the finished document, whichever side waits for the other: the real
+    // derivation (expanded 2R and SCARA, structured Panda handed over whole), and a
+    // document handed over item by item with pauses, so the layout thread waits mid-step.
+    void aPdfWrittenWhileTheDocumentIsShaped() {
+        QTemporaryDir dir;
+        for (const char* example : {"planar_2r.json", "scara.json", "panda.json"}) {
+            const auto whole = documentOf(example);
+            QVERIFY(write(*whole, dir.filePath("whole.pdf")).ok);
+            const QList<QByteArray> expected = streamsOf(dir.filePath("whole.pdf"));
+            QVERIFY(pagesIn(expected) >= 1);
+
+            symbolic::DisplayStream stream;
+            Written streamed;
+            std::thread writer([&] { streamed.ok = ui::writePdf(stream, dir.filePath("streamed.pdf"), streamed.error, {}, &streamed.pages); });
+            DocumentRequest request;
+            request.displayStream = &stream;
+            const auto shaped = deriveDisplay(loadScene(std::string(LL_EXAMPLES_DIR) + "/" + example).scene, request).display;
+            writer.join();
+            QVERIFY2(streamed.ok, streamed.error.c_str());
+            QCOMPARE(shaped->steps.size(), whole->steps.size());
+            QVERIFY2(streamsOf(dir.filePath("streamed.pdf")) == expected, example);
+
+            symbolic::DisplayStream slow;
+            Written paused;
+            std::thread slowWriter([&] { paused.ok = ui::writePdf(slow, dir.filePath("paused.pdf"), paused.error, {}, &paused.pages); });
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+            slow.open(*whole);
+            for (const symbolic::DisplayStep& step : whole->steps) {
+                slow.putStep(step);
+                for (std::size_t j = 0; j < step.items.size(); ++j) {
+                    if (j % 3 == 0) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+                    slow.putItem(step.items[j]);
+                }
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+            slow.close(whole->actuation);
+            slowWriter.join();
+            QVERIFY2(paused.ok, paused.error.c_str());
+            QCOMPARE(paused.pages, pagesIn(expected));
+            QVERIFY2(streamsOf(dir.filePath("paused.pdf")) == expected, example);
+        }
+    }
+
+    // The shaping fails half way (an error, a cancel): the writer stops, says so, and
+    // saves nothing (no half file, and an older file of that name is left as it was).
+    void aFailedShapingSavesNothing() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("derivation.pdf");
+        {
+            QFile old(path);
+            QVERIFY(old.open(QIODevice::WriteOnly));
+            old.write("an older export");
+        }
+        const auto whole = documentOf("scara.json");
+        symbolic::DisplayStream stream;
+        Written w;
+        std::thread writer([&] { w.ok = ui::writePdf(stream, path, w.error, {}, &w.pages); });
+        stream.open(*whole);
+        stream.putStep(whole->steps.at(0));
+        for (const symbolic::DisplayItem& item : whole->steps.at(0).items) stream.putItem(item);
+        stream.putStep(whole->steps.at(1));
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));  // the first page laid out, waiting
+        stream.fail();
+        writer.join();
+        QVERIFY(!w.ok);
+        QVERIFY2(w.error.find("derivation stopped") != std::string::npos, w.error.c_str());
+        QFile old(path);
+        QVERIFY(old.open(QIODevice::ReadOnly));
+        QCOMPARE(old.readAll(), QByteArray("an older export"));
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files).size(), 1);  // no temporary left
+
+        // And a derivation that throws fails its stream itself (the CLI's writer is never
+        // left waiting): a scene whose shaping is cancelled before it starts.
+        symbolic::DisplayStream cancelled;
+        Written c;
+        std::thread cancelledWriter([&] { c.ok = ui::writePdf(cancelled, dir.filePath("cancelled.pdf"), c.error, {}, &c.pages); });
+        std::atomic<bool> cancel{true};
+        DocumentRequest request;
+        request.displayStream = &cancelled;
+        request.cancel = &cancel;
+        QVERIFY_THROWS_EXCEPTION(Cancelled, deriveDisplay(loadScene(std::string(LL_EXAMPLES_DIR) + "/scara.json").scene, request));
+        cancelledWriter.join();
+        QVERIFY(!c.ok);
+        QVERIFY(!QFile::exists(dir.filePath("cancelled.pdf")));
     }
 };
 

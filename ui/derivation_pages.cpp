@@ -81,9 +81,46 @@ DerivationPages paginate(const symbolic::DisplayDocument& document, const PageFo
     return pages;
 }
 
-void paginate(const symbolic::DisplayDocument& document, const PageFormat& format, const PageSink& sink) {
+namespace {
+
+// What paginate reads: a finished document, or a stream that grows while it is read.
+struct CompleteDocument {
+    const symbolic::DisplayDocument& document;
+    const symbolic::DisplayDocument& head() const { return document; }
+    const symbolic::DisplayStep* step(std::size_t i) const { return i < document.steps.size() ? &document.steps[i] : nullptr; }
+    const symbolic::DisplayItem* item(std::size_t i, std::size_t j) const {
+        return j < document.steps[i].items.size() ? &document.steps[i].items[j] : nullptr;
+    }
+    std::string actuation() const { return document.actuation; }
+};
+
+struct StreamFailed {};  // the shaping thread failed: its own error is the one to report
+
+struct GrowingDocument {
+    symbolic::DisplayStream& stream;
+    const symbolic::DisplayDocument& head() const {
+        if (const symbolic::DisplayDocument* h = stream.head()) return *h;
+        throw StreamFailed{};
+    }
+    const symbolic::DisplayStep* step(std::size_t i) const { return checked(stream.step(i)); }
+    const symbolic::DisplayItem* item(std::size_t i, std::size_t j) const { return checked(stream.item(i, j)); }
+    std::string actuation() const {
+        std::string a = stream.actuation();
+        if (stream.failed()) throw StreamFailed{};
+        return a;
+    }
+    template <class T>
+    T* checked(T* p) const {
+        if (!p && stream.failed()) throw StreamFailed{};
+        return p;
+    }
+};
+
+template <class Source>
+void paginateFrom(const Source& source, const PageFormat& format, const PageSink& sink) {
     Composer c(format, sink);
     const double em = mathUnitsPerEm;
+    const symbolic::DisplayDocument& document = source.head();
     c.block(wrapped(QString::fromStdString("Euler–Lagrange model: " + document.systemName), 1.5, c.width(), true), 0, 0, 0.3 * em);
     c.block(wrapped("Shorthand: c_i = cos q_i, s_i = sin q_i, c12 = cos(q1 + q2); q̇, q̈ the joint velocities and "
                     "accelerations.",
@@ -97,28 +134,34 @@ void paginate(const symbolic::DisplayDocument& document, const PageFormat& forma
         hcat(out, l, em);
         return out;
     };
-    for (const symbolic::DisplayStep& step : document.steps) {
-        std::vector<MathBox> head = wrapped(QString("Step %1. %2").arg(step.number).arg(QString::fromStdString(step.title)),
+    for (std::size_t i = 0; const symbolic::DisplayStep* step = source.step(i); ++i) {
+        std::vector<MathBox> head = wrapped(QString("Step %1. %2").arg(step->number).arg(QString::fromStdString(step->title)),
                                             1.2, c.width(), true);
-        if (step.formula)  // the notes' general formula, typeset
-            for (const MathBox& l : layoutFormula(*step.formula, (c.width() - em) / 0.9, 0.9)) head.push_back(indented(l));
+        if (step->formula)  // the notes' general formula, typeset
+            for (const MathBox& l : layoutFormula(*step->formula, (c.width() - em) / 0.9, 0.9)) head.push_back(indented(l));
         else
-            for (const MathBox& l : wrapped(QString::fromStdString(step.formulaText), 0.85, c.width() - em)) head.push_back(indented(l));
+            for (const MathBox& l : wrapped(QString::fromStdString(step->formulaText), 0.85, c.width() - em)) head.push_back(indented(l));
         c.block(head, 0, 1.4 * em, 0.3 * em);
-        for (const symbolic::DisplayItem& item : step.items) {
-            std::vector<MathBox> lines = layoutItem(*item.equation, item.name, c.width() - em);
-            if (!item.note.empty()) {  // what a name means, beside it when it fits, else under it
-                const MathBox note = layoutText(QString::fromStdString(item.note), 0.75);
+        for (std::size_t j = 0; const symbolic::DisplayItem* item = source.item(i, j); ++j) {
+            std::vector<MathBox> lines = layoutItem(*item->equation, item->name, c.width() - em);
+            if (!item->note.empty()) {  // what a name means, beside it when it fits, else under it
+                const MathBox note = layoutText(QString::fromStdString(item->note), 0.75);
                 if (lines.size() == 1 && lines[0].width + 2 * em + note.width <= c.width() - em)
                     hcat(lines[0], note, 2 * em);
                 else
-                    for (const MathBox& l : wrapped(QString::fromStdString(item.note), 0.75, c.width() - 3 * em)) lines.push_back(indented(l));
+                    for (const MathBox& l : wrapped(QString::fromStdString(item->note), 0.75, c.width() - 3 * em)) lines.push_back(indented(l));
             }
-            c.block(lines, em, (item.note.empty() ? 0.7 : 0.35) * em, 0.45 * em);
+            c.block(lines, em, (item->note.empty() ? 0.7 : 0.35) * em, 0.45 * em);
         }
     }
-    c.block(wrapped(QString::fromStdString("Actuation: " + document.actuation), 0.9, c.width()), 0, 1.2 * em, 0.2 * em);
+    c.block(wrapped(QString::fromStdString("Actuation: " + source.actuation()), 0.9, c.width()), 0, 1.2 * em, 0.2 * em);
     c.finish();
+}
+
+}  // namespace
+
+void paginate(const symbolic::DisplayDocument& document, const PageFormat& format, const PageSink& sink) {
+    paginateFrom(CompleteDocument{document}, format, sink);
 }
 
 namespace {
@@ -185,16 +228,14 @@ bool writePdfOf(const PageFormat& format, NextPage&& next, const QString& path, 
     return save(path, bytes.toStdString(), error);
 }
 
-}  // namespace
-
-bool writePdf(const symbolic::DisplayDocument& document, const QString& path, std::string& error, const PageFormat& format,
-              int* pageCount) {
+template <class Source>
+bool writePdfFrom(const Source& source, const QString& path, std::string& error, const PageFormat& format, int* pageCount) {
     // Layout and QPdfWriter each take about as long for a large robot (the Panda: 0.12 s and
     // 0.19 s): a second thread lays out page k+1 while this one paints page k.
     std::mutex mutex;
     std::condition_variable changed;
     std::deque<std::vector<PlacedBox>> ready;
-    bool laidOut = false, stop = false;
+    bool laidOut = false, stop = false, streamFailed = false;
     std::exception_ptr failure;
     // Written pages go back to the layout thread, which frees them (outside the lock) and
     // reuses their memory: it is that thread's malloc arena, and freeing it from this
@@ -203,7 +244,7 @@ bool writePdf(const symbolic::DisplayDocument& document, const QString& path, st
     std::vector<std::vector<PlacedBox>> written;
     std::thread layout([&] {
         try {
-            paginate(document, format, [&](std::vector<PlacedBox>&& page) {
+            paginateFrom(source, format, [&](std::vector<PlacedBox>&& page) {
                 std::vector<std::vector<PlacedBox>> done;
                 {
                     std::lock_guard lock(mutex);
@@ -214,6 +255,8 @@ bool writePdf(const symbolic::DisplayDocument& document, const QString& path, st
                 }
             });
         } catch (const Cancelled&) {
+        } catch (const StreamFailed&) {
+            streamFailed = true;
         } catch (...) {
             failure = std::current_exception();
         }
@@ -240,6 +283,7 @@ bool writePdf(const symbolic::DisplayDocument& document, const QString& path, st
             std::unique_lock lock(mutex);
             changed.wait(lock, [&] { return !ready.empty() || laidOut; });
             if (failure) std::rethrow_exception(failure);  // before anything is saved: no half file
+            if (streamFailed) throw StreamFailed{};
             if (ready.empty()) return false;
             if (!page.empty()) written.push_back(std::move(page));
             page = std::move(ready.front());
@@ -250,6 +294,22 @@ bool writePdf(const symbolic::DisplayDocument& document, const QString& path, st
         path, error);
     if (pageCount) *pageCount = pages;
     return ok;
+}
+
+}  // namespace
+
+bool writePdf(const symbolic::DisplayDocument& document, const QString& path, std::string& error, const PageFormat& format,
+              int* pageCount) {
+    return writePdfFrom(CompleteDocument{document}, path, error, format, pageCount);
+}
+
+bool writePdf(symbolic::DisplayStream& stream, const QString& path, std::string& error, const PageFormat& format, int* pageCount) {
+    try {
+        return writePdfFrom(GrowingDocument{stream}, path, error, format, pageCount);
+    } catch (const StreamFailed&) {  // nothing saved
+        error = "the derivation stopped before its pages were complete";
+        return false;
+    }
 }
 
 bool writeSvg(const DerivationPages& pages, const QString& path, std::string& error, std::vector<QString>* written) {

@@ -2,22 +2,19 @@
 
 #include <chrono>
 
+#include "core/symbolic/display_stream.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/structured_display.hpp"
 
 namespace ll {
+namespace {
 
-DerivedDocument deriveDisplay(const Scene& scene, const DocumentRequest& request, DerivationForm form) {
+DerivedDocument deriveInForm(const Scene& scene, const DocumentRequest& request, bool expanded, const std::string& reason) {
     using namespace symbolic;
-    DocumentRequest display = request;
-    display.format = DocumentFormat::Display;
-    std::string reason;
-    const bool cheap = scene.lagrangian || expandedIsCheap(scene, reason);
-    if (scene.lagrangian) reason = "a hand-typed Lagrangian is derived from its E_kin and E_pot";
-    else reason = form == DerivationForm::Auto ? "auto: " + reason : "asked for with --form";
-    const bool expanded = scene.lagrangian || form == DerivationForm::Expanded || (form == DerivationForm::Auto && cheap);
     DerivedDocument out;
     if (expanded) {
+        DocumentRequest display = request;
+        display.format = DocumentFormat::Display;
         out = deriveDocument(scene, display);
         auto doc = std::make_shared<DisplayDocument>(*out.display);
         doc->form = "expanded";
@@ -34,9 +31,29 @@ DerivedDocument deriveDisplay(const Scene& scene, const DocumentRequest& request
     throwIfCancelled(request.cancel);
     const auto printing = std::chrono::steady_clock::now();
     out.display = structuredDisplayDocument(s, reason, request.firstStep, request.lastStep, request.cancel);
+    // The structured form's trees take a few milliseconds: handed over whole.
+    if (request.displayStream) request.displayStream->putDocument(*out.display);
     out.printSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - printing).count();
     out.timings.push_back({0, "structured derivation (steps 1-8)", s.seconds});
     return out;
+}
+
+}  // namespace
+
+DerivedDocument deriveDisplay(const Scene& scene, const DocumentRequest& request, DerivationForm form) {
+    std::string reason;
+    const bool cheap = scene.lagrangian || expandedIsCheap(scene, reason);
+    if (scene.lagrangian) reason = "a hand-typed Lagrangian is derived from its E_kin and E_pot";
+    else reason = form == DerivationForm::Auto ? "auto: " + reason : "asked for with --form";
+    const bool expanded = scene.lagrangian || form == DerivationForm::Expanded || (form == DerivationForm::Auto && cheap);
+    if (!request.displayStream) return deriveInForm(scene, request, expanded, reason);
+    try {  // whatever throws, the stream's reader stops waiting
+        request.displayStream->describeForm(expanded ? "expanded" : "structured", reason);
+        return deriveInForm(scene, request, expanded, reason);
+    } catch (...) {
+        request.displayStream->fail();
+        throw;
+    }
 }
 
 }  // namespace ll

@@ -15,6 +15,7 @@
 #include "core/model/actuation.hpp"
 #include "core/model/cancellation.hpp"
 #include "core/symbolic/angle_sums.hpp"
+#include "core/symbolic/display_stream.hpp"
 #include "core/symbolic/expression_printer.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/json_writer.hpp"
@@ -442,13 +443,26 @@ DisplayStep shapeStep(const Derivation& d, const DerivationStep& step, Presenter
 }
 
 std::shared_ptr<const DisplayDocument> shapeDocument(const Derivation& d, Presenter& presenter, DisplayBuilder& build,
-                                                     const std::atomic<bool>* cancel = nullptr) {
+                                                     const std::atomic<bool>* cancel = nullptr, DisplayStream* stream = nullptr) {
     auto doc = std::make_shared<DisplayDocument>();
     doc->systemName = d.systemName;
     doc->coordinateNames = d.coordinateNames;
     doc->actuation = actuationText(d.actuated, d.coordinateNames);
     const DisplayOptions options = displayOptions(printOptionsFor(d, Style::Text));
-    for (const DerivationStep& step : d.steps) doc->steps.push_back(shapeStep(d, step, presenter, build, options, cancel));
+    if (!stream) {
+        for (const DerivationStep& step : d.steps) doc->steps.push_back(shapeStep(d, step, presenter, build, options, cancel));
+        return doc;
+    }
+    stream->open(*doc);
+    for (const DerivationStep& step : d.steps) {
+        DisplayStep& shown = doc->steps.emplace_back(stepHead(d, step));
+        stream->putStep(shown);
+        for (const DerivationItem& item : step.items) {
+            throwIfCancelled(cancel);
+            stream->putItem(shown.items.emplace_back(displayItem(item, presenter, build, options)));
+        }
+    }
+    stream->close(doc->actuation);
     return doc;
 }
 
@@ -716,11 +730,11 @@ std::string itemText(const DisplayItem& item) {
     return out;
 }
 
-std::shared_ptr<const DisplayDocument> displayDocument(const Derivation& d, const std::atomic<bool>* cancel) {
+std::shared_ptr<const DisplayDocument> displayDocument(const Derivation& d, const std::atomic<bool>* cancel, DisplayStream* stream) {
     const auto lock = lockGinac();
     DisplayBuilder build(displayOptions(printOptionsFor(d, Style::Text)));
     Presenter presenter(d, d.trigToFunctions.nops() > 0);
-    return shapeDocument(d, presenter, build, cancel);
+    return shapeDocument(d, presenter, build, cancel, stream);
 }
 
 std::string renderDocument(const DisplayDocument& document, DocumentFormat format) {

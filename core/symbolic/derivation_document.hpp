@@ -51,9 +51,13 @@ struct DisplayDocument {
     std::string formReason; // why that form
 };
 
+class DisplayStream;
+
 // The derivation's displayed form (takes the GiNaC lock). Throws Cancelled between items
-// once `cancel` is set.
-std::shared_ptr<const DisplayDocument> displayDocument(const Derivation& derivation, const std::atomic<bool>* cancel = nullptr);
+// once `cancel` is set. With a stream, each step and item is also handed to it as it is
+// shaped (core/symbolic/display_stream.hpp), and the stream closed at the end.
+std::shared_ptr<const DisplayDocument> displayDocument(const Derivation& derivation, const std::atomic<bool>* cancel = nullptr,
+                                                       DisplayStream* stream = nullptr);
 
 // A document in Text or Latex from its display trees (no GiNaC: any thread).
 std::string renderDocument(const DisplayDocument& document, DocumentFormat format);
