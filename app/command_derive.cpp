@@ -102,6 +102,7 @@ int deriveCommand(const Args& args) {
         return writeDerivationPages(
             [&](symbolic::DisplayStream* stream) {
                 request.displayStream = stream;
+                request.forPages = true;  // long sums built as the pages cut them
                 const DerivedDocument derived = inSceneFile(options.positional()[0], [&] { return deriveDisplay(scene, request, chosenForm); });
                 report(derived, writing, timings);
                 return derived.display;

@@ -14,6 +14,8 @@
 #include <QSvgRenderer>
 #include <QTemporaryDir>
 
+#include "core/io/scene_file.hpp"
+#include "core/pipeline/display_derivation.hpp"
 #include "ui/derivation_pages.hpp"
 #include "ui/math_typesetter.hpp"
 #include "pdf_streams.hpp"
@@ -192,6 +194,43 @@ private slots:
         const double width = 40 * ui::mathUnitsPerEm;
         const auto full = ui::layoutItem(*displayEquation(symbolNode("b", "11"), product), "b11", width);
         QVERIFY2(full.size() <= 8, qPrintable(QString::number(full.size())));
+    }
+
+    // `derive --format pdf|svg|png` builds its trees already cut (forPages): each sum of
+    // more than maxTypesetTerms terms is ordered whole but only its shown terms are built.
+    // Every item of the expanded PUMA 560 renders exactly as the full tree cut by the
+    // typesetter, in Text, LaTeX and Plain: with symbolic parameters (C and the equations
+    // have sums of hundreds of terms: cut) and with numeric ones (no sum that long: nothing
+    // may change).
+    void pagesTreesAreBuiltAsThePagesCutThem() {
+        const struct {
+            const char* example;
+            ParameterMode mode;
+            bool cuts;
+        } cases[] = {{"puma560.json", ParameterMode::Textbook, true}, {"puma560.json", ParameterMode::Numeric, false}};
+        for (const auto& c : cases) {
+            const Scene scene = loadScene(std::string(LL_EXAMPLES_DIR) + "/" + c.example).scene;
+            DocumentRequest request;
+            request.mode = c.mode;
+            const auto full = deriveDisplay(scene, request, DerivationForm::Expanded).display;
+            request.forPages = true;
+            const auto cut = deriveDisplay(scene, request, DerivationForm::Expanded).display;
+            QCOMPARE(cut->steps.size(), full->steps.size());
+            int cutItems = 0;
+            for (std::size_t i = 0; i < full->steps.size(); ++i) {
+                QCOMPARE(cut->steps[i].items.size(), full->steps[i].items.size());
+                for (std::size_t j = 0; j < full->steps[i].items.size(); ++j) {
+                    const DisplayItem &a = full->steps[i].items[j], &b = cut->steps[i].items[j];
+                    const DisplayPtr elided = ui::elided(a.equation, ui::maxTypesetTerms);
+                    cutItems += elided != a.equation;
+                    for (const DisplayStyle style : {DisplayStyle::Text, DisplayStyle::Latex, DisplayStyle::Plain})
+                        QVERIFY2(renderDisplay(*elided, style) == renderDisplay(*b.equation, style), a.name.c_str());
+                    // Cut already: the typesetter finds nothing more to cut.
+                    QCOMPARE(ui::elided(b.equation, ui::maxTypesetTerms), b.equation);
+                }
+            }
+            QVERIFY2(c.cuts ? cutItems >= 3 : cutItems == 0, qPrintable(QString("%1 (%2): %3 items cut").arg(c.example).arg(int(c.mode)).arg(cutItems)));
+        }
     }
 
     // The document is laid out on a second thread while QPdfWriter writes the finished

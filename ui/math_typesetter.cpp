@@ -609,10 +609,9 @@ symbolic::DisplayPtr elided(const symbolic::DisplayPtr& node, std::size_t maxTer
     if (n.kind == DisplayKind::Sum && n.children.size() > maxTerms) {
         DisplayNode& c = changed();
         kept = maxTerms * 2 / 3;
-        const std::string more = "⋯ (" + std::to_string(n.children.size() - kept) + " more terms)";
         c.children.resize(kept);
         c.negative.resize(kept);
-        c.children.push_back(symbolic::displayRaw(more, "\\cdots", more));
+        c.children.push_back(symbolic::displayMoreTerms(n.children.size() - kept));
         c.negative.push_back(false);
     }
     // Sums anywhere: inside a product's parentheses, a fraction, a matrix entry.

@@ -63,9 +63,10 @@ MathBox layoutMath(const symbolic::DisplayNode& node, double size = 1.0);
 // An item "name = value" set to at most maxWidth units: a sum too wide breaks before
 // its top-level + and − (continuation lines indented past "name = "), and a matrix too
 // wide becomes its named entries listed under it (b11 = …, each breaking the same way).
-// A sum of more than maxTypesetTerms terms, at any depth, shows its first two thirds of that and
-// "⋯ (N more terms)": the text and JSON formats keep every term. Returns the lines.
-inline constexpr std::size_t maxTypesetTerms = 90;
+// A sum of more than maxTypesetTerms terms (core/symbolic/display_tree.hpp), at any depth,
+// shows its first two thirds of that and "⋯ (N more terms)": the text and JSON formats
+// keep every term. Returns the lines.
+using symbolic::maxTypesetTerms;
 std::vector<MathBox> layoutItem(const symbolic::DisplayNode& equation, const std::string& name, double maxWidth);
 
 // A step's general formula (core/symbolic/latex_formula.hpp): its parts side by side,

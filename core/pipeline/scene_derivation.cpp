@@ -47,7 +47,7 @@ DerivedDocument deriveDocument(const Scene& scene, const DocumentRequest& reques
     DerivedDocument out;
     const auto printing = std::chrono::steady_clock::now();
     if (request.format == symbolic::DocumentFormat::Display)
-        out.display = symbolic::displayDocument(d, request.cancel, request.displayStream);
+        out.display = symbolic::displayDocument(d, request.cancel, request.displayStream, request.forPages);
     else
         out.document = symbolic::derivationDocument(d, request.format, modeName(request.mode), request.writing);
     out.printSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - printing).count();

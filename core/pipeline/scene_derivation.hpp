@@ -26,6 +26,9 @@ struct DocumentRequest {
     // optional, for format Display: each step and item also handed to this stream as it is
     // shaped, for a thread that typesets while the rest is shaped (failed on any throw)
     symbolic::DisplayStream* displayStream = nullptr;
+    // for format Display: the trees are for pages only (the CLI's pdf, svg, png), so sums
+    // longer than pages show are built already cut (symbolic::DisplayOptions::cutLongSums)
+    bool forPages = false;
 };
 
 struct StepTiming {

@@ -730,9 +730,12 @@ std::string itemText(const DisplayItem& item) {
     return out;
 }
 
-std::shared_ptr<const DisplayDocument> displayDocument(const Derivation& d, const std::atomic<bool>* cancel, DisplayStream* stream) {
+std::shared_ptr<const DisplayDocument> displayDocument(const Derivation& d, const std::atomic<bool>* cancel, DisplayStream* stream,
+                                                       bool forPages) {
     const auto lock = lockGinac();
-    DisplayBuilder build(displayOptions(printOptionsFor(d, Style::Text)));
+    DisplayOptions options = displayOptions(printOptionsFor(d, Style::Text));
+    options.cutLongSums = forPages;
+    DisplayBuilder build(options);
     Presenter presenter(d, d.trigToFunctions.nops() > 0);
     return shapeDocument(d, presenter, build, cancel, stream);
 }

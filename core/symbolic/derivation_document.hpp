@@ -55,9 +55,10 @@ class DisplayStream;
 
 // The derivation's displayed form (takes the GiNaC lock). Throws Cancelled between items
 // once `cancel` is set. With a stream, each step and item is also handed to it as it is
-// shaped (core/symbolic/display_stream.hpp), and the stream closed at the end.
+// shaped (core/symbolic/display_stream.hpp), and the stream closed at the end. forPages:
+// long sums built already cut as pages show them (DisplayOptions::cutLongSums).
 std::shared_ptr<const DisplayDocument> displayDocument(const Derivation& derivation, const std::atomic<bool>* cancel = nullptr,
-                                                       DisplayStream* stream = nullptr);
+                                                       DisplayStream* stream = nullptr, bool forPages = false);
 
 // A document in Text or Latex from its display trees (no GiNaC: any thread).
 std::string renderDocument(const DisplayDocument& document, DocumentFormat format);

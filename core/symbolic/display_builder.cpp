@@ -282,6 +282,7 @@ struct Term {
 struct ShownTerm {
     DisplayPtr node;
     bool negative;
+    bool more = false;  // "⋯ (N more terms)" of a cut sum: never negative
 };
 
 // A factor's place in a product: rank (number, constants, masses, parameters,
@@ -453,7 +454,6 @@ private:
             }
             Term term{body, body->d.coef * ex_to<numeric>(p.coeff), 0.0, nullptr};
             term.keyCoef = term.coef.is_real() ? term.coef.to_double() : 0.0;
-            term.shown = withCoefficient(term.coef.is_real() ? abs(term.coef) : term.coef, body->d);
             out.push_back(std::move(term));
         }
         if (const ex& number = GinacPairs::number(terms); !number.is_zero()) {
@@ -468,9 +468,18 @@ private:
             const int c = x.body == y.body ? 0 : compareKeys(x.body->key, y.body->key);
             return c != 0 ? c < 0 : x.keyCoef < y.keyCoef;
         });
+        // Each shown term's node built once it is known to be shown (a cut sum for pages
+        // leaves most of them out).
+        const bool cut = o_.cutLongSums && out.size() > maxTypesetTerms;
+        const std::size_t shown = cut ? keptTypesetTerms : out.size();
         std::vector<ShownTerm> sorted;
-        sorted.reserve(out.size());
-        for (std::uint32_t i : at) sorted.push_back({std::move(out[i].shown), out[i].negative()});
+        sorted.reserve(shown + 1);
+        for (std::size_t k = 0; k < shown; ++k) {
+            Term& t = out[at[k]];
+            if (!t.shown) t.shown = withCoefficient(t.coef.is_real() ? abs(t.coef) : t.coef, t.body->d);
+            sorted.push_back({std::move(t.shown), t.negative()});
+        }
+        if (cut) sorted.push_back({displayMoreTerms(out.size() - shown), false, true});
         return terms_.emplace(sum, std::move(sorted)).first->second;
     }
 
@@ -675,7 +684,7 @@ private:
         n->children.reserve(ts.size());
         n->negative.reserve(ts.size());
         for (const ShownTerm& t : ts) {
-            n->negative.push_back(t.negative != negate);
+            n->negative.push_back(!t.more && t.negative != negate);
             n->children.push_back(t.node);
         }
         return cache.emplace(e, std::move(n)).first->second;

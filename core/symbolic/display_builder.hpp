@@ -33,6 +33,11 @@ struct DisplayOptions {
     // Symbols drawn as given (the structured form's named quantities: Jx2_4 as
     // J_{P2,x}^{(4)}), by GiNaC name; any other symbol as above.
     std::shared_ptr<const std::map<std::string, DisplayPtr>> givenSymbols;
+    // Only for pages: a sum of more than maxTypesetTerms terms is built already cut as
+    // the typesetter cuts it (its first keptTypesetTerms terms in display order and
+    // "⋯ (N more terms)"). Every term is still ordered; the others are never built, which
+    // for the expanded Panda's C and equations is most of them.
+    bool cutLongSums = false;
 };
 
 // A scalar, a GiNaC::matrix (Matrix node) or a relational (Equation node). Never expands.

@@ -334,6 +334,11 @@ DisplayPtr displayRaw(std::string text, std::string latex, std::string plain) {
     return n;
 }
 
+DisplayPtr displayMoreTerms(std::size_t count) {
+    const std::string more = "⋯ (" + std::to_string(count) + " more terms)";
+    return displayRaw(more, "\\cdots", more);
+}
+
 DisplayPtr displayEquation(DisplayPtr lhs, DisplayPtr rhs) {
     auto n = std::make_shared<DisplayNode>();
     n->kind = DisplayKind::Equation;

@@ -67,6 +67,14 @@ std::string renderDisplay(const DisplayNode& node, DisplayStyle style, bool keyN
 // listed entry by entry instead (b11 = …), which is what a reader can follow anyway.
 inline constexpr std::size_t maxTextMatrixRow = 160;
 
+// Typeset pages (ui/math_typesetter's layoutItem) show a sum of more than this many terms,
+// at any depth, as its first two thirds of that and "⋯ (N more terms)": nobody reads an
+// entry of thousands of terms on a page. The text and JSON formats keep every term.
+inline constexpr std::size_t maxTypesetTerms = 90;
+// How many terms such a cut sum keeps, and the node that stands for the rest.
+inline constexpr std::size_t keptTypesetTerms = maxTypesetTerms * 2 / 3;
+DisplayPtr displayMoreTerms(std::size_t count);
+
 // Whether the node is the number 0 (a matrix listed entry by entry leaves those out).
 bool isZeroNumber(const DisplayNode& node);
 // Whether a Matrix node has a zero entry.
