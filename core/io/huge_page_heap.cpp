@@ -1,6 +1,7 @@
 #include "core/io/huge_page_heap.hpp"
 
 #include <algorithm>
+#include <climits>
 #include <cstdint>
 #include <cstdlib>
 #include <vector>
@@ -13,10 +14,14 @@ namespace ll {
 
 HugePageHeap useHugePagesForHeap(std::size_t reserve) {
     HugePageHeap out;
+    reserve = std::min<std::size_t>(reserve, INT_MAX / 2);
     // glibc's largest mmap threshold (HEAP_MAX_SIZE / 2 on 64-bit): blocks below it come
     // from the heap, so the big document strings are in the advised range too.
     constexpr std::size_t threshold = std::size_t(32) << 20;
-    if (!mallopt(M_MMAP_THRESHOLD, static_cast<int>(threshold)) || !mallopt(M_TRIM_THRESHOLD, 1 << 30)) {
+    // The trim threshold above the reservation: freed back at the end, the reserved blocks
+    // make one free top chunk that free() would otherwise give back to the system at once,
+    // advice and all.
+    if (!mallopt(M_MMAP_THRESHOLD, static_cast<int>(threshold)) || !mallopt(M_TRIM_THRESHOLD, INT_MAX)) {
         out.reason = "mallopt refused the thresholds";
         return out;
     }

@@ -26,7 +26,8 @@ struct HugePageHeap {
     const char* reason = "";        // why not, when not advised
 };
 
-// Call once, early, on the main thread, before the work. Never throws; when the kernel
+// Call once, early, on the main thread, before the work (`reserve` is at most 1 GiB).
+// Never throws; when the kernel
 // has THP off, sbrk cannot grow the heap, or madvise fails, nothing changes but the
 // two mallopt settings.
 HugePageHeap useHugePagesForHeap(std::size_t reserve = std::size_t(1) << 30);
