@@ -11,6 +11,7 @@
 #include "app/commands.hpp"
 #include "app/cli_options.hpp"
 #include "app/offscreen_gui.hpp"
+#include "core/model/exit_memory.hpp"
 #include "core/symbolic/display_stream.hpp"
 #include "ui/derivation_pages.hpp"
 
@@ -21,7 +22,9 @@ using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point since) { return std::chrono::duration<double>(Clock::now() - since).count(); }
 
 int writePdfWhileDeriving(const DisplayDerivation& derive, const QString& out, bool timings) {
-    symbolic::DisplayStream stream;
+    const auto streamOwner = std::make_shared<symbolic::DisplayStream>();
+    dispose(streamOwner);  // its trees: left to the exit, as the derivation's are
+    symbolic::DisplayStream& stream = *streamOwner;
     std::string error;
     bool written = false;
     int pageCount = 0;
@@ -35,7 +38,7 @@ int writePdfWhileDeriving(const DisplayDerivation& derive, const QString& out, b
     });
     Clock::time_point shaped;
     try {
-        derive(&stream);
+        dispose(derive(&stream));
         shaped = Clock::now();
     } catch (...) {
         stream.fail();  // the writer stops; nothing is saved
@@ -62,6 +65,7 @@ int writeDerivationPages(const DisplayDerivation& derive, const std::string& for
     const QString out = QString::fromStdString(outPath);
     if (format == "pdf") return writePdfWhileDeriving(derive, out, timings);
     const std::shared_ptr<const symbolic::DisplayDocument> display = derive(nullptr);
+    dispose(display);
     const Clock::time_point startLayout = Clock::now();
     const ui::DerivationPages pages = ui::paginate(*display);
     const double layoutSeconds = secondsSince(startLayout);

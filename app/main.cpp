@@ -14,6 +14,7 @@
 #include "app/graphics_handoff.hpp"
 #include "core/io/huge_page_heap.hpp"
 #include "core/model/diagnostics.hpp"
+#include "core/model/exit_memory.hpp"
 
 namespace {
 
@@ -100,8 +101,12 @@ int main(int argc, char** argv) {
     if (commandPaints(command, args)) return handOverToGraphicsProgram();
 #endif
     // A derivation builds hundreds of megabytes of small objects and exits: its heap in
-    // huge pages (core/io/huge_page_heap.hpp) prints the expanded Panda a fifth faster.
-    if (command == "derive") ll::useHugePagesForHeap();
+    // huge pages (core/io/huge_page_heap.hpp) prints the expanded Panda a fifth faster,
+    // and what it built is left to the exit, not freed block by block (core/model/exit_memory.hpp).
+    if (command == "derive") {
+        ll::useHugePagesForHeap();
+        ll::leaveMemoryToExit();
+    }
     return reportingErrors([&] {
         if (command == "eval") return evalCommand(args);
         if (command == "simulate") return simulateCommand(args);

@@ -3,6 +3,7 @@
 #include <atomic>
 #include <chrono>
 
+#include "core/model/exit_memory.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/lagrangian_derivation.hpp"
 #include "core/symbolic/robot_derivation.hpp"
@@ -53,6 +54,7 @@ DerivedDocument deriveDocument(const Scene& scene, const DocumentRequest& reques
     out.printSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - printing).count();
     for (const symbolic::DerivationStep& step : d.steps) out.timings.push_back({step.number, step.title, step.seconds});
     out.warnings = d.warnings;
+    dispose(std::make_shared<symbolic::Derivation>(std::move(d)));  // freed now, or left to a command's exit
     return out;
 }
 

@@ -14,6 +14,7 @@
 
 #include "core/model/actuation.hpp"
 #include "core/model/cancellation.hpp"
+#include "core/model/exit_memory.hpp"
 #include "core/symbolic/angle_sums.hpp"
 #include "core/symbolic/display_stream.hpp"
 #include "core/symbolic/expression_printer.hpp"
@@ -735,9 +736,12 @@ std::shared_ptr<const DisplayDocument> displayDocument(const Derivation& d, cons
     const auto lock = lockGinac();
     DisplayOptions options = displayOptions(printOptionsFor(d, Style::Text));
     options.cutLongSums = forPages;
-    DisplayBuilder build(options);
-    Presenter presenter(d, d.trigToFunctions.nops() > 0);
-    return shapeDocument(d, presenter, build, cancel, stream);
+    auto build = std::make_shared<DisplayBuilder>(options);
+    auto presenter = std::make_shared<Presenter>(d, d.trigToFunctions.nops() > 0);
+    auto document = shapeDocument(d, *presenter, *build, cancel, stream);
+    dispose(std::move(presenter));  // their caches: freed now, or left to a command's exit
+    dispose(std::move(build));
+    return document;
 }
 
 std::string renderDocument(const DisplayDocument& document, DocumentFormat format) {
@@ -761,7 +765,9 @@ std::string derivationDocument(const Derivation& d, DocumentFormat format, const
     const DisplayOptions options = displayOptions(printOptionsFor(d, Style::Text));
     auto build = std::make_unique<DisplayBuilder>(options);
     auto presenter = std::make_unique<Presenter>(d, d.trigToFunctions.nops() > 0);
-    Handover handover(format, writing);
+    const auto handoverOwner = std::make_shared<Handover>(format, writing);
+    Handover& handover = *handoverOwner;
+    dispose(handoverOwner);  // the trees it holds: freed with it at the end, or left to a command's exit
     std::string out;
     std::exception_ptr writeFailed;
     std::thread writer([&] {
@@ -786,9 +792,10 @@ std::string derivationDocument(const Derivation& d, DocumentFormat format, const
         }
         handover.finish(std::move(results));
         // Their caches are freed while the writer goes on (the trees it reads are the
-        // items'); then this thread renders the last items' parts beside it.
-        presenter.reset();
-        build.reset();
+        // items'), or left to a command's exit; then this thread renders the last items'
+        // parts beside it.
+        dispose(std::move(presenter));
+        dispose(std::move(build));
         handover.help();
     } catch (...) {
         handover.finish(std::nullopt, true);

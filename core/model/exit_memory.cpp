@@ -1,0 +1,27 @@
+#include "core/model/exit_memory.hpp"
+
+#include <atomic>
+#include <mutex>
+#include <vector>
+
+namespace ll {
+namespace {
+
+std::atomic<bool> leaving{false};
+
+std::mutex keptMutex;
+// Never destroyed (no destructor runs at exit), and reachable from here.
+std::vector<std::shared_ptr<const void>>* const kept = new std::vector<std::shared_ptr<const void>>;
+
+}  // namespace
+
+void leaveMemoryToExit() { leaving.store(true); }
+bool memoryLeftToExit() { return leaving.load(); }
+
+void dispose(std::shared_ptr<const void> object) {
+    if (!object || !leaving.load()) return;  // the last owner: freed here
+    const std::lock_guard lock(keptMutex);
+    kept->push_back(std::move(object));
+}
+
+}  // namespace ll
