@@ -6,6 +6,7 @@
 #include <QPainter>
 #include <QPdfWriter>
 #include <algorithm>
+#include <cmath>
 #include <condition_variable>
 #include <deque>
 #include <exception>
@@ -18,17 +19,36 @@
 namespace ll::ui {
 namespace {
 
-// Prose broken into lines of at most maxWidth units at spaces.
+// Prose broken into lines of at most maxWidth units at spaces. Whether the next word
+// still fits is judged from the widths of the words and the space (each measured once and
+// cached: words recur across a derivation's notes); only a line that ends within half an
+// em of the margin is shaped whole to decide, so the breaks are those of shaping every
+// candidate line (kerning across a space moves a line's end by far less), without
+// shaping a paragraph of n words n times.
 std::vector<MathBox> wrapped(const QString& text, double size, double maxWidth, bool bold = false) {
     std::vector<MathBox> lines;
+    const double space = layoutText(QStringLiteral("a b"), size, bold).width - layoutText(QStringLiteral("ab"), size, bold).width;
+    const double nearMargin = 0.5 * mathUnitsPerEm * size;
     QString line;
+    double lineWidth = 0;  // as the words add up
     for (const QString& w : text.split(' ', Qt::SkipEmptyParts)) {
-        const QString candidate = line.isEmpty() ? w : line + ' ' + w;
-        if (!line.isEmpty() && layoutText(candidate, size, bold).width > maxWidth) {
+        const double wordWidth = layoutText(w, size, bold).width;
+        if (line.isEmpty()) {
+            line = w;
+            lineWidth = wordWidth;
+            continue;
+        }
+        const double estimate = lineWidth + space + wordWidth;
+        const QString candidate = line + ' ' + w;
+        const bool fits = std::abs(estimate - maxWidth) < nearMargin ? layoutText(candidate, size, bold).width <= maxWidth
+                                                                      : estimate <= maxWidth;
+        if (fits) {
+            line = candidate;
+            lineWidth = estimate;
+        } else {
             lines.push_back(layoutText(line, size, bold));
             line = w;
-        } else {
-            line = candidate;
+            lineWidth = wordWidth;
         }
     }
     if (!line.isEmpty()) lines.push_back(layoutText(line, size, bold));

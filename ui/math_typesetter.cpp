@@ -251,7 +251,25 @@ MathBox scripted(MathBox base, const MathBox* sub, const MathBox* sup, double si
     return base;
 }
 
+MathBox symbolBoxOf(const DisplayNode& n, double size, const DisplayNode* power);
+
+// A symbol's box: the same few hundred symbols recur thousands of times in a derivation
+// (m2, ℓc2, q̇1), and building one glyph by glyph was a third of the layout of the
+// Panda's pages. Kept per thread by what it draws (not by node: a freed node's address
+// may be reused); with a power stacked on it, built each time.
 MathBox symbolBox(const DisplayNode& n, double size, const DisplayNode* power = nullptr) {
+    if (power) return symbolBoxOf(n, size, power);
+    thread_local std::unordered_map<std::string, MathBox> boxes;
+    std::string key;
+    key.reserve(n.text.size() + n.subShown.size() + n.supText.size() + 16);
+    key.append(n.text).append(1, '\x1f').append(n.subShown).append(1, '\x1f').append(n.supText).append(1, '\x1f');
+    key.append(1, static_cast<char>('0' + n.dots)).append(1, n.upright ? 'u' : 'i').append(1, n.subUpright ? 'u' : 'i');
+    key.append(std::to_string(std::lround(size * 1000)));
+    if (auto it = boxes.find(key); it != boxes.end()) return it->second;
+    return boxes.emplace(std::move(key), symbolBoxOf(n, size, nullptr)).first->second;
+}
+
+MathBox symbolBoxOf(const DisplayNode& n, double size, const DisplayNode* power) {
     QString text = QString::fromStdString(n.text);
     if (n.dots && !text.isEmpty()) text.insert(text[0].isHighSurrogate() ? 2 : 1, QChar(n.dots == 1 ? 0x0307 : 0x0308));
     const bool upright = n.upright;
