@@ -56,10 +56,19 @@ DisplayPtr derivative(const std::shared_ptr<DisplayNode>& of, const std::string&
     return n;
 }
 
-// The generated names of structured_dynamics.cpp, read back.
-const std::regex frameName(R"(([oxyz])([xyz])(\d+)_(\d+))"), jacobianName(R"(J([xyz])(\d+)_(\d+))"),
-    gravityName(R"(g([xyz])0_(\d+))"), dJacobianName(R"(D([xyz])(\d+)_(\d+)_(\d+))"), betaName(R"(beta(\d+)_(\d+)_(\d+))"),
-    gammaName(R"(gamma(\d+)_(\d+))"), deltaName(R"(delta(\d+)_(\d+)_(\d+)_(\d+))"), dbName(R"(Db(\d+)_(\d+)_(\d+))");
+// The generated names of structured_dynamics.cpp, read back. Compiled on first use, not
+// when the program starts: at namespace scope they were a tenth of every command's start
+// (`lagrangelab --version` included).
+struct NamePatterns {
+    const std::regex frameName{R"(([oxyz])([xyz])(\d+)_(\d+))"}, jacobianName{R"(J([xyz])(\d+)_(\d+))"},
+        gravityName{R"(g([xyz])0_(\d+))"}, dJacobianName{R"(D([xyz])(\d+)_(\d+)_(\d+))"},
+        betaName{R"(beta(\d+)_(\d+)_(\d+))"}, gammaName{R"(gamma(\d+)_(\d+))"},
+        deltaName{R"(delta(\d+)_(\d+)_(\d+)_(\d+))"}, dbName{R"(Db(\d+)_(\d+)_(\d+))"};
+};
+const NamePatterns& namePatterns() {
+    static const NamePatterns patterns;
+    return patterns;
+}
 
 // Frames: the links' own frames, where J_P, o_f and the axes are written.
 std::string sectionTitle(int step) {
@@ -110,19 +119,20 @@ std::string coordinateList(std::uint64_t bits, int n) {
 }  // namespace
 
 DisplayPtr structuredNameNode(const std::string& name) {
+    const NamePatterns& p = namePatterns();
     std::smatch m;
-    if (std::regex_match(name, m, frameName))
+    if (std::regex_match(name, m, p.frameName))
         return scripted(m[1], m[1], m[3].str() + "," + m[2].str(), m[4], name);
-    if (std::regex_match(name, m, jacobianName))
+    if (std::regex_match(name, m, p.jacobianName))
         return scripted("J", "J", "P" + m[2].str() + "," + m[1].str(), m[3], name);
-    if (std::regex_match(name, m, gravityName)) return scripted("g", "g", "0," + m[1].str(), m[2], name);
-    if (std::regex_match(name, m, betaName)) return scripted("β", "\\beta", joined({m[1], m[2]}), m[3], name);
-    if (std::regex_match(name, m, gammaName)) return scripted("γ", "\\gamma", m[1], m[2], name);
-    if (std::regex_match(name, m, dJacobianName))
+    if (std::regex_match(name, m, p.gravityName)) return scripted("g", "g", "0," + m[1].str(), m[2], name);
+    if (std::regex_match(name, m, p.betaName)) return scripted("β", "\\beta", joined({m[1], m[2]}), m[3], name);
+    if (std::regex_match(name, m, p.gammaName)) return scripted("γ", "\\gamma", m[1], m[2], name);
+    if (std::regex_match(name, m, p.dJacobianName))
         return derivative(scripted("J", "J", "P" + m[2].str() + "," + m[1].str(), m[3], name), m[4], name);
-    if (std::regex_match(name, m, deltaName))
+    if (std::regex_match(name, m, p.deltaName))
         return derivative(scripted("β", "\\beta", joined({m[1], m[2]}), m[3], name), m[4], name);
-    if (std::regex_match(name, m, dbName)) return derivative(scripted("b", "b", joined({m[1], m[2]}), "", name), m[3], name);
+    if (std::regex_match(name, m, p.dbName)) return derivative(scripted("b", "b", joined({m[1], m[2]}), "", name), m[3], name);
     return displaySymbolName(name);
 }
 
