@@ -1018,6 +1018,31 @@ DisplayPtr displaySymbolName(const std::string& name, int dots) {
 DisplayPtr displaySumOf(const std::vector<DisplayPtr>& parts) {
     auto n = std::make_shared<DisplayNode>();
     n->kind = DisplayKind::Sum;
+    // Parts built for pages may be cut already ("⋯ (N more terms)" last: cutLongSums).
+    // Joined, the whole is cut as the typesetter cuts the sum of every term: its first
+    // keptTypesetTerms, then the count of the rest. (A cut part shows its first
+    // keptTypesetTerms terms, so those are always among the shown ones.)
+    std::size_t total = 0;
+    bool cut = false;
+    for (const DisplayPtr& p : parts) {
+        const std::size_t more = p->kind == DisplayKind::Sum && !p->children.empty() ? moreTermsCount(*p->children.back()) : 0;
+        cut = cut || more > 0;
+        total += p->kind != DisplayKind::Sum ? 1 : more > 0 ? p->children.size() - 1 + more : p->children.size();
+    }
+    if (cut) {
+        for (const DisplayPtr& p : parts) {
+            const std::size_t shown = p->kind == DisplayKind::Sum ? p->children.size() : 1;
+            for (std::size_t i = 0; i < shown && n->children.size() < keptTypesetTerms; ++i) {
+                const DisplayPtr& term = p->kind == DisplayKind::Sum ? p->children[i] : p;
+                if (moreTermsCount(*term)) break;
+                n->children.push_back(term);
+                n->negative.push_back(p->kind == DisplayKind::Sum && p->negative[i]);
+            }
+        }
+        n->children.push_back(displayMoreTerms(total - n->children.size()));
+        n->negative.push_back(false);
+        return n;
+    }
     for (const DisplayPtr& p : parts) {
         if (p->kind == DisplayKind::Sum) {
             n->children.insert(n->children.end(), p->children.begin(), p->children.end());

@@ -74,6 +74,8 @@ inline constexpr std::size_t maxTypesetTerms = 90;
 // How many terms such a cut sum keeps, and the node that stands for the rest.
 inline constexpr std::size_t keptTypesetTerms = maxTypesetTerms * 2 / 3;
 DisplayPtr displayMoreTerms(std::size_t count);
+// The N of such a node; 0 for any other node.
+std::size_t moreTermsCount(const DisplayNode& node);
 
 // Whether the node is the number 0 (a matrix listed entry by entry leaves those out).
 bool isZeroNumber(const DisplayNode& node);
