@@ -54,6 +54,28 @@ struct Written {
     std::string error;
 };
 
+// A PDF written from a stream on its own thread. Should the test stop early (a failed
+// check returns), the stream is failed and the thread joined: never left running.
+class StreamWriter {
+public:
+    StreamWriter(symbolic::DisplayStream& stream, const QString& path)
+        : stream_(stream), thread_([this, path] { written_.ok = ui::writePdf(stream_, path, written_.error, {}, &written_.pages); }) {}
+    ~StreamWriter() {
+        if (!thread_.joinable()) return;
+        stream_.fail();
+        thread_.join();
+    }
+    const Written& join() {
+        thread_.join();
+        return written_;
+    }
+
+private:
+    symbolic::DisplayStream& stream_;
+    Written written_;
+    std::thread thread_;
+};
+
 Written write(const symbolic::DisplayDocument& document, const QString& path) {
     Written w;
     w.ok = ui::writePdf(document, path, w.error, {}, &w.pages);
@@ -165,19 +187,17 @@ private slots:
             QVERIFY(pagesIn(expected) >= 1);
 
             symbolic::DisplayStream stream;
-            Written streamed;
-            std::thread writer([&] { streamed.ok = ui::writePdf(stream, dir.filePath("streamed.pdf"), streamed.error, {}, &streamed.pages); });
+            StreamWriter writer(stream, dir.filePath("streamed.pdf"));
             DocumentRequest request;
             request.displayStream = &stream;
             const auto shaped = deriveDisplay(loadScene(std::string(LL_EXAMPLES_DIR) + "/" + example).scene, request).display;
-            writer.join();
+            const Written streamed = writer.join();
             QVERIFY2(streamed.ok, streamed.error.c_str());
             QCOMPARE(shaped->steps.size(), whole->steps.size());
             QVERIFY2(streamsOf(dir.filePath("streamed.pdf")) == expected, example);
 
             symbolic::DisplayStream slow;
-            Written paused;
-            std::thread slowWriter([&] { paused.ok = ui::writePdf(slow, dir.filePath("paused.pdf"), paused.error, {}, &paused.pages); });
+            StreamWriter slowWriter(slow, dir.filePath("paused.pdf"));
             std::this_thread::sleep_for(std::chrono::milliseconds(5));
             slow.open(*whole);
             for (const symbolic::DisplayStep& step : whole->steps) {
@@ -189,7 +209,7 @@ private slots:
             }
             std::this_thread::sleep_for(std::chrono::milliseconds(5));
             slow.close(whole->actuation);
-            slowWriter.join();
+            const Written paused = slowWriter.join();
             QVERIFY2(paused.ok, paused.error.c_str());
             QCOMPARE(paused.pages, pagesIn(expected));
             QVERIFY2(streamsOf(dir.filePath("paused.pdf")) == expected, example);
@@ -208,15 +228,14 @@ private slots:
         }
         const auto whole = documentOf("scara.json");
         symbolic::DisplayStream stream;
-        Written w;
-        std::thread writer([&] { w.ok = ui::writePdf(stream, path, w.error, {}, &w.pages); });
+        StreamWriter writer(stream, path);
         stream.open(*whole);
         stream.putStep(whole->steps.at(0));
         for (const symbolic::DisplayItem& item : whole->steps.at(0).items) stream.putItem(item);
         stream.putStep(whole->steps.at(1));
         std::this_thread::sleep_for(std::chrono::milliseconds(20));  // the first page laid out, waiting
         stream.fail();
-        writer.join();
+        const Written w = writer.join();
         QVERIFY(!w.ok);
         QVERIFY2(w.error.find("derivation stopped") != std::string::npos, w.error.c_str());
         QFile old(path);
@@ -227,14 +246,13 @@ private slots:
         // And a derivation that throws fails its stream itself (the CLI's writer is never
         // left waiting): a scene whose shaping is cancelled before it starts.
         symbolic::DisplayStream cancelled;
-        Written c;
-        std::thread cancelledWriter([&] { c.ok = ui::writePdf(cancelled, dir.filePath("cancelled.pdf"), c.error, {}, &c.pages); });
+        StreamWriter cancelledWriter(cancelled, dir.filePath("cancelled.pdf"));
         std::atomic<bool> cancel{true};
         DocumentRequest request;
         request.displayStream = &cancelled;
         request.cancel = &cancel;
         QVERIFY_THROWS_EXCEPTION(Cancelled, deriveDisplay(loadScene(std::string(LL_EXAMPLES_DIR) + "/scara.json").scene, request));
-        cancelledWriter.join();
+        const Written c = cancelledWriter.join();
         QVERIFY(!c.ok);
         QVERIFY(!QFile::exists(dir.filePath("cancelled.pdf")));
     }

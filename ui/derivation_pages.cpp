@@ -263,6 +263,8 @@ bool writePdfFrom(const Source& source, const QString& path, std::string& error,
     // half speed).
     std::vector<std::vector<PlacedBox>> written;
     std::thread layout([&] {
+        bool shapingFailed = false;
+        std::exception_ptr error;
         try {
             paginateFrom(source, format, [&](std::vector<PlacedBox>&& page) {
                 std::vector<std::vector<PlacedBox>> done;
@@ -276,11 +278,13 @@ bool writePdfFrom(const Source& source, const QString& path, std::string& error,
             });
         } catch (const Cancelled&) {
         } catch (const StreamFailed&) {
-            streamFailed = true;
+            shapingFailed = true;
         } catch (...) {
-            failure = std::current_exception();
+            error = std::current_exception();
         }
-        std::lock_guard lock(mutex);
+        std::lock_guard lock(mutex);  // what the writing thread reads under it
+        streamFailed = shapingFailed;
+        failure = error;
         laidOut = true;
         changed.notify_one();
     });

@@ -4,6 +4,10 @@
 #include <climits>
 #include <cstdint>
 #include <cstdlib>
+#include <fstream>
+#include <mutex>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include <malloc.h>
@@ -12,8 +16,23 @@
 
 namespace ll {
 
-HugePageHeap useHugePagesForHeap(std::size_t reserve) {
+namespace {
+
+// madvise(MADV_HUGEPAGE) succeeds with THP "never" too (only a kernel without THP
+// refuses it): what the kernel will do is read here.
+bool hugePagesOff() {
+    std::ifstream enabled("/sys/kernel/mm/transparent_hugepage/enabled");
+    std::string mode;
+    std::getline(enabled, mode);
+    return mode.empty() || mode.find("[never]") != std::string::npos;
+}
+
+HugePageHeap reserveHugePageHeap(std::size_t reserve) {
     HugePageHeap out;
+    if (hugePagesOff()) {
+        out.reason = "transparent huge pages are off (/sys/kernel/mm/transparent_hugepage/enabled: never)";
+        return out;
+    }
     reserve = std::min<std::size_t>(reserve, INT_MAX / 2);
     // glibc's largest mmap threshold (HEAP_MAX_SIZE / 2 on 64-bit): blocks below it come
     // from the heap, so the big document strings are in the advised range too.
@@ -44,7 +63,7 @@ HugePageHeap useHugePagesForHeap(std::size_t reserve) {
     if (after <= before || end <= start) {
         out.reason = "the heap could not be grown (sbrk)";
     } else if (madvise(reinterpret_cast<void*>(start), end - start, MADV_HUGEPAGE) != 0) {
-        out.reason = "madvise(MADV_HUGEPAGE) failed: transparent huge pages are off";
+        out.reason = "madvise(MADV_HUGEPAGE) failed: this kernel has no transparent huge pages";
     } else {
         out.advised = true;
         out.reservedBytes = end - start;
@@ -52,6 +71,18 @@ HugePageHeap useHugePagesForHeap(std::size_t reserve) {
     // Back to malloc as one free top chunk; the trim threshold keeps it in the heap.
     for (auto it = blocks.rbegin(); it != blocks.rend(); ++it) std::free(*it);
     return out;
+}
+
+}  // namespace
+
+HugePageHeap useHugePagesForHeap(std::size_t reserve) {
+    // Once per process: a second call would find the first's free range and not grow.
+    static std::mutex once;
+    static std::optional<HugePageHeap> done;
+    const std::lock_guard lock(once);
+    if (done) return *done;
+    done = reserveHugePageHeap(reserve);
+    return *done;
 }
 
 }  // namespace ll

@@ -26,10 +26,10 @@ struct HugePageHeap {
     const char* reason = "";        // why not, when not advised
 };
 
-// Call once, early, on the main thread, before the work (`reserve` is at most 1 GiB).
-// Never throws; when the kernel
-// has THP off, sbrk cannot grow the heap, or madvise fails, nothing changes but the
-// two mallopt settings.
+// Call early, on the main thread, before the work (`reserve` is at most 1 GiB); a later
+// call returns the first call's result. Never throws; when THP is "never", sbrk cannot
+// grow the heap or madvise fails, nothing changes but the two mallopt settings (none at
+// all with THP "never").
 HugePageHeap useHugePagesForHeap(std::size_t reserve = std::size_t(1) << 30);
 
 }  // namespace ll

@@ -9,6 +9,8 @@
 // done with a large structure hands it to dispose(), which frees it at once, or, after
 // leaveMemoryToExit(), keeps it, reachable (a leak checker reports nothing) and never
 // destroyed. A window never calls leaveMemoryToExit: every derivation there is freed.
+// What is kept is never touched again: it may refer to objects already gone (the display
+// builder's presenter to the derivation it read), and nothing walks or destroys the list.
 #include <memory>
 
 namespace ll {
