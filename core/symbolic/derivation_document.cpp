@@ -433,37 +433,26 @@ DisplayStep stepHead(const Derivation& d, const DerivationStep& step) {
     return s;
 }
 
-DisplayStep shapeStep(const Derivation& d, const DerivationStep& step, Presenter& presenter, DisplayBuilder& build,
-                      const DisplayOptions& options, const std::atomic<bool>* cancel) {
-    DisplayStep s = stepHead(d, step);
-    for (const DerivationItem& item : step.items) {
-        throwIfCancelled(cancel);  // a newer edit need not wait for this document under the GiNaC lock
-        s.items.push_back(displayItem(item, presenter, build, options));
-    }
-    return s;
-}
-
+// The display document, item by item; each step and item also handed to `stream` as it
+// is shaped when there is one.
 std::shared_ptr<const DisplayDocument> shapeDocument(const Derivation& d, Presenter& presenter, DisplayBuilder& build,
-                                                     const std::atomic<bool>* cancel = nullptr, DisplayStream* stream = nullptr) {
+                                                     const DisplayOptions& options, const std::atomic<bool>* cancel,
+                                                     DisplayStream* stream) {
     auto doc = std::make_shared<DisplayDocument>();
     doc->systemName = d.systemName;
     doc->coordinateNames = d.coordinateNames;
     doc->actuation = actuationText(d.actuated, d.coordinateNames);
-    const DisplayOptions options = displayOptions(printOptionsFor(d, Style::Text));
-    if (!stream) {
-        for (const DerivationStep& step : d.steps) doc->steps.push_back(shapeStep(d, step, presenter, build, options, cancel));
-        return doc;
-    }
-    stream->open(*doc);
+    if (stream) stream->open(*doc);
     for (const DerivationStep& step : d.steps) {
         DisplayStep& shown = doc->steps.emplace_back(stepHead(d, step));
-        stream->putStep(shown);
+        if (stream) stream->putStep(shown);
         for (const DerivationItem& item : step.items) {
-            throwIfCancelled(cancel);
-            stream->putItem(shown.items.emplace_back(displayItem(item, presenter, build, options)));
+            throwIfCancelled(cancel);  // a newer edit need not wait for this document under the GiNaC lock
+            const DisplayItem& made = shown.items.emplace_back(displayItem(item, presenter, build, options));
+            if (stream) stream->putItem(made);
         }
     }
-    stream->close(doc->actuation);
+    if (stream) stream->close(doc->actuation);
     return doc;
 }
 
@@ -738,7 +727,7 @@ std::shared_ptr<const DisplayDocument> displayDocument(const Derivation& d, cons
     options.cutLongSums = forPages;
     auto build = std::make_shared<DisplayBuilder>(options);
     auto presenter = std::make_shared<Presenter>(d, d.trigToFunctions.nops() > 0);
-    auto document = shapeDocument(d, *presenter, *build, cancel, stream);
+    auto document = shapeDocument(d, *presenter, *build, options, cancel, stream);
     dispose(std::move(presenter));  // their caches: freed now, or left to a command's exit
     dispose(std::move(build));
     return document;
