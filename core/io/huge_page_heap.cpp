@@ -4,12 +4,11 @@
 #include <climits>
 #include <cstdint>
 #include <cstdlib>
-#include <fstream>
 #include <mutex>
 #include <optional>
-#include <string>
-#include <vector>
+#include <string_view>
 
+#include <fcntl.h>
 #include <malloc.h>
 #include <sys/mman.h>
 #include <unistd.h>
@@ -19,12 +18,16 @@ namespace ll {
 namespace {
 
 // madvise(MADV_HUGEPAGE) succeeds with THP "never" too (only a kernel without THP
-// refuses it): what the kernel will do is read here.
+// refuses it): what the kernel will do is read here (open/read: an ifstream's first use
+// costs more than the whole reservation).
 bool hugePagesOff() {
-    std::ifstream enabled("/sys/kernel/mm/transparent_hugepage/enabled");
-    std::string mode;
-    std::getline(enabled, mode);
-    return mode.empty() || mode.find("[never]") != std::string::npos;
+    const int fd = ::open("/sys/kernel/mm/transparent_hugepage/enabled", O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return true;
+    char mode[128];
+    const ssize_t n = ::read(fd, mode, sizeof mode - 1);
+    ::close(fd);
+    if (n <= 0) return true;
+    return std::string_view(mode, static_cast<std::size_t>(n)).find("[never]") != std::string_view::npos;
 }
 
 HugePageHeap reserveHugePageHeap(std::size_t reserve) {
@@ -37,30 +40,33 @@ HugePageHeap reserveHugePageHeap(std::size_t reserve) {
     // glibc's largest mmap threshold (HEAP_MAX_SIZE / 2 on 64-bit): blocks below it come
     // from the heap, so the big document strings are in the advised range too.
     constexpr std::size_t threshold = std::size_t(32) << 20;
-    // The trim threshold above the reservation: freed back at the end, the reserved blocks
-    // make one free top chunk that free() would otherwise give back to the system at once,
+    // The trim threshold above the reservation: freed back at the end, the reserved range
+    // is one free top chunk that free() would otherwise give back to the system at once,
     // advice and all.
     if (!mallopt(M_MMAP_THRESHOLD, static_cast<int>(threshold)) || !mallopt(M_TRIM_THRESHOLD, INT_MAX)) {
         out.reason = "mallopt refused the thresholds";
         return out;
     }
-    constexpr std::size_t hugePage = std::size_t(2) << 20;
-    constexpr std::size_t block = threshold - hugePage;  // each block below the threshold: heap, not mmap
+    // One sbrk: with the top pad at `reserve`, a block just larger than the free top grows
+    // the heap by the block and the pad at once (growing it block by block, 34 sbrk calls
+    // for 1 GiB, took 1-2 ms here).
     char* const before = static_cast<char*>(sbrk(0));
-    std::vector<void*> blocks;
-    blocks.reserve(reserve / block + 1);
-    for (std::size_t taken = 0; taken < reserve; taken += block) {
-        void* p = std::malloc(block);
-        if (!p) break;
-        blocks.push_back(p);
+    constexpr std::size_t hugePage = std::size_t(2) << 20;
+    if (!mallopt(M_TOP_PAD, static_cast<int>(reserve + 2 * hugePage))) {
+        out.reason = "mallopt refused the top pad";
+        return out;
     }
-    // The heap grew: from the first block (cut from the free top the heap had, below
-    // `before`) to the new end is free heap. What lies below it stays in small pages.
+    const std::size_t request = mallinfo2().keepcost + 64;
+    void* const block = std::malloc(request);
+    mallopt(M_TOP_PAD, 128 * 1024);  // glibc's default again
     char* const after = static_cast<char*>(sbrk(0));
-    char* const low = blocks.empty() ? before : std::min(before, static_cast<char*>(blocks.front()));
-    const auto start = (reinterpret_cast<std::uintptr_t>(low) + hugePage - 1) & ~(hugePage - 1);
+    // malloc wrote the new free top's header just past the block. A 2 MiB range with one
+    // small page in it stays in small pages, so the advice starts at the first 2 MiB
+    // boundary above everything touched; below it (under 2 MiB) stays in small pages.
+    const char* const touched = static_cast<const char*>(block) + request + 64;
+    const auto start = (reinterpret_cast<std::uintptr_t>(touched) + hugePage - 1) & ~(hugePage - 1);
     const auto end = reinterpret_cast<std::uintptr_t>(after) & ~(hugePage - 1);
-    if (after <= before || end <= start) {
+    if (!block || after <= before || end <= start) {
         out.reason = "the heap could not be grown (sbrk)";
     } else if (madvise(reinterpret_cast<void*>(start), end - start, MADV_HUGEPAGE) != 0) {
         out.reason = "madvise(MADV_HUGEPAGE) failed: this kernel has no transparent huge pages";
@@ -68,8 +74,8 @@ HugePageHeap reserveHugePageHeap(std::size_t reserve) {
         out.advised = true;
         out.reservedBytes = end - start;
     }
-    // Back to malloc as one free top chunk; the trim threshold keeps it in the heap.
-    for (auto it = blocks.rbegin(); it != blocks.rend(); ++it) std::free(*it);
+    // Back to malloc: the block joins the free top; the trim threshold keeps it in the heap.
+    std::free(block);
     return out;
 }
 
