@@ -13,6 +13,7 @@
 #include "core/dynamics/potential_gradient.hpp"
 #include "core/dynamics/mass_matrix.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
+#include "core/model/exit_memory.hpp"
 #include "core/symbolic/derivation_evaluator.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/latex_text.hpp"
@@ -122,13 +123,13 @@ FormDocument deriveInForm(const Scene& scene, const FormRequest& request) {
 
     const auto lock = lockGinac();
     const bool needStructured = !expanded || !entries.empty() || request.verify;
-    std::optional<StructuredDynamics> structured;
+    std::shared_ptr<StructuredDynamics> structured;
     if (needStructured) {
         DerivationOptions options;
         options.mode = request.document.mode;
         options.progress = request.document.progress;
         options.cancel = request.document.cancel;
-        structured = deriveStructured(scene, options);
+        structured = std::make_shared<StructuredDynamics>(deriveStructured(scene, options));
         out.definitions = structured->table->size();
     }
     if (expanded && entries.empty()) {
@@ -202,6 +203,7 @@ FormDocument deriveInForm(const Scene& scene, const FormRequest& request) {
         else out.verification.push_back("expanded: not derived (" + cheapReason + ")");
         if (structured) out.verification.push_back(std::string("Bdot - 2C skew-symmetric over the names: ") + (skewSymmetric(*structured) ? "yes" : "NO"));
     }
+    dispose(std::move(structured));  // freed now (under the GiNaC lock), or left to a command's exit
     return out;
 }
 

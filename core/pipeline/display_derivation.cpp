@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "core/model/exit_memory.hpp"
 #include "core/symbolic/display_stream.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/structured_display.hpp"
@@ -27,7 +28,8 @@ DerivedDocument deriveInForm(const Scene& scene, const DocumentRequest& request,
     options.mode = request.mode;
     options.progress = request.progress;
     options.cancel = request.cancel;
-    const StructuredDynamics s = deriveStructured(scene, options);
+    const auto derived = std::make_shared<const StructuredDynamics>(deriveStructured(scene, options));
+    const StructuredDynamics& s = *derived;
     throwIfCancelled(request.cancel);
     const auto printing = std::chrono::steady_clock::now();
     out.display = structuredDisplayDocument(s, reason, request.firstStep, request.lastStep, request.cancel);
@@ -35,6 +37,7 @@ DerivedDocument deriveInForm(const Scene& scene, const DocumentRequest& request,
     if (request.displayStream) request.displayStream->putDocument(*out.display);
     out.printSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - printing).count();
     out.timings.push_back({0, "structured derivation (steps 1-8)", s.seconds});
+    dispose(derived);  // freed now (under the GiNaC lock), or left to a command's exit
     return out;
 }
 

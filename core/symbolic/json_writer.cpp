@@ -32,6 +32,7 @@ std::size_t utf8Length(std::string_view s, std::size_t i) {
 }  // namespace
 
 void JsonWriter::newline() {
+    if (compact_) return;
     out_ += '\n';
     out_.append(2 * levels_.size(), ' ');
 }
@@ -61,7 +62,7 @@ void JsonWriter::key(std::string_view name) {
     top.empty = false;
     newline();
     quote(name, out_);
-    out_ += ": ";
+    out_ += compact_ ? ":" : ": ";
     afterKey_ = true;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // JSON written as it is produced, byte for byte in the layout of nlohmann's dump(2)
-// (two-space indents, "key": value, [] and {} when empty, UTF-8 kept as is). The
+// (two-space indents, "key": value, [] and {} when empty, UTF-8 kept as is) or, Compact,
+// of its dump() (no spaces, no line breaks). The
 // derivation's JSON is tens of megabytes for an expanded 7-joint arm; building it as a
 // nlohmann document first copied every string into the document, then into the dump,
 // and took a fifth of the whole command. Strings are checked to be UTF-8 as nlohmann
@@ -13,7 +14,8 @@ namespace ll::symbolic {
 
 class JsonWriter {
 public:
-    explicit JsonWriter(std::string& out) : out_(out) {}
+    enum class Layout { Indented, Compact };
+    explicit JsonWriter(std::string& out, Layout layout = Layout::Indented) : out_(out), compact_(layout == Layout::Compact) {}
 
     void beginObject() { open('{', true); }
     void endObject() { close('}'); }
@@ -50,6 +52,7 @@ private:
     void newline();
 
     std::string& out_;
+    bool compact_;
     std::vector<Level> levels_;
     bool afterKey_ = false;
     bool started_ = false;

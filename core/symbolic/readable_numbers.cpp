@@ -70,8 +70,17 @@ std::optional<GiNaC::ex> withReadableCoefficients(const GiNaC::ex& e) {
     return GiNaC::ex(GiNaC::dynallocate<GiNaC::add>(std::move(shown), readable(GiNaC::ex_to<GiNaC::numeric>(GinacPairs::number(sum)))));
 }
 
+// (Sums and products read through their pairs, as anyTerminating does: op() would make
+// each term or factor anew.)
 bool hasDecimal(const GiNaC::ex& e) {
-    if (ginacKind(e) == GinacKind::Numeric) return isDecimalFraction(GiNaC::ex_to<GiNaC::numeric>(e));
+    const GinacKind kind = ginacKind(e);
+    if (kind == GinacKind::Numeric) return isDecimalFraction(GiNaC::ex_to<GiNaC::numeric>(e));
+    if (kind == GinacKind::Add || kind == GinacKind::Mul) {
+        const auto& seq = GiNaC::ex_to<GiNaC::expairseq>(e);
+        for (const GiNaC::expair& p : GinacPairs::of(seq))
+            if (hasDecimal(p.rest) || hasDecimal(p.coeff)) return true;
+        return hasDecimal(GinacPairs::number(seq));
+    }
     for (std::size_t i = 0; i < e.nops(); ++i)
         if (hasDecimal(e.op(i))) return true;
     return false;

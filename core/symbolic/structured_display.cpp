@@ -5,6 +5,7 @@
 #include <regex>
 
 #include "core/model/cancellation.hpp"
+#include "core/model/exit_memory.hpp"
 #include "core/symbolic/display_builder.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/latex_formula.hpp"
@@ -149,7 +150,8 @@ std::shared_ptr<const DisplayDocument> structuredDisplayDocument(const Structure
     auto names = std::make_shared<std::map<std::string, DisplayPtr>>();
     for (const NamedDefinition& d : s.table->entries()) (*names)[d.symbol.get_name()] = structuredNameNode(d.symbol.get_name());
     DisplayOptions options{doc->coordinateNames, true, names};
-    DisplayBuilder build(options);
+    const auto builder = std::make_shared<DisplayBuilder>(options);
+    DisplayBuilder& build = *builder;
 
     // The names under the step where each arises (table order within a step is still
     // dependency order: a name only uses names of its own or earlier steps).
@@ -207,6 +209,7 @@ std::shared_ptr<const DisplayDocument> structuredDisplayDocument(const Structure
         }
         doc->steps.push_back(std::move(st));
     }
+    dispose(builder);  // its caches: freed now (under the GiNaC lock), or left to a command's exit
     return doc;
 }
 

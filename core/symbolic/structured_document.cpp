@@ -6,12 +6,12 @@
 #include <sstream>
 #include <stdexcept>
 
-#include <nlohmann/json.hpp>
-
 #include "core/model/cancellation.hpp"
+#include "core/model/exit_memory.hpp"
 #include "core/symbolic/display_builder.hpp"
 #include "core/symbolic/expression_printer.hpp"
 #include "core/symbolic/ginac_lock.hpp"
+#include "core/symbolic/json_writer.hpp"
 #include "core/symbolic/latex_text.hpp"
 #include "core/symbolic/readable_numbers.hpp"
 
@@ -40,12 +40,15 @@ PrintOptions optionsFor(const StructuredDynamics& s, Style style) {
 class Printer {
 public:
     Printer(const StructuredDynamics& s, Style style)
-        : build_(displayOptions(optionsFor(s, style)), DisplayBuilder::Sharing::Symbols),
+        : build_(std::make_shared<DisplayBuilder>(displayOptions(optionsFor(s, style)), DisplayBuilder::Sharing::Symbols)),
           style_(displayStyle(style)) {}
-    std::string operator()(const GiNaC::ex& e) { return renderDisplay(*build_(e), style_); }
+    ~Printer() { dispose(std::move(build_)); }  // its caches: freed now, or left to a command's exit
+    Printer(const Printer&) = delete;
+    Printer& operator=(const Printer&) = delete;
+    std::string operator()(const GiNaC::ex& e) { return renderDisplay(*(*build_)(e), style_); }
 
 private:
-    DisplayBuilder build_;
+    std::shared_ptr<DisplayBuilder> build_;
     DisplayStyle style_;
 };
 
@@ -277,68 +280,111 @@ void writeLatex(const StructuredDynamics& s, const StructuredDocumentInfo& info,
     out << "\\end{document}\n";
 }
 
+// Written as it is made, in the layout of nlohmann's compact dump() (an 8-joint model
+// has about 1100 definitions; building them as a nlohmann document first copied every
+// string twice and was a sixth of the printing).
 void writeJson(const StructuredDynamics& s, const StructuredDocumentInfo& info, std::ostream& out) {
     Printer plain(s, Style::Plain);
     const Selection sel = select(s, info);
-    nlohmann::ordered_json j;
-    j["system"] = s.systemName;
-    j["mode"] = info.modeName;
-    j["form"] = info.form;
-    j["form_reason"] = info.formReason;
+    std::string text;
+    JsonWriter j(text, JsonWriter::Layout::Compact);
+    j.beginObject();
+    j.key("system");
+    j.value(s.systemName);
+    j.key("mode");
+    j.value(info.modeName);
+    j.key("form");
+    j.value(info.form);
+    j.key("form_reason");
+    j.value(info.formReason);
     std::vector<std::string> coordinates;
     for (int i = 0; i < s.n; ++i) coordinates.push_back(coordinateName(i));
-    j["coordinates"] = coordinates;
-    nlohmann::ordered_json defs = nlohmann::ordered_json::array();
+    j.key("coordinates");
+    j.value(coordinates);
+    j.key("definitions");
+    j.beginArray();
     for (int k : byStep(s, sel)) {
         const NamedDefinition& d = s.table->entries()[k];
-        std::vector<int> deps;  // indices k of the q_k it depends on: [2, 3] (a tenth of the document as "q2", "q3")
-        for (int q = 0; q < s.n; ++q)
-            if (d.coordinates & (std::uint64_t(1) << q)) deps.push_back(q + 1);
         // latex: the name as the notes write it; the right-hand side's LaTeX is expr's
         // (--format latex sets it), written twice it was 40 % of an 8-joint document.
-        defs.push_back({{"name", d.symbol.get_name()},
-                        {"expr", plain(d.value)},
-                        {"latex", d.latex},
-                        {"step", d.step},
-                        {"meaning", d.meaning},
-                        {"depends_on", deps}});
+        j.beginObject();
+        j.key("name");
+        j.value(d.symbol.get_name());
+        j.key("expr");
+        j.value(plain(d.value));
+        j.key("latex");
+        j.value(d.latex);
+        j.key("step");
+        j.value(d.step);
+        j.key("meaning");
+        j.value(d.meaning);
+        j.key("depends_on");  // indices k of the q_k it depends on: [2, 3] (a tenth of the document as "q2", "q3")
+        j.beginArray();
+        for (int q = 0; q < s.n; ++q)
+            if (d.coordinates & (std::uint64_t(1) << q)) j.value(q + 1);
+        j.endArray();
+        j.endObject();
     }
-    j["definitions"] = defs;
-    const auto matrix = [&](const GiNaC::matrix& m) {
-        nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+    j.endArray();
+    const auto matrix = [&](const char* name, const GiNaC::matrix& m) {
+        j.key(name);
+        j.beginArray();
         for (unsigned r = 0; r < m.rows(); ++r) {
             if (m.cols() == 1) {
-                rows.push_back(plain(m(r, 0)));
+                j.value(plain(m(r, 0)));
                 continue;
             }
-            nlohmann::ordered_json row = nlohmann::ordered_json::array();
-            for (unsigned c = 0; c < m.cols(); ++c) row.push_back(plain(m(r, c)));
-            rows.push_back(row);
+            j.beginArray();
+            for (unsigned c = 0; c < m.cols(); ++c) j.value(plain(m(r, c)));
+            j.endArray();
         }
-        return rows;
+        j.endArray();
     };
-    if (info.entries.empty() && inSteps(7, info)) j["B"] = matrix(s.B);
+    if (info.entries.empty() && inSteps(7, info)) matrix("B", s.B);
     if (sel.checks) {
-        j["C"] = matrix(s.C);
-        j["g"] = matrix(s.g);
-        j["Q"] = matrix(s.Q);
+        matrix("C", s.C);
+        matrix("g", s.g);
+        matrix("Q", s.Q);
         const int n = s.n;
-        j["mass_derivatives"] = {{"nonzero", s.nonZeroMassDerivatives()}, {"of", n * n * (n + 1) / 2}};
-        j["skew_symmetric"] = skewSymmetric(s);
+        j.key("mass_derivatives");
+        j.beginObject();
+        j.key("nonzero");
+        j.value(s.nonZeroMassDerivatives());
+        j.key("of");
+        j.value(n * n * (n + 1) / 2);
+        j.endObject();
+        j.key("skew_symmetric");
+        j.value(skewSymmetric(s));
     }
-    nlohmann::ordered_json entries = nlohmann::ordered_json::object();
-    for (const EntryRef& e : info.entries) {
-        nlohmann::ordered_json entry{{"structured", plain(valueOf(s, e))}};
-        for (const ExpandedEntry& x : info.expanded)
-            if (x.ref.label == e.label) {
-                entry["expr"] = plain(x.value);
-                entry["terms"] = x.terms;
-                entry["seconds"] = x.seconds;
+    if (!info.entries.empty()) {
+        j.key("entries");
+        j.beginObject();
+        std::vector<std::string> written;  // an entry asked for twice is one member, as in a JSON object
+        for (const EntryRef& e : info.entries) {
+            if (std::find(written.begin(), written.end(), e.label) != written.end()) continue;
+            written.push_back(e.label);
+            j.key(e.label);
+            j.beginObject();
+            j.key("structured");
+            j.value(plain(valueOf(s, e)));
+            const ExpandedEntry* expanded = nullptr;
+            for (const ExpandedEntry& x : info.expanded)
+                if (x.ref.label == e.label) expanded = &x;
+            if (expanded) {
+                j.key("expr");
+                j.value(plain(expanded->value));
+                j.key("terms");
+                j.value(static_cast<long long>(expanded->terms));
+                j.key("seconds");
+                j.value(expanded->seconds);
             }
-        entries[e.label] = entry;
+            j.endObject();
+        }
+        j.endObject();
     }
-    if (!info.entries.empty()) j["entries"] = entries;
-    out << j.dump() << '\n';  // compact: an 8-joint model has about 1100 definitions
+    j.endObject();
+    text += '\n';
+    out << text;
 }
 
 }  // namespace
