@@ -351,12 +351,9 @@ StreamWriters streamWriters(DocumentFormat format) {
 
 void writeJsonHead(const Derivation& d, const std::string& mode, JsonWriter& json) {
     json.beginObject();
-    json.key("system");
-    json.value(d.systemName);
-    json.key("mode");
-    json.value(mode);
-    json.key("coordinates");
-    json.value(d.coordinateNames);
+    json.member("system", d.systemName);
+    json.member("mode", mode);
+    json.member("coordinates", d.coordinateNames);
     json.key("steps");
     json.beginArray();
 }
@@ -364,19 +361,14 @@ void writeJsonHead(const Derivation& d, const std::string& mode, JsonWriter& jso
 // A step's start: its number, title, formula and time; its items follow.
 void writeJsonStep(const DisplayStep& step, JsonWriter& json) {
     json.beginObject();
-    json.key("number");
-    json.value(step.number);
-    json.key("title");
-    json.value(step.title);
+    json.member("number", step.number);
+    json.member("title", step.title);
     json.key("formula");
     json.beginObject();
-    json.key("text");
-    json.value(step.formulaText);
-    json.key("latex");
-    json.value(step.formulaLatex);
+    json.member("text", step.formulaText);
+    json.member("latex", step.formulaLatex);
     json.endObject();
-    json.key("seconds");
-    json.value(step.seconds);
+    json.member("seconds", step.seconds);
     json.key("items");
     json.beginArray();
 }
@@ -389,8 +381,7 @@ void endJsonStep(JsonWriter& json) {
 // An item from its renderings in partsOf(Json) order, quoted (moved from).
 void writeJsonItem(const DisplayItem& item, std::vector<std::string>* parts[3], PlainTexts& plain, JsonWriter& json) {
     json.beginObject();
-    json.key("name");
-    json.value(item.name);
+    json.member("name", item.name);
     json.key("latex");
     json.quotedValue(parts[0]->front());
     json.key("text");
@@ -412,12 +403,9 @@ void writeJsonTail(const Derivation& d, const DisplayResults& results, PlainText
     }
     std::vector<std::string> actuated;
     for (int a : d.actuated) actuated.push_back(d.coordinateNames[a]);
-    json.key("actuated");
-    json.value(actuated);
-    json.key("underactuated");
-    json.value(d.underactuated);
-    json.key("warnings");
-    json.value(d.warnings);
+    json.member("actuated", actuated);
+    json.member("underactuated", d.underactuated);
+    json.member("warnings", d.warnings);
     json.endObject();
 }
 

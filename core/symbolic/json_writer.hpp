@@ -31,6 +31,12 @@ public:
     void value(double x);  // as nlohmann prints it: 0.008, 1e-05, 2.0
     void value(bool b);
     void value(const std::vector<std::string>& strings);  // an array of them
+    // key(name), then value(v).
+    template <class T>
+    void member(std::string_view name, const T& v) {
+        key(name);
+        value(v);
+    }
     // A string already in JSON's quoted form (from quote()): written as it is.
     void quotedValue(std::string_view json);
 

@@ -36,19 +36,20 @@ bool isDecimalFraction(const GiNaC::numeric& v) { return terminates(v) && v.deno
 
 namespace {
 
-// Whether a terminating fraction occurs anywhere in e (a coefficient, an exponent, a
-// number inside a function): read through sums' and products' pairs without making them.
-bool anyTerminating(const GiNaC::ex& e) {
+// Whether a number that is(number) occurs anywhere in e (a coefficient, an exponent, a
+// number inside a function): read through sums' and products' pairs without making
+// them (op() would make each term or factor anew).
+bool anyNumber(const GiNaC::ex& e, bool (*is)(const GiNaC::numeric&)) {
     const GinacKind kind = ginacKind(e);
-    if (kind == GinacKind::Numeric) return terminates(GiNaC::ex_to<GiNaC::numeric>(e));
+    if (kind == GinacKind::Numeric) return is(GiNaC::ex_to<GiNaC::numeric>(e));
     if (kind == GinacKind::Add || kind == GinacKind::Mul) {
         const auto& seq = GiNaC::ex_to<GiNaC::expairseq>(e);
         for (const GiNaC::expair& p : GinacPairs::of(seq))
-            if (anyTerminating(p.rest) || anyTerminating(p.coeff)) return true;
-        return anyTerminating(GinacPairs::number(seq));
+            if (anyNumber(p.rest, is) || anyNumber(p.coeff, is)) return true;
+        return anyNumber(GinacPairs::number(seq), is);
     }
     for (std::size_t i = 0; i < e.nops(); ++i)
-        if (anyTerminating(e.op(i))) return true;
+        if (anyNumber(e.op(i), is)) return true;
     return false;
 }
 
@@ -63,27 +64,11 @@ std::optional<GiNaC::ex> withReadableCoefficients(const GiNaC::ex& e) {
     const auto& sum = GiNaC::ex_to<GiNaC::add>(e);
     const GiNaC::epvector& pairs = GinacPairs::of(sum);
     for (const GiNaC::expair& p : pairs)
-        if (anyTerminating(p.rest)) return std::nullopt;
+        if (anyNumber(p.rest, terminates)) return std::nullopt;
     GiNaC::epvector shown;
     shown.reserve(pairs.size() + 1);
     for (const GiNaC::expair& p : pairs) shown.emplace_back(p.rest, readable(GiNaC::ex_to<GiNaC::numeric>(p.coeff)));
     return GiNaC::ex(GiNaC::dynallocate<GiNaC::add>(std::move(shown), readable(GiNaC::ex_to<GiNaC::numeric>(GinacPairs::number(sum)))));
-}
-
-// (Sums and products read through their pairs, as anyTerminating does: op() would make
-// each term or factor anew.)
-bool hasDecimal(const GiNaC::ex& e) {
-    const GinacKind kind = ginacKind(e);
-    if (kind == GinacKind::Numeric) return isDecimalFraction(GiNaC::ex_to<GiNaC::numeric>(e));
-    if (kind == GinacKind::Add || kind == GinacKind::Mul) {
-        const auto& seq = GiNaC::ex_to<GiNaC::expairseq>(e);
-        for (const GiNaC::expair& p : GinacPairs::of(seq))
-            if (hasDecimal(p.rest) || hasDecimal(p.coeff)) return true;
-        return hasDecimal(GinacPairs::number(seq));
-    }
-    for (std::size_t i = 0; i < e.nops(); ++i)
-        if (hasDecimal(e.op(i))) return true;
-    return false;
 }
 
 }  // namespace
@@ -103,7 +88,7 @@ GiNaC::ex readableNumbers(const GiNaC::ex& e) {
     } map;
     // Without a scene decimal nothing changes (only decimal fractions would): GiNaC's map
     // rebuilds every sum and product it walks, so not walking is most of the saving.
-    if (!hasDecimal(e)) return e;
+    if (!anyNumber(e, isDecimalFraction)) return e;
     if (auto sum = withReadableCoefficients(e)) return *sum;
     map.decimals = true;
     return map(e);

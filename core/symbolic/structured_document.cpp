@@ -289,18 +289,13 @@ void writeJson(const StructuredDynamics& s, const StructuredDocumentInfo& info, 
     std::string text;
     JsonWriter j(text, JsonWriter::Layout::Compact);
     j.beginObject();
-    j.key("system");
-    j.value(s.systemName);
-    j.key("mode");
-    j.value(info.modeName);
-    j.key("form");
-    j.value(info.form);
-    j.key("form_reason");
-    j.value(info.formReason);
+    j.member("system", s.systemName);
+    j.member("mode", info.modeName);
+    j.member("form", info.form);
+    j.member("form_reason", info.formReason);
     std::vector<std::string> coordinates;
     for (int i = 0; i < s.n; ++i) coordinates.push_back(coordinateName(i));
-    j.key("coordinates");
-    j.value(coordinates);
+    j.member("coordinates", coordinates);
     j.key("definitions");
     j.beginArray();
     for (int k : byStep(s, sel)) {
@@ -308,16 +303,11 @@ void writeJson(const StructuredDynamics& s, const StructuredDocumentInfo& info, 
         // latex: the name as the notes write it; the right-hand side's LaTeX is expr's
         // (--format latex sets it), written twice it was 40 % of an 8-joint document.
         j.beginObject();
-        j.key("name");
-        j.value(d.symbol.get_name());
-        j.key("expr");
-        j.value(plain(d.value));
-        j.key("latex");
-        j.value(d.latex);
-        j.key("step");
-        j.value(d.step);
-        j.key("meaning");
-        j.value(d.meaning);
+        j.member("name", d.symbol.get_name());
+        j.member("expr", plain(d.value));
+        j.member("latex", d.latex);
+        j.member("step", d.step);
+        j.member("meaning", d.meaning);
         j.key("depends_on");  // indices k of the q_k it depends on: [2, 3] (a tenth of the document as "q2", "q3")
         j.beginArray();
         for (int q = 0; q < s.n; ++q)
@@ -348,13 +338,10 @@ void writeJson(const StructuredDynamics& s, const StructuredDocumentInfo& info, 
         const int n = s.n;
         j.key("mass_derivatives");
         j.beginObject();
-        j.key("nonzero");
-        j.value(s.nonZeroMassDerivatives());
-        j.key("of");
-        j.value(n * n * (n + 1) / 2);
+        j.member("nonzero", s.nonZeroMassDerivatives());
+        j.member("of", n * n * (n + 1) / 2);
         j.endObject();
-        j.key("skew_symmetric");
-        j.value(skewSymmetric(s));
+        j.member("skew_symmetric", skewSymmetric(s));
     }
     if (!info.entries.empty()) {
         j.key("entries");
@@ -365,18 +352,14 @@ void writeJson(const StructuredDynamics& s, const StructuredDocumentInfo& info, 
             written.push_back(e.label);
             j.key(e.label);
             j.beginObject();
-            j.key("structured");
-            j.value(plain(valueOf(s, e)));
+            j.member("structured", plain(valueOf(s, e)));
             const ExpandedEntry* expanded = nullptr;
             for (const ExpandedEntry& x : info.expanded)
                 if (x.ref.label == e.label) expanded = &x;
             if (expanded) {
-                j.key("expr");
-                j.value(plain(expanded->value));
-                j.key("terms");
-                j.value(static_cast<long long>(expanded->terms));
-                j.key("seconds");
-                j.value(expanded->seconds);
+                j.member("expr", plain(expanded->value));
+                j.member("terms", static_cast<long long>(expanded->terms));
+                j.member("seconds", expanded->seconds);
             }
             j.endObject();
         }
