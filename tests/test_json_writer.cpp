@@ -1,8 +1,9 @@
 // json_writer: the derivation's JSON is written as it is produced, without a nlohmann
 // document. Checked against nlohmann itself, the independent implementation: the same
-// documents (fixed and random) dumped with dump(2) are the same bytes; invalid UTF-8
-// is refused by both; and the CLI's JSON of the 2R and the expanded SCARA reads back
-// and dumps again to exactly what the CLI wrote.
+// documents (fixed and random) dumped with dump(2), and with dump() in the compact layout,
+// are the same bytes; invalid UTF-8 is refused by both; and the CLI's JSON of the 2R,
+// the expanded SCARA and the structured Panda (compact) reads back and dumps again to
+// exactly what the CLI wrote.
 #include <QtTest>
 
 #include <cmath>
@@ -43,12 +44,14 @@ void write(JsonWriter& w, const ordered& j) {
     }
 }
 
-std::string written(const ordered& j) {
+std::string written(const ordered& j, JsonWriter::Layout layout = JsonWriter::Layout::Indented) {
     std::string out;
-    JsonWriter w(out);
+    JsonWriter w(out, layout);
     write(w, j);
     return out;
 }
+
+std::string compact(const ordered& j) { return written(j, JsonWriter::Layout::Compact); }
 
 // A random valid UTF-8 string: ASCII (every control character among it), 2-, 3- and
 // 4-byte sequences, quotes and backslashes.
@@ -110,6 +113,7 @@ private slots:
         j["nested"] = {{"a", ordered::array({ordered::array({"x", "y"}), ordered::array()})}, {"b", {{"c", 1}}}};
         j["ünïcödé 𝔸"] = "c̈ ⎡⎤ −";
         QCOMPARE(QString::fromStdString(written(j)), QString::fromStdString(j.dump(2)));
+        QCOMPARE(QString::fromStdString(compact(j)), QString::fromStdString(j.dump()));
     }
 
     void randomDocumentsAsNlohmannDumpsThem() {
@@ -118,6 +122,9 @@ private slots:
             const ordered j = randomValue(rng, 0);
             const std::string expected = j.dump(2), got = written(j);
             if (got != expected) QFAIL(qPrintable(QString("document %1 differs:\n%2\n---\n%3").arg(k).arg(QString::fromStdString(expected), QString::fromStdString(got))));
+            const std::string expectedCompact = j.dump(), gotCompact = compact(j);
+            if (gotCompact != expectedCompact)
+                QFAIL(qPrintable(QString("document %1 differs (compact):\n%2\n---\n%3").arg(k).arg(QString::fromStdString(expectedCompact), QString::fromStdString(gotCompact))));
         }
     }
 
@@ -163,6 +170,15 @@ private slots:
             QVERIFY(!j.at("B").empty());
             QCOMPARE(QString::fromStdString(document), QString::fromStdString(j.dump(2) + "\n"));
         }
+        // The structured form's JSON (the Panda's default), one compact line.
+        const auto run = ll::test::runProcess(LL_CLI, {"derive", examples + "/panda.json", "--format", "json"});
+        QCOMPARE(run.exitCode, 0);
+        const std::string document = run.out.toStdString();
+        const ordered j = ordered::parse(document);
+        QCOMPARE(j.at("form").get<std::string>(), std::string("structured"));
+        QVERIFY(j.at("definitions").size() > 500);
+        QCOMPARE(j.at("B").size(), std::size_t(7));
+        QCOMPARE(QString::fromStdString(document), QString::fromStdString(j.dump() + "\n"));
     }
 };
 
