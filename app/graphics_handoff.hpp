@@ -1,6 +1,6 @@
 #pragma once
 // Two programs run LagrangeLab's commands. lagrangelab-gui links Qt and OpenSceneGraph and
-// runs all of them; lagrangelab links only the core, statically (about 6 ms to start instead of 55)
+// runs all of them; lagrangelab links only the core, statically (about 7 ms to start instead of 55)
 // and hands every command that paints over to lagrangelab-gui: exec, so the process id,
 // arguments, environment and standard streams stay the same.
 #include <filesystem>

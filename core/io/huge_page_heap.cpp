@@ -47,24 +47,24 @@ HugePageHeap reserveHugePageHeap(std::size_t reserve) {
         out.reason = "mallopt refused the thresholds";
         return out;
     }
-    // One sbrk: with the top pad at `reserve`, a block just larger than the free top grows
-    // the heap by the block and the pad at once (growing it block by block, 34 sbrk calls
-    // for 1 GiB, took 1-2 ms here).
+    // One sbrk: with the top pad at `reserve`, a block larger than all free memory (no
+    // free chunk can hold it) grows the heap by the block and the pad at once (growing it
+    // block by block, 34 sbrk calls for 1 GiB, took 1-2 ms here).
     char* const before = static_cast<char*>(sbrk(0));
     constexpr std::size_t hugePage = std::size_t(2) << 20;
     if (!mallopt(M_TOP_PAD, static_cast<int>(reserve + 2 * hugePage))) {
         out.reason = "mallopt refused the top pad";
         return out;
     }
-    const std::size_t request = mallinfo2().keepcost + 64;
-    void* const block = std::malloc(request);
+    const std::size_t request = mallinfo2().fordblks + 64;  // a few hundred KiB at the start
+    void* const block = request < threshold ? std::malloc(request) : nullptr;
     mallopt(M_TOP_PAD, 128 * 1024);  // glibc's default again
     char* const after = static_cast<char*>(sbrk(0));
     // malloc wrote the new free top's header just past the block. A 2 MiB range with one
     // small page in it stays in small pages, so the advice starts at the first 2 MiB
     // boundary above everything touched; below it (under 2 MiB) stays in small pages.
-    const char* const touched = static_cast<const char*>(block) + request + 64;
-    const auto start = (reinterpret_cast<std::uintptr_t>(touched) + hugePage - 1) & ~(hugePage - 1);
+    const auto touched = reinterpret_cast<std::uintptr_t>(block) + request + 64;
+    const auto start = (touched + hugePage - 1) & ~(hugePage - 1);
     const auto end = reinterpret_cast<std::uintptr_t>(after) & ~(hugePage - 1);
     if (!block || after <= before || end <= start) {
         out.reason = "the heap could not be grown (sbrk)";
