@@ -14,11 +14,9 @@
 #include <string>
 #include <vector>
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
+#include "app/child_process.hpp"
 #include "app/commands.hpp"
 #include "app/offscreen_gui.hpp"
 #include "app/scene_loading.hpp"
@@ -29,8 +27,6 @@
 #include "core/io/data_directory.hpp"
 #include "ui/headless_renderer.hpp"
 #include "ui/osg_scene.hpp"
-
-extern char** environ;
 
 namespace ll::cli {
 namespace {
@@ -71,22 +67,10 @@ double framesPerSecond(const Scene& scene, const Trajectory& trajectory, int ant
 std::string peakMemory(const std::string& scene, double duration, const fs::path& out) {
     const fs::path log = fs::temp_directory_path() / ("lagrangelab-bench-" + std::to_string(::getpid()) + ".log");
     const std::string seconds = std::to_string(duration);
-    std::vector<std::string> args = {"/proc/self/exe", "render", scene, "--duration", seconds, "--size", "1920x1080", "--out", out.string()};
-    std::vector<char*> argv;
-    for (std::string& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-    posix_spawn_file_actions_addopen(&actions, 2, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
-    pid_t pid = 0;
-    const int error = posix_spawn(&pid, "/proc/self/exe", &actions, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    if (error != 0) return "could not start the render";
-    int status = 0;
-    waitpid(pid, &status, 0);
+    const int exitCode = runSelf({"render", scene, "--duration", seconds, "--size", "1920x1080", "--out", out.string()}, log);
+    if (exitCode == 127) return "could not start the render";
     std::ifstream in(log);
-    std::string line, found = "render failed (exit " + std::to_string(WEXITSTATUS(status)) + ")";
+    std::string line, found = "render failed (exit " + std::to_string(exitCode) + ")";
     while (std::getline(in, line))
         if (line.rfind("peak memory", 0) == 0) found = line;
     fs::remove(log);

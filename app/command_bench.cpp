@@ -143,7 +143,7 @@ int benchCancel(const std::vector<std::string>& scenes) {
 }  // namespace
 
 int benchCommand(const Args& args) {
-    const Options options(args, {"batches", "chains", "cap"}, {"rhs", "derive", "cancel", "render", "typeset", "gui"});
+    const Options options(args, {"batches", "chains", "cap", "form"}, {"rhs", "derive", "cancel", "render", "typeset", "gui", "process"});
     // --batches N, or each mode's default: a whole number from 1 to 1000 (0 batches have
     // no median).
     const auto batchesOr = [&](int fallback) { return checkedBatches(options.number("batches", fallback), options.text("batches")); };
@@ -152,6 +152,13 @@ int benchCommand(const Args& args) {
     if (options.has("gui")) return benchGui(scenes, batchesOr(9));
     if (options.has("render")) return benchRender(scenes, batchesOr(3));
     if (options.has("typeset")) return benchTypeset(scenes, batchesOr(5));
+    if (options.has("form") && !options.has("process")) throw UsageError("--form: only with --process");
+    if (options.has("process")) {
+        const std::string form = options.text("form", "auto");
+        if (form != "auto" && form != "structured" && form != "expanded")
+            throw UsageError("--form: expected auto, structured or expanded, got '" + form + "'");
+        return benchProcess(scenes, batchesOr(11), form);
+    }
     if (options.has("chains") && !options.has("derive")) throw UsageError("--chains: only with --derive");
     if (options.has("derive") && options.has("chains"))
         return benchDeriveChains(options.text("chains"), scenes, batchesOr(5), options.number("cap", 20.0));

@@ -36,7 +36,8 @@ constexpr std::array<CommandText, 9> commands{{
      "SCENE [--integrators a,b,...] [--tolerances 1e-3..1e-12] [--steps dt1,dt2,...] [--duration T]\n"
      "[--repeats N] [--reference-tol X] [--out plot.svg|png] [--csv FILE]",
      "work-precision: error, energy drift, CPU time, evaluations and steps per integrator and setting"},
-    {"bench", "[SCENE...] [--batches N] [--rhs | --derive | --cancel | --render | --typeset | --gui] [--chains A..B] [--cap S]",
+    {"bench", "[SCENE...] [--batches N] [--rhs | --derive | --cancel | --render | --typeset | --gui | --process] [--chains A..B] [--cap S]\n"
+              "[--form auto|structured|expanded]",
      "median times of B, C, g, forward/inverse dynamics and one simulated second\n"
      "(--rhs: one right-hand side of the PUMA 560 with no effects, gravity only, all effects;\n"
      " --derive: the whole symbolic derivation per parameter mode;\n"
@@ -45,7 +46,9 @@ constexpr std::array<CommandText, 9> commands{{
      " --render: headless export of 10 s of the PUMA 560 to MP4, render-only frames/s, peak memory;\n"
      " --typeset: one B entry typeset, the 2R and PUMA 560 to PDF, the Panda derived and printed;\n"
      " --gui: the window: edit-to-updated-view latency (2R, PUMA 560), PUMA 560 animation frames/s\n"
-     "        at 1280x720, start to first drawn frame; needs a display, e.g. xvfb-run)"},
+     "        at 1280x720, start to first drawn frame; needs a display, e.g. xvfb-run;\n"
+     " --process: whole `derive` processes (text, json, pdf; each parameter mode) against the\n"
+     "        derivation inside each, the Panda by default; --form is passed on)"},
     {"help", "[COMMAND]", "this overview, or the usage of COMMAND (also: lagrangelab COMMAND --help)"},
 }};
 

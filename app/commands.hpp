@@ -33,6 +33,8 @@ int benchDeriveChains(const std::string& range, const std::vector<std::string>& 
 int benchRender(const std::vector<std::string>& scenes, int runs);
 // `bench --typeset`: typesetting and printing the derivation (app/bench_typeset.cpp).
 int benchTypeset(const std::vector<std::string>& scenes, int runs);
+// `bench --process`: whole derive processes against the derivation inside (app/bench_process.cpp).
+int benchProcess(const std::vector<std::string>& scenes, int runs, const std::string& form);
 // Whether `lagrangelab COMMAND ARGS…` paints (Qt, OpenSceneGraph): the window, render,
 // derive --format pdf|svg|png, accuracy --out, bench --gui|--render|--typeset. Those run in
 // lagrangelab-gui; the rest run in lagrangelab, which loads neither (app/graphics_handoff.hpp).

@@ -332,6 +332,32 @@ private slots:
         QVERIFY(r.out.contains("Planar 2R"));
     }
 
+    // Whole derive processes against the derivation inside each: a row per mode and format,
+    // and no process can take less than the derivation it ran (the ratio is at least 1).
+    void benchProcessTimesWholeDerives() {
+        const Run r = run({"bench", "--process", example("planar_2r.json"), "--batches", "1"});
+        QCOMPARE(r.exitCode, 0);
+        int rows = 0;
+        for (const QByteArray& line : r.out.split('\n')) {
+            if (!line.startsWith("Planar 2R")) continue;
+            ++rows;
+            const QList<QByteArray> cells = line.split('|');
+            QCOMPARE(cells.size(), 3);
+            const QList<QByteArray> times = cells[1].simplified().split(' ');
+            QCOMPARE(times.size(), 2);
+            const double whole = times[0].toDouble(), derivation = times[1].toDouble();
+            const double ratio = cells[2].simplified().split(' ').first().toDouble();
+            QVERIFY2(derivation > 0 && whole > derivation, line.constData());
+            QVERIFY2(std::abs(ratio - whole / derivation) <= 0.02 * ratio + 0.01, line.constData());
+        }
+        QCOMPARE(rows, 9);  // parameters, numeric, symbolic × text, json, pdf
+        for (const char* format : {" text ", " json ", " pdf "}) QCOMPARE(r.out.count(format), 3);
+        const Run bad = run({"bench", "--process", "--form", "tidy"});
+        QCOMPARE(bad.exitCode, 2);
+        QVERIFY2(bad.err.startsWith("error: --form: ") && bad.err.contains("tidy") && bad.err.count('\n') == 1, bad.err.constData());
+        QCOMPARE(run({"bench", "--form", "structured"}).exitCode, 2);  // --form only with --process
+    }
+
     void badCommandLineGivesExitCode2() {
         QCOMPARE(run({"eval", example("puma560.json"), "--q", "0,0"}).exitCode, 2);
         QCOMPARE(run({"simulate", example("puma560.json"), "--integrator", "nope"}).exitCode, 2);
@@ -409,7 +435,7 @@ private slots:
         QTest::newRow("derive") << "derive" << "SCENE [--format text|latex|json|pdf|svg|png] [--out FILE] [--steps 0-8]";
         QTest::newRow("integrators") << "integrators" << "";
         QTest::newRow("accuracy") << "accuracy" << "SCENE [--integrators a,b,...]";
-        QTest::newRow("bench") << "bench" << "[SCENE...] [--batches N] [--rhs | --derive | --cancel | --render | --typeset | --gui]";
+        QTest::newRow("bench") << "bench" << "[SCENE...] [--batches N] [--rhs | --derive | --cancel | --render | --typeset | --gui | --process]";
     }
     void commandHelpPrintsItsUsage() {
         QFETCH(QString, command);
