@@ -13,6 +13,7 @@
 #include <pthread.h>
 #include <time.h>
 
+#include "app/bench_timing.hpp"
 #include "app/cli_options.hpp"
 #include "app/commands.hpp"
 #include "app/scene_loading.hpp"
@@ -29,11 +30,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 double msSince(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
 
 double threadCpuMs(clockid_t clock) {
     timespec ts{};

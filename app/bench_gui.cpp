@@ -23,6 +23,7 @@
 #include <QTemporaryDir>
 
 #include "core/io/data_directory.hpp"
+#include "app/bench_timing.hpp"
 #include "app/commands.hpp"
 #include "app/graphics_handoff.hpp"
 #include "app/event_wait.hpp"
@@ -38,11 +39,6 @@ namespace ll::cli {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : v[v.size() / 2];
-}
 
 // CPU seconds used by this process so far (every thread, llvmpipe's included).
 double processCpu() {

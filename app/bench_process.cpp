@@ -16,6 +16,7 @@
 
 #include <unistd.h>
 
+#include "app/bench_timing.hpp"
 #include "app/child_process.hpp"
 #include "app/cli_options.hpp"
 #include "app/commands.hpp"
@@ -44,11 +45,6 @@ ProcessRun runDerive(std::vector<std::string> args, const fs::path& log) {
     for (std::string line; std::getline(in, line);)
         if (line.rfind("total: ", 0) == 0) run.derivationMs = std::strtod(line.c_str() + 7, nullptr);
     return run;
-}
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
 }
 
 double quartile(std::vector<double> v, int q) {

@@ -51,6 +51,12 @@ inline int checkedBatches(double n, const std::string& typed) {
     return static_cast<int>(n);
 }
 
+// The median of a list of timings (the upper one of an even count); 0 for none.
+inline double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0.0 : v[v.size() / 2];
+}
+
 // Median over batches of the time per call [µs]; each batch cycles through the states.
 template <class F>
 double medianMicros(int batches, int statesCount, F&& call) {

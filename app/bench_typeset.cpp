@@ -13,6 +13,7 @@
 #include <functional>
 
 #include "core/io/data_directory.hpp"
+#include "app/bench_timing.hpp"
 #include "app/commands.hpp"
 #include "app/offscreen_gui.hpp"
 #include "app/scene_loading.hpp"
@@ -39,9 +40,7 @@ Cost measure(int runs, const std::function<void()>& work) {
         cpu.push_back(double(std::clock() - c0) / CLOCKS_PER_SEC);
         wall.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - w0).count());
     }
-    std::sort(wall.begin(), wall.end());
-    std::sort(cpu.begin(), cpu.end());
-    return {wall[wall.size() / 2], cpu[cpu.size() / 2]};
+    return {median(wall), median(cpu)};
 }
 
 DerivedDocument derive(const Scene& scene, symbolic::ParameterMode mode, symbolic::DocumentFormat format) {
