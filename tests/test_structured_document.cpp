@@ -288,7 +288,7 @@ private slots:
         const auto namesIn = [&](const std::string& expr) {
             std::set<std::string> out;
             for (const NamedDefinition& d : s.table->entries()) {
-                const std::string& name = d.symbol.get_name();
+                const std::string& name = d.name;
                 for (std::size_t at = expr.find(name); at != std::string::npos; at = expr.find(name, at + 1)) {
                     const auto ident = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
                     if ((at == 0 || !ident(expr[at - 1])) && (at + name.size() == expr.size() || !ident(expr[at + name.size()])))

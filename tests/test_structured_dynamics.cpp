@@ -289,7 +289,7 @@ private slots:
             b << (-d.value).expand();
             QVERIFY2(!seen.count(a.str()) && !seen.count(b.str()), a.str().c_str());
             seen.insert(a.str());
-            QVERIFY(seen.insert(d.symbol.get_name()).second);
+            QVERIFY(seen.insert(d.name).second);
             for (int dep : d.dependencies) QVERIFY(dep < s.table->indexOf(d.symbol));
         }
     }
@@ -372,7 +372,7 @@ private slots:
         std::string generated;
         {
             const auto lock = lockGinac();
-            generated = s.table->entries().front().symbol.get_name();
+            generated = s.table->entries().front().name;
         }
         scene.parameters.emplace_back(generated, 0.5);
         try {

@@ -52,7 +52,7 @@ public:
         for (int k : cone) {
             const NamedDefinition& d = s_.table->entries()[k];
             out << indent << (python_ ? "# " : "/* ") << d.meaning << (python_ ? "" : " */") << "\n";
-            assign(d.symbol.get_name(), expr(d.value));
+            assign(d.name, expr(d.value));
         }
         return out.str();
     }

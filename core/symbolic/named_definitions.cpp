@@ -18,10 +18,26 @@ bool isAtomic(const GiNaC::ex& e) {
            GiNaC::is_a<GiNaC::symbol>(e.op(0));
 }
 
+// Every symbol occurrence in e. Sums and products are read through their pairs: a
+// preorder iterator goes through op(), which makes every term of a sum anew (the product
+// rest·coefficient), and keeps its own stack on the heap.
 template <class Visit>
-void forEachSymbol(const GiNaC::ex& e, Visit visit) {
-    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
-        if (ginacKind(*it) == GinacKind::Symbol) visit(*it);
+void forEachSymbol(const GiNaC::ex& e, Visit& visit) {
+    switch (ginacKind(e)) {
+        case GinacKind::Symbol: visit(e); return;
+        case GinacKind::Numeric: return;
+        case GinacKind::Add:
+        case GinacKind::Mul: {
+            const auto& seq = GiNaC::ex_to<GiNaC::expairseq>(e);
+            for (const GiNaC::expair& p : GinacPairs::of(seq)) {
+                forEachSymbol(p.rest, visit);
+                forEachSymbol(p.coeff, visit);
+            }
+            return forEachSymbol(GinacPairs::number(seq), visit);
+        }
+        default:
+            for (std::size_t i = 0; i < e.nops(); ++i) forEachSymbol(e.op(i), visit);
+    }
 }
 
 }  // namespace
@@ -41,7 +57,7 @@ GiNaC::ex NamedDefinitions::name(const GiNaC::ex& e, const std::string& plain, c
     if (value.is_zero() || isAtomic(value)) return value;
     if (const auto it = byValue_.find(value); it != byValue_.end()) return entries_[it->second].symbol;
     if (const auto it = byValue_.find((-value).expand()); it != byValue_.end()) return -entries_[it->second].symbol;
-    NamedDefinition d{GiNaC::symbol(plain), value, latex, meaning, step, dependenciesOf(value), coordinatesOf(value)};
+    NamedDefinition d{sharedSymbol(plain), plain, value, latex, meaning, step, dependenciesOf(value), coordinatesOf(value)};
     const int index = size();
     byValue_.emplace(value, index);
     bySymbol_.emplace(d.symbol, index);
@@ -58,18 +74,20 @@ int NamedDefinitions::indexOf(const GiNaC::ex& symbol) const {
 
 std::uint64_t NamedDefinitions::coordinatesOf(const GiNaC::ex& e) const {
     std::uint64_t bits = 0;
-    forEachSymbol(e, [&](const GiNaC::ex& s) {
+    auto visit = [&](const GiNaC::ex& s) {
         if (const auto it = coordinateOf_.find(s); it != coordinateOf_.end()) bits |= std::uint64_t(1) << it->second;
         if (const int k = indexOf(s); k >= 0) bits |= entries_[k].coordinates;
-    });
+    };
+    forEachSymbol(e, visit);
     return bits;
 }
 
 std::vector<int> NamedDefinitions::dependenciesOf(const GiNaC::ex& e) const {
     std::vector<int> deps;
-    forEachSymbol(e, [&](const GiNaC::ex& s) {
+    auto visit = [&](const GiNaC::ex& s) {
         if (const int k = indexOf(s); k >= 0) deps.push_back(k);
-    });
+    };
+    forEachSymbol(e, visit);
     std::sort(deps.begin(), deps.end());
     deps.erase(std::unique(deps.begin(), deps.end()), deps.end());
     return deps;

@@ -20,12 +20,14 @@
 
 #include <ginac/ginac.h>
 
+#include "core/symbolic/shared_symbol.hpp"
 #include "core/symbolic/trig_context.hpp"
 
 namespace ll::symbolic {
 
 struct NamedDefinition {
-    GiNaC::symbol symbol;           // its plain name is a re-parsable identifier: "z2x_4"
+    GiNaC::ex symbol;               // a GiNaC::symbol made once on the heap (sharedSymbol): every expression naming it shares it
+    std::string name;               // its plain name, a re-parsable identifier: "z2x_4"
     GiNaC::ex value;                // over q, c_i, s_i, parameters and earlier names
     std::string latex;              // "{}^{4}z_{2,x}"
     std::string meaning;            // "x of axis z_2 (joint 3) in the frame of link 4"

@@ -148,7 +148,7 @@ std::shared_ptr<const DisplayDocument> structuredDisplayDocument(const Structure
     doc->actuation = "Q holds the declared non-conservative forces (friction, torques).";
 
     auto names = std::make_shared<std::map<std::string, DisplayPtr>>();
-    for (const NamedDefinition& d : s.table->entries()) (*names)[d.symbol.get_name()] = structuredNameNode(d.symbol.get_name());
+    for (const NamedDefinition& d : s.table->entries()) (*names)[d.name] = structuredNameNode(d.name);
     DisplayOptions options{doc->coordinateNames, true, names};
     const auto builder = std::make_shared<DisplayBuilder>(options);
     DisplayBuilder& build = *builder;
@@ -188,7 +188,7 @@ std::shared_ptr<const DisplayDocument> structuredDisplayDocument(const Structure
         if (hasNames)
             for (int k : byStep[step]) {
                 const NamedDefinition& d = s.table->entries()[k];
-                st.items.push_back(item(d.symbol.get_name(), names->at(d.symbol.get_name()), d.value,
+                st.items.push_back(item(d.name, names->at(d.name), d.value,
                                         d.meaning + "; depends on " + coordinateList(d.coordinates, s.n)));
             }
         if (step == 7)

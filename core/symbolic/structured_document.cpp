@@ -215,7 +215,7 @@ void writeText(const StructuredDynamics& s, const StructuredDocumentInfo& info, 
     forEachDefinition(
         s, sel, [&](int step) { out << "\nStep " << step << ". " << stepTitle(step) << "\n"; },
         [&](const NamedDefinition& d) {
-            out << "    " << d.symbol.get_name() << " = " << text(readableNumbers(d.value)) << "        (" << d.meaning << "; depends on "
+            out << "    " << d.name << " = " << text(readableNumbers(d.value)) << "        (" << d.meaning << "; depends on "
                 << coordinateList(d.coordinates, s.n) << ")\n";
         });
     if (!sel.entries.empty()) out << "\nResults over the names\n";
@@ -303,7 +303,7 @@ void writeJson(const StructuredDynamics& s, const StructuredDocumentInfo& info, 
         // latex: the name as the notes write it; the right-hand side's LaTeX is expr's
         // (--format latex sets it), written twice it was 40 % of an 8-joint document.
         j.beginObject();
-        j.member("name", d.symbol.get_name());
+        j.member("name", d.name);
         j.member("expr", plain(d.value));
         j.member("latex", d.latex);
         j.member("step", d.step);

@@ -166,9 +166,9 @@ void refuseGeneratedNameClashes(const Scene& scene, const NamedDefinitions& tabl
     std::set<std::string> parameters;
     for (const auto& [name, value] : scene.parameters) parameters.insert(name);
     for (const NamedDefinition& d : table.entries())
-        if (parameters.count(d.symbol.get_name()))
-            throw InputError("parameters." + d.symbol.get_name(),
-                             "'" + d.symbol.get_name() + "' is also a name the structured form gives to a quantity it derives (" +
+        if (parameters.count(d.name))
+            throw InputError("parameters." + d.name,
+                             "'" + d.name + "' is also a name the structured form gives to a quantity it derives (" +
                                  d.meaning + "); rename the parameter");
 }
 

@@ -2,14 +2,21 @@
 
 namespace ll::symbolic {
 
-TrigContext::TrigContext(std::vector<bool> revolute) : revolute_(std::move(revolute)), t_("t") {
+TrigContext::TrigContext(std::vector<bool> revolute) : revolute_(std::move(revolute)), t_(sharedSymbol("t")) {
     for (int i = 1; i <= size(); ++i) {
         const std::string k = std::to_string(i);
-        q_.emplace_back("q" + k);
-        qd_.emplace_back("qd" + k);
-        c_.emplace_back("c" + k);
-        s_.emplace_back("s" + k);
+        q_.push_back(sharedSymbol("q" + k));
+        qd_.push_back(sharedSymbol("qd" + k));
+        c_.push_back(sharedSymbol("c" + k));
+        s_.push_back(sharedSymbol("s" + k));
     }
+}
+
+std::vector<GiNaC::symbol> TrigContext::symbols(const std::vector<GiNaC::ex>& shared) {
+    std::vector<GiNaC::symbol> out;
+    out.reserve(shared.size());
+    for (const GiNaC::ex& s : shared) out.push_back(symbolOf(s));
+    return out;
 }
 
 GiNaC::ex reducePythagorean(const GiNaC::ex& e, const GiNaC::ex& x, const GiNaC::ex& y) {
@@ -52,8 +59,8 @@ GiNaC::matrix TrigContext::reduce(const GiNaC::matrix& m) const {
 }
 
 GiNaC::ex TrigContext::diffq(const GiNaC::ex& e, int k) const {
-    GiNaC::ex d = e.diff(q_[k]);
-    if (revolute_[k]) d += c_[k] * e.diff(s_[k]) - s_[k] * e.diff(c_[k]);
+    GiNaC::ex d = e.diff(q(k));
+    if (revolute_[k]) d += c_[k] * e.diff(s(k)) - s_[k] * e.diff(c(k));
     return d;
 }
 

@@ -8,6 +8,8 @@
 
 #include <ginac/ginac.h>
 
+#include "core/symbolic/shared_symbol.hpp"
+
 namespace ll::symbolic {
 
 class TrigContext {
@@ -17,13 +19,14 @@ public:
 
     int size() const { return static_cast<int>(revolute_.size()); }
     bool revolute(int i) const { return revolute_[i]; }
-    const GiNaC::symbol& q(int i) const { return q_[i]; }
-    const GiNaC::symbol& qd(int i) const { return qd_[i]; }
-    const GiNaC::symbol& c(int i) const { return c_[i]; }
-    const GiNaC::symbol& s(int i) const { return s_[i]; }
-    const GiNaC::symbol& t() const { return t_; }
-    const std::vector<GiNaC::symbol>& q() const { return q_; }
-    const std::vector<GiNaC::symbol>& qd() const { return qd_; }
+    // (Shared symbols, core/symbolic/shared_symbol.hpp: using one allocates nothing.)
+    const GiNaC::symbol& q(int i) const { return symbolOf(q_[i]); }
+    const GiNaC::symbol& qd(int i) const { return symbolOf(qd_[i]); }
+    const GiNaC::symbol& c(int i) const { return symbolOf(c_[i]); }
+    const GiNaC::symbol& s(int i) const { return symbolOf(s_[i]); }
+    const GiNaC::symbol& t() const { return symbolOf(t_); }
+    std::vector<GiNaC::symbol> q() const { return symbols(q_); }
+    std::vector<GiNaC::symbol> qd() const { return symbols(qd_); }
 
     // A constant DH angle (α_i or a θ offset: π/3, 3/10, a parameter symbol) whose sine
     // and cosine appear in the results: reduce() then also lowers sin(x)² to 1 − cos(x)².
@@ -46,8 +49,9 @@ public:
 private:
     std::vector<bool> revolute_;
     std::vector<std::pair<GiNaC::ex, GiNaC::ex>> constantAngles_;  // (sin x, cos x)
-    std::vector<GiNaC::symbol> q_, qd_, c_, s_;
-    GiNaC::symbol t_;
+    std::vector<GiNaC::ex> q_, qd_, c_, s_;
+    GiNaC::ex t_;
+    static std::vector<GiNaC::symbol> symbols(const std::vector<GiNaC::ex>& shared);
 };
 
 // e (expanded) with every power x^k, k ≥ 2, written x^(k mod 2) (1 − y²)^(k div 2), expanded:
