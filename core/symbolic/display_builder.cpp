@@ -297,6 +297,15 @@ struct FactorKey {
     bool negated = false;
 };
 
+// What the builder keeps of a symbol (Builder::entry): its info, node and factor key,
+// each made when first asked for.
+struct SymbolEntry {
+    ex held;
+    const SymbolInfo* info = nullptr;
+    DisplayPtr node;
+    const FactorKey* key = nullptr;
+};
+
 template <class T>
 using ExMap = std::unordered_map<ex, T, std::hash<ex>, GiNaC::ex_is_equal>;
 
@@ -334,23 +343,24 @@ public:
     }
 
     const SymbolInfo& info(const GiNaC::symbol& s) {
-        // By hash (a symbol's serial number), checked by name: no string compare per lookup.
-        const unsigned hash = s.gethash();
-        if (auto it = infoByHash_.find(hash); it != infoByHash_.end() && it->second.first == s.get_name())
-            return it->second.second;
-        return infoByHash_[hash] = {s.get_name(), computeInfo(s)}, infoByHash_[hash].second;
+        SymbolEntry& e = entry(s);
+        if (!e.info) e.info = &infoByName(s.get_name());
+        return *e.info;
     }
 
-    SymbolInfo computeInfo(const GiNaC::symbol& s) {
-        const std::string& name = s.get_name();
+    const SymbolInfo& infoByName(const std::string& name) {
         if (auto it = infos_.find(name); it != infos_.end()) return it->second;
+        return infos_[name] = computeInfo(name);
+    }
+
+    SymbolInfo computeInfo(const std::string& name) {
         SymbolInfo i;
         if (o_.trigSymbols) {
             if (auto t = parseTrigName(name, n_)) {
                 i.kind = Kind::Trig;
                 i.indices = t->indices;
                 i.trig = t;
-                return infos_[name] = i;
+                return i;
             }
         }
         std::string stem = name;
@@ -378,7 +388,7 @@ public:
             while (d > 0 && std::isdigit(static_cast<unsigned char>(stem[d - 1]))) --d;
             if (d < stem.size() && stem.size() - d < 9) i.indices = {std::stoi(stem.substr(d))};
         }
-        return infos_[name] = i;
+        return i;
     }
 
     // Drops what was kept of expressions (ordered sums, sort keys, shown powers and
@@ -396,14 +406,16 @@ public:
 private:
     const DisplayOptions& o_;
     int n_ = 0;
+    // A symbol's info, node and factor key, by name (node-based: entries stay in place),
+    // and by the symbol object an expression holds (SymbolEntry).
     std::map<std::string, SymbolInfo> infos_;
-    std::unordered_map<unsigned, std::pair<std::string, SymbolInfo>> infoByHash_;
     std::map<std::string, DisplayPtr> symbols_;
-    std::unordered_map<unsigned, DisplayPtr> symbolByHash_;
+    std::map<std::string, FactorKey> symbolKeys_;
+    std::unordered_map<const GiNaC::basic*, SymbolEntry> byObject_;
+    SymbolEntry unheld_;
     ExMap<std::vector<ShownTerm>> terms_;
     ExMap<TermBody> bodies_;  // by a term's rest, for the terms of sums of keptBodiesFrom terms or more
     ExMap<FactorKey> factorKeys_[2];  // by negated
-    std::unordered_map<unsigned, FactorKey> symbolKeys_;  // by a symbol's hash
     ExMap<std::vector<std::pair<numeric, DisplayPtr>>> powers_;  // base^exponent, shown
     ExMap<DisplayPtr> atoms_;
     ExMap<DisplayPtr> sums_[2];  // by negate
@@ -645,14 +657,15 @@ private:
         const ex& b = f.base;
         if (isKind(b, GinacKind::Symbol)) {
             const GiNaC::symbol& sym = ex_to<GiNaC::symbol>(b);
-            const unsigned hash = sym.gethash();  // by serial number, checked by name as in info()
-            if (auto it = symbolKeys_.find(hash); it != symbolKeys_.end() && *it->second.text == sym.get_name())
-                return it->second;
+            SymbolEntry& e = entry(sym);
+            if (e.key) return *e.key;
+            const std::string name = sym.get_name();
+            if (auto it = symbolKeys_.find(name); it != symbolKeys_.end()) return *(e.key = &it->second);
             const SymbolInfo& i = info(sym);
             static const int rank[] = {1, 2, 3, 4, 7};  // by Kind; functions 5, sums 6
             std::vector<int> sub = i.indices.empty() ? std::vector<int>{INT_MAX} : i.indices;
             if (i.trig) sub.push_back(i.trig->kind == 'c' ? 0 : 1);  // c1 before s1
-            return symbolKeys_[hash] = FactorKey{rank[static_cast<int>(i.kind)], sub, sym.get_name(), b, false};
+            return *(e.key = &(symbolKeys_[name] = FactorKey{rank[static_cast<int>(i.kind)], sub, name, b, false}));
         }
         ExMap<FactorKey>& cache = factorKeys_[f.negated ? 1 : 0];
         if (auto it = cache.find(b); it != cache.end()) return it->second;
@@ -729,10 +742,27 @@ private:
     // ---- atoms
 
     DisplayPtr renderSymbol(const GiNaC::symbol& sym) {
-        const std::string& name = sym.get_name();
-        const unsigned hash = sym.gethash();
-        if (auto it = symbolByHash_.find(hash); it != symbolByHash_.end() && it->second->name == name) return it->second;
-        return symbolByHash_[hash] = namedNode(sym);
+        SymbolEntry& e = entry(sym);
+        if (!e.node) e.node = namedNode(sym);
+        return e.node;
+    }
+
+    // A symbol's entry by the object an expression holds: GiNaC shares one object among
+    // all the copies of an expression that name the symbol, so most lookups are one
+    // pointer hashed, with no name copied (get_name returns a copy) or compared. The
+    // entry holds the object, so its address is not reused while the entry lives. A
+    // symbol no expression holds (on the stack) has an entry only until the next lookup.
+    SymbolEntry& entry(const GiNaC::symbol& s) {
+        if (s.get_refcount() == 0) return unheld_ = SymbolEntry{};
+        auto [it, added] = byObject_.try_emplace(&s);
+        if (added) {
+            it->second.held = s;  // on the heap (counted), so shared, not copied
+            if (&ex_to<GiNaC::basic>(it->second.held) != &s) {  // copied after all: not cached
+                byObject_.erase(it);
+                return unheld_ = SymbolEntry{};
+            }
+        }
+        return it->second;
     }
 
     DisplayPtr namedNode(const GiNaC::symbol& sym) {

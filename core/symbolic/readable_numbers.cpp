@@ -1,7 +1,5 @@
 #include "core/symbolic/readable_numbers.hpp"
 
-#include <optional>
-
 #include "core/symbolic/ginac_kind.hpp"
 #include "core/symbolic/ginac_pairs.hpp"
 
@@ -27,7 +25,7 @@ bool onlyTwosAndFives(const GiNaC::numeric& d) {
 
 // A fraction whose decimal expansion ends (denominator 2^a 5^b): 1/5 = 0.2, 3/8 = 0.375.
 bool terminates(const GiNaC::numeric& v) {
-    return v.is_rational() && !v.is_integer() && onlyTwosAndFives(v.denom());
+    return !v.is_integer() && v.is_rational() && onlyTwosAndFives(v.denom());  // integers first: most exponents
 }
 
 }  // namespace
@@ -55,16 +53,12 @@ bool anyNumber(const GiNaC::ex& e, bool (*is)(const GiNaC::numeric&)) {
 
 GiNaC::ex readable(const GiNaC::numeric& v) { return terminates(v) ? v.evalf() : GiNaC::ex(v); }
 
-// A sum whose terms' rests hold no such number (an expanded entry: monomials with
-// integer powers), with only its coefficients and number made decimal: the pairs and
-// the constructor GiNaC's map would end with, without making a product per term and
-// splitting it again (map's cost on a sum of thousands of terms).
-std::optional<GiNaC::ex> withReadableCoefficients(const GiNaC::ex& e) {
-    if (!GiNaC::is_a<GiNaC::add>(e)) return std::nullopt;
-    const auto& sum = GiNaC::ex_to<GiNaC::add>(e);
+// A sum whose terms' rests hold no such number (an expanded entry, or a named quantity:
+// monomials with integer powers), with only its coefficients and number made decimal:
+// the pairs and the constructor GiNaC's map would end with, without making a product
+// per term and splitting it again (map's cost on a sum of thousands of terms).
+GiNaC::ex withReadableCoefficients(const GiNaC::add& sum) {
     const GiNaC::epvector& pairs = GinacPairs::of(sum);
-    for (const GiNaC::expair& p : pairs)
-        if (anyNumber(p.rest, terminates)) return std::nullopt;
     GiNaC::epvector shown;
     shown.reserve(pairs.size() + 1);
     for (const GiNaC::expair& p : pairs) shown.emplace_back(p.rest, readable(GiNaC::ex_to<GiNaC::numeric>(p.coeff)));
@@ -88,8 +82,25 @@ GiNaC::ex readableNumbers(const GiNaC::ex& e) {
     } map;
     // Without a scene decimal nothing changes (only decimal fractions would): GiNaC's map
     // rebuilds every sum and product it walks, so not walking is most of the saving.
+    // A sum (most expressions printed) is read in one walk: its rests for any finite
+    // fraction (when there is none, none is a decimal one either), its numbers apart.
+    if (ginacKind(e) == GinacKind::Add) {
+        const auto& sum = GiNaC::ex_to<GiNaC::add>(e);
+        bool restsTerminate = false;
+        for (const GiNaC::expair& p : GinacPairs::of(sum))
+            if (anyNumber(p.rest, terminates)) {
+                restsTerminate = true;
+                break;
+            }
+        if (!restsTerminate) {
+            bool decimal = isDecimalFraction(GiNaC::ex_to<GiNaC::numeric>(GinacPairs::number(sum)));
+            for (const GiNaC::expair& p : GinacPairs::of(sum))
+                if (decimal) break;
+                else decimal = isDecimalFraction(GiNaC::ex_to<GiNaC::numeric>(p.coeff));
+            return decimal ? withReadableCoefficients(sum) : e;
+        }
+    }
     if (!anyNumber(e, isDecimalFraction)) return e;
-    if (auto sum = withReadableCoefficients(e)) return *sum;
     map.decimals = true;
     return map(e);
 }
