@@ -17,6 +17,7 @@
 #include "core/symbolic/angle_sums.hpp"
 #include "core/symbolic/ginac_kind.hpp"
 #include "core/symbolic/ginac_pairs.hpp"
+#include "core/symbolic/readable_numbers.hpp"
 
 namespace ll::symbolic {
 namespace {
@@ -237,6 +238,7 @@ struct Factor {
     ex base;
     numeric exp;           // numeric; a symbolic power is its own base with exp 1
     bool negated = false;  // a sum shown with its signs flipped (see decompose)
+    int power = 0;         // exp when it is a small positive integer (most are 1 or 2), else 0
 };
 
 // coef · Π num / Π den, the factors in display order.
@@ -249,8 +251,19 @@ struct TermKey {
     std::vector<int> velocities;  // indices of the velocity factors, with repetition
     int maxIndex = -1;            // of every other symbol
     bool trig = false;
-    numeric degree;
+    // The total degree: wholeDegree, plus otherDegree when some factor's degree is not a
+    // small integer (a square root, a power of a sum); numbers compared only then.
+    int wholeDegree = 0;
+    std::optional<numeric> otherDegree;
     std::string text;  // Plain, without the coefficient
+    void addDegree(const numeric& d) {
+        if (d.is_integer() && d.int_length() <= 20) {
+            wholeDegree += d.to_int();
+            return;
+        }
+        otherDegree = otherDegree ? *otherDegree + d : d;
+    }
+    numeric degree() const { return otherDegree ? *otherDegree + wholeDegree : numeric(wholeDegree); }
 };
 
 // Display order of two terms by everything but their coefficients: <0, 0 or >0.
@@ -258,7 +271,11 @@ int compareKeys(const TermKey& a, const TermKey& b) {
     if (a.velocities != b.velocities) return a.velocities < b.velocities ? -1 : 1;
     if (a.maxIndex != b.maxIndex) return a.maxIndex < b.maxIndex ? -1 : 1;
     if (a.trig != b.trig) return a.trig ? 1 : -1;
-    if (a.degree != b.degree) return a.degree < b.degree ? -1 : 1;
+    if (!a.otherDegree && !b.otherDegree) {
+        if (a.wholeDegree != b.wholeDegree) return a.wholeDegree < b.wholeDegree ? -1 : 1;
+    } else if (const numeric da = a.degree(), db = b.degree(); da != db) {
+        return da < db ? -1 : 1;
+    }
     return a.text.compare(b.text);
 }
 
@@ -268,13 +285,19 @@ int compareKeys(const TermKey& a, const TermKey& b) {
 struct TermBody {
     Decomposed d;  // d.coef: the rest's own sign (a negated sum factor's), not the term's
     TermKey key;
+    int sign = 0;  // d.coef as 1 or -1 (0: another number), so a term's coefficient needs no product
 };
 
 struct Term {
     const TermBody* body;  // the number's is numberBody
     numeric coef;          // the term's coefficient; the number itself
-    double keyCoef = 0;    // the last tie-break of the order
     DisplayPtr shown;      // |coefficient| times the factors, built once for every sign the sum shows with
+    // The last tie-break of the order, made when two keys tie (seldom: only equal spellings).
+    mutable std::optional<double> keyCoef;
+    double tieBreak() const {
+        if (!keyCoef) keyCoef = coef.is_real() ? coef.to_double() : 0.0;
+        return *keyCoef;
+    }
     bool negative() const { return coef.is_real() && coef.is_negative(); }
 };
 
@@ -304,6 +327,7 @@ struct SymbolEntry {
     const SymbolInfo* info = nullptr;
     DisplayPtr node;
     const FactorKey* key = nullptr;
+    std::optional<std::string> text;  // its Plain spelling as a factor (a sort key's)
 };
 
 template <class T>
@@ -422,6 +446,9 @@ private:
     std::unordered_map<const DisplayNode*, std::pair<DisplayPtr, std::string>> factorTexts_;
     std::unordered_map<std::uint64_t, DisplayPtr> decimals_;  // a float's node, by its bits
     std::unordered_map<long, DisplayPtr> integers_;      // a machine integer's node
+    const GiNaC::basic* decimalSum_ = nullptr;             // the sum buildReadable shows with readable coefficients
+    std::vector<ShownTerm> decimalTerms_;                  // its terms (not cached by the sum)
+    ExMap<numeric> readable_;                              // readableCoefficient's, by exact value
 
     bool isCoordinate(const std::string& name) const {
         if (o_.coordinateNames.empty()) return startsWith(name, "q") && allDigits(name.substr(1));
@@ -445,7 +472,9 @@ private:
     // long enough to come back as a multiple (the expanded Panda's (C q̇)_i): the rest
     // are freed at once, and their memory serves the next sum.
     const std::vector<ShownTerm>& terms(const ex& sum) {
-        if (auto it = terms_.find(sum); it != terms_.end()) return it->second;
+        const bool decimal = isDecimalSum(sum);
+        if (!decimal)
+            if (auto it = terms_.find(sum); it != terms_.end()) return it->second;
         const GiNaC::add& terms = ex_to<GiNaC::add>(sum);
         const GiNaC::epvector& pairs = GinacPairs::of(terms);
         const bool keep = pairs.size() >= keptBodiesFrom;
@@ -464,13 +493,12 @@ private:
             } else {
                 body = &local.emplace_back(bodyOf(p.rest));
             }
-            Term term{body, body->d.coef * ex_to<numeric>(p.coeff), 0.0, nullptr};
-            term.keyCoef = term.coef.is_real() ? term.coef.to_double() : 0.0;
-            out.push_back(std::move(term));
+            const numeric& k = decimal ? readableCoefficient(p.coeff) : ex_to<numeric>(p.coeff);
+            out.push_back({body, body->sign == 1 ? k : body->sign == -1 ? -k : body->d.coef * k, nullptr, std::nullopt});
         }
         if (const ex& number = GinacPairs::number(terms); !number.is_zero()) {
-            const numeric& n = ex_to<numeric>(number);
-            out.push_back({&numberBody(), n, n.is_real() ? n.to_double() : 0.0, renderNumber(abs(n))});
+            const numeric& n = decimal ? readableCoefficient(number) : ex_to<numeric>(number);
+            out.push_back({&numberBody(), n, renderNumber(abs(n)), std::nullopt});
         }
         // Indices sorted, then each term's node taken once.
         std::vector<std::uint32_t> at(out.size());
@@ -478,7 +506,7 @@ private:
         std::stable_sort(at.begin(), at.end(), [&](std::uint32_t a, std::uint32_t b) {
             const Term &x = out[a], &y = out[b];
             const int c = x.body == y.body ? 0 : compareKeys(x.body->key, y.body->key);
-            return c != 0 ? c < 0 : x.keyCoef < y.keyCoef;
+            return c != 0 ? c < 0 : x.tieBreak() < y.tieBreak();
         });
         // Each shown term's node built once it is known to be shown (a cut sum for pages
         // leaves most of them out).
@@ -492,11 +520,12 @@ private:
             sorted.push_back({std::move(t.shown), t.negative()});
         }
         if (cut) sorted.push_back({displayMoreTerms(out.size() - shown), false, true});
+        if (decimal) return decimalTerms_ = std::move(sorted);
         return terms_.emplace(sum, std::move(sorted)).first->second;
     }
 
     static const TermBody& numberBody() {
-        static const TermBody body{{}, {{}, -1, false, 0, "1"}};
+        static const TermBody body{{}, {{}, -1, false, 0, std::nullopt, "1"}, 1};
         return body;
     }
 
@@ -507,21 +536,25 @@ private:
         for (const Factor& f : b.d.num) {
             if (isKind(f.base, GinacKind::Symbol)) {  // most factors: looked up once, degree 1
                 const SymbolInfo& i = info(ex_to<GiNaC::symbol>(f.base));
-                if (i.kind == Kind::Velocity && f.exp.is_pos_integer())
-                    k.velocities.insert(k.velocities.end(), f.exp.to_int(), i.indices.empty() ? 0 : i.indices.back());
+                if (i.kind == Kind::Velocity && f.power > 0)
+                    k.velocities.insert(k.velocities.end(), f.power, i.indices.empty() ? 0 : i.indices.back());
                 note(i, k);
-                k.degree += f.exp;
+                if (f.power > 0)
+                    k.wholeDegree += f.power;
+                else
+                    k.addDegree(f.exp);
                 continue;
             }
             scan(f.base, k);
-            k.degree += degree(f.base) * f.exp;
+            k.addDegree(degree(f.base) * f.exp);
         }
         for (const Factor& f : b.d.den) {
             scan(f.base, k);
-            k.degree -= degree(f.base) * f.exp;
+            k.addDegree(-degree(f.base) * f.exp);
         }
         std::sort(k.velocities.begin(), k.velocities.end());
         k.text = bodyKeyText(b.d);
+        b.sign = b.d.coef.is_equal(1) ? 1 : b.d.coef.is_equal(-1) ? -1 : 0;
         return b;
     }
 
@@ -535,9 +568,20 @@ private:
         std::string s;
         for (const Factor& f : d.num) {
             if (!s.empty()) s += '*';
+            if (!f.negated && f.power == 1 && isKind(f.base, GinacKind::Symbol)) {  // most factors
+                s += symbolText(ex_to<GiNaC::symbol>(f.base));
+                continue;
+            }
             s += factorText(renderFactor(f));
         }
         return s;
+    }
+
+    // A symbol's spelling as a factor (kept with the symbol, not per expression).
+    const std::string& symbolText(const GiNaC::symbol& sym) {
+        SymbolEntry& e = entry(sym);
+        if (!e.text) e.text = keyText(*renderSymbol(sym));
+        return *e.text;
     }
 
     // (Cached by node; the cache holds the node, so its address is not reused.)
@@ -592,12 +636,10 @@ private:
                 f.negated = true;
                 if (f.exp.is_odd()) d.coef = -d.coef;
             }
-            if (f.exp.is_negative()) {
-                f.exp = -f.exp;
-                d.den.push_back(f);
-            } else {
-                d.num.push_back(f);
-            }
+            const bool below = f.exp.is_negative();
+            if (below) f.exp = -f.exp;
+            if (f.exp.is_pos_integer() && f.exp.int_length() <= 20) f.power = f.exp.to_int();
+            (below ? d.den : d.num).push_back(std::move(f));
         };
         auto one = [&](const ex& x) {
             if (isKind(x, GinacKind::Numeric)) {
@@ -690,7 +732,9 @@ private:
     // renders the sum it then shows.)
     DisplayPtr renderSum(const ex& e, bool negate) {
         ExMap<DisplayPtr>& cache = sums_[negate ? 1 : 0];
-        if (auto it = cache.find(e); it != cache.end()) return it->second;
+        const bool decimal = isDecimalSum(e);
+        if (!decimal)
+            if (auto it = cache.find(e); it != cache.end()) return it->second;
         auto n = std::make_shared<DisplayNode>();
         n->kind = DisplayKind::Sum;
         const std::vector<ShownTerm>& ts = terms(e);
@@ -700,7 +744,44 @@ private:
             n->negative.push_back(!t.more && t.negative != negate);
             n->children.push_back(t.node);
         }
+        if (decimal) return n;
         return cache.emplace(e, std::move(n)).first->second;
+    }
+
+    // ---- readable numbers (core/symbolic/readable_numbers.hpp)
+
+public:
+    // e as readableNumbers(e) shows. When only a sum's coefficients change (a named
+    // quantity's or an expanded entry's), they are read as readableNumber gives them
+    // while the sum is ordered, and the sum is not rebuilt with them; it is then not
+    // cached, as the same sum elsewhere shows its exact numbers.
+    DisplayPtr buildReadable(const ex& e) {
+        switch (readableChange(e)) {
+            case ReadableChange::None: return build(e);
+            case ReadableChange::Everywhere: return build(readableNumbers(e));
+            case ReadableChange::Coefficients: break;
+        }
+        decimalSum_ = &ex_to<GiNaC::basic>(e);
+        DisplayPtr node;
+        try {
+            node = renderSum(e, false);
+        } catch (...) {
+            decimalSum_ = nullptr;
+            throw;
+        }
+        decimalSum_ = nullptr;
+        return node;
+    }
+
+private:
+
+    bool isDecimalSum(const ex& e) const { return decimalSum_ == &ex_to<GiNaC::basic>(e); }
+
+    // A coefficient as readableNumber makes it (each value once: they recur).
+    const numeric& readableCoefficient(const ex& k) {
+        auto [it, added] = readable_.try_emplace(k);
+        if (added) it->second = readableNumber(ex_to<numeric>(k));
+        return it->second;
     }
 
     // ---- numbers
@@ -896,9 +977,9 @@ private:
 
     DisplayPtr renderFactor(const Factor& f) {
         const numeric& k = f.exp;
-        if (f.negated || k == 1) {
+        if (f.negated || f.power == 1) {
             const DisplayPtr b = f.negated ? renderSum(f.base, true) : renderAtom(f.base);
-            if (k == 1) return fenced(b, ProductPrec + 1);
+            if (f.power == 1) return fenced(b, ProductPrec + 1);
             return power(b, f);
         }
         // The same powers (c2², q̇1²) recur in thousands of terms: each is built once.
@@ -964,6 +1045,12 @@ DisplayBuilder::DisplayBuilder(const DisplayOptions& options, Sharing sharing) :
 DisplayBuilder::~DisplayBuilder() { delete impl_; }
 DisplayPtr DisplayBuilder::operator()(const ex& e) {
     DisplayPtr node = impl_->builder.build(e);
+    if (impl_->sharing == Sharing::Symbols) impl_->builder.forgetExpressions();
+    return node;
+}
+
+DisplayPtr DisplayBuilder::readable(const ex& e) {
+    DisplayPtr node = impl_->builder.buildReadable(e);
     if (impl_->sharing == Sharing::Symbols) impl_->builder.forgetExpressions();
     return node;
 }

@@ -56,6 +56,9 @@ public:
     DisplayBuilder(const DisplayBuilder&) = delete;
     DisplayBuilder& operator=(const DisplayBuilder&) = delete;
     DisplayPtr operator()(const GiNaC::ex& e);
+    // The same as (*this)(readableNumbers(e)), without rebuilding e when only its
+    // coefficients change (core/symbolic/readable_numbers.hpp).
+    DisplayPtr readable(const GiNaC::ex& e);
 
 private:
     struct Impl;

@@ -41,17 +41,18 @@ bool anyNumber(const GiNaC::ex& e, bool (*is)(const GiNaC::numeric&)) {
     const GinacKind kind = ginacKind(e);
     if (kind == GinacKind::Numeric) return is(GiNaC::ex_to<GiNaC::numeric>(e));
     if (kind == GinacKind::Add || kind == GinacKind::Mul) {
+        // Most rests are symbols: not walked into. (A pair's coefficient is a number.)
         const auto& seq = GiNaC::ex_to<GiNaC::expairseq>(e);
-        for (const GiNaC::expair& p : GinacPairs::of(seq))
-            if (anyNumber(p.rest, is) || anyNumber(p.coeff, is)) return true;
+        for (const GiNaC::expair& p : GinacPairs::of(seq)) {
+            if (ginacKind(p.rest) != GinacKind::Symbol && anyNumber(p.rest, is)) return true;
+            if (is(GiNaC::ex_to<GiNaC::numeric>(p.coeff))) return true;
+        }
         return anyNumber(GinacPairs::number(seq), is);
     }
     for (std::size_t i = 0; i < e.nops(); ++i)
         if (anyNumber(e.op(i), is)) return true;
     return false;
 }
-
-GiNaC::ex readable(const GiNaC::numeric& v) { return terminates(v) ? v.evalf() : GiNaC::ex(v); }
 
 // A sum whose terms' rests hold no such number (an expanded entry, or a named quantity:
 // monomials with integer powers), with only its coefficients and number made decimal:
@@ -61,25 +62,15 @@ GiNaC::ex withReadableCoefficients(const GiNaC::add& sum) {
     const GiNaC::epvector& pairs = GinacPairs::of(sum);
     GiNaC::epvector shown;
     shown.reserve(pairs.size() + 1);
-    for (const GiNaC::expair& p : pairs) shown.emplace_back(p.rest, readable(GiNaC::ex_to<GiNaC::numeric>(p.coeff)));
-    return GiNaC::ex(GiNaC::dynallocate<GiNaC::add>(std::move(shown), readable(GiNaC::ex_to<GiNaC::numeric>(GinacPairs::number(sum)))));
+    for (const GiNaC::expair& p : pairs) shown.emplace_back(p.rest, readableNumber(GiNaC::ex_to<GiNaC::numeric>(p.coeff)));
+    return GiNaC::ex(GiNaC::dynallocate<GiNaC::add>(std::move(shown), readableNumber(GiNaC::ex_to<GiNaC::numeric>(GinacPairs::number(sum)))));
 }
 
 }  // namespace
 
-GiNaC::ex readableNumbers(const GiNaC::ex& e) {
-    // One number style per expression: once a scene decimal shows (0.1), every fraction
-    // that has a finite decimal form shows as one too (0.2, not 1/5 beside 0.1).
-    struct Map : GiNaC::map_function {
-        bool decimals = false;
-        GiNaC::ex operator()(const GiNaC::ex& x) override {
-            if (GiNaC::is_a<GiNaC::numeric>(x)) {
-                const GiNaC::numeric& v = GiNaC::ex_to<GiNaC::numeric>(x);
-                return (decimals ? terminates(v) : isDecimalFraction(v)) ? GiNaC::ex(v.evalf()) : x;
-            }
-            return x.map(*this);
-        }
-    } map;
+GiNaC::numeric readableNumber(const GiNaC::numeric& v) { return terminates(v) ? GiNaC::ex_to<GiNaC::numeric>(v.evalf()) : v; }
+
+ReadableChange readableChange(const GiNaC::ex& e) {
     // Without a scene decimal nothing changes (only decimal fractions would): GiNaC's map
     // rebuilds every sum and product it walks, so not walking is most of the saving.
     // A sum (most expressions printed) is read in one walk: its rests for any finite
@@ -93,15 +84,29 @@ GiNaC::ex readableNumbers(const GiNaC::ex& e) {
                 break;
             }
         if (!restsTerminate) {
-            bool decimal = isDecimalFraction(GiNaC::ex_to<GiNaC::numeric>(GinacPairs::number(sum)));
+            if (isDecimalFraction(GiNaC::ex_to<GiNaC::numeric>(GinacPairs::number(sum)))) return ReadableChange::Coefficients;
             for (const GiNaC::expair& p : GinacPairs::of(sum))
-                if (decimal) break;
-                else decimal = isDecimalFraction(GiNaC::ex_to<GiNaC::numeric>(p.coeff));
-            return decimal ? withReadableCoefficients(sum) : e;
+                if (isDecimalFraction(GiNaC::ex_to<GiNaC::numeric>(p.coeff))) return ReadableChange::Coefficients;
+            return ReadableChange::None;
         }
     }
-    if (!anyNumber(e, isDecimalFraction)) return e;
-    map.decimals = true;
+    return anyNumber(e, isDecimalFraction) ? ReadableChange::Everywhere : ReadableChange::None;
+}
+
+GiNaC::ex readableNumbers(const GiNaC::ex& e) {
+    // One number style per expression: once a scene decimal shows (0.1), every fraction
+    // that has a finite decimal form shows as one too (0.2, not 1/5 beside 0.1).
+    struct Map : GiNaC::map_function {
+        GiNaC::ex operator()(const GiNaC::ex& x) override {
+            if (GiNaC::is_a<GiNaC::numeric>(x)) return readableNumber(GiNaC::ex_to<GiNaC::numeric>(x));
+            return x.map(*this);
+        }
+    } map;
+    switch (readableChange(e)) {
+        case ReadableChange::None: return e;
+        case ReadableChange::Coefficients: return withReadableCoefficients(GiNaC::ex_to<GiNaC::add>(e));
+        case ReadableChange::Everywhere: break;
+    }
     return map(e);
 }
 

@@ -163,7 +163,7 @@ std::shared_ptr<const DisplayDocument> structuredDisplayDocument(const Structure
         DisplayItem it;
         it.name = name;
         it.latexName = renderDisplay(*label, DisplayStyle::Latex);
-        it.value = build(readableNumbers(value));
+        it.value = build.readable(value);
         it.equation = displayEquation(label, it.value);
         it.note = std::move(note);
         return it;

@@ -46,6 +46,8 @@ public:
     Printer(const Printer&) = delete;
     Printer& operator=(const Printer&) = delete;
     std::string operator()(const GiNaC::ex& e) { return renderDisplay(*(*build_)(e), style_); }
+    // e with its decimal scene numbers as decimals (readableNumbers).
+    std::string readable(const GiNaC::ex& e) { return renderDisplay(*build_->readable(e), style_); }
 
 private:
     std::shared_ptr<DisplayBuilder> build_;
@@ -215,13 +217,13 @@ void writeText(const StructuredDynamics& s, const StructuredDocumentInfo& info, 
     forEachDefinition(
         s, sel, [&](int step) { out << "\nStep " << step << ". " << stepTitle(step) << "\n"; },
         [&](const NamedDefinition& d) {
-            out << "    " << d.name << " = " << text(readableNumbers(d.value)) << "        (" << d.meaning << "; depends on "
+            out << "    " << d.name << " = " << text.readable(d.value) << "        (" << d.meaning << "; depends on "
                 << coordinateList(d.coordinates, s.n) << ")\n";
         });
     if (!sel.entries.empty()) out << "\nResults over the names\n";
     for (const EntryRef& e : sel.entries)
         out << "    " << (e.matrix == 'B' ? "b" : e.matrix == 'C' ? "c" : "g") << e.label.substr(1) << " = "
-            << text(readableNumbers(valueOf(s, e))) << "        (" << entryMeaning(s, e) << ")\n";
+            << text.readable(valueOf(s, e)) << "        (" << entryMeaning(s, e) << ")\n";
     if (sel.checks) {
         const int n = s.n, total = n * n * (n + 1) / 2;
         out << "\nZero pattern of d b_jk / d q_l (j <= k; x: non-zero): " << s.nonZeroMassDerivatives() << " of " << total
@@ -231,7 +233,7 @@ void writeText(const StructuredDynamics& s, const StructuredDocumentInfo& info, 
             << (skewSymmetric(s) ? "skew-symmetric (checked)" : "NOT skew-symmetric") << "\n";
     }
     for (const ExpandedEntry& e : info.expanded)
-        out << "\nExpanded " << e.ref.label << " (" << e.terms << " terms, " << e.seconds << " s):\n    " << text(readableNumbers(e.value)) << "\n";
+        out << "\nExpanded " << e.ref.label << " (" << e.terms << " terms, " << e.seconds << " s):\n    " << text.readable(e.value) << "\n";
 }
 
 // Each definition is a paragraph of inline math, which TeX breaks after a + or − when
@@ -261,12 +263,12 @@ void writeLatex(const StructuredDynamics& s, const StructuredDocumentInfo& info,
     forEachDefinition(
         s, sel, [&](int step) { out << "\\section*{Step " << step << "}\n" << latexStepTitle(step) << "\n\\medskip\n"; },
         [&](const NamedDefinition& d) {
-            out << "\\lldefinition{$" << latex(d.symbol) << " = " << latex(readableNumbers(d.value)) << "$}{$" << d.latex
+            out << "\\lldefinition{$" << latex(d.symbol) << " = " << latex.readable(d.value) << "$}{$" << d.latex
                 << "$: " << latexText(d.meaning) << "; depends on " << latexCoordinateList(d.coordinates, s.n) << "}\n";
         });
     if (!sel.entries.empty()) out << "\\section*{Results over the names}\n";
     for (const EntryRef& e : sel.entries)
-        out << "\\lldefinition{$" << entryName(e) << " = " << latex(readableNumbers(valueOf(s, e))) << "$}{"
+        out << "\\lldefinition{$" << entryName(e) << " = " << latex.readable(valueOf(s, e)) << "$}{"
             << latexEntryMeaning(s, e) << "}\n";
     if (sel.checks) {
         const int n = s.n;
@@ -275,7 +277,7 @@ void writeLatex(const StructuredDynamics& s, const StructuredDocumentInfo& info,
             << "$\\dot B - 2C$ is " << (skewSymmetric(s) ? "skew-symmetric (checked over the names)" : "not skew-symmetric") << ".\n";
     }
     for (const ExpandedEntry& e : info.expanded)
-        out << "\\paragraph{Expanded $" << entryName(e.ref) << "$} (" << e.terms << " terms)\n\n$" << latex(readableNumbers(e.value))
+        out << "\\paragraph{Expanded $" << entryName(e.ref) << "$} (" << e.terms << " terms)\n\n$" << latex.readable(e.value)
             << "$\n";
     out << "\\end{document}\n";
 }
