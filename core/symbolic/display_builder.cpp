@@ -10,6 +10,7 @@
 #include <map>
 #include <optional>
 #include <sstream>
+#include <string_view>
 #include <tuple>
 #include <unordered_map>
 #include <utility>
@@ -54,7 +55,8 @@ constexpr Greek greekLetters[] = {
     {"Upsilon", "Υ", "\\Upsilon"}, {"Phi", "Φ", "\\Phi"},         {"Psi", "Ψ", "\\Psi"},
     {"Omega", "Ω", "\\Omega"},
 };
-const Greek* greek(const std::string& letters) {
+const Greek* greek(std::string_view letters) {
+    if (letters.size() < 2 || letters.size() > 10) return nullptr;  // mu .. varepsilon
     for (const Greek& g : greekLetters)
         if (letters == g.name) return &g;
     return nullptr;
@@ -234,11 +236,14 @@ std::string seventeen(double v) {
 using Prec = int;  // displayPrecedence
 constexpr Prec SumPrec = 0, ProductPrec = 1, AtomPrec = 3;
 
+struct SymbolEntry;
+
 struct Factor {
     ex base;
-    numeric exp;           // numeric; a symbolic power is its own base with exp 1
-    bool negated = false;  // a sum shown with its signs flipped (see decompose)
-    int power = 0;         // exp when it is a small positive integer (most are 1 or 2), else 0
+    numeric exp;                    // numeric; a symbolic power is its own base with exp 1
+    bool negated = false;           // a sum shown with its signs flipped (see decompose)
+    int power = 0;                  // exp when it is a small positive integer (most are 1 or 2), else 0
+    SymbolEntry* symbol = nullptr;  // the base's entry, when it is a symbol (Builder::entry)
 };
 
 // coef · Π num / Π den, the factors in display order.
@@ -323,11 +328,12 @@ struct FactorKey {
 // What the builder keeps of a symbol (Builder::entry): its info, node and factor key,
 // each made when first asked for.
 struct SymbolEntry {
-    ex held;
+    ex held;  // the symbol
     const SymbolInfo* info = nullptr;
     DisplayPtr node;
     const FactorKey* key = nullptr;
     std::optional<std::string> text;  // its Plain spelling as a factor (a sort key's)
+    std::string name() const { return ex_to<GiNaC::symbol>(held).get_name(); }
 };
 
 template <class T>
@@ -366,9 +372,9 @@ public:
         return negated(renderProduct(d));
     }
 
-    const SymbolInfo& info(const GiNaC::symbol& s) {
-        SymbolEntry& e = entry(s);
-        if (!e.info) e.info = &infoByName(s.get_name());
+    const SymbolInfo& info(const GiNaC::symbol& s) { return info(entry(s)); }
+    const SymbolInfo& info(SymbolEntry& e) {
+        if (!e.info) e.info = &infoByName(e.name());
         return *e.info;
     }
 
@@ -436,7 +442,13 @@ private:
     std::map<std::string, DisplayPtr> symbols_;
     std::map<std::string, FactorKey> symbolKeys_;
     std::unordered_map<const GiNaC::basic*, SymbolEntry> byObject_;
-    SymbolEntry unheld_;
+    std::map<std::string, SymbolEntry> unheld_;  // symbols no expression holds, by name
+
+    SymbolEntry& unheld(const GiNaC::symbol& s) {
+        auto [it, added] = unheld_.try_emplace(s.get_name());
+        if (added) it->second.held = s;  // a copy: the entry's own
+        return it->second;
+    }
     ExMap<std::vector<ShownTerm>> terms_;
     ExMap<TermBody> bodies_;  // by a term's rest, for the terms of sums of keptBodiesFrom terms or more
     ExMap<FactorKey> factorKeys_[2];  // by negated
@@ -534,8 +546,8 @@ private:
         TermKey& k = b.key;
         // From the factors, not the term: walking a GiNaC product makes each power anew.
         for (const Factor& f : b.d.num) {
-            if (isKind(f.base, GinacKind::Symbol)) {  // most factors: looked up once, degree 1
-                const SymbolInfo& i = info(ex_to<GiNaC::symbol>(f.base));
+            if (f.symbol) {  // most factors: looked up once, degree 1
+                const SymbolInfo& i = info(*f.symbol);
                 if (i.kind == Kind::Velocity && f.power > 0)
                     k.velocities.insert(k.velocities.end(), f.power, i.indices.empty() ? 0 : i.indices.back());
                 note(i, k);
@@ -568,8 +580,8 @@ private:
         std::string s;
         for (const Factor& f : d.num) {
             if (!s.empty()) s += '*';
-            if (!f.negated && f.power == 1 && isKind(f.base, GinacKind::Symbol)) {  // most factors
-                s += symbolText(ex_to<GiNaC::symbol>(f.base));
+            if (f.symbol && f.power == 1) {  // most factors
+                s += symbolText(*f.symbol);
                 continue;
             }
             s += factorText(renderFactor(f));
@@ -578,9 +590,8 @@ private:
     }
 
     // A symbol's spelling as a factor (kept with the symbol, not per expression).
-    const std::string& symbolText(const GiNaC::symbol& sym) {
-        SymbolEntry& e = entry(sym);
-        if (!e.text) e.text = keyText(*renderSymbol(sym));
+    const std::string& symbolText(SymbolEntry& e) {
+        if (!e.text) e.text = keyText(*renderSymbol(e));
         return *e.text;
     }
 
@@ -636,6 +647,7 @@ private:
                 f.negated = true;
                 if (f.exp.is_odd()) d.coef = -d.coef;
             }
+            if (isKind(f.base, GinacKind::Symbol)) f.symbol = &entry(ex_to<GiNaC::symbol>(f.base));
             const bool below = f.exp.is_negative();
             if (below) f.exp = -f.exp;
             if (f.exp.is_pos_integer() && f.exp.int_length() <= 20) f.power = f.exp.to_int();
@@ -697,13 +709,12 @@ private:
     // (A reference into a cache: node-based maps keep their elements in place.)
     const FactorKey& factorKey(const Factor& f) {
         const ex& b = f.base;
-        if (isKind(b, GinacKind::Symbol)) {
-            const GiNaC::symbol& sym = ex_to<GiNaC::symbol>(b);
-            SymbolEntry& e = entry(sym);
+        if (f.symbol) {
+            SymbolEntry& e = *f.symbol;
             if (e.key) return *e.key;
-            const std::string name = sym.get_name();
+            const std::string name = e.name();
             if (auto it = symbolKeys_.find(name); it != symbolKeys_.end()) return *(e.key = &it->second);
-            const SymbolInfo& i = info(sym);
+            const SymbolInfo& i = info(e);
             static const int rank[] = {1, 2, 3, 4, 7};  // by Kind; functions 5, sums 6
             std::vector<int> sub = i.indices.empty() ? std::vector<int>{INT_MAX} : i.indices;
             if (i.trig) sub.push_back(i.trig->kind == 'c' ? 0 : 1);  // c1 before s1
@@ -822,9 +833,9 @@ private:
 
     // ---- atoms
 
-    DisplayPtr renderSymbol(const GiNaC::symbol& sym) {
-        SymbolEntry& e = entry(sym);
-        if (!e.node) e.node = namedNode(sym);
+    DisplayPtr renderSymbol(const GiNaC::symbol& sym) { return renderSymbol(entry(sym)); }
+    DisplayPtr renderSymbol(SymbolEntry& e) {
+        if (!e.node) e.node = namedNode(e);
         return e.node;
     }
 
@@ -832,26 +843,26 @@ private:
     // all the copies of an expression that name the symbol, so most lookups are one
     // pointer hashed, with no name copied (get_name returns a copy) or compared. The
     // entry holds the object, so its address is not reused while the entry lives. A
-    // symbol no expression holds (on the stack) has an entry only until the next lookup.
+    // symbol no expression holds (on the stack) has its entry by name.
     SymbolEntry& entry(const GiNaC::symbol& s) {
-        if (s.get_refcount() == 0) return unheld_ = SymbolEntry{};
+        if (s.get_refcount() == 0) return unheld(s);
         auto [it, added] = byObject_.try_emplace(&s);
         if (added) {
             it->second.held = s;  // on the heap (counted), so shared, not copied
             if (&ex_to<GiNaC::basic>(it->second.held) != &s) {  // copied after all: not cached
                 byObject_.erase(it);
-                return unheld_ = SymbolEntry{};
+                return unheld(s);
             }
         }
         return it->second;
     }
 
-    DisplayPtr namedNode(const GiNaC::symbol& sym) {
-        const std::string& name = sym.get_name();
+    DisplayPtr namedNode(SymbolEntry& e) {
+        const std::string name = e.name();
         if (auto it = symbols_.find(name); it != symbols_.end()) return it->second;
         if (o_.givenSymbols)
             if (auto it = o_.givenSymbols->find(name); it != o_.givenSymbols->end()) return symbols_[name] = it->second;
-        const SymbolInfo& i = info(sym);
+        const SymbolInfo& i = info(e);
         std::shared_ptr<DisplayNode> n;
         if (i.kind == Kind::Trig) {
             n = std::make_shared<DisplayNode>();
@@ -978,7 +989,7 @@ private:
     DisplayPtr renderFactor(const Factor& f) {
         const numeric& k = f.exp;
         if (f.negated || f.power == 1) {
-            const DisplayPtr b = f.negated ? renderSum(f.base, true) : renderAtom(f.base);
+            const DisplayPtr b = f.negated ? renderSum(f.base, true) : f.symbol ? renderSymbol(*f.symbol) : renderAtom(f.base);
             if (f.power == 1) return fenced(b, ProductPrec + 1);
             return power(b, f);
         }
@@ -986,7 +997,7 @@ private:
         std::vector<std::pair<numeric, DisplayPtr>>& shown = powers_[f.base];
         for (const auto& [exponent, node] : shown)
             if (exponent == k) return node;
-        DisplayPtr node = power(renderAtom(f.base), f);
+        DisplayPtr node = power(f.symbol ? renderSymbol(*f.symbol) : renderAtom(f.base), f);
         shown.emplace_back(k, node);
         return node;
     }
