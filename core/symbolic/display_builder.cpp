@@ -666,12 +666,19 @@ private:
             // Its (base, exponent) pairs in place, in op()'s order, then its coefficient.
             const GiNaC::epvector& pairs = GinacPairs::of(ex_to<GiNaC::mul>(e));
             d.num.reserve(pairs.size());  // grown one factor at a time, a term allocated four times
+            static const numeric unit(1);
             for (const GiNaC::expair& p : pairs) {
                 const numeric& k = ex_to<numeric>(p.coeff);
-                if (k.is_equal(1) || !k.is_real())
-                    one(k.is_equal(1) ? p.rest : GiNaC::pow(p.rest, p.coeff));  // as op() gives it
-                else
+                const bool once = k.is_equal(unit);
+                if (once && isKind(p.rest, GinacKind::Symbol)) {  // most factors: a symbol to the first power
+                    Factor& f = d.num.emplace_back(Factor{p.rest, k});
+                    f.power = 1;
+                    f.symbol = &entry(ex_to<GiNaC::symbol>(p.rest));
+                } else if (once || !k.is_real()) {
+                    one(once ? p.rest : GiNaC::pow(p.rest, p.coeff));  // as op() gives it
+                } else {
                     factor({p.rest, k});
+                }
             }
             d.coef *= ex_to<numeric>(GinacPairs::number(ex_to<GiNaC::mul>(e)));
         } else {
