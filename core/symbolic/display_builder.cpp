@@ -27,13 +27,13 @@ using GiNaC::ex, GiNaC::ex_to, GiNaC::is_a, GiNaC::numeric;
 
 // ---------------------------------------------------------------- names
 
-bool allDigits(const std::string& s) {
+// (Views: these run on every symbol name a document shows, and made strings of their
+// literals and substrings.)
+bool allDigits(std::string_view s) {
     return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
 }
-bool startsWith(const std::string& s, const std::string& p) { return s.compare(0, p.size(), p) == 0; }
-bool endsWith(const std::string& s, const std::string& p) {
-    return s.size() >= p.size() && s.compare(s.size() - p.size(), p.size(), p) == 0;
-}
+bool startsWith(std::string_view s, std::string_view p) { return s.starts_with(p); }
+bool endsWith(std::string_view s, std::string_view p) { return s.ends_with(p); }
 
 struct Greek {
     const char* name;
@@ -62,7 +62,7 @@ const Greek* greek(std::string_view letters) {
     return nullptr;
 }
 
-std::string letterPrefix(const std::string& name) {
+std::string_view letterPrefix(std::string_view name) {
     std::size_t i = 0;
     while (i < name.size() && std::isalpha(static_cast<unsigned char>(name[i]))) ++i;
     return name.substr(0, i);
@@ -70,18 +70,18 @@ std::string letterPrefix(const std::string& name) {
 
 // For \mathrm{}: escapes what LaTeX would read as markup; ^ ~ \ have no math-mode
 // form there and are left out (GiNaC symbol names from scenes are identifiers anyway).
-std::string latexEscape(const std::string& s) {
+std::string latexEscape(std::string_view s) {
     std::string out;
     for (char c : s) {
         if (c == '^' || c == '~' || c == '\\') continue;
-        if (std::string("_#%&${}").find(c) != std::string::npos) out += '\\';
+        if (std::string_view("_#%&${}").find(c) != std::string_view::npos) out += '\\';
         out += c;
     }
     return out;
 }
 
 // One piece of a subscript: 1, c, \alpha, \mathrm{cart}.
-std::string latexSubscriptPiece(const std::string& piece) {
+std::string latexSubscriptPiece(std::string_view piece) {
     if (allDigits(piece) || piece.size() == 1) return latexEscape(piece);
     if (const Greek* g = greek(piece)) return g->latex;
     return "\\mathrm{" + latexEscape(piece) + "}";
@@ -93,35 +93,43 @@ struct LatexName {
 };
 
 // theta1 → \theta_{1}, lc2 → \ell_{c2}, Ixx1 → I_{xx,1}, xc1 → x_{c1}, m_cart → m_{\mathrm{cart}}.
-LatexName latexName(const std::string& name) {
-    static const char* inertia[] = {"Ixx", "Iyy", "Izz", "Ixy", "Ixz", "Iyz"};
-    for (const char* p : inertia)
-        if (startsWith(name, p) && allDigits(name.substr(3))) return {"I", name.substr(1, 2) + "," + name.substr(3)};
-    if (startsWith(name, "lc") && allDigits(name.substr(2))) return {"\\ell", name.substr(1)};
-    if (const auto underscore = name.find('_'); underscore != std::string::npos && underscore > 0) {
+LatexName latexName(std::string_view name) {
+    static constexpr std::string_view inertia[] = {"Ixx", "Iyy", "Izz", "Ixy", "Ixz", "Iyz"};
+    for (std::string_view p : inertia)
+        if (startsWith(name, p) && allDigits(name.substr(3))) {
+            std::string sub(name.substr(1, 2));
+            sub += ',';
+            sub += name.substr(3);
+            return {"I", std::move(sub)};
+        }
+    if (startsWith(name, "lc") && allDigits(name.substr(2))) return {"\\ell", std::string(name.substr(1))};
+    if (const auto underscore = name.find('_'); underscore != std::string_view::npos && underscore > 0) {
         LatexName base = latexName(name.substr(0, underscore));
-        std::string rest = name.substr(underscore + 1), sub;
+        const std::string_view rest = name.substr(underscore + 1);
+        std::string sub;
         for (std::size_t start = 0; start <= rest.size();) {
             const std::size_t end = std::min(rest.find('_', start), rest.size());
-            sub += (sub.empty() ? "" : ",") + latexSubscriptPiece(rest.substr(start, end - start));
+            if (!sub.empty()) sub += ',';
+            sub += latexSubscriptPiece(rest.substr(start, end - start));
             start = end + 1;
         }
-        base.sub += (base.sub.empty() ? "" : ",") + sub;
+        if (!base.sub.empty()) base.sub += ',';
+        base.sub += sub;
         return base;
     }
-    const std::string letters = letterPrefix(name), rest = name.substr(letters.size());
+    const std::string_view letters = letterPrefix(name), rest = name.substr(letters.size());
     if (letters.empty() || !(rest.empty() || allDigits(rest))) return {"\\mathrm{" + latexEscape(name) + "}", "", true};
-    if (const Greek* g = greek(letters)) return {g->latex, rest};
-    if (letters.size() == 1) return {letters, rest};
+    if (const Greek* g = greek(letters)) return {g->latex, std::string(rest)};
+    if (letters.size() == 1) return {std::string(letters), std::string(rest)};
     if (letters.size() == 2 && std::islower(static_cast<unsigned char>(letters[1])) && !rest.empty())
-        return {letters.substr(0, 1), letters.substr(1) + rest};  // xc1, Fc1, vs1
-    return {"\\mathrm{" + letters + "}", rest, true};
+        return {std::string(letters.substr(0, 1)), std::string(letters.substr(1)) + std::string(rest)};  // xc1, Fc1, vs1
+    return {"\\mathrm{" + std::string(letters) + "}", std::string(rest), true};
 }
 
 // θ1, ℓc2.
 std::string textName(const std::string& name) {
-    if (startsWith(name, "lc") && allDigits(name.substr(2))) return "ℓ" + name.substr(1);
-    const std::string letters = letterPrefix(name);
+    if (startsWith(name, "lc") && allDigits(std::string_view(name).substr(2))) return "ℓ" + name.substr(1);
+    const std::string_view letters = letterPrefix(name);
     if (const Greek* g = greek(letters)) return g->text + name.substr(letters.size());
     return name;
 }
@@ -333,6 +341,12 @@ struct SymbolEntry {
     DisplayPtr node;
     const FactorKey* key = nullptr;
     std::optional<std::string> text;  // its Plain spelling as a factor (a sort key's)
+    struct Power {
+        int exponent;
+        DisplayPtr node;
+        std::optional<std::string> text;  // Plain, as a factor
+    };
+    std::vector<Power> powers;  // its small powers shown: s2², q̇1²
     std::string name() const { return ex_to<GiNaC::symbol>(held).get_name(); }
 };
 
@@ -394,11 +408,11 @@ public:
             }
         }
         std::string stem = name;
-        if (startsWith(name, "qdd") && allDigits(name.substr(3))) {  // accelerations: q̈1
+        if (startsWith(name, "qdd") && allDigits(std::string_view(name).substr(3))) {  // accelerations: q̈1
             i.kind = Kind::Velocity;
             i.second = true;
             stem = i.base = "q" + name.substr(3);
-        } else if (startsWith(name, "qd") && allDigits(name.substr(2))) {
+        } else if (startsWith(name, "qd") && allDigits(std::string_view(name).substr(2))) {
             i.kind = Kind::Velocity;
             stem = i.base = "q" + name.substr(2);
         } else if (endsWith(name, "_dot") || endsWith(name, "_ddot")) {
@@ -407,7 +421,7 @@ public:
             stem = i.base = name.substr(0, name.size() - (i.second ? 5 : 4));
         } else if (isCoordinate(name)) {
             i.kind = Kind::Coordinate;
-        } else if (name == "m" || (startsWith(name, "m") && (allDigits(name.substr(1)) || name[1] == '_'))) {
+        } else if (name == "m" || (startsWith(name, "m") && (allDigits(std::string_view(name).substr(1)) || name[1] == '_'))) {
             i.kind = Kind::Mass;
         }
         const auto at = std::find(o_.coordinateNames.begin(), o_.coordinateNames.end(), stem);
@@ -463,7 +477,7 @@ private:
     ExMap<numeric> readable_;                              // readableCoefficient's, by exact value
 
     bool isCoordinate(const std::string& name) const {
-        if (o_.coordinateNames.empty()) return startsWith(name, "q") && allDigits(name.substr(1));
+        if (o_.coordinateNames.empty()) return startsWith(name, "q") && allDigits(std::string_view(name).substr(1));
         return std::find(o_.coordinateNames.begin(), o_.coordinateNames.end(), name) != o_.coordinateNames.end();
     }
 
@@ -566,7 +580,8 @@ private:
         }
         std::sort(k.velocities.begin(), k.velocities.end());
         k.text = bodyKeyText(b.d);
-        b.sign = b.d.coef.is_equal(1) ? 1 : b.d.coef.is_equal(-1) ? -1 : 0;
+        static const numeric unit(1), minusUnit(-1);
+        b.sign = !b.d.coef.is_integer() ? 0 : b.d.coef.is_equal(unit) ? 1 : b.d.coef.is_equal(minusUnit) ? -1 : 0;
         return b;
     }
 
@@ -582,6 +597,12 @@ private:
             if (!s.empty()) s += '*';
             if (f.symbol && f.power == 1) {  // most factors
                 s += symbolText(*f.symbol);
+                continue;
+            }
+            if (f.symbol && f.power > 1) {
+                SymbolEntry::Power& p = symbolPower(f);
+                if (!p.text) p.text = keyText(*p.node);
+                s += *p.text;
                 continue;
             }
             s += factorText(renderFactor(f));
@@ -1000,13 +1021,22 @@ private:
             if (f.power == 1) return fenced(b, ProductPrec + 1);
             return power(b, f);
         }
-        // The same powers (c2², q̇1²) recur in thousands of terms: each is built once.
+        // The same powers (c2², q̇1²) recur in thousands of terms: each is built once, a
+        // symbol's small powers once for the builder, others once per expression.
+        if (f.symbol && f.power > 1) return symbolPower(f).node;
         std::vector<std::pair<numeric, DisplayPtr>>& shown = powers_[f.base];
         for (const auto& [exponent, node] : shown)
             if (exponent == k) return node;
         DisplayPtr node = power(f.symbol ? renderSymbol(*f.symbol) : renderAtom(f.base), f);
         shown.emplace_back(k, node);
         return node;
+    }
+
+    // A symbol's small power f (kept with the symbol).
+    SymbolEntry::Power& symbolPower(const Factor& f) {
+        for (SymbolEntry::Power& p : f.symbol->powers)
+            if (p.exponent == f.power) return p;
+        return f.symbol->powers.emplace_back(SymbolEntry::Power{f.power, power(renderSymbol(*f.symbol), f), std::nullopt});
     }
 
     DisplayPtr power(const DisplayPtr& b, const Factor& f) {
@@ -1038,7 +1068,10 @@ private:
         std::vector<DisplayPtr> num, den;
         num.reserve(d.num.size() + 1);
         if (d.den.empty() || !c.is_rational()) {
-            if (c != 1) num.push_back(renderNumber(c));  // 2, 1/2, 0.5 in front
+            // 2, 1/2, 0.5 in front. (A float compared with 1 is converted by cln: only
+            // an integer can be 1.)
+            static const numeric unit(1);
+            if (!c.is_integer() || !c.is_equal(unit)) num.push_back(renderNumber(c));
         } else {
             if (c.numer() != 1) num.push_back(renderNumber(c.numer()));
             if (c.denom() != 1) den.push_back(renderNumber(c.denom()));

@@ -73,8 +73,10 @@ private:
     const std::atomic<bool>* cancel_ = nullptr;
     std::vector<NamedDefinition> entries_;
     std::unordered_map<GiNaC::ex, int, std::hash<GiNaC::ex>, GiNaC::ex_is_equal> byValue_;
-    std::map<GiNaC::ex, int, GiNaC::ex_is_less> bySymbol_;
-    std::map<GiNaC::ex, int, GiNaC::ex_is_less> coordinateOf_;  // q_k, c_k, s_k → k
+    // By symbol, hashed (a symbol's hash is its serial number's): a std::map compared
+    // symbols through GiNaC's compare, type check first, at every step of every lookup.
+    std::unordered_map<GiNaC::ex, int, std::hash<GiNaC::ex>, GiNaC::ex_is_equal> bySymbol_;
+    std::unordered_map<GiNaC::ex, int, std::hash<GiNaC::ex>, GiNaC::ex_is_equal> coordinateOf_;  // q_k, c_k, s_k → k
     std::vector<GiNaC::ex> unfolded_;                            // memo of unfold, per entry
     std::vector<bool> isUnfolded_;
 };
