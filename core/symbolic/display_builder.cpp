@@ -350,6 +350,16 @@ struct SymbolEntry {
     std::string name() const { return ex_to<GiNaC::symbol>(held).get_name(); }
 };
 
+// Whether e is the number 1: GiNaC's products hold its one shared 1 (ex(1) is it), so
+// mostly a pointer compared.
+bool isOne(const ex& e) {
+    static const GiNaC::basic* const one = &ex_to<GiNaC::basic>(ex(1));
+    const GiNaC::basic* b = &ex_to<GiNaC::basic>(e);
+    if (b == one) return true;
+    static const numeric unit(1);
+    return ginacKind(e) == GinacKind::Numeric && ex_to<numeric>(e).is_integer() && ex_to<numeric>(e).is_equal(unit);
+}
+
 template <class T>
 using ExMap = std::unordered_map<ex, T, std::hash<ex>, GiNaC::ex_is_equal>;
 
@@ -687,10 +697,9 @@ private:
             // Its (base, exponent) pairs in place, in op()'s order, then its coefficient.
             const GiNaC::epvector& pairs = GinacPairs::of(ex_to<GiNaC::mul>(e));
             d.num.reserve(pairs.size());  // grown one factor at a time, a term allocated four times
-            static const numeric unit(1);
             for (const GiNaC::expair& p : pairs) {
                 const numeric& k = ex_to<numeric>(p.coeff);
-                const bool once = k.is_equal(unit);
+                const bool once = isOne(p.coeff);
                 if (once && isKind(p.rest, GinacKind::Symbol)) {  // most factors: a symbol to the first power
                     Factor& f = d.num.emplace_back(Factor{p.rest, k});
                     f.power = 1;
@@ -701,7 +710,7 @@ private:
                     factor({p.rest, k});
                 }
             }
-            d.coef *= ex_to<numeric>(GinacPairs::number(ex_to<GiNaC::mul>(e)));
+            if (const ex& c = GinacPairs::number(ex_to<GiNaC::mul>(e)); !isOne(c)) d.coef *= ex_to<numeric>(c);
         } else {
             one(e);
         }
