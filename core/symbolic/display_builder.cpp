@@ -482,6 +482,7 @@ private:
     std::unordered_map<const DisplayNode*, std::pair<DisplayPtr, std::string>> factorTexts_;
     std::unordered_map<std::uint64_t, DisplayPtr> decimals_;  // a float's node, by its bits
     std::unordered_map<long, DisplayPtr> integers_;      // a machine integer's node
+    std::map<std::pair<long, long>, DisplayPtr> fractions_;  // a fraction of machine integers' node
     const GiNaC::basic* decimalSum_ = nullptr;             // the sum buildReadable shows with readable coefficients
     std::vector<ShownTerm> decimalTerms_;                  // its terms (not cached by the sum)
     ExMap<numeric> readable_;                              // readableCoefficient's, by exact value
@@ -852,8 +853,14 @@ private:
             if (small) integers_.emplace(n.to_long(), node);
             return node;
         }
-        if (n.is_rational())
-            return displayNode(DisplayKind::Fraction, {renderNumber(n.numer()), renderNumber(n.denom())});
+        if (n.is_rational()) {
+            const numeric numer = n.numer(), denom = n.denom();
+            if (numer.int_length() >= 63 || denom.int_length() >= 63)
+                return displayNode(DisplayKind::Fraction, {renderNumber(numer), renderNumber(denom)});
+            const std::pair<long, long> key{numer.to_long(), denom.to_long()};  // ½ in every c_ij: built once
+            if (auto it = fractions_.find(key); it != fractions_.end()) return it->second;
+            return fractions_[key] = displayNode(DisplayKind::Fraction, {renderNumber(numer), renderNumber(denom)});
+        }
         const double v = n.to_double();
         const auto bits = std::bit_cast<std::uint64_t>(v);
         if (auto it = decimals_.find(bits); it != decimals_.end()) return it->second;
