@@ -264,19 +264,26 @@ struct TermKey {
     std::vector<int> velocities;  // indices of the velocity factors, with repetition
     int maxIndex = -1;            // of every other symbol
     bool trig = false;
-    // The total degree: wholeDegree, plus otherDegree when some factor's degree is not a
-    // small integer (a square root, a power of a sum); numbers compared only then.
+    // The total degree: an integer while every factor's is a small integer; from the
+    // first that is not (a square root, a float power) on, a number that every part is
+    // added to in the factors' order, as the sum was always made (float sums depend on it).
     int wholeDegree = 0;
-    std::optional<numeric> otherDegree;
+    std::optional<numeric> degreeSum;
     std::string text;  // Plain, without the coefficient
+    void addDegree(int d) {
+        if (degreeSum)
+            *degreeSum += d;
+        else
+            wholeDegree += d;
+    }
     void addDegree(const numeric& d) {
-        if (d.is_integer() && d.int_length() <= 20) {
+        if (!degreeSum && d.is_integer() && d.int_length() <= 20) {
             wholeDegree += d.to_int();
             return;
         }
-        otherDegree = otherDegree ? *otherDegree + d : d;
+        degreeSum = degreeSum ? *degreeSum + d : numeric(wholeDegree) + d;
     }
-    numeric degree() const { return otherDegree ? *otherDegree + wholeDegree : numeric(wholeDegree); }
+    numeric degree() const { return degreeSum ? *degreeSum : numeric(wholeDegree); }
 };
 
 // Display order of two terms by everything but their coefficients: <0, 0 or >0.
@@ -284,7 +291,7 @@ int compareKeys(const TermKey& a, const TermKey& b) {
     if (a.velocities != b.velocities) return a.velocities < b.velocities ? -1 : 1;
     if (a.maxIndex != b.maxIndex) return a.maxIndex < b.maxIndex ? -1 : 1;
     if (a.trig != b.trig) return a.trig ? 1 : -1;
-    if (!a.otherDegree && !b.otherDegree) {
+    if (!a.degreeSum && !b.degreeSum) {
         if (a.wholeDegree != b.wholeDegree) return a.wholeDegree < b.wholeDegree ? -1 : 1;
     } else if (const numeric da = a.degree(), db = b.degree(); da != db) {
         return da < db ? -1 : 1;
@@ -352,12 +359,18 @@ struct SymbolEntry {
 
 // Whether e is the number 1: GiNaC's products hold its one shared 1 (ex(1) is it), so
 // mostly a pointer compared.
+// n == 1 as cln has it (a float 1.0 too), without cln converting every float to
+// compare it with an integer: only a float whose double is 1 is compared exactly.
+bool equalsOne(const numeric& n) {
+    static const numeric unit(1);
+    if (n.is_integer()) return n.is_equal(unit);
+    return n.is_real() && !n.is_rational() && n.to_double() == 1.0 && n.is_equal(unit);
+}
+
 bool isOne(const ex& e) {
     static const GiNaC::basic* const one = &ex_to<GiNaC::basic>(ex(1));
-    const GiNaC::basic* b = &ex_to<GiNaC::basic>(e);
-    if (b == one) return true;
-    static const numeric unit(1);
-    return ginacKind(e) == GinacKind::Numeric && ex_to<numeric>(e).is_integer() && ex_to<numeric>(e).is_equal(unit);
+    if (&ex_to<GiNaC::basic>(e) == one) return true;
+    return ginacKind(e) == GinacKind::Numeric && equalsOne(ex_to<numeric>(e));
 }
 
 template <class T>
@@ -577,7 +590,7 @@ private:
                     k.velocities.insert(k.velocities.end(), f.power, i.indices.empty() ? 0 : i.indices.back());
                 note(i, k);
                 if (f.power > 0)
-                    k.wholeDegree += f.power;
+                    k.addDegree(f.power);
                 else
                     k.addDegree(f.exp);
                 continue;
@@ -827,7 +840,11 @@ private:
     bool isDecimalSum(const ex& e) const { return decimalSum_ == &ex_to<GiNaC::basic>(e); }
 
     // A coefficient as readableNumber makes it (each value once: they recur).
+    // (Only fractions are kept: the cache's equality has 2 == 2.0, and only a fraction
+    // changes. A float or an integer is its own readable number.)
     const numeric& readableCoefficient(const ex& k) {
+        const numeric& n = ex_to<numeric>(k);
+        if (n.is_integer() || !n.is_rational()) return n;
         auto [it, added] = readable_.try_emplace(k);
         if (added) it->second = readableNumber(ex_to<numeric>(k));
         return it->second;
@@ -1084,10 +1101,7 @@ private:
         std::vector<DisplayPtr> num, den;
         num.reserve(d.num.size() + 1);
         if (d.den.empty() || !c.is_rational()) {
-            // 2, 1/2, 0.5 in front. (A float compared with 1 is converted by cln: only
-            // an integer can be 1.)
-            static const numeric unit(1);
-            if (!c.is_integer() || !c.is_equal(unit)) num.push_back(renderNumber(c));
+            if (!equalsOne(c)) num.push_back(renderNumber(c));  // 2, 1/2, 0.5 in front
         } else {
             if (c.numer() != 1) num.push_back(renderNumber(c.numer()));
             if (c.denom() != 1) den.push_back(renderNumber(c.denom()));

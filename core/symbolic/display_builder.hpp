@@ -56,8 +56,10 @@ public:
     DisplayBuilder(const DisplayBuilder&) = delete;
     DisplayBuilder& operator=(const DisplayBuilder&) = delete;
     DisplayPtr operator()(const GiNaC::ex& e);
-    // The same as (*this)(readableNumbers(e)), without rebuilding e when only its
-    // coefficients change (core/symbolic/readable_numbers.hpp).
+    // e as (*this)(readableNumbers(e)) shows it, without rebuilding e when only its
+    // coefficients change (core/symbolic/readable_numbers.hpp). Such a sum is never
+    // taken from the cache: GiNaC's equality has 9/16 == 0.5625, so the same sum built
+    // exact before would come back with its fractions.
     DisplayPtr readable(const GiNaC::ex& e);
 
 private:
