@@ -141,7 +141,7 @@ std::string shownFromLatex(const std::string& latex, bool* upright = nullptr) {
         if (latex[i] == '\\') {
             std::size_t j = i + 1;
             while (j < latex.size() && std::isalpha(static_cast<unsigned char>(latex[j]))) ++j;
-            const std::string command = latex.substr(i + 1, j - i - 1);
+            const std::string_view command = std::string_view(latex).substr(i + 1, j - i - 1);
             if (command == "mathrm") {
                 if (upright) *upright = true;
             } else if (command == "ell") {
