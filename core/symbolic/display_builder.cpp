@@ -357,8 +357,6 @@ struct SymbolEntry {
     std::string name() const { return ex_to<GiNaC::symbol>(held).get_name(); }
 };
 
-// Whether e is the number 1: GiNaC's products hold its one shared 1 (ex(1) is it), so
-// mostly a pointer compared.
 // n == 1 as cln has it (a float 1.0 too), without cln converting every float to
 // compare it with an integer: only a float whose double is 1 is compared exactly.
 bool equalsOne(const numeric& n) {
@@ -367,6 +365,8 @@ bool equalsOne(const numeric& n) {
     return n.is_real() && !n.is_rational() && n.to_double() == 1.0 && n.is_equal(unit);
 }
 
+// Whether e is the number 1: GiNaC's products hold its one shared 1 (ex(1) is it), so
+// mostly a pointer compared.
 bool isOne(const ex& e) {
     static const GiNaC::basic* const one = &ex_to<GiNaC::basic>(ex(1));
     if (&ex_to<GiNaC::basic>(e) == one) return true;
@@ -498,7 +498,7 @@ private:
     std::map<std::pair<long, long>, DisplayPtr> fractions_;  // a fraction of machine integers' node
     const GiNaC::basic* decimalSum_ = nullptr;             // the sum buildReadable shows with readable coefficients
     std::vector<ShownTerm> decimalTerms_;                  // its terms (not cached by the sum)
-    ExMap<numeric> readable_;                              // readableCoefficient's, by exact value
+    ExMap<numeric> readable_;                              // readableCoefficient's, fractions only
 
     bool isCoordinate(const std::string& name) const {
         if (o_.coordinateNames.empty()) return startsWith(name, "q") && allDigits(std::string_view(name).substr(1));
