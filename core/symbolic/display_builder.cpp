@@ -846,7 +846,7 @@ private:
         const numeric& n = ex_to<numeric>(k);
         if (n.is_integer() || !n.is_rational()) return n;
         auto [it, added] = readable_.try_emplace(k);
-        if (added) it->second = readableNumber(ex_to<numeric>(k));
+        if (added) it->second = readableNumber(n);
         return it->second;
     }
 
