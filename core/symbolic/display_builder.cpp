@@ -654,14 +654,17 @@ private:
             k.maxIndex = std::max(k.maxIndex, *std::max_element(i.indices.begin(), i.indices.end()));
     }
 
-    // Every node, parents first (recursion: GiNaC's preorder iterator allocates a stack).
+    // What the symbols and functions anywhere in e add to a key (ginac_pairs.hpp's walk).
     void scan(const ex& e, TermKey& k) {
-        if (isKind(e, GinacKind::Symbol)) return note(info(ex_to<GiNaC::symbol>(e)), k);
-        if (isKind(e, GinacKind::Function)) {
-            const std::string& name = ex_to<GiNaC::function>(e).get_name();
-            if (name == "sin" || name == "cos" || name == "tan") k.trig = true;
-        }
-        for (std::size_t i = 0; i < e.nops(); ++i) scan(e.op(i), k);
+        auto visit = [&](const ex& node, GinacKind kind) {
+            if (kind == GinacKind::Symbol) note(info(ex_to<GiNaC::symbol>(node)), k);
+            if (kind == GinacKind::Function) {
+                const std::string& name = ex_to<GiNaC::function>(node).get_name();
+                if (name == "sin" || name == "cos" || name == "tan") k.trig = true;
+            }
+            return false;
+        };
+        anyNode(e, visit);
     }
 
     static numeric degree(const ex& e) {

@@ -8,6 +8,8 @@
 // Call with the GiNaC lock held.
 #include <ginac/ginac.h>
 
+#include "core/symbolic/ginac_kind.hpp"
+
 namespace ll::symbolic {
 
 struct GinacPairs : GiNaC::expairseq {
@@ -16,5 +18,34 @@ struct GinacPairs : GiNaC::expairseq {
     static const GiNaC::epvector& of(const GiNaC::expairseq& e) { return e.*(&GinacPairs::seq); }
     static const GiNaC::ex& number(const GiNaC::expairseq& e) { return e.*(&GinacPairs::overall_coeff); }
 };
+
+// Whether visit(node, its GinacKind) is true for any node of e, visited parents first,
+// stopping at the first. A sum's or product's children are its pairs' rests and
+// coefficients (a product's exponents) and its number, read in place; any other node's
+// are its op(i).
+// The walk of every printer and lookup that asks what occurs in an expression: the
+// symbols in it, whether it holds a number, a sine or a cosine.
+template <class Visit>
+bool anyNode(const GiNaC::ex& e, Visit& visit) {
+    const GinacKind kind = ginacKind(e);
+    if (visit(e, kind)) return true;
+    switch (kind) {
+        case GinacKind::Symbol:
+        case GinacKind::Numeric:
+        case GinacKind::Constant: return false;
+        case GinacKind::Add:
+        case GinacKind::Mul: {
+            // A pair's coefficient and the number are numerics (GiNaC's invariant).
+            const auto& seq = GiNaC::ex_to<GiNaC::expairseq>(e);
+            for (const GiNaC::expair& p : GinacPairs::of(seq))
+                if (anyNode(p.rest, visit) || visit(p.coeff, GinacKind::Numeric)) return true;
+            return visit(GinacPairs::number(seq), GinacKind::Numeric);
+        }
+        default:
+            for (std::size_t i = 0; i < e.nops(); ++i)
+                if (anyNode(e.op(i), visit)) return true;
+            return false;
+    }
+}
 
 }  // namespace ll::symbolic

@@ -18,26 +18,14 @@ bool isAtomic(const GiNaC::ex& e) {
            GiNaC::is_a<GiNaC::symbol>(e.op(0));
 }
 
-// Every symbol occurrence in e. Sums and products are read through their pairs: a
-// preorder iterator goes through op(), which makes every term of a sum anew (the product
-// rest·coefficient), and keeps its own stack on the heap.
+// Every symbol occurrence in e (through its pairs: ginac_pairs.hpp).
 template <class Visit>
 void forEachSymbol(const GiNaC::ex& e, Visit& visit) {
-    switch (ginacKind(e)) {
-        case GinacKind::Symbol: visit(e); return;
-        case GinacKind::Numeric: return;
-        case GinacKind::Add:
-        case GinacKind::Mul: {
-            const auto& seq = GiNaC::ex_to<GiNaC::expairseq>(e);
-            for (const GiNaC::expair& p : GinacPairs::of(seq)) {
-                forEachSymbol(p.rest, visit);
-                forEachSymbol(p.coeff, visit);
-            }
-            return forEachSymbol(GinacPairs::number(seq), visit);
-        }
-        default:
-            for (std::size_t i = 0; i < e.nops(); ++i) forEachSymbol(e.op(i), visit);
-    }
+    auto symbols = [&visit](const GiNaC::ex& node, GinacKind kind) {
+        if (kind == GinacKind::Symbol) visit(node);
+        return false;
+    };
+    anyNode(e, symbols);
 }
 
 }  // namespace

@@ -35,23 +35,10 @@ bool isDecimalFraction(const GiNaC::numeric& v) { return terminates(v) && v.deno
 namespace {
 
 // Whether a number that is(number) occurs anywhere in e (a coefficient, an exponent, a
-// number inside a function): read through sums' and products' pairs without making
-// them (op() would make each term or factor anew).
+// number inside a function), read through sums' and products' pairs (ginac_pairs.hpp).
 bool anyNumber(const GiNaC::ex& e, bool (*is)(const GiNaC::numeric&)) {
-    const GinacKind kind = ginacKind(e);
-    if (kind == GinacKind::Numeric) return is(GiNaC::ex_to<GiNaC::numeric>(e));
-    if (kind == GinacKind::Add || kind == GinacKind::Mul) {
-        // Most rests are symbols: not walked into. (A pair's coefficient is a number.)
-        const auto& seq = GiNaC::ex_to<GiNaC::expairseq>(e);
-        for (const GiNaC::expair& p : GinacPairs::of(seq)) {
-            if (ginacKind(p.rest) != GinacKind::Symbol && anyNumber(p.rest, is)) return true;
-            if (is(GiNaC::ex_to<GiNaC::numeric>(p.coeff))) return true;
-        }
-        return anyNumber(GinacPairs::number(seq), is);
-    }
-    for (std::size_t i = 0; i < e.nops(); ++i)
-        if (anyNumber(e.op(i), is)) return true;
-    return false;
+    auto number = [is](const GiNaC::ex& node, GinacKind kind) { return kind == GinacKind::Numeric && is(GiNaC::ex_to<GiNaC::numeric>(node)); };
+    return anyNode(e, number);
 }
 
 // A sum whose terms' rests hold no such number (an expanded entry, or a named quantity:
