@@ -186,6 +186,8 @@ private slots:
         const DisplayNode* more = moreTerms(inner);
         QVERIFY(more);
         QCOMPARE(QString::fromStdString(more->text), QString("⋯ (%1 more terms)").arg(300 - int(ui::maxTypesetTerms * 2 / 3)));
+        QCOMPARE(symbolic::moreTermsCount(*more), std::size_t(300 - ui::maxTypesetTerms * 2 / 3));  // the count its text shows
+        QCOMPARE(symbolic::moreTermsCount(*longSum->children.back()), std::size_t(0));
         QCOMPARE(cut->children[1]->children[1], DisplayPtr(shortSum));  // untouched: shared, not copied
         QVERIFY(longSum->children.size() == 300 && !moreTerms(*longSum));  // the original keeps every term
         const DisplayPtr same = ui::elided(displayEquation(symbolNode("b", "12"), shortSum), ui::maxTypesetTerms);

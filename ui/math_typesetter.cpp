@@ -1,5 +1,6 @@
 #include "ui/math_typesetter.hpp"
 
+#include <QCoreApplication>
 #include <QFontDatabase>
 #include <QFontMetricsF>
 #include <QGlyphRun>
@@ -468,6 +469,8 @@ MathBox layout(const DisplayNode& n, double size) {
         return b;
     }
     case DisplayKind::Raw: {
+        if (n.moreTerms > 0)  // a cut sum's rest (elided): words, so in the reader's language
+            return run(QCoreApplication::translate("MathTypesetter", "⋯ (%n more terms)", nullptr, static_cast<int>(n.moreTerms)), 0, size);
         if (n.children.empty()) return run(QString::fromStdString(n.text), 0, size);
         MathBox b;  // a row (a label's shown form, a formula's part): its children side by side
         for (const symbolic::DisplayPtr& c : n.children) hcat(b, layout(*c, size));

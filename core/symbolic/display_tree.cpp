@@ -334,22 +334,16 @@ DisplayPtr displayRaw(std::string text, std::string latex, std::string plain) {
     return n;
 }
 
-namespace {
-const std::string moreHead = "⋯ (", moreTail = " more terms)";
-}  // namespace
-
 DisplayPtr displayMoreTerms(std::size_t count) {
-    const std::string more = moreHead + std::to_string(count) + moreTail;
-    return displayRaw(more, "\\cdots", more);
+    auto n = std::make_shared<DisplayNode>();
+    n->kind = DisplayKind::Raw;
+    n->text = n->plain = "⋯ (" + std::to_string(count) + " more terms)";
+    n->latex = "\\cdots";
+    n->moreTerms = static_cast<std::uint32_t>(std::min<std::size_t>(count, UINT32_MAX));
+    return n;
 }
 
-std::size_t moreTermsCount(const DisplayNode& node) {
-    const std::string& t = node.text;
-    if (node.kind != DisplayKind::Raw || node.latex != "\\cdots" || !t.starts_with(moreHead) || !t.ends_with(moreTail)) return 0;
-    const std::string digits = t.substr(moreHead.size(), t.size() - moreHead.size() - moreTail.size());
-    if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos) return 0;
-    return std::stoul(digits);
-}
+std::size_t moreTermsCount(const DisplayNode& node) { return node.moreTerms; }
 
 DisplayPtr displayEquation(DisplayPtr lhs, DisplayPtr rhs) {
     auto n = std::make_shared<DisplayNode>();

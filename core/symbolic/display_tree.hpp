@@ -6,6 +6,7 @@
 // which symbols stand where. Plain data: no GiNaC, safe to hand to any thread.
 //
 // Built from GiNaC by core/symbolic/display_builder; rendered to strings here.
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -33,6 +34,9 @@ using DisplayPtr = std::shared_ptr<const DisplayNode>;
 
 struct DisplayNode {
     DisplayKind kind = DisplayKind::Raw;
+    // Raw made by displayMoreTerms: the N of "⋯ (N more terms)"; 0 for any other node.
+    // (Beside kind, in what would be padding.)
+    std::uint32_t moreTerms = 0;
     // Symbol: the base as Text prints it (θ, ℓ, q, mass), as LaTeX (\theta, \ell,
     // \mathrm{mass}), and the Plain name (GiNaC's, or cos(q1+q2) for the c/s shorthand;
     // `name` is always GiNaC's name, the sort key's spelling).
