@@ -826,16 +826,12 @@ public:
             case ReadableChange::Everywhere: return build(readableNumbers(e));
             case ReadableChange::Coefficients: break;
         }
+        struct Reset {  // also when ordering throws (a cancel)
+            const GiNaC::basic*& sum;
+            ~Reset() { sum = nullptr; }
+        } reset{decimalSum_};
         decimalSum_ = &ex_to<GiNaC::basic>(e);
-        DisplayPtr node;
-        try {
-            node = renderSum(e, false);
-        } catch (...) {
-            decimalSum_ = nullptr;
-            throw;
-        }
-        decimalSum_ = nullptr;
-        return node;
+        return renderSum(e, false);
     }
 
 private:
@@ -1123,20 +1119,29 @@ struct DisplayBuilder::Impl {
     Builder builder;
     DisplayBuilder::Sharing sharing;
     Impl(const DisplayOptions& o, DisplayBuilder::Sharing s) : options(o), builder(options), sharing(s) {}
+
+    // What build() shows; a Sharing::Symbols builder then forgets the expression's caches
+    // (also when showing it throws).
+    template <class Build>
+    DisplayPtr shown(Build build) {
+        struct Forget {
+            Impl& impl;
+            ~Forget() {
+                if (impl.sharing == DisplayBuilder::Sharing::Symbols) impl.builder.forgetExpressions();
+            }
+        } forget{*this};
+        return build();
+    }
 };
 
 DisplayBuilder::DisplayBuilder(const DisplayOptions& options, Sharing sharing) : impl_(new Impl(options, sharing)) {}
 DisplayBuilder::~DisplayBuilder() { delete impl_; }
 DisplayPtr DisplayBuilder::operator()(const ex& e) {
-    DisplayPtr node = impl_->builder.build(e);
-    if (impl_->sharing == Sharing::Symbols) impl_->builder.forgetExpressions();
-    return node;
+    return impl_->shown([&] { return impl_->builder.build(e); });
 }
 
 DisplayPtr DisplayBuilder::readable(const ex& e) {
-    DisplayPtr node = impl_->builder.buildReadable(e);
-    if (impl_->sharing == Sharing::Symbols) impl_->builder.forgetExpressions();
-    return node;
+    return impl_->shown([&] { return impl_->builder.buildReadable(e); });
 }
 
 DisplayPtr buildDisplay(const ex& e, const DisplayOptions& options) { return Builder(options).build(e); }
