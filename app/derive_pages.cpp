@@ -22,8 +22,7 @@ using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point since) { return std::chrono::duration<double>(Clock::now() - since).count(); }
 
 int writePdfWhileDeriving(const DisplayDerivation& derive, const QString& out, bool timings) {
-    const auto streamOwner = std::make_shared<symbolic::DisplayStream>();
-    dispose(streamOwner);  // its trees: left to the exit, as the derivation's are
+    const Disposing<symbolic::DisplayStream> streamOwner;  // its trees: left to the exit, as the derivation's are
     symbolic::DisplayStream& stream = *streamOwner;
     std::string error;
     bool written = false;

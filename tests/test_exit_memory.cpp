@@ -21,6 +21,16 @@ std::shared_ptr<const void> counted() {
     });
 }
 
+// Counts its destructions, to watch Disposing and disposeValue.
+struct Tracked {
+    int value;
+    explicit Tracked(int v) : value(v) {}
+    Tracked(Tracked&& o) noexcept : value(o.value) { o.value = -1; }
+    ~Tracked() {
+        if (value >= 0) ++freedCount;  // a moved-from shell is not counted
+    }
+};
+
 }  // namespace
 
 class TestExitMemory : public QObject {
@@ -41,6 +51,34 @@ private slots:
         dispose(nullptr);  // nothing to do
     }
 
+    void disposingFreesAtItsEndUntilLeft() {
+        QVERIFY(!memoryLeftToExit());
+        freedCount = 0;
+        {
+            const Disposing<Tracked> owned(3);
+            QCOMPARE(owned->value, 3);
+            QCOMPARE((*owned).value, 3);
+            QCOMPARE(freedCount.load(), 0);
+        }
+        QCOMPARE(freedCount.load(), 1);
+        {
+            Disposing<Tracked> owned(4);
+            owned.disposeNow();
+            QCOMPARE(freedCount.load(), 2);  // at once, not at the end
+        }
+        QCOMPARE(freedCount.load(), 2);  // and not twice
+        try {
+            const Disposing<Tracked> owned(5);
+            throw 1;
+        } catch (int) {
+        }
+        QCOMPARE(freedCount.load(), 3);  // also when an exception passes
+        Tracked local(6);
+        disposeValue(std::move(local));
+        QCOMPARE(freedCount.load(), 4);
+        QCOMPARE(local.value, -1);  // moved into the owner that was freed
+    }
+
     void keptOnceLeft() {
         leaveMemoryToExit();
         QVERIFY(memoryLeftToExit());
@@ -58,6 +96,12 @@ private slots:
                 for (int i = 0; i < 1000; ++i) dispose(counted());
             });
         for (std::thread& t : threads) t.join();
+        {
+            const Disposing<Tracked> owned(8);
+            Disposing<Tracked> early(9);
+            early.disposeNow();
+        }
+        disposeValue(Tracked(10));
         QCOMPARE(freedCount.load(), 0);
     }
 };

@@ -54,7 +54,7 @@ DerivedDocument deriveDocument(const Scene& scene, const DocumentRequest& reques
     out.printSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - printing).count();
     for (const symbolic::DerivationStep& step : d.steps) out.timings.push_back({step.number, step.title, step.seconds});
     out.warnings = d.warnings;
-    dispose(std::make_shared<symbolic::Derivation>(std::move(d)));  // freed now, or left to a command's exit
+    disposeValue(std::move(d));  // freed now, or left to a command's exit
     return out;
 }
 

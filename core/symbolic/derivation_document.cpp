@@ -713,12 +713,10 @@ std::shared_ptr<const DisplayDocument> displayDocument(const Derivation& d, cons
     const auto lock = lockGinac();
     DisplayOptions options = displayOptions(printOptionsFor(d, Style::Text));
     options.cutLongSums = forPages;
-    auto build = std::make_shared<DisplayBuilder>(options);
-    auto presenter = std::make_shared<Presenter>(d, d.trigToFunctions.nops() > 0);
-    auto document = shapeDocument(d, *presenter, *build, options, cancel, stream);
-    dispose(std::move(presenter));  // their caches: freed now, or left to a command's exit
-    dispose(std::move(build));
-    return document;
+    // Their caches: freed at the end, or left to a command's exit.
+    const Disposing<DisplayBuilder> build(options);
+    const Disposing<Presenter> presenter(d, d.trigToFunctions.nops() > 0);
+    return shapeDocument(d, *presenter, *build, options, cancel, stream);
 }
 
 std::string renderDocument(const DisplayDocument& document, DocumentFormat format) {
@@ -740,11 +738,10 @@ std::string derivationDocument(const Derivation& d, DocumentFormat format, const
     if (format == DocumentFormat::Display) return {};
     const auto lock = lockGinac();
     const DisplayOptions options = displayOptions(printOptionsFor(d, Style::Text));
-    auto build = std::make_unique<DisplayBuilder>(options);
-    auto presenter = std::make_unique<Presenter>(d, d.trigToFunctions.nops() > 0);
-    const auto handoverOwner = std::make_shared<Handover>(format, writing);
+    Disposing<DisplayBuilder> build(options);
+    Disposing<Presenter> presenter(d, d.trigToFunctions.nops() > 0);
+    const Disposing<Handover> handoverOwner(format, writing);  // the trees it holds: freed at the end, or left to a command's exit
     Handover& handover = *handoverOwner;
-    dispose(handoverOwner);  // the trees it holds: freed with it at the end, or left to a command's exit
     std::string out;
     std::exception_ptr writeFailed;
     std::thread writer([&] {
@@ -771,8 +768,8 @@ std::string derivationDocument(const Derivation& d, DocumentFormat format, const
         // Their caches are freed while the writer goes on (the trees it reads are the
         // items'), or left to a command's exit; then this thread renders the last items'
         // parts beside it.
-        dispose(std::move(presenter));
-        dispose(std::move(build));
+        presenter.disposeNow();
+        build.disposeNow();
         handover.help();
     } catch (...) {
         handover.finish(std::nullopt, true);

@@ -150,7 +150,7 @@ std::shared_ptr<const DisplayDocument> structuredDisplayDocument(const Structure
     auto names = std::make_shared<std::map<std::string, DisplayPtr>>();
     for (const NamedDefinition& d : s.table->entries()) (*names)[d.name] = structuredNameNode(d.name);
     DisplayOptions options{doc->coordinateNames, true, names};
-    const auto builder = std::make_shared<DisplayBuilder>(options);
+    const Disposing<DisplayBuilder> builder(options);  // its caches: freed at the end (under the GiNaC lock), or left to a command's exit
     DisplayBuilder& build = *builder;
 
     // The names under the step where each arises (table order within a step is still
@@ -209,7 +209,6 @@ std::shared_ptr<const DisplayDocument> structuredDisplayDocument(const Structure
         }
         doc->steps.push_back(std::move(st));
     }
-    dispose(builder);  // its caches: freed now (under the GiNaC lock), or left to a command's exit
     return doc;
 }
 

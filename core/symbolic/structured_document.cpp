@@ -40,9 +40,7 @@ PrintOptions optionsFor(const StructuredDynamics& s, Style style) {
 class Printer {
 public:
     Printer(const StructuredDynamics& s, Style style)
-        : build_(std::make_shared<DisplayBuilder>(displayOptions(optionsFor(s, style)), DisplayBuilder::Sharing::Symbols)),
-          style_(displayStyle(style)) {}
-    ~Printer() { dispose(std::move(build_)); }  // its caches: freed now, or left to a command's exit
+        : build_(displayOptions(optionsFor(s, style)), DisplayBuilder::Sharing::Symbols), style_(displayStyle(style)) {}
     Printer(const Printer&) = delete;
     Printer& operator=(const Printer&) = delete;
     std::string operator()(const GiNaC::ex& e) { return renderDisplay(*(*build_)(e), style_); }
@@ -50,7 +48,7 @@ public:
     std::string readable(const GiNaC::ex& e) { return renderDisplay(*build_->readable(e), style_); }
 
 private:
-    std::shared_ptr<DisplayBuilder> build_;
+    Disposing<DisplayBuilder> build_;  // its caches: freed with the printer, or left to a command's exit
     DisplayStyle style_;
 };
 
