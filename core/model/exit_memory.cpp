@@ -18,10 +18,15 @@ std::vector<std::shared_ptr<const void>>* const kept = new std::vector<std::shar
 void leaveMemoryToExit() { leaving.store(true); }
 bool memoryLeftToExit() { return leaving.load(); }
 
-void dispose(std::shared_ptr<const void> object) {
+void dispose(std::shared_ptr<const void> object) noexcept {
     if (!object || !leaving.load()) return;  // the last owner: freed here
-    const std::lock_guard lock(keptMutex);
-    kept->push_back(std::move(object));
+    try {
+        const std::lock_guard lock(keptMutex);
+        kept->push_back(std::move(object));
+    } catch (...) {
+        // No room to keep it (or no lock): freed here instead, which is only slower.
+        // dispose runs in destructors (Disposing), also while an exception passes.
+    }
 }
 
 }  // namespace ll

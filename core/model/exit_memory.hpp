@@ -20,8 +20,9 @@ namespace ll {
 void leaveMemoryToExit();
 bool memoryLeftToExit();
 
-// Frees `object` now, or keeps it until the process exits (see above). Thread-safe.
-void dispose(std::shared_ptr<const void> object);
+// Frees `object` now, or keeps it until the process exits (see above). Thread-safe;
+// never throws (when it cannot keep the object, it frees it).
+void dispose(std::shared_ptr<const void> object) noexcept;
 
 // A T made on the heap, handed to dispose() when this owner goes (also when an exception
 // passes), or earlier by disposeNow():
