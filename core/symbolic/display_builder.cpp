@@ -248,7 +248,9 @@ struct SymbolEntry;
 
 struct Factor {
     ex base;
-    numeric exp;                    // numeric; a symbolic power is its own base with exp 1
+    // A numeric, held as GiNaC's handle: copying a numeric value copies the whole object
+    // (a tenth of decomposing a term). A symbolic power is its own base with exp 1.
+    ex exp;
     bool negated = false;           // a sum shown with its signs flipped (see decompose)
     int power = 0;                  // exp when it is a small positive integer (most are 1 or 2), else 0
     SymbolEntry* symbol = nullptr;  // the base's entry, when it is a symbol (Builder::entry)
@@ -417,7 +419,7 @@ public:
 
     const SymbolInfo& infoByName(const std::string& name) {
         if (auto it = infos_.find(name); it != infos_.end()) return it->second;
-        return infos_[name] = computeInfo(name);
+        return infos_.emplace(name, computeInfo(name)).first->second;
     }
 
     SymbolInfo computeInfo(const std::string& name) {
@@ -473,13 +475,14 @@ public:
 private:
     const DisplayOptions& o_;
     int n_ = 0;
-    // A symbol's info, node and factor key, by name (node-based: entries stay in place),
-    // and by the symbol object an expression holds (SymbolEntry).
-    std::map<std::string, SymbolInfo> infos_;
-    std::map<std::string, DisplayPtr> symbols_;
-    std::map<std::string, FactorKey> symbolKeys_;
+    // A symbol's info, node and factor key, by name (hashed; node-based: an element stays
+    // in place while the map grows, so entries point at them), and by the symbol object
+    // an expression holds (SymbolEntry).
+    std::unordered_map<std::string, SymbolInfo> infos_;
+    std::unordered_map<std::string, DisplayPtr> symbols_;
+    std::unordered_map<std::string, FactorKey> symbolKeys_;
     std::unordered_map<const GiNaC::basic*, SymbolEntry> byObject_;
-    std::map<std::string, SymbolEntry> unheld_;  // symbols no expression holds, by name
+    std::unordered_map<std::string, SymbolEntry> unheld_;  // symbols no expression holds, by name
 
     SymbolEntry& unheld(const GiNaC::symbol& s) {
         auto [it, added] = unheld_.try_emplace(s.get_name());
@@ -592,15 +595,15 @@ private:
                 if (f.power > 0)
                     k.addDegree(f.power);
                 else
-                    k.addDegree(f.exp);
+                    k.addDegree(ex_to<numeric>(f.exp));
                 continue;
             }
             scan(f.base, k);
-            k.addDegree(degree(f.base) * f.exp);
+            k.addDegree(degree(f.base) * ex_to<numeric>(f.exp));
         }
         for (const Factor& f : b.d.den) {
             scan(f.base, k);
-            k.addDegree(-degree(f.base) * f.exp);
+            k.addDegree(-degree(f.base) * ex_to<numeric>(f.exp));
         }
         std::sort(k.velocities.begin(), k.velocities.end());
         k.text = bodyKeyText(b.d);
@@ -691,23 +694,27 @@ private:
     Decomposed decompose(const ex& e) {
         Decomposed d;
         auto factor = [&](Factor f) {
-            if (isKind(f.base, GinacKind::Add) && f.exp.is_integer() && terms(f.base).front().negative) {
+            const numeric* k = &ex_to<numeric>(f.exp);
+            if (isKind(f.base, GinacKind::Add) && k->is_integer() && terms(f.base).front().negative) {
                 f.negated = true;
-                if (f.exp.is_odd()) d.coef = -d.coef;
+                if (k->is_odd()) d.coef = -d.coef;
             }
             if (isKind(f.base, GinacKind::Symbol)) f.symbol = &entry(ex_to<GiNaC::symbol>(f.base));
-            const bool below = f.exp.is_negative();
-            if (below) f.exp = -f.exp;
-            if (f.exp.is_pos_integer() && f.exp.int_length() <= 20) f.power = f.exp.to_int();
+            const bool below = k->is_negative();
+            if (below) {
+                f.exp = -*k;
+                k = &ex_to<numeric>(f.exp);
+            }
+            if (k->is_pos_integer() && k->int_length() <= 20) f.power = k->to_int();
             (below ? d.den : d.num).push_back(std::move(f));
         };
         auto one = [&](const ex& x) {
             if (isKind(x, GinacKind::Numeric)) {
                 d.coef *= ex_to<numeric>(x);
             } else if (isKind(x, GinacKind::Power) && isKind(x.op(1), GinacKind::Numeric) && ex_to<numeric>(x.op(1)).is_real()) {
-                factor({x.op(0), ex_to<numeric>(x.op(1))});
+                factor({x.op(0), x.op(1)});
             } else {
-                factor({x, 1});
+                factor({x, ex(1)});
             }
         };
         if (isKind(e, GinacKind::Mul)) {
@@ -718,13 +725,13 @@ private:
                 const numeric& k = ex_to<numeric>(p.coeff);
                 const bool once = isOne(p.coeff);
                 if (once && isKind(p.rest, GinacKind::Symbol)) {  // most factors: a symbol to the first power
-                    Factor& f = d.num.emplace_back(Factor{p.rest, k});
+                    Factor& f = d.num.emplace_back(Factor{p.rest, p.coeff});
                     f.power = 1;
                     f.symbol = &entry(ex_to<GiNaC::symbol>(p.rest));
                 } else if (once || !k.is_real()) {
                     one(once ? p.rest : GiNaC::pow(p.rest, p.coeff));  // as op() gives it
                 } else {
-                    factor({p.rest, k});
+                    factor({p.rest, p.coeff});
                 }
             }
             if (const ex& c = GinacPairs::number(ex_to<GiNaC::mul>(e)); !isOne(c)) d.coef *= ex_to<numeric>(c);
@@ -1047,7 +1054,7 @@ private:
     // ---- products
 
     DisplayPtr renderFactor(const Factor& f) {
-        const numeric& k = f.exp;
+        const numeric& k = ex_to<numeric>(f.exp);
         if (f.negated || f.power == 1) {
             const DisplayPtr b = f.negated ? renderSum(f.base, true) : f.symbol ? renderSymbol(*f.symbol) : renderAtom(f.base);
             if (f.power == 1) return fenced(b, ProductPrec + 1);
@@ -1072,7 +1079,7 @@ private:
     }
 
     DisplayPtr power(const DisplayPtr& b, const Factor& f) {
-        const numeric& k = f.exp;
+        const numeric& k = ex_to<numeric>(f.exp);
         if (k == numeric(1, 2)) return displayNode(DisplayKind::Root, {b});
         const std::string power = str(k);
         DisplayPtr exponent;
