@@ -312,15 +312,18 @@ struct TermBody {
 
 struct Term {
     const TermBody* body;  // the number's is numberBody
-    numeric coef;          // the term's coefficient; the number itself
+    // The term's coefficient (the number itself), a numeric held as GiNaC's handle: most
+    // are the sum's own pair coefficients, shared rather than copied.
+    ex coef;
     DisplayPtr shown;      // |coefficient| times the factors, built once for every sign the sum shows with
     // The last tie-break of the order, made when two keys tie (seldom: only equal spellings).
     mutable std::optional<double> keyCoef;
+    const numeric& value() const { return ex_to<numeric>(coef); }
     double tieBreak() const {
-        if (!keyCoef) keyCoef = coef.is_real() ? coef.to_double() : 0.0;
+        if (!keyCoef) keyCoef = value().is_real() ? value().to_double() : 0.0;
         return *keyCoef;
     }
-    bool negative() const { return coef.is_real() && coef.is_negative(); }
+    bool negative() const { return value().is_real() && value().is_negative(); }
 };
 
 // A term of a sum as shown: its magnitude's node and its sign.
@@ -362,6 +365,8 @@ struct SymbolEntry {
 // n == 1 as cln has it (a float 1.0 too), without cln converting every float to
 // compare it with an integer: only a float whose double is 1 is compared exactly.
 bool equalsOne(const numeric& n) {
+    static const GiNaC::basic* const shared = &ex_to<GiNaC::basic>(ex(1));  // GiNaC's own 1, often a pair's coefficient
+    if (&n == shared) return true;
     static const numeric unit(1);
     if (n.is_integer()) return n.is_equal(unit);
     return n.is_real() && !n.is_rational() && n.to_double() == 1.0 && n.is_equal(unit);
@@ -501,7 +506,7 @@ private:
     std::map<std::pair<long, long>, DisplayPtr> fractions_;  // a fraction of machine integers' node
     const GiNaC::basic* decimalSum_ = nullptr;             // the sum buildReadable shows with readable coefficients
     std::vector<ShownTerm> decimalTerms_;                  // its terms (not cached by the sum)
-    ExMap<numeric> readable_;                              // readableCoefficient's, fractions only
+    ExMap<ex> readable_;                              // readableCoefficient's, fractions only
 
     bool isCoordinate(const std::string& name) const {
         if (o_.coordinateNames.empty()) return startsWith(name, "q") && allDigits(std::string_view(name).substr(1));
@@ -546,12 +551,16 @@ private:
             } else {
                 body = &local.emplace_back(bodyOf(p.rest));
             }
-            const numeric& k = decimal ? readableCoefficient(p.coeff) : ex_to<numeric>(p.coeff);
-            out.push_back({body, body->sign == 1 ? k : body->sign == -1 ? -k : body->d.coef * k, nullptr, std::nullopt});
+            const ex& k = decimal ? readableCoefficient(p.coeff) : p.coeff;
+            out.push_back({body,
+                           body->sign == 1    ? k
+                           : body->sign == -1 ? ex(-ex_to<numeric>(k))
+                                              : ex(body->d.coef * ex_to<numeric>(k)),
+                           nullptr, std::nullopt});
         }
         if (const ex& number = GinacPairs::number(terms); !number.is_zero()) {
-            const numeric& n = decimal ? readableCoefficient(number) : ex_to<numeric>(number);
-            out.push_back({&numberBody(), n, renderNumber(abs(n)), std::nullopt});
+            const ex& n = decimal ? readableCoefficient(number) : number;
+            out.push_back({&numberBody(), n, renderNumber(abs(ex_to<numeric>(n))), std::nullopt});
         }
         // Indices sorted, then each term's node taken once.
         std::vector<std::uint32_t> at(out.size());
@@ -569,7 +578,10 @@ private:
         sorted.reserve(shown + 1);
         for (std::size_t k = 0; k < shown; ++k) {
             Term& t = out[at[k]];
-            if (!t.shown) t.shown = withCoefficient(t.coef.is_real() ? abs(t.coef) : t.coef, t.body->d);
+            if (!t.shown) {  // |coefficient|: the coefficient itself unless it is negative
+                const numeric& v = t.value();
+                t.shown = v.is_real() && v.is_negative() ? withCoefficient(-v, t.body->d) : withCoefficient(v, t.body->d);
+            }
             sorted.push_back({std::move(t.shown), t.negative()});
         }
         if (cut) sorted.push_back({displayMoreTerms(out.size() - shown), false, true});
@@ -848,9 +860,9 @@ private:
     // A coefficient as readableNumber makes it (each value once: they recur).
     // (Only fractions are kept: the cache's equality has 2 == 2.0, and only a fraction
     // changes. A float or an integer is its own readable number.)
-    const numeric& readableCoefficient(const ex& k) {
+    const ex& readableCoefficient(const ex& k) {
         const numeric& n = ex_to<numeric>(k);
-        if (n.is_integer() || !n.is_rational()) return n;
+        if (n.is_integer() || !n.is_rational()) return k;
         auto [it, added] = readable_.try_emplace(k);
         if (added) it->second = readableNumber(n);
         return it->second;
