@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <sstream>
+#include <string_view>
 
 namespace ll::symbolic {
 namespace {
@@ -169,20 +170,28 @@ private:
     // * in Plain; a space (· before a digit) in Text; in LaTeX a space, \, beside
     // functions and words, \cdot before a digit. (The separator goes in once the
     // factor is written and its first character known.)
+    // The separator for a factor that does not start with a digit goes in before it;
+    // when the factor turns out to start with one (seldom: numbers come first), it is
+    // replaced. (Inserting it after every factor moved each factor's text.)
     void product(const DisplayNode& n, std::string& out) const {
         for (std::size_t i = 0; i < n.children.size(); ++i) {
-            const std::size_t at = out.size();
-            append(*n.children[i], out);
-            if (i == 0) continue;
-            const bool digit = out.size() > at && out[at] >= '0' && out[at] <= '9';
-            const char* separator;
+            if (i == 0) {
+                append(*n.children[i], out);
+                continue;
+            }
+            std::string_view separator;
             if (plain())
                 separator = "*";
             else if (style_ == DisplayStyle::Text)
-                separator = digit ? "·" : " ";
+                separator = " ";
             else
-                separator = digit ? " \\cdot " : (isWord(*n.children[i]) || isWord(*n.children[i - 1]) ? "\\, " : " ");
-            out.insert(at, separator);
+                separator = isWord(*n.children[i]) || isWord(*n.children[i - 1]) ? "\\, " : " ";
+            const std::size_t at = out.size();
+            out += separator;
+            const std::size_t first = out.size();
+            append(*n.children[i], out);
+            const bool digit = out.size() > first && out[first] >= '0' && out[first] <= '9';
+            if (digit && !plain()) out.replace(at, separator.size(), style_ == DisplayStyle::Text ? "·" : " \\cdot ");
         }
     }
 
