@@ -37,7 +37,12 @@ namespace {
 // Whether a number that is(number) occurs anywhere in e (a coefficient, an exponent, a
 // number inside a function), read through sums' and products' pairs (ginac_pairs.hpp).
 bool anyNumber(const GiNaC::ex& e, bool (*is)(const GiNaC::numeric&)) {
-    auto number = [is](const GiNaC::ex& node, GinacKind kind) { return kind == GinacKind::Numeric && is(GiNaC::ex_to<GiNaC::numeric>(node)); };
+    // Both tests (terminates, isDecimalFraction) are false for integers, so GiNaC's
+    // shared 1 (most exponents, many coefficients) is passed by its address.
+    static const GiNaC::basic* const one = &GiNaC::ex_to<GiNaC::basic>(GiNaC::ex(1));
+    auto number = [is](const GiNaC::ex& node, GinacKind kind) {
+        return kind == GinacKind::Numeric && &GiNaC::ex_to<GiNaC::basic>(node) != one && is(GiNaC::ex_to<GiNaC::numeric>(node));
+    };
     return anyNode(e, number);
 }
 
