@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <map>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <string_view>
@@ -496,6 +497,13 @@ private:
     }
     ExMap<std::vector<ShownTerm>> terms_;
     ExMap<TermBody> bodies_;  // by a term's rest, for the terms of sums of keptBodiesFrom terms or more
+    struct TermsScratch {  // terms()'s working vectors, one set per depth of nested sums
+        std::vector<TermBody> local;
+        std::vector<Term> out;
+        std::vector<std::uint32_t> at;
+    };
+    std::vector<std::unique_ptr<TermsScratch>> scratch_;
+    std::size_t depth_ = 0;
     ExMap<FactorKey> factorKeys_[2];  // by negated
     ExMap<std::vector<std::pair<numeric, DisplayPtr>>> powers_;  // base^exponent, shown
     ExMap<DisplayPtr> atoms_;
@@ -536,9 +544,23 @@ private:
         const GiNaC::add& terms = ex_to<GiNaC::add>(sum);
         const GiNaC::epvector& pairs = GinacPairs::of(terms);
         const bool keep = pairs.size() >= keptBodiesFrom;
-        std::vector<TermBody> local;
+        // This call's working vectors, reused by the next sum ordered at the same depth
+        // (a sum factor's terms are ordered inside its term's): their own memory was
+        // four allocations and frees per sum.
+        if (scratch_.size() <= depth_) scratch_.push_back(std::make_unique<TermsScratch>());
+        TermsScratch& scratch = *scratch_[depth_];
+        struct Level {  // the depth back, the vectors emptied (their memory kept)
+            std::size_t& depth;
+            TermsScratch& scratch;
+            ~Level() {
+                --depth;
+                scratch.local.clear();
+                scratch.out.clear();
+            }
+        } level{++depth_, scratch};
+        std::vector<TermBody>& local = scratch.local;
         local.reserve(keep ? 0 : pairs.size());  // never reallocated: terms point into it
-        std::vector<Term> out;
+        std::vector<Term>& out = scratch.out;
         out.reserve(pairs.size() + 1);
         // The (rest, coefficient) pairs in place, in op()'s order, then the number: op(i)
         // would make a product rest·coefficient for every term (core/symbolic/ginac_pairs).
@@ -563,7 +585,8 @@ private:
             out.push_back({&numberBody(), n, renderNumber(abs(ex_to<numeric>(n))), std::nullopt});
         }
         // Indices sorted, then each term's node taken once.
-        std::vector<std::uint32_t> at(out.size());
+        std::vector<std::uint32_t>& at = scratch.at;
+        at.resize(out.size());
         for (std::uint32_t i = 0; i < at.size(); ++i) at[i] = i;
         std::stable_sort(at.begin(), at.end(), [&](std::uint32_t a, std::uint32_t b) {
             const Term &x = out[a], &y = out[b];
