@@ -549,17 +549,19 @@ private:
         // four allocations and frees per sum.
         if (scratch_.size() <= depth_) scratch_.push_back(std::make_unique<TermsScratch>());
         TermsScratch& scratch = *scratch_[depth_];
-        struct Level {  // the depth back, the vectors emptied (their memory kept)
+        struct Level {  // the depth back, the terms emptied (the vectors' memory kept)
             std::size_t& depth;
             TermsScratch& scratch;
             ~Level() {
                 --depth;
-                scratch.local.clear();
-                scratch.out.clear();
+                scratch.out.clear();  // (the bodies stay for the next sum: bodyInto empties each)
             }
         } level{++depth_, scratch};
+        // Bodies from earlier sums are reused (bodyInto); sized before the terms point
+        // into it, so never reallocated while they do.
         std::vector<TermBody>& local = scratch.local;
-        local.reserve(keep ? 0 : pairs.size());  // never reallocated: terms point into it
+        if (!keep && local.size() < pairs.size()) local.resize(pairs.size());
+        std::size_t used = 0;
         std::vector<Term>& out = scratch.out;
         out.reserve(pairs.size() + 1);
         // The (rest, coefficient) pairs in place, in op()'s order, then the number: op(i)
@@ -571,7 +573,9 @@ private:
                 if (it == bodies_.end()) it = bodies_.emplace(p.rest, bodyOf(p.rest)).first;
                 body = &it->second;
             } else {
-                body = &local.emplace_back(bodyOf(p.rest));
+                TermBody& reused = local[used++];
+                bodyInto(p.rest, reused);
+                body = &reused;
             }
             const ex& k = decimal ? readableCoefficient(p.coeff) : p.coeff;
             out.push_back({body,
@@ -618,8 +622,25 @@ private:
     }
 
     TermBody bodyOf(const ex& rest) {
-        TermBody b{decompose(rest), {}};
+        TermBody b;
+        bodyInto(rest, b);
+        return b;
+    }
+
+    // b may hold an earlier term's body (terms()'s working bodies): emptied, its vectors'
+    // and key text's memory reused.
+    void bodyInto(const ex& rest, TermBody& b) {
+        static const numeric unit(1), minusUnit(-1);
+        b.d.coef = unit;
+        b.d.num.clear();
+        b.d.den.clear();
         TermKey& k = b.key;
+        k.velocities.clear();
+        k.maxIndex = -1;
+        k.trig = false;
+        k.wholeDegree = 0;
+        k.degreeSum.reset();
+        decomposeInto(rest, b.d);
         // From the factors, not the term: walking a GiNaC product makes each power anew.
         for (const Factor& f : b.d.num) {
             if (f.symbol) {  // most factors: looked up once, degree 1
@@ -641,20 +662,24 @@ private:
             k.addDegree(-degree(f.base) * ex_to<numeric>(f.exp));
         }
         std::sort(k.velocities.begin(), k.velocities.end());
-        k.text = bodyKeyText(b.d);
-        static const numeric unit(1), minusUnit(-1);
+        bodyKeyText(b.d, k.text);
         b.sign = !b.d.coef.is_integer() ? 0 : b.d.coef.is_equal(unit) ? 1 : b.d.coef.is_equal(minusUnit) ? -1 : 0;
-        return b;
     }
 
     // The Plain spelling (with c/s names) of the term without its coefficient, as
     // renderDisplay prints the product of its factors: the order's last tie-break. Made
     // from the factors' spellings, which recur in thousands of terms, without building
     // the product.
-    std::string bodyKeyText(const Decomposed& d) {
-        if (!d.den.empty()) return keyText(*renderProduct(d, false));
-        if (d.num.empty()) return "1";
-        std::string s;
+    void bodyKeyText(const Decomposed& d, std::string& s) {
+        s.clear();
+        if (!d.den.empty()) {
+            s = keyText(*renderProduct(d, false));
+            return;
+        }
+        if (d.num.empty()) {
+            s = "1";
+            return;
+        }
         for (const Factor& f : d.num) {
             if (!s.empty()) s += '*';
             if (f.symbol && f.power == 1) {  // most factors
@@ -669,7 +694,6 @@ private:
             }
             s += factorText(renderFactor(f));
         }
-        return s;
     }
 
     // A symbol's spelling as a factor (kept with the symbol, not per expression).
@@ -728,6 +752,12 @@ private:
     // with the leading term in *our* order positive, an odd power's sign moved to coef.
     Decomposed decompose(const ex& e) {
         Decomposed d;
+        decomposeInto(e, d);
+        return d;
+    }
+
+    // Into an empty d (its vectors' memory may be an earlier term's).
+    void decomposeInto(const ex& e, Decomposed& d) {
         auto factor = [&](Factor f) {
             const numeric* k = &ex_to<numeric>(f.exp);
             if (isKind(f.base, GinacKind::Add) && k->is_integer() && terms(f.base).front().negative) {
@@ -798,7 +828,6 @@ private:
         };
         order(d.num);
         order(d.den);
-        return d;
     }
 
     // Number, constants, masses, parameters, coordinates, c/s, functions, sums, velocities.
