@@ -7,10 +7,22 @@
 namespace ll::symbolic {
 namespace {
 
+// Digits (and a minus) as Unicode superscripts, added to out.
+void appendSuperscript(std::string_view digits, std::string& out) {
+    static constexpr std::string_view sup[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
+    for (char c : digits) {
+        if (c == '-')
+            out += "⁻";
+        else if (c >= '0' && c <= '9')
+            out += sup[c - '0'];
+        else
+            out += c;
+    }
+}
+
 std::string superscript(const std::string& digits) {
-    static const char* sup[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
     std::string out;
-    for (char c : digits) out += c == '-' ? "⁻" : (c >= '0' && c <= '9' ? sup[c - '0'] : std::string(1, c));
+    appendSuperscript(digits, out);
     return out;
 }
 
@@ -18,12 +30,18 @@ bool allDigits(const std::string& s) {
     return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
 }
 
-// A combining mark after the first code point: q̇, θ̈.
-std::string withDots(const std::string& text, int dots) {
-    if (dots == 0) return text;
+// A combining mark after the first code point, added to out: q̇, θ̈.
+void appendWithDots(std::string_view text, int dots, std::string& out) {
+    if (dots == 0) {
+        out += text;
+        return;
+    }
     std::size_t first = 1;
     while (first < text.size() && (static_cast<unsigned char>(text[first]) & 0xC0) == 0x80) ++first;
-    return text.substr(0, first) + (dots == 1 ? "\u0307" : "\u0308") + text.substr(first);
+    first = std::min(first, text.size());
+    out += text.substr(0, first);
+    out += dots == 1 ? "\u0307" : "\u0308";
+    out += text.substr(first);
 }
 
 // Code points on screen: combining marks (U+0300–U+036F) take no column.
@@ -105,6 +123,7 @@ public:
         case DisplayKind::Number: return number(n, out);
         case DisplayKind::Sum: return sum(n, out);
         case DisplayKind::Product: return product(n, out);
+        case DisplayKind::Power: return power(n, out);
         case DisplayKind::Fence:
             out += style_ == DisplayStyle::Latex ? "\\left(" : "(";
             append(*n.children[0], out);
@@ -124,15 +143,23 @@ private:
         if (plain()) {
             out += key_ ? n.name : n.plain;
         } else if (style_ == DisplayStyle::Text) {
-            out += n.dots ? withDots(n.text, n.dots) : n.text;
-            out += n.subText;
-            out += n.supText;
+            appendWithDots(n.text, n.dots, out);
+            if (!n.subText.empty()) out += n.subText;
+            if (!n.supText.empty()) out += n.supText;
         } else {
             if (n.dots) out += n.dots == 1 ? "\\dot{" : "\\ddot{";
             out += n.latex;
             if (n.dots) out += '}';
-            if (!n.subLatex.empty()) out += "_{" + n.subLatex + "}";
-            if (!n.supLatex.empty()) out += "^{" + n.supLatex + "}";
+            if (!n.subLatex.empty()) {
+                out += "_{";
+                out += n.subLatex;
+                out += '}';
+            }
+            if (!n.supLatex.empty()) {
+                out += "^{";
+                out += n.supLatex;
+                out += '}';
+            }
         }
     }
 
@@ -149,7 +176,7 @@ private:
     }
 
     void sum(const DisplayNode& n, std::string& out) const {
-        const char* const minus = style_ == DisplayStyle::Text ? "−" : "-";
+        const std::string_view minus = style_ == DisplayStyle::Text ? "−" : "-";
         for (std::size_t i = 0; i < n.children.size(); ++i) {
             const bool neg = n.negative[i];
             if (i == 0) {
@@ -208,20 +235,49 @@ private:
         return (*this)(num) + "/" + (displayPrecedence(den) >= 2 ? bottom : "(" + bottom + ")");
     }
 
-    std::string power(const DisplayNode& n) const {
+    // A power added to out (c2², q̇1², x^(1/2)): the most frequent node after symbols.
+    void power(const DisplayNode& n, std::string& out) const {
         const DisplayNode &base = *n.children[0], &x = *n.children[1];
         const bool integer = isIntegerExponent(x);
-        if (!plain() && integer && base.kind == DisplayKind::Function)
-            return function(base, style_ == DisplayStyle::Text ? superscript(x.text) : "^{" + x.text + "}");
-        const std::string b = (*this)(base);
-        if (style_ == DisplayStyle::Latex)
-            return (base.kind == DisplayKind::Fence ? "{" + b + "}" : b) + "^{" + (*this)(x) + "}";
-        if (x.kind == DisplayKind::Number) {
-            if (integer) return b + (plain() ? "^" + x.text : superscript(x.text));
-            return b + "^(" + x.plain + ")";
+        if (!plain() && integer && base.kind == DisplayKind::Function) {
+            out += function(base, style_ == DisplayStyle::Text ? superscript(x.text) : "^{" + x.text + "}");
+            return;
         }
-        const std::string e = (*this)(x);
-        return b + "^" + (displayPrecedence(x) < 3 ? "(" + e + ")" : e);
+        if (style_ == DisplayStyle::Latex) {
+            const bool braced = base.kind == DisplayKind::Fence;
+            if (braced) out += '{';
+            append(base, out);
+            if (braced) out += '}';
+            out += "^{";
+            append(x, out);
+            out += '}';
+            return;
+        }
+        append(base, out);
+        if (x.kind == DisplayKind::Number) {
+            if (!integer) {
+                out += "^(";
+                out += x.plain;
+                out += ')';
+            } else if (plain()) {
+                out += '^';
+                out += x.text;
+            } else {
+                appendSuperscript(x.text, out);
+            }
+            return;
+        }
+        out += '^';
+        const bool parenthesised = displayPrecedence(x) < 3;
+        if (parenthesised) out += '(';
+        append(x, out);
+        if (parenthesised) out += ')';
+    }
+
+    std::string power(const DisplayNode& n) const {
+        std::string out;
+        power(n, out);
+        return out;
     }
 
     std::string function(const DisplayNode& n, const std::string& power) const {
