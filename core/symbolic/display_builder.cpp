@@ -37,7 +37,7 @@ bool startsWith(std::string_view s, std::string_view p) { return s.starts_with(p
 bool endsWith(std::string_view s, std::string_view p) { return s.ends_with(p); }
 
 struct Greek {
-    const char* name;
+    std::string_view name;  // a view: compared by length first (most names are not Greek)
     const char* text;
     const char* latex;
 };
