@@ -260,6 +260,9 @@ struct Factor {
 // coef · Π num / Π den, the factors in display order.
 struct Decomposed {
     numeric coef{1};
+    // coef while it is 1 or -1 by negations alone (the usual case), 0 once a number
+    // multiplied it: its sign without cln comparing numbers.
+    int unitSign = 1;
     std::vector<Factor> num, den;
 };
 
@@ -414,6 +417,7 @@ public:
         Decomposed d = decompose(e);
         if (!d.coef.is_real() || !d.coef.is_negative()) return renderProduct(d);
         d.coef = -d.coef;
+        d.unitSign = -d.unitSign;
         return negated(renderProduct(d));
     }
 
@@ -632,6 +636,7 @@ private:
     void bodyInto(const ex& rest, TermBody& b) {
         static const numeric unit(1), minusUnit(-1);
         b.d.coef = unit;
+        b.d.unitSign = 1;
         b.d.num.clear();
         b.d.den.clear();
         TermKey& k = b.key;
@@ -663,7 +668,11 @@ private:
         }
         std::sort(k.velocities.begin(), k.velocities.end());
         bodyKeyText(b.d, k.text);
-        b.sign = !b.d.coef.is_integer() ? 0 : b.d.coef.is_equal(unit) ? 1 : b.d.coef.is_equal(minusUnit) ? -1 : 0;
+        b.sign = b.d.unitSign != 0           ? b.d.unitSign
+                 : !b.d.coef.is_integer()    ? 0
+                 : b.d.coef.is_equal(unit)   ? 1
+                 : b.d.coef.is_equal(minusUnit) ? -1
+                                             : 0;
     }
 
     // The Plain spelling (with c/s names) of the term without its coefficient, as
@@ -762,7 +771,10 @@ private:
             const numeric* k = &ex_to<numeric>(f.exp);
             if (isKind(f.base, GinacKind::Add) && k->is_integer() && terms(f.base).front().negative) {
                 f.negated = true;
-                if (k->is_odd()) d.coef = -d.coef;
+                if (k->is_odd()) {
+                    d.coef = -d.coef;
+                    d.unitSign = -d.unitSign;
+                }
             }
             if (isKind(f.base, GinacKind::Symbol)) f.symbol = &entry(ex_to<GiNaC::symbol>(f.base));
             const bool below = k->is_negative();
@@ -776,6 +788,7 @@ private:
         auto one = [&](const ex& x) {
             if (isKind(x, GinacKind::Numeric)) {
                 d.coef *= ex_to<numeric>(x);
+                d.unitSign = 0;
             } else if (isKind(x, GinacKind::Power) && isKind(x.op(1), GinacKind::Numeric) && ex_to<numeric>(x.op(1)).is_real()) {
                 factor({x.op(0), x.op(1)});
             } else {
@@ -799,7 +812,10 @@ private:
                     factor({p.rest, p.coeff});
                 }
             }
-            if (const ex& c = GinacPairs::number(ex_to<GiNaC::mul>(e)); !isOne(c)) d.coef *= ex_to<numeric>(c);
+            if (const ex& c = GinacPairs::number(ex_to<GiNaC::mul>(e)); !isOne(c)) {
+                d.coef *= ex_to<numeric>(c);
+                d.unitSign = 0;
+            }
         } else {
             one(e);
         }
