@@ -369,18 +369,15 @@ struct SymbolEntry {
 // n == 1 as cln has it (a float 1.0 too), without cln converting every float to
 // compare it with an integer: only a float whose double is 1 is compared exactly.
 bool equalsOne(const numeric& n) {
-    static const GiNaC::basic* const shared = &ex_to<GiNaC::basic>(ex(1));  // GiNaC's own 1, often a pair's coefficient
-    if (&n == shared) return true;
+    if (isSharedOne(n)) return true;  // often a pair's coefficient
     static const numeric unit(1);
     if (n.is_integer()) return n.is_equal(unit);
     return n.is_real() && !n.is_rational() && n.to_double() == 1.0 && n.is_equal(unit);
 }
 
-// Whether e is the number 1: GiNaC's products hold its one shared 1 (ex(1) is it), so
-// mostly a pointer compared.
+// Whether e is the number 1: mostly GiNaC's shared 1, a pointer compared.
 bool isOne(const ex& e) {
-    static const GiNaC::basic* const one = &ex_to<GiNaC::basic>(ex(1));
-    if (&ex_to<GiNaC::basic>(e) == one) return true;
+    if (isSharedOne(ex_to<GiNaC::basic>(e))) return true;
     return ginacKind(e) == GinacKind::Numeric && equalsOne(ex_to<numeric>(e));
 }
 

@@ -195,11 +195,10 @@ private:
     }
 
     // * in Plain; a space (· before a digit) in Text; in LaTeX a space, \, beside
-    // functions and words, \cdot before a digit. (The separator goes in once the
-    // factor is written and its first character known.)
-    // The separator for a factor that does not start with a digit goes in before it;
-    // when the factor turns out to start with one (seldom: numbers come first), it is
-    // replaced. (Inserting it after every factor moved each factor's text.)
+    // functions and words, \cdot before a digit. The separator for a factor that does
+    // not start with a digit goes in before it; when the factor turns out to start with
+    // one (seldom: numbers come first), it is replaced. (Inserting it after every factor
+    // moved each factor's text.)
     void product(const DisplayNode& n, std::string& out) const {
         for (std::size_t i = 0; i < n.children.size(); ++i) {
             if (i == 0) {

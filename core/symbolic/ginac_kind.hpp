@@ -25,6 +25,14 @@ inline GinacKind ginacKind(const GiNaC::ex& e) {
     return GiNaC::is_a<GiNaC::function>(b) ? GinacKind::Function : GinacKind::Other;
 }
 
+// Whether b is GiNaC's one shared 1 (ex(1) is it): products and sums hold it as the
+// exponent or coefficient of most factors and terms, so a pointer compared answers
+// "is it 1?" without cln for most numbers.
+inline bool isSharedOne(const GiNaC::basic& b) {
+    static const GiNaC::basic* const one = &GiNaC::ex_to<GiNaC::basic>(GiNaC::ex(1));
+    return &b == one;
+}
+
 // is_a<T>(e) for the classes above (T's subclasses included), without a dynamic_cast.
 inline bool isKind(const GiNaC::ex& e, GinacKind kind) { return ginacKind(e) == kind; }
 

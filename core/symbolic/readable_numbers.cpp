@@ -39,9 +39,8 @@ namespace {
 bool anyNumber(const GiNaC::ex& e, bool (*is)(const GiNaC::numeric&)) {
     // Both tests (terminates, isDecimalFraction) are false for integers, so GiNaC's
     // shared 1 (most exponents, many coefficients) is passed by its address.
-    static const GiNaC::basic* const one = &GiNaC::ex_to<GiNaC::basic>(GiNaC::ex(1));
     auto number = [is](const GiNaC::ex& node, GinacKind kind) {
-        return kind == GinacKind::Numeric && &GiNaC::ex_to<GiNaC::basic>(node) != one && is(GiNaC::ex_to<GiNaC::numeric>(node));
+        return kind == GinacKind::Numeric && !isSharedOne(GiNaC::ex_to<GiNaC::basic>(node)) && is(GiNaC::ex_to<GiNaC::numeric>(node));
     };
     return anyNode(e, number);
 }
