@@ -7,7 +7,6 @@
 #include <atomic>
 #include <csignal>
 #include <cstdio>
-#include <regex>
 #include <sstream>
 
 #include <sys/resource.h>
@@ -16,6 +15,7 @@
 #include "app/cli_options.hpp"
 #include "app/commands.hpp"
 #include "app/offscreen_gui.hpp"
+#include "app/pixel_size.hpp"
 #include "app/progress_bar.hpp"
 #include "app/scene_loading.hpp"
 #include "core/pipeline/scene_simulation.hpp"
@@ -58,13 +58,9 @@ ui::ExportSettings parseRenderOptions(const Options& options, const Scene& scene
         throw UsageError("--out " + s.out + ": " + problem);
 
     const std::string size = options.text("size", "1280x720");
-    std::smatch m;
-    static const std::regex sizePattern("([0-9]{1,6})x([0-9]{1,6})");
-    if (!std::regex_match(size, m, sizePattern)) throw UsageError("--size " + size + ": expected WIDTHxHEIGHT in pixels, e.g. 1280x720");
-    s.width = std::stoi(m[1]);
-    s.height = std::stoi(m[2]);
-    if (s.width == 0 || s.height == 0) throw UsageError("--size " + size + ": width and height must be at least 1 pixel");
-    if (s.width > 8192 || s.height > 8192) throw UsageError("--size " + size + ": at most 8192 pixels per side");
+    const PixelSize pixels = parsePixelSize(size);
+    s.width = pixels.width;
+    s.height = pixels.height;
     if ((s.kind == ui::OutputKind::Mp4 || s.kind == ui::OutputKind::Webm) && (s.width % 2 || s.height % 2))
         throw UsageError("--size " + size + ": " + (s.kind == ui::OutputKind::Mp4 ? "H.264" : "VP9") +
                          " (yuv420p) needs an even width and height; try " + std::to_string(s.width + s.width % 2) + "x" +

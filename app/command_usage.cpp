@@ -11,7 +11,7 @@ struct CommandText {
     const char* summary;
 };
 
-constexpr std::array<CommandText, 9> commands{{
+constexpr std::array<CommandText, 10> commands{{
     {"eval", "SCENE --q v1,... --qd v1,... [--t T] [--tau v1,...]",
      "B, C, g, Q, q̈, E_kin, E_pot at one state, as JSON"},
     {"simulate",
@@ -50,6 +50,7 @@ constexpr std::array<CommandText, 9> commands{{
      " --process: whole `derive` processes (text, json, pdf; each parameter mode) against the\n"
      "        derivation inside each, the Panda by default; --form is passed on)"},
     {"help", "[COMMAND]", "this overview, or the usage of COMMAND (also: lagrangelab COMMAND --help)"},
+    {"version", "", "the program's version, `lagrangelab X.Y.Z` (also: lagrangelab --version)"},
 }};
 
 const CommandText* find(const std::string& name) {
@@ -85,9 +86,10 @@ const char* projectVersion() { return LL_VERSION; }
 std::string overviewUsage() {
     std::string s =
         "usage: lagrangelab <command> [arguments]\n       lagrangelab --version\n"
-        "       lagrangelab [SCENE] [--screenshot FILE.png [--play SECONDS] [--step N] [--teach q1,q2,...]]\n"
-        "           the window (default scene: examples/double_pendulum.json); with --screenshot it\n"
-        "           plays, shows a derivation step or poses the robot, saves the whole window and exits\n"
+        "       lagrangelab [SCENE] [--screenshot FILE.png [--play SECONDS] [--step N] [--teach q1,q2,...]] [--size WxH]\n"
+        "           the window (default scene: examples/double_pendulum.json; 1280x800 unless --size);\n"
+        "           with --screenshot it plays, shows a derivation step or poses the robot, saves the\n"
+        "           whole window and exits\n"
         "\ncommands:\n";
     for (const CommandText& c : commands) s += "  " + synopsis(c, 2) + "\n" + indented(c.summary, "      ");
     return s + "\nexit codes: 0 success, 2 bad input, 3 simulation stopped early\n";

@@ -77,6 +77,11 @@ int main(int argc, char** argv) {
     }
     const std::string command = argv[1];
     const Args args(argv + 2, argv + argc);
+    // `lagrangelab COMMAND --help`: that command's usage, whatever else is given.
+    if (!commandUsage(command).empty() && std::any_of(args.begin(), args.end(), isHelp)) {
+        std::fputs(commandUsage(command).c_str(), stdout);
+        return 0;
+    }
     if (command == "--version" || command == "version") {
         std::printf("lagrangelab %s\n", projectVersion());
         return 0;
@@ -89,11 +94,6 @@ int main(int argc, char** argv) {
             return 2;
         }
         std::fputs(usage.c_str(), stdout);
-        return 0;
-    }
-    // `lagrangelab COMMAND --help`: that command's usage, whatever else is given.
-    if (!commandUsage(command).empty() && std::any_of(args.begin(), args.end(), isHelp)) {
-        std::fputs(commandUsage(command).c_str(), stdout);
         return 0;
     }
 #if !LL_PROGRAM_PAINTS

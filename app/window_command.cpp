@@ -21,6 +21,7 @@
 #include "app/graphics_handoff.hpp"
 #include "app/event_wait.hpp"
 #include "app/offscreen_gui.hpp"
+#include "app/pixel_size.hpp"
 #include "core/io/atomic_file.hpp"
 #include "ui/main_window.hpp"
 #include "ui/playback_bar.hpp"
@@ -40,9 +41,8 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
     const double step = options.number("step", -1);
     if (options.has("step") && (step < 0 || step > 9 || step != std::floor(step) || (step == 9 && !options.has("teach"))))
         throw UsageError("--step: " + options.text("step") + " is not a step 0..8 (9, the results at the pose, with --teach)");
-    int width = 1280, height = 800;
-    if (options.has("size") && std::sscanf(options.text("size").c_str(), "%dx%d", &width, &height) != 2)
-        throw UsageError("--size: '" + options.text("size") + "' is not WxH");
+    // The window's size; it is never made smaller than its layout's minimum.
+    const PixelSize size = parsePixelSize(options.text("size", "1280x800"));
     if (!hasDisplay())
         throw UsageError("no display: the window needs an X server (set DISPLAY, run under xvfb-run, or use `lagrangelab render`)");
 
@@ -58,7 +58,7 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
         for (const QString& e : errors) std::cerr << "error: " << e.toStdString() << '\n';
         return 2;
     }
-    window.resize(width, height);
+    window.resize(size.width, size.height);
     const bool scripted = !screenshot.empty() || options.has("first-frame");
     if (scripted) window.setAskBeforeClosing(false);
     window.show();

@@ -420,7 +420,7 @@ private slots:
             QVERIFY(r.out.startsWith("usage: lagrangelab <command>"));
             QCOMPARE(r.out, bare.err);
             for (const char* command : {"eval SCENE", "simulate SCENE", "derive SCENE", "integrators", "accuracy SCENE",
-                                        "bench [SCENE...]", "help [COMMAND]"})
+                                        "bench [SCENE...]", "help [COMMAND]", "version"})
                 QVERIFY2(r.out.contains(QByteArray("\n  ") + command), command);
         }
     }
@@ -436,6 +436,8 @@ private slots:
         QTest::newRow("integrators") << "integrators" << "";
         QTest::newRow("accuracy") << "accuracy" << "SCENE [--integrators a,b,...]";
         QTest::newRow("bench") << "bench" << "[SCENE...] [--batches N] [--rhs | --derive | --cancel | --render | --typeset | --gui | --process]";
+        QTest::newRow("help") << "help" << "[COMMAND]";
+        QTest::newRow("version") << "version" << "";
     }
     void commandHelpPrintsItsUsage() {
         QFETCH(QString, command);

@@ -1055,6 +1055,14 @@ private slots:
         p.start(LL_CLI, {example("planar_2r.json"), "--screenshot", png, "--step", "12"});
         QVERIFY(p.waitForFinished(60000));
         QCOMPARE(p.exitCode(), 2);
+        // --size is checked like render's: no window of any size asked for.
+        for (const char* size : {"99999x10", "0x600", "-5x-5", "800x600junk"}) {
+            p.start(LL_CLI, {example("planar_2r.json"), "--screenshot", png, "--size", size});
+            QVERIFY(p.waitForFinished(60000));
+            QCOMPARE(p.exitCode(), 2);
+            const QByteArray err = p.readAllStandardError();
+            QVERIFY2(err.startsWith(QByteArray("error: --size ") + size + ":") && err.count('\n') == 1, err.constData());
+        }
     }
 };
 
