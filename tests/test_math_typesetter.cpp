@@ -409,6 +409,50 @@ private slots:
         QVERIFY2(baseline - dotTop < 0.8 * em, qPrintable(QString("dot top %1 em above the baseline").arg((baseline - dotTop) / em)));
     }
 
+    // Prose names symbols as the LaTeX rendering sets them ($q_1$, $x_0$, $\dot q$): a
+    // single letter with an index or dots is the typeset symbol, every other word text.
+    void proseSetsTheSymbolsItNames() {
+        const MathBox note = ui::layoutProse(QString::fromUtf8("x of axis x_0 in the frame of link 3; depends on q1, q12"));
+        const MathBox alone = ui::layoutMath(*symbolNode("q", "12"), 1.0);
+        // q12 drawn as the symbol q with subscript 12 (its pieces q, 1, 2), at the end of
+        // the line: the same pieces at the same places as the symbol alone, shifted.
+        QVERIFY(note.pieces.size() >= alone.pieces.size());
+        const std::size_t first = note.pieces.size() - alone.pieces.size();
+        const MathPiece& q = note.pieces[first];
+        QCOMPARE(q.text, QString("q"));
+        QCOMPARE(q.font, 1);  // italic
+        for (std::size_t i = 0; i < alone.pieces.size(); ++i) {
+            const MathPiece &a = alone.pieces[i], &n = note.pieces[first + i];
+            QCOMPARE(n.text, a.text);
+            QCOMPARE(n.size, a.size);
+            QVERIFY(((n.at - q.at) - (a.at - alone.pieces[0].at)).manhattanLength() < 1e-9);
+        }
+        const MathPiece& one = note.pieces[first + 1];
+        QVERIFY(one.size < q.size && one.at.y() > q.at.y() && one.at.x() > q.at.x());  // a subscript
+        QVERIFY(pieceWithText(note, "0") && pieceWithText(note, "x", 0));
+        // The words around them stay text, each run in the roman font at full size.
+        const MathPiece* words = pieceWithText(note, " in the frame of link 3; depends on ");
+        QVERIFY(words && words->font == 0 && words->size == 1.0);
+        QVERIFY(pieceWithText(note, "x of axis "));  // a bare letter is a word
+        // Dots: q̇ as the letter with the accent, as layoutMath sets a velocity.
+        auto velocity = symbolNode("q");
+        velocity->dots = 1;
+        const MathBox dotted = ui::layoutProse(QString::fromUtf8("q̇ the velocities"));
+        const MathBox q̇ = ui::layoutMath(*velocity);
+        QCOMPARE(dotted.pieces.front().text, q̇.pieces.front().text);
+        QCOMPARE(dotted.pieces.front().font, q̇.pieces.front().font);
+        // Not symbols: a letter inside a word or followed by one, and words that are
+        // only letters (in, on, a): one run of text, as layoutText sets it.
+        for (const char* text : {"UR5 (CB3), Planar 2R, H2O, a robot in 3D", "in on a of"}) {
+            const MathBox b = ui::layoutProse(QString::fromUtf8(text));
+            QCOMPARE(b.pieces.size(), std::size_t(1));
+            QCOMPARE(b.width, ui::layoutText(QString::fromUtf8(text)).width);
+        }
+        // A note is as wide as its parts side by side.
+        const MathBox parts[] = {ui::layoutText("depends on "), alone};
+        QVERIFY(std::abs(ui::layoutProse("depends on q12").width - (parts[0].width + parts[1].width)) < 1e-9);
+    }
+
     // A 7-joint arm typesets its structured form (it used to be refused): the names with
     // their meaning, B as sums; text stays text; no line from Qt on stderr.
     void pdfOfThePandaStructured() {

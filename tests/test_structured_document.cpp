@@ -261,6 +261,19 @@ private slots:
         QVERIFY(text.find("    b11 = ") != std::string::npos);
         QVERIFY(text.find("    c11 = ") == std::string::npos && text.find("    g1 = ") == std::string::npos);
         QVERIFY(text.find("Zero pattern") == std::string::npos);
+        // Each b_jk sums the links from max(j, k) to the last: "links 2–6", "link 6" alone
+        // (an en dash; LaTeX's -- in its document).
+        const std::string latex = document(s, DocumentFormat::Latex, seven);
+        for (int j = 1; j <= 6; ++j)
+            for (int k = j; k <= 6; ++k) {
+                const std::size_t at = text.find("    b" + std::to_string(j) + std::to_string(k) + " = ");
+                QVERIFY(at != std::string::npos);
+                const std::string line = text.substr(at, text.find('\n', at) - at);
+                const std::string links = k == 6 ? "link 6;" : "links " + std::to_string(k) + "–6;";
+                QVERIFY2(line.find("(sum of the contributions of " + links) != std::string::npos, line.c_str());
+                const std::string latexLinks = k == 6 ? "link 6;" : "links " + std::to_string(k) + "--6;";
+                QVERIFY2(latex.find("sum of the contributions of " + latexLinks) != std::string::npos, latexLinks.c_str());
+            }
 
         StructuredDocumentInfo early;
         early.firstStep = 1;

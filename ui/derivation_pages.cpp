@@ -25,6 +25,10 @@ namespace {
 // em of the margin is shaped whole to decide, so the breaks are those of shaping every
 // candidate line (kerning across a space moves a line's end by far less), without
 // shaping a paragraph of n words n times.
+// Bold prose (titles) is text only; the rest sets the symbols it names as math
+// (layoutProse: "depends on q1, q2" with q₁, q₂).
+MathBox prose(const QString& text, double size, bool bold) { return bold ? layoutText(text, size, true) : layoutProse(text, size); }
+
 std::vector<MathBox> wrapped(const QString& text, double size, double maxWidth, bool bold = false) {
     std::vector<MathBox> lines;
     const double space = layoutText(QStringLiteral("a b"), size, bold).width - layoutText(QStringLiteral("ab"), size, bold).width;
@@ -32,7 +36,7 @@ std::vector<MathBox> wrapped(const QString& text, double size, double maxWidth, 
     QString line;
     double lineWidth = 0;  // as the words add up
     for (const QString& w : text.split(' ', Qt::SkipEmptyParts)) {
-        const double wordWidth = layoutText(w, size, bold).width;
+        const double wordWidth = prose(w, size, bold).width;
         if (line.isEmpty()) {
             line = w;
             lineWidth = wordWidth;
@@ -40,18 +44,18 @@ std::vector<MathBox> wrapped(const QString& text, double size, double maxWidth, 
         }
         const double estimate = lineWidth + space + wordWidth;
         const QString candidate = line + ' ' + w;
-        const bool fits = std::abs(estimate - maxWidth) < nearMargin ? layoutText(candidate, size, bold).width <= maxWidth
+        const bool fits = std::abs(estimate - maxWidth) < nearMargin ? prose(candidate, size, bold).width <= maxWidth
                                                                       : estimate <= maxWidth;
         if (fits) {
             line = candidate;
             lineWidth = estimate;
         } else {
-            lines.push_back(layoutText(line, size, bold));
+            lines.push_back(prose(line, size, bold));
             line = w;
             lineWidth = wordWidth;
         }
     }
-    if (!line.isEmpty()) lines.push_back(layoutText(line, size, bold));
+    if (!line.isEmpty()) lines.push_back(prose(line, size, bold));
     return lines;
 }
 
@@ -165,7 +169,7 @@ void paginateFrom(const Source& source, const PageFormat& format, const PageSink
         for (std::size_t j = 0; const symbolic::DisplayItem* item = source.item(i, j); ++j) {
             std::vector<MathBox> lines = layoutItem(*item->equation, item->name, c.width() - em);
             if (!item->note.empty()) {  // what a name means, beside it when it fits, else under it
-                const MathBox note = layoutText(QString::fromStdString(item->note), 0.75);
+                const MathBox note = layoutProse(QString::fromStdString(item->note), 0.75);
                 if (lines.size() == 1 && lines[0].width + 2 * em + note.width <= c.width() - em)
                     hcat(lines[0], note, 2 * em);
                 else

@@ -8,6 +8,7 @@
 #include <QTextLayout>
 #include <QPainter>
 #include <QRawFont>
+#include <QRegularExpression>
 #include <QPainterPath>
 #include <algorithm>
 #include <cmath>
@@ -552,6 +553,32 @@ MathBox layoutText(const QString& text, double size, bool bold) {
     MathBox b = run(text, 0, size);
     if (bold)
         for (MathPiece& p : b.pieces) p.font = 3;
+    return b;
+}
+
+MathBox layoutProse(const QString& text, double size) {
+    // A Latin letter not inside a word, perhaps dotted (q̇, q̈), then digits (q1, c12,
+    // b22) or an underscore and digits or one lowercase letter (x_0, q_i); not followed
+    // by a letter, mark, digit or _. A bare letter (the x of "x of axis") stays text.
+    thread_local const QRegularExpression symbol(QStringLiteral(
+        "(?<![\\p{L}\\p{M}\\p{N}_])([A-Za-z])(\\x{0307}|\\x{0308})?(?:_([0-9]+|[a-z])|([0-9]+))?(?![\\p{L}\\p{M}\\p{N}_])"));
+    MathBox b;
+    qsizetype at = 0;
+    for (QRegularExpressionMatchIterator it = symbol.globalMatch(text); it.hasNext();) {
+        const QRegularExpressionMatch m = it.next();
+        const bool dotted = m.hasCaptured(2), indexed = m.hasCaptured(3) || m.hasCaptured(4);
+        if (!dotted && !indexed) continue;
+        hcat(b, run(text.mid(at, m.capturedStart() - at), 0, size));
+        DisplayNode n;
+        n.kind = DisplayKind::Symbol;
+        n.text = m.captured(1).toStdString();
+        n.subShown = (m.hasCaptured(3) ? m.captured(3) : m.captured(4)).toStdString();
+        n.dots = !dotted ? 0 : m.captured(2) == QChar(0x0307) ? 1 : 2;
+        hcat(b, symbolBox(n, size));
+        at = m.capturedEnd();
+    }
+    if (at == 0) return run(text, 0, size);
+    hcat(b, run(text.mid(at), 0, size));
     return b;
 }
 

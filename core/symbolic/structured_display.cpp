@@ -10,6 +10,7 @@
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/latex_formula.hpp"
 #include "core/symbolic/readable_numbers.hpp"
+#include "core/symbolic/structured_notes.hpp"
 
 namespace ll::symbolic {
 namespace {
@@ -110,12 +111,7 @@ std::string sectionLatex(int step) {
     return "";
 }
 
-std::string coordinateList(std::uint64_t bits, int n) {
-    std::string out;
-    for (int k = 0; k < n; ++k)
-        if (bits & (std::uint64_t(1) << k)) out += (out.empty() ? "q" : ", q") + idx(k);
-    return out.empty() ? "none" : out;
-}
+using notes::coordinateList;
 
 }  // namespace
 
@@ -195,7 +191,7 @@ std::shared_ptr<const DisplayDocument> structuredDisplayDocument(const Structure
             for (int j = 0; j < s.n; ++j)
                 for (int k = j; k < s.n; ++k)
                     st.items.push_back(item("b" + joined({idx(j), idx(k)}), entryLabel("b", {idx(j), idx(k)}), s.B(j, k),
-                                            "links " + idx(std::max(j, k)) + ".." + idx(s.n - 1) + "; depends on " +
+                                            notes::linkRange(std::max(j, k), s.n - 1) + "; depends on " +
                                                 coordinateList(s.coordinatesOfB(j, k), s.n)));
         if (step == 8) {
             for (int j = 0; j < s.n; ++j)

@@ -9,6 +9,7 @@
 #include "core/model/cancellation.hpp"
 #include "core/model/exit_memory.hpp"
 #include "core/symbolic/display_builder.hpp"
+#include "core/symbolic/structured_notes.hpp"
 #include "core/symbolic/expression_printer.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/json_writer.hpp"
@@ -52,15 +53,7 @@ private:
     DisplayStyle style_;
 };
 
-std::string coordinateList(std::uint64_t bits, int n) {
-    std::string out;
-    for (int k = 0; k < n; ++k)
-        if (bits & (std::uint64_t(1) << k)) {
-            out += out.empty() ? "q" : ", q";
-            out += idx(k);
-        }
-    return out.empty() ? "none" : out;
-}
+using notes::coordinateList;
 
 std::string entryLabel(char m, int r, int c, int n) {
     std::string label(1, m);  // appended, for the -Wrestrict false positive (coordinateName)
@@ -84,12 +77,7 @@ const char* latexStepTitle(int step) {
 }
 
 // "q2, q3" as LaTeX math: q_{2}, q_{3}.
-std::string latexCoordinateList(std::uint64_t bits, int n) {
-    std::string out;
-    for (int k = 0; k < n; ++k)
-        if (bits & (std::uint64_t(1) << k)) out += (out.empty() ? "$q_{" : ", q_{") + idx(k) + "}";
-    return out.empty() ? "none" : out + "$";
-}
+std::string latexCoordinateList(std::uint64_t bits, int n) { return notes::coordinateList(bits, n, notes::Style::Latex); }
 
 const char* stepTitle(int step) {
     switch (step) {
@@ -173,7 +161,7 @@ void forEachDefinition(const StructuredDynamics& s, const Selection& sel, Headin
 
 std::string entryMeaning(const StructuredDynamics& s, const EntryRef& e) {
     const std::string deps = coordinateList(s.table->coordinatesOf(valueOf(s, e)), s.n);
-    if (e.matrix == 'B') return "sum of the contributions of links " + idx(std::max(e.row, e.col)) + ".." + idx(s.n - 1) + "; depends on " + deps;
+    if (e.matrix == 'B') return "sum of the contributions of " + notes::linkRange(std::max(e.row, e.col), s.n - 1) + "; depends on " + deps;
     if (e.matrix == 'C') return "sum_k c_" + idx(e.row) + idx(e.col) + "k qd_k; depends on " + deps + " and the velocities";
     return "depends on " + deps;
 }
@@ -182,7 +170,7 @@ std::string entryMeaning(const StructuredDynamics& s, const EntryRef& e) {
 std::string latexEntryMeaning(const StructuredDynamics& s, const EntryRef& e) {
     const std::string deps = latexCoordinateList(s.table->coordinatesOf(valueOf(s, e)), s.n);
     if (e.matrix == 'B')
-        return "sum of the contributions of links " + idx(std::max(e.row, e.col)) + "..." + idx(s.n - 1) + "; depends on " + deps;
+        return "sum of the contributions of " + notes::linkRange(std::max(e.row, e.col), s.n - 1, notes::Style::Latex) + "; depends on " + deps;
     if (e.matrix == 'C')
         return "$\\sum_k c_{" + idx(e.row) + "," + idx(e.col) + ",k}\\,\\dot q_k$; depends on " + deps + " and the velocities";
     return "depends on " + deps;
