@@ -77,8 +77,9 @@ int main(int argc, char** argv) {
     }
     const std::string command = argv[1];
     const Args args(argv + 2, argv + argc);
-    // `lagrangelab COMMAND --help`: that command's usage, whatever else is given.
-    if (!commandUsage(command).empty() && std::any_of(args.begin(), args.end(), isHelp)) {
+    // `lagrangelab COMMAND --help`: that command's usage, whatever else is given
+    // (`help X --help` is X's usage, below).
+    if (command != "help" && !commandUsage(command).empty() && std::any_of(args.begin(), args.end(), isHelp)) {
         std::fputs(commandUsage(command).c_str(), stdout);
         return 0;
     }
@@ -87,7 +88,8 @@ int main(int argc, char** argv) {
         return 0;
     }
     if (isHelp(command) || command == "help") {
-        const std::string topic = command == "help" && !args.empty() ? args[0] : "";
+        // `help --help`: help's own usage.
+        const std::string topic = command != "help" || args.empty() ? "" : isHelp(args[0]) ? "help" : args[0];
         const std::string usage = topic.empty() ? overviewUsage() : commandUsage(topic);
         if (usage.empty()) {
             std::fprintf(stderr, "error: help: unknown command '%s' (commands: %s)\n", topic.c_str(), commandNames().c_str());

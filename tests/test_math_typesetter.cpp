@@ -448,6 +448,11 @@ private slots:
             QCOMPARE(b.pieces.size(), std::size_t(1));
             QCOMPARE(b.width, ui::layoutText(QString::fromUtf8(text)).width);
         }
+        // Two-digit indices are written with commas, as the labels show them: b7,10.
+        const MathBox wide = ui::layoutProse("to b7,10; depends on q10");
+        const MathBox b710 = ui::layoutMath(*symbolNode("b", "7,10"));
+        QCOMPARE(wide.width, ui::layoutText("to ").width + b710.width + ui::layoutText("; depends on ").width +
+                                 ui::layoutMath(*symbolNode("q", "10")).width);
         // A note is as wide as its parts side by side.
         const MathBox parts[] = {ui::layoutText("depends on "), alone};
         QVERIFY(std::abs(ui::layoutProse("depends on q12").width - (parts[0].width + parts[1].width)) < 1e-9);

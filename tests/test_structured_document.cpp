@@ -183,6 +183,13 @@ private slots:
         if (scene.isEmpty()) {  // b_{1,10}, never b_{1_10}
             QVERIFY(latex.find("b_{1,10} =") != std::string::npos);
             QVERIFY(latex.find("b_{1_10}") == std::string::npos);
+            // The names and notes index alike: β_{7,10}^{(10)}, "to b7,10", ∂b_{7,10}, never b710.
+            QVERIFY(latex.find("\\beta_{7,10}^{(10)}") != std::string::npos);
+            QVERIFY(latex.find("\\beta_{710}") == std::string::npos);
+            const std::string text = document(s, DocumentFormat::Text);
+            QVERIFY(text.find("contribution of link 10 to b7,10;") != std::string::npos);
+            QVERIFY(text.find("to b710") == std::string::npos && text.find("derivative of b710") == std::string::npos);
+            QVERIFY(text.find("sum_k c_7,10,k qd_k") != std::string::npos && text.find("sum_k c_23k qd_k") != std::string::npos);
             // and with an entry asked for and expanded
             StructuredDynamics copy = s;
             StructuredDocumentInfo info;

@@ -558,10 +558,12 @@ MathBox layoutText(const QString& text, double size, bool bold) {
 
 MathBox layoutProse(const QString& text, double size) {
     // A Latin letter not inside a word, perhaps dotted (q̇, q̈), then digits (q1, c12,
-    // b22) or an underscore and digits or one lowercase letter (x_0, q_i); not followed
-    // by a letter, mark, digit or _. A bare letter (the x of "x of axis") stays text.
+    // b22; b7,10 once an index has two digits) or an underscore and digits or one
+    // lowercase letter (x_0, q_i); not followed by a letter, mark, digit or _. A bare
+    // letter (the x of "x of axis") stays text. Lists in prose are ", "-separated, so a
+    // comma between digits belongs to the indices.
     thread_local const QRegularExpression symbol(QStringLiteral(
-        "(?<![\\p{L}\\p{M}\\p{N}_])([A-Za-z])(\\x{0307}|\\x{0308})?(?:_([0-9]+|[a-z])|([0-9]+))?(?![\\p{L}\\p{M}\\p{N}_])"));
+        "(?<![\\p{L}\\p{M}\\p{N}_])([A-Za-z])(\\x{0307}|\\x{0308})?(?:_([0-9]+|[a-z])|([0-9]+(?:,[0-9]+)*))?(?![\\p{L}\\p{M}\\p{N}_])"));
     MathBox b;
     qsizetype at = 0;
     for (QRegularExpressionMatchIterator it = symbol.globalMatch(text); it.hasNext();) {

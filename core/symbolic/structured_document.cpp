@@ -162,7 +162,10 @@ void forEachDefinition(const StructuredDynamics& s, const Selection& sel, Headin
 std::string entryMeaning(const StructuredDynamics& s, const EntryRef& e) {
     const std::string deps = coordinateList(s.table->coordinatesOf(valueOf(s, e)), s.n);
     if (e.matrix == 'B') return "sum of the contributions of " + notes::linkRange(std::max(e.row, e.col), s.n - 1) + "; depends on " + deps;
-    if (e.matrix == 'C') return "sum_k c_" + idx(e.row) + idx(e.col) + "k qd_k; depends on " + deps + " and the velocities";
+    if (e.matrix == 'C') {
+        const std::string ij = notes::indexList({e.row, e.col});
+        return "sum_k c_" + ij + (ij.find(',') == std::string::npos ? "k" : ",k") + " qd_k; depends on " + deps + " and the velocities";
+    }
     return "depends on " + deps;
 }
 

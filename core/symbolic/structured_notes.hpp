@@ -3,6 +3,7 @@
 // show them ("links 4–7; depends on q2, q3") and as LaTeX ("links 4--7; depends on
 // $q_{2}, q_{3}$"): one spelling for the structured printers and the display document.
 #include <cstdint>
+#include <initializer_list>
 #include <string>
 
 namespace ll::symbolic::notes {
@@ -20,6 +21,19 @@ inline std::string coordinateList(std::uint64_t bits, int n, Style style = Style
         }
     if (out.empty()) return "none";
     return style == Style::Latex ? out + "$" : out;
+}
+
+// Indices counted from 0, written from 1 side by side as the textbook does (b23), or
+// with commas once one has two digits (b7,10; β_{7,10}), as the labels show them.
+inline std::string indexList(std::initializer_list<int> zeroBased) {
+    bool wide = false;
+    for (int i : zeroBased) wide = wide || i + 1 >= 10;
+    std::string out;
+    for (int i : zeroBased) {
+        if (wide && !out.empty()) out += ',';
+        out += std::to_string(i + 1);
+    }
+    return out;
 }
 
 // Links first..last, counted from 0 and written from 1: "link 7" alone, "links 4–7" (an
