@@ -448,6 +448,11 @@ private slots:
             QCOMPARE(b.pieces.size(), std::size_t(1));
             QCOMPARE(b.width, ui::layoutText(QString::fromUtf8(text)).width);
         }
+        // A bare letter before a relation is a symbol too: "m = 0 < n = 2".
+        const MathBox relation = ui::layoutProse("(underactuated: m = 0 < n = 2)");
+        QVERIFY(pieceWithText(relation, "m") && pieceWithText(relation, "m")->font == 1);
+        QVERIFY(pieceWithText(relation, "n") && pieceWithText(relation, "n")->font == 1);
+        QVERIFY(pieceWithText(relation, "(underactuated: "));
         // Two-digit indices are written with commas, as the labels show them: b7,10.
         const MathBox wide = ui::layoutProse("to b7,10; depends on q10");
         const MathBox b710 = ui::layoutMath(*symbolNode("b", "7,10"));

@@ -556,12 +556,22 @@ MathBox layoutText(const QString& text, double size, bool bold) {
     return b;
 }
 
+namespace {
+
+// Whether a relation sign (= < > ≤ ≥ ≠) comes next in text from `at`, after spaces.
+bool beforeRelation(const QString& text, qsizetype at) {
+    while (at < text.size() && text[at] == QChar(' ')) ++at;
+    return at < text.size() && QStringView(u"=<>\u2264\u2265\u2260").contains(text[at]);
+}
+
+}  // namespace
+
 MathBox layoutProse(const QString& text, double size) {
     // A Latin letter not inside a word, perhaps dotted (q̇, q̈), then digits (q1, c12,
     // b22; b7,10 once an index has two digits) or an underscore and digits or one
     // lowercase letter (x_0, q_i); not followed by a letter, mark, digit or _. A bare
-    // letter (the x of "x of axis") stays text. Lists in prose are ", "-separated, so a
-    // comma between digits belongs to the indices.
+    // letter (the x of "x of axis") stays text unless a relation follows it (m = 0 < n).
+    // Lists in prose are ", "-separated, so a comma between digits belongs to the indices.
     thread_local const QRegularExpression symbol(QStringLiteral(
         "(?<![\\p{L}\\p{M}\\p{N}_])([A-Za-z])(\\x{0307}|\\x{0308})?(?:_([0-9]+|[a-z])|([0-9]+(?:,[0-9]+)*))?(?![\\p{L}\\p{M}\\p{N}_])"));
     MathBox b;
@@ -569,7 +579,7 @@ MathBox layoutProse(const QString& text, double size) {
     for (QRegularExpressionMatchIterator it = symbol.globalMatch(text); it.hasNext();) {
         const QRegularExpressionMatch m = it.next();
         const bool dotted = m.hasCaptured(2), indexed = m.hasCaptured(3) || m.hasCaptured(4);
-        if (!dotted && !indexed) continue;
+        if (!dotted && !indexed && !beforeRelation(text, m.capturedEnd())) continue;
         hcat(b, run(text.mid(at, m.capturedStart() - at), 0, size));
         DisplayNode n;
         n.kind = DisplayKind::Symbol;
