@@ -19,16 +19,16 @@
 namespace ll::ui {
 namespace {
 
+// Bold prose (titles) is text only; the rest sets the symbols it names as math
+// (layoutProse: "depends on q1, q2" with q₁, q₂).
+MathBox prose(const QString& text, double size, bool bold) { return bold ? layoutText(text, size, true) : layoutProse(text, size); }
+
 // Prose broken into lines of at most maxWidth units at spaces. Whether the next word
 // still fits is judged from the widths of the words and the space (each measured once and
 // cached: words recur across a derivation's notes); only a line that ends within half an
 // em of the margin is shaped whole to decide, so the breaks are those of shaping every
 // candidate line (kerning across a space moves a line's end by far less), without
 // shaping a paragraph of n words n times.
-// Bold prose (titles) is text only; the rest sets the symbols it names as math
-// (layoutProse: "depends on q1, q2" with q₁, q₂).
-MathBox prose(const QString& text, double size, bool bold) { return bold ? layoutText(text, size, true) : layoutProse(text, size); }
-
 std::vector<MathBox> wrapped(const QString& text, double size, double maxWidth, bool bold = false) {
     std::vector<MathBox> lines;
     const double space = layoutText(QStringLiteral("a b"), size, bold).width - layoutText(QStringLiteral("ab"), size, bold).width;

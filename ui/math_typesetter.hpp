@@ -76,9 +76,10 @@ std::vector<MathBox> layoutFormula(const symbolic::DisplayNode& formula, double 
 // A line of prose (a step's title or general formula) in the roman or bold font.
 MathBox layoutText(const QString& text, double size = 1.0, bool bold = false);
 
-// Prose with the symbols it names set as math, as the LaTeX rendering writes them
-// ($q_1$, $x_0$, $c_i$): a single Latin letter with an index (q1, c12, x_0, q_i) is an
-// italic letter with its subscript; the rest is roman text, as layoutText sets it.
+// Prose with the symbols it names set as math: a single Latin letter with an index or
+// dots (q1, c12, b7,10, x_0, q_i, q̇), or before a relation sign (the m of "m = 0"), is
+// the typeset symbol, italic with its subscript; the rest is roman text, as layoutText
+// sets it.
 MathBox layoutProse(const QString& text, double size = 1.0);
 
 // What boxes draw, in device units: every glyph of a font at one pixel size as one run,

@@ -9,12 +9,12 @@
 #include "core/model/cancellation.hpp"
 #include "core/model/exit_memory.hpp"
 #include "core/symbolic/display_builder.hpp"
-#include "core/symbolic/structured_notes.hpp"
 #include "core/symbolic/expression_printer.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/json_writer.hpp"
 #include "core/symbolic/latex_text.hpp"
 #include "core/symbolic/readable_numbers.hpp"
+#include "core/symbolic/structured_notes.hpp"
 
 namespace ll::symbolic {
 namespace {

@@ -9,8 +9,8 @@
 #include "core/model/cancellation.hpp"
 #include "core/model/diagnostics.hpp"
 #include "core/symbolic/ginac_lock.hpp"
-#include "core/symbolic/structured_notes.hpp"
 #include "core/symbolic/link_transform.hpp"
+#include "core/symbolic/structured_notes.hpp"
 #include "core/symbolic/symbolic_robot.hpp"
 
 namespace ll::symbolic {
