@@ -89,13 +89,13 @@ public:
         case DisplayKind::Number:
         case DisplayKind::Sum:
         case DisplayKind::Product:
+        case DisplayKind::Power:
         case DisplayKind::Fence: {
             std::string s;
             append(n, s);
             return s;
         }
         case DisplayKind::Fraction: return fraction(n);
-        case DisplayKind::Power: return power(n);
         case DisplayKind::Root: {
             const std::string c = (*this)(*n.children[0]);
             if (style_ == DisplayStyle::Latex) return "\\sqrt{" + c + "}";
@@ -271,12 +271,6 @@ private:
         if (parenthesised) out += '(';
         append(x, out);
         if (parenthesised) out += ')';
-    }
-
-    std::string power(const DisplayNode& n) const {
-        std::string out;
-        power(n, out);
-        return out;
     }
 
     std::string function(const DisplayNode& n, const std::string& power) const {

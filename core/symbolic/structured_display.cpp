@@ -17,13 +17,7 @@ namespace {
 
 std::string idx(int i) { return std::to_string(i + 1); }
 
-// Indices side by side (23), or with commas when one has two digits (2,10).
-std::string joined(const std::vector<std::string>& indices) {
-    const bool wide = std::any_of(indices.begin(), indices.end(), [](const std::string& s) { return s.size() > 1; });
-    std::string out;
-    for (const std::string& s : indices) out += (out.empty() || !wide ? "" : ",") + s;
-    return out;
-}
+using notes::joined;
 
 // base_{sub}^{(link)}: Text "base" + "sub" + "(link)", LaTeX base_{sub}^{(link)}.
 std::shared_ptr<DisplayNode> scripted(const std::string& text, const std::string& latex, const std::string& sub,

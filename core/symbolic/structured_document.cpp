@@ -76,8 +76,6 @@ const char* latexStepTitle(int step) {
     return "";
 }
 
-// "q2, q3" as LaTeX math: q_{2}, q_{3}.
-std::string latexCoordinateList(std::uint64_t bits, int n) { return notes::coordinateList(bits, n, notes::Style::Latex); }
 
 const char* stepTitle(int step) {
     switch (step) {
@@ -171,7 +169,7 @@ std::string entryMeaning(const StructuredDynamics& s, const EntryRef& e) {
 
 // entryMeaning in LaTeX: the sum and the coordinates as math.
 std::string latexEntryMeaning(const StructuredDynamics& s, const EntryRef& e) {
-    const std::string deps = latexCoordinateList(s.table->coordinatesOf(valueOf(s, e)), s.n);
+    const std::string deps = coordinateList(s.table->coordinatesOf(valueOf(s, e)), s.n, notes::Style::Latex);
     if (e.matrix == 'B')
         return "sum of the contributions of " + notes::linkRange(std::max(e.row, e.col), s.n - 1, notes::Style::Latex) + "; depends on " + deps;
     if (e.matrix == 'C')
@@ -253,7 +251,7 @@ void writeLatex(const StructuredDynamics& s, const StructuredDocumentInfo& info,
         s, sel, [&](int step) { out << "\\section*{Step " << step << "}\n" << latexStepTitle(step) << "\n\\medskip\n"; },
         [&](const NamedDefinition& d) {
             out << "\\lldefinition{$" << latex(d.symbol) << " = " << latex.readable(d.value) << "$}{$" << d.latex
-                << "$: " << latexText(d.meaning) << "; depends on " << latexCoordinateList(d.coordinates, s.n) << "}\n";
+                << "$: " << latexText(d.meaning) << "; depends on " << coordinateList(d.coordinates, s.n, notes::Style::Latex) << "}\n";
         });
     if (!sel.entries.empty()) out << "\\section*{Results over the names}\n";
     for (const EntryRef& e : sel.entries)

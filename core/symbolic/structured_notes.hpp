@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <initializer_list>
 #include <string>
+#include <vector>
 
 namespace ll::symbolic::notes {
 
@@ -23,17 +24,24 @@ inline std::string coordinateList(std::uint64_t bits, int n, Style style = Style
     return style == Style::Latex ? out + "$" : out;
 }
 
-// Indices counted from 0, written from 1 side by side as the textbook does (b23), or
-// with commas once one has two digits (b7,10; β_{7,10}), as the labels show them.
-inline std::string indexList(std::initializer_list<int> zeroBased) {
+// Indices side by side as the textbook writes them (b23), or with commas once one has
+// two digits (b7,10; β_{7,10}): the labels' and the notes' one rule.
+inline std::string joined(const std::vector<std::string>& indices) {
     bool wide = false;
-    for (int i : zeroBased) wide = wide || i + 1 >= 10;
+    for (const std::string& i : indices) wide = wide || i.size() > 1;
     std::string out;
-    for (int i : zeroBased) {
+    for (const std::string& i : indices) {
         if (wide && !out.empty()) out += ',';
-        out += std::to_string(i + 1);
+        out += i;
     }
     return out;
+}
+
+// The same for indices counted from 0, written from 1.
+inline std::string indexList(std::initializer_list<int> zeroBased) {
+    std::vector<std::string> indices;
+    for (int i : zeroBased) indices.push_back(std::to_string(i + 1));
+    return joined(indices);
 }
 
 // Links first..last, counted from 0 and written from 1: "link 7" alone, "links 4–7" (an
