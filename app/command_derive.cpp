@@ -42,7 +42,7 @@ StepRange parseSteps(const std::string& text) {
 }
 
 // --timings (when asked) and the warnings, on stderr.
-void report(const DerivedDocument& derived, const DocumentWriting& writing, bool timings) {
+void report(const DerivedDocument& derived, bool timings) {
     if (timings) {
         double total = 0;
         for (const StepTiming& step : derived.timings) {
@@ -51,8 +51,6 @@ void report(const DerivedDocument& derived, const DocumentWriting& writing, bool
         }
         std::fprintf(stderr, "total: %.3f ms\n", 1e3 * total);
         std::fprintf(stderr, "printing: %.3f ms\n", 1e3 * derived.printSeconds);
-        if (writing.parts > 0)
-            std::fprintf(stderr, "item renderings: %zu, %zu of them on the shaping thread\n", writing.parts, writing.renderedByShaper);
     }
     for (const std::string& w : derived.warnings) std::cerr << "warning: " << w << '\n';
 }
@@ -95,19 +93,13 @@ int deriveCommand(const Args& args) {
         form == "structured" ? DerivationForm::Structured : form == "expanded" ? DerivationForm::Expanded : DerivationForm::Auto;
     if (typeset && (options.has("entry") || options.has("verify")))  // the typeset pages show the form auto (or --form) picks
         throw UsageError("--format " + format + ": typesets whole derivations; --entry and --verify are for text, latex and json");
-    DocumentWriting writing;  // how the expanded text, LaTeX or JSON shared its rendering (--timings)
-    request.writing = &writing;
     const bool timings = options.has("timings");
-    if (typeset)
-        return writeDerivationPages(
-            [&](symbolic::DisplayStream* stream) {
-                request.displayStream = stream;
-                request.forPages = true;  // long sums built as the pages cut them
-                const DerivedDocument derived = inSceneFile(options.positional()[0], [&] { return deriveDisplay(scene, request, chosenForm); });
-                report(derived, writing, timings);
-                return derived.display;
-            },
-            format, options.text("out"), timings);
+    if (typeset) {
+        request.forPages = true;  // long sums built as the pages cut them
+        const DerivedDocument derived = inSceneFile(options.positional()[0], [&] { return deriveDisplay(scene, request, chosenForm); });
+        report(derived, timings);
+        return writeDerivationPages(*derived.display, format, options.text("out"), timings);
+    }
     FormRequest formRequest;
     formRequest.document = request;
     formRequest.form = chosenForm;
@@ -128,7 +120,7 @@ int deriveCommand(const Args& args) {
         }
     });
     for (const std::string& line : result.verification) std::cerr << "verify: " << line << '\n';
-    report(result.derived, writing, timings);
+    report(result.derived, timings);
     std::cout << result.derived.document;
     return 0;
 }

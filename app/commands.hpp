@@ -11,7 +11,6 @@ namespace ll {
 struct WorkPrecisionResult;
 namespace symbolic {
 struct DisplayDocument;
-class DisplayStream;
 }  // namespace symbolic
 }  // namespace ll
 
@@ -42,11 +41,9 @@ bool commandPaints(const std::string& command, const Args& args);
 
 // The painting parts, defined in lagrangelab-gui (in lagrangelab they hand the command
 // line over to it).
-// derive --format pdf|svg|png: the typeset pages (app/derive_pages.cpp). `derive` shapes
-// the display document on this thread; given a stream it also hands each item to it as it
-// is shaped (the PDF is laid out and written beside it), else returns it whole.
-using DisplayDerivation = std::function<std::shared_ptr<const symbolic::DisplayDocument>(symbolic::DisplayStream* stream)>;
-int writeDerivationPages(const DisplayDerivation& derive, const std::string& format, const std::string& outPath, bool timings);
+// derive --format pdf|svg|png: the typeset pages of a display document (app/derive_pages.cpp).
+int writeDerivationPages(const symbolic::DisplayDocument& display, const std::string& format, const std::string& outPath,
+                         bool timings);
 // accuracy --out: the work–precision plot, .svg or .png (app/accuracy_plot.cpp).
 void saveAccuracyPlot(const WorkPrecisionResult& result, const std::string& path);
 // The desktop window: `lagrangelab [SCENE] [--screenshot FILE.png …]` (app/window_command.cpp).

@@ -12,9 +12,7 @@
 #include "app/command_usage.hpp"
 #include "app/commands.hpp"
 #include "app/graphics_handoff.hpp"
-#include "core/io/huge_page_heap.hpp"
 #include "core/model/diagnostics.hpp"
-#include "core/model/exit_memory.hpp"
 
 namespace {
 
@@ -102,13 +100,6 @@ int main(int argc, char** argv) {
     // This is lagrangelab, without Qt and OpenSceneGraph: what paints runs in lagrangelab-gui.
     if (commandPaints(command, args)) return handOverToGraphicsProgram();
 #endif
-    // A derivation builds hundreds of megabytes of small objects and exits: its heap in
-    // huge pages (core/io/huge_page_heap.hpp) prints the expanded Panda a fifth faster,
-    // and what it built is left to the exit, not freed block by block (core/model/exit_memory.hpp).
-    if (command == "derive") {
-        ll::useHugePagesForHeap();
-        ll::leaveMemoryToExit();
-    }
     return reportingErrors([&] {
         if (command == "eval") return evalCommand(args);
         if (command == "simulate") return simulateCommand(args);

@@ -24,7 +24,7 @@ int renderCommand(const Args&) { return handOverToGraphicsProgram(); }
 int benchGui(const std::vector<std::string>&, int) { return handOverToGraphicsProgram(); }
 int benchRender(const std::vector<std::string>&, int) { return handOverToGraphicsProgram(); }
 int benchTypeset(const std::vector<std::string>&, int) { return handOverToGraphicsProgram(); }
-int writeDerivationPages(const DisplayDerivation&, const std::string&, const std::string&, bool) {
+int writeDerivationPages(const symbolic::DisplayDocument&, const std::string&, const std::string&, bool) {
     return handOverToGraphicsProgram();
 }
 void saveAccuracyPlot(const WorkPrecisionResult&, const std::string&) { handOver(); }

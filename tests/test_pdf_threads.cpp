@@ -1,6 +1,6 @@
-// The typeset PDF's threads (ui/derivation_pages): a second thread lays out the pages
-// while QPdfWriter writes the finished ones, and the window may export two documents at
-// once (a PDF beside SVG or PNG pages too). Labelled `threads`: `scripts/lab tsan` runs it under ThreadSanitizer, which must
+// The typeset pages on several threads at once (ui/derivation_pages): the window exports
+// on a pool thread while another export runs (a PDF beside SVG or PNG pages too), and
+// they share Qt's fonts. Labelled `threads`: `scripts/lab tsan` runs it under ThreadSanitizer, which must
 // report no race.
 //
 // Every PDF is compared with the same document written alone first: its page count and
@@ -18,7 +18,6 @@
 #include "core/io/scene_file.hpp"
 #include "core/model/cancellation.hpp"
 #include "core/pipeline/display_derivation.hpp"
-#include "core/symbolic/display_stream.hpp"
 #include "ui/derivation_pages.hpp"
 #include "ui/math_typesetter.hpp"
 #include "pdf_streams.hpp"
@@ -54,28 +53,6 @@ struct Written {
     std::string error;
 };
 
-// A PDF written from a stream on its own thread. Should the test stop early (a failed
-// check returns), the stream is failed and the thread joined: never left running.
-class StreamWriter {
-public:
-    StreamWriter(symbolic::DisplayStream& stream, const QString& path)
-        : stream_(stream), thread_([this, path] { written_.ok = ui::writePdf(stream_, path, written_.error, {}, &written_.pages); }) {}
-    ~StreamWriter() {
-        if (!thread_.joinable()) return;
-        stream_.fail();
-        thread_.join();
-    }
-    const Written& join() {
-        thread_.join();
-        return written_;
-    }
-
-private:
-    symbolic::DisplayStream& stream_;
-    Written written_;
-    std::thread thread_;
-};
-
 Written write(const symbolic::DisplayDocument& document, const QString& path) {
     Written w;
     w.ok = ui::writePdf(document, path, w.error, {}, &w.pages);
@@ -90,8 +67,7 @@ class TestPdfThreads : public QObject {
 private slots:
     void initTestCase() { QVERIFY2(ui::mathFontsAvailable(), "fonts-lmodern is not installed"); }
 
-    // One document: layout and writing overlap; every page arrives, in order, the same
-    // each time.
+    // One document: every page laid out is written, the same each time.
     void pagesWrittenAreThePagesLaidOut() {
         QTemporaryDir dir;
         for (const char* example : {"planar_2r.json", "scara.json", "panda.json"}) {
@@ -112,7 +88,7 @@ private slots:
     }
 
     // Two exports at once (the window exports on a pool thread while the CLI or another
-    // export runs): four threads share the fonts; each PDF equals the one written alone.
+    // export runs): two threads share the fonts; each PDF equals the one written alone.
     void twoExportsAtOnce() {
         QTemporaryDir dir;
         const auto scara = documentOf("scara.json");
@@ -171,90 +147,6 @@ private slots:
         }
         for (std::size_t i = 0; i < pngAlone.size(); ++i)
             QVERIFY2(QImage(pngAlone[i]) == QImage(pngTogether[i]), qPrintable(pngTogether[i]));
-    }
-
-    // `derive --format pdf`: the pages are laid out and written on two threads while this
-    // one still shapes the document (core/symbolic/display_stream). The PDF equals the one
-    // written from the finished document, whichever side waits for the other: the real
-    // derivation (expanded 2R and SCARA, structured Panda handed over whole), and a
-    // document handed over item by item with pauses, so the layout thread waits mid-step.
-    void aPdfWrittenWhileTheDocumentIsShaped() {
-        QTemporaryDir dir;
-        for (const char* example : {"planar_2r.json", "scara.json", "panda.json"}) {
-            const auto whole = documentOf(example);
-            QVERIFY(write(*whole, dir.filePath("whole.pdf")).ok);
-            const QList<QByteArray> expected = streamsOf(dir.filePath("whole.pdf"));
-            QVERIFY(pagesIn(expected) >= 1);
-
-            symbolic::DisplayStream stream;
-            StreamWriter writer(stream, dir.filePath("streamed.pdf"));
-            DocumentRequest request;
-            request.displayStream = &stream;
-            const auto shaped = deriveDisplay(loadScene(std::string(LL_EXAMPLES_DIR) + "/" + example).scene, request).display;
-            const Written streamed = writer.join();
-            QVERIFY2(streamed.ok, streamed.error.c_str());
-            QCOMPARE(shaped->steps.size(), whole->steps.size());
-            QVERIFY2(streamsOf(dir.filePath("streamed.pdf")) == expected, example);
-
-            symbolic::DisplayStream slow;
-            StreamWriter slowWriter(slow, dir.filePath("paused.pdf"));
-            std::this_thread::sleep_for(std::chrono::milliseconds(5));
-            slow.open(*whole);
-            for (const symbolic::DisplayStep& step : whole->steps) {
-                slow.putStep(step);
-                for (std::size_t j = 0; j < step.items.size(); ++j) {
-                    if (j % 3 == 0) std::this_thread::sleep_for(std::chrono::milliseconds(1));
-                    slow.putItem(step.items[j]);
-                }
-            }
-            std::this_thread::sleep_for(std::chrono::milliseconds(5));
-            slow.close(whole->actuation);
-            const Written paused = slowWriter.join();
-            QVERIFY2(paused.ok, paused.error.c_str());
-            QCOMPARE(paused.pages, pagesIn(expected));
-            QVERIFY2(streamsOf(dir.filePath("paused.pdf")) == expected, example);
-        }
-    }
-
-    // The shaping fails half way (an error, a cancel): the writer stops, says so, and
-    // saves nothing (no half file, and an older file of that name is left as it was).
-    void aFailedShapingSavesNothing() {
-        QTemporaryDir dir;
-        const QString path = dir.filePath("derivation.pdf");
-        {
-            QFile old(path);
-            QVERIFY(old.open(QIODevice::WriteOnly));
-            old.write("an older export");
-        }
-        const auto whole = documentOf("scara.json");
-        symbolic::DisplayStream stream;
-        StreamWriter writer(stream, path);
-        stream.open(*whole);
-        stream.putStep(whole->steps.at(0));
-        for (const symbolic::DisplayItem& item : whole->steps.at(0).items) stream.putItem(item);
-        stream.putStep(whole->steps.at(1));
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));  // the first page laid out, waiting
-        stream.fail();
-        const Written w = writer.join();
-        QVERIFY(!w.ok);
-        QVERIFY2(w.error.find("derivation stopped") != std::string::npos, w.error.c_str());
-        QFile old(path);
-        QVERIFY(old.open(QIODevice::ReadOnly));
-        QCOMPARE(old.readAll(), QByteArray("an older export"));
-        QCOMPARE(QDir(dir.path()).entryList(QDir::Files).size(), 1);  // no temporary left
-
-        // And a derivation that throws fails its stream itself (the CLI's writer is never
-        // left waiting): a scene whose shaping is cancelled before it starts.
-        symbolic::DisplayStream cancelled;
-        StreamWriter cancelledWriter(cancelled, dir.filePath("cancelled.pdf"));
-        std::atomic<bool> cancel{true};
-        DocumentRequest request;
-        request.displayStream = &cancelled;
-        request.cancel = &cancel;
-        QVERIFY_THROWS_EXCEPTION(Cancelled, deriveDisplay(loadScene(std::string(LL_EXAMPLES_DIR) + "/scara.json").scene, request));
-        const Written c = cancelledWriter.join();
-        QVERIFY(!c.ok);
-        QVERIFY(!QFile::exists(dir.filePath("cancelled.pdf")));
     }
 };
 

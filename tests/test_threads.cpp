@@ -29,12 +29,10 @@ namespace {
 
 Scene example(const std::string& name) { return loadScene(std::string(LL_EXAMPLES_DIR) + "/" + name).scene; }
 
-std::string derive(const Scene& scene, symbolic::ParameterMode mode, symbolic::DocumentFormat format,
-                   symbolic::DocumentWriting* writing = nullptr) {
+std::string derive(const Scene& scene, symbolic::ParameterMode mode, symbolic::DocumentFormat format) {
     DocumentRequest request;
     request.mode = mode;
     request.format = format;
-    request.writing = writing;
     return deriveDocument(scene, request).document;
 }
 
@@ -187,12 +185,10 @@ private slots:
                 std::string::npos);
     }
 
-    // A text, LaTeX or JSON document is written on a second thread while the GiNaC thread
-    // shapes the next step (derivationDocument). It must say exactly what the display
-    // trees say when rendered afterwards on one thread: the same text and LaTeX, and
-    // JSON whose every item, and the B, C, g, Q and energies it repeats at the top level
-    // (written from a cache of the items' renderings), match the trees.
-    void documentsWrittenBesideTheirShaping() {
+    // A text, LaTeX or JSON document says exactly what the display trees say when
+    // rendered on their own: the same text and LaTeX, and JSON whose every item, and the
+    // B, C, g, Q and energies it repeats at the top level, match the trees.
+    void documentsSayWhatTheirTreesSay() {
         for (const char* name : {"planar_2r.json", "puma560.json", "mass_spring_pair_lagrangian.json"}) {
             const Scene scene = example(name);
             for (const auto mode : {symbolic::ParameterMode::Parametric, symbolic::ParameterMode::Textbook}) {
@@ -204,37 +200,6 @@ private slots:
                 compareJsonWithTrees(nlohmann::json::parse(derive(scene, mode, symbolic::DocumentFormat::Json)), *display, name);
                 if (QTest::currentTestFailed()) return;
 
-            }
-        }
-    }
-
-    // The last items' renderings are shared: once everything is shaped, the shaping
-    // thread renders from the last item back while the writer goes on from the front.
-    // Held until that thread has taken its first, the writer meets renderings made by
-    // the other thread; the documents are still the display trees rendered one node at
-    // a time on this thread.
-    void documentsRenderedByBothThreads() {
-        for (const char* name : {"planar_2r.json", "puma560.json", "mass_spring_pair_lagrangian.json"}) {
-            const Scene scene = example(name);
-            for (const auto mode : {symbolic::ParameterMode::Parametric, symbolic::ParameterMode::Textbook}) {
-                const auto trees = displayTrees(scene, mode);
-                QVERIFY(trees && !trees->steps.empty());
-                std::size_t items = 0;
-                for (const auto& step : trees->steps) items += step.items.size();
-                for (const auto format : {symbolic::DocumentFormat::Text, symbolic::DocumentFormat::Latex, symbolic::DocumentFormat::Json}) {
-                    symbolic::DocumentWriting shared;
-                    shared.writerWaitsForHelper = true;
-                    const std::string document = derive(scene, mode, format, &shared);
-                    const std::size_t parts = format == symbolic::DocumentFormat::Json ? 3 : 1;
-                    QCOMPARE(shared.parts, parts * items);
-                    QVERIFY2(shared.renderedByShaper >= 1, name);
-                    if (format == symbolic::DocumentFormat::Json) {
-                        compareJsonWithTrees(nlohmann::json::parse(document), *trees, name);
-                        if (QTest::currentTestFailed()) return;
-                    } else {
-                        QCOMPARE(document, symbolic::renderDocument(*trees, format));
-                    }
-                }
             }
         }
     }

@@ -7,11 +7,6 @@
 #include <QPdfWriter>
 #include <algorithm>
 #include <cmath>
-#include <condition_variable>
-#include <deque>
-#include <exception>
-#include <mutex>
-#include <thread>
 
 #include "core/io/atomic_file.hpp"
 #include "ui/svg_page.hpp"
@@ -107,44 +102,9 @@ DerivationPages paginate(const symbolic::DisplayDocument& document, const PageFo
 
 namespace {
 
-// What paginate reads: a finished document, or a stream that grows while it is read.
-struct CompleteDocument {
-    const symbolic::DisplayDocument& document;
-    const symbolic::DisplayDocument& head() const { return document; }
-    const symbolic::DisplayStep* step(std::size_t i) const { return i < document.steps.size() ? &document.steps[i] : nullptr; }
-    const symbolic::DisplayItem* item(std::size_t i, std::size_t j) const {
-        return j < document.steps[i].items.size() ? &document.steps[i].items[j] : nullptr;
-    }
-    std::string actuation() const { return document.actuation; }
-};
-
-struct StreamFailed {};  // the shaping thread failed: its own error is the one to report
-
-struct GrowingDocument {
-    symbolic::DisplayStream& stream;
-    const symbolic::DisplayDocument& head() const {
-        if (const symbolic::DisplayDocument* h = stream.head()) return *h;
-        throw StreamFailed{};
-    }
-    const symbolic::DisplayStep* step(std::size_t i) const { return checked(stream.step(i)); }
-    const symbolic::DisplayItem* item(std::size_t i, std::size_t j) const { return checked(stream.item(i, j)); }
-    std::string actuation() const {
-        std::string a = stream.actuation();
-        if (stream.failed()) throw StreamFailed{};
-        return a;
-    }
-    template <class T>
-    T* checked(T* p) const {
-        if (!p && stream.failed()) throw StreamFailed{};
-        return p;
-    }
-};
-
-template <class Source>
-void paginateFrom(const Source& source, const PageFormat& format, const PageSink& sink) {
+void paginateFrom(const symbolic::DisplayDocument& document, const PageFormat& format, const PageSink& sink) {
     Composer c(format, sink);
     const double em = mathUnitsPerEm;
-    const symbolic::DisplayDocument& document = source.head();
     c.block(wrapped(QString::fromStdString("Euler–Lagrange model: " + document.systemName), 1.5, c.width(), true), 0, 0, 0.3 * em);
     c.block(wrapped("Shorthand: c_i = cos q_i, s_i = sin q_i, c12 = cos(q1 + q2); q̇, q̈ the joint velocities and "
                     "accelerations.",
@@ -158,7 +118,8 @@ void paginateFrom(const Source& source, const PageFormat& format, const PageSink
         hcat(out, l, em);
         return out;
     };
-    for (std::size_t i = 0; const symbolic::DisplayStep* step = source.step(i); ++i) {
+    for (const symbolic::DisplayStep& s : document.steps) {
+        const symbolic::DisplayStep* step = &s;
         std::vector<MathBox> head = wrapped(QString("Step %1. %2").arg(step->number).arg(QString::fromStdString(step->title)),
                                             1.2, c.width(), true);
         if (step->formula)  // the notes' general formula, typeset
@@ -166,7 +127,8 @@ void paginateFrom(const Source& source, const PageFormat& format, const PageSink
         else
             for (const MathBox& l : wrapped(QString::fromStdString(step->formulaText), 0.85, c.width() - em)) head.push_back(indented(l));
         c.block(head, 0, 1.4 * em, 0.3 * em);
-        for (std::size_t j = 0; const symbolic::DisplayItem* item = source.item(i, j); ++j) {
+        for (const symbolic::DisplayItem& it : step->items) {
+            const symbolic::DisplayItem* item = &it;
             std::vector<MathBox> lines = layoutItem(*item->equation, item->name, c.width() - em);
             if (!item->note.empty()) {  // what a name means, beside it when it fits, else under it
                 const MathBox note = layoutProse(QString::fromStdString(item->note), 0.75);
@@ -178,14 +140,14 @@ void paginateFrom(const Source& source, const PageFormat& format, const PageSink
             c.block(lines, em, (item->note.empty() ? 0.7 : 0.35) * em, 0.45 * em);
         }
     }
-    c.block(wrapped(QString::fromStdString("Actuation: " + source.actuation()), 0.9, c.width()), 0, 1.2 * em, 0.2 * em);
+    c.block(wrapped(QString::fromStdString("Actuation: " + document.actuation), 0.9, c.width()), 0, 1.2 * em, 0.2 * em);
     c.finish();
 }
 
 }  // namespace
 
 void paginate(const symbolic::DisplayDocument& document, const PageFormat& format, const PageSink& sink) {
-    paginateFrom(CompleteDocument{document}, format, sink);
+    paginateFrom(document, format, sink);
 }
 
 namespace {
@@ -223,14 +185,15 @@ QString pagePath(const QString& path, int page) {
 
 }  // namespace
 
-namespace {
+bool writePdf(const symbolic::DisplayDocument& document, const QString& path, std::string& error, const PageFormat& format,
+              int* pageCount) {
+    const DerivationPages pages = paginate(document, format);
+    if (pageCount) *pageCount = static_cast<int>(pages.pages.size());
+    return writePdf(pages, path, error);
+}
 
-struct Cancelled {};  // the writer has stopped: lay out no more pages
-
-// The PDF of the pages `next` hands out in order (false: no more); its painting runs on
-// the calling thread.
-template <typename NextPage>
-bool writePdfOf(const PageFormat& format, NextPage&& next, const QString& path, std::string& error) {
+bool writePdf(const DerivationPages& pages, const QString& path, std::string& error) {
+    const PageFormat& format = pages.format;
     QByteArray bytes;
     QBuffer buffer(&bytes);
     buffer.open(QIODevice::WriteOnly);
@@ -243,101 +206,12 @@ bool writePdfOf(const PageFormat& format, NextPage&& next, const QString& path, 
         pdf.setTitle("Euler–Lagrange derivation");
         pdf.setCreator("LagrangeLab");
         QPainter painter(&pdf);
-        std::vector<PlacedBox> page;
-        for (int i = 0; next(page); ++i) {
+        for (std::size_t i = 0; i < pages.pages.size(); ++i) {
             if (i) pdf.newPage();
-            paintBoxes(painter, page, format, dpi / 72.0);
+            paintBoxes(painter, pages.pages[i], format, dpi / 72.0);
         }
     }
     return save(path, bytes.toStdString(), error);
-}
-
-template <class Source>
-bool writePdfFrom(const Source& source, const QString& path, std::string& error, const PageFormat& format, int* pageCount) {
-    // Layout and QPdfWriter each take about as long for a large robot (the Panda: 0.12 s and
-    // 0.19 s): a second thread lays out page k+1 while this one paints page k.
-    std::mutex mutex;
-    std::condition_variable changed;
-    std::deque<std::vector<PlacedBox>> ready;
-    bool laidOut = false, stop = false, streamFailed = false;
-    std::exception_ptr failure;
-    // Written pages go back to the layout thread, which frees them (outside the lock) and
-    // reuses their memory: it is that thread's malloc arena, and freeing it from this
-    // thread took the arena's lock while layout allocated in it (each thread ran at
-    // half speed).
-    std::vector<std::vector<PlacedBox>> written;
-    std::thread layout([&] {
-        bool shapingFailed = false;
-        std::exception_ptr error;
-        try {
-            paginateFrom(source, format, [&](std::vector<PlacedBox>&& page) {
-                std::vector<std::vector<PlacedBox>> done;
-                {
-                    std::lock_guard lock(mutex);
-                    if (stop) throw Cancelled{};
-                    ready.push_back(std::move(page));
-                    done.swap(written);
-                    changed.notify_one();
-                }
-            });
-        } catch (const Cancelled&) {
-        } catch (const StreamFailed&) {
-            shapingFailed = true;
-        } catch (...) {
-            error = std::current_exception();
-        }
-        std::lock_guard lock(mutex);  // what the writing thread reads under it
-        streamFailed = shapingFailed;
-        failure = error;
-        laidOut = true;
-        changed.notify_one();
-    });
-    struct Join {  // the layout thread ends before anything it uses goes, even on a throw
-        std::thread& thread;
-        std::mutex& mutex;
-        bool& stop;
-        ~Join() {
-            {
-                std::lock_guard lock(mutex);
-                stop = true;
-            }
-            thread.join();
-        }
-    } join{layout, mutex, stop};
-    int pages = 0;
-    const bool ok = writePdfOf(
-        format,
-        [&](std::vector<PlacedBox>& page) {
-            std::unique_lock lock(mutex);
-            changed.wait(lock, [&] { return !ready.empty() || laidOut; });
-            if (failure) std::rethrow_exception(failure);  // before anything is saved: no half file
-            if (streamFailed) throw StreamFailed{};
-            if (ready.empty()) return false;
-            if (!page.empty()) written.push_back(std::move(page));
-            page = std::move(ready.front());
-            ready.pop_front();
-            ++pages;
-            return true;
-        },
-        path, error);
-    if (pageCount) *pageCount = pages;
-    return ok;
-}
-
-}  // namespace
-
-bool writePdf(const symbolic::DisplayDocument& document, const QString& path, std::string& error, const PageFormat& format,
-              int* pageCount) {
-    return writePdfFrom(CompleteDocument{document}, path, error, format, pageCount);
-}
-
-bool writePdf(symbolic::DisplayStream& stream, const QString& path, std::string& error, const PageFormat& format, int* pageCount) {
-    try {
-        return writePdfFrom(GrowingDocument{stream}, path, error, format, pageCount);
-    } catch (const StreamFailed&) {  // nothing saved
-        error = "the derivation stopped before its pages were complete";
-        return false;
-    }
 }
 
 bool writeSvg(const DerivationPages& pages, const QString& path, std::string& error, std::vector<QString>* written) {

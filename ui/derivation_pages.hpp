@@ -11,7 +11,6 @@
 #include <vector>
 
 #include "core/symbolic/derivation_document.hpp"
-#include "core/symbolic/display_stream.hpp"
 #include "ui/math_typesetter.hpp"
 
 class QPainter;
@@ -46,13 +45,8 @@ void paintPage(QPainter& painter, const DerivationPages& pages, int index, doubl
 
 // Writes the file; false with a one-line reason in `error`. SVG and PNG write page 1 to
 // `path` and page k to path's stem + "-k" + extension; `written` lists the files.
-// The PDF is laid out on a second thread while this one writes the finished pages.
+bool writePdf(const DerivationPages& pages, const QString& path, std::string& error);
 bool writePdf(const symbolic::DisplayDocument& document, const QString& path, std::string& error, const PageFormat& format = {},
-              int* pageCount = nullptr);
-// The same from a document still being shaped on another thread (the expanded Panda: its
-// first pages are laid out and written while C and the equations are shaped). When the
-// stream fails nothing is saved and `error` says so; the shaping thread reports why.
-bool writePdf(symbolic::DisplayStream& stream, const QString& path, std::string& error, const PageFormat& format = {},
               int* pageCount = nullptr);
 bool writeSvg(const DerivationPages& pages, const QString& path, std::string& error, std::vector<QString>* written = nullptr);
 bool writePng(const DerivationPages& pages, const QString& path, std::string& error, std::vector<QString>* written = nullptr,

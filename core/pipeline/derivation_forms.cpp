@@ -13,7 +13,6 @@
 #include "core/dynamics/potential_gradient.hpp"
 #include "core/dynamics/mass_matrix.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
-#include "core/model/exit_memory.hpp"
 #include "core/symbolic/derivation_evaluator.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/latex_text.hpp"
@@ -203,7 +202,6 @@ FormDocument deriveInForm(const Scene& scene, const FormRequest& request) {
         else out.verification.push_back("expanded: not derived (" + cheapReason + ")");
         if (structured) out.verification.push_back(std::string("Bdot - 2C skew-symmetric over the names: ") + (skewSymmetric(*structured) ? "yes" : "NO"));
     }
-    dispose(std::move(structured));  // freed now (under the GiNaC lock), or left to a command's exit
     return out;
 }
 

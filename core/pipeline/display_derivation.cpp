@@ -2,8 +2,6 @@
 
 #include <chrono>
 
-#include "core/model/exit_memory.hpp"
-#include "core/symbolic/display_stream.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/structured_display.hpp"
 
@@ -28,16 +26,12 @@ DerivedDocument deriveInForm(const Scene& scene, const DocumentRequest& request,
     options.mode = request.mode;
     options.progress = request.progress;
     options.cancel = request.cancel;
-    const auto derived = std::make_shared<const StructuredDynamics>(deriveStructured(scene, options));
-    const StructuredDynamics& s = *derived;
+    const StructuredDynamics s = deriveStructured(scene, options);
     throwIfCancelled(request.cancel);
     const auto printing = std::chrono::steady_clock::now();
     out.display = structuredDisplayDocument(s, reason, request.firstStep, request.lastStep, request.cancel);
-    // The structured form's trees take a few milliseconds: handed over whole.
-    if (request.displayStream) request.displayStream->putDocument(*out.display);
     out.printSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - printing).count();
     out.timings.push_back({0, "structured derivation (steps 1-8)", s.seconds});
-    dispose(derived);  // freed now (under the GiNaC lock), or left to a command's exit
     return out;
 }
 
@@ -49,14 +43,7 @@ DerivedDocument deriveDisplay(const Scene& scene, const DocumentRequest& request
     if (scene.lagrangian) reason = "a hand-typed Lagrangian is derived from its E_kin and E_pot";
     else reason = form == DerivationForm::Auto ? "auto: " + reason : "asked for with --form";
     const bool expanded = scene.lagrangian || form == DerivationForm::Expanded || (form == DerivationForm::Auto && cheap);
-    if (!request.displayStream) return deriveInForm(scene, request, expanded, reason);
-    try {  // whatever throws, the stream's reader stops waiting
-        request.displayStream->describeForm(expanded ? "expanded" : "structured", reason);
-        return deriveInForm(scene, request, expanded, reason);
-    } catch (...) {
-        request.displayStream->fail();
-        throw;
-    }
+    return deriveInForm(scene, request, expanded, reason);
 }
 
 }  // namespace ll

@@ -3,7 +3,6 @@
 #include <atomic>
 #include <chrono>
 
-#include "core/model/exit_memory.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/lagrangian_derivation.hpp"
 #include "core/symbolic/robot_derivation.hpp"
@@ -48,13 +47,12 @@ DerivedDocument deriveDocument(const Scene& scene, const DocumentRequest& reques
     DerivedDocument out;
     const auto printing = std::chrono::steady_clock::now();
     if (request.format == symbolic::DocumentFormat::Display)
-        out.display = symbolic::displayDocument(d, request.cancel, request.displayStream, request.forPages);
+        out.display = symbolic::displayDocument(d, request.cancel, request.forPages);
     else
-        out.document = symbolic::derivationDocument(d, request.format, modeName(request.mode), request.writing);
+        out.document = symbolic::derivationDocument(d, request.format, modeName(request.mode));
     out.printSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - printing).count();
     for (const symbolic::DerivationStep& step : d.steps) out.timings.push_back({step.number, step.title, step.seconds});
     out.warnings = d.warnings;
-    disposeValue(std::move(d));  // freed now, or left to a command's exit
     return out;
 }
 

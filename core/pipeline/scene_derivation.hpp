@@ -22,10 +22,6 @@ struct DocumentRequest {
     symbolic::DocumentFormat format = symbolic::DocumentFormat::Text;
     std::function<void(int step, const std::string& what)> progress;  // optional, on the deriving thread
     const std::atomic<bool>* cancel = nullptr;                          // optional: throws Cancelled
-    symbolic::DocumentWriting* writing = nullptr;  // optional: how text, LaTeX or JSON was rendered on two threads
-    // optional, for format Display: each step and item also handed to this stream as it is
-    // shaped, for a thread that typesets while the rest is shaped (failed on any throw)
-    symbolic::DisplayStream* displayStream = nullptr;
     // for format Display: the trees are for pages only (the CLI's pdf, svg, png), so sums
     // longer than pages show are built already cut (symbolic::DisplayOptions::cutLongSums)
     bool forPages = false;

@@ -2,21 +2,12 @@
 
 #include <algorithm>
 #include <cctype>
-#include <condition_variable>
-#include <deque>
-#include <exception>
 #include <map>
-#include <mutex>
-#include <optional>
 #include <sstream>
-#include <thread>
-#include <unordered_map>
 
 #include "core/model/actuation.hpp"
 #include "core/model/cancellation.hpp"
-#include "core/model/exit_memory.hpp"
 #include "core/symbolic/angle_sums.hpp"
-#include "core/symbolic/display_stream.hpp"
 #include "core/symbolic/expression_printer.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/json_writer.hpp"
@@ -220,86 +211,25 @@ std::size_t widestLine(const std::string& s) {
     return std::max(widest, n);
 }
 
-// The item renderings a document is made of, by format: JSON writes LaTeX, Text and
-// Plain of every item, the text and LaTeX documents one each.
-enum class Part { Latex, Text, Plain };
-
-std::vector<Part> partsOf(DocumentFormat format) {
-    if (format == DocumentFormat::Json) return {Part::Latex, Part::Text, Part::Plain};
-    if (format == DocumentFormat::Latex) return {Part::Latex};
-    return {Part::Text};
-}
-
 std::string itemLatex(const DisplayItem& item) { return renderDisplay(*item.equation, DisplayStyle::Latex); }
 
-// Part of an item as strings: one, or for the Plain of a matrix its entries row by row
-// (JSON writes it as rows of entries, a column as a list). Plain comes from the
-// displayed tree, which has the same value as the derived one (grouping and angle sums
-// keep it; decimals print with 17 digits), so it stays re-parsable.
-std::vector<std::string> renderPart(const DisplayItem& item, Part part) {
-    if (part == Part::Latex) return {itemLatex(item)};
-    if (part == Part::Text) return {itemText(item)};
-    if (item.name.rfind("equation_", 0) == 0) return {renderDisplay(*item.equation, DisplayStyle::Plain)};
-    if (item.value->kind != DisplayKind::Matrix) return {renderDisplay(*item.value, DisplayStyle::Plain)};
-    std::vector<std::string> entries;
-    for (const auto& row : item.value->rows)
-        for (const DisplayPtr& cell : row) entries.push_back(renderDisplay(*cell, DisplayStyle::Plain));
-    return entries;
-}
-
-// Plain renderings of the nodes JSON writes twice: B, C, g, Q and the energies are
-// items of their steps and the document's results too (their sums are the same nodes:
-// the builder caches them; a matrix node itself is made anew). The renderings of those
-// items' values and entries are kept as they are written, for the second time. (The
-// results come after the steps: what is kept is chosen by the items' names.)
-class PlainTexts {
-public:
-    static bool isResult(const std::string& itemName) {
-        for (const char* name : {"B", "C", "g", "Q", "E_kin", "E_pot"})
-            if (itemName == name) return true;
-        return false;
-    }
-    // Writes `quoted`, the Plain of n as a JSON string, and keeps it when asked.
-    void write(JsonWriter& json, const DisplayNode& n, std::string&& quoted, bool keep) {
-        json.quotedValue(quoted);
-        if (keep) kept_.emplace(&n, std::move(quoted));
-    }
-    // The Plain of n, kept or rendered now.
-    void write(JsonWriter& json, const DisplayNode& n) {
-        if (auto it = kept_.find(&n); it != kept_.end()) return json.quotedValue(it->second);
-        json.value(renderDisplay(n, DisplayStyle::Plain));
-    }
-
-private:
-    std::unordered_map<const DisplayNode*, std::string> kept_;
-};
-
-// A value's Plain in JSON: a matrix as rows of entries (a column as a list), from its
-// entries' renderings (`entries`, row by row, quoted) or, with none given, rendered or
-// kept ones.
-void writePlain(JsonWriter& json, const DisplayNode& value, PlainTexts& plain, std::vector<std::string>* entries = nullptr,
-                bool keep = false) {
-    std::size_t next = 0;
-    auto cell = [&](const DisplayNode& n) {
-        if (entries) return plain.write(json, n, std::move((*entries)[next++]), keep);
-        plain.write(json, n);
-    };
-    if (value.kind != DisplayKind::Matrix) return cell(value);
+// A value's Plain in JSON: a matrix as rows of entries (a column as a list).
+void writePlain(JsonWriter& json, const DisplayNode& value) {
+    if (value.kind != DisplayKind::Matrix) return json.value(renderDisplay(value, DisplayStyle::Plain));
     json.beginArray();
     for (const auto& r : value.rows) {
         if (r.size() == 1) {
-            cell(*r[0]);
+            json.value(renderDisplay(*r[0], DisplayStyle::Plain));
             continue;
         }
         json.beginArray();
-        for (const DisplayPtr& c : r) cell(*c);
+        for (const DisplayPtr& c : r) json.value(renderDisplay(*c, DisplayStyle::Plain));
         json.endArray();
     }
     json.endArray();
 }
 
-// The documents in parts (head, each step's start, each item, tail): an item is written
-// as soon as it is shaped and rendered (derivationDocument).
+// The documents in parts: head, each step's start, each item, tail.
 
 void writeTextHead(const std::string& systemName, std::ostream& out) {
     out << systemName << "\n" << std::string(systemName.size(), '=') << "\n";
@@ -378,28 +308,26 @@ void endJsonStep(JsonWriter& json) {
     json.endObject();
 }
 
-// An item from its renderings in partsOf(Json) order, quoted (moved from).
-void writeJsonItem(const DisplayItem& item, std::vector<std::string>* parts[3], PlainTexts& plain, JsonWriter& json) {
+// An item: its name, LaTeX, Text and re-parsable Plain (`expr`).
+void writeJsonItem(const DisplayItem& item, JsonWriter& json) {
     json.beginObject();
     json.member("name", item.name);
-    json.key("latex");
-    json.quotedValue(parts[0]->front());
-    json.key("text");
-    json.quotedValue(parts[1]->front());
+    json.member("latex", itemLatex(item));
+    json.member("text", itemText(item));
     json.key("expr");
     if (item.name.rfind("equation_", 0) == 0)
-        json.quotedValue(parts[2]->front());
+        json.value(renderDisplay(*item.equation, DisplayStyle::Plain));
     else
-        writePlain(json, *item.value, plain, parts[2], PlainTexts::isResult(item.name));
+        writePlain(json, *item.value);
     json.endObject();
 }
 
-void writeJsonTail(const Derivation& d, const DisplayResults& results, PlainTexts& plain, JsonWriter& json) {
+void writeJsonTail(const Derivation& d, const DisplayResults& results, JsonWriter& json) {
     json.endArray();
     for (const auto& [name, value] : {std::pair{"B", &results.B}, {"C", &results.C}, {"g", &results.g}, {"Q", &results.Q},
                                       {"Ekin", &results.Ekin}, {"Epot", &results.Epot}}) {
         json.key(name);
-        writePlain(json, **value, plain);
+        writePlain(json, **value);
     }
     std::vector<std::string> actuated;
     for (int a : d.actuated) actuated.push_back(d.coordinateNames[a]);
@@ -421,245 +349,36 @@ DisplayStep stepHead(const Derivation& d, const DerivationStep& step) {
     return s;
 }
 
-// The display document, item by item; each step and item also handed to `stream` as it
-// is shaped when there is one.
-std::shared_ptr<const DisplayDocument> shapeDocument(const Derivation& d, Presenter& presenter, DisplayBuilder& build,
-                                                     const DisplayOptions& options, const std::atomic<bool>* cancel,
-                                                     DisplayStream* stream) {
+// The display document, item by item.
+std::shared_ptr<DisplayDocument> shapeDocument(const Derivation& d, Presenter& presenter, DisplayBuilder& build,
+                                               const DisplayOptions& options, const std::atomic<bool>* cancel) {
     auto doc = std::make_shared<DisplayDocument>();
     doc->systemName = d.systemName;
     doc->coordinateNames = d.coordinateNames;
     doc->actuation = actuationText(d.actuated, d.coordinateNames);
-    if (stream) stream->open(*doc);
     for (const DerivationStep& step : d.steps) {
         DisplayStep& shown = doc->steps.emplace_back(stepHead(d, step));
-        if (stream) stream->putStep(shown);
         for (const DerivationItem& item : step.items) {
             throwIfCancelled(cancel);  // a newer edit need not wait for this document under the GiNaC lock
-            const DisplayItem& made = shown.items.emplace_back(displayItem(item, presenter, build, options));
-            if (stream) stream->putItem(made);
+            shown.items.push_back(displayItem(item, presenter, build, options));
         }
     }
-    if (stream) stream->close(doc->actuation);
     return doc;
 }
 
-// What derivationDocument hands from the thread that shapes (GiNaC, under its lock) to
-// the one that writes (display trees only, no GiNaC), in document order: each step's
-// start, then its items as they are shaped. An item is written while the next is shaped,
-// on the second core. Its renderings are made by whichever thread claims them first: the
-// writer going forward, and, once everything is shaped, the shaping thread going back
-// from the last (the long tail of C and the equations, rendered by both threads).
-class Handover {
-public:
-    struct Rendering {
-        Part part;
-        std::atomic<int> state{0};  // open, claimed, done
-        std::vector<std::string> strings;
-    };
-    struct Entry {
-        std::optional<DisplayStep> step;  // a step starts (without its items)
-        std::optional<DisplayItem> item;
-        std::deque<Rendering> renderings;  // one per part (atomics do not move: a deque)
-    };
-
-    Handover(DocumentFormat format, DocumentWriting* writing)
-        : parts_(partsOf(format)), json_(format == DocumentFormat::Json), writing_(writing) {}
-
-    void putStep(DisplayStep head) {
-        {
-            const std::lock_guard lock(mutex_);
-            entries_.emplace_back().step = std::move(head);
-        }
-        changed_.notify_all();
+void writeJson(const Derivation& d, const DisplayDocument& doc, const DisplayResults& results, const std::string& modeName,
+               std::string& out) {
+    JsonWriter json(out);
+    writeJsonHead(d, modeName, json);
+    for (const DisplayStep& step : doc.steps) {
+        writeJsonStep(step, json);
+        for (const DisplayItem& item : step.items) writeJsonItem(item, json);
+        endJsonStep(json);
     }
-    void putItem(DisplayItem item) {
-        {
-            const std::lock_guard lock(mutex_);
-            Entry& e = entries_.emplace_back();
-            e.item = std::move(item);
-            for (const Part part : parts_) e.renderings.emplace_back().part = part;
-        }
-        changed_.notify_all();
-    }
-    // No more entries; `results` for JSON. Not finished normally: the writer stops.
-    // (Said again after a failure while helping: the results stay as they were given.)
-    void finish(std::optional<DisplayResults> results, bool failed = false) {
-        {
-            const std::lock_guard lock(mutex_);
-            if (!finished_) results_ = std::move(results);
-            finished_ = true;
-            failed_ = failed_ || failed;
-        }
-        changed_.notify_all();
-    }
-
-    // The writer's side. The next entry (kept here, in place, until the handover ends),
-    // or null after the last one or once the handover failed.
-    Entry* next() {
-        std::unique_lock lock(mutex_);
-        changed_.wait(lock, [&] { return failed_ || ((taken_ < entries_.size() || finished_) && (!holdWriter() || helperStarted_)); });
-        if (failed_) return nullptr;
-        return taken_ < entries_.size() ? &entries_[taken_++] : nullptr;
-    }
-    // An item's rendering, made now or, when the shaping thread claimed it, waited for.
-    // Null once the handover failed.
-    std::vector<std::string>* rendered(Entry& e, std::size_t k) {
-        Rendering& r = e.renderings[k];
-        if (claim(r)) {
-            r.strings = render(*e.item, r.part);
-            ++renderedByWriter_;
-            return &r.strings;
-        }
-        std::unique_lock lock(mutex_);
-        changed_.wait(lock, [&] { return failed_ || r.state.load() == 2; });
-        return failed_ ? nullptr : &r.strings;
-    }
-    // The writer failed: the shaping thread stops handing over and does not help.
-    void fail() {
-        {
-            const std::lock_guard lock(mutex_);
-            failed_ = true;
-        }
-        changed_.notify_all();
-    }
-    // After next() gave null: whether the entries ended normally, and the results.
-    bool failed() {
-        const std::lock_guard lock(mutex_);
-        return failed_;
-    }
-    const std::optional<DisplayResults>& results() {
-        const std::lock_guard lock(mutex_);
-        return results_;
-    }
-    void writerDone() {
-        if (writing_) writing_->parts = renderedByWriter_ + renderedByShaper_.load();
-    }
-
-    // The shaping thread's side, after finish(): renders from the last item back until
-    // it meets what the writer has claimed. A rendering that throws fails the handover.
-    void help() {
-        if (failed()) return;
-        try {
-            renderFromTheEnd();
-            started();
-        } catch (...) {
-            {
-                const std::lock_guard lock(mutex_);
-                failed_ = true;
-            }
-            changed_.notify_all();
-            throw;
-        }
-        if (writing_) writing_->renderedByShaper = renderedByShaper_.load();
-    }
-
-private:
-    void renderFromTheEnd() {
-        for (std::size_t i = entries_.size(); i-- > 0;) {  // no more entries come: no lock needed to walk them
-            Entry& e = entries_[i];
-            for (std::size_t k = e.renderings.size(); k-- > 0;) {
-                Rendering& r = e.renderings[k];
-                if (failed() || !claim(r)) return;
-                started();
-                r.strings = render(*e.item, r.part);
-                ++renderedByShaper_;
-                {
-                    const std::lock_guard lock(mutex_);
-                    r.state = 2;
-                }
-                changed_.notify_all();
-            }
-        }
-    }
-    // A part as the document writes it: for JSON quoted (by either thread, not the
-    // writer's JsonWriter alone: tens of megabytes).
-    std::vector<std::string> render(const DisplayItem& item, Part part) const {
-        std::vector<std::string> strings = renderPart(item, part);
-        if (json_)
-            for (std::string& s : strings) {
-                std::string quoted;
-                quoted.reserve(s.size() + s.size() / 8 + 2);
-                JsonWriter::quote(s, quoted);
-                s = std::move(quoted);
-            }
-        return strings;
-    }
-    static bool claim(Rendering& r) {
-        int open = 0;
-        return r.state.compare_exchange_strong(open, 1);
-    }
-    bool holdWriter() const { return writing_ && writing_->writerWaitsForHelper; }
-    // The shaping thread has claimed its first rendering, or found none to claim.
-    void started() {
-        if (helperStarted_) return;
-        {
-            const std::lock_guard lock(mutex_);
-            helperStarted_ = true;
-        }
-        changed_.notify_all();
-    }
-
-    const std::vector<Part> parts_;
-    const bool json_;
-    DocumentWriting* writing_;
-    std::mutex mutex_;
-    std::condition_variable changed_;
-    std::deque<Entry> entries_;  // a deque: emplace_back leaves the given entries in place
-    std::size_t taken_ = 0;
-    bool finished_ = false, failed_ = false, helperStarted_ = false;
-    std::optional<DisplayResults> results_;
-    std::size_t renderedByWriter_ = 0;
-    std::atomic<std::size_t> renderedByShaper_{0};
-};
-
-// The writer's side: the document in `format` from the handed-over entries. A rendering
-// is freed once written.
-void writeHandedOver(const Derivation& d, DocumentFormat format, const std::string& modeName, Handover& handover,
-                     std::string& out) {
-    if (format == DocumentFormat::Json) {
-        PlainTexts plain;
-        JsonWriter json(out);
-        writeJsonHead(d, modeName, json);
-        bool inStep = false;
-        while (Handover::Entry* e = handover.next()) {
-            if (e->step) {
-                if (inStep) endJsonStep(json);
-                writeJsonStep(*e->step, json);
-                inStep = true;
-                continue;
-            }
-            std::vector<std::string>* parts[3];
-            for (std::size_t k = 0; k < 3; ++k)
-                if (!(parts[k] = handover.rendered(*e, k))) return;
-            writeJsonItem(*e->item, parts, plain, json);
-            for (std::vector<std::string>* p : parts) std::vector<std::string>().swap(*p);
-        }
-        if (handover.failed()) return;
-        if (inStep) endJsonStep(json);
-        writeJsonTail(d, *handover.results(), plain, json);
-        handover.writerDone();
-        out += '\n';
-        return;
-    }
-    std::ostringstream text;
-    const StreamWriters write = streamWriters(format);
-    write.head(d.systemName, text);
-    while (Handover::Entry* e = handover.next()) {
-        if (e->step) {
-            write.step(*e->step, text);
-            continue;
-        }
-        std::vector<std::string>* rendering = handover.rendered(*e, 0);
-        if (!rendering) return;
-        write.item(rendering->front(), text);
-        std::vector<std::string>().swap(*rendering);
-    }
-    if (handover.failed()) return;
-    write.tail(actuationText(d.actuated, d.coordinateNames), text);
-    handover.writerDone();
-    out = std::move(text).str();
+    writeJsonTail(d, results, json);
+    out += '\n';
 }
+
 }  // namespace
 
 namespace {
@@ -708,15 +427,13 @@ std::string itemText(const DisplayItem& item) {
     return out;
 }
 
-std::shared_ptr<const DisplayDocument> displayDocument(const Derivation& d, const std::atomic<bool>* cancel, DisplayStream* stream,
-                                                       bool forPages) {
+std::shared_ptr<const DisplayDocument> displayDocument(const Derivation& d, const std::atomic<bool>* cancel, bool forPages) {
     const auto lock = lockGinac();
     DisplayOptions options = displayOptions(printOptionsFor(d, Style::Text));
     options.cutLongSums = forPages;
-    // Their caches: freed at the end, or left to a command's exit.
-    const Disposing<DisplayBuilder> build(options);
-    const Disposing<Presenter> presenter(d, d.trigToFunctions.nops() > 0);
-    return shapeDocument(d, *presenter, *build, options, cancel, stream);
+    DisplayBuilder build(options);
+    Presenter presenter(d, d.trigToFunctions.nops() > 0);
+    return shapeDocument(d, presenter, build, options, cancel);
 }
 
 std::string renderDocument(const DisplayDocument& document, DocumentFormat format) {
@@ -724,62 +441,27 @@ std::string renderDocument(const DisplayDocument& document, DocumentFormat forma
     std::ostringstream out;
     const StreamWriters write = streamWriters(format);
     write.head(document.systemName, out);
-    const Part part = partsOf(format).front();
     for (const DisplayStep& step : document.steps) {
         write.step(step, out);
-        for (const DisplayItem& item : step.items) write.item(renderPart(item, part).front(), out);
+        for (const DisplayItem& item : step.items) write.item(format == DocumentFormat::Latex ? itemLatex(item) : itemText(item), out);
     }
     write.tail(document.actuation, out);
     return out.str();
 }
 
-std::string derivationDocument(const Derivation& d, DocumentFormat format, const std::string& modeName,
-                               DocumentWriting* writing) {
+std::string derivationDocument(const Derivation& d, DocumentFormat format, const std::string& modeName) {
     if (format == DocumentFormat::Display) return {};
     const auto lock = lockGinac();
     const DisplayOptions options = displayOptions(printOptionsFor(d, Style::Text));
-    Disposing<DisplayBuilder> build(options);
-    Disposing<Presenter> presenter(d, d.trigToFunctions.nops() > 0);
-    const Disposing<Handover> handoverOwner(format, writing);  // the trees it holds: freed at the end, or left to a command's exit
-    Handover& handover = *handoverOwner;
+    DisplayBuilder build(options);
+    Presenter presenter(d, d.trigToFunctions.nops() > 0);
+    const std::shared_ptr<const DisplayDocument> doc = shapeDocument(d, presenter, build, options, nullptr);
+    if (format != DocumentFormat::Json) return renderDocument(*doc, format);
+    const auto shown = [&](const char* name, const GiNaC::ex& value) { return build(presenter.present(name, value)); };
+    const DisplayResults results{shown("B", d.B), shown("C", d.C), shown("g", d.g),
+                                 shown("Q", d.Q), shown("E_kin", d.Ekin), shown("E_pot", d.Epot)};
     std::string out;
-    std::exception_ptr writeFailed;
-    std::thread writer([&] {
-        try {
-            writeHandedOver(d, format, modeName, handover, out);
-        } catch (...) {
-            writeFailed = std::current_exception();
-            handover.fail();  // shaping and helping stop: nothing more will be written
-        }
-    });
-    try {
-        for (const DerivationStep& step : d.steps) {
-            if (handover.failed()) break;
-            handover.putStep(stepHead(d, step));
-            for (const DerivationItem& item : step.items) handover.putItem(displayItem(item, *presenter, *build, options));
-        }
-        std::optional<DisplayResults> results;
-        if (format == DocumentFormat::Json) {
-            auto shown = [&](const char* name, const GiNaC::ex& value) { return (*build)(presenter->present(name, value)); };
-            results = DisplayResults{shown("B", d.B), shown("C", d.C), shown("g", d.g),
-                                     shown("Q", d.Q), shown("E_kin", d.Ekin), shown("E_pot", d.Epot)};
-        }
-        handover.finish(std::move(results));
-        // Their caches are freed while the writer goes on (the trees it reads are the
-        // items'), or left to a command's exit; then this thread renders the last items'
-        // parts beside it.
-        presenter.disposeNow();
-        build.disposeNow();
-        handover.help();
-    } catch (...) {
-        handover.finish(std::nullopt, true);
-        writer.join();
-        // The writer's error first: it met its string earlier in the document.
-        if (writeFailed) std::rethrow_exception(writeFailed);
-        throw;
-    }
-    writer.join();
-    if (writeFailed) std::rethrow_exception(writeFailed);
+    writeJson(d, *doc, results, modeName, out);
     return out;
 }
 

@@ -51,14 +51,11 @@ struct DisplayDocument {
     std::string formReason; // why that form
 };
 
-class DisplayStream;
-
 // The derivation's displayed form (takes the GiNaC lock). Throws Cancelled between items
-// once `cancel` is set. With a stream, each step and item is also handed to it as it is
-// shaped (core/symbolic/display_stream.hpp), and the stream closed at the end. forPages:
-// long sums built already cut as pages show them (DisplayOptions::cutLongSums).
+// once `cancel` is set. forPages: long sums built already cut as pages show them
+// (DisplayOptions::cutLongSums).
 std::shared_ptr<const DisplayDocument> displayDocument(const Derivation& derivation, const std::atomic<bool>* cancel = nullptr,
-                                                       DisplayStream* stream = nullptr, bool forPages = false);
+                                                       bool forPages = false);
 
 // A document in Text or Latex from its display trees (no GiNaC: any thread).
 std::string renderDocument(const DisplayDocument& document, DocumentFormat format);
@@ -66,19 +63,7 @@ std::string renderDocument(const DisplayDocument& document, DocumentFormat forma
 // An item's Text rendering as the text document prints it.
 std::string itemText(const DisplayItem& item);
 
-// How derivationDocument shared the rendering of the items between its two threads: the
-// writer renders them in document order as they are shaped; the shaping thread, once
-// done, renders from the last item back until the two meet.
-struct DocumentWriting {
-    bool writerWaitsForHelper = false;  // in (tests): the writer, past the head, is held through all of the
-                                        // shaping until the shaping thread has claimed its first rendering
-    std::size_t parts = 0;              // out: item renderings made (JSON: three per item)
-    std::size_t renderedByShaper = 0;   // out: of those, made by the shaping thread
-};
-
 // modeName ("parameters", "numeric", "symbolic") is recorded in the JSON. Display gives "".
-// The items are shaped (GiNaC) on this thread and written on a second one as they come.
-std::string derivationDocument(const Derivation& derivation, DocumentFormat format, const std::string& modeName,
-                               DocumentWriting* writing = nullptr);
+std::string derivationDocument(const Derivation& derivation, DocumentFormat format, const std::string& modeName);
 
 }  // namespace ll::symbolic

@@ -1,8 +1,6 @@
 #include "core/symbolic/json_writer.hpp"
 
-#include <cstdint>
 #include <cstdio>
-#include <cstring>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
@@ -29,18 +27,6 @@ std::size_t utf8Length(std::string_view s, std::size_t i) {
         return continuation(i + 1, lo, hi) && continuation(i + 2) && continuation(i + 3) ? 4 : 0;
     }
     return 0;
-}
-
-// Whether the 8 bytes at p are all printable ASCII that JSON takes as they are (no
-// control character, quote, backslash or byte of a UTF-8 sequence): word-at-a-time
-// tests for a zero byte (x - 0x01.. & ~x & 0x80..) against each kind.
-bool plainAscii8(const char* p) {
-    std::uint64_t w;
-    std::memcpy(&w, p, 8);
-    constexpr std::uint64_t ones = 0x0101010101010101ull, highs = 0x8080808080808080ull;
-    const auto hasZero = [&](std::uint64_t x) { return (x - ones) & ~x & highs; };
-    const std::uint64_t control = (w - 0x20 * ones) & ~w & highs;  // a byte below 0x20 (w's high bits counted apart)
-    return !(w & highs) && !control && !hasZero(w ^ ('"' * ones)) && !hasZero(w ^ ('\\' * ones));
 }
 
 }  // namespace
@@ -99,10 +85,6 @@ void JsonWriter::quote(std::string_view s, std::string& out) {
     out += '"';
     std::size_t run = 0;  // start of the bytes not yet written
     for (std::size_t i = 0; i < s.size();) {
-        if (i + 8 <= s.size() && plainAscii8(s.data() + i)) {  // most of a document: 8 bytes at a time
-            i += 8;
-            continue;
-        }
         const unsigned char c = static_cast<unsigned char>(s[i]);
         if (c >= 0x20 && c != '"' && c != '\\' && c < 0x80) {
             ++i;
@@ -143,11 +125,6 @@ void JsonWriter::quote(std::string_view s, std::string& out) {
 void JsonWriter::value(std::string_view s) {
     beforeValue();
     quote(s, out_);
-}
-
-void JsonWriter::quotedValue(std::string_view json) {
-    beforeValue();
-    out_ += json;
 }
 
 void JsonWriter::value(long long n) {

@@ -1,11 +1,10 @@
 #pragma once
 // JSON written as it is produced, byte for byte in the layout of nlohmann's dump(2)
 // (two-space indents, "key": value, [] and {} when empty, UTF-8 kept as is) or, Compact,
-// of its dump() (no spaces, no line breaks). The
-// derivation's JSON is tens of megabytes for an expanded 7-joint arm; building it as a
-// nlohmann document first copied every string into the document, then into the dump,
-// and took a fifth of the whole command. Strings are checked to be UTF-8 as nlohmann
-// checks them: anything else throws std::invalid_argument naming the byte.
+// of its dump() (no spaces, no line breaks): the derivation's JSON is tens of megabytes
+// for an expanded 7-joint arm, which a nlohmann document would hold twice. Strings are
+// checked to be UTF-8 as nlohmann checks them: anything else throws
+// std::invalid_argument naming the byte.
 #include <string>
 #include <string_view>
 #include <vector>
@@ -37,11 +36,8 @@ public:
         key(name);
         value(v);
     }
-    // A string already in JSON's quoted form (from quote()): written as it is.
-    void quotedValue(std::string_view json);
-
-    // s as a JSON string, quotes included, appended to `out` (any thread: no writer).
-    // Throws std::invalid_argument when s is not UTF-8.
+    // s as a JSON string, quotes included, appended to `out`. Throws
+    // std::invalid_argument when s is not UTF-8.
     static void quote(std::string_view s, std::string& out);
 
     // Whole, every object and array closed.

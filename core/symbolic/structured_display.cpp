@@ -5,7 +5,6 @@
 #include <regex>
 
 #include "core/model/cancellation.hpp"
-#include "core/model/exit_memory.hpp"
 #include "core/symbolic/display_builder.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/latex_formula.hpp"
@@ -140,8 +139,7 @@ std::shared_ptr<const DisplayDocument> structuredDisplayDocument(const Structure
     auto names = std::make_shared<std::map<std::string, DisplayPtr>>();
     for (const NamedDefinition& d : s.table->entries()) (*names)[d.name] = structuredNameNode(d.name);
     DisplayOptions options{doc->coordinateNames, true, names};
-    const Disposing<DisplayBuilder> builder(options);  // its caches: freed at the end (under the GiNaC lock), or left to a command's exit
-    DisplayBuilder& build = *builder;
+    DisplayBuilder build(options);
 
     // The names under the step where each arises (table order within a step is still
     // dependency order: a name only uses names of its own or earlier steps).

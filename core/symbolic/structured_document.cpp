@@ -7,7 +7,6 @@
 #include <stdexcept>
 
 #include "core/model/cancellation.hpp"
-#include "core/model/exit_memory.hpp"
 #include "core/symbolic/display_builder.hpp"
 #include "core/symbolic/expression_printer.hpp"
 #include "core/symbolic/ginac_lock.hpp"
@@ -44,12 +43,12 @@ public:
         : build_(displayOptions(optionsFor(s, style)), DisplayBuilder::Sharing::Symbols), style_(displayStyle(style)) {}
     Printer(const Printer&) = delete;
     Printer& operator=(const Printer&) = delete;
-    std::string operator()(const GiNaC::ex& e) { return renderDisplay(*(*build_)(e), style_); }
+    std::string operator()(const GiNaC::ex& e) { return renderDisplay(*build_(e), style_); }
     // e with its decimal scene numbers as decimals (readableNumbers).
-    std::string readable(const GiNaC::ex& e) { return renderDisplay(*build_->readable(e), style_); }
+    std::string readable(const GiNaC::ex& e) { return renderDisplay(*build_.readable(e), style_); }
 
 private:
-    Disposing<DisplayBuilder> build_;  // its caches: freed with the printer, or left to a command's exit
+    DisplayBuilder build_;
     DisplayStyle style_;
 };
 
