@@ -1,5 +1,5 @@
 // The log–log plot of `lagrangelab accuracy SCENE --out plot.svg|png`, rendered headless
-// (ui/work_precision_plot). Runs in lagrangelab-gui only.
+// (ui/work_precision_plot).
 #include <stdexcept>
 
 #include "app/commands.hpp"

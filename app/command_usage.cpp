@@ -11,7 +11,7 @@ struct CommandText {
     const char* summary;
 };
 
-constexpr std::array<CommandText, 10> commands{{
+constexpr std::array<CommandText, 9> commands{{
     {"eval", "SCENE --q v1,... --qd v1,... [--t T] [--tau v1,...]",
      "B, C, g, Q, q̈, E_kin, E_pot at one state, as JSON"},
     {"simulate",
@@ -36,19 +36,6 @@ constexpr std::array<CommandText, 10> commands{{
      "SCENE [--integrators a,b,...] [--tolerances 1e-3..1e-12] [--steps dt1,dt2,...] [--duration T]\n"
      "[--repeats N] [--reference-tol X] [--out plot.svg|png] [--csv FILE]",
      "work-precision: error, energy drift, CPU time, evaluations and steps per integrator and setting"},
-    {"bench", "[SCENE...] [--batches N] [--rhs | --derive | --cancel | --render | --typeset | --gui | --process] [--chains A..B] [--cap S]\n"
-              "[--form auto|structured|expanded]",
-     "median times of B, C, g, forward/inverse dynamics and one simulated second\n"
-     "(--rhs: one right-hand side of the PUMA 560 with no effects, gravity only, all effects;\n"
-     " --derive: the whole symbolic derivation per parameter mode;\n"
-     " --derive --chains 3..12: structured beside expanded on seeded random chains, with sizes;\n"
-     " --cancel: how soon a derivation stops after its cancel flag is set;\n"
-     " --render: headless export of 10 s of the PUMA 560 to MP4, render-only frames/s, peak memory;\n"
-     " --typeset: one B entry typeset, the 2R and PUMA 560 to PDF, the Panda derived and printed;\n"
-     " --gui: the window: edit-to-updated-view latency (2R, PUMA 560), PUMA 560 animation frames/s\n"
-     "        at 1280x720, start to first drawn frame; needs a display, e.g. xvfb-run;\n"
-     " --process: whole `derive` processes (text, json, pdf; each parameter mode) against the\n"
-     "        derivation inside each, the Panda by default; --form is passed on)"},
     {"help", "[COMMAND]", "this overview, or the usage of COMMAND (also: lagrangelab COMMAND --help)"},
     {"version", "", "the program's version, `lagrangelab X.Y.Z` (also: lagrangelab --version)"},
 }};

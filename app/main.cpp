@@ -1,6 +1,6 @@
-// lagrangelab: Euler–Lagrange modelling of serial robots, from the command line; and
-// lagrangelab-gui, the same with the window and everything that paints
-// (app/graphics_handoff.hpp). LL_PROGRAM_PAINTS tells which one this is.
+// lagrangelab: Euler–Lagrange modelling of serial robots, in a window or from the
+// command line. The commands that paint (the window, render, derive --format
+// pdf|svg|png, accuracy --out) start Qt; the others never do.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -11,14 +11,14 @@
 #include "app/cli_options.hpp"
 #include "app/command_usage.hpp"
 #include "app/commands.hpp"
-#include "app/graphics_handoff.hpp"
+#include "app/offscreen_gui.hpp"
 #include "core/model/diagnostics.hpp"
 
 namespace {
 
 bool isHelp(const std::string& arg) { return arg == "--help" || arg == "-h"; }
 
-const char* const kCommands[] = {"eval", "simulate", "integrators", "bench", "accuracy", "derive", "render", "codegen", "help", "version", "--version"};
+const char* const kCommands[] = {"eval", "simulate", "integrators", "accuracy", "derive", "render", "codegen", "help", "version", "--version"};
 
 // `lagrangelab`, `lagrangelab SCENE …` and `lagrangelab --screenshot …` open the window:
 // no arguments, or a first argument that is no command but a scene file or an option.
@@ -61,10 +61,6 @@ int reportingErrors(F&& f) {
 int main(int argc, char** argv) {
     using namespace ll::cli;
     const auto processStart = std::chrono::steady_clock::now();
-    rememberCommandLine(argv);
-#if LL_PROGRAM_PAINTS
-    clearHandoverMark();
-#endif
     if (opensWindow(argc, argv)) {
         if (!hasDisplay()) {
             std::fputs(overviewUsage().c_str(), stderr);
@@ -96,15 +92,10 @@ int main(int argc, char** argv) {
         std::fputs(usage.c_str(), stdout);
         return 0;
     }
-#if !LL_PROGRAM_PAINTS
-    // This is lagrangelab, without Qt and OpenSceneGraph: what paints runs in lagrangelab-gui.
-    if (commandPaints(command, args)) return handOverToGraphicsProgram();
-#endif
     return reportingErrors([&] {
         if (command == "eval") return evalCommand(args);
         if (command == "simulate") return simulateCommand(args);
         if (command == "integrators") return integratorsCommand(args);
-        if (command == "bench") return benchCommand(args);
         if (command == "accuracy") return accuracyCommand(args);
         if (command == "derive") return deriveCommand(args);
         if (command == "render") return renderCommand(args);

@@ -12,6 +12,9 @@
 
 namespace ll::cli {
 
+// An X or Wayland display to open a window on.
+inline bool hasDisplay() { return std::getenv("DISPLAY") != nullptr || std::getenv("WAYLAND_DISPLAY") != nullptr; }
+
 // Qt wants a runtime folder (XDG_RUNTIME_DIR) and says so on stderr when a session has
 // none (ssh, containers, CI): "QStandardPaths: XDG_RUNTIME_DIR not set". Give it a
 // private one, /tmp/lagrangelab-runtime-UID with mode 0700, owned by us and not a link;

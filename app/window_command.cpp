@@ -18,7 +18,6 @@
 #include "app/cli_options.hpp"
 #include "app/command_usage.hpp"
 #include "app/commands.hpp"
-#include "app/graphics_handoff.hpp"
 #include "app/event_wait.hpp"
 #include "app/offscreen_gui.hpp"
 #include "app/pixel_size.hpp"

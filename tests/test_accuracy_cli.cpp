@@ -133,13 +133,6 @@ private slots:
         QCOMPARE(r.exitCode, 3);
         QVERIFY2(r.err.contains("stiff") && r.err.contains("rosenbrock4"), r.err.constData());
     }
-
-    void benchRhsTimesEachEffectSet() {
-        const Run r = run({"bench", "--rhs", "--batches", "3"});
-        QCOMPARE(r.exitCode, 0);
-        QVERIFY(r.out.contains("no effects") && r.out.contains("gravity only") && r.out.contains("all effects"));
-        QVERIFY(r.out.contains("PUMA"));
-    }
 };
 
 int main(int argc, char** argv) {

@@ -325,52 +325,15 @@ private slots:
         for (int step = 0; step <= 8; ++step) QVERIFY(tex.contains(QString("Step %1:").arg(step).toUtf8()));
     }
 
-    void benchDeriveReportsEveryMode() {
-        const Run r = run({"bench", "--derive", example("planar_2r.json"), "--batches", "1"});
-        QCOMPARE(r.exitCode, 0);
-        QVERIFY(r.out.contains("parameters") && r.out.contains("numeric") && r.out.contains("symbolic"));
-        QVERIFY(r.out.contains("Planar 2R"));
-    }
-
-    // Whole derive processes against the derivation inside each: a row per mode and format,
-    // and no process can take less than the derivation it ran (the ratio is at least 1).
-    void benchProcessTimesWholeDerives() {
-        const Run r = run({"bench", "--process", example("planar_2r.json"), "--batches", "1"});
-        QCOMPARE(r.exitCode, 0);
-        int rows = 0;
-        for (const QByteArray& line : r.out.split('\n')) {
-            if (!line.startsWith("Planar 2R")) continue;
-            ++rows;
-            const QList<QByteArray> cells = line.split('|');
-            QCOMPARE(cells.size(), 3);
-            const QList<QByteArray> times = cells[1].simplified().split(' ');
-            QCOMPARE(times.size(), 2);
-            const double whole = times[0].toDouble(), derivation = times[1].toDouble();
-            const double ratio = cells[2].simplified().split(' ').first().toDouble();
-            QVERIFY2(derivation > 0 && whole > derivation, line.constData());
-            // One run: the ratio is whole / derivation, up to the rounding of the three
-            // printed numbers (0.1, 0.01 and 0.01 ms or units).
-            QVERIFY2(std::abs(ratio - whole / derivation) <= ratio * (0.05 / whole + 0.005 / derivation) + 0.005 + 1e-9,
-                     line.constData());
-        }
-        QCOMPARE(rows, 9);  // parameters, numeric, symbolic × text, json, pdf
-        for (const char* format : {" text ", " json ", " pdf "}) QCOMPARE(r.out.count(format), 3);
-        const Run bad = run({"bench", "--process", "--form", "tidy"});
-        QCOMPARE(bad.exitCode, 2);
-        QVERIFY2(bad.err.startsWith("error: --form: ") && bad.err.contains("tidy") && bad.err.count('\n') == 1, bad.err.constData());
-        QCOMPARE(run({"bench", "--form", "structured"}).exitCode, 2);  // --form only with --process
-    }
-
     void badCommandLineGivesExitCode2() {
         QCOMPARE(run({"eval", example("puma560.json"), "--q", "0,0"}).exitCode, 2);
         QCOMPARE(run({"simulate", example("puma560.json"), "--integrator", "nope"}).exitCode, 2);
         QCOMPARE(run({"simulate", example("puma560.json"), "--duration", "abc"}).exitCode, 2);
         QCOMPARE(run({"frobnicate"}).exitCode, 2);
-        for (const char* batches : {"0", "-3", "2.5", "1e9"}) {  // a median needs whole batches (0 crashed)
-            const Run r = run({"bench", example("planar_2r.json"), "--batches", batches});
-            QCOMPARE(r.exitCode, 2);
-            QVERIFY2(r.err.startsWith("error: --batches: ") && r.err.count('\n') == 1 && r.err.contains(batches), r.err.constData());
-        }
+        // The benchmarks are lagrangelab-bench's (tests/test_bench), not a user command.
+        const Run bench = run({"bench", "--rhs"});
+        QCOMPARE(bench.exitCode, 2);
+        QVERIFY2(bench.err.startsWith("error: unknown command 'bench'"), bench.err.constData());
     }
 
     // A scene whose parameters are named like the derivation's shorthand (c1 = cos q1,
@@ -423,7 +386,7 @@ private slots:
             QVERIFY(r.out.startsWith("usage: lagrangelab <command>"));
             QCOMPARE(r.out, bare.err);
             for (const char* command : {"eval SCENE", "simulate SCENE", "derive SCENE", "integrators", "accuracy SCENE",
-                                        "bench [SCENE...]", "help [COMMAND]", "version"})
+                                        "render SCENE", "codegen SCENE", "help [COMMAND]", "version"})
                 QVERIFY2(r.out.contains(QByteArray("\n  ") + command), command);
         }
     }
@@ -438,7 +401,6 @@ private slots:
         QTest::newRow("derive") << "derive" << "SCENE [--format text|latex|json|pdf|svg|png] [--out FILE] [--steps 0-8]";
         QTest::newRow("integrators") << "integrators" << "";
         QTest::newRow("accuracy") << "accuracy" << "SCENE [--integrators a,b,...]";
-        QTest::newRow("bench") << "bench" << "[SCENE...] [--batches N] [--rhs | --derive | --cancel | --render | --typeset | --gui | --process]";
         QTest::newRow("help") << "help" << "[COMMAND]";
         QTest::newRow("version") << "version" << "";
     }
@@ -453,7 +415,7 @@ private slots:
             QCOMPARE(r.exitCode, 0);
             QVERIFY2(r.out.startsWith(head), r.out.constData());
             QVERIFY(r.err.isEmpty());
-            for (const char* other : {"eval", "simulate", "derive", "accuracy", "bench"})
+            for (const char* other : {"eval", "simulate", "derive", "accuracy", "render"})
                 if (command != other) QVERIFY2(!r.out.contains(QByteArray("lagrangelab ") + other), other);
         }
         if (synopsis.startsWith("SCENE")) {  // without its scene: the same synopsis as an error, exit 2

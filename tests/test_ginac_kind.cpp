@@ -68,7 +68,7 @@ private slots:
             {GiNaC::pow(x, 2), GinacKind::Power},
             {GiNaC::sqrt(x), GinacKind::Power},
             {GiNaC::cos(x), GinacKind::Function},
-            {GiNaC::fderivative(GiNaC::sin_SERIAL::serial, {0}, GiNaC::exvector{x}), GinacKind::Function},
+            {GiNaC::fderivative(GiNaC::sin_SERIAL::serial, GiNaC::paramset{0}, GiNaC::exvector{x}), GinacKind::Function},
             {x == y, GinacKind::Other},
             {GiNaC::lst{x, y}, GinacKind::Other},
             {GiNaC::matrix{{x, y}}, GinacKind::Other},

@@ -2,8 +2,7 @@
 // program run from there with the working directory elsewhere and the source and build
 // trees out of reach (as root: a private mount namespace with empty tmpfs over them;
 // otherwise only the working directory moves): --version, derive and render on an
-// installed example, bench with its default scene from the installed data (by both
-// programs: lagrangelab and lagrangelab-gui in libexec/lagrangelab), the man
+// installed example, the program's own libraries (Debian's shared GiNaC), the man
 // page, the desktop entry and AppStream metainfo validated, and the scene MIME type
 // found for a .lagrange file through the installed MIME database.
 #include <QtTest>
@@ -109,10 +108,10 @@ private slots:
     }
 
     void layout() {
+        // One program; the benchmarks (lagrangelab-bench) stay in the build tree.
+        QCOMPARE(QDir(prefix_ + "/bin").entryList(QDir::Files), QStringList{"lagrangelab"});
         QVERIFY(QFileInfo(prefix_ + "/bin/lagrangelab").isExecutable());
-        // What lagrangelab hands the painting commands over to, off the PATH.
-        QVERIFY(QFileInfo(prefix_ + "/libexec/lagrangelab/lagrangelab-gui").isExecutable());
-        QVERIFY(!QFileInfo::exists(prefix_ + "/bin/lagrangelab-gui"));
+        QVERIFY(!QFileInfo::exists(prefix_ + "/libexec"));
         // Every example, as in the source tree.
         const QStringList installedExamples = filesUnder(prefix_ + "/share/lagrangelab/examples");
         QVERIFY(installedExamples.contains("planar_2r.json"));
@@ -134,18 +133,23 @@ private slots:
     }
 
     void binaryHoldsNoSourcePath() {
-        for (const QString& program : {QString("/bin/lagrangelab"), QString("/libexec/lagrangelab/lagrangelab-gui")}) {
-            QFile exe(prefix_ + program);
-            QVERIFY(exe.open(QIODevice::ReadOnly));
-            const QByteArray bytes = exe.readAll();
-            QVERIFY(!bytes.contains(QByteArray(LL_SOURCE_DIR) + "/"));
-            QVERIFY(!bytes.contains(QByteArray(LL_BUILD_DIR)));
-            // KDL is a test oracle: the installed programs neither link nor name it. (The
-            // check reads the names of the libraries a program links: lagrangelab-gui's
-            // Qt; lagrangelab is linked statically, app/CMakeLists.txt.)
-            if (program.endsWith("-gui")) QVERIFY(bytes.contains("libQt6Core"));
-            QVERIFY(!bytes.contains("liborocos"));
-        }
+        QFile exe(prefix_ + "/bin/lagrangelab");
+        QVERIFY(exe.open(QIODevice::ReadOnly));
+        const QByteArray bytes = exe.readAll();
+        QVERIFY(!bytes.contains(QByteArray(LL_SOURCE_DIR) + "/"));
+        QVERIFY(!bytes.contains(QByteArray(LL_BUILD_DIR)));
+        // KDL is a test oracle: the installed program neither links nor names it.
+        QVERIFY(!bytes.contains("liborocos"));
+    }
+
+    // Linked like any Debian program: Debian's shared GiNaC, CLN, Qt and OpenSceneGraph,
+    // as the dynamic loader finds them (ldd), none of them copied into the program.
+    void linksDebiansSharedLibraries() {
+        const ProcessRun ldd = runProcess("ldd", {prefix_ + "/bin/lagrangelab"});
+        QVERIFY2(ldd.exitCode == 0, ldd.err.constData());
+        for (const char* library : {"libginac.so.11", "libcln.so.6", "libQt6Core.so.6", "libQt6Widgets.so.6", "libosg.so"})
+            QVERIFY2(ldd.out.contains(library), library);
+        QVERIFY2(!ldd.out.contains("not found"), ldd.out.constData());
     }
 
     void version() {
@@ -186,21 +190,6 @@ private slots:
         QImage plain = still.copy();
         plain.fill(still.pixel(2, still.height() / 2));
         QVERIFY(differingShare(still, plain) > 0.01);  // the arm and the overlay are drawn
-    }
-
-    // bench's default scene comes from the installed data directory.
-    void defaultSceneFromDataDirectory() {
-        const ProcessRun r = installed({"bench", "--rhs", "--batches", "1"});
-        QVERIFY2(r.exitCode == 0, r.err.constData());
-        QVERIFY2(r.out.contains("PUMA 560"), r.out.constData());
-    }
-
-    // lagrangelab-gui, one folder deeper (libexec/lagrangelab/), finds the installed
-    // data too: bench --typeset's default scenes (the 2R, the PUMA 560, the Panda).
-    void graphicsProgramFindsTheData() {
-        const ProcessRun r = installed({"bench", "--typeset", "--batches", "1"});
-        QVERIFY2(r.exitCode == 0, r.err.constData());
-        QVERIFY2(r.out.contains("planar_2r.json") && r.out.contains("puma560.json") && r.out.contains("panda.json"), r.out.constData());
     }
 
     // The man page, written at build time from --help, lists every command.

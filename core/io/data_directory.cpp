@@ -16,8 +16,8 @@ fs::path executableDirectory() {
 
 fs::path dataDirectory() {
     const fs::path exe = executableDirectory();
-    const bool inLibexec = exe.filename() == "lagrangelab" && exe.parent_path().filename() == "libexec";
-    return (exe / (inLibexec ? "../.." : "..") / "share" / "lagrangelab").lexically_normal();
+    const bool benchmarks = exe.filename() == "bench" && exe.parent_path().filename() == "app";
+    return (exe / (benchmarks ? "../.." : "..") / "share" / "lagrangelab").lexically_normal();
 }
 
 fs::path examplesDirectory() { return dataDirectory() / "examples"; }

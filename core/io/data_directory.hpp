@@ -2,10 +2,10 @@
 // Where LagrangeLab's run-time data (examples/, …) lives: found from the running
 // executable, never from a path compiled in, so an install works wherever its prefix
 // is, also after the prefix was moved.
-//   installed:  PREFIX/bin/lagrangelab                      -> PREFIX/share/lagrangelab
-//               PREFIX/libexec/lagrangelab/lagrangelab-gui  -> PREFIX/share/lagrangelab
-//   build tree: BUILD/app/lagrangelab(-gui)                 -> BUILD/share/lagrangelab (the
-//               build links BUILD/share/lagrangelab/examples to the source examples)
+//   installed:  PREFIX/bin/lagrangelab               -> PREFIX/share/lagrangelab
+//   build tree: BUILD/app/lagrangelab                -> BUILD/share/lagrangelab (the build
+//               links BUILD/share/lagrangelab/examples to the source examples)
+//               BUILD/app/bench/lagrangelab-bench    -> BUILD/share/lagrangelab
 #include <filesystem>
 
 namespace ll {
@@ -14,8 +14,8 @@ namespace ll {
 // Throws std::runtime_error when it cannot be read.
 std::filesystem::path executableDirectory();
 
-// executableDirectory()/../share/lagrangelab, or ../../share/lagrangelab when that folder
-// is PREFIX/libexec/lagrangelab; normalised.
+// executableDirectory()/../share/lagrangelab (../../share/lagrangelab for the benchmarks
+// in BUILD/app/bench); normalised.
 std::filesystem::path dataDirectory();
 
 // dataDirectory()/examples: the example scenes.

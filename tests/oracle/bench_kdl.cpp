@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "app/bench_timing.hpp"
+#include "app/bench/bench_timing.hpp"
 #include "core/io/scene_file.hpp"
 #include "tests/oracle/kdl_chain.hpp"
 

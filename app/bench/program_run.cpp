@@ -1,15 +1,20 @@
-#include "app/child_process.hpp"
+#include "app/bench/program_run.hpp"
 
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
 
+#include "core/io/data_directory.hpp"
+
 extern char** environ;
 
-namespace ll::cli {
+namespace ll::bench {
 
-int runSelf(std::vector<std::string> args, const std::filesystem::path& log) {
-    args.insert(args.begin(), "/proc/self/exe");
+std::filesystem::path lagrangelabProgram() { return (executableDirectory() / ".." / "lagrangelab").lexically_normal(); }
+
+int runLagrangelab(std::vector<std::string> args, const std::filesystem::path& log) {
+    const std::string program = lagrangelabProgram().string();
+    args.insert(args.begin(), program);
     std::vector<char*> argv;
     for (std::string& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
@@ -18,7 +23,7 @@ int runSelf(std::vector<std::string> args, const std::filesystem::path& log) {
     posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
     posix_spawn_file_actions_addopen(&actions, 2, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
     pid_t pid = 0;
-    const int error = posix_spawn(&pid, "/proc/self/exe", &actions, nullptr, argv.data(), environ);
+    const int error = posix_spawn(&pid, program.c_str(), &actions, nullptr, argv.data(), environ);
     posix_spawn_file_actions_destroy(&actions);
     if (error != 0) return 127;
     int status = 0;
@@ -26,4 +31,4 @@ int runSelf(std::vector<std::string> args, const std::filesystem::path& log) {
     return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
-}  // namespace ll::cli
+}  // namespace ll::bench

@@ -13,7 +13,8 @@
 #include <pthread.h>
 #include <time.h>
 
-#include "app/bench_timing.hpp"
+#include "app/bench/bench.hpp"
+#include "app/bench/bench_timing.hpp"
 #include "app/cli_options.hpp"
 #include "app/commands.hpp"
 #include "app/scene_loading.hpp"
@@ -24,7 +25,9 @@
 #include "core/symbolic/structured_document.hpp"
 #include "core/symbolic/structured_dynamics.hpp"
 
-namespace ll::cli {
+namespace ll::bench {
+
+using namespace ll::cli;
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -161,7 +164,7 @@ Scene randomSpatialChain(int n, unsigned seed) {
 
 }  // namespace
 
-int benchDeriveChains(const std::string& range, const std::vector<std::string>& scenes, int repeats, double capSeconds) {
+int deriveChains(const std::string& range, const std::vector<std::string>& scenes, int repeats, double capSeconds) {
     const std::size_t dots = range.find("..");
     int first = 0, last = 0;
     try {
@@ -193,4 +196,4 @@ int benchDeriveChains(const std::string& range, const std::vector<std::string>& 
     return 0;
 }
 
-}  // namespace ll::cli
+}  // namespace ll::bench

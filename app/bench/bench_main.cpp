@@ -1,16 +1,18 @@
-// `lagrangelab bench [SCENE...] [--batches N] [--rhs | --derive | --render | --typeset]`: median times of our dynamics
-// on seeded random states (app/bench_timing.hpp; KDL's solvers on the same states:
-// tests/oracle/bench_kdl.cpp); with --rhs, one right-hand-side evaluation with no
-// effects, gravity only and all effects.
+// lagrangelab-bench: the benchmarks (usage below). By default the median times of our
+// dynamics on seeded random states (app/bench/bench_timing.hpp; KDL's solvers on the
+// same states: tests/oracle/bench_kdl.cpp); with --rhs, one right-hand-side evaluation
+// with no effects, gravity only and all effects; the other modes in their own files.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <random>
 #include <thread>
 
-#include "app/bench_timing.hpp"
+#include "app/bench/bench.hpp"
+#include "app/bench/bench_timing.hpp"
 #include "app/cli_options.hpp"
 #include "app/commands.hpp"
+#include "core/model/diagnostics.hpp"
 #include "app/scene_loading.hpp"
 #include "core/dynamics/coriolis.hpp"
 #include "core/dynamics/forward_dynamics.hpp"
@@ -26,7 +28,9 @@
 #include "core/symbolic/robot_derivation.hpp"
 #include "core/io/data_directory.hpp"
 
-namespace ll::cli {
+namespace ll::bench {
+
+using namespace ll::cli;
 namespace {
 
 // An installed example scene by name (bench's default scenes).
@@ -140,44 +144,8 @@ int benchCancel(const std::vector<std::string>& scenes) {
     return 0;
 }
 
-}  // namespace
-
-int benchCommand(const Args& args) {
-    const Options options(args, {"batches", "chains", "cap", "form"}, {"rhs", "derive", "cancel", "render", "typeset", "gui", "process"});
-    // --batches N, or each mode's default: a whole number from 1 to 1000 (0 batches have
-    // no median).
-    const auto batchesOr = [&](int fallback) { return checkedBatches(options.number("batches", fallback), options.text("batches")); };
-    const int batches = batchesOr(21);
-    std::vector<std::string> scenes = options.positional();
-    if (options.has("gui")) return benchGui(scenes, batchesOr(9));
-    if (options.has("render")) return benchRender(scenes, batchesOr(3));
-    if (options.has("typeset")) return benchTypeset(scenes, batchesOr(5));
-    if (options.has("form") && !options.has("process")) throw UsageError("--form: only with --process");
-    if (options.has("process")) {
-        const std::string form = options.text("form", "auto");
-        if (form != "auto" && form != "structured" && form != "expanded")
-            throw UsageError("--form: expected auto, structured or expanded, got '" + form + "'");
-        return benchProcess(scenes, batchesOr(11), form);
-    }
-    if (options.has("chains") && !options.has("derive")) throw UsageError("--chains: only with --derive");
-    if (options.has("derive") && options.has("chains"))
-        return benchDeriveChains(options.text("chains"), scenes, batchesOr(5), options.number("cap", 20.0));
-    if (options.has("derive")) {
-        if (scenes.empty())
-            for (const char* name : {"planar_2r", "scara", "cart_pole", "puma560", "stanford_arm", "mass_spring_pair_lagrangian"})
-                scenes.push_back(example(name));
-        return benchDerive(scenes, batchesOr(5));
-    }
-    if (options.has("cancel")) {
-        if (scenes.empty())
-            for (const char* name : {"puma560", "stanford_arm", "panda"})
-                scenes.push_back(example(name));
-        return benchCancel(scenes);
-    }
-    if (options.has("rhs")) {
-        if (scenes.empty()) scenes.push_back(example("puma560"));
-        return benchRhs(scenes, batches);
-    }
+// The default table: B, C, g, forward and inverse dynamics, one simulated second.
+int dynamics(std::vector<std::string> scenes, int batches) {
     if (scenes.empty())
         for (const char* name : {"puma560", "stanford_arm", "ur5", "panda", "planar_2r"})
             scenes.push_back(example(name));
@@ -208,4 +176,84 @@ int benchCommand(const Args& args) {
     return 0;
 }
 
-}  // namespace ll::cli
+const char* const usage =
+    "usage: lagrangelab-bench [SCENE...] [--batches N] [--rhs | --derive | --cancel | --render | --typeset | --gui | --process]\n"
+    "                         [--chains A..B] [--cap S] [--form auto|structured|expanded]\n"
+    "  median times of B, C, g, forward/inverse dynamics and one simulated second (default scenes:\n"
+    "  the PUMA 560, Stanford arm, UR5, Panda and planar 2R); or\n"
+    "  --rhs      one right-hand side of the PUMA 560 with no effects, gravity only, all effects\n"
+    "  --derive   the whole symbolic derivation per parameter mode\n"
+    "  --derive --chains 3..12  structured beside expanded on seeded random chains, with sizes (--cap S per chain)\n"
+    "  --cancel   how soon a derivation stops after its cancel flag is set\n"
+    "  --render   headless export of 10 s of the PUMA 560 to MP4, render-only frames/s, peak memory\n"
+    "  --typeset  one B entry typeset, the 2R and PUMA 560 to PDF, the Panda derived and printed\n"
+    "  --gui      the window: edit-to-updated-view latency (2R, PUMA 560), the Panda opened to its\n"
+    "             derivation on screen, PUMA 560 animation frames/s, start to first frame; needs a display\n"
+    "  --process  whole `lagrangelab derive` processes, every example and format, against their budgets\n"
+    "Built in the tree, not installed; docs/benchmarks.md records what it measured.\n";
+
+int run(const std::vector<std::string>& args) {
+    const Options options(args, {"batches", "chains", "cap", "form"}, {"rhs", "derive", "cancel", "render", "typeset", "gui", "process"});
+    // --batches N, or each mode's default: a whole number from 1 to 1000 (0 batches have
+    // no median).
+    const auto batchesOr = [&](int fallback) { return checkedBatches(options.number("batches", fallback), options.text("batches")); };
+    std::vector<std::string> scenes = options.positional();
+    if (options.has("gui")) return gui(scenes, batchesOr(9));
+    if (options.has("render")) return render(scenes, batchesOr(3));
+    if (options.has("typeset")) return typeset(scenes, batchesOr(5));
+    if (options.has("form") && !options.has("process")) throw UsageError("--form: only with --process");
+    if (options.has("process")) {
+        const std::string form = options.text("form", "auto");
+        if (form != "auto" && form != "structured" && form != "expanded")
+            throw UsageError("--form: expected auto, structured or expanded, got '" + form + "'");
+        return process(scenes, batchesOr(7), form);
+    }
+    if (options.has("chains") && !options.has("derive")) throw UsageError("--chains: only with --derive");
+    if (options.has("derive") && options.has("chains"))
+        return deriveChains(options.text("chains"), scenes, batchesOr(5), options.number("cap", 20.0));
+    if (options.has("derive")) {
+        if (scenes.empty())
+            for (const char* name : {"planar_2r", "scara", "cart_pole", "puma560", "stanford_arm", "mass_spring_pair_lagrangian"})
+                scenes.push_back(example(name));
+        return benchDerive(scenes, batchesOr(5));
+    }
+    if (options.has("cancel")) {
+        if (scenes.empty())
+            for (const char* name : {"puma560", "stanford_arm", "panda"})
+                scenes.push_back(example(name));
+        return benchCancel(scenes);
+    }
+    if (options.has("rhs")) {
+        if (scenes.empty()) scenes.push_back(example("puma560"));
+        return benchRhs(scenes, batchesOr(21));
+    }
+    return dynamics(scenes, batchesOr(21));
+}
+
+}  // namespace
+}  // namespace ll::bench
+
+int main(int argc, char** argv) {
+    const std::vector<std::string> args(argv + 1, argv + argc);
+    for (const std::string& a : args)
+        if (a == "--help" || a == "-h") {
+            std::fputs(ll::bench::usage, stdout);
+            return 0;
+        }
+    try {
+        return ll::bench::run(args);
+    } catch (const ll::InputError& e) {
+        for (const ll::Diagnostic& d : e.diagnostics())
+            if (d.severity == ll::Severity::Error) std::fprintf(stderr, "error: %s: %s\n", d.field.c_str(), d.message.c_str());
+        return 2;
+    } catch (const ll::cli::UsageError& e) {
+        std::fprintf(stderr, "error: %s\n%s", e.what(), ll::bench::usage);
+        return 2;
+    } catch (const std::invalid_argument& e) {
+        std::fprintf(stderr, "error: %s\n", e.what());
+        return 2;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "error: %s\n", e.what());
+        return 1;
+    }
+}

@@ -1,4 +1,4 @@
-// `lagrangelab bench --typeset [SCENE...] [--batches N]`: what typesetting and printing
+// lagrangelab-bench --typeset [SCENE...] [--batches N]: what typesetting and printing
 // the derivation cost, wall and CPU time (medians of N runs): one entry of B laid out;
 // whole derivations to PDF (default the 2R and the PUMA 560); and for the Franka Panda
 // (or the scenes given) the derivation beside its text, JSON, LaTeX and PDF, each in
@@ -13,7 +13,8 @@
 #include <functional>
 
 #include "core/io/data_directory.hpp"
-#include "app/bench_timing.hpp"
+#include "app/bench/bench.hpp"
+#include "app/bench/bench_timing.hpp"
 #include "app/commands.hpp"
 #include "app/offscreen_gui.hpp"
 #include "app/scene_loading.hpp"
@@ -24,7 +25,9 @@
 #include "core/symbolic/structured_dynamics.hpp"
 #include "ui/derivation_pages.hpp"
 
-namespace ll::cli {
+namespace ll::bench {
+
+using namespace ll::cli;
 namespace {
 
 struct Cost {
@@ -84,7 +87,7 @@ void toPdf(const Scene& scene, symbolic::ParameterMode mode, const QString& path
 
 }  // namespace
 
-int benchTypeset(const std::vector<std::string>& scenes, int runs) {
+int typeset(const std::vector<std::string>& scenes, int runs) {
     const auto app = makeGuiApplication();
     if (!ui::mathFontsAvailable()) throw std::runtime_error("the Latin Modern fonts are missing: install fonts-lmodern");
     QTemporaryDir dir;
@@ -141,4 +144,4 @@ int benchTypeset(const std::vector<std::string>& scenes, int runs) {
     return 0;
 }
 
-}  // namespace ll::cli
+}  // namespace ll::bench

@@ -1,4 +1,4 @@
-// `lagrangelab bench --render [SCENE] [--batches N]`: what headless export costs.
+// lagrangelab-bench --render [SCENE] [--batches N]: what headless export costs.
 //  1. The whole `render` pipeline, 10 s of the scene at 30 fps, 1280x720, MP4 with every
 //     overlay: wall time (median of N runs) and where it goes per stage.
 //  2. Render-only frames per second (OSG draw into the FBO, glFinish), with and without
@@ -16,7 +16,8 @@
 
 #include <unistd.h>
 
-#include "app/child_process.hpp"
+#include "app/bench/bench.hpp"
+#include "app/bench/program_run.hpp"
 #include "app/commands.hpp"
 #include "app/offscreen_gui.hpp"
 #include "app/scene_loading.hpp"
@@ -28,7 +29,9 @@
 #include "ui/headless_renderer.hpp"
 #include "ui/osg_scene.hpp"
 
-namespace ll::cli {
+namespace ll::bench {
+
+using namespace ll::cli;
 namespace {
 
 namespace fs = std::filesystem;
@@ -67,7 +70,7 @@ double framesPerSecond(const Scene& scene, const Trajectory& trajectory, int ant
 std::string peakMemory(const std::string& scene, double duration, const fs::path& out) {
     const fs::path log = fs::temp_directory_path() / ("lagrangelab-bench-" + std::to_string(::getpid()) + ".log");
     const std::string seconds = std::to_string(duration);
-    const int exitCode = runSelf({"render", scene, "--duration", seconds, "--size", "1920x1080", "--out", out.string()}, log);
+    const int exitCode = runLagrangelab({"render", scene, "--duration", seconds, "--size", "1920x1080", "--out", out.string()}, log);
     if (exitCode == 127) return "could not start the render";
     std::ifstream in(log);
     std::string line, found = "render failed (exit " + std::to_string(exitCode) + ")";
@@ -80,7 +83,7 @@ std::string peakMemory(const std::string& scene, double duration, const fs::path
 
 }  // namespace
 
-int benchRender(const std::vector<std::string>& scenes, int runs) {
+int render(const std::vector<std::string>& scenes, int runs) {
     const std::string path = scenes.empty() ? (examplesDirectory() / "puma560.json").string() : scenes.front();
     Scene scene = loadSceneReportingWarnings(path);
     scene.simulation.duration = 10.0;
@@ -126,4 +129,4 @@ int benchRender(const std::vector<std::string>& scenes, int runs) {
     return 0;
 }
 
-}  // namespace ll::cli
+}  // namespace ll::bench

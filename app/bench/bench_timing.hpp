@@ -1,5 +1,5 @@
 #pragma once
-// What `lagrangelab bench` and the KDL comparison (tests/oracle/bench_kdl.cpp) time the
+// What lagrangelab-bench and the KDL comparison (tests/oracle/bench_kdl.cpp) time the
 // same way: seeded random states, the median time per call over batches, and our five
 // dynamics quantities on those states.
 #include <Eigen/Core>

@@ -1,0 +1,22 @@
+#pragma once
+// The modes of lagrangelab-bench (app/bench/bench_main.cpp), one file each. Each prints
+// its table on stdout and returns the exit code: 0, 1 when a timed run failed, 2 for a
+// bad argument.
+#include <string>
+#include <vector>
+
+namespace ll::bench {
+
+// --derive --chains A..B: structured beside expanded on seeded random chains (bench_derive_chains.cpp).
+int deriveChains(const std::string& range, const std::vector<std::string>& scenes, int repeats, double capSeconds);
+// --render: the cost of headless export (bench_render.cpp).
+int render(const std::vector<std::string>& scenes, int runs);
+// --typeset: typesetting and printing the derivation (bench_typeset.cpp).
+int typeset(const std::vector<std::string>& scenes, int runs);
+// --process: whole `lagrangelab derive` processes in every format against their budgets (bench_process.cpp).
+int process(const std::vector<std::string>& scenes, int runs, const std::string& form);
+// --gui: edit-to-view latency, a large robot opened to its derivation on screen,
+// animation frame rate, start to first frame (bench_gui.cpp).
+int gui(const std::vector<std::string>& scenes, int runs);
+
+}  // namespace ll::bench
