@@ -22,6 +22,7 @@ namespace ll::cli {
 namespace {
 
 using namespace ll::symbolic;
+using present::DocumentFormat;
 
 struct StepRange {
     int first = 0, last = 8;

@@ -7,9 +7,9 @@
 
 namespace ll {
 struct WorkPrecisionResult;
-namespace symbolic {
+namespace present {
 struct DisplayDocument;
-}  // namespace symbolic
+}  // namespace present
 }  // namespace ll
 
 namespace ll::cli {
@@ -25,7 +25,7 @@ int renderCommand(const Args& args);
 int codegenCommand(const Args& args);
 // The painting parts: each starts Qt (offscreen without a display) for its own work.
 // derive --format pdf|svg|png: the typeset pages of a display document (app/derive_pages.cpp).
-int writeDerivationPages(const symbolic::DisplayDocument& display, const std::string& format, const std::string& outPath,
+int writeDerivationPages(const present::DisplayDocument& display, const std::string& format, const std::string& outPath,
                          bool timings);
 // accuracy --out: the work–precision plot, .svg or .png (app/accuracy_plot.cpp).
 void saveAccuracyPlot(const WorkPrecisionResult& result, const std::string& path);

@@ -16,7 +16,7 @@ double secondsSince(Clock::time_point since) { return std::chrono::duration<doub
 
 }  // namespace
 
-int writeDerivationPages(const symbolic::DisplayDocument& display, const std::string& format, const std::string& outPath,
+int writeDerivationPages(const present::DisplayDocument& display, const std::string& format, const std::string& outPath,
                          bool timings) {
     const Clock::time_point startGui = Clock::now();
     const auto app = makeGuiApplication();

@@ -6,10 +6,11 @@
 #include <random>
 #include <string>
 
-#include "core/symbolic/angle_sums.hpp"
-#include "core/symbolic/expression_printer.hpp"
+#include "core/present/angle_sums.hpp"
+#include "core/present/expression_printer.hpp"
 
 using namespace ll::symbolic;
+using namespace ll::present;
 using GiNaC::ex;
 using GiNaC::symbol;
 

@@ -9,16 +9,18 @@
 
 #include "core/io/scene_file.hpp"
 #include "core/pipeline/scene_derivation.hpp"
-#include "core/symbolic/display_builder.hpp"
+#include "core/present/display_builder.hpp"
+#include "core/present/text_document.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/pipeline/display_derivation.hpp"
 #include "core/symbolic/robot_derivation.hpp"
-#include "core/symbolic/structured_display.hpp"
+#include "core/present/structured_display.hpp"
 #include "core/symbolic/structured_dynamics.hpp"
 #include "core/model/cancellation.hpp"
 
 using namespace ll;
 using namespace ll::symbolic;
+using namespace ll::present;
 
 namespace {
 
@@ -138,17 +140,18 @@ private slots:
         QVERIFY2(sums >= 3, std::to_string(sums).c_str());  // b11 = Σ_i β11^(i) (+ armature), not expanded
     }
 
-    // A builder that keeps only the symbols between expressions (the structured
-    // documents' printer) shows each expression as a fresh builder does: every name and
-    // entry of the Panda's and the PUMA 560's structured models, in the three styles.
+    // A builder that has built many expressions (and keeps their symbols and ordered
+    // sums: the structured documents' printer) shows each expression as a fresh builder
+    // does: every name and entry of the Panda's and the PUMA 560's structured models, in
+    // the three styles.
     void symbolSharingBuilderAgreesWithFreshOnes() {
         for (const char* example : {"puma560.json", "panda.json"}) {
             const Scene scene = loadScene(std::string(LL_EXAMPLES_DIR) + "/" + example).scene;
             const auto lock = lockGinac();
             const StructuredDynamics s = deriveStructured(scene, {});
             DisplayOptions options;
-            for (int i = 0; i < s.n; ++i) options.coordinateNames.push_back("q" + std::to_string(i + 1));
-            DisplayBuilder shared(options, DisplayBuilder::Sharing::Symbols);
+            for (int i = 0; i < s.n; ++i) options.names.coordinateNames.push_back("q" + std::to_string(i + 1));
+            DisplayBuilder shared(options);
             std::vector<GiNaC::ex> all;
             for (const NamedDefinition& d : s.table->entries()) all.push_back(d.value);
             for (const GiNaC::matrix* m : {&s.B, &s.C, &s.g})
@@ -230,12 +233,12 @@ private slots:
         symbolic::DerivationOptions options;
         const symbolic::Derivation d = symbolic::deriveRobot(scene, options);
         std::atomic<bool> stop{true};
-        QVERIFY_THROWS_EXCEPTION(Cancelled, symbolic::displayDocument(d, &stop));
+        QVERIFY_THROWS_EXCEPTION(Cancelled, present::displayDocument(d, &stop));
         const symbolic::StructuredDynamics s = symbolic::deriveStructured(scene, options);
-        QVERIFY_THROWS_EXCEPTION(Cancelled, symbolic::structuredDisplayDocument(s, "test", 0, 8, &stop));
+        QVERIFY_THROWS_EXCEPTION(Cancelled, present::structuredDisplayDocument(s, "test", 0, 8, &stop));
         stop = false;
-        QVERIFY(!symbolic::displayDocument(d, &stop)->steps.empty());
-        QVERIFY(!symbolic::structuredDisplayDocument(s, "test", 0, 8, &stop)->steps.empty());
+        QVERIFY(!present::displayDocument(d, &stop)->steps.empty());
+        QVERIFY(!present::structuredDisplayDocument(s, "test", 0, 8, &stop)->steps.empty());
     }
 
     // A matrix too wide for a line is listed entry by entry without its zeros: the PUMA
@@ -295,14 +298,19 @@ private slots:
                 auto matrix = std::make_shared<DisplayNode>();
                 matrix->kind = DisplayKind::Matrix;
                 matrix->rows = {{entry, zero}, {zero, x}};
-                DisplayItem item{"M", "M", displayEquation(displayRaw("M", "M", "M"), matrix), matrix, {}};
+                DisplayItem item;
+                item.name = "B";
+                item.latexName = "B";
+                item.quantity = Quantity::MassMatrix;
+                item.equation = displayEquation(displayRaw("B", "B", "B"), matrix);
+                item.value = matrix;
                 const std::string block = renderDisplay(*item.equation, DisplayStyle::Text), text = itemText(item);
                 if (columns(block) <= int(maxTextMatrixRow)) {
                     QCOMPARE(QString::fromStdString(text), QString::fromStdString(block));
                     ++blocks;
                 } else {
-                    const std::string expected = "M (2×2), entry by entry, the zeros left out:\n  m11 = " +
-                                                 renderDisplay(*entry, DisplayStyle::Text) + "\n  m22 = x";
+                    const std::string expected = "B (2×2), entry by entry, the zeros left out:\n  b11 = " +
+                                                 renderDisplay(*entry, DisplayStyle::Text) + "\n  b22 = x";
                     QCOMPARE(QString::fromStdString(text), QString::fromStdString(expected));
                     ++listings;
                 }
@@ -316,7 +324,7 @@ private slots:
         const auto lock = lockGinac();
         const GiNaC::symbol m2("m2"), qd1("qd1"), qd2("qd2"), s2("s2"), a1("a1");
         const GiNaC::ex e = -m2 * a1 * s2 * (qd1 + qd2);
-        const DisplayPtr tree = buildDisplay(e, {{"q1", "q2"}, true});
+        const DisplayPtr tree = buildDisplay(e, {{{"q1", "q2"}, true}});
         QCOMPARE(QString::fromStdString(renderDisplay(*tree, DisplayStyle::Text)), QString("−m2 a1 s2 (q̇1 + q̇2)"));
         GiNaC::symtab table{{"m2", m2}, {"qd1", qd1}, {"qd2", qd2}, {"a1", a1}, {"q2", GiNaC::symbol("q2")}};
         GiNaC::parser reader(table);

@@ -8,10 +8,12 @@
 #include <random>
 #include <string>
 
-#include "core/symbolic/angle_sums.hpp"
-#include "core/symbolic/expression_printer.hpp"
+#include "core/present/angle_sums.hpp"
+#include "core/present/expression_printer.hpp"
+#include "core/present/textbook_form.hpp"
 
 using namespace ll::symbolic;
+using namespace ll::present;
 using GiNaC::ex;
 using GiNaC::symbol;
 

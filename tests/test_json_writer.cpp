@@ -11,10 +11,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/symbolic/json_writer.hpp"
+#include "core/present/json_writer.hpp"
 #include "process_run.hpp"
 
-using ll::symbolic::JsonWriter;
+using ll::present::JsonWriter;
 using ordered = nlohmann::ordered_json;
 
 namespace {

@@ -101,6 +101,23 @@ private slots:
         QCOMPARE(layerViolations(layers, "simulation", "f", "#include <ginac/ginac.h>\n").size(), 1);
         QCOMPARE(layerViolations(layers, "io", "f", "#include \"core/dynamics/energy.hpp\"\n").size(), 0);
         QCOMPARE(layerViolations(layers, "symbolic", "f", "#include <ginac/ginac.h>\n").size(), 0);
+        // The presentation layer sits on the derivation: symbolic derives and compiles and
+        // never reads how a result is shown; present shows what symbolic derived.
+        QVERIFY(rank(layers, "symbolic") < rank(layers, "present") && rank(layers, "present") < rank(layers, "pipeline"));
+        QCOMPARE(layerViolations(layers, "symbolic", "f", "#include \"core/present/display_tree.hpp\"\n").size(), 1);
+        QCOMPARE(layerViolations(layers, "present", "f", "#include \"core/symbolic/derivation.hpp\"\n").size(), 0);
+    }
+
+    // How an item reads is decided from the quantity it is (core/symbolic/derivation.hpp),
+    // never from its name: no presentation code compares an item's name.
+    void presentationDecidesFromKinds() {
+        const std::regex byName("\\bitem(\\.|->)name\\s*(==|!=|\\.rfind|\\.find|\\.starts_with|\\.substr|\\.size)");
+        QVERIFY(std::regex_search("if (item.name.rfind(\"equation_\", 0) == 0)", byName));
+        QVERIFY(std::regex_search("const bool single = item->name.size() == 1;", byName));
+        QVERIFY(!std::regex_search("out.name = item.name;", byName));
+        QStringList bad;
+        for (const char* folder : {"core/present", "core/pipeline", "ui"}) bad << offending(folder, byName);
+        QVERIFY2(bad.isEmpty(), qPrintable(bad.join('\n')));
     }
 
     void coreIsPureCpp() {

@@ -43,6 +43,7 @@
 using ll::ui::JointTableModel;
 using ll::ui::MainWindow;
 namespace symbolic = ll::symbolic;
+namespace present = ll::present;
 
 namespace {
 
@@ -472,11 +473,11 @@ private slots:
         // b11 = I1 + m1 lc1² + I2 + m2 (a1² + lc2² + 2 a1 lc2 c2) = 1/6 + 0.5 + 0.08 + 1.5·1.16,
         // b12 = I2 + m2 (lc2² + a1 lc2 c2) = 0.32, g1 = (m1 lc1 + m2 a1) g c1 + m2 lc2 g c12 = 2.5·9.81.
         const auto cell = [&](const std::string& name, int i, int j) {
-            const symbolic::DisplayStep* pose = w.derivationView().poseResults();
+            const present::DisplayStep* pose = w.derivationView().poseResults();
             if (!pose) return QString("no step 9");
-            for (const symbolic::DisplayItem& item : pose->items)
+            for (const present::DisplayItem& item : pose->items)
                 if (item.name == name && item.value && i < int(item.value->rows.size()))
-                    return QString::fromStdString(symbolic::renderDisplay(*item.value->rows[i][j], symbolic::DisplayStyle::Text));
+                    return QString::fromStdString(present::renderDisplay(*item.value->rows[i][j], present::DisplayStyle::Text));
             return QString("no ") + QString::fromStdString(name);
         };
         QCOMPARE(cell("B", 0, 0), QString("2.487"));

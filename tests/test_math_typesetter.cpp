@@ -22,6 +22,7 @@
 
 using namespace ll;
 using namespace ll::symbolic;
+using namespace ll::present;
 using ll::ui::MathBox;
 using ll::ui::MathPiece;
 
@@ -159,15 +160,20 @@ private slots:
         }
         const auto equation = displayEquation(symbolNode("b", "11"), sum);
         const double width = 30 * ui::mathUnitsPerEm;
-        const auto lines = ui::layoutItem(*equation, "b11", width);
+        const auto lines = ui::layoutEquation(*equation, width);
         QVERIFY(lines.size() > 2);
         for (const MathBox& l : lines) QVERIFY(l.width <= width + 1);
         auto m = std::make_shared<DisplayNode>();
         m->kind = DisplayKind::Matrix;
         m->rows = {{sum, sum}, {sum, sum}};
-        const auto entries = ui::layoutItem(*displayEquation(symbolNode("B"), m), "B", width);
+        DisplayItem B;
+        B.name = "B";
+        B.quantity = Quantity::MassMatrix;
+        B.value = m;
+        B.equation = displayEquation(symbolNode("B"), m);
+        const auto entries = ui::layoutItem(B, width);
         QVERIFY(entries.size() > 4 * 2);  // a heading and four entries, each broken
-        QVERIFY(pieceWithText(entries[1], "b"));
+        QVERIFY(pieceWithText(entries[1], "b"));  // b11, named by the quantity: B's entries are b_jk
     }
 
     // Nobody reads thousands of terms on a page: a long sum is cut wherever it sits (the
@@ -186,15 +192,15 @@ private slots:
         const DisplayNode* more = moreTerms(inner);
         QVERIFY(more);
         QCOMPARE(QString::fromStdString(more->text), QString("⋯ (%1 more terms)").arg(300 - int(ui::maxTypesetTerms * 2 / 3)));
-        QCOMPARE(symbolic::moreTermsCount(*more), std::size_t(300 - ui::maxTypesetTerms * 2 / 3));  // the count its text shows
-        QCOMPARE(symbolic::moreTermsCount(*longSum->children.back()), std::size_t(0));
+        QCOMPARE(present::moreTermsCount(*more), std::size_t(300 - ui::maxTypesetTerms * 2 / 3));  // the count its text shows
+        QCOMPARE(present::moreTermsCount(*longSum->children.back()), std::size_t(0));
         QCOMPARE(cut->children[1]->children[1], DisplayPtr(shortSum));  // untouched: shared, not copied
         QVERIFY(longSum->children.size() == 300 && !moreTerms(*longSum));  // the original keeps every term
         const DisplayPtr same = ui::elided(displayEquation(symbolNode("b", "12"), shortSum), ui::maxTypesetTerms);
         QVERIFY(!moreTerms(*same->children[1]));
         // Typeset, the cut entry takes a few lines, not the dozens its 300 terms would.
         const double width = 40 * ui::mathUnitsPerEm;
-        const auto full = ui::layoutItem(*displayEquation(symbolNode("b", "11"), product), "b11", width);
+        const auto full = ui::layoutEquation(*displayEquation(symbolNode("b", "11"), product), width);
         QVERIFY2(full.size() <= 8, qPrintable(QString::number(full.size())));
     }
 
@@ -245,10 +251,9 @@ private slots:
         }
     }
 
-    // The document is laid out on a second thread while QPdfWriter writes the finished
-    // pages: every page arrives, in order, and each formula's glyphs are one text object
+    // Many items on many pages: every page arrives, in order, and each formula's glyphs are one text object
     // per font (they were one per letter or subscript: 69,000 in the Panda's PDF).
-    void pdfLaidOutWhileWritten() {
+    void pdfPagesOfManyItems() {
         DisplayDocument document;
         document.systemName = "pipeline";
         DisplayStep step;

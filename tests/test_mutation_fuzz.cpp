@@ -119,11 +119,11 @@ std::string runInProcess(const std::string& text, int index, std::mt19937& rng, 
     if (n <= 3 && index % 4 == 0) {
         DocumentRequest request;
         request.mode = static_cast<symbolic::ParameterMode>(rng() % 3);
-        request.format = static_cast<symbolic::DocumentFormat>(rng() % 3);
+        request.format = static_cast<present::DocumentFormat>(rng() % 3);
         try {
             const DerivedDocument d = deriveDocument(scene, request);
             if (d.document.empty() || !isValidUtf8(d.document)) return "derive gave an empty or non-UTF-8 document";
-            if (request.format == symbolic::DocumentFormat::Json) {
+            if (request.format == present::DocumentFormat::Json) {
                 const auto json = nlohmann::json::parse(d.document, nullptr, false);
                 if (json.is_discarded()) return "derive --format json is not JSON";
             }

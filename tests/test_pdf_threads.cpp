@@ -26,7 +26,7 @@ using namespace ll;
 
 namespace {
 
-std::shared_ptr<const symbolic::DisplayDocument> documentOf(const char* example) {
+std::shared_ptr<const present::DisplayDocument> documentOf(const char* example) {
     const Scene scene = loadScene(std::string(LL_EXAMPLES_DIR) + "/" + example).scene;
     return deriveDisplay(scene, DocumentRequest{}).display;
 }
@@ -53,7 +53,7 @@ struct Written {
     std::string error;
 };
 
-Written write(const symbolic::DisplayDocument& document, const QString& path) {
+Written write(const present::DisplayDocument& document, const QString& path) {
     Written w;
     w.ok = ui::writePdf(document, path, w.error, {}, &w.pages);
     return w;

@@ -13,7 +13,7 @@
 #include "core/kinematics/forward_kinematics.hpp"
 #include "core/simulation/generalized_forces.hpp"
 #include "core/symbolic/derivation_evaluator.hpp"
-#include "core/symbolic/expression_printer.hpp"
+#include "core/present/expression_printer.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/robot_derivation.hpp"
 #include "core/symbolic/trig_context.hpp"
@@ -21,6 +21,7 @@
 
 using namespace ll;
 using namespace ll::symbolic;
+using namespace ll::present;
 
 namespace {
 double relativeError(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {

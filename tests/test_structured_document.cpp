@@ -17,12 +17,13 @@
 #include "core/io/scene_file.hpp"
 #include "core/pipeline/derivation_forms.hpp"
 #include "core/symbolic/ginac_lock.hpp"
-#include "core/symbolic/structured_document.hpp"
+#include "core/present/structured_document.hpp"
 #include "core/symbolic/structured_dynamics.hpp"
 #include "test_support.hpp"
 
 using namespace ll;
 using namespace ll::symbolic;
+using namespace ll::present;
 
 namespace {
 
@@ -200,7 +201,7 @@ private slots:
         }
     }
 
-    // The expanded form's LaTeX (core/symbolic/derivation_document) too, as `derive
+    // The expanded form's LaTeX (core/present/derivation_document) too, as `derive
     // --format latex` makes it (with its "Form:" line): with a scene named with LaTeX's
     // specials it is well-formed, the name escaped in the title; the form's reason
     // ("asked for with --form", a Lagrangian's "E_kin and E_pot") escaped as well.

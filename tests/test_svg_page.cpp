@@ -16,7 +16,7 @@
 
 #include "core/io/scene_file.hpp"
 #include "core/pipeline/display_derivation.hpp"
-#include "core/symbolic/display_builder.hpp"
+#include "core/present/display_builder.hpp"
 #include "ui/derivation_pages.hpp"
 #include "ui/math_typesetter.hpp"
 #include "ui/svg_page.hpp"
@@ -25,7 +25,7 @@ using namespace ll;
 
 namespace {
 
-std::shared_ptr<const symbolic::DisplayDocument> documentOf(const char* example) {
+std::shared_ptr<const present::DisplayDocument> documentOf(const char* example) {
     const Scene scene = loadScene(std::string(LL_EXAMPLES_DIR) + "/" + example).scene;
     return deriveDisplay(scene, DocumentRequest{}).display;
 }
@@ -130,7 +130,7 @@ private slots:
     // the SVG's bolder edges weigh more); without the parentheses 0.34, without the
     // radicals' strokes 0.27.
     void bracketsAndRadicalsAsPainted() {
-        using namespace ll::symbolic;
+        using namespace ll::present;
         const DisplayPtr x = displaySymbolName("x", 0), y = displaySymbolName("y", 1);
         const DisplayPtr sum = displaySumOf({x, y});
         const DisplayPtr root = displayNode(DisplayKind::Root, {sum});

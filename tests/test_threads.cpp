@@ -17,9 +17,10 @@
 #include "core/io/scene_file.hpp"
 #include "core/model/cancellation.hpp"
 #include "core/pipeline/scene_check.hpp"
+#include "core/present/text_document.hpp"
 #include "core/pipeline/scene_derivation.hpp"
 #include "core/pipeline/scene_simulation.hpp"
-#include "core/symbolic/derivation_document.hpp"
+#include "core/present/derivation_document.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -29,7 +30,7 @@ namespace {
 
 Scene example(const std::string& name) { return loadScene(std::string(LL_EXAMPLES_DIR) + "/" + name).scene; }
 
-std::string derive(const Scene& scene, symbolic::ParameterMode mode, symbolic::DocumentFormat format) {
+std::string derive(const Scene& scene, symbolic::ParameterMode mode, present::DocumentFormat format) {
     DocumentRequest request;
     request.mode = mode;
     request.format = format;
@@ -37,22 +38,22 @@ std::string derive(const Scene& scene, symbolic::ParameterMode mode, symbolic::D
 }
 
 // The display trees the documents are rendered from.
-std::shared_ptr<const symbolic::DisplayDocument> displayTrees(const Scene& scene, symbolic::ParameterMode mode) {
+std::shared_ptr<const present::DisplayDocument> displayTrees(const Scene& scene, symbolic::ParameterMode mode) {
     DocumentRequest request;
     request.mode = mode;
-    request.format = symbolic::DocumentFormat::Display;
+    request.format = present::DocumentFormat::Display;
     return deriveDocument(scene, request).display;
 }
 
 // Every JSON item (name, text, LaTeX, Plain) and the top-level results against the
 // display trees rendered here, on one thread, one node at a time.
-void compareJsonWithTrees(const nlohmann::json& json, const symbolic::DisplayDocument& display, const char* name) {
+void compareJsonWithTrees(const nlohmann::json& json, const present::DisplayDocument& display, const char* name) {
     // JSON's Plain: a matrix as rows of entries (a column as a list).
-    auto samePlain = [](const nlohmann::json& written, const symbolic::DisplayNode& value) {
-        const auto plain = [](const symbolic::DisplayNode& n) {
-            return symbolic::renderDisplay(n, symbolic::DisplayStyle::Plain);
+    auto samePlain = [](const nlohmann::json& written, const present::DisplayNode& value) {
+        const auto plain = [](const present::DisplayNode& n) {
+            return present::renderDisplay(n, present::DisplayStyle::Plain);
         };
-        if (value.kind != symbolic::DisplayKind::Matrix) return written.get<std::string>() == plain(value);
+        if (value.kind != present::DisplayKind::Matrix) return written.get<std::string>() == plain(value);
         if (written.size() != value.rows.size()) return false;
         for (std::size_t r = 0; r < value.rows.size(); ++r)
             for (std::size_t c = 0; c < value.rows[r].size(); ++c) {
@@ -62,19 +63,19 @@ void compareJsonWithTrees(const nlohmann::json& json, const symbolic::DisplayDoc
         return true;
     };
     QCOMPARE(json["steps"].size(), display.steps.size());
-    std::map<std::string, const symbolic::DisplayItem*> results;
+    std::map<std::string, const present::DisplayItem*> results;
     for (std::size_t k = 0; k < display.steps.size(); ++k) {
         const auto& items = display.steps[k].items;
         QCOMPARE(json["steps"][k]["items"].size(), items.size());
         for (std::size_t i = 0; i < items.size(); ++i) {
             const auto& written = json["steps"][k]["items"][i];
             QCOMPARE(written["name"].get<std::string>(), items[i].name);
-            QCOMPARE(written["text"].get<std::string>(), symbolic::itemText(items[i]));
+            QCOMPARE(written["text"].get<std::string>(), present::itemText(items[i]));
             QCOMPARE(written["latex"].get<std::string>(),
-                     symbolic::renderDisplay(*items[i].equation, symbolic::DisplayStyle::Latex));
+                     present::renderDisplay(*items[i].equation, present::DisplayStyle::Latex));
             if (items[i].name.rfind("equation_", 0) == 0)
                 QCOMPARE(written["expr"].get<std::string>(),
-                         symbolic::renderDisplay(*items[i].equation, symbolic::DisplayStyle::Plain));
+                         present::renderDisplay(*items[i].equation, present::DisplayStyle::Plain));
             else
                 QVERIFY2(samePlain(written["expr"], *items[i].value), items[i].name.c_str());
             results[items[i].name] = &items[i];
@@ -113,8 +114,8 @@ private slots:
         const Scene puma = example("puma560.json");
         const Scene planar = example("planar_2r.json");
         const Scene pair = example("mass_spring_pair_lagrangian.json");
-        const std::string pumaAlone = derive(puma, symbolic::ParameterMode::Textbook, symbolic::DocumentFormat::Text);
-        const std::string planarAlone = derive(planar, symbolic::ParameterMode::Parametric, symbolic::DocumentFormat::Latex);
+        const std::string pumaAlone = derive(puma, symbolic::ParameterMode::Textbook, present::DocumentFormat::Text);
+        const std::string planarAlone = derive(planar, symbolic::ParameterMode::Parametric, present::DocumentFormat::Latex);
         const SimulationResult pairAlone = simulate(pair, shortRun(pair, 2.0));
         QVERIFY(pumaAlone.find("B = ") != std::string::npos);
         QVERIFY(pairAlone.status == SimulationStatus::Completed);
@@ -124,10 +125,10 @@ private slots:
         std::vector<SimulationResult> pairTogether(2);
         std::atomic<int> loads{0}, checks{0};
         std::vector<std::thread> threads;
-        threads.emplace_back([&] { pumaTogether = derive(puma, symbolic::ParameterMode::Textbook, symbolic::DocumentFormat::Text); });
+        threads.emplace_back([&] { pumaTogether = derive(puma, symbolic::ParameterMode::Textbook, present::DocumentFormat::Text); });
         threads.emplace_back([&] {
             for (std::string& doc : planarTogether)
-                doc = derive(planar, symbolic::ParameterMode::Parametric, symbolic::DocumentFormat::Latex);
+                doc = derive(planar, symbolic::ParameterMode::Parametric, present::DocumentFormat::Latex);
         });
         for (SimulationResult& r : pairTogether)
             threads.emplace_back([&] { r = simulate(pair, shortRun(pair, 2.0)); });
@@ -181,7 +182,7 @@ private slots:
 
         // The lock is free again: the next derivation runs to the end.
         const Scene planar = example("planar_2r.json");
-        QVERIFY(derive(planar, symbolic::ParameterMode::Numeric, symbolic::DocumentFormat::Text).find("B = ") !=
+        QVERIFY(derive(planar, symbolic::ParameterMode::Numeric, present::DocumentFormat::Text).find("B = ") !=
                 std::string::npos);
     }
 
@@ -194,10 +195,10 @@ private slots:
             for (const auto mode : {symbolic::ParameterMode::Parametric, symbolic::ParameterMode::Textbook}) {
                 const auto display = displayTrees(scene, mode);
                 QVERIFY(display && !display->steps.empty());
-                for (const auto format : {symbolic::DocumentFormat::Text, symbolic::DocumentFormat::Latex})
-                    QCOMPARE(derive(scene, mode, format), symbolic::renderDocument(*display, format));
+                for (const auto format : {present::DocumentFormat::Text, present::DocumentFormat::Latex})
+                    QCOMPARE(derive(scene, mode, format), present::renderDocument(*display, format));
 
-                compareJsonWithTrees(nlohmann::json::parse(derive(scene, mode, symbolic::DocumentFormat::Json)), *display, name);
+                compareJsonWithTrees(nlohmann::json::parse(derive(scene, mode, present::DocumentFormat::Json)), *display, name);
                 if (QTest::currentTestFailed()) return;
 
             }

@@ -93,7 +93,7 @@ private:
 
 }  // namespace
 
-DerivationPages paginate(const symbolic::DisplayDocument& document, const PageFormat& format) {
+DerivationPages paginate(const present::DisplayDocument& document, const PageFormat& format) {
     DerivationPages pages;
     pages.format = format;
     paginate(document, format, [&](std::vector<PlacedBox>&& page) { pages.pages.push_back(std::move(page)); });
@@ -102,7 +102,7 @@ DerivationPages paginate(const symbolic::DisplayDocument& document, const PageFo
 
 namespace {
 
-void paginateFrom(const symbolic::DisplayDocument& document, const PageFormat& format, const PageSink& sink) {
+void paginateFrom(const present::DisplayDocument& document, const PageFormat& format, const PageSink& sink) {
     Composer c(format, sink);
     const double em = mathUnitsPerEm;
     c.block(wrapped(QString::fromStdString("Euler–Lagrange model: " + document.systemName), 1.5, c.width(), true), 0, 0, 0.3 * em);
@@ -118,8 +118,8 @@ void paginateFrom(const symbolic::DisplayDocument& document, const PageFormat& f
         hcat(out, l, em);
         return out;
     };
-    for (const symbolic::DisplayStep& s : document.steps) {
-        const symbolic::DisplayStep* step = &s;
+    for (const present::DisplayStep& s : document.steps) {
+        const present::DisplayStep* step = &s;
         std::vector<MathBox> head = wrapped(QString("Step %1. %2").arg(step->number).arg(QString::fromStdString(step->title)),
                                             1.2, c.width(), true);
         if (step->formula)  // the notes' general formula, typeset
@@ -127,9 +127,9 @@ void paginateFrom(const symbolic::DisplayDocument& document, const PageFormat& f
         else
             for (const MathBox& l : wrapped(QString::fromStdString(step->formulaText), 0.85, c.width() - em)) head.push_back(indented(l));
         c.block(head, 0, 1.4 * em, 0.3 * em);
-        for (const symbolic::DisplayItem& it : step->items) {
-            const symbolic::DisplayItem* item = &it;
-            std::vector<MathBox> lines = layoutItem(*item->equation, item->name, c.width() - em);
+        for (const present::DisplayItem& it : step->items) {
+            const present::DisplayItem* item = &it;
+            std::vector<MathBox> lines = layoutItem(*item, c.width() - em);
             if (!item->note.empty()) {  // what a name means, beside it when it fits, else under it
                 const MathBox note = layoutProse(QString::fromStdString(item->note), 0.75);
                 if (lines.size() == 1 && lines[0].width + 2 * em + note.width <= c.width() - em)
@@ -146,7 +146,7 @@ void paginateFrom(const symbolic::DisplayDocument& document, const PageFormat& f
 
 }  // namespace
 
-void paginate(const symbolic::DisplayDocument& document, const PageFormat& format, const PageSink& sink) {
+void paginate(const present::DisplayDocument& document, const PageFormat& format, const PageSink& sink) {
     paginateFrom(document, format, sink);
 }
 
@@ -185,7 +185,7 @@ QString pagePath(const QString& path, int page) {
 
 }  // namespace
 
-bool writePdf(const symbolic::DisplayDocument& document, const QString& path, std::string& error, const PageFormat& format,
+bool writePdf(const present::DisplayDocument& document, const QString& path, std::string& error, const PageFormat& format,
               int* pageCount) {
     const DerivationPages pages = paginate(document, format);
     if (pageCount) *pageCount = static_cast<int>(pages.pages.size());

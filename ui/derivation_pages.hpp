@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "core/symbolic/derivation_document.hpp"
+#include "core/present/derivation_document.hpp"
 #include "ui/math_typesetter.hpp"
 
 class QPainter;
@@ -34,11 +34,11 @@ struct DerivationPages {
     std::vector<std::vector<PlacedBox>> pages;
 };
 
-DerivationPages paginate(const symbolic::DisplayDocument& document, const PageFormat& format = {});
+DerivationPages paginate(const present::DisplayDocument& document, const PageFormat& format = {});
 
 // The same, handing each page to `sink` as soon as it is complete, in order.
 using PageSink = std::function<void(std::vector<PlacedBox>&&)>;
-void paginate(const symbolic::DisplayDocument& document, const PageFormat& format, const PageSink& sink);
+void paginate(const present::DisplayDocument& document, const PageFormat& format, const PageSink& sink);
 
 // Page `index` onto a painter whose device has `devicePerPt` device units per point.
 void paintPage(QPainter& painter, const DerivationPages& pages, int index, double devicePerPt);
@@ -46,7 +46,7 @@ void paintPage(QPainter& painter, const DerivationPages& pages, int index, doubl
 // Writes the file; false with a one-line reason in `error`. SVG and PNG write page 1 to
 // `path` and page k to path's stem + "-k" + extension; `written` lists the files.
 bool writePdf(const DerivationPages& pages, const QString& path, std::string& error);
-bool writePdf(const symbolic::DisplayDocument& document, const QString& path, std::string& error, const PageFormat& format = {},
+bool writePdf(const present::DisplayDocument& document, const QString& path, std::string& error, const PageFormat& format = {},
               int* pageCount = nullptr);
 bool writeSvg(const DerivationPages& pages, const QString& path, std::string& error, std::vector<QString>* written = nullptr);
 bool writePng(const DerivationPages& pages, const QString& path, std::string& error, std::vector<QString>* written = nullptr,

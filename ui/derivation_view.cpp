@@ -21,15 +21,14 @@
 
 namespace ll::ui {
 
-// An item's name as a reader sees it: its equation's left side in Text (β₁₁⁽²⁾ for the
-// structured form's beta1_1_2, b11 for b11), else the plain name.
-// An item's header: its left side as text (b11, g(q), T_2^0), or "equation 1" for an
-// equation of motion, whose left side is the whole row of B q̈ + C q̇ + g.
-static QString shownName(const symbolic::DisplayItem& item) {
-    if (item.name.rfind("equation_", 0) == 0)
-        return QCoreApplication::translate("ll::ui::DerivationView", "equation %1").arg(QString::fromStdString(item.name.substr(9)));
-    if (item.equation && item.equation->kind == symbolic::DisplayKind::Equation && !item.equation->children.empty())
-        return QString::fromStdString(symbolic::renderDisplay(*item.equation->children[0], symbolic::DisplayStyle::Text));
+// An item's header: its left side as text (b11, g(q), T_2^0, β11(2) for the structured
+// form's beta1_1_2), or "equation 1" for an equation of motion, whose left side is the
+// whole row of B q̈ + C q̇ + g.
+static QString shownName(const present::DisplayItem& item) {
+    if (item.quantity == present::Quantity::EquationOfMotion)
+        return QCoreApplication::translate("ll::ui::DerivationView", "equation %1").arg(item.row + 1);
+    if (item.equation && item.equation->kind == present::DisplayKind::Equation && !item.equation->children.empty())
+        return QString::fromStdString(present::renderDisplay(*item.equation->children[0], present::DisplayStyle::Text));
     return QString::fromStdString(item.name);
 }
 
@@ -42,7 +41,7 @@ public:
         setAutoFillBackground(true);
     }
 
-    void show(const symbolic::DisplayStep* step, double zoom) {
+    void show(const present::DisplayStep* step, double zoom) {
         step_ = step;
         zoom_ = zoom;
         entries_.clear();
@@ -72,7 +71,7 @@ public:
     QString latex(int index) const {
         if (!step_ || index < 0 || index >= static_cast<int>(step_->items.size())) return {};
         return QString::fromStdString(renderDisplay(*step_->items[static_cast<std::size_t>(index)].equation,
-                                                    symbolic::DisplayStyle::Latex));
+                                                    present::DisplayStyle::Latex));
     }
 
 protected:
@@ -107,7 +106,7 @@ protected:
         }
         for (std::size_t i = 0; i < entries_.size(); ++i) {
             Entry& e = entries_[i];
-            const symbolic::DisplayItem& item = step_->items[i];
+            const present::DisplayItem& item = step_->items[i];
             e.headerTop = y;
             p.setPen(palette().color(QPalette::Link));
             const QString head = (e.collapsed ? QString::fromUtf8("▸ ") : QString::fromUtf8("▾ ")) + shownName(item);
@@ -157,7 +156,7 @@ private:
         double headerTop = 0;
     };
     static constexpr double margin = 12, indent = 18;
-    const symbolic::DisplayStep* step_ = nullptr;
+    const present::DisplayStep* step_ = nullptr;
     std::vector<Entry> entries_;
     double zoom_ = 1.0;
     int laidOutWidth_ = 0;
@@ -173,11 +172,11 @@ private:
         formulaLines_ = layoutFormula(*step_->formula, available);
     }
 
-    void ensureLines(Entry& e, const symbolic::DisplayItem& item) {
+    void ensureLines(Entry& e, const present::DisplayItem& item) {
         if (!e.lines.empty()) return;
         laidOutWidth_ = width();
         const double available = std::max(200.0, (width() - 2 * margin - indent) / scale());
-        e.lines = layoutItem(*item.equation, item.name, available);
+        e.lines = layoutItem(item, available);
     }
 
     double contentHeight() const { return 400; }  // grows on the first paint
@@ -267,7 +266,7 @@ void DerivationView::setScene(const ll::Scene& scene) {
     auto job = std::make_unique<Job>();
     Job* raw = job.get();
     job->thread = std::thread([this, raw, generation, scene] {
-        std::shared_ptr<const symbolic::DisplayDocument> document;
+        std::shared_ptr<const present::DisplayDocument> document;
         QString error;
         try {
             DocumentRequest request;
@@ -294,12 +293,12 @@ void DerivationView::setDeriving() {
     status_->setText(tr("Deriving…"));
 }
 
-void DerivationView::setDerivation(std::shared_ptr<const symbolic::DisplayDocument> document, const QString& error) {
+void DerivationView::setDerivation(std::shared_ptr<const present::DisplayDocument> document, const QString& error) {
     for (auto& job : jobs_) job->cancel = true;
     accept(++generation_, std::move(document), error);
 }
 
-void DerivationView::accept(int generation, std::shared_ptr<const symbolic::DisplayDocument> document, QString error) {
+void DerivationView::accept(int generation, std::shared_ptr<const present::DisplayDocument> document, QString error) {
     if (generation != generation_) return;  // stale
     deriving_ = false;
     error_ = error;
@@ -316,16 +315,16 @@ void DerivationView::accept(int generation, std::shared_ptr<const symbolic::Disp
 }
 
 void DerivationView::refresh() {
-    const symbolic::DisplayStep* shown = step_ == 9 ? pose_.get() : nullptr;
+    const present::DisplayStep* shown = step_ == 9 ? pose_.get() : nullptr;
     if (document_ && !shown)
-        for (const symbolic::DisplayStep& s : document_->steps)
+        for (const present::DisplayStep& s : document_->steps)
             if (s.number == step_) shown = &s;
     canvas_->show(shown, zoom_);
     previous_->setEnabled(step_ > 0);
     next_->setEnabled(step_ < lastStep());
 }
 
-void DerivationView::setPoseResults(std::shared_ptr<const symbolic::DisplayStep> step) {
+void DerivationView::setPoseResults(std::shared_ptr<const present::DisplayStep> step) {
     const bool had = pose_ != nullptr;
     pose_ = std::move(step);
     if (pose_ && !had) steps_->addItem(tr("Step 9: Results at the teach pose"));

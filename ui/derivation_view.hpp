@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "core/model/scene.hpp"
-#include "core/symbolic/derivation_document.hpp"
+#include "core/present/derivation_document.hpp"
 
 class QBoxLayout;
 class QListWidget;
@@ -39,12 +39,12 @@ public:
     // setDeriving marks one as started, setDerivation shows its document (or error) as
     // if this view had derived it. Either drops a derivation of this view's own.
     void setDeriving();
-    void setDerivation(std::shared_ptr<const symbolic::DisplayDocument> document, const QString& error = {});
+    void setDerivation(std::shared_ptr<const present::DisplayDocument> document, const QString& error = {});
     void showStep(int step);  // 0..8 (9: the pose results); a step the scene has no items for shows empty
     // The results at the teach pose (core/pipeline/pose_results) as step 9, listed after
     // the derivation's steps; null takes it away (and leaves step 9 for step 8).
-    void setPoseResults(std::shared_ptr<const symbolic::DisplayStep> step);
-    const symbolic::DisplayStep* poseResults() const { return pose_.get(); }
+    void setPoseResults(std::shared_ptr<const present::DisplayStep> step);
+    const present::DisplayStep* poseResults() const { return pose_.get(); }
     int step() const { return step_; }
     void setZoom(double zoom);  // 1 = 15 px per em; clamped to 0.25..8
     double zoom() const { return zoom_; }
@@ -52,7 +52,7 @@ public:
     bool isDeriving() const { return deriving_; }
     QString errorText() const { return error_; }  // the last derivation's error, if any
     // The shown document (null before the first derivation finishes).
-    std::shared_ptr<const symbolic::DisplayDocument> document() const { return document_; }
+    std::shared_ptr<const present::DisplayDocument> document() const { return document_; }
     // The LaTeX of item `index` of the shown step ("b_{11} = …"): what Copy as LaTeX copies.
     QString itemLatex(int index) const;
     // Item `index`'s header (and the name in its Copy menu): b11, g(q), equation 1.
@@ -77,7 +77,7 @@ private:
         std::atomic<bool> done{false};
         std::thread thread;
     };
-    void accept(int generation, std::shared_ptr<const symbolic::DisplayDocument> document, QString error);
+    void accept(int generation, std::shared_ptr<const present::DisplayDocument> document, QString error);
     void refresh();
     void reapJobs(bool all);
 
@@ -87,8 +87,8 @@ private:
     QLabel* status_ = nullptr;
     QScrollArea* scroll_ = nullptr;
     DerivationCanvas* canvas_ = nullptr;
-    std::shared_ptr<const symbolic::DisplayDocument> document_;
-    std::shared_ptr<const symbolic::DisplayStep> pose_;
+    std::shared_ptr<const present::DisplayDocument> document_;
+    std::shared_ptr<const present::DisplayStep> pose_;
     int lastStep() const { return pose_ ? 9 : 8; }
     std::vector<std::unique_ptr<Job>> jobs_;
     int generation_ = 0;

@@ -46,13 +46,13 @@ void LiveDerivation::request(const Scene& scene) {
                 std::this_thread::sleep_for(std::chrono::milliseconds(2));
             }
             DocumentRequest r;
-            r.format = symbolic::DocumentFormat::Display;
+            r.format = present::DocumentFormat::Display;
             r.cancel = cancel.get();
             // The form `derive --form auto` picks: expanded when cheap, else structured (the
             // Panda's expanded B has thousands of terms of 15-digit products per entry).
             result->display = deriveDisplay(*scene, r).display;
             // Text from the same trees, outside the GiNaC lock.
-            result->text = QString::fromStdString(symbolic::renderDocument(*result->display, symbolic::DocumentFormat::Text));
+            result->text = QString::fromStdString(present::renderDocument(*result->display, present::DocumentFormat::Text));
         } catch (const Cancelled&) {
             result->stopped = true;
         } catch (const InputError& e) {

@@ -1,7 +1,7 @@
 #pragma once
 // Re-derivation after every valid edit, off the GUI thread, once for every view of it:
 // request(scene) copies the scene to one worker, cancels the derivation before it (one
-// cancel token), and derives the display trees (core/symbolic/derivation_document) under
+// cancel token), and derives the display trees (core/present/derivation_document) under
 // the GiNaC lock; the worker then renders the plain text from those trees (no GiNaC).
 // The result comes back through a queued call as plain data shared by the typeset view
 // and the text panel, so an edit costs one derivation whatever the tabs show. The form is
@@ -17,13 +17,13 @@
 #include <QThreadPool>
 
 #include "core/model/scene.hpp"
-#include "core/symbolic/derivation_document.hpp"
+#include "core/present/derivation_document.hpp"
 
 namespace ll::ui {
 
 struct DerivationResult {
     int request = 0;                                                 // which request this answers
-    std::shared_ptr<const symbolic::DisplayDocument> display;       // the steps as display trees
+    std::shared_ptr<const present::DisplayDocument> display;       // the steps as display trees
     QString text;                                                    // the same steps as plain text
     QString error;                                                   // why there is no derivation
     bool stopped = false;                                            // cancelled for an edit being checked

@@ -647,7 +647,7 @@ void MainWindow::updatePoseResults() {
         return;
     }
     const Eigen::VectorXd qd = scene.initial.qd.size() == n ? scene.initial.qd : Eigen::VectorXd::Zero(n);
-    typeset_->setPoseResults(std::make_shared<const symbolic::DisplayStep>(poseResults(scene, teach_->pose(), qd)));
+    typeset_->setPoseResults(std::make_shared<const present::DisplayStep>(poseResults(scene, teach_->pose(), qd)));
 }
 
 void MainWindow::teach(const Eigen::VectorXd& q) {
@@ -1022,8 +1022,8 @@ bool MainWindow::exportDerivationTo(const QString& path, QString* error) {
                                            nullptr, static_cast<int>(older.size())))
                                      .arg(fileNameRange(older));
             } else {
-                const auto format = suffix == "tex" ? symbolic::DocumentFormat::Latex : symbolic::DocumentFormat::Text;
-                saveFileAtomically(path.toStdString(), symbolic::renderDocument(*display, format), Backup::None);
+                const auto format = suffix == "tex" ? present::DocumentFormat::Latex : present::DocumentFormat::Text;
+                saveFileAtomically(path.toStdString(), present::renderDocument(*display, format), Backup::None);
             }
         } catch (const std::exception& e) {
             failure = QString::fromUtf8(e.what());

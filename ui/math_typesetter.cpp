@@ -1,5 +1,7 @@
 #include "ui/math_typesetter.hpp"
 
+#include "core/present/labels.hpp"
+
 #include <QCoreApplication>
 #include <QFontDatabase>
 #include <QFontMetricsF>
@@ -19,8 +21,8 @@
 namespace ll::ui {
 namespace {
 
-using symbolic::DisplayKind;
-using symbolic::DisplayNode;
+using present::DisplayKind;
+using present::DisplayNode;
 
 // Latin Modern Math's MATH constants, per em.
 constexpr double axisHeight = 0.250, ruleThickness = 0.040, superscriptUp = 0.363, subscriptDown = 0.247;
@@ -474,7 +476,7 @@ MathBox layout(const DisplayNode& n, double size) {
             return run(QCoreApplication::translate("MathTypesetter", "⋯ (%n more terms)", nullptr, static_cast<int>(n.moreTerms)), 0, size);
         if (n.children.empty()) return run(QString::fromStdString(n.text), 0, size);
         MathBox b;  // a row (a label's shown form, a formula's part): its children side by side
-        for (const symbolic::DisplayPtr& c : n.children) hcat(b, layout(*c, size));
+        for (const present::DisplayPtr& c : n.children) hcat(b, layout(*c, size));
         return b;
     }
     }
@@ -540,7 +542,7 @@ MathBox layoutMath(const DisplayNode& node, double size) { return layout(node, s
 std::vector<MathBox> layoutFormula(const DisplayNode& formula, double maxWidth, double size) {
     std::vector<MathBox> lines(1);
     const double gap = 2 * em(size);
-    for (const symbolic::DisplayPtr& part : formula.children) {
+    for (const present::DisplayPtr& part : formula.children) {
         const MathBox box = layout(*part, size);
         if (!lines.back().pieces.empty() && lines.back().width + gap + box.width > maxWidth) lines.emplace_back();
         hcat(lines.back(), box, lines.back().pieces.empty() ? 0 : gap);
@@ -639,7 +641,7 @@ void chunks(const DisplayNode& n, std::vector<Chunk>& out, double maxWidth) {
         return;
     }
     if (n.kind == DisplayKind::Product && leafCount(n) > 12 && layout(n, 1.0).width > maxWidth / 2 &&
-        std::any_of(n.children.begin(), n.children.end(), [](const symbolic::DisplayPtr& c) { return isFencedSum(*c); })) {
+        std::any_of(n.children.begin(), n.children.end(), [](const present::DisplayPtr& c) { return isFencedSum(*c); })) {
         for (std::size_t i = 0; i < n.children.size(); ++i) {
             const DisplayNode& c = *n.children[i];
             const double gap = i == 0 ? 0 : isWordNode(c) || isWordNode(*n.children[i - 1]) ? thinSpace * e : 0.04 * e;
@@ -658,7 +660,7 @@ void chunks(const DisplayNode& n, std::vector<Chunk>& out, double maxWidth) {
 
 }  // namespace
 
-symbolic::DisplayPtr elided(const symbolic::DisplayPtr& node, std::size_t maxTerms) {
+present::DisplayPtr elided(const present::DisplayPtr& node, std::size_t maxTerms) {
     const DisplayNode& n = *node;
     std::shared_ptr<DisplayNode> copy;  // made at the first change: most nodes stay shared
     const auto changed = [&]() -> DisplayNode& {
@@ -671,66 +673,58 @@ symbolic::DisplayPtr elided(const symbolic::DisplayPtr& node, std::size_t maxTer
         kept = maxTerms * 2 / 3;
         c.children.resize(kept);
         c.negative.resize(kept);
-        c.children.push_back(symbolic::displayMoreTerms(n.children.size() - kept));
+        c.children.push_back(present::displayMoreTerms(n.children.size() - kept));
         c.negative.push_back(false);
     }
     // Sums anywhere: inside a product's parentheses, a fraction, a matrix entry.
     for (std::size_t i = 0; i < kept; ++i)
         if (n.children[i])
-            if (symbolic::DisplayPtr e = elided(n.children[i], maxTerms); e != n.children[i]) changed().children[i] = std::move(e);
+            if (present::DisplayPtr e = elided(n.children[i], maxTerms); e != n.children[i]) changed().children[i] = std::move(e);
     for (std::size_t r = 0; r < n.rows.size(); ++r)
         for (std::size_t j = 0; j < n.rows[r].size(); ++j)
             if (n.rows[r][j])
-                if (symbolic::DisplayPtr e = elided(n.rows[r][j], maxTerms); e != n.rows[r][j]) changed().rows[r][j] = std::move(e);
+                if (present::DisplayPtr e = elided(n.rows[r][j], maxTerms); e != n.rows[r][j]) changed().rows[r][j] = std::move(e);
     return copy ? copy : node;
 }
 
-std::vector<MathBox> layoutItem(const DisplayNode& full, const std::string& name, double maxWidth) {
+std::vector<MathBox> layoutItem(const present::DisplayItem& item, double maxWidth) {
+    const double e = em(1);
+    const DisplayNode& full = *item.equation;
+    if (full.kind != DisplayKind::Equation || full.children[1]->kind != DisplayKind::Matrix) return layoutEquation(full, maxWidth);
+    // Nobody reads an entry of thousands of terms on a page: its first terms and a count.
+    const present::DisplayPtr shortened = elided(std::shared_ptr<const DisplayNode>(&full, [](const DisplayNode*) {}), maxTypesetTerms);
+    MathBox whole = layout(*shortened, 1.0);
+    if (whole.width <= maxWidth) return {whole};
+    // Too wide: the matrix by name, then its entries one by one.
+    const DisplayNode& rhs = *shortened->children[1];
+    MathBox head = layout(*shortened->children[0], 1.0);
+    const std::size_t rows = rhs.rows.size(), cols = rows ? rhs.rows[0].size() : 0;
+    const bool zeros = present::hasZeroEntry(rhs);  // zero entries are left out (B_m of the PUMA: 30 of 36), and said so
+    hcat(head, layoutText(zeros ? QString(" (%1×%2), entry by entry, the zeros left out:").arg(rows).arg(cols)
+                                : QString(" (%1×%2), entry by entry:").arg(rows).arg(cols)), 0.3 * e);
+    std::vector<MathBox> lines{head};
+    for (std::size_t i = 0; i < rows; ++i)
+        for (std::size_t j = 0; j < cols; ++j) {
+            if (present::isZeroNumber(*rhs.rows[i][j])) continue;
+            const auto entry = present::displayEquation(present::entryLabel(item, i, j), rhs.rows[i][j]);
+            for (MathBox& line : layoutEquation(*entry, maxWidth - 1.5 * e)) {
+                MathBox indented;
+                hcat(indented, line, 1.5 * e);
+                lines.push_back(std::move(indented));
+            }
+        }
+    return lines;
+}
+
+std::vector<MathBox> layoutEquation(const DisplayNode& full, double maxWidth) {
     const double e = em(1);
     // Nobody reads an entry of thousands of terms on a page: its first terms and a count.
-    const symbolic::DisplayPtr shortened = elided(std::shared_ptr<const DisplayNode>(&full, [](const DisplayNode*) {}),
-                                                  maxTypesetTerms);
+    const present::DisplayPtr shortened = elided(std::shared_ptr<const DisplayNode>(&full, [](const DisplayNode*) {}), maxTypesetTerms);
     const DisplayNode& equation = *shortened;
     MathBox whole = layout(equation, 1.0);
     if (whole.width <= maxWidth || equation.kind != DisplayKind::Equation) return {whole};
     const DisplayNode& lhs = *equation.children[0];
-    const DisplayNode& rhs = *equation.children[1];
     std::vector<MathBox> lines;
-    if (rhs.kind == DisplayKind::Matrix) {
-        // The matrix by name, then its entries one by one.
-        MathBox head = layout(lhs, 1.0);
-        const std::size_t rows = rhs.rows.size(), cols = rows ? rhs.rows[0].size() : 0;
-        const bool zeros = symbolic::hasZeroEntry(rhs);  // zero entries are left out (B_m of the PUMA: 30 of 36), and said so
-        hcat(head, layoutText(zeros ? QString(" (%1×%2), entry by entry, the zeros left out:").arg(rows).arg(cols)
-                                    : QString(" (%1×%2), entry by entry:").arg(rows).arg(cols)), 0.3 * e);
-        lines.push_back(head);
-        const bool column = cols == 1;
-        for (std::size_t i = 0; i < rows; ++i)
-            for (std::size_t j = 0; j < cols; ++j) {
-                if (symbolic::isZeroNumber(*rhs.rows[i][j])) continue;
-                auto label = std::make_shared<DisplayNode>();
-                label->kind = DisplayKind::Symbol;
-                const bool single = name.size() == 1;
-                const std::string indices = column ? std::to_string(i + 1) : std::to_string(i + 1) + std::to_string(j + 1);
-                const bool shownName = lhs.kind == DisplayKind::Raw && !lhs.children.empty() &&
-                                       lhs.children[0]->kind == DisplayKind::Symbol && !lhs.children[0]->upright;
-                if (shownName && !single) {  // J_{v,c6} → J_{v,c6,12}: the matrix's own name with the entry's indices
-                    *label = *lhs.children[0];
-                    label->subShown += (label->subShown.empty() ? "" : ",") + indices;
-                } else {
-                    label->text = single ? std::string(1, static_cast<char>(std::tolower(static_cast<unsigned char>(name[0])))) : name;
-                    label->subShown = indices;
-                    if (!single) label->upright = true;
-                }
-                const auto entry = symbolic::displayEquation(label, rhs.rows[i][j]);
-                for (MathBox& line : layoutItem(*entry, name, maxWidth - 1.5 * e)) {
-                    MathBox indented;
-                    hcat(indented, line, 1.5 * e);
-                    lines.push_back(std::move(indented));
-                }
-            }
-        return lines;
-    }
     // Break before top-level + and − (and inside a long parenthesised sum, before its
     // own signs); continuation lines indented past "name = " (at most a third of a line).
     std::vector<Chunk> pieces;

@@ -1,5 +1,5 @@
 #pragma once
-// A native math typesetter over the display tree (core/symbolic/display_tree.hpp): boxes
+// A native math typesetter over the display tree (core/present/display_tree.hpp): boxes
 // with width, ascent and descent laid out by TeX's rules for math, in Latin Modern
 // (fonts-lmodern: Latin Modern Roman for letters and digits, Latin Modern Math for
 // Greek, operators and brackets), painted with QPainter on any device — a widget, an
@@ -25,7 +25,7 @@
 #include <memory>
 #include <vector>
 
-#include "core/symbolic/display_tree.hpp"
+#include "core/present/display_document.hpp"
 
 class QPainter;
 
@@ -55,23 +55,27 @@ void hcat(MathBox& to, MathBox box, double gap = 0);
 
 // node with every sum longer than maxTerms cut to its first terms and "⋯ (N more terms)",
 // wherever it is (an entry, a product's parentheses, a fraction, a matrix cell).
-symbolic::DisplayPtr elided(const symbolic::DisplayPtr& node, std::size_t maxTerms);
+present::DisplayPtr elided(const present::DisplayPtr& node, std::size_t maxTerms);
 
 // The box of a node at relative size `size` (1 normal, 0.7 script, 0.5 scriptscript).
-MathBox layoutMath(const symbolic::DisplayNode& node, double size = 1.0);
+MathBox layoutMath(const present::DisplayNode& node, double size = 1.0);
 
-// An item "name = value" set to at most maxWidth units: a sum too wide breaks before
-// its top-level + and − (continuation lines indented past "name = "), and a matrix too
-// wide becomes its named entries listed under it (b11 = …, each breaking the same way).
-// A sum of more than maxTypesetTerms terms (core/symbolic/display_tree.hpp), at any depth,
-// shows its first two thirds of that and "⋯ (N more terms)": the text and JSON formats
-// keep every term. Returns the lines.
-using symbolic::maxTypesetTerms;
-std::vector<MathBox> layoutItem(const symbolic::DisplayNode& equation, const std::string& name, double maxWidth);
+// An equation "label = value" set to at most maxWidth units: a sum too wide breaks
+// before its top-level + and − (continuation lines indented past "label = "). A sum of
+// more than maxTypesetTerms terms (core/present/display_tree.hpp), at any depth, shows
+// its first two thirds of that and "⋯ (N more terms)": the text and JSON formats keep
+// every term. Returns the lines.
+using present::maxTypesetTerms;
+std::vector<MathBox> layoutEquation(const present::DisplayNode& equation, double maxWidth);
 
-// A step's general formula (core/symbolic/latex_formula.hpp): its parts side by side,
+// An item of a derivation the same way; a matrix too wide becomes its entries listed
+// under it, each named as core/present/labels.hpp names them (b11 = …, each breaking the
+// same way).
+std::vector<MathBox> layoutItem(const present::DisplayItem& item, double maxWidth);
+
+// A step's general formula (core/present/latex_formula.hpp): its parts side by side,
 // 2 em apart, a new line where the next part would pass maxWidth.
-std::vector<MathBox> layoutFormula(const symbolic::DisplayNode& formula, double maxWidth, double size = 1.0);
+std::vector<MathBox> layoutFormula(const present::DisplayNode& formula, double maxWidth, double size = 1.0);
 
 // A line of prose (a step's title or general formula) in the roman or bold font.
 MathBox layoutText(const QString& text, double size = 1.0, bool bold = false);

@@ -1,6 +1,6 @@
 #include "ui/trajectory_table_model.hpp"
 
-#include "core/symbolic/expression_printer.hpp"
+#include "core/present/expression_printer.hpp"
 
 namespace ll::ui {
 
@@ -47,7 +47,7 @@ QVariant TrajectoryTableModel::headerData(int section, Qt::Orientation orientati
     if (section == 0) return QStringLiteral("t [s]");
     if (section <= 2 * n) {
         const int i = (section - 1) % n;
-        return QString::fromStdString(symbolic::textCoordinateName(trajectory_.coordinateName(i), section > n ? 1 : 0));
+        return QString::fromStdString(present::textCoordinateName(trajectory_.coordinateName(i), section > n ? 1 : 0));
     }
     static const char* energies[] = {"E_kin [J]", "E_pot [J]", "E [J]", "W [J]"};
     const int k = section - 2 * n - 1;

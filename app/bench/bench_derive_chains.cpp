@@ -19,10 +19,10 @@
 #include "app/commands.hpp"
 #include "app/scene_loading.hpp"
 #include "core/model/cancellation.hpp"
-#include "core/symbolic/derivation_document.hpp"
+#include "core/present/derivation_document.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/robot_derivation.hpp"
-#include "core/symbolic/structured_document.hpp"
+#include "core/present/structured_document.hpp"
 #include "core/symbolic/structured_dynamics.hpp"
 
 namespace ll::bench {
@@ -81,6 +81,7 @@ Latency cancelLatency(const Scene& scene, double fullMs) {
 // Returns whether the expanded derivation finished within the cap (not tried: false).
 bool benchOne(const Scene& scene, const std::string& label, int repeats, double capSeconds, bool tryExpanded) {
     using namespace symbolic;
+    using namespace present;
     DerivationOptions options;
     options.mode = ParameterMode::Numeric;
     std::vector<double> ms, cpu;

@@ -46,7 +46,7 @@ Cost measure(int runs, const std::function<void()>& work) {
     return {median(wall), median(cpu)};
 }
 
-DerivedDocument derive(const Scene& scene, symbolic::ParameterMode mode, symbolic::DocumentFormat format) {
+DerivedDocument derive(const Scene& scene, symbolic::ParameterMode mode, present::DocumentFormat format) {
     DocumentRequest request;
     request.mode = mode;
     request.format = format;
@@ -54,7 +54,7 @@ DerivedDocument derive(const Scene& scene, symbolic::ParameterMode mode, symboli
 }
 
 // What `derive --format F` does with the default form (auto: structured for large robots).
-DerivedDocument deriveAuto(const Scene& scene, symbolic::ParameterMode mode, symbolic::DocumentFormat format) {
+DerivedDocument deriveAuto(const Scene& scene, symbolic::ParameterMode mode, present::DocumentFormat format) {
     FormRequest request;
     request.document.mode = mode;
     request.document.format = format;
@@ -96,8 +96,8 @@ int typeset(const std::vector<std::string>& scenes, int runs) {
     std::printf("medians of %d runs; wall [ms] and CPU [ms] of this process\n\n", runs);
 
     // One B entry: b11 of the 2R, laid out (boxes, fonts measured; caches warm after run 1).
-    const DerivedDocument shown = derive(planar, symbolic::ParameterMode::Parametric, symbolic::DocumentFormat::Display);
-    const symbolic::DisplayNode* b11 = nullptr;
+    const DerivedDocument shown = derive(planar, symbolic::ParameterMode::Parametric, present::DocumentFormat::Display);
+    const present::DisplayNode* b11 = nullptr;
     for (const auto& step : shown.display->steps)
         for (const auto& item : step.items)
             if (item.name == "B") b11 = item.value->rows[0][0].get();
@@ -132,9 +132,9 @@ int typeset(const std::vector<std::string>& scenes, int runs) {
         const Scene scene = loadSceneReportingWarnings(file);
         for (auto mode : {symbolic::ParameterMode::Parametric, symbolic::ParameterMode::Numeric, symbolic::ParameterMode::Textbook}) {
             const Cost d = measure(runs, [&] { deriveOnly(scene, mode); });
-            const Cost t = measure(runs, [&] { deriveAuto(scene, mode, symbolic::DocumentFormat::Text); });
-            const Cost j = measure(runs, [&] { deriveAuto(scene, mode, symbolic::DocumentFormat::Json); });
-            const Cost l = measure(runs, [&] { deriveAuto(scene, mode, symbolic::DocumentFormat::Latex); });
+            const Cost t = measure(runs, [&] { deriveAuto(scene, mode, present::DocumentFormat::Text); });
+            const Cost j = measure(runs, [&] { deriveAuto(scene, mode, present::DocumentFormat::Json); });
+            const Cost l = measure(runs, [&] { deriveAuto(scene, mode, present::DocumentFormat::Latex); });
             const Cost p = measure(runs, [&] { toPdf(scene, mode, dir.filePath("big.pdf")); });
             const double worst = std::max({t.cpu, j.cpu, l.cpu, p.cpu}) / d.cpu;
             std::printf("%-24s %-10s | %7.2f | %7.2f %7.2f %7.2f %7.2f | %5.2fx\n", file.substr(file.rfind('/') + 1).c_str(),

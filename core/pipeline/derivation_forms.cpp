@@ -7,7 +7,6 @@
 #include <random>
 #include <stdexcept>
 
-#include <nlohmann/json.hpp>
 
 #include "core/dynamics/coriolis.hpp"
 #include "core/dynamics/potential_gradient.hpp"
@@ -15,9 +14,9 @@
 #include "core/kinematics/forward_kinematics.hpp"
 #include "core/symbolic/derivation_evaluator.hpp"
 #include "core/symbolic/ginac_lock.hpp"
-#include "core/symbolic/latex_text.hpp"
+#include "core/present/latex_text.hpp"
 #include "core/symbolic/robot_derivation.hpp"
-#include "core/symbolic/structured_document.hpp"
+#include "core/present/structured_document.hpp"
 
 namespace ll {
 namespace {
@@ -47,37 +46,6 @@ std::string verificationLine(const std::string& what, double error, int states) 
     return buffer;
 }
 
-// The expanded document says which form it is and why: "form" and "form_reason" after
-// "mode" in JSON, a line under the title in text, a paragraph in LaTeX.
-void announceForm(std::string& document, symbolic::DocumentFormat format, const std::string& reason) {
-    switch (format) {
-        case symbolic::DocumentFormat::Json: {
-            // After the top-level "mode" line of the document (dump(2): two spaces, never
-            // the last key). Inserted as text: parsing and dumping the expanded Panda's
-            // 23 MB again took 0.2 s.
-            const std::string mode = "\n  \"mode\": ";
-            const std::size_t at = document.find(mode);
-            const std::size_t end = at == std::string::npos ? at : document.find('\n', at + 1);
-            if (end == std::string::npos || document[end - 1] != ',')
-                throw std::logic_error("announceForm: the JSON document has no top-level \"mode\" line before other keys");
-            document.insert(end + 1, "  \"form\": \"expanded\",\n  \"form_reason\": " + nlohmann::json(reason).dump() + ",\n");
-            break;
-        }
-        case symbolic::DocumentFormat::Text: {
-            const std::size_t title = document.find('\n'), rule = document.find('\n', title + 1);
-            if (rule != std::string::npos) document.insert(rule + 1, "Form: expanded (" + reason + ")\n");
-            break;
-        }
-        case symbolic::DocumentFormat::Latex: {
-            const std::string mark = "\\maketitle\n";
-            const std::size_t at = document.find(mark);
-            if (at != std::string::npos) document.insert(at + mark.size(), "Form: expanded (" + symbolic::latexText(reason) + ").\n");
-            break;
-        }
-        case symbolic::DocumentFormat::Display: break;  // no string document: the trees carry no form line
-    }
-}
-
 }  // namespace
 
 bool expandedIsCheap(const Scene& scene, std::string& reason) {
@@ -104,12 +72,14 @@ bool expandedIsCheap(const Scene& scene, std::string& reason) {
 
 FormDocument deriveInForm(const Scene& scene, const FormRequest& request) {
     using namespace symbolic;
+    using namespace present;
     FormDocument out;
     if (scene.lagrangian) {
         out.form = "expanded";
         out.reason = "a hand-typed Lagrangian is derived from its E_kin and E_pot";
-        out.derived = deriveDocument(scene, request.document);
-        announceForm(out.derived.document, request.document.format, out.reason);
+        DocumentRequest document = request.document;
+        document.form = {out.form, out.reason};
+        out.derived = deriveDocument(scene, document);
         return out;
     }
     std::string cheapReason;
@@ -133,8 +103,9 @@ FormDocument deriveInForm(const Scene& scene, const FormRequest& request) {
     }
     if (expanded && entries.empty()) {
         out.form = "expanded";
-        out.derived = deriveDocument(scene, request.document);
-        announceForm(out.derived.document, request.document.format, out.reason);
+        DocumentRequest document = request.document;
+        document.form = {out.form, out.reason};
+        out.derived = deriveDocument(scene, document);
     } else {
         // With --entry and the expanded form, the document is the entries expanded (and
         // the names of the structured form they come from): its form is "expanded".

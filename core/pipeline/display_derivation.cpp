@@ -3,23 +3,20 @@
 #include <chrono>
 
 #include "core/symbolic/ginac_lock.hpp"
-#include "core/symbolic/structured_display.hpp"
+#include "core/present/structured_display.hpp"
 
 namespace ll {
 namespace {
 
 DerivedDocument deriveInForm(const Scene& scene, const DocumentRequest& request, bool expanded, const std::string& reason) {
     using namespace symbolic;
+    using namespace present;
     DerivedDocument out;
     if (expanded) {
         DocumentRequest display = request;
         display.format = DocumentFormat::Display;
-        out = deriveDocument(scene, display);
-        auto doc = std::make_shared<DisplayDocument>(*out.display);
-        doc->form = "expanded";
-        doc->formReason = reason;
-        out.display = doc;
-        return out;
+        display.form = {"expanded", reason};
+        return deriveDocument(scene, display);
     }
     const auto lock = lockGinac();
     DerivationOptions options;

@@ -12,14 +12,14 @@
 #include "core/dynamics/potential_gradient.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
 #include "core/model/robot_data.hpp"
-#include "core/symbolic/display_builder.hpp"
+#include "core/present/labels.hpp"
 
 namespace ll {
 namespace {
 
-using symbolic::DisplayItem;
-using symbolic::DisplayKind;
-using symbolic::DisplayPtr;
+using present::DisplayItem;
+using present::DisplayKind;
+using present::DisplayPtr;
 
 // v with 4 significant digits: 0.1234, 12.35, 1.235·10⁻⁵; a negative number as the
 // display builder writes one (a one-term sum with its minus sign).
@@ -33,19 +33,14 @@ DisplayPtr number(double v) {
         digits = digits.substr(0, e);
     }
     std::snprintf(buffer, sizeof buffer, "%.17g", std::abs(v));
-    DisplayPtr magnitude = symbolic::displayNumber(digits, digits, buffer, exponent);
-    if (v >= 0) return magnitude;
-    auto negated = std::make_shared<symbolic::DisplayNode>();
-    negated->kind = DisplayKind::Sum;
-    negated->children = {magnitude};
-    negated->negative = {true};
-    return negated;
+    DisplayPtr magnitude = present::displayNumber(digits, digits, buffer, exponent);
+    return v >= 0 ? magnitude : present::displayNegated(magnitude);
 }
 
 // Entries below 1e-12 of the matrix's largest are rounding (cos(π/2) = 6·10⁻¹⁷): shown 0.
 DisplayPtr matrix(const Eigen::MatrixXd& m) {
     const double negligible = 1e-12 * (m.size() > 0 ? m.cwiseAbs().maxCoeff() : 0.0);
-    auto node = std::make_shared<symbolic::DisplayNode>();
+    auto node = std::make_shared<present::DisplayNode>();
     node->kind = DisplayKind::Matrix;
     for (int i = 0; i < m.rows(); ++i) {
         std::vector<DisplayPtr> row;
@@ -55,12 +50,13 @@ DisplayPtr matrix(const Eigen::MatrixXd& m) {
     return node;
 }
 
-DisplayItem item(const std::string& name, const std::string& latexName, DisplayPtr value, std::string note) {
+DisplayItem item(const std::string& name, present::Quantity quantity, const std::string& latexName, DisplayPtr value, std::string note) {
     DisplayItem it;
     it.name = name;
     it.latexName = latexName;
+    it.quantity = quantity;
     it.value = value;
-    it.equation = symbolic::displayEquation(symbolic::displayLabel(name, latexName, {}), value);
+    it.equation = present::displayEquation(present::displayLabel(name, latexName), value);
     it.note = std::move(note);
     return it;
 }
@@ -75,7 +71,7 @@ std::string perJoint(const Scene& scene, const char* revolute, const char* prism
 
 }  // namespace
 
-symbolic::DisplayStep poseResults(const Scene& scene, const Eigen::VectorXd& q, const Eigen::VectorXd& qd) {
+present::DisplayStep poseResults(const Scene& scene, const Eigen::VectorXd& q, const Eigen::VectorXd& qd) {
     const int n = scene.robot.dof();
     if (scene.lagrangian || n == 0) throw std::invalid_argument("poseResults: a robot scene is needed");
     if (q.size() != n || qd.size() != n) throw std::invalid_argument("poseResults: q and q̇ need one value per joint");
@@ -91,21 +87,21 @@ symbolic::DisplayStep poseResults(const Scene& scene, const Eigen::VectorXd& q, 
     for (int i = 0; i < n; ++i)
         if (scene.robot.joints[i].dh.type == JointType::Revolute) shown[i] *= 180 / std::numbers::pi;
 
-    symbolic::DisplayStep step;
+    present::DisplayStep step;
     step.number = poseStepNumber;
     step.title = "The results at the teach pose";
     step.formulaText = "The mass matrix, the Coriolis matrix, the gravity vector and the energies of steps 6 to 8 "
                        "evaluated at the pose of the teach sliders, with the scene's initial joint velocities";
     step.formulaLatex = "B(q),\\ C(q,\\dot q),\\ g(q),\\ E_{\\mathrm{kin}},\\ E_{\\mathrm{pot}} \\text{ at this } q, \\dot q";
-    step.items.push_back(item("q", "q", matrix(shown), perJoint(scene, "°", "m")));
-    step.items.push_back(item("qd", "\\dot{q}", matrix(qd), perJoint(scene, "rad/s", "m/s")));
-    step.items.push_back(item("Ekin", "E_{\\mathrm{kin}}", number(ekin), "J"));
-    step.items.push_back(item("Epot", "E_{\\mathrm{pot}}", number(epot), "J"));
+    step.items.push_back(item("q", present::Quantity::Coordinates, "q", matrix(shown), perJoint(scene, "°", "m")));
+    step.items.push_back(item("qd", present::Quantity::Velocities, "\\dot{q}", matrix(qd), perJoint(scene, "rad/s", "m/s")));
+    step.items.push_back(item("Ekin", present::Quantity::KineticEnergy, "E_{\\mathrm{kin}}", number(ekin), "J"));
+    step.items.push_back(item("Epot", present::Quantity::PotentialEnergy, "E_{\\mathrm{pot}}", number(epot), "J"));
     bool mixed = false;
     for (const auto& j : scene.robot.joints) mixed |= j.dh.type != scene.robot.joints[0].dh.type;
-    step.items.push_back(item("B", "B(q)", matrix(data.B), perJoint(scene, "kg·m²", "kg") + (mixed ? "; kg·m where they meet" : "")));
-    step.items.push_back(item("C", "C(q,\\dot{q})", matrix(data.C), perJoint(scene, "kg·m²/s", "kg/s")));
-    step.items.push_back(item("g", "g(q)", matrix(data.g), perJoint(scene, "N·m", "N")));
+    step.items.push_back(item("B", present::Quantity::MassMatrix, "B(q)", matrix(data.B), perJoint(scene, "kg·m²", "kg") + (mixed ? "; kg·m where they meet" : "")));
+    step.items.push_back(item("C", present::Quantity::CoriolisMatrix, "C(q,\\dot{q})", matrix(data.C), perJoint(scene, "kg·m²/s", "kg/s")));
+    step.items.push_back(item("g", present::Quantity::GravityVector, "g(q)", matrix(data.g), perJoint(scene, "N·m", "N")));
     return step;
 }
 

@@ -8,7 +8,7 @@
 #include <Eigen/Core>
 
 #include "core/model/scene.hpp"
-#include "core/symbolic/derivation_document.hpp"
+#include "core/present/derivation_document.hpp"
 
 namespace ll {
 
@@ -16,6 +16,6 @@ inline constexpr int poseStepNumber = 9;
 
 // q: the pose; qd: the velocities C(q, q̇) and E_kin are taken at (the scene's initial
 // q̇ in the window). A robot scene (a hand-typed Lagrangian has no robot to pose).
-symbolic::DisplayStep poseResults(const Scene& scene, const Eigen::VectorXd& q, const Eigen::VectorXd& qd);
+present::DisplayStep poseResults(const Scene& scene, const Eigen::VectorXd& q, const Eigen::VectorXd& qd);
 
 }  // namespace ll

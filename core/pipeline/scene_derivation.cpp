@@ -46,10 +46,14 @@ DerivedDocument deriveDocument(const Scene& scene, const DocumentRequest& reques
     throwIfCancelled(request.cancel);
     DerivedDocument out;
     const auto printing = std::chrono::steady_clock::now();
-    if (request.format == symbolic::DocumentFormat::Display)
-        out.display = symbolic::displayDocument(d, request.cancel, request.forPages);
-    else
-        out.document = symbolic::derivationDocument(d, request.format, modeName(request.mode));
+    if (request.format == present::DocumentFormat::Display) {
+        auto display = present::displayDocument(d, request.cancel, request.forPages);
+        display->form = request.form.form;
+        display->formReason = request.form.reason;
+        out.display = std::move(display);
+    } else {
+        out.document = present::derivationDocument(d, request.format, modeName(request.mode), request.form);
+    }
     out.printSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - printing).count();
     for (const symbolic::DerivationStep& step : d.steps) out.timings.push_back({step.number, step.title, step.seconds});
     out.warnings = d.warnings;

@@ -11,7 +11,7 @@
 
 #include "core/model/cancellation.hpp"
 #include "core/model/scene.hpp"
-#include "core/symbolic/derivation_document.hpp"
+#include "core/present/derivation_document.hpp"
 #include "core/symbolic/symbolic_robot.hpp"
 
 namespace ll {
@@ -19,12 +19,14 @@ namespace ll {
 struct DocumentRequest {
     symbolic::ParameterMode mode = symbolic::ParameterMode::Parametric;
     int firstStep = 0, lastStep = 8;  // the steps shown; B, C, g, Q are always derived
-    symbolic::DocumentFormat format = symbolic::DocumentFormat::Text;
+    present::DocumentFormat format = present::DocumentFormat::Text;
     std::function<void(int step, const std::string& what)> progress;  // optional, on the deriving thread
     const std::atomic<bool>* cancel = nullptr;                          // optional: throws Cancelled
     // for format Display: the trees are for pages only (the CLI's pdf, svg, png), so sums
-    // longer than pages show are built already cut (symbolic::DisplayOptions::cutLongSums)
+    // longer than pages show are built already cut (present::DisplayOptions::cutLongSums)
     bool forPages = false;
+    // the form the document says it is (derivation_forms.hpp, display_derivation.hpp)
+    present::FormNote form;
 };
 
 struct StepTiming {
@@ -35,7 +37,7 @@ struct StepTiming {
 
 struct DerivedDocument {
     std::string document;             // in the requested format (empty for Display)
-    std::shared_ptr<const symbolic::DisplayDocument> display;  // for format Display: the trees
+    std::shared_ptr<const present::DisplayDocument> display;  // for format Display: the trees
     std::vector<StepTiming> timings;  // of the shown steps
     double printSeconds = 0.0;        // shaping and rendering the document
     std::vector<std::string> warnings;

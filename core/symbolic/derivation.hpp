@@ -1,8 +1,10 @@
 #pragma once
-// The result of a symbolic derivation, as the textbook procedure prints it: named
+// The result of a symbolic derivation, as the textbook procedure derives it: named
 // steps, each with its general formula and this system's results, and the final
-// B(q), C(q, q̇), g(q), Q of B q̈ + C q̇ + g = Q. Plain data over GiNaC expressions;
-// printing (text, LaTeX, plain expressions) is core/symbolic/expression_printer.
+// B(q), C(q, q̇), g(q), Q of B q̈ + C q̇ + g = Q. Plain data over GiNaC expressions.
+// Each item says which quantity of the course notes it is and how its terms group, so
+// that how it reads (its label, its entries' names, its grouping; core/present) is
+// decided from that, never from its name.
 //
 // Symbol names (what the printers and the plain `expr` syntax see):
 //   coordinates   q1..qn (robots) or the user's names (Lagrangian systems)
@@ -19,10 +21,51 @@
 
 namespace ll::symbolic {
 
+// The quantities a derivation shows, in the notes' notation (i: the item's index).
+enum class Quantity {
+    DhTable,            // the DH table with the joint variables in place
+    LinkTransform,      // A_i
+    Transform,          // T_i^0
+    ComPosition,        // p_ci^0
+    AngularJacobian,    // J_ω,i
+    AngularVelocity,    // ω_i^0
+    ComJacobian,        // J_v,ci
+    ComVelocity,        // v_ci^0
+    LinkInertia,        // I_li^0
+    PotentialEnergy,    // E_pot
+    MotorInertia,       // B_m = diag(J_m,j G_j²)
+    MassMatrix,         // B(q)
+    KineticEnergy,      // E_kin
+    GravityVector,      // g(q)
+    CoriolisMatrix,     // C(q, q̇)
+    GeneralizedForces,  // Q
+    EquationOfMotion,   // row i of B q̈ + C q̇ + g = Q
+    Coordinates,        // q (a typed Lagrangian)
+    Velocities,         // q̇
+    Lagrangian,         // L = E_kin − E_pot
+    MomentumPartial,    // ∂L/∂q̇_i
+    MomentumRate,       // d/dt ∂L/∂q̇_i
+    CoordinatePartial,  // ∂L/∂q_i
+    // The structured form (core/symbolic/structured_dynamics.hpp): a named quantity of
+    // its table, and single entries over the names.
+    NamedQuantity,      // β_jk^(i), J_P,j^(i), γ_j^(i), ∂b_jk/∂q_l, …
+    MassMatrixEntry,    // b_jk
+    CoriolisEntry,      // c_ij
+    GravityEntry,       // g_j
+    ForceEntry,         // Q_j
+};
+
+// How the terms of an item group when shown: by the masses (a robot's b11 = I1 + m1 ℓc1²
+// + m2 (…)), by the velocities (C, E_kin, ω, v_c: linear or quadratic in q̇), or by the
+// parameters (a typed Lagrangian's K2 (θ1 − θ2)).
+enum class Grouping { Masses, Velocities, Parameters };
+
 struct DerivationItem {
-    std::string name;       // plain: "T_2^0", "p_c1", "b11", "E_kin"
-    std::string latexName;  // "T_{2}^{0}", "p_{c1}", "b_{11}", "E_{\\mathrm{kin}}"
-    GiNaC::ex value;        // a scalar or a GiNaC::matrix
+    std::string name;   // an identifier, also JSON's "name": "T_2^0", "p_c1", "E_kin", "equation_1"
+    Quantity quantity;
+    int index = -1;     // 0-based: the link, joint, coordinate or row it is of; -1 for none
+    Grouping grouping;
+    GiNaC::ex value;    // a scalar, a GiNaC::matrix, or (EquationOfMotion) an equation
 };
 
 struct DerivationStep {
@@ -34,7 +77,11 @@ struct DerivationStep {
     double seconds = 0.0;      // time it took
 };
 
+// What was derived: a serial robot from its DH table, or a system typed as a Lagrangian.
+enum class SystemKind { Robot, Lagrangian };
+
 struct Derivation {
+    SystemKind system = SystemKind::Robot;
     std::string systemName;
     std::vector<GiNaC::symbol> q, qd, qdd;  // coordinates, velocities, accelerations
     GiNaC::symbol t{"t"};                    // time, in external torques

@@ -16,7 +16,6 @@
 #include "core/model/actuation.hpp"
 #include "core/model/diagnostics.hpp"
 #include "core/symbolic/exact_numbers.hpp"
-#include "core/symbolic/expression_printer.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 
 namespace ll::symbolic {
@@ -58,15 +57,6 @@ struct ReduceSinSquares : GiNaC::map_function {
 ex simplified(const ex& e) {
     ReduceSinSquares reduce;
     return reduce(e.expand()).expand();
-}
-
-// A coordinate's (or velocity's) name in LaTeX for the item names, rendered by the printer so it
-// reads the same as inside the expressions (theta1 → \theta_{1}, x_cart → x_{\mathrm{cart}}).
-std::string latexName(const GiNaC::symbol& coordinate) {
-    PrintOptions latex;
-    latex.style = Style::Latex;
-    latex.trigSymbols = false;  // the user's names: c1 may be a coordinate
-    return print(coordinate, latex);
 }
 
 // Parameter symbol == its exact value: numbers become the rationals they print as,
@@ -113,6 +103,7 @@ public:
     }
 
     Derivation derive() {
+        d_.system = SystemKind::Lagrangian;
         d_.systemName = scene_.name;
         d_.q = s_.q;
         d_.qd = s_.qd;
@@ -236,13 +227,13 @@ private:
         addStep(0, "Generalized coordinates",
                 "q = (q_1, ..., q_n): minimal, independent and complete; the velocity of x is x_dot = dx/dt",
                 R"(q = (q_1, \dots, q_n)\ \text{minimal, independent, complete},\quad \dot{q} = \frac{dq}{dt})",
-                {{"q", "q", q}, {"qd", R"(\dot{q})", qd}});
+                {{"q", Quantity::Coordinates, -1, Grouping::Parameters, q}, {"qd", Quantity::Velocities, -1, Grouping::Parameters, qd}});
     }
 
     void stepPotential() {
         d_.Epot = Epot_;
         addStep(6, "Potential energy", "E_pot(q) as given: gravity, springs and every other conservative force",
-                R"(E_{\mathrm{pot}}(q))", {{"E_pot", R"(E_{\mathrm{pot}})", Epot_}});
+                R"(E_{\mathrm{pot}}(q))", {{"E_pot", Quantity::PotentialEnergy, -1, Grouping::Parameters, Epot_}});
     }
 
     void stepKinetic() {
@@ -257,7 +248,7 @@ private:
         addStep(7, "Kinetic energy and the mass matrix",
                 "E_kin(q, qd) as given = 1/2 qd^T B(q) qd,  b_ij = d^2 E_kin / (dqd_i dqd_j)",
                 R"(E_{\mathrm{kin}} = \tfrac{1}{2}\,\dot{q}^T B(q)\,\dot{q},\quad b_{ij} = \frac{\partial^2 E_{\mathrm{kin}}}{\partial \dot{q}_i\,\partial \dot{q}_j})",
-                {{"E_kin", R"(E_{\mathrm{kin}})", Ekin_}, {"B", "B(q)", d_.B}});
+                {{"E_kin", Quantity::KineticEnergy, -1, Grouping::Velocities, Ekin_}, {"B", Quantity::MassMatrix, -1, Grouping::Parameters, d_.B}});
     }
 
     // B(q0) must be positive definite: otherwise some motion of the coordinates moves no
@@ -319,18 +310,16 @@ private:
     void stepEquations() {
         std::vector<DerivationItem> items;
         const ex L = Ekin_ - Epot_;
-        items.push_back({"L", R"(\mathcal{L})", L});
+        items.push_back({"L", Quantity::Lagrangian, -1, Grouping::Parameters, L});
         for (int i = 0; i < n_; ++i) {
             const std::string q = s_.q[i].get_name(), qd = s_.qd[i].get_name();
-            const std::string lq = latexName(s_.q[i]), lqd = latexName(s_.qd[i]);
             const ex momentum = L.diff(s_.qd[i]);
             ex rate = 0;  // d/dt by the chain rule (E_kin and E_pot do not depend on t)
             for (int j = 0; j < n_; ++j)
                 rate += momentum.diff(s_.q[j]) * s_.qd[j] + momentum.diff(s_.qd[j]) * s_.qdd[j];
-            items.push_back({"dL/d" + qd, R"(\frac{\partial \mathcal{L}}{\partial )" + lqd + "}", momentum});
-            items.push_back({"d/dt dL/d" + qd, R"(\frac{d}{dt}\frac{\partial \mathcal{L}}{\partial )" + lqd + "}",
-                             rate.expand()});
-            items.push_back({"dL/d" + q, R"(\frac{\partial \mathcal{L}}{\partial )" + lq + "}", L.diff(s_.q[i])});
+            items.push_back({"dL/d" + qd, Quantity::MomentumPartial, i, Grouping::Parameters, momentum});
+            items.push_back({"d/dt dL/d" + qd, Quantity::MomentumRate, i, Grouping::Parameters, rate.expand()});
+            items.push_back({"dL/d" + q, Quantity::CoordinatePartial, i, Grouping::Parameters, L.diff(s_.q[i])});
         }
 
         d_.g = matrix(n_, 1);
@@ -343,14 +332,14 @@ private:
             for (int j = 0; j < n_; ++j) d_.C(i, j) = simplified(d_.C(i, j));
         generalizedForces();
 
-        items.push_back({"g", "g(q)", d_.g});
-        items.push_back({"C", R"(C(q,\dot{q}))", d_.C});
-        items.push_back({"Q", "Q", d_.Q});
+        items.push_back({"g", Quantity::GravityVector, -1, Grouping::Parameters, d_.g});
+        items.push_back({"C", Quantity::CoriolisMatrix, -1, Grouping::Velocities, d_.C});
+        items.push_back({"Q", Quantity::GeneralizedForces, -1, Grouping::Parameters, d_.Q});
         for (int i = 0; i < n_; ++i) {
             ex lhs = d_.g(i, 0);
             for (int j = 0; j < n_; ++j) lhs += d_.B(i, j) * s_.qdd[j] + d_.C(i, j) * s_.qd[j];
             const std::string k = std::to_string(i + 1);
-            items.push_back({"equation_" + k, R"(\text{equation } )" + k, lhs == d_.Q(i, 0)});
+            items.push_back({"equation_" + k, Quantity::EquationOfMotion, i, Grouping::Parameters, lhs == d_.Q(i, 0)});
         }
         const std::string actuation = actuationText(d_.actuated, spec_.coordinates);
         addStep(8, "Equations of motion (Lagrange-d'Alembert)",

@@ -10,7 +10,7 @@
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/model/actuation.hpp"
 #include "core/model/diagnostics.hpp"
-#include "core/symbolic/angle_sums.hpp"
+#include "core/symbolic/trig_names.hpp"
 #include "core/symbolic/link_transform.hpp"
 #include "core/symbolic/trig_context.hpp"
 
@@ -159,6 +159,7 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
     const auto shown = [&](int step) { return step >= options.firstStep && step <= options.lastStep; };
 
     Derivation d;
+    d.system = SystemKind::Robot;
     d.systemName = scene.name;
     d.q = tc.q();
     d.qd = tc.qd();
@@ -193,7 +194,7 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
                          : "row i: a_{i-1}, alpha_{i-1}, d_i, theta_i (Craig); revolute q_i adds to theta_i, prismatic q_i to d_i",
                 standard ? R"(\text{row } i:\ a_i,\ \alpha_i,\ d_i,\ \theta_i)"
                          : R"(\text{row } i:\ a_{i-1},\ \alpha_{i-1},\ d_i,\ \theta_i)",
-                {{"DH", R"(\mathrm{DH})", table}});
+                {{"DH", Quantity::DhTable, -1, Grouping::Masses, table}});
     }
 
     // 1. Kinematic model.
@@ -204,9 +205,9 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
         checkpoint("T_" + idx(i) + "^0");
         A[i] = linkTransform(robot.convention, robot.joints[i], tc, i);
         T[i + 1] = reduceChecked(tc, T[i].mul(A[i]), checkpoint, "T_" + idx(i) + "^0");
-        step1.push_back({"A_" + idx(i), "A_{" + idx(i) + "}", A[i]});
+        step1.push_back({"A_" + idx(i), Quantity::LinkTransform, i, Grouping::Masses, A[i]});
     }
-    for (int i = 0; i < n; ++i) step1.push_back({"T_" + idx(i) + "^0", "T_{" + idx(i) + "}^{0}", T[i + 1]});
+    for (int i = 0; i < n; ++i) step1.push_back({"T_" + idx(i) + "^0", Quantity::Transform, i, Grouping::Masses, T[i + 1]});
     addStep(1, "Kinematic model",
             standard ? "A_i = Rot_z(theta_i) Trans_z(d_i) Trans_x(a_i) Rot_x(alpha_i),  T_i^0 = A_1 A_2 ... A_i"
                      : "A_i = Rot_x(alpha_{i-1}) Trans_x(a_{i-1}) Rot_z(theta_i) Trans_z(d_i),  T_i^0 = A_1 A_2 ... A_i",
@@ -222,7 +223,7 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
         const matrix& com = robot.joints[i].com;
         for (int r = 0; r < 3; ++r)
             p[i][r] = tc.reduce(T[i + 1](r, 0) * com(0, 0) + T[i + 1](r, 1) * com(1, 0) + T[i + 1](r, 2) * com(2, 0) + T[i + 1](r, 3));
-        step2.push_back({"p_c" + idx(i), "p_{c" + idx(i) + "}^{0}", toMatrix(p[i])});
+        step2.push_back({"p_c" + idx(i), Quantity::ComPosition, i, Grouping::Masses, toMatrix(p[i])});
     }
     addStep(2, "Centres of mass", "p_ci^0 = T_i^0 [r_ci; 1]  (r_ci: COM of link i in frame i)",
             R"(p_{ci}^0 = T_i^0 \begin{bmatrix} r_{ci} \\ 1 \end{bmatrix})", step2);
@@ -242,8 +243,8 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
                         Jw(r, j) = axis[j][r];
                         w(r, 0) += axis[j][r] * tc.qd(j);
                     }
-            items.push_back({"J_w" + idx(i), R"(J_{\omega,)" + idx(i) + "}", Jw});
-            items.push_back({"w_" + idx(i), R"(\omega_{)" + idx(i) + "}^{0}", tc.reduce(w)});
+            items.push_back({"J_w" + idx(i), Quantity::AngularJacobian, i, Grouping::Masses, Jw});
+            items.push_back({"w_" + idx(i), Quantity::AngularVelocity, i, Grouping::Velocities, tc.reduce(w)});
         }
         addStep(3, "Angular velocities", "omega_i^0 = sum_{j<=i, revolute} z_j qd_j = J_w,i qd",
                 R"(\omega_i^0 = \sum_{j \le i} z_{j} \dot{q}_j = J_{\omega,i}\,\dot{q})", items);
@@ -261,8 +262,8 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
                     v(r, 0) += Jv(r, j) * tc.qd(j);
                 }
             }
-            items.push_back({"J_v_c" + idx(i), "J_{v,c" + idx(i) + "}", Jv});
-            items.push_back({"v_c" + idx(i), "v_{c" + idx(i) + "}^{0}", tc.reduce(v)});
+            items.push_back({"J_v_c" + idx(i), Quantity::ComJacobian, i, Grouping::Masses, Jv});
+            items.push_back({"v_c" + idx(i), Quantity::ComVelocity, i, Grouping::Velocities, tc.reduce(v)});
         }
         addStep(4, "Velocities of the centres of mass", "v_ci^0 = d/dt p_ci^0 = J_v,ci qd,  J_v,ci = dp_ci^0/dq",
                 R"(v_{ci}^0 = \dot{p}_{ci}^0 = J_{v,ci}\,\dot{q},\quad J_{v,ci} = \frac{\partial p_{ci}^0}{\partial q})", items);
@@ -273,7 +274,7 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
         std::vector<DerivationItem> items;
         for (int i = 0; i < n; ++i) {
             const matrix R = rotation(T[i + 1]);
-            items.push_back({"I_l" + idx(i) + "^0", "I_{l" + idx(i) + "}^{0}",
+            items.push_back({"I_l" + idx(i) + "^0", Quantity::LinkInertia, i, Grouping::Masses,
                              reduceChecked(tc, R.mul(robot.joints[i].inertia).mul(R.transpose()), checkpoint,
                                             "I_l" + idx(i) + "^0")});
         }
@@ -295,7 +296,7 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
                 (robot.springs.empty() ? "" : " + sum_j 1/2 K_j (q_j - q_j,rest)^2"),
             std::string(robot.hasGravity ? R"(E_{\mathrm{pot}} = -\sum_{i} m_i\, g_0^T p_{ci}^0)" : R"(E_{\mathrm{pot}} = 0)") +
                 (robot.springs.empty() ? "" : R"( + \sum_j \tfrac{1}{2} K_j (q_j - q_{j,\mathrm{rest}})^2)"),
-            {{"E_pot", R"(E_{\mathrm{pot}})", Epot}});
+            {{"E_pot", Quantity::PotentialEnergy, -1, Grouping::Masses, Epot}});
 
     // 7. Kinetic energy and B(q); the motors' rotors add their armature to b_jj.
     d.B = massMatrixInLinkFrames(robot, A, tc, checkpoint);
@@ -320,9 +321,9 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
     }
     if (!motorValues.empty()) motorValues = " (" + motorValues + ")";
     std::vector<DerivationItem> step7;
-    if (hasMotors) step7.push_back({"B_m", R"(B_{m})", motors});
-    step7.push_back({"B", "B(q)", d.B});
-    step7.push_back({"E_kin", R"(E_{\mathrm{kin}})", d.Ekin});
+    if (hasMotors) step7.push_back({"B_m", Quantity::MotorInertia, -1, Grouping::Masses, motors});
+    step7.push_back({"B", Quantity::MassMatrix, -1, Grouping::Masses, d.B});
+    step7.push_back({"E_kin", Quantity::KineticEnergy, -1, Grouping::Velocities, d.Ekin});
     addStep(7, "Kinetic energy and the mass matrix",
             std::string("E_kin = 1/2 sum_i (m_i v_ci^T v_ci + omega_i^T I_li^0 omega_i)") +
                 (hasMotors ? " + 1/2 sum_j Jm_j G_j^2 qd_j^2" : "") + " = 1/2 qd^T B(q) qd" +
@@ -360,11 +361,13 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
     d.actuated.erase(std::unique(d.actuated.begin(), d.actuated.end()), d.actuated.end());
     d.underactuated = static_cast<int>(d.actuated.size()) < n;
 
-    std::vector<DerivationItem> step8{{"g", "g(q)", d.g}, {"C", R"(C(q,\dot{q}))", d.C}, {"Q", "Q", d.Q}};
+    std::vector<DerivationItem> step8{{"g", Quantity::GravityVector, -1, Grouping::Masses, d.g},
+                                     {"C", Quantity::CoriolisMatrix, -1, Grouping::Velocities, d.C},
+                                     {"Q", Quantity::GeneralizedForces, -1, Grouping::Masses, d.Q}};
     for (int i = 0; i < n; ++i) {
         ex lhs = d.g(i, 0);
         for (int j = 0; j < n; ++j) lhs += d.B(i, j) * d.qdd[j] + d.C(i, j) * tc.qd(j);
-        step8.push_back({"equation_" + idx(i), R"(\text{equation } )" + idx(i), lhs == d.Q(i, 0)});
+        step8.push_back({"equation_" + idx(i), Quantity::EquationOfMotion, i, Grouping::Masses, lhs == d.Q(i, 0)});
     }
     const std::string actuation = actuationText(d.actuated, d.coordinateNames);
     addStep(8, "Equations of motion (Lagrange-d'Alembert)",

@@ -2,8 +2,7 @@
 // A GiNaC symbol made once on the heap, held as an expression. GiNaC copies a symbol
 // *value* (GiNaC::symbol x("x")) onto the heap every time it becomes part of an
 // expression: an allocation per use, and as many objects as uses. A shared symbol is one
-// object that every expression using it points to, so it costs nothing to use and the
-// display builder finds it again by its address (core/symbolic/display_builder.cpp).
+// object that every expression using it points to, so it costs nothing to use.
 // Call with the GiNaC lock held.
 #include <string>
 

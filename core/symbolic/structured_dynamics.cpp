@@ -10,7 +10,7 @@
 #include "core/model/diagnostics.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/link_transform.hpp"
-#include "core/symbolic/structured_notes.hpp"
+#include "core/symbolic/index_list.hpp"
 #include "core/symbolic/symbolic_robot.hpp"
 
 namespace ll::symbolic {
@@ -230,8 +230,8 @@ StructuredDynamics deriveStructured(const Scene& scene, const DerivationOptions&
                 ex beta = m * dot(link.JP[j], link.JP[k]);
                 if (revolute[j] && revolute[k]) beta += dot(link.Z[j], link.IZ[k]);
                 s.beta[j][k].push_back(table.name(beta, "beta" + idx(j) + "_" + idx(k) + "_" + L,
-                                                  "\\beta_{" + notes::indexList({j, k}) + "}^{(" + L + ")}",
-                                                  "contribution of link " + L + " to b" + notes::indexList({j, k}), 7));
+                                                  "\\beta_{" + indexList({j, k}) + "}^{(" + L + ")}",
+                                                  "contribution of link " + L + " to b" + indexList({j, k}), 7));
             }
         if (robot.hasGravity) {
             checkpoint(6, "gamma^(" + L + ")");
@@ -248,7 +248,7 @@ StructuredDynamics deriveStructured(const Scene& scene, const DerivationOptions&
                 for (int l = j + 1; l <= i; ++l)  // ∂β_jk/∂q_l = 0 for l ≤ min(j, k) = j
                     s.dB[l](j, k) += table.name(link.dBeta(j, k, l, m),
                                                 "delta" + idx(j) + "_" + idx(k) + "_" + L + "_" + idx(l),
-                                                "\\partial\\beta_{" + notes::indexList({j, k}) + "}^{(" + L + ")}/\\partial q_{" + idx(l) + "}",
+                                                "\\partial\\beta_{" + indexList({j, k}) + "}^{(" + L + ")}/\\partial q_{" + idx(l) + "}",
                                                 "derivative of beta" + idx(j) + "_" + idx(k) + "_" + L + " by q" + idx(l), 8);
         }
     }
@@ -295,8 +295,8 @@ StructuredDynamics deriveStructured(const Scene& scene, const DerivationOptions&
                 if (s.dB[l](j, k).is_zero()) continue;
                 s.dB[l](j, k) = s.dB[l](k, j) =
                     table.name(s.dB[l](j, k), "Db" + idx(j) + "_" + idx(k) + "_" + idx(l),
-                               "\\partial b_{" + notes::indexList({j, k}) + "}/\\partial q_{" + idx(l) + "}",
-                               "derivative of b" + notes::indexList({j, k}) + " by q" + idx(l), 8);
+                               "\\partial b_{" + indexList({j, k}) + "}/\\partial q_{" + idx(l) + "}",
+                               "derivative of b" + indexList({j, k}) + " by q" + idx(l), 8);
             }
     checkpoint(8, "C");
     s.C = matrix(n, n);

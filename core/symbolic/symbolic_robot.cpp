@@ -105,7 +105,6 @@ SymbolicRobot symbolicRobot(const Scene& scene, ParameterMode mode, const GiNaC:
         sj.alpha = reader.dhAngle(field("alpha"), joint.dh.alpha, "alpha" + k);
         sj.theta = reader.dhAngle(field("theta"), joint.dh.theta, "theta" + k);
         sj.mass = reader.value(field("mass"), joint.link.mass, "m" + k);
-        if (GiNaC::is_a<GiNaC::symbol>(sj.mass)) robot.massSymbols.push_back(GiNaC::ex_to<GiNaC::symbol>(sj.mass));
         for (int c = 0; c < 3; ++c)
             sj.com(c, 0) = reader.value(field("com[" + std::to_string(c + 1) + "]"), joint.link.com[c],
                                         std::string(1, axes[c]) + "c" + k);

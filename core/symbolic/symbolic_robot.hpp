@@ -46,7 +46,6 @@ struct SymbolicRobot {
     bool hasGravity = false;
     GiNaC::matrix gravity{3, 1};
     std::vector<SymbolicTerm> springs, viscous, coulomb, torques;
-    std::vector<GiNaC::symbol> massSymbols;  // for grouping results by mass when printing
     // The motor symbols introduced (Jm1, G1, Ja2, ...) with their values, for the
     // derivation to say what they stand for.
     std::vector<std::pair<std::string, double>> motorSymbols;

@@ -1,0 +1,117 @@
+#include "core/present/derivation_document.hpp"
+
+#include "core/model/actuation.hpp"
+#include "core/model/cancellation.hpp"
+#include "core/present/display_builder.hpp"
+#include "core/present/json_document.hpp"
+#include "core/present/labels.hpp"
+#include "core/present/latex_document.hpp"
+#include "core/present/latex_formula.hpp"
+#include "core/present/text_document.hpp"
+#include "core/present/textbook_form.hpp"
+#include "core/symbolic/ginac_lock.hpp"
+
+namespace ll::present {
+namespace {
+
+using symbolic::Derivation;
+using symbolic::DerivationItem;
+using symbolic::DerivationStep;
+
+DisplayOptions optionsFor(const Derivation& d, bool forPages) {
+    DisplayOptions o;
+    o.names.coordinateNames = d.coordinateNames;
+    if (o.names.coordinateNames.empty())
+        for (const GiNaC::symbol& q : d.q) o.names.coordinateNames.push_back(q.get_name());
+    o.names.trigSymbols = d.system == symbolic::SystemKind::Robot;
+    o.cutLongSums = forPages;
+    return o;
+}
+
+DisplayItem displayItem(const Derivation& d, const DerivationItem& item, TextbookForm& form, DisplayBuilder& build) {
+    DisplayItem out;
+    out.name = item.name;
+    out.latexName = itemLatexName(item, d);
+    out.quantity = item.quantity;
+    out.row = item.index;
+    if (item.quantity == Quantity::EquationOfMotion) {
+        std::vector<DisplayPtr> parts;
+        for (const GiNaC::ex& part : form.equationParts(item.index))
+            if (!part.is_zero()) parts.push_back(build(part));
+        out.value = build(form(item.value.rhs(), form.plainGrouping()));
+        out.equation = displayEquation(displaySumOf(parts), out.value);
+        return out;
+    }
+    out.value = build(form(item.value, item.grouping));
+    out.equation = displayEquation(displayLabel(out.name, out.latexName), out.value);
+    return out;
+}
+
+const char* const massMatrixFormula =
+    R"(,\quad B(q) = \sum_i \left(m_i\, J_{P,i}^T J_{P,i} + J_{O,i}^T R_i\, I_{li}\, R_i^T J_{O,i}\right))";
+
+// A step as displayed, without its items yet: the notes' general formula typeset; a
+// robot's step 7 also gives B as the notes sum it.
+DisplayStep stepHead(const Derivation& d, const DerivationStep& step) {
+    DisplayStep s{step.number, step.title, step.formulaText, step.formulaLatex, {}, step.seconds, {}};
+    const bool sumsB = d.system == symbolic::SystemKind::Robot && step.number == 7;
+    s.formula = formulaFromLatex(step.formulaLatex + (sumsB ? massMatrixFormula : ""), step.formulaText);
+    return s;
+}
+
+std::shared_ptr<DisplayDocument> shapeDocument(const Derivation& d, TextbookForm& form, DisplayBuilder& build,
+                                               const std::atomic<bool>* cancel) {
+    auto doc = std::make_shared<DisplayDocument>();
+    doc->systemName = d.systemName;
+    doc->coordinateNames = d.coordinateNames;
+    doc->actuation = actuationText(d.actuated, d.coordinateNames);
+    for (const DerivationStep& step : d.steps) {
+        DisplayStep& shown = doc->steps.emplace_back(stepHead(d, step));
+        for (const DerivationItem& item : step.items) {
+            throwIfCancelled(cancel);  // a newer edit need not wait for this document under the GiNaC lock
+            shown.items.push_back(displayItem(d, item, form, build));
+        }
+    }
+    return doc;
+}
+
+}  // namespace
+
+std::shared_ptr<DisplayDocument> displayDocument(const Derivation& d, const std::atomic<bool>* cancel, bool forPages) {
+    const auto lock = symbolic::lockGinac();
+    DisplayBuilder build(optionsFor(d, forPages));
+    TextbookForm form(d);
+    return shapeDocument(d, form, build, cancel);
+}
+
+std::string renderDocument(const DisplayDocument& document, DocumentFormat format) {
+    if (format == DocumentFormat::Text) return textDocument(document);
+    if (format == DocumentFormat::Latex) return latexDocument(document);
+    return {};
+}
+
+std::string derivationDocument(const Derivation& d, DocumentFormat format, const std::string& modeName, const FormNote& note) {
+    if (format == DocumentFormat::Display) return {};
+    const auto lock = symbolic::lockGinac();
+    DisplayBuilder build(optionsFor(d, false));
+    TextbookForm form(d);
+    const std::shared_ptr<DisplayDocument> doc = shapeDocument(d, form, build, nullptr);
+    doc->form = note.form;
+    doc->formReason = note.reason;
+    if (format != DocumentFormat::Json) return renderDocument(*doc, format);
+    const auto shown = [&](const GiNaC::ex& value, symbolic::Grouping grouping) { return build(form(value, grouping)); };
+    ModelSummary model;
+    model.mode = modeName;
+    model.B = shown(d.B, form.plainGrouping());
+    model.C = shown(d.C, symbolic::Grouping::Velocities);
+    model.g = shown(d.g, form.plainGrouping());
+    model.Q = shown(d.Q, form.plainGrouping());
+    model.Ekin = shown(d.Ekin, symbolic::Grouping::Velocities);
+    model.Epot = shown(d.Epot, form.plainGrouping());
+    for (int a : d.actuated) model.actuated.push_back(d.coordinateNames[a]);
+    model.underactuated = d.underactuated;
+    model.warnings = d.warnings;
+    return jsonDocument(*doc, model);
+}
+
+}  // namespace ll::present

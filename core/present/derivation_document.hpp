@@ -1,0 +1,36 @@
+#pragma once
+// A derivation (core/symbolic/derivation.hpp) as it reads, decided once for every front
+// end: each item in its textbook form (textbook_form.hpp), built as display trees
+// (display_builder.hpp) with its label (labels.hpp); then written as text, LaTeX or JSON
+// (text_document, latex_document, json_document), or handed on as the trees for the
+// typeset pages and the window. Takes the GiNaC lock; the caller must hold it too while
+// it owns the Derivation.
+#include <atomic>
+#include <memory>
+#include <string>
+
+#include "core/present/display_document.hpp"
+#include "core/symbolic/derivation.hpp"
+
+namespace ll::present {
+
+// The derivation's display trees. Throws Cancelled between items once `cancel` is set.
+// forPages: long sums built already cut as pages show them (DisplayOptions::cutLongSums).
+std::shared_ptr<DisplayDocument> displayDocument(const symbolic::Derivation& derivation, const std::atomic<bool>* cancel = nullptr,
+                                                 bool forPages = false);
+
+// Which form was derived and why, said by the documents when given ("expanded", "auto: 2
+// joints: …"); empty: not said.
+struct FormNote {
+    std::string form, reason;
+};
+
+// The derivation in Text, Latex or Json (Display gives ""); modeName ("parameters",
+// "numeric", "symbolic") is recorded in the JSON.
+std::string derivationDocument(const symbolic::Derivation& derivation, DocumentFormat format, const std::string& modeName,
+                               const FormNote& form = {});
+
+// A document in Text or Latex from its display trees (no GiNaC: any thread).
+std::string renderDocument(const DisplayDocument& document, DocumentFormat format);
+
+}  // namespace ll::present

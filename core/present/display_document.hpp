@@ -1,0 +1,47 @@
+#pragma once
+// A derivation as it is shown: steps of items, each "label = value" as display trees.
+// Plain data (no GiNaC), safe to hand to any thread. Every front end draws it: the text,
+// LaTeX and JSON documents (text_document, latex_document, json_document), the typeset
+// pages and the window's derivation view. Each item says which quantity it is
+// (core/symbolic/derivation.hpp), so they decide layout from that, never from names.
+#include <string>
+#include <vector>
+
+#include "core/present/display_tree.hpp"
+#include "core/symbolic/derivation.hpp"
+
+namespace ll::present {
+
+using symbolic::Quantity;
+
+// The documents a derivation is written as; Display is the trees alone.
+enum class DocumentFormat { Text, Latex, Json, Display };
+
+struct DisplayItem {
+    std::string name;       // the identifier (JSON's "name"): b11, B, equation_1, beta1_1_2
+    std::string latexName;  // b_{11}, B(q)
+    Quantity quantity = Quantity::NamedQuantity;
+    int row = -1, col = -1;  // 0-based: the item's link, joint or row (row), an entry's column (col)
+    DisplayPtr equation;     // label = value (an equation of motion: B q̈ + C q̇ + g = Q)
+    DisplayPtr value;        // the right side alone (for a matrix: the Matrix node)
+    std::string note;        // what it means, in words (the structured form's names); may be empty
+};
+
+struct DisplayStep {
+    int number = 0;
+    std::string title, formulaText, formulaLatex;
+    std::vector<DisplayItem> items;
+    double seconds = 0.0;
+    DisplayPtr formula;  // the general formula typeset (null: only formulaText)
+};
+
+struct DisplayDocument {
+    std::string systemName;
+    std::vector<std::string> coordinateNames;
+    std::vector<DisplayStep> steps;
+    std::string actuation;   // "q1, q2 actuated" …
+    std::string form;        // "expanded" or "structured" when a form was chosen (empty: not said)
+    std::string formReason;  // why that form
+};
+
+}  // namespace ll::present

@@ -1,0 +1,28 @@
+#include "core/present/latex_document.hpp"
+
+#include "core/present/latex_text.hpp"
+
+namespace ll::present {
+
+std::string itemLatex(const DisplayItem& item) { return renderDisplay(*item.equation, DisplayStyle::Latex); }
+
+std::string latexDocument(const DisplayDocument& document) {
+    std::string out =
+        "\\documentclass[a4paper,10pt]{article}\n"
+        "\\usepackage[margin=1.5cm,landscape]{geometry}\n"
+        "\\usepackage{amsmath,amssymb}\n"
+        "\\allowdisplaybreaks\n"
+        "\\setcounter{MaxMatrixCols}{20}\n"
+        "\\title{Euler--Lagrange model: " + latexText(document.systemName) + "}\n"
+        "\\author{LagrangeLab}\n\\date{}\n"
+        "\\begin{document}\n\\maketitle\n";
+    if (!document.form.empty()) out += "Form: " + document.form + " (" + latexText(document.formReason) + ").\n";
+    out += "Shorthand: $c_{i} = \\cos q_i$, $s_{i} = \\sin q_i$, $c_{12} = \\cos(q_1 + q_2)$, $\\dot{q}_i$ the joint velocities.\n";
+    for (const DisplayStep& step : document.steps) {
+        out += "\\section*{Step " + std::to_string(step.number) + ": " + latexText(step.title) + "}\n\\[ " + step.formulaLatex + " \\]\n";
+        for (const DisplayItem& item : step.items) out += "\\[ " + itemLatex(item) + " \\]\n";
+    }
+    return out + "\\paragraph{Actuation} " + latexText(document.actuation) + ".\n\\end{document}\n";
+}
+
+}  // namespace ll::present

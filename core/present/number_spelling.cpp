@@ -1,0 +1,112 @@
+#include "core/present/number_spelling.hpp"
+
+#include <charconv>
+#include <cstdio>
+#include <sstream>
+
+namespace ll::present {
+namespace {
+
+using GiNaC::numeric;
+
+std::string str(const numeric& n) { return (std::ostringstream() << n).str(); }
+
+// The shortest decimal that reads back as the same double.
+std::string shortest(double v) {
+    char buffer[64];
+    const auto r = std::to_chars(buffer, buffer + sizeof buffer, v);
+    return std::string(buffer, r.ptr);
+}
+
+// As people read it: the shortest form when it has at most 6 significant digits (a
+// scene's 0.15005), else rounded to 6 (%g, which may write 1e-05).
+constexpr int shownDigits = 6;
+std::string shown(double v) {
+    const std::string s = shortest(v);
+    int digits = 0;
+    bool leading = true;
+    for (char c : s) {
+        if (c == 'e' || c == 'E') break;
+        if (c < '0' || c > '9') continue;
+        if (leading && c == '0') continue;
+        leading = false;
+        ++digits;
+    }
+    if (digits <= shownDigits) return s;
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.*g", shownDigits, v);
+    return buffer;
+}
+
+// 17 significant digits, always a float literal for GiNaC's parser (2.0, not 2).
+std::string seventeen(double v) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.17g", v);
+    std::string s = buffer;
+    if (s.find_first_of(".ni") == std::string::npos) {
+        const auto e = s.find('e');
+        s.insert(e == std::string::npos ? s.size() : e, ".0");
+    }
+    return s;
+}
+
+DisplayPtr decimalNode(double v) {
+    const std::string s = shown(v), plain = seventeen(v);
+    const auto e = s.find('e');
+    if (e == std::string::npos) return displayNumber(s, s, plain);
+    const std::string mantissa = s.substr(0, e), exponent = std::to_string(std::stoi(s.substr(e + 1)));
+    return displayNumber(mantissa, mantissa, plain, exponent);
+}
+
+// A fraction whose decimal expansion ends (denominator 2^a 5^b): 1/5 = 0.2, 3/8 = 0.375.
+bool terminates(const numeric& v) {
+    if (v.is_integer() || !v.is_rational()) return false;
+    numeric d = v.denom();
+    for (int p : {2, 5})
+        while (GiNaC::irem(d, p).is_zero()) d = d / p;
+    return d.is_equal(1);
+}
+
+}  // namespace
+
+DisplayPtr numberNode(const numeric& n) {
+    if (!n.is_real()) {  // not expected in mechanics; GiNaC's form, parenthesised
+        std::ostringstream plain, latex;
+        plain << n;
+        latex << GiNaC::latex << n;
+        return displayRaw("(" + plain.str() + ")", "(" + latex.str() + ")", "(" + plain.str() + ")");
+    }
+    if (n.is_negative()) return displayNegated(numberNode(-n));
+    if (n.is_integer()) {
+        const std::string s = str(n);
+        return displayNumber(s, s, s);
+    }
+    if (n.is_rational()) return displayNode(DisplayKind::Fraction, {numberNode(n.numer()), numberNode(n.denom())});
+    return decimalNode(n.to_double());
+}
+
+DisplayPtr exponentNode(const numeric& k) {
+    const std::string text = str(k);
+    return displayNumber(text, text, k.is_rational() ? text : seventeen(k.to_double()));
+}
+
+bool isDecimalFraction(const numeric& v) { return terminates(v) && v.denom() > 8; }
+
+GiNaC::ex readableNumbers(const GiNaC::ex& e) {
+    bool decimal = false;
+    for (auto it = e.preorder_begin(); it != e.preorder_end() && !decimal; ++it)
+        decimal = GiNaC::is_a<numeric>(*it) && isDecimalFraction(GiNaC::ex_to<numeric>(*it));
+    if (!decimal) return e;
+    struct Map : GiNaC::map_function {
+        GiNaC::ex operator()(const GiNaC::ex& x) override {
+            if (GiNaC::is_a<numeric>(x)) {
+                const numeric& v = GiNaC::ex_to<numeric>(x);
+                return terminates(v) ? v.evalf() : x;
+            }
+            return x.map(*this);
+        }
+    } map;
+    return map(e);
+}
+
+}  // namespace ll::present
