@@ -9,9 +9,10 @@
 
 #include "core/io/scene_file.hpp"
 #include "core/pipeline/scene_simulation.hpp"
-#include "core/scene/camera_view.hpp"
-#include "core/scene/trajectory_sampler.hpp"
-#include "core/scene/visual_scene.hpp"
+#include "core/visual/camera_view.hpp"
+#include "core/visual/trajectory_sampler.hpp"
+#include "core/pipeline/scene_visual.hpp"
+#include "core/visual/visual_scene.hpp"
 #include "ui/edge_smoothing.hpp"
 #include "ui/headless_renderer.hpp"
 #include "ui/osg_scene.hpp"
@@ -111,7 +112,7 @@ private slots:
         SimulationSettings settings = scene.simulation;
         settings.duration = 0.5;
         const Trajectory tr = simulate(scene, settings).trajectory;
-        VisualScene visual(scene);
+        VisualScene visual = visualScene(scene);
         visual.fitToMotion(tr);
         visual.pose(tr.q.back(), tr.t.back());
         ui::OsgSceneOptions options;

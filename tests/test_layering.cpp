@@ -106,6 +106,10 @@ private slots:
         QVERIFY(rank(layers, "symbolic") < rank(layers, "present") && rank(layers, "present") < rank(layers, "pipeline"));
         QCOMPARE(layerViolations(layers, "symbolic", "f", "#include \"core/present/display_tree.hpp\"\n").size(), 1);
         QCOMPARE(layerViolations(layers, "present", "f", "#include \"core/symbolic/derivation.hpp\"\n").size(), 0);
+        // The visual scene is plain data below the derivation: no GiNaC in it.
+        QVERIFY(rank(layers, "visual") < rank(layers, "symbolic"));
+        QCOMPARE(layerViolations(layers, "visual", "f", "#include <ginac/ginac.h>\n").size(), 1);
+        QCOMPARE(layerViolations(layers, "visual", "f", "#include \"core/symbolic/compiled_body_poses.hpp\"\n").size(), 1);
     }
 
     // How an item reads is decided from the quantity it is (core/symbolic/derivation.hpp),

@@ -7,8 +7,9 @@
 #include "core/io/scene_file.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
 #include "core/model/robot_data.hpp"
-#include "core/scene/trajectory_sampler.hpp"
-#include "core/scene/visual_scene.hpp"
+#include "core/visual/trajectory_sampler.hpp"
+#include "core/pipeline/scene_visual.hpp"
+#include "core/visual/visual_scene.hpp"
 #include "core/pipeline/scene_simulation.hpp"
 #include "ui/headless_renderer.hpp"
 #include "ui/osg_scene.hpp"
@@ -27,7 +28,7 @@ private slots:
         settings.duration = 2.0;
         const Trajectory tr = simulate(scene, settings).trajectory;
         const TrajectorySampler sampler(tr);
-        VisualScene visual(scene);
+        VisualScene visual = visualScene(scene);
         visual.fitToMotion(tr);
         ui::OsgSceneOptions options;
         options.frames = false;  // nothing in front of the tip

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "core/io/scene_file.hpp"
-#include "core/scene/trajectory_sampler.hpp"
+#include "core/visual/trajectory_sampler.hpp"
 #include "core/pipeline/scene_simulation.hpp"
 
 using namespace ll;

@@ -9,9 +9,10 @@
 #include "core/io/scene_file.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
 #include "core/model/robot_data.hpp"
-#include "core/scene/camera_view.hpp"
-#include "core/scene/trajectory_sampler.hpp"
-#include "core/scene/visual_scene.hpp"
+#include "core/visual/camera_view.hpp"
+#include "core/visual/trajectory_sampler.hpp"
+#include "core/pipeline/scene_visual.hpp"
+#include "core/visual/visual_scene.hpp"
 #include "core/pipeline/scene_simulation.hpp"
 
 using namespace ll;
@@ -47,7 +48,7 @@ private slots:
         settings.duration = 1.0;
         const Trajectory tr = simulate(scene, settings).trajectory;
         const TrajectorySampler sampler(tr);
-        VisualScene visual(scene);
+        VisualScene visual = visualScene(scene);
         RobotData data(scene.robot);
         Eigen::VectorXd q(6), qd(6);
         for (double t : {0.0, 0.333, 0.71}) {
@@ -84,7 +85,7 @@ private slots:
     // COM markers: volume proportional to mass (r³ ∝ m).
     void comVolumeProportionalToMass() {
         const Scene scene = example("puma560.json");
-        const VisualScene visual(scene);
+        const VisualScene visual = visualScene(scene);
         const double r2 = partsNamed(visual, "COM 2").at(0)->radius, r3 = partsNamed(visual, "COM 3").at(0)->radius;
         QVERIFY(std::abs(std::pow(r3 / r2, 3) - 4.8 / 17.4) < 1e-12);
     }
@@ -92,7 +93,7 @@ private slots:
     // The Stanford arm's boom: a sleeve fixed on z_2 and a bar whose length is d3 + q3.
     void prismaticBarFollowsQ() {
         const Scene scene = example("stanford_arm.json");
-        VisualScene visual(scene);
+        VisualScene visual = visualScene(scene);
         Eigen::VectorXd q = scene.initial.q;
         const auto bar = [&] {
             for (const VisualPart& p : visual.parts)
@@ -122,7 +123,7 @@ private slots:
         Scene large = small;
         small.robot.joints[0].dh.a = 0.05;
         large.robot.joints[0].dh.a = 2.0;
-        const VisualScene a(small), b(large);
+        const VisualScene a = visualScene(small), b = visualScene(large);
         QCOMPARE(a.parts.size(), b.parts.size());
         for (size_t p = 0; p < a.parts.size(); ++p) {
             QCOMPARE(a.parts[p].name, b.parts[p].name);
@@ -132,21 +133,21 @@ private slots:
     }
 
     void upIsMinusGravity() {
-        QVERIFY(VisualScene(example("puma560.json")).up.isApprox(Eigen::Vector3d::UnitZ()));
-        QVERIFY(VisualScene(example("double_pendulum.json")).up.isApprox(Eigen::Vector3d::UnitY()));
+        QVERIFY(visualScene(example("puma560.json")).up.isApprox(Eigen::Vector3d::UnitZ()));
+        QVERIFY(visualScene(example("double_pendulum.json")).up.isApprox(Eigen::Vector3d::UnitY()));
         Scene none = example("puma560.json");
         none.effects.gravity.reset();
-        QVERIFY(VisualScene(none).up.isApprox(Eigen::Vector3d::UnitZ()));
+        QVERIFY(visualScene(none).up.isApprox(Eigen::Vector3d::UnitZ()));
         // Lagrangian scenes have no gravity vector: x–y plane drawings get y up.
-        QVERIFY(VisualScene(example("elastic_pendulum.json")).up.isApprox(Eigen::Vector3d::UnitY()));
-        QVERIFY(VisualScene(example("mass_spring_pair_lagrangian.json")).up.isApprox(Eigen::Vector3d::UnitZ()));
+        QVERIFY(visualScene(example("elastic_pendulum.json")).up.isApprox(Eigen::Vector3d::UnitY()));
+        QVERIFY(visualScene(example("mass_spring_pair_lagrangian.json")).up.isApprox(Eigen::Vector3d::UnitZ()));
     }
 
     // The mass–spring pair typed as a Lagrangian: its five bodies, posed by their
     // expressions (marker 1 on the rim of disc 1 at angle θ1).
     void lagrangianBodiesFollowTheirExpressions() {
         const Scene scene = example("mass_spring_pair_lagrangian.json");
-        VisualScene visual(scene);
+        VisualScene visual = visualScene(scene);
         QCOMPARE(static_cast<int>(visual.parts.size()), 5);
         Eigen::VectorXd q(2);
         q << 0.7, -0.4;
@@ -167,7 +168,7 @@ private slots:
         for (const char* file : {"double_pendulum.json", "puma560.json"}) {
             const Scene scene = example(file);
             const Trajectory tr = simulate(scene).trajectory;
-            VisualScene visual(scene);
+            VisualScene visual = visualScene(scene);
             visual.fitToMotion(tr, static_cast<int>(tr.size()));
             const bool planar = looksPlanar(visual);
             QCOMPARE(planar, std::string(file) == "double_pendulum.json");  // `auto` looks at a planar pendulum from the front
@@ -205,7 +206,7 @@ private slots:
     void fittedCameraFramesTheRobot() {
         const Scene scene = example("puma560.json");
         const Trajectory tr = simulate(scene).trajectory;
-        VisualScene visual(scene);
+        VisualScene visual = visualScene(scene);
         visual.fitToMotion(tr);
         const double aspect = 16.0 / 9.0;
         const CameraView view = cameraView(visual, parseCameraSpec("iso"), aspect);
@@ -234,11 +235,11 @@ private slots:
     // Frames whose origins coincide at every pose share one label (the PUMA's wrist
     // frames 4, 5, 6); frames that do not keep their own.
     void coincidentFramesShareALabel() {
-        const VisualScene puma(example("puma560.json"));
+        const VisualScene puma = visualScene(example("puma560.json"));
         QStringList labels;
         for (const VisualFrame& f : puma.frames) labels << QString::fromStdString(f.label);
         QCOMPARE(labels, QStringList({"0", "1", "2", "3", "4,5,6", "", ""}));
-        const VisualScene planar(example("planar_2r.json"));
+        const VisualScene planar = visualScene(example("planar_2r.json"));
         for (size_t k = 0; k < planar.frames.size(); ++k) QCOMPARE(planar.frames[k].label, std::to_string(k));
     }
 

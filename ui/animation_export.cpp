@@ -11,8 +11,9 @@
 
 #include <QImageWriter>
 
-#include "core/scene/trajectory_sampler.hpp"
-#include "core/scene/visual_scene.hpp"
+#include "core/visual/trajectory_sampler.hpp"
+#include "core/pipeline/scene_visual.hpp"
+#include "core/visual/visual_scene.hpp"
 #include "ui/ffmpeg_encoder.hpp"
 #include "ui/headless_renderer.hpp"
 #include "ui/osg_scene.hpp"
@@ -163,7 +164,7 @@ ExportTimings exportAnimation(const Scene& scene, const Trajectory& trajectory, 
     ExportSettings s = settings;
     if (s.kind == OutputKind::Folder && !s.out.empty() && s.out.back() == '/') s.out.pop_back();
 
-    VisualScene visual(scene);
+    VisualScene visual = visualScene(scene);
     visual.fitToMotion(trajectory);
     OsgSceneOptions sceneOptions;
     sceneOptions.frames = s.frames;

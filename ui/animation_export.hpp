@@ -16,7 +16,7 @@
 #include <string>
 
 #include "core/model/scene.hpp"
-#include "core/scene/camera_view.hpp"
+#include "core/visual/camera_view.hpp"
 #include "core/simulation/trajectory.hpp"
 #include "ui/frame_overlay.hpp"
 

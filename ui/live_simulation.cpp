@@ -53,9 +53,10 @@ void LiveSimulation::start() {
         result->request = request;
         result->scene = scene;
         try {
-            result->simulation = ll::simulate(*scene, settings, {}, cancel.get());
+            PreparedScene prepared = prepareScene(*scene);  // the scene's expressions compiled once
+            result->simulation = ll::simulate(std::move(prepared.simulation), settings, {}, cancel.get());
             if (cancel->load()) return;
-            result->visual = std::make_shared<VisualScene>(*scene);
+            result->visual = std::make_shared<VisualScene>(*scene, std::move(prepared.bodies));
             if (result->simulation.trajectory.size() > 0) result->visual->fitToMotion(result->simulation.trajectory);
             if (result->simulation.status == SimulationStatus::Failed) result->error = result->simulation.message;
         } catch (const InputError& e) {

@@ -17,7 +17,7 @@
 #include <QTimer>
 
 #include "core/model/scene.hpp"
-#include "core/scene/visual_scene.hpp"
+#include "core/visual/visual_scene.hpp"
 #include "core/simulation/trajectory.hpp"
 
 namespace ll::ui {

@@ -15,7 +15,7 @@
 #include <QStringList>
 #include <QTimer>
 
-#include "core/scene/trajectory_sampler.hpp"
+#include "core/visual/trajectory_sampler.hpp"
 #include "ui/live_derivation.hpp"
 #include "ui/edit_frame.hpp"
 #include "ui/live_simulation.hpp"

@@ -13,8 +13,8 @@
 #include <osg/MatrixTransform>
 #include <osg/Switch>
 
-#include "core/scene/camera_view.hpp"
-#include "core/scene/visual_scene.hpp"
+#include "core/visual/camera_view.hpp"
+#include "core/visual/visual_scene.hpp"
 
 namespace ll::ui {
 

@@ -7,7 +7,7 @@
 // or the status line, is composed through OpenGL (13 ms for a label under llvmpipe at
 // 1280×800, 0.7 ms with the GL view in its own native window, measured side by side),
 // which doubled the time from an edit to its frame. Left drag orbits, right or middle drag
-// pans, the wheel zooms; fit and the standard views of core/scene/camera_view. Hovering
+// pans, the wheel zooms; fit and the standard views of core/visual/camera_view. Hovering
 // or clicking a joint reports it; highlightJoint lights one up.
 #include <memory>
 #include <vector>
@@ -17,8 +17,8 @@
 #include <QWidget>
 #include <osg/ref_ptr>
 
-#include "core/scene/camera_view.hpp"
-#include "core/scene/visual_scene.hpp"
+#include "core/visual/camera_view.hpp"
+#include "core/visual/visual_scene.hpp"
 #include "ui/osg_scene.hpp"
 
 class QWindow;

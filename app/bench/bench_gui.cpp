@@ -32,7 +32,8 @@
 #include "app/offscreen_gui.hpp"
 #include "app/scene_loading.hpp"
 #include "core/pipeline/scene_simulation.hpp"
-#include "core/scene/trajectory_sampler.hpp"
+#include "core/pipeline/scene_visual.hpp"
+#include "core/visual/trajectory_sampler.hpp"
 #include "ui/joint_table_model.hpp"
 #include "ui/derivation_view.hpp"
 #include "ui/main_window.hpp"
@@ -161,7 +162,7 @@ void derivationOnScreen(const std::string& path, int runs) {
 void frameRate(const std::string& path, int runs) {
     const Scene scene = loadSceneReportingWarnings(path);
     const SimulationResult result = ll::simulate(scene);
-    auto visual = std::make_shared<VisualScene>(scene);
+    auto visual = std::make_shared<VisualScene>(visualScene(scene));
     visual->fitToMotion(result.trajectory);
     const TrajectorySampler sampler(result.trajectory);
     ui::SceneView view;

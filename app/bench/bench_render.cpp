@@ -21,8 +21,9 @@
 #include "app/commands.hpp"
 #include "app/offscreen_gui.hpp"
 #include "app/scene_loading.hpp"
-#include "core/scene/trajectory_sampler.hpp"
-#include "core/scene/visual_scene.hpp"
+#include "core/visual/trajectory_sampler.hpp"
+#include "core/pipeline/scene_visual.hpp"
+#include "core/visual/visual_scene.hpp"
 #include "core/pipeline/scene_simulation.hpp"
 #include "ui/animation_export.hpp"
 #include "core/io/data_directory.hpp"
@@ -44,7 +45,7 @@ double median(std::vector<double> v) {
 
 // Frames per second of `frames` frames of the trajectory (pose + draw [+ read-back]).
 double framesPerSecond(const Scene& scene, const Trajectory& trajectory, int antialiasing, bool readBack, int frames) {
-    VisualScene visual(scene);
+    VisualScene visual = visualScene(scene);
     visual.fitToMotion(trajectory);
     ui::OsgScene graph(visual);
     ui::HeadlessRenderer gl(1280, 720, antialiasing);

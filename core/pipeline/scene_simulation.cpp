@@ -1,6 +1,7 @@
 #include "core/pipeline/scene_simulation.hpp"
 
 #include "core/dynamics/finite_terms.hpp"
+#include "core/symbolic/compiled_body_poses.hpp"
 #include "core/symbolic/compiled_derivation.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/lagrangian_derivation.hpp"
@@ -19,6 +20,12 @@ SimulationInput prepareSimulation(const Scene& scene) {
                 throw InputError({*bad});
     }
     return input;
+}
+
+PreparedScene prepareScene(const Scene& scene) {
+    PreparedScene prepared{prepareSimulation(scene), std::nullopt};
+    if (scene.lagrangian) prepared.bodies = symbolic::compileBodyPoses(scene);
+    return prepared;
 }
 
 SimulationResult simulate(const Scene& scene, const SimulationSettings& settings, const ProgressCallback& progress,

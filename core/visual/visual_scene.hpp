@@ -15,16 +15,19 @@
 //     to the mass; the end effector: a small sphere at o_n; a pedestal disc behind the
 //     first joint; a triad per DH frame 0..n.
 // A Lagrangian scene draws its own `bodies` (box, sphere, cylinder, rod), posed by
-// their compiled expressions of q and t, and the world triad.
+// their expressions of q and t compiled beforehand (core/pipeline/scene_visual.hpp: no
+// GiNaC here), and the world triad.
 // Sizes scale with the robot's reach, so a 5 cm pendulum and a 2 m arm both look right.
 // Up is −gravity; with no gravity z, except a Lagrangian scene lying in the x–y plane
 // (a pendulum typed by hand), which gets y up.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <Eigen/Geometry>
 
+#include "core/kinematics/body_poses.hpp"
 #include "core/model/scene.hpp"
 #include "core/simulation/trajectory.hpp"
 
@@ -93,9 +96,10 @@ struct VisualBounds {
 class VisualScene {
 public:
     // Builds the parts of `scene` and poses them at its initial state. A Lagrangian
-    // scene's body expressions are compiled here (under the GiNaC lock); an
-    // expression that does not parse throws InputError naming lagrangian.bodies[i].
-    explicit VisualScene(const Scene& scene);
+    // scene's bodies move by `bodies`, their pose expressions compiled (throws
+    // std::invalid_argument when a Lagrangian scene comes without them, or with another
+    // count); a robot's by its DH table.
+    explicit VisualScene(const Scene& scene, std::optional<BodyPoses> bodies = std::nullopt);
     ~VisualScene();
     VisualScene(VisualScene&&) noexcept;
     VisualScene& operator=(VisualScene&&) noexcept;

@@ -1,12 +1,12 @@
-#include "core/scene/visual_scene.hpp"
+#include "core/visual/visual_scene.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <stdexcept>
 
 #include "core/kinematics/forward_kinematics.hpp"
 #include "core/model/robot_data.hpp"
-#include "core/symbolic/compiled_body_poses.hpp"
 
 namespace ll {
 namespace {
@@ -108,7 +108,7 @@ VisualScene& VisualScene::operator=(VisualScene&&) noexcept = default;
 
 int VisualScene::dof() const { return rig_->n; }
 
-VisualScene::VisualScene(const Scene& scene) : rig_(std::make_unique<Rig>()) {
+VisualScene::VisualScene(const Scene& scene, std::optional<BodyPoses> compiledBodies) : rig_(std::make_unique<Rig>()) {
     using Rule = Rig::Rule;
     Rig& rig = *rig_;
     name = scene.name;
@@ -119,9 +119,11 @@ VisualScene::VisualScene(const Scene& scene) : rig_(std::make_unique<Rig>()) {
     };
 
     if (scene.lagrangian) {
-        rig.bodies = symbolic::compileBodyPoses(scene);  // takes the GiNaC lock
-        rig.bodyPoses.resize(rig.bodies->count());
         const std::vector<VisualBody>& bodies = scene.lagrangian->bodies;
+        if (!compiledBodies || compiledBodies->count() != static_cast<int>(bodies.size()))
+            throw std::invalid_argument("VisualScene: a Lagrangian scene needs its bodies' compiled poses, one per body");
+        rig.bodies = std::move(compiledBodies);
+        rig.bodyPoses.resize(rig.bodies->count());
         for (int b = 0; b < static_cast<int>(bodies.size()); ++b) {
             const VisualBody& body = bodies[b];
             VisualPart part;

@@ -1,4 +1,4 @@
-#include "core/scene/trajectory_sampler.hpp"
+#include "core/visual/trajectory_sampler.hpp"
 
 #include <algorithm>
 #include <cassert>

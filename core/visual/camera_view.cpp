@@ -1,4 +1,4 @@
-#include "core/scene/camera_view.hpp"
+#include "core/visual/camera_view.hpp"
 
 #include <algorithm>
 #include <cmath>

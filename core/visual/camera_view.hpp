@@ -15,7 +15,7 @@
 
 #include <Eigen/Core>
 
-#include "core/scene/visual_scene.hpp"
+#include "core/visual/visual_scene.hpp"
 
 namespace ll {
 
