@@ -28,11 +28,12 @@ def slug(heading):
 
 def anchors(page):
     seen, out = {}, set()
-    for line in strip_code(page.read_text(encoding="utf-8")).splitlines():
+    text = re.sub(r"^```.*?^```", "", page.read_text(encoding="utf-8"), flags=re.S | re.M)
+    for line in text.splitlines():
         m = re.match(r"#{1,6}\s+(.*?)\s*#*\s*$", line)
         if not m:
             continue
-        base = slug(m.group(1))
+        base = slug(m.group(1).replace("`", ""))
         n = seen.get(base, 0)
         out.add(base if n == 0 else f"{base}-{n}")
         seen[base] = n + 1
