@@ -35,12 +35,6 @@ std::size_t identifierPosition(const std::string& text, const std::string& name)
     return 0;
 }
 
-std::string formatDouble(double value) {
-    std::ostringstream out;
-    out << value;
-    return out.str();
-}
-
 // GiNaC reports "parse error at line 0, column 0: <what>\n[<function>]"; keep <what>.
 std::string parseErrorReason(const std::string& what) {
     std::string reason = what;
