@@ -28,6 +28,7 @@ DerivedDocument deriveInForm(const Scene& scene, const DocumentRequest& request,
     const auto printing = std::chrono::steady_clock::now();
     out.display = structuredDisplayDocument(s, reason, request.firstStep, request.lastStep, request.cancel);
     out.printSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - printing).count();
+    if (request.catalogue) out.catalogue = structuredCatalogue(scene, s, *out.display);
     out.timings.push_back({0, "structured derivation (steps 1-8)", s.seconds});
     return out;
 }

@@ -50,6 +50,7 @@ DerivedDocument deriveDocument(const Scene& scene, const DocumentRequest& reques
         auto display = present::displayDocument(d, request.cancel, request.forPages);
         display->form = request.form.form;
         display->formReason = request.form.reason;
+        if (request.catalogue) out.catalogue = expandedCatalogue(scene, d, *display);
         out.display = std::move(display);
     } else {
         out.document = present::derivationDocument(d, request.format, modeName(request.mode), request.form);

@@ -11,6 +11,7 @@
 
 #include "core/model/cancellation.hpp"
 #include "core/model/scene.hpp"
+#include "core/pipeline/entry_catalogue.hpp"
 #include "core/present/derivation_document.hpp"
 #include "core/symbolic/symbolic_robot.hpp"
 
@@ -27,6 +28,9 @@ struct DocumentRequest {
     bool forPages = false;
     // the form the document says it is (derivation_forms.hpp, display_derivation.hpp)
     present::FormNote form;
+    // for format Display: also trace and compile the entries the document shows, for
+    // picking them (entry_catalogue.hpp)
+    bool catalogue = false;
 };
 
 struct StepTiming {
@@ -41,6 +45,7 @@ struct DerivedDocument {
     std::vector<StepTiming> timings;  // of the shown steps
     double printSeconds = 0.0;        // shaping and rendering the document
     std::vector<std::string> warnings;
+    std::shared_ptr<const EntryCatalogue> catalogue;  // when asked for (request.catalogue)
 };
 
 // "parameters", "numeric" or "symbolic" (the CLI's names, recorded in JSON).

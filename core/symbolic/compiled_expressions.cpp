@@ -41,6 +41,9 @@ public:
         }
     }
 
+    // `symbol` stands for the register of `value` from now on.
+    void define(const GiNaC::ex& symbol, const GiNaC::ex& value) { memo_[symbol] = compile(value); }
+
     int compile(const GiNaC::ex& e) {
         if (const auto found = memo_.find(e); found != memo_.end()) return found->second;
         const int r = build(e);
@@ -217,7 +220,13 @@ private:
 };
 
 ExpressionTape compileExpressions(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::symbol>& inputs) {
+    return compileExpressions(outputs, inputs, {});
+}
+
+ExpressionTape compileExpressions(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::symbol>& inputs,
+                                  const std::vector<TapeDefinition>& definitions) {
     TapeBuilder builder(inputs);
+    for (const TapeDefinition& d : definitions) builder.define(d.symbol, d.value);
     std::vector<int> registers;
     for (const GiNaC::ex& e : outputs) registers.push_back(builder.compile(e));
     return builder.finish(std::move(registers));

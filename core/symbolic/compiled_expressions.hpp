@@ -29,4 +29,13 @@ namespace ll::symbolic {
 // the GiNaC lock held (ginac_lock.hpp).
 ExpressionTape compileExpressions(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::symbol>& inputs);
 
+// A named quantity: `symbol` stands for `value` in later definitions and in the outputs
+// (the structured form's table of names, c_i for cos q_i), computed once, in order.
+struct TapeDefinition {
+    GiNaC::ex symbol;
+    GiNaC::ex value;
+};
+ExpressionTape compileExpressions(const std::vector<GiNaC::ex>& outputs, const std::vector<GiNaC::symbol>& inputs,
+                                  const std::vector<TapeDefinition>& definitions);
+
 }  // namespace ll::symbolic

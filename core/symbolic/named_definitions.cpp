@@ -39,13 +39,13 @@ NamedDefinitions::NamedDefinitions(const TrigContext& tc) : tc_(tc) {
 }
 
 GiNaC::ex NamedDefinitions::name(const GiNaC::ex& e, const std::string& plain, const std::string& latex,
-                                 const std::string& meaning, int step) {
+                                 const std::string& meaning, int step, int link, const std::string& unit) {
     throwIfCancelled(cancel_);
     const GiNaC::ex value = tc_.reduce(e);
     if (value.is_zero() || isAtomic(value)) return value;
     if (const auto it = byValue_.find(value); it != byValue_.end()) return entries_[it->second].symbol;
     if (const auto it = byValue_.find((-value).expand()); it != byValue_.end()) return -entries_[it->second].symbol;
-    NamedDefinition d{sharedSymbol(plain), plain, value, latex, meaning, step, dependenciesOf(value), coordinatesOf(value)};
+    NamedDefinition d{sharedSymbol(plain), plain, value, latex, meaning, step, link, unit, dependenciesOf(value), coordinatesOf(value)};
     const int index = size();
     byValue_.emplace(value, index);
     bySymbol_.emplace(d.symbol, index);

@@ -32,6 +32,8 @@ struct NamedDefinition {
     std::string latex;              // "{}^{4}z_{2,x}"
     std::string meaning;            // "x of axis z_2 (joint 3) in the frame of link 4"
     int step = 0;                   // the step of the course notes where it arises (1..8)
+    int link = -1;                  // the link (0-based) whose quantity it is (β_jk⁽ⁱ⁾, J_P,j⁽ⁱ⁾, its frames); -1: none
+    std::string unit;               // SI, "" when dimensionless: "m" for an origin, "kg·m²" for β between revolute joints
     std::vector<int> dependencies;  // indices of the earlier entries its value uses
     std::uint64_t coordinates = 0;  // bit k set: depends on q_{k+1} (directly or through names)
 };
@@ -46,9 +48,9 @@ public:
 
     // e reduced; returned as it is when it is zero, a number, a symbol or number·symbol;
     // the entry's symbol (or its negative) when e (or −e) was named before; else a new
-    // entry named `plain`.
+    // entry named `plain`, of `link` (−1: none), in `unit`.
     GiNaC::ex name(const GiNaC::ex& e, const std::string& plain, const std::string& latex, const std::string& meaning,
-                   int step);
+                   int step, int link = -1, const std::string& unit = "");
 
     const std::vector<NamedDefinition>& entries() const { return entries_; }
     int size() const { return static_cast<int>(entries_.size()); }
