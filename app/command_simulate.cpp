@@ -1,7 +1,9 @@
 // `lagrangelab simulate SCENE [--duration T] [--integrator NAME] [--abs-tol X]
-// [--rel-tol X] [--dt X] [--output-rate HZ] [--out FILE.csv|FILE.json]`.
+// [--rel-tol X] [--dt X] [--output-rate HZ] [--out FILE.csv|FILE.json]`: the trajectory,
+// its energies and where the torque goes (core/simulation/torque_parts.hpp) per sample.
 #include <cstdio>
 #include <iostream>
+#include <optional>
 
 #include <unistd.h>
 
@@ -14,6 +16,8 @@
 #include "core/simulation/scene_validation.hpp"
 #include "core/pipeline/scene_simulation.hpp"
 #include "core/model/actuation.hpp"
+#include "core/dynamics/forward_dynamics.hpp"
+#include "core/simulation/torque_parts.hpp"
 
 namespace ll::cli {
 namespace {
@@ -72,13 +76,26 @@ int simulateCommand(const Args& args) {
     requireValidSceneFrom(scene, options.positional()[0]);  // the command-line values too
 
     ProgressBar bar(::isatty(STDERR_FILENO) && settings.duration > 0);
-    const SimulationResult result = simulate(scene, settings, [&](double f) { bar(f); });
+    const SimulationInput input = prepareSimulation(scene);
+    const SimulationResult result = ll::simulate(input, settings, [&](double f) { bar(f); });
     bar(1.0);
+    // Where the torque goes, as more columns; none when B is singular somewhere on the run
+    // (the simulation then stopped there and says so).
+    std::optional<TorqueHistory> torques;
+    try {
+        torques = torqueHistory(input, result.trajectory);
+    } catch (const SingularMassMatrix&) {
+    }
+    const TorqueColumns columns = torques ? torqueColumns(scene, *torques) : TorqueColumns{};
     if (options.has("out"))
-        saveTrajectory(result, options.text("out"));
+        saveTrajectory(result, options.text("out"), columns);
     else
-        writeTrajectoryCsv(result.trajectory, std::cout);
+        writeTrajectoryCsv(result.trajectory, std::cout, columns);
     printSummary(scene, settings, result);
+    if (torques)
+        std::fprintf(stderr, "torques: largest |B qdd + C qd + g - Q| = %.3g (%.3g of the largest term, %.3g)\n",
+                     torques->largestResidual, torques->scale > 0 ? torques->largestResidual / torques->scale : 0.0,
+                     torques->scale);
     if (result.status == SimulationStatus::Failed) {
         std::fprintf(stderr, "error: simulation stopped: %s\n", result.message.c_str());
         return 3;

@@ -11,7 +11,7 @@ struct CommandText {
     const char* summary;
 };
 
-constexpr std::array<CommandText, 9> commands{{
+constexpr std::array<CommandText, 10> commands{{
     {"eval", "SCENE --q v1,... --qd v1,... [--t T] [--tau v1,...]",
      "B, C, g, Q, q̈, E_kin, E_pot at one state, as JSON"},
     {"simulate",
@@ -31,6 +31,9 @@ constexpr std::array<CommandText, 9> commands{{
      "[--camera front|side|top|iso|az,el[,dist]] [--speed X] [--overlay time,energy,name|none]\n"
      "[--trail on|off] [--frames on|off] [--at T] [--msaa auto|edges|0|2|4|8]",
      "simulate and render the 3D scene headless (no X server needed) to a video, a still or PNG frames"},
+    {"check", "SCENE [--duration T] [--format text|json]",
+     "the model's properties along a simulated run: B positive definite and its condition, Ḃ − 2C\n"
+     "skew, power balance, Newton–Euler against B q̈ + C q̇ + g, energy; exit 1 when one fails"},
     {"integrators", "", "the integrators with order, kind and when to use each"},
     {"accuracy",
      "SCENE [--integrators a,b,...] [--tolerances 1e-3..1e-12] [--steps dt1,dt2,...] [--duration T]\n"

@@ -23,6 +23,7 @@ int accuracyCommand(const Args& args);
 int deriveCommand(const Args& args);
 int renderCommand(const Args& args);
 int codegenCommand(const Args& args);
+int checkCommand(const Args& args);
 // The painting parts: each starts Qt (offscreen without a display) for its own work.
 // derive --format pdf|svg|png: the typeset pages of a display document (app/derive_pages.cpp).
 int writeDerivationPages(const present::DisplayDocument& display, const std::string& format, const std::string& outPath,

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/io/atomic_file.hpp"
+#include "core/model/quantity_units.hpp"
 
 namespace ll {
 
@@ -24,13 +25,45 @@ std::string velocityName(const Trajectory& tr, int i) {
     return q == indexed("q", i) ? indexed("qd", i) : q + "_dot";
 }
 
+// The torque columns' stems and values, in the order written.
+struct TorquePart {
+    const char* stem;
+    Eigen::VectorXd (*value)(const TorqueParts&);
+};
+const TorquePart kTorqueParts[] = {
+    {"tau_inertial_", [](const TorqueParts& p) { return p.inertial; }},
+    {"tau_coriolis_", [](const TorqueParts& p) { return p.coriolis; }},
+    {"tau_potential_", [](const TorqueParts& p) { return p.potential; }},
+    {"Q_", [](const TorqueParts& p) { return p.Q(); }},
+    {"Q_actuation_", [](const TorqueParts& p) { return p.actuation; }},
+    {"Q_viscous_", [](const TorqueParts& p) { return p.viscous; }},
+    {"Q_coulomb_", [](const TorqueParts& p) { return p.coulomb; }},
+};
+
+std::string withUnit(const std::string& name, const std::string& unit) {
+    return unit.empty() ? name : name + " [" + unit + "]";
+}
+
 }  // namespace
 
-void writeTrajectoryCsv(const Trajectory& tr, std::ostream& out) {
+TorqueColumns torqueColumns(const Scene& scene, const TorqueHistory& history) {
+    TorqueColumns columns;
+    columns.history = &history;
+    for (int j = 0; j < scene.dof(); ++j)
+        columns.units.push_back(scene.lagrangian ? ""
+                                                 : forceUnit(scene.robot.joints[j].dh.type == JointType::Revolute));
+    return columns;
+}
+
+void writeTrajectoryCsv(const Trajectory& tr, std::ostream& out, const TorqueColumns& torques) {
     out << "t";
     for (int i = 0; i < tr.n; ++i) out << ',' << tr.coordinateName(i);
     for (int i = 0; i < tr.n; ++i) out << ',' << velocityName(tr, i);
-    out << ",Ekin,Epot,E,W\n";
+    out << ",Ekin,Epot,E,W";
+    if (torques.history)
+        for (const TorquePart& part : kTorqueParts)
+            for (int i = 0; i < tr.n; ++i) out << ',' << withUnit(indexed(part.stem, i), torques.units.at(i));
+    out << '\n';
     char buffer[32];
     const auto put = [&](double v) {
         std::snprintf(buffer, sizeof buffer, "%.17g", v);
@@ -44,11 +77,16 @@ void writeTrajectoryCsv(const Trajectory& tr, std::ostream& out) {
         out << ',', put(tr.Epot[k]);
         out << ',', put(tr.E[k]);
         out << ',', put(tr.work[k]);
+        if (torques.history)
+            for (const TorquePart& part : kTorqueParts) {
+                const Eigen::VectorXd v = part.value(torques.history->parts.at(k));
+                for (int i = 0; i < tr.n; ++i) out << ',', put(v[i]);
+            }
         out << '\n';
     }
 }
 
-void writeTrajectoryJson(const SimulationResult& result, std::ostream& out) {
+void writeTrajectoryJson(const SimulationResult& result, std::ostream& out, const TorqueColumns& torques) {
     const Trajectory& tr = result.trajectory;
     nlohmann::ordered_json j;
     j["t"] = tr.t;
@@ -66,6 +104,18 @@ void writeTrajectoryJson(const SimulationResult& result, std::ostream& out) {
     j["Epot"] = tr.Epot;
     j["E"] = tr.E;
     j["W"] = tr.work;
+    if (torques.history) {
+        nlohmann::ordered_json units;
+        for (const TorquePart& part : kTorqueParts)
+            for (int i = 0; i < tr.n; ++i) {
+                std::vector<double> column(tr.size());
+                for (size_t k = 0; k < tr.size(); ++k) column[k] = part.value(torques.history->parts.at(k))[i];
+                j[indexed(part.stem, i)] = column;
+                units[indexed(part.stem, i)] = torques.units.at(i);
+            }
+        j["units"] = units;
+        j["largest_residual"] = torques.history->largestResidual;
+    }
     const SimulationStats& s = result.stats;
     j["stats"] = {{"integrator", s.integrator},         {"steps", s.steps},
                   {"rejected_steps", s.rejectedSteps},  {"rhs_evaluations", s.rhsEvaluations},
@@ -83,7 +133,7 @@ void writeTrajectoryJson(const SimulationResult& result, std::ostream& out) {
     out << j.dump(1) << '\n';
 }
 
-void saveTrajectory(const SimulationResult& result, const std::string& path) {
+void saveTrajectory(const SimulationResult& result, const std::string& path, const TorqueColumns& torques) {
     const bool json = path.size() >= 5 && path.compare(path.size() - 5, 5, ".json") == 0;
     const bool csv = path.size() >= 4 && path.compare(path.size() - 4, 4, ".csv") == 0;
     if (!json && !csv) throw std::runtime_error(path + ": output file must end in .csv or .json");
@@ -91,9 +141,9 @@ void saveTrajectory(const SimulationResult& result, const std::string& path) {
         path,
         [&](std::ostream& out) {
             if (json)
-                writeTrajectoryJson(result, out);
+                writeTrajectoryJson(result, out, torques);
             else
-                writeTrajectoryCsv(result.trajectory, out);
+                writeTrajectoryCsv(result.trajectory, out, torques);
         },
         Backup::None);
 }

@@ -4,16 +4,31 @@
 // for a fixed-step method also its step grid and how many samples were interpolated).
 #include <ostream>
 #include <string>
+#include <vector>
 
+#include "core/model/scene.hpp"
+#include "core/simulation/torque_parts.hpp"
 #include "core/simulation/trajectory.hpp"
 
 namespace ll {
 
-void writeTrajectoryCsv(const Trajectory& trajectory, std::ostream& out);
-void writeTrajectoryJson(const SimulationResult& result, std::ostream& out);
+// Where the torque goes along the run (core/simulation/torque_parts.hpp), as more
+// columns: tau_inertial_i (B q̈), tau_coriolis_i (C q̇), tau_potential_i (g), Q_i and its
+// parts Q_actuation_i, Q_viscous_i, Q_coulomb_i, each joint in its unit (N·m or N; ""
+// for a typed Lagrangian's). CSV names carry the unit ("tau_inertial_1 [N·m]"); JSON
+// keys are the plain names with a "units" object beside them.
+struct TorqueColumns {
+    const TorqueHistory* history = nullptr;  // its samples are the trajectory's
+    std::vector<std::string> units;          // (n) per joint
+};
+// The units the columns of a robot scene's run are in (empty strings for a Lagrangian's).
+TorqueColumns torqueColumns(const Scene& scene, const TorqueHistory& history);
+
+void writeTrajectoryCsv(const Trajectory& trajectory, std::ostream& out, const TorqueColumns& torques = {});
+void writeTrajectoryJson(const SimulationResult& result, std::ostream& out, const TorqueColumns& torques = {});
 
 // Chooses the format by extension (.csv or .json) and writes atomically
 // (saveFileAtomically, no .bak). Throws std::runtime_error naming the path.
-void saveTrajectory(const SimulationResult& result, const std::string& path);
+void saveTrajectory(const SimulationResult& result, const std::string& path, const TorqueColumns& torques = {});
 
 }  // namespace ll

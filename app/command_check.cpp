@@ -1,0 +1,116 @@
+// `lagrangelab check SCENE [--duration T] [--format text|json]`: the properties every
+// Euler–Lagrange model has, checked along a simulated run of the scene
+// (core/simulation/model_properties.hpp): each with its worst value, where it occurs,
+// its tolerance and a sentence that says what it means. Exit 0 when every property
+// holds, 1 when one fails, 2 for bad input.
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "app/cli_options.hpp"
+#include "app/command_usage.hpp"
+#include "app/commands.hpp"
+#include "app/scene_loading.hpp"
+#include "core/pipeline/scene_simulation.hpp"
+#include "core/simulation/model_properties.hpp"
+#include "core/simulation/scene_validation.hpp"
+
+namespace ll::cli {
+namespace {
+
+// (0.1, −0.25, 3)
+std::string vectorText(const Eigen::VectorXd& v) {
+    std::string s = "(";
+    char buffer[32];
+    for (int i = 0; i < v.size(); ++i) {
+        std::snprintf(buffer, sizeof buffer, "%s%.4g", i ? ", " : "", v[i]);
+        s += buffer;
+    }
+    return s + ")";
+}
+
+std::string numberText(double v, const std::string& unit) {
+    char buffer[48];
+    std::snprintf(buffer, sizeof buffer, "%.3g", v);
+    return unit.empty() ? buffer : std::string(buffer) + " " + unit;
+}
+
+void printText(const Scene& scene, const SimulationResult& run, const ModelProperties& properties) {
+    std::printf("%s: %.6g s simulated with %s, %zu samples checked\n", scene.name.c_str(), run.stats.simulatedSeconds,
+                run.stats.integrator.c_str(), run.trajectory.size());
+    for (const PropertyCheck& c : properties.checks) {
+        if (!c.applies) {
+            std::printf("  n/a   %s (%s): does not apply to a typed Lagrangian\n", c.title.c_str(), c.key.c_str());
+            continue;
+        }
+        std::printf("  %s  %s\n        %s = %s (%s %s)", c.passed ? "PASS" : "FAIL", c.title.c_str(), c.key.c_str(),
+                    numberText(c.value, c.unit).c_str(), c.atLeast ? "must be above" : "tolerance",
+                    numberText(c.tolerance, c.unit).c_str());
+        if (c.q.size() > 0)
+            std::printf(", worst at t = %.4g s, q = %s", c.time, vectorText(c.q).c_str());
+        std::printf("\n        %s\n", c.explanation.c_str());
+    }
+    if (run.status == SimulationStatus::Failed)
+        std::printf("the simulation stopped early: %s\n", run.message.c_str());
+    std::printf("%s\n", properties.passed() ? "passed: every property holds" : "failed: a property does not hold");
+}
+
+void printJson(const Scene& scene, const SimulationResult& run, const ModelProperties& properties) {
+    nlohmann::ordered_json j;
+    j["scene"] = scene.name;
+    j["simulated_seconds"] = run.stats.simulatedSeconds;
+    j["samples"] = run.trajectory.size();
+    nlohmann::ordered_json details = nlohmann::ordered_json::array();
+    for (const PropertyCheck& c : properties.checks) {
+        // a value that does not apply, or is not finite (B singular), is null
+        j[c.key] = c.applies && std::isfinite(c.value) ? nlohmann::ordered_json(c.value) : nlohmann::ordered_json();
+        nlohmann::ordered_json d;
+        d["key"] = c.key;
+        d["title"] = c.title;
+        d["explanation"] = c.explanation;
+        d["applies"] = c.applies;
+        if (c.applies) {
+            d["value"] = std::isfinite(c.value) ? nlohmann::ordered_json(c.value) : nlohmann::ordered_json();
+            d["tolerance"] = c.tolerance;
+            d["bound"] = c.atLeast ? "above" : "at most";
+            d["unit"] = c.unit;
+            d["passed"] = c.passed;
+            d["time"] = c.time;
+            d["q"] = std::vector<double>(c.q.data(), c.q.data() + c.q.size());
+        }
+        details.push_back(d);
+    }
+    j["passed"] = properties.passed();
+    if (run.status == SimulationStatus::Failed) j["simulation_stopped"] = run.message;
+    j["checks"] = details;
+    std::cout << j.dump(1) << '\n';
+}
+
+}  // namespace
+
+int checkCommand(const Args& args) {
+    const Options options(args, {"duration", "format"});
+    if (options.positional().size() != 1) throw UsageError(usageLine("check"));
+    const std::string format = options.text("format", "text");
+    if (format != "text" && format != "json") throw UsageError("--format: expected text or json, got '" + format + "'");
+    Scene scene = loadSceneReportingWarnings(options.positional()[0]);
+    scene.simulation.duration = options.number("duration", scene.simulation.duration);
+    requireValidSceneFrom(scene, options.positional()[0]);
+    const SimulationInput input = prepareSimulation(scene);
+    const SimulationResult run = ll::simulate(input, scene.simulation);
+    if (run.trajectory.size() == 0) {
+        std::fprintf(stderr, "error: %s: the simulation produced no samples: %s\n", options.positional()[0].c_str(),
+                     run.message.c_str());
+        return 1;
+    }
+    const ModelProperties properties = checkModelProperties(input, run.trajectory);
+    if (format == "json")
+        printJson(scene, run, properties);
+    else
+        printText(scene, run, properties);
+    return properties.passed() && run.status != SimulationStatus::Failed ? 0 : 1;
+}
+
+}  // namespace ll::cli
