@@ -79,7 +79,9 @@ std::string overviewUsage() {
         "       lagrangelab [SCENE] [--screenshot FILE.png [--play SECONDS] [--step N] [--teach q1,q2,...]] [--size WxH]\n"
         "           the window (default scene: examples/double_pendulum.json; 1280x800 unless --size);\n"
         "           with --screenshot it plays, shows a derivation step or poses the robot, saves the\n"
-        "           whole window and exits\n"
+        "           whole window and exits; [--select ENTRY] [--pick-link I] [--at T] [--tab NAME]\n"
+        "           [--joint J] [--derivation typeset|text|entries] picture a picked entry or link, a time,\n"
+        "           the Torques or Properties tab\n"
         "\ncommands:\n";
     for (const CommandText& c : commands) s += "  " + synopsis(c, 2) + "\n" + indented(c.summary, "      ");
     return s + "\nexit codes: 0 success, 2 bad input, 3 simulation stopped early\n";

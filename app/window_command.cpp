@@ -1,6 +1,9 @@
-// `lagrangelab [SCENE] [--screenshot FILE.png [--play SECONDS] [--step N] [--teach q1,...]]`:
-// the desktop window (ui/main_window.hpp).
+// `lagrangelab [SCENE] [--screenshot FILE.png [--play SECONDS] [--step N] [--teach q1,...]
+// [--select ENTRY] [--pick-link I] [--at T] [--tab NAME] [--joint J] [--derivation VIEW]]`:
+// the desktop window (ui/main_window.hpp); the options picture any state from the command line.
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -25,11 +28,15 @@
 #include "ui/main_window.hpp"
 #include "ui/playback_bar.hpp"
 #include "ui/scene_view.hpp"
+#include "ui/torque_pane.hpp"
 
 namespace ll::cli {
 
 int windowCommand(const Args& args, const std::chrono::steady_clock::time_point& processStart) {
-    const Options options(args, {"screenshot", "play", "step", "teach", "size", "first-frame"}, {"first-frame"});
+    const Options options(args,
+                          {"screenshot", "play", "step", "teach", "size", "first-frame", "select", "pick-link", "at", "tab",
+                           "joint", "derivation"},
+                          {"first-frame"});
     if (options.positional().size() > 1) throw UsageError("the window takes one SCENE, got " + std::to_string(options.positional().size()));
     const std::string scene = options.positional().empty() ? (examplesDirectory() / "double_pendulum.json").string() : options.positional()[0];
     const std::string screenshot = options.text("screenshot");
@@ -40,6 +47,15 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
     const double step = options.number("step", -1);
     if (options.has("step") && (step < 0 || step > 9 || step != std::floor(step) || (step == 9 && !options.has("teach"))))
         throw UsageError("--step: " + options.text("step") + " is not a step 0..8 (9, the results at the pose, with --teach)");
+    const double at = options.number("at", 0);
+    if (at < 0) throw UsageError("--at: " + options.text("at") + " is not a time of the run (seconds from its start)");
+    const std::string tab = options.text("tab");
+    static const char* const tabs[] = {"energy", "joints", "teach", "torques", "properties", "work-precision"};
+    if (options.has("tab") && std::find(std::begin(tabs), std::end(tabs), tab) == std::end(tabs))
+        throw UsageError("--tab: expected energy, joints, teach, torques, properties or work-precision, got '" + tab + "'");
+    const std::string derivationView = options.text("derivation", "typeset");
+    if (derivationView != "typeset" && derivationView != "text" && derivationView != "entries")
+        throw UsageError("--derivation: expected typeset, text or entries, got '" + derivationView + "'");
     // The window's size; it is never made smaller than its layout's minimum.
     const PixelSize size = parsePixelSize(options.text("size", "1280x800"));
     if (!hasDisplay())
@@ -79,6 +95,35 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
     // Scripted: wait for the simulation and the derivation, then play, pose or step.
     if (!waitFor([&] { return window.result() && !window.liveDerivation().busy(); }, 120)) {
         std::cerr << "error: " << scene << ": the simulation or derivation did not finish in 120 s\n";
+        return 1;
+    }
+    const int n = window.document().validScene().dof();
+    if (options.has("select") && !window.selectEntry(QString::fromStdString(options.text("select"))))
+        throw UsageError("--select: the derivation of " + scene + " has no entry '" + options.text("select") +
+                         "' (names as the Entries tab lists them: b12, g2, beta23_4, p_c2)");
+    if (options.has("pick-link")) {
+        const double link = options.number("pick-link", 0);
+        if (link < 1 || link > n || link != std::floor(link))
+            throw UsageError("--pick-link: " + options.text("pick-link") + " is not a link 1.." + std::to_string(n));
+        window.pickLink(static_cast<int>(link) - 1);
+    }
+    if (options.has("at")) {
+        const double end = window.playback().endTime();
+        if (at > end + 1e-9)
+            throw UsageError("--at: " + options.text("at") + " s is after the run's end (" + std::to_string(end) + " s)");
+        window.playback().pause();
+        window.playback().setTime(at);
+    }
+    if (options.has("tab")) window.showPlotTab(QString::fromStdString(tab));
+    if (options.has("joint")) {
+        const double joint = options.number("joint", 1);
+        if (joint < 1 || joint > n || joint != std::floor(joint))
+            throw UsageError("--joint: " + options.text("joint") + " is not a joint 1.." + std::to_string(n));
+        window.torquePane().setJoint(static_cast<int>(joint) - 1);
+    }
+    window.showDerivationView(QString::fromStdString(derivationView));
+    if ((tab == "torques" || tab == "properties") && !waitFor([&] { return window.analysis() != nullptr; }, 120)) {
+        std::cerr << "error: " << scene << ": the run's torques and properties did not come in 120 s\n";
         return 1;
     }
     if (options.has("teach")) {

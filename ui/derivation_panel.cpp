@@ -2,6 +2,7 @@
 
 #include <QFontDatabase>
 #include <QLabel>
+#include <QMouseEvent>
 #include <QPlainTextEdit>
 #include <QRegularExpression>
 #include <QScrollBar>
@@ -24,6 +25,79 @@ DerivationPanel::DerivationPanel(QWidget* parent) : QWidget(parent) {
     view_->setFont(font);
     layout->addWidget(status_);
     layout->addWidget(view_, 1);
+    view_->viewport()->installEventFilter(this);
+}
+
+namespace {
+
+// Terminal columns before position `at` of a line (a combining dot takes none).
+int columnAt(const QString& line, int at) {
+    int columns = 0;
+    for (int i = 0; i < at && i < line.size(); ++i) {
+        const QChar c = line[i];
+        if (c.isLowSurrogate() || c.category() == QChar::Mark_NonSpacing) continue;
+        ++columns;
+    }
+    return columns;
+}
+
+// The position in `line` of terminal column `column`.
+int positionOf(const QString& line, int column) {
+    int columns = 0, i = 0;
+    for (; i < line.size() && columns < column; ++i) {
+        const QChar c = line[i];
+        if (c.isLowSurrogate() || c.category() == QChar::Mark_NonSpacing) continue;
+        ++columns;
+    }
+    while (i < line.size() && (line[i].isLowSurrogate() || line[i].category() == QChar::Mark_NonSpacing)) ++i;
+    return i;
+}
+
+}  // namespace
+
+bool DerivationPanel::eventFilter(QObject* watched, QEvent* event) {
+    if (watched == view_->viewport() && event->type() == QEvent::MouseButtonRelease) {
+        const auto* mouse = static_cast<QMouseEvent*>(event);
+        if (mouse->button() == Qt::LeftButton && !view_->textCursor().hasSelection()) {
+            const QTextCursor cursor = view_->cursorForPosition(mouse->position().toPoint());
+            const int line = cursor.blockNumber(), column = columnAt(cursor.block().text(), cursor.positionInBlock());
+            for (const present::TextSpan& s : spans_)
+                if (s.line == line && column >= s.from && column < s.to) {
+                    emit entryPicked(s.step, s.item, s.row, s.col);
+                    break;
+                }
+        }
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
+void DerivationPanel::setMarks(const std::vector<EntryMark>& marks) {
+    QList<QTextEdit::ExtraSelection> selections;
+    for (const EntryMark& m : marks)
+        for (const present::TextSpan& s : spans_) {
+            if (s.step != m.step || s.item != m.item || (m.row >= 0 && (s.row != m.row || s.col != m.col))) continue;
+            const QTextBlock block = view_->document()->findBlockByNumber(s.line);
+            if (!block.isValid()) continue;
+            QTextEdit::ExtraSelection selection;
+            selection.format.setBackground(m.colour);
+            selection.cursor = QTextCursor(block);
+            selection.cursor.setPosition(block.position() + positionOf(block.text(), s.from));
+            selection.cursor.setPosition(block.position() + positionOf(block.text(), std::min<int>(s.to, 1 << 16)),
+                                         QTextCursor::KeepAnchor);
+            selections.append(selection);
+        }
+    view_->setExtraSelections(selections);
+}
+
+void DerivationPanel::showItem(int step, int item) {
+    for (const present::TextSpan& s : spans_)
+        if (s.step == step && s.item == item) {
+            const QTextBlock block = view_->document()->findBlockByNumber(s.line);
+            if (!block.isValid()) return;
+            view_->setTextCursor(QTextCursor(block));
+            view_->ensureCursorVisible();
+            return;
+        }
 }
 
 void DerivationPanel::setDeriving() {
@@ -43,6 +117,7 @@ void DerivationPanel::setDerivation(const DerivationResult& result) {
         status_->setText(tr("Derived in %1 ms").arg(result.seconds * 1000, 0, 'f', 0));
         const int bar = view_->verticalScrollBar()->value();
         view_->setPlainText(result.text);
+        spans_ = result.textSpans;
         view_->verticalScrollBar()->setValue(bar);
         if (step_ > 0) showStep(step_);
     }

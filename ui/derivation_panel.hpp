@@ -3,7 +3,12 @@
 // copyable, beside the typeset ll::ui::DerivationView. It derives nothing itself: the
 // window's one derivation worker (ui/live_derivation) hands it the text rendered from
 // the same display trees the typeset tab shows.
+#include <vector>
+
 #include <QWidget>
+
+#include "core/present/text_document.hpp"
+#include "ui/entry_mark.hpp"
 
 class QPlainTextEdit;
 class QLabel;
@@ -27,6 +32,11 @@ public:
     int step() const { return step_; }
     void setZoom(double factor);
 
+    // The picked entry and a picked link's entries, tinted (ui/entry_mark.hpp).
+    void setMarks(const std::vector<EntryMark>& marks);
+    // Scrolls to the first line of item `item` of document step `step`.
+    void showItem(int step, int item);
+
     // What is shown (tests), and whether a derivation is still running.
     QString text() const;
     bool busy() const { return busy_; }
@@ -39,9 +49,15 @@ signals:
     void stepChanged(int step);
     // A derivation finished and is shown.
     void derived();
+    // A click on an item (row = col = −1) or on one entry of its matrix.
+    void entryPicked(int step, int item, int row, int col);
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
     QPlainTextEdit* view_;
+    std::vector<present::TextSpan> spans_;
     QLabel* status_;
     bool busy_ = false;
     int step_ = 0;

@@ -14,6 +14,7 @@
 #include <QScrollArea>
 #include <QVBoxLayout>
 #include <algorithm>
+#include <functional>
 
 #include "core/model/cancellation.hpp"
 #include "core/pipeline/display_derivation.hpp"
@@ -36,9 +37,22 @@ static QString shownName(const present::DisplayItem& item) {
 // Lines are typeset on first paint and kept until the zoom or the width changes.
 class DerivationCanvas : public QWidget {
 public:
+    // An item (row < 0) or one cell of its matrix to draw a tinted background behind.
+    struct Mark {
+        int item = 0, row = -1, col = -1;
+        QColor colour;
+    };
+    std::function<void(int item, int row, int col)> picked;  // a click on an item or one of its cells
+
     explicit DerivationCanvas(QWidget* parent) : QWidget(parent) {
+        setObjectName("derivation-canvas");
         setBackgroundRole(QPalette::Base);
         setAutoFillBackground(true);
+    }
+
+    void setMarks(std::vector<Mark> marks) {
+        marks_ = std::move(marks);
+        update();
     }
 
     void show(const present::DisplayStep* step, double zoom) {
@@ -108,6 +122,11 @@ protected:
             Entry& e = entries_[i];
             const present::DisplayItem& item = step_->items[i];
             e.headerTop = y;
+            e.lineTops.clear();
+            // The item picked (or a link's marked entries): a tinted band behind it.
+            if (!e.collapsed) ensureLines(e, item);
+            for (const Mark& m : marks_)
+                if (m.item == static_cast<int>(i) && m.row < 0) p.fillRect(QRectF(2, y, width() - 4, itemHeight(e, fm)), m.colour);
             p.setPen(palette().color(QPalette::Link));
             const QString head = (e.collapsed ? QString::fromUtf8("▸ ") : QString::fromUtf8("▾ ")) + shownName(item);
             p.drawText(QPointF(margin, y + fm.ascent()), head);
@@ -123,8 +142,15 @@ protected:
             p.setPen(palette().color(QPalette::Text));
             for (const MathBox& line : e.lines) {
                 const double top = y, bottom = y + line.height() * s;
+                e.lineTops.push_back(top);
+                const QPointF origin(margin + indent, y + line.ascent * s);
+                for (const Mark& m : marks_)  // a picked or marked cell of a matrix
+                    if (m.item == static_cast<int>(i) && m.row >= 0)
+                        for (const MathRegion& r : line.regions)
+                            if (r.row == m.row && r.col == m.col)
+                                p.fillRect(QRectF(origin + r.rect.topLeft() * s, r.rect.size() * s), m.colour);
                 if (bottom >= event->rect().top() && top <= event->rect().bottom())  // paint only what is exposed
-                    paintMath(p, line, QPointF(margin + indent, y + line.ascent * s), s);
+                    paintMath(p, line, origin, s, true);  // each link's parameters in its colour
                 y = bottom + 0.35 * mathUnitsPerEm * s;
             }
             y += 0.4 * mathUnitsPerEm * s;
@@ -132,12 +158,31 @@ protected:
         if (std::abs(y + margin - minimumHeight()) > 1) setMinimumHeight(static_cast<int>(y + margin));
     }
 
+    // A click on an item's triangle collapses or opens it; on its name or its formula it
+    // picks the item, or the entry of its matrix under the pointer.
     void mousePressEvent(QMouseEvent* event) override {
-        const int index = headerAt(event->position().y());
-        if (index >= 0 && event->button() == Qt::LeftButton) {
-            entries_[static_cast<std::size_t>(index)].collapsed = !entries_[static_cast<std::size_t>(index)].collapsed;
+        if (event->button() != Qt::LeftButton) return;
+        const QPointF at = event->position();
+        const int header = headerAt(at.y());
+        if (header >= 0 && at.x() < margin + QFontMetricsF(font()).horizontalAdvance(QString::fromUtf8("▾ "))) {
+            entries_[static_cast<std::size_t>(header)].collapsed = !entries_[static_cast<std::size_t>(header)].collapsed;
             update();
+            return;
         }
+        const int index = itemAt(at.y());
+        if (index < 0 || !picked) return;
+        const Entry& e = entries_[static_cast<std::size_t>(index)];
+        const double s = scale();
+        for (std::size_t l = 0; header < 0 && l < e.lines.size() && l < e.lineTops.size(); ++l) {
+            const MathBox& line = e.lines[l];
+            const QPointF origin(margin + indent, e.lineTops[l] + line.ascent * s);
+            for (const MathRegion& r : line.regions)
+                if (QRectF(origin + r.rect.topLeft() * s, r.rect.size() * s).contains(at)) {
+                    picked(index, r.row, r.col);
+                    return;
+                }
+        }
+        picked(index, -1, -1);
     }
 
     void contextMenuEvent(QContextMenuEvent* event) override {
@@ -153,8 +198,18 @@ private:
     struct Entry {
         bool collapsed = false;
         std::vector<MathBox> lines;
+        std::vector<double> lineTops;  // where each line was painted last
         double headerTop = 0;
     };
+    std::vector<Mark> marks_;
+
+    // From the header to below the last line (its lines as laid out last, if any).
+    double itemHeight(const Entry& e, const QFontMetricsF& fm) const {
+        double h = fm.height() * 1.1;
+        if (e.collapsed) return h;
+        for (const MathBox& line : e.lines) h += (line.height() + 0.35 * mathUnitsPerEm) * scale();
+        return h;
+    }
     static constexpr double margin = 12, indent = 18;
     const present::DisplayStep* step_ = nullptr;
     std::vector<Entry> entries_;
@@ -220,6 +275,7 @@ DerivationView::DerivationView(QWidget* parent) : QWidget(parent) {
     scroll_ = new QScrollArea(this);
     scroll_->setWidgetResizable(true);
     canvas_ = new DerivationCanvas(scroll_);
+    canvas_->picked = [this](int item, int row, int col) { emit entryPicked(step_ == 9 ? -1 : shownIndex_, item, row, col); };
     scroll_->setWidget(canvas_);
     layout_->addWidget(scroll_, 1);
     connect(steps_, &QListWidget::currentRowChanged, this, [this](int row) {
@@ -316,10 +372,16 @@ void DerivationView::accept(int generation, std::shared_ptr<const present::Displ
 
 void DerivationView::refresh() {
     const present::DisplayStep* shown = step_ == 9 ? pose_.get() : nullptr;
+    shownIndex_ = -1;
     if (document_ && !shown)
-        for (const present::DisplayStep& s : document_->steps)
-            if (s.number == step_) shown = &s;
+        for (std::size_t i = 0; i < document_->steps.size(); ++i)
+            if (document_->steps[i].number == step_) {
+                shown = &document_->steps[i];
+                shownIndex_ = static_cast<int>(i);
+                break;
+            }
     canvas_->show(shown, zoom_);
+    setMarks(marks_);
     previous_->setEnabled(step_ > 0);
     next_->setEnabled(step_ < lastStep());
 }
@@ -350,6 +412,19 @@ void DerivationView::previousStep() { showStep(step_ - 1); }
 void DerivationView::setZoom(double zoom) {
     zoom_ = std::clamp(zoom, 0.25, 8.0);
     canvas_->setZoom(zoom_);
+}
+
+void DerivationView::setMarks(std::vector<Mark> marks) {
+    marks_ = std::move(marks);
+    std::vector<DerivationCanvas::Mark> here;
+    for (const Mark& m : marks_)
+        if (m.step == shownIndex_ && (shownIndex_ >= 0 || step_ == 9)) here.push_back({m.item, m.row, m.col, m.colour});
+    canvas_->setMarks(std::move(here));
+}
+
+void DerivationView::showDocumentStep(int stepIndex) {
+    if (document_ && stepIndex >= 0 && stepIndex < static_cast<int>(document_->steps.size()))
+        showStep(document_->steps[static_cast<std::size_t>(stepIndex)].number);
 }
 
 QString DerivationView::itemLatex(int index) const { return canvas_->latex(index); }

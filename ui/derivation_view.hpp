@@ -7,6 +7,7 @@
 // the newest call wins, stale work is cancelled, and the result (plain display trees, no
 // GiNaC) comes back through a queued call, so the window never waits on a large robot.
 // Only the shown step is typeset, lazily and cached per zoom and width.
+#include <QColor>
 #include <QWidget>
 #include <atomic>
 #include <memory>
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "core/model/scene.hpp"
+#include "ui/entry_mark.hpp"
 #include "core/present/derivation_document.hpp"
 
 class QBoxLayout;
@@ -57,6 +59,12 @@ public:
     QString itemLatex(int index) const;
     // Item `index`'s header (and the name in its Copy menu): b11, g(q), equation 1.
     QString itemTitle(int index) const;
+    // Tinted backgrounds: the picked entry, a picked link's entries in its colour. Steps
+    // are indices into the document's steps (−1: the pose results); row < 0 the whole item.
+    using Mark = EntryMark;
+    void setMarks(std::vector<Mark> marks);
+    // Shows the step holding document step `stepIndex`'s items.
+    void showDocumentStep(int stepIndex);
 
 public slots:
     void nextStep();
@@ -67,6 +75,9 @@ public slots:
 signals:
     void stepChanged(int step);
     void derivationFinished();  // a new document (or error) is shown
+    // A click on item `item` of document step `step` (−1: the pose results), on its cell
+    // (row, col) of a matrix or on the item (−1, −1).
+    void entryPicked(int step, int item, int row, int col);
 
 protected:
     void resizeEvent(QResizeEvent* event) override;
@@ -96,6 +107,8 @@ private:
     double zoom_ = 1.0;
     bool deriving_ = false;
     QString error_;
+    std::vector<Mark> marks_;
+    int shownIndex_ = -1;  // the document step shown (−1: none, or the pose results)
 };
 
 }  // namespace ll::ui

@@ -5,7 +5,9 @@
 
 #include <QBrush>
 #include <QColor>
+#include <QPixmap>
 
+#include "core/visual/link_colors.hpp"
 #include "core/model/diagnostics.hpp"
 
 namespace ll::ui {
@@ -107,6 +109,13 @@ bool JointTableModel::setData(const QModelIndex& index, const QVariant& value, i
 }
 
 QVariant JointTableModel::headerData(int section, Qt::Orientation orientation, int role) const {
+    if (orientation == Qt::Vertical && role == Qt::DecorationRole) {
+        // the row's link in its colour, as in the 3D view and on its symbols in the formulas
+        const Rgba c = linkColor(section);
+        QPixmap swatch(12, 12);
+        swatch.fill(QColor(int(c.r * 255), int(c.g * 255), int(c.b * 255)));
+        return swatch;
+    }
     if (role != Qt::DisplayRole) return {};
     if (orientation == Qt::Vertical) return tr("joint %1").arg(section + 1);
     const QString angle = degrees_ ? tr("[°]") : tr("[rad]");

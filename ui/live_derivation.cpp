@@ -1,5 +1,7 @@
 #include "ui/live_derivation.hpp"
 
+#include "core/present/text_document.hpp"
+
 #include <chrono>
 #include <thread>
 
@@ -40,6 +42,7 @@ void LiveDerivation::request(const Scene& scene) {
         const auto begin = std::chrono::steady_clock::now();
         auto result = std::make_shared<DerivationResult>();
         result->request = request;
+        result->scene = scene;
         try {
             while (std::chrono::steady_clock::now() - begin < delay) {
                 throwIfCancelled(cancel.get());
@@ -48,11 +51,14 @@ void LiveDerivation::request(const Scene& scene) {
             DocumentRequest r;
             r.format = present::DocumentFormat::Display;
             r.cancel = cancel.get();
+            r.catalogue = true;  // the entries a student can pick, with what feeds them
             // The form `derive --form auto` picks: expanded when cheap, else structured (the
             // Panda's expanded B has thousands of terms of 15-digit products per entry).
-            result->display = deriveDisplay(*scene, r).display;
+            DerivedDocument derived = deriveDisplay(*scene, r);
+            result->display = std::move(derived.display);
+            result->catalogue = std::move(derived.catalogue);
             // Text from the same trees, outside the GiNaC lock.
-            result->text = QString::fromStdString(present::renderDocument(*result->display, present::DocumentFormat::Text));
+            result->text = QString::fromStdString(present::textDocument(*result->display, &result->textSpans));
         } catch (const Cancelled&) {
             result->stopped = true;
         } catch (const InputError& e) {

@@ -17,14 +17,19 @@
 #include <QThreadPool>
 
 #include "core/model/scene.hpp"
+#include "core/pipeline/entry_catalogue.hpp"
 #include "core/present/derivation_document.hpp"
+#include "core/present/text_document.hpp"
 
 namespace ll::ui {
 
 struct DerivationResult {
     int request = 0;                                                 // which request this answers
     std::shared_ptr<const present::DisplayDocument> display;       // the steps as display trees
+    std::shared_ptr<const EntryCatalogue> catalogue;                 // its entries, traced and compiled
     QString text;                                                    // the same steps as plain text
+    std::vector<present::TextSpan> textSpans;                        // where each item and entry stands in it
+    std::shared_ptr<const Scene> scene;                              // the scene derived
     QString error;                                                   // why there is no derivation
     bool stopped = false;                                            // cancelled for an edit being checked
     double seconds = 0.0;                                            // wall time in the worker

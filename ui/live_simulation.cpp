@@ -1,6 +1,7 @@
 #include "ui/live_simulation.hpp"
 
 #include <chrono>
+#include <optional>
 
 #include "core/model/diagnostics.hpp"
 #include "core/pipeline/scene_simulation.hpp"
@@ -47,14 +48,16 @@ void LiveSimulation::start() {
     pending_.reset();
     const int request = requested_;
     const SimulationSettings settings = override_.value_or(scene->simulation);
-    pool_.start([self = this, scene, settings, request, cancel = cancel_] {
+    pool_.start([self = this, scene, settings, request, cancel = cancel_, analysing = analysing_] {
         const auto begin = std::chrono::steady_clock::now();
         auto result = std::make_shared<LiveResult>();
         result->request = request;
         result->scene = scene;
+        std::optional<SimulationInput> input;
         try {
             PreparedScene prepared = prepareScene(*scene);  // the scene's expressions compiled once
-            result->simulation = ll::simulate(std::move(prepared.simulation), settings, {}, cancel.get());
+            input = std::move(prepared.simulation);
+            result->simulation = ll::simulate(*input, settings, {}, cancel.get());
             if (cancel->load()) return;
             result->visual = std::make_shared<VisualScene>(*scene, std::move(prepared.bodies));
             if (result->simulation.trajectory.size() > 0) result->visual->fitToMotion(result->simulation.trajectory);
@@ -72,6 +75,25 @@ void LiveSimulation::start() {
                 if (result->request < self->requested_) return;  // stale: a newer edit wins
                 self->delivered_ = result->request;
                 emit self->finished(result);
+            },
+            Qt::QueuedConnection);
+        if (!analysing || !input || result->simulation.trajectory.size() == 0) return;
+        auto analysis = std::make_shared<RunAnalysis>();
+        analysis->request = request;
+        try {
+            analysis->torques = std::make_shared<const TorqueHistory>(torqueHistory(*input, result->simulation.trajectory));
+            if (cancel->load()) return;
+            analysis->properties =
+                std::make_shared<const ModelProperties>(checkModelProperties(*input, result->simulation.trajectory));
+        } catch (const std::exception& e) {
+            analysis->error = e.what();
+        }
+        if (cancel->load()) return;
+        QMetaObject::invokeMethod(
+            self,
+            [self, analysis] {
+                if (analysis->request < self->requested_) return;
+                emit self->analysed(analysis);
             },
             Qt::QueuedConnection);
     });

@@ -13,11 +13,12 @@
 #include <QElapsedTimer>
 #include <QObject>
 #include <QThreadPool>
-#include <QElapsedTimer>
 #include <QTimer>
 
 #include "core/model/scene.hpp"
 #include "core/visual/visual_scene.hpp"
+#include "core/simulation/model_properties.hpp"
+#include "core/simulation/torque_parts.hpp"
 #include "core/simulation/trajectory.hpp"
 
 namespace ll::ui {
@@ -31,6 +32,16 @@ struct LiveResult {
     double workerSeconds = 0.0;               // wall time in the worker
 };
 
+// What the run says about the model, computed after the run is shown (same worker):
+// where the torque goes (core/simulation/torque_parts) and the model's properties along
+// it (core/simulation/model_properties).
+struct RunAnalysis {
+    int request = 0;                                  // the LiveResult it belongs to
+    std::shared_ptr<const TorqueHistory> torques;     // null when it could not be computed
+    std::shared_ptr<const ModelProperties> properties;
+    std::string error;                                // why not
+};
+
 class LiveSimulation : public QObject {
     Q_OBJECT
 public:
@@ -41,6 +52,8 @@ public:
     // unset: the scene's.
     void setSettingsOverride(std::optional<SimulationSettings> settings) { override_ = std::move(settings); }
     void setDebounce(int milliseconds) { debounce_.setInterval(milliseconds); }
+    // Also analyse each run (RunAnalysis, signal analysed), after its result is delivered.
+    void setAnalysing(bool on) { analysing_ = on; }
     // Simulates `scene` (copied): at once after a pause, else after the debounce; a newer
     // request replaces it.
     void request(const Scene& scene);
@@ -53,6 +66,7 @@ public:
 
 signals:
     void finished(std::shared_ptr<const ll::ui::LiveResult> result);
+    void analysed(std::shared_ptr<const ll::ui::RunAnalysis> analysis);
 
 private:
     void start();
@@ -63,6 +77,7 @@ private:
     std::optional<SimulationSettings> override_;
     std::shared_ptr<std::atomic<bool>> cancel_;
     int requested_ = 0, delivered_ = 0;
+    bool analysing_ = false;
 };
 
 }  // namespace ll::ui

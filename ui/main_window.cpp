@@ -32,6 +32,7 @@
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QScreen>
+#include <QSplitter>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
@@ -46,15 +47,19 @@
 #include "core/io/atomic_file.hpp"
 #include "core/pipeline/pose_results.hpp"
 #include "core/pipeline/scene_derivation.hpp"
+#include "core/visual/link_colors.hpp"
 #include "ui/animation_export.hpp"
 #include "ui/derivation_pages.hpp"
 #include "ui/derivation_panel.hpp"
 #include "ui/derivation_view.hpp"
+#include "ui/entry_list.hpp"
 #include "ui/field_list_model.hpp"
 #include "ui/joint_table_model.hpp"
 #include "ui/playback_bar.hpp"
+#include "ui/properties_panel.hpp"
 #include "ui/scene_view.hpp"
 #include "ui/teach_panel.hpp"
+#include "ui/torque_pane.hpp"
 #include "ui/trajectory_chart.hpp"
 #include "ui/work_precision_pane.hpp"
 
@@ -113,6 +118,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(&doc_, &SceneDocument::validSceneChanged, this, &MainWindow::validSceneChanged);
     connect(doc_.undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
     connect(&live_, &LiveSimulation::finished, this, &MainWindow::showResult);
+    live_.setAnalysing(true);  // torques and properties of each run, after it is shown
+    connect(&live_, &LiveSimulation::analysed, this, &MainWindow::showAnalysis);
+    connect(&selection_, &EntrySelection::selectionChanged, this, &MainWindow::selectionChanged);
+    connect(&selection_, &EntrySelection::valueChanged, this, &MainWindow::selectionValueChanged);
     connect(&ghostLive_, &LiveSimulation::finished, this, &MainWindow::showGhost);
     connect(playback_, &PlaybackBar::timeChanged, this, &MainWindow::showTime);
     connect(playback_, &PlaybackBar::playingChanged, this, [this](bool playing) {
@@ -306,17 +315,20 @@ void MainWindow::buildCentre() {
     toggle(tr("COMs"), true, &SceneView::setShowComs);
     toggle(tr("trail"), true, &SceneView::setShowTrail);
     playback_ = new PlaybackBar(centre);
+    // The picked entry's value now, what feeds it; or how to pick one.
+    readout_ = new QLabel(centre);
+    readout_->setObjectName("entry-readout");
+    readout_->setTextFormat(Qt::RichText);
+    readout_->setWordWrap(true);
+    readout_->setContentsMargins(6, 2, 6, 2);
     layout->addWidget(bar);
     layout->addWidget(view_, 1);
+    layout->addWidget(readout_);
     layout->addWidget(playback_);
     setCentralWidget(centre);
 
-    connect(view_, &SceneView::jointClicked, this, [this](int joint) {
-        if (joint >= 0 && joint < joints_->rowCount()) {
-            editorTabs_->setCurrentIndex(0);
-            dhView_->setCurrentIndex(joints_->index(joint, JointTableModel::A));
-        }
-    });
+    // A click on a link picks it: the entries it feeds are marked, its inertials row selected.
+    connect(view_, &SceneView::jointClicked, this, [this](int joint) { pickLink(joint); });
     connect(view_, &SceneView::jointHovered, this, [this](int joint) {
         if (joint >= 0 && joint < joints_->rowCount()) dhView_->selectRow(joint);
         view_->highlightJoint(joint);
@@ -363,33 +375,51 @@ void MainWindow::buildDocks() {
     connect(typeset_, &DerivationView::stepChanged, derivation_, [this](int s) {
         if (s <= 8 && derivation_->step() != s) derivation_->showStep(s);  // step 9 (the pose) is typeset only
     });
-    auto* derivationTabs = new QTabWidget(derivationDock);
-    derivationTabs->addTab(typeset_, tr("Typeset"));
-    derivationTabs->addTab(dpane, tr("Text"));
-    derivationDock->setWidget(derivationTabs);
+    derivationTabs_ = new QTabWidget(derivationDock);
+    derivationTabs_->addTab(typeset_, tr("Typeset"));
+    derivationTabs_->addTab(dpane, tr("Text"));
+    entryList_ = new EntryList(selection_, derivationTabs_);
+    derivationTabs_->addTab(entryList_, tr("Entries"));
+    derivationDock->setWidget(derivationTabs_);
+    // A click on an entry in either rendering picks it everywhere.
+    connect(typeset_, &DerivationView::entryPicked, this, &MainWindow::pickedInDerivation);
+    connect(derivation_, &DerivationPanel::entryPicked, this, &MainWindow::pickedInDerivation);
     addDockWidget(Qt::RightDockWidgetArea, derivationDock);
 
     auto* plotDock = new QDockWidget(tr("Plots"), this);
     plotDock->setObjectName("plots");
     bottomTabs_ = new QTabWidget(plotDock);
-    energy_ = new TrajectoryChart(TrajectoryChart::Kind::Energy, bottomTabs_);
+    // The energy plot, and beside it the picked entry over the run (same time cursor).
+    auto* energyPage = new QSplitter(Qt::Horizontal, bottomTabs_);
+    energy_ = new TrajectoryChart(TrajectoryChart::Kind::Energy, energyPage);
+    entryChart_ = new TrajectoryChart(TrajectoryChart::Kind::Curves, energyPage);
+    entryChart_->setObjectName("entry-chart");
+    entryChart_->hide();
+    energyPage->addWidget(energy_);
+    energyPage->addWidget(entryChart_);
     jointsChart_ = new TrajectoryChart(TrajectoryChart::Kind::Joints, bottomTabs_);
     teach_ = new TeachPanel(bottomTabs_);
+    torques_ = new TorquePane(bottomTabs_);
+    properties_ = new PropertiesPanel(bottomTabs_);
     workPrecision_ = new WorkPrecisionPane(bottomTabs_);
-    bottomTabs_->addTab(energy_, tr("Energy"));
+    bottomTabs_->addTab(energyPage, tr("Energy"));
     bottomTabs_->addTab(jointsChart_, tr("Joints q, dq/dt"));
     bottomTabs_->addTab(teach_, tr("Teach"));
+    bottomTabs_->addTab(torques_, tr("Torques"));
+    bottomTabs_->addTab(properties_, tr("Properties"));
     bottomTabs_->addTab(workPrecision_, tr("Work–precision"));
     plotDock->setWidget(bottomTabs_);
     addDockWidget(Qt::BottomDockWidgetArea, plotDock);
     resizeDocks({modelDock_, derivationDock}, {360, 440}, Qt::Horizontal);
     resizeDocks({plotDock}, {230}, Qt::Vertical);
 
-    for (TrajectoryChart* chart : {energy_, jointsChart_})
-        connect(chart, &TrajectoryChart::timePicked, playback_, [this](double t) {
-            playback_->pause();
-            playback_->setTime(t);
-        });
+    const auto scrub = [this](double t) {
+        playback_->pause();
+        playback_->setTime(t);
+    };
+    for (TrajectoryChart* chart : {energy_, jointsChart_, entryChart_}) connect(chart, &TrajectoryChart::timePicked, playback_, scrub);
+    connect(torques_, &TorquePane::timePicked, playback_, scrub);
+    connect(properties_, &PropertiesPanel::timePicked, playback_, scrub);
     connect(teach_, &TeachPanel::poseChanged, this, [this](const Eigen::VectorXd& q) {
         if (!teaching_ || !view_) return;
         showTeachPose(q);
@@ -397,6 +427,7 @@ void MainWindow::buildDocks() {
     });
     connect(bottomTabs_, &QTabWidget::currentChanged, this, [this](int index) {
         teaching_ = bottomTabs_->widget(index) == teach_;
+        if (!teaching_ && index >= 0) selectionValueChanged();
         updatePoseResults();
         if (teaching_) {
             playback_->pause();
@@ -547,6 +578,12 @@ void MainWindow::showResult(std::shared_ptr<const LiveResult> result) {
     view_->setVisualScene(result->visual, refit);
     energy_->setTrajectory(traj);
     jointsChart_->setTrajectory(traj);
+    selection_.setTrajectory(&traj);
+    analysis_.reset();  // the torques and properties of this run follow
+    torques_->setTorques(nullptr, result->scene);
+    properties_->setProperties(nullptr);
+    view_->setEmphasis(selection_.emphasis(visual));
+    selectionChanged();
     if (ghost_ && ghost_->simulation.trajectory.size() > 0) energy_->setGhost(&ghost_->simulation.trajectory, ghostIntegrator_);
     playback_->setRange(sampler_->startTime(), sampler_->endTime());
     showTime(playback_->time());
@@ -562,6 +599,105 @@ void MainWindow::showDerivation(std::shared_ptr<const DerivationResult> result) 
     }
     derived_ = result;
     typeset_->setDerivation(result->display, result->error);
+    selection_.setCatalogue(result->catalogue, result->scene);
+    if (sampler_ && q_.size() == selection_.catalogue()->n) selection_.setState(q_, qd_, playback_->time());
+}
+
+void MainWindow::showAnalysis(std::shared_ptr<const RunAnalysis> analysis) {
+    if (!result_ || analysis->request != result_->request) return;  // of a run no longer shown
+    analysis_ = analysis;
+    torques_->setTorques(analysis->torques, result_->scene);
+    torques_->setCursorTime(playback_->time());
+    properties_->setProperties(analysis->properties);
+}
+
+void MainWindow::pickedInDerivation(int step, int item, int row, int col) {
+    if (!selection_.catalogue()) return;
+    if (step < 0) {  // the results at the teach pose: the same quantity's entry in the derivation
+        const present::DisplayStep* pose = typeset_->poseResults();
+        if (!pose || item < 0 || item >= static_cast<int>(pose->items.size())) return;
+        if (const CatalogueEntry* e = selection_.catalogue()->ofQuantity(pose->items[static_cast<std::size_t>(item)].quantity, row, col))
+            selection_.select(e->id);
+        return;
+    }
+    if (!selection_.selectAt(step, item, row, col)) selection_.clear();
+}
+
+bool MainWindow::selectEntry(const QString& id) { return selection_.select(id.toStdString()); }
+
+void MainWindow::pickLink(int link) {
+    selection_.pickLink(link);
+    if (link >= 0 && link < joints_->rowCount()) {
+        editorTabs_->setCurrentIndex(1);  // Inertials
+        inertialView_->selectRow(link);
+    }
+}
+
+bool MainWindow::showPlotTab(const QString& name) {
+    const std::pair<const char*, QWidget*> tabs[] = {{"energy", energy_->parentWidget()}, {"joints", jointsChart_},
+                                                     {"teach", teach_},                  {"torques", torques_},
+                                                     {"properties", properties_},        {"work-precision", workPrecision_}};
+    for (const auto& [key, widget] : tabs)
+        if (name == key) {
+            bottomTabs_->setCurrentWidget(widget);
+            return true;
+        }
+    return false;
+}
+
+void MainWindow::showDerivationView(const QString& name) {
+    derivationTabs_->setCurrentIndex(name == "text" ? 1 : name == "entries" ? 2 : 0);
+}
+
+QString MainWindow::readoutText() const { return readout_->text(); }
+
+// The pick changed: every view shows it (marks, the plot, the 3D emphasis, the readout).
+void MainWindow::selectionChanged() {
+    std::vector<EntryMark> marks;
+    if (const CatalogueEntry* e = selection_.entry()) {
+        marks.push_back({e->step, e->item, e->cell ? e->row : -1, e->cell ? e->col : -1, QColor(255, 214, 90, 150)});
+        // Show it where it is: the typeset page of its step, the text at its line.
+        if (typeset_->document() && e->step < static_cast<int>(typeset_->document()->steps.size()) &&
+            typeset_->document()->steps[static_cast<std::size_t>(e->step)].number != typeset_->step())
+            typeset_->showDocumentStep(e->step);
+        derivation_->showItem(e->step, e->item);
+    }
+    if (selection_.link() >= 0) {
+        const Rgba c = linkColor(selection_.link());
+        for (const CatalogueEntry* e : selection_.marked())
+            marks.push_back({e->step, e->item, e->cell ? e->row : -1, e->cell ? e->col : -1,
+                             QColor(int(c.r * 255), int(c.g * 255), int(c.b * 255), 60)});
+    }
+    typeset_->setMarks(marks);
+    derivation_->setMarks(marks);
+    // The entry over the run, beside the energy plot.
+    std::vector<double> t, values;
+    selection_.series(t, values);
+    const CatalogueEntry* e = selection_.entry();
+    if (e && !values.empty()) {
+        const QString name = QString::fromStdString(e->label);
+        entryChart_->setCurves(t, {{name, QColor(200, 120, 0), Qt::SolidLine, values}},
+                               e->unit.empty() ? name : QString("%1 [%2]").arg(name, QString::fromStdString(e->unit)));
+        entryChart_->setCursorTime(playback_->time());
+        entryChart_->show();
+    } else {
+        entryChart_->hide();
+    }
+    selectionValueChanged();
+}
+
+// A new time or pose: the value, the shares, the emphasis.
+void MainWindow::selectionValueChanged() {
+    if (!selection_.active()) {
+        readout_->setText(selection_.catalogue()
+                              ? tr("Click an entry of the derivation (b11, g2, …) or a link in the 3D view to see what feeds it "
+                                   "and its value now.")
+                              : QString());
+        if (view_->emphasis().active()) view_->setEmphasis({});
+        return;
+    }
+    readout_->setText(selection_.readout());
+    if (result_ && result_->visual) view_->setEmphasis(selection_.emphasis(*result_->visual));
 }
 
 void MainWindow::showGhost(std::shared_ptr<const LiveResult> result) {
@@ -598,6 +734,9 @@ void MainWindow::showTime(double t) {
     }
     energy_->setCursorTime(t);
     jointsChart_->setCursorTime(t);
+    entryChart_->setCursorTime(t);
+    torques_->setCursorTime(t);
+    if (!teaching_) selection_.setState(q_, qd_, t);
 }
 
 QString MainWindow::statusText() const {
@@ -636,6 +775,10 @@ void MainWindow::showDerivationStep(int n) {
 void MainWindow::showTeachPose(const Eigen::VectorXd& q) {
     static const std::vector<Eigen::Vector3d> noTrail;
     view_->setPose(q, playback_->time(), &noTrail);
+    // The picked entry at the pose, the joints at rest (as the pose results take them).
+    const Scene& scene = doc_.validScene();
+    const int n = static_cast<int>(q.size());
+    selection_.setState(q, scene.initial.qd.size() == n ? scene.initial.qd : Eigen::VectorXd::Zero(n), playback_->time());
 }
 
 // Step 9 of the typeset derivation while teaching: B, C, g and the energies at the pose.

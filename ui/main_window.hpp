@@ -16,6 +16,7 @@
 #include <QTimer>
 
 #include "core/visual/trajectory_sampler.hpp"
+#include "ui/entry_selection.hpp"
 #include "ui/live_derivation.hpp"
 #include "ui/edit_frame.hpp"
 #include "ui/live_simulation.hpp"
@@ -35,6 +36,9 @@ namespace ll::ui {
 
 class DerivationPanel;
 class DerivationView;
+class EntryList;
+class PropertiesPanel;
+class TorquePane;
 class FieldListModel;
 class JointTableModel;
 class PlaybackBar;
@@ -96,6 +100,24 @@ public:
     // Shows `n` 0..8 of the derivation; poses the robot (teach mode).
     void showDerivationStep(int n);
     void teach(const Eigen::VectorXd& q);
+    // The derivation linked to the motion (ui/entry_selection): pick an entry by id as
+    // typed (b12, g2, beta23_4; false when the derivation shown has none), pick link
+    // `link` (0-based; −1 clears); the pick shows in every view.
+    bool selectEntry(const QString& id);
+    void pickLink(int link);
+    EntrySelection& selection() { return selection_; }
+    EntryList& entryList() { return *entryList_; }
+    TrajectoryChart& entryChart() { return *entryChart_; }
+    TorquePane& torquePane() { return *torques_; }
+    PropertiesPanel& propertiesPanel() { return *properties_; }
+    QString readoutText() const;
+    // Shows a tab of the plots dock by name: energy, joints, teach, torques, properties,
+    // work-precision (false: no such tab).
+    bool showPlotTab(const QString& name);
+    // Shows the derivation dock's tab: typeset, text or entries.
+    void showDerivationView(const QString& name);
+    // The run's analysis shown (torques and properties; null until it arrives).
+    const RunAnalysis* analysis() const { return analysis_.get(); }
     // Runs a ghost with `integrator` ("" removes it).
     void setGhostIntegrator(const QString& integrator);
     void setPresentationMode(bool on);
@@ -141,6 +163,10 @@ private:
     void showResult(std::shared_ptr<const LiveResult> result);
     void showGhost(std::shared_ptr<const LiveResult> result);
     void showDerivation(std::shared_ptr<const DerivationResult> result);
+    void showAnalysis(std::shared_ptr<const RunAnalysis> analysis);
+    void pickedInDerivation(int step, int item, int row, int col);
+    void selectionChanged();
+    void selectionValueChanged();
     void showTime(double t);
     void updatePoseResults();
     bool freeParameterName(const QString& typed, QString* error) const;
@@ -161,6 +187,8 @@ private:
     SceneDocument doc_;
     LiveSimulation live_, ghostLive_;
     LiveDerivation derive_;
+    EntrySelection selection_;
+    std::shared_ptr<const RunAnalysis> analysis_;
     std::shared_ptr<const DerivationResult> derived_;
     std::shared_ptr<const LiveResult> result_, ghost_;
     std::unique_ptr<TrajectorySampler> sampler_, ghostSampler_;
@@ -178,7 +206,12 @@ private:
     PlaybackBar* playback_ = nullptr;
     DerivationPanel* derivation_ = nullptr;
     DerivationView* typeset_ = nullptr;
-    TrajectoryChart *energy_ = nullptr, *jointsChart_ = nullptr;
+    TrajectoryChart *energy_ = nullptr, *jointsChart_ = nullptr, *entryChart_ = nullptr;
+    EntryList* entryList_ = nullptr;
+    TorquePane* torques_ = nullptr;
+    PropertiesPanel* properties_ = nullptr;
+    QLabel* readout_ = nullptr;
+    QTabWidget* derivationTabs_ = nullptr;
     TeachPanel* teach_ = nullptr;
     WorkPrecisionPane* workPrecision_ = nullptr;
     QTabWidget *editorTabs_ = nullptr, *bottomTabs_ = nullptr;

@@ -1,6 +1,7 @@
 #include "ui/math_typesetter.hpp"
 
 #include "core/present/labels.hpp"
+#include "core/visual/link_colors.hpp"
 
 #include <QCoreApplication>
 #include <QFontDatabase>
@@ -106,6 +107,10 @@ void append(MathBox& to, MathBox box, double dx, double dy = 0) {
     for (MathPiece& p : box.pieces) {
         p.at += QPointF(dx, dy);
         to.pieces.push_back(std::move(p));
+    }
+    for (MathRegion& r : box.regions) {
+        r.rect.translate(dx, dy);
+        to.regions.push_back(r);
     }
 }
 
@@ -268,7 +273,7 @@ MathBox symbolBox(const DisplayNode& n, double size, const DisplayNode* power = 
     key.reserve(n.text.size() + n.subShown.size() + n.supText.size() + 16);
     key.append(n.text).append(1, '\x1f').append(n.subShown).append(1, '\x1f').append(n.supText).append(1, '\x1f');
     key.append(1, static_cast<char>('0' + n.dots)).append(1, n.upright ? 'u' : 'i').append(1, n.subUpright ? 'u' : 'i');
-    key.append(std::to_string(std::lround(size * 1000)));
+    key.append(std::to_string(std::lround(size * 1000))).append(1, '\x1f').append(std::to_string(n.link));
     if (auto it = boxes.find(key); it != boxes.end()) return it->second;
     return boxes.emplace(std::move(key), symbolBoxOf(n, size, nullptr)).first->second;
 }
@@ -284,6 +289,10 @@ MathBox symbolBoxOf(const DisplayNode& n, double size, const DisplayNode* power)
     if (hasSub) sub = word(QString::fromStdString(n.subShown), s, n.subUpright);
     if (power) sup = layout(*power, s);  // ℓ_c1²: the power stacked over the subscript
     else if (hasSup) sup = word(QString::fromStdString(n.supText), s, false);
+    if (n.link >= 0) {  // the symbol and its subscript in its link's colour (the power stays ink)
+        for (MathPiece& p : base.pieces) p.link = n.link;
+        for (MathPiece& p : sub.pieces) p.link = n.link;
+    }
     if (!hasSub && !hasSup) return base;
     return scripted(base, hasSub ? &sub : nullptr, hasSup ? &sup : nullptr, size, n.upright ? 0 : 0.03 * em(size), true);
 }
@@ -353,15 +362,21 @@ MathBox matrixBox(const DisplayNode& n, double size) {
     MathBox body;
     const double top = -a - height / 2;
     double y = top, x0 = 0.2 * e;
+    std::vector<MathRegion> regions;  // this matrix's cells, not those of matrices inside them
     for (std::size_t i = 0; i < rows; ++i) {
         y += ascent[i];
         double x = x0;
         for (std::size_t j = 0; j < cols; ++j) {
+            cell[i][j].regions.clear();
             append(body, cell[i][j], x + (width[j] - cell[i][j].width) / 2, y);  // centred columns
+            regions.push_back({QRectF(x - colGap / 2, y - ascent[i] - rowGap / 2, width[j] + colGap,
+                                      ascent[i] + descent[i] + rowGap),
+                               static_cast<int>(i), static_cast<int>(j)});
             x += width[j] + colGap;
         }
         y += descent[i] + rowGap;
     }
+    body.regions = std::move(regions);
     body.width = x0 * 2 - colGap;
     for (double w : width) body.width += w + colGap;
     body.ascent = -top;
@@ -537,6 +552,12 @@ bool mathFontsAvailable() {
     return QFontDatabase::families().contains(families[2]);
 }
 
+QFont textbookFont(QFont base) {
+    loadFonts();
+    base.setFamily(families[0]);
+    return base;
+}
+
 MathBox layoutMath(const DisplayNode& node, double size) { return layout(node, size); }
 
 std::vector<MathBox> layoutFormula(const DisplayNode& formula, double maxWidth, double size) {
@@ -709,6 +730,7 @@ std::vector<MathBox> layoutItem(const present::DisplayItem& item, double maxWidt
             const auto entry = present::displayEquation(present::entryLabel(item, i, j), rhs.rows[i][j]);
             for (MathBox& line : layoutEquation(*entry, maxWidth - 1.5 * e)) {
                 MathBox indented;
+                line.regions = {{QRectF(0, -line.ascent, line.width, line.height()), static_cast<int>(i), static_cast<int>(j)}};
                 hcat(indented, line, 1.5 * e);
                 lines.push_back(std::move(indented));
             }
@@ -786,7 +808,7 @@ static const QList<QGlyphRun>& shapedRuns(int which, int pixels, const QString& 
     return cache.emplace(std::move(key), std::move(runs)).first->second;
 }
 
-void collectMarks(const MathBox& box, QPointF origin, double scale, MathMarks& marks) {
+void collectMarks(const MathBox& box, QPointF origin, double scale, MathMarks& marks, bool byLink) {
     // One glyph run per font and size, however many boxes: a PDF or SVG pays per run (a
     // text object with its font, colour and matrix), and a formula set letter by letter
     // (italic m, subscript 2, roman a…) was one run per piece, 69,000 in the Panda's 71
@@ -798,11 +820,12 @@ void collectMarks(const MathBox& box, QPointF origin, double scale, MathMarks& m
             // the PDF keeps real text at the right size.
             const int pixels = std::max(1, static_cast<int>(std::lround(mathUnitsPerEm * p.size * scale)));
             const QPointF at = p.at * scale;
+            const int link = byLink ? p.link : -1;
             for (const QGlyphRun& run : shapedRuns(p.font, pixels, p.text)) {
                 const QRawFont raw = run.rawFont();
                 auto same = std::find_if(marks.glyphs.begin(), marks.glyphs.end(),
-                                         [&](const MathMarks::Glyphs& g) { return g.font == raw; });
-                if (same == marks.glyphs.end()) same = marks.glyphs.insert(marks.glyphs.end(), MathMarks::Glyphs{raw, {}, {}});
+                                         [&](const MathMarks::Glyphs& g) { return g.font == raw && g.link == link; });
+                if (same == marks.glyphs.end()) same = marks.glyphs.insert(marks.glyphs.end(), MathMarks::Glyphs{raw, {}, {}, link});
                 same->indexes.append(run.glyphIndexes());
                 for (const QPointF& position : run.positions()) same->positions.append(origin + (position + at));
             }
@@ -839,8 +862,13 @@ void paintMarks(QPainter& painter, const MathMarks& marks) {
         }
     }
     // After the rules and brackets, each font's glyphs as one run.
-    painter.setPen(ink);
     for (const MathMarks::Glyphs& g : marks.glyphs) {
+        if (g.link >= 0) {
+            const Rgba c = linkColor(g.link);
+            painter.setPen(QColor::fromRgbF(c.r * 0.85f, c.g * 0.85f, c.b * 0.85f));  // a shade darker: text on white
+        } else {
+            painter.setPen(ink);
+        }
         QGlyphRun run;
         run.setRawFont(g.font);
         run.setGlyphIndexes(g.indexes);
@@ -850,9 +878,9 @@ void paintMarks(QPainter& painter, const MathMarks& marks) {
     painter.restore();
 }
 
-void paintMath(QPainter& painter, const MathBox& box, QPointF origin, double scale) {
+void paintMath(QPainter& painter, const MathBox& box, QPointF origin, double scale, bool linkColours) {
     MathMarks marks;
-    collectMarks(box, origin, scale, marks);
+    collectMarks(box, origin, scale, marks, linkColours);
     paintMarks(painter, marks);
 }
 

@@ -40,11 +40,20 @@ struct MathPiece {
     double size = 1;   // Text: relative size (1 normal, 0.7 script)
     double width = 0, height = 0;  // Rule, Bracket
     char bracket = '[';            // Bracket: [ ] ( ) |
+    int link = -1;                 // Text: a link's inertial parameter (m2, ℓc2), drawn in its colour by the window
+};
+
+// Where an entry of a matrix (row, col, 0-based) is drawn, relative to the box's origin:
+// what a click in the window picks.
+struct MathRegion {
+    QRectF rect;  // units
+    int row = 0, col = 0;
 };
 
 struct MathBox {
     double width = 0, ascent = 0, descent = 0;  // units
     std::vector<MathPiece> pieces;
+    std::vector<MathRegion> regions;  // the cells of the outermost matrix in it, if any
     double height() const { return ascent + descent; }
 };
 
@@ -94,6 +103,7 @@ struct MathMarks {
         QRawFont font;  // a family and style at a pixel size
         QList<quint32> indexes;
         QList<QPointF> positions;  // each glyph's origin on its baseline
+        int link = -1;             // collected by link: the link whose symbols these are (−1: ink)
     };
     struct Shape {
         enum Kind { Rect, Fill, Stroke } kind = Rect;
@@ -106,18 +116,26 @@ struct MathMarks {
 };
 
 // Adds box's marks, its origin (baseline start) at `origin`, in units scaled by `scale`
-// device units per layout unit.
-void collectMarks(const MathBox& box, QPointF origin, double scale, MathMarks& marks);
+// device units per layout unit. `byLink`: a link's symbols in runs of their own, to be
+// painted in its colour (the window); pages keep one run per font.
+void collectMarks(const MathBox& box, QPointF origin, double scale, MathMarks& marks, bool byLink = false);
 
-// Paints marks in the painter's pen colour: the shapes, then the glyph runs.
+// Paints marks in the painter's pen colour (a link's runs in the link's colour): the
+// shapes, then the glyph runs.
 void paintMarks(QPainter& painter, const MathMarks& marks);
 
 // Draws box with its origin (baseline start) at `origin`, in units scaled by `scale`
-// device units per layout unit (collectMarks, then paintMarks).
-void paintMath(QPainter& painter, const MathBox& box, QPointF origin, double scale);
+// device units per layout unit (collectMarks, then paintMarks); `linkColours`: each
+// link's inertial parameters in its colour (core/visual/link_colors).
+void paintMath(QPainter& painter, const MathBox& box, QPointF origin, double scale, bool linkColours = false);
 
 // The three fonts (roman, italic, math) at a size in units; loads fonts-lmodern's files
 // into Qt's font database on first use. False when the font files are missing.
 bool mathFontsAvailable();
+
+// `base` in Latin Modern Roman, for a widget's text that names symbols with dots (q̇, q̈):
+// Qt 6.4 on Debian 12 draws no combining mark at all in DejaVu Sans, the desktop's sans
+// font (DejaVu Serif and Latin Modern draw them), so "B q̈ + C q̇" would read "B q + C q".
+QFont textbookFont(QFont base);
 
 }  // namespace ll::ui

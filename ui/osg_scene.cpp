@@ -172,7 +172,23 @@ OsgScene::OsgScene(const VisualScene& scene, const OsgSceneOptions& options) : o
         transform->addChild(solid(part));
         parts_.push_back(transform);
         stretch_.push_back(stretches(part.shape));
+        colours_.push_back(part.color);
         root_->addChild(transform);
+        // A joint's axis, shown when a picked entry depends on its coordinate: a thin rod
+        // along the joint's z through the marker, well past it on both sides.
+        osg::ref_ptr<osg::MatrixTransform> axis;
+        osg::ref_ptr<osg::Geode> line;
+        if (part.role == PartRole::Joint) {
+            axis = new osg::MatrixTransform;
+            axis->setDataVariance(osg::Object::DYNAMIC);
+            line = new osg::Geode;
+            addShape(*line, new osg::Cylinder(osg::Vec3(), float(0.004 * scene.scale), float(0.45 * scene.scale)));
+            axis->addChild(line);
+            axis->setNodeMask(0u);
+            root_->addChild(axis);
+        }
+        axes_.push_back(axis);
+        axisGeodes_.push_back(line);
     }
     if (options_.frames) {
         osg::ref_ptr<osgText::Font> font = options_.frameLabels ? labelFont() : nullptr;
@@ -221,7 +237,10 @@ OsgScene::OsgScene(const VisualScene& scene, const OsgSceneOptions& options) : o
 }
 
 void OsgScene::update(const VisualScene& scene) {
-    for (std::size_t i = 0; i < parts_.size(); ++i) parts_[i]->setMatrix(partMatrix(scene.parts[i], stretch_[i]));
+    for (std::size_t i = 0; i < parts_.size(); ++i) {
+        parts_[i]->setMatrix(partMatrix(scene.parts[i], stretch_[i]));
+        if (axes_[i]) axes_[i]->setMatrix(toOsgMatrix(scene.parts[i].pose.matrix()));
+    }
     for (std::size_t k = 0; k < frames_.size(); ++k) frames_[k]->setMatrix(toOsgMatrix(scene.frames[k].pose.matrix()));
 }
 
@@ -258,6 +277,33 @@ void OsgScene::setPartHighlighted(int i, bool on) {
         node.getOrCreateStateSet()->setAttributeAndModes(material, osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
     } else if (node.getStateSet()) {
         node.getStateSet()->removeAttribute(osg::StateAttribute::MATERIAL);
+    }
+}
+
+void OsgScene::setEmphasis(const VisualEmphasis& emphasis) {
+    static const Rgba faded{0.84f, 0.85f, 0.87f, 1.0f};
+    for (std::size_t i = 0; i < parts_.size(); ++i) {
+        osg::Node& solid = *parts_[i]->getChild(0);
+        const float strength = emphasis.active() && i < emphasis.strength.size() ? emphasis.strength[i] : NAN;
+        if (std::isnan(strength)) {
+            setMaterial(solid, colours_[i]);
+        } else if (strength < 0) {
+            setMaterial(solid, faded);
+        } else {
+            // The link's own colour, from pale (a small share) to full and glowing (all of it).
+            const Rgba& c = colours_[i];
+            const float w = 0.35f + 0.65f * strength;
+            setMaterial(solid, {faded.r + w * (c.r - faded.r), faded.g + w * (c.g - faded.g), faded.b + w * (c.b - faded.b), 1});
+            auto* material = static_cast<osg::Material*>(solid.getStateSet()->getAttribute(osg::StateAttribute::MATERIAL));
+            material->setEmission(osg::Material::FRONT_AND_BACK, osg::Vec4(0.35f * strength * c.r, 0.35f * strength * c.g,
+                                                                        0.35f * strength * c.b, 1));
+        }
+        if (!axes_[i]) continue;
+        const AxisMark mark = emphasis.active() && i < emphasis.axes.size() ? emphasis.axes[i] : AxisMark::None;
+        axes_[i]->setNodeMask(mark == AxisMark::None ? 0u : ~0u);
+        // a coordinate's axis dark, a velocity's red (the q̇_j that multiplies a c_ij)
+        if (mark != AxisMark::None)
+            setMaterial(*axisGeodes_[i], mark == AxisMark::Velocity ? Rgba{0.86f, 0.1f, 0.24f, 1} : Rgba{0.12f, 0.13f, 0.18f, 1});
     }
 }
 

@@ -8,12 +8,14 @@
 
 #include <Eigen/Core>
 #include <osg/Camera>
+#include <osg/Geode>
 #include <osg/Geometry>
 #include <osg/Group>
 #include <osg/MatrixTransform>
 #include <osg/Switch>
 
 #include "core/visual/camera_view.hpp"
+#include "core/visual/visual_emphasis.hpp"
 #include "core/visual/visual_scene.hpp"
 
 namespace ll::ui {
@@ -46,6 +48,9 @@ public:
     void setPartVisible(int i, bool on);
     // Draws part i in the highlight colour (a joint selected or hovered in the window).
     void setPartHighlighted(int i, bool on);
+    // A picked entry's links in their colour by share, the others faded, the axes of the
+    // joints it depends on (core/visual/visual_emphasis.hpp); an inactive one undoes it.
+    void setEmphasis(const VisualEmphasis& emphasis);
 
 private:
     OsgSceneOptions options_;
@@ -53,6 +58,9 @@ private:
     osg::ref_ptr<osg::Group> groundGroup_;
     std::vector<osg::ref_ptr<osg::MatrixTransform>> parts_, frames_;
     std::vector<bool> stretch_;
+    std::vector<Rgba> colours_;                                // each part's own
+    std::vector<osg::ref_ptr<osg::MatrixTransform>> axes_;     // per part: a joint's axis line (null elsewhere)
+    std::vector<osg::ref_ptr<osg::Geode>> axisGeodes_;
     osg::ref_ptr<osg::Geometry> trail_;
 };
 

@@ -23,6 +23,8 @@ public:
 
     void setRange(double start, double end);  // [s]
     double time() const { return t_; }
+    double startTime() const { return start_; }
+    double endTime() const { return end_; }
     double speed() const;
     bool isPlaying() const { return timer_.isActive(); }
     bool loops() const;

@@ -115,6 +115,7 @@ void SceneView::rebuild() {
             if (visual_->parts[i].role == PartRole::CentreOfMass)
                 osg_->setPartVisible(static_cast<int>(i), coms_);
         if (options_.trail) osg_->setTrail(trail_);
+        if (emphasis_.strength.size() == visual_->parts.size()) osg_->setEmphasis(emphasis_);
     }
     if (ghostVisual_) {
         OsgSceneOptions ghostOptions;
@@ -182,6 +183,14 @@ void SceneView::highlightJoint(int joint) {
     if (joint == highlighted_) return;
     highlighted_ = joint;
     applyHighlight();
+    requestFrame();
+}
+
+void SceneView::setEmphasis(VisualEmphasis emphasis) {
+    emphasis_ = std::move(emphasis);
+    if (!visual_ || !osg_) return;
+    if (emphasis_.active() && emphasis_.strength.size() != visual_->parts.size()) emphasis_ = {};  // of another scene
+    osg_->setEmphasis(emphasis_);
     requestFrame();
 }
 

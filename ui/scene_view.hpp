@@ -56,6 +56,10 @@ public:
 
     // The joint (0-based) drawn highlighted; -1: none.
     void highlightJoint(int joint);
+    // A picked entry's or link's emphasis (core/visual/visual_emphasis.hpp), kept across
+    // rebuilds; an inactive one shows every part as built.
+    void setEmphasis(VisualEmphasis emphasis);
+    const VisualEmphasis& emphasis() const { return emphasis_; }
     // The joint whose part is under widget point `p`, or -1.
     int jointAt(const QPoint& p);
 
@@ -97,6 +101,7 @@ private:
     std::shared_ptr<VisualScene> visual_, ghostVisual_;
     std::unique_ptr<OsgScene> osg_, ghost_;
     OsgSceneOptions options_;
+    VisualEmphasis emphasis_;
     bool coms_ = true;
     std::vector<Eigen::Vector3d> trail_;
     // Camera: angles [deg] in the scene's basis, distance [m], pan offset of the centre.

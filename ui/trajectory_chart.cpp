@@ -14,6 +14,7 @@
 #include <QValueAxis>
 
 #include "core/io/atomic_file.hpp"
+#include "ui/math_typesetter.hpp"
 
 namespace ll::ui {
 
@@ -52,7 +53,7 @@ TrajectoryChart::TrajectoryChart(Kind kind, QWidget* parent) : QChartView(parent
     axisX_->setTitleText(tr("t [s]"));
     axisX_->setLabelFormat("%.4g");  // 1.25 s, not 1.3 (a 5 s run's quarter ticks)
     axisY_ = new QValueAxis;
-    axisY_->setTitleText(kind == Kind::Energy ? tr("energy [J]") : tr("q [rad or m], q̇ [rad/s or m/s]"));
+    axisY_->setTitleText(kind == Kind::Energy ? tr("energy [J]") : kind == Kind::Joints ? tr("q [rad or m], q̇ [rad/s or m/s]") : QString());
     chart->addAxis(axisX_, Qt::AlignBottom);
     chart->addAxis(axisY_, Qt::AlignLeft);
     cursor_ = new QLineSeries;
@@ -90,6 +91,12 @@ void TrajectoryChart::setScale(double scale) {
     }
 }
 
+void TrajectoryChart::setTextbookFont() {
+    baseLegend_ = textbookFont(baseLegend_);
+    baseTitle_ = textbookFont(baseTitle_);
+    setScale(scale_);
+}
+
 QLineSeries* TrajectoryChart::addSeries(const QString& name, const QColor& color, Qt::PenStyle style) {
     auto* s = new QLineSeries;
     s->setName(name);
@@ -110,13 +117,8 @@ void TrajectoryChart::clear() {
 
 void TrajectoryChart::setTrajectory(const Trajectory& trajectory) {
     trajectory_ = trajectory;
-    struct Curve {
-        QString name;
-        QColor color;
-        Qt::PenStyle style;
-        QList<QPointF> points;
-    };
-    std::vector<Curve> curves;
+    times_ = trajectory_.t;
+    std::vector<Shown> curves;
     const Trajectory& traj = trajectory_;
     if (kind_ == Kind::Energy) {
         curves.push_back({tr("E_kin"), QColor(34, 139, 34), Qt::SolidLine, decimated(traj.t, [&](int k) { return traj.Ekin[k]; })});
@@ -128,24 +130,42 @@ void TrajectoryChart::setTrajectory(const Trajectory& trajectory) {
         }
         if (hasGhost_)
             curves.push_back({tr("E, ghost (%1)").arg(ghostLabel_), QColor(128, 0, 160, 150), Qt::DashLine, decimated(ghost_.t, [&](int k) { return ghost_.E[k]; })});
-    } else {
+    } else if (kind_ == Kind::Joints) {
         for (int i = 0; i < traj.n && i < 8; ++i) {
             const QString name = QString::fromStdString(traj.coordinateName(i));
             curves.push_back({name, kJointColours[i], Qt::SolidLine, decimated(traj.t, [&](int k) { return traj.q[k][i]; })});
             curves.push_back({"d" + name + "/dt", kJointColours[i], Qt::DashLine, decimated(traj.t, [&](int k) { return traj.qd[k][i]; })});
         }
     }
+    showCurves(curves);
+}
+
+void TrajectoryChart::setCurves(const std::vector<double>& t, std::vector<Curve> curves, const QString& axisTitle) {
+    times_ = t;
+    curves_ = std::move(curves);
+    axisY_->setTitleText(axisTitle);
+    std::vector<Shown> shown;
+    for (const Curve& c : curves_) {
+        if (c.values.size() != t.size()) continue;
+        shown.push_back({c.name, c.color, c.style, decimated(t, [&](int k) { return c.values[static_cast<std::size_t>(k)]; })});
+    }
+    showCurves(shown);
+}
+
+void TrajectoryChart::showCurves(const std::vector<Shown>& curves) {
     // The same curves as shown (an edit of a value, not of the structure): new points
     // only, which is much cheaper in Qt Charts than new series.
     QList<QLineSeries*> shown;
     for (QAbstractSeries* s : chart()->series())
         if (s != cursor_) shown.append(static_cast<QLineSeries*>(s));
     bool same = shown.size() == static_cast<qsizetype>(curves.size());
-    for (qsizetype i = 0; same && i < shown.size(); ++i) same = shown[i]->name() == curves[static_cast<std::size_t>(i)].name;
+    for (qsizetype i = 0; same && i < shown.size(); ++i)
+        same = shown[i]->name() == curves[static_cast<std::size_t>(i)].name &&
+               shown[i]->pen().color() == curves[static_cast<std::size_t>(i)].color;
     if (!same) {
         clear();
         shown.clear();
-        for (const Curve& c : curves) shown.append(addSeries(c.name, c.color, c.style));
+        for (const Shown& c : curves) shown.append(addSeries(c.name, c.color, c.style));
     }
     for (qsizetype i = 0; i < shown.size(); ++i) shown[i]->replace(curves[static_cast<std::size_t>(i)].points);
     fitAxes();
@@ -168,12 +188,13 @@ void TrajectoryChart::fitAxes() {
         }
     }
     if (lo > hi) lo = 0, hi = 1;
-    const double pad = std::max((hi - lo) * 0.05, 1e-9 + 1e-6 * std::abs(hi));
+    // A constant (b22 of the 2R) gets room around it, not a range of its rounding.
+    const double pad = hi - lo > 1e-9 * std::max(1.0, std::abs(hi)) ? (hi - lo) * 0.05 : 0.05 * std::max(std::abs(hi), 1e-9);
     axisY_->setRange(lo - pad, hi + pad);
     axisY_->applyNiceNumbers();  // ticks at round values (no "−0.0" for a 10⁻¹⁵ bound)
     yMin_ = axisY_->min(), yMax_ = axisY_->max();
-    axisX_->setRange(trajectory_.t.empty() ? 0 : trajectory_.t.front(), std::max(tEnd, 1e-6));
-    setCursorTime(trajectory_.t.empty() ? 0 : trajectory_.t.front());
+    axisX_->setRange(times_.empty() ? 0 : times_.front(), std::max(tEnd, 1e-6));
+    setCursorTime(times_.empty() ? 0 : times_.front());
 }
 
 void TrajectoryChart::setCursorTime(double t) {
@@ -225,7 +246,16 @@ void TrajectoryChart::exportCsv(const QString& path) {
     const Trajectory& tr = trajectory_;
     saveFileAtomically(path.toStdString(), [&](std::ostream& out) {
         out.precision(12);
-        if (kind_ == Kind::Energy) {
+        if (kind_ == Kind::Curves) {
+            out << "t [s]";
+            for (const Curve& c : curves_) out << ',' << c.name.toStdString();
+            out << '\n';
+            for (std::size_t k = 0; k < times_.size(); ++k) {
+                out << times_[k];
+                for (const Curve& c : curves_) out << ',' << (k < c.values.size() ? c.values[k] : 0.0);
+                out << '\n';
+            }
+        } else if (kind_ == Kind::Energy) {
             out << "t [s],Ekin [J],Epot [J],E [J],W [J]\n";
             for (std::size_t k = 0; k < tr.size(); ++k)
                 out << tr.t[k] << ',' << tr.Ekin[k] << ',' << tr.Epot[k] << ',' << tr.E[k] << ',' << tr.work[k] << '\n';

@@ -1,8 +1,9 @@
 #pragma once
 // A Qt Charts plot of a trajectory against simulation time with a cursor at the
 // playback time: the energies (E_kin green, E_pot blue, E purple, and W, the work of
-// friction and torques, red when there is any; a ghost run's E dashed) or the joints
-// (q_i solid, q̇_i dashed). Series are replaced once per trajectory, decimated to about
+// friction and torques, red when there is any; a ghost run's E dashed), the joints
+// (q_i solid, q̇_i dashed), or any curves over the run given with their unit (a picked
+// entry b₁₁(t), a joint's torque parts). Series are replaced once per trajectory, decimated to about
 // two points per pixel column, fixed axis ranges, no animations (Qt Charts 6.4's
 // append is quadratic). Exports PNG, SVG and CSV (with units).
 #include <QChartView>
@@ -18,10 +19,18 @@ namespace ll::ui {
 class TrajectoryChart : public QChartView {
     Q_OBJECT
 public:
-    enum class Kind { Energy, Joints };
+    enum class Kind { Energy, Joints, Curves };
     explicit TrajectoryChart(Kind kind, QWidget* parent = nullptr);
 
     void setTrajectory(const Trajectory& trajectory);
+    // Kind Curves: the curves to draw over times t, the y axis titled `axisTitle`.
+    struct Curve {
+        QString name;
+        QColor color;
+        Qt::PenStyle style = Qt::SolidLine;
+        std::vector<double> values;  // one per time
+    };
+    void setCurves(const std::vector<double>& t, std::vector<Curve> curves, const QString& axisTitle);
     void setGhost(const Trajectory* ghost, const QString& label);  // null: none
     void setCursorTime(double t);
     void clear();
@@ -29,6 +38,8 @@ public:
     // as many times as wide (1 = the desktop's). Qt Charts does not follow the
     // application font, so the window's bigger font alone leaves the plots small.
     void setScale(double scale);
+    // The legend and the axis titles in Latin Modern (names with dots: B q̈, C q̇).
+    void setTextbookFont();
     double scale() const { return scale_; }
 
     // Points drawn in the curves (not the cursor): a test's "there are curves".
@@ -48,10 +59,19 @@ protected:
 
 private:
     QLineSeries* addSeries(const QString& name, const QColor& color, Qt::PenStyle style);
+    struct Shown {
+        QString name;
+        QColor color;
+        Qt::PenStyle style;
+        QList<QPointF> points;
+    };
+    void showCurves(const std::vector<Shown>& curves);
     void fitAxes();
 
     Kind kind_;
     Trajectory trajectory_, ghost_;
+    std::vector<double> times_;   // Kind Curves: the times and curves shown
+    std::vector<Curve> curves_;
     bool hasGhost_ = false;
     QString ghostLabel_;  // the ghost run's integrator, named in the legend
     QValueAxis *axisX_, *axisY_;

@@ -82,36 +82,32 @@ void scanSymbols(const GiNaC::ex& e, const std::vector<GiNaC::symbol>& q, const 
     }
 }
 
-// The links of the per-link sums (b, c, g, E_kin, E_pot): those whose share is not zero.
+// The largest magnitude of link `link`'s part of the whole quantity (all of B for an
+// entry of B): what tells a part that is rounding from one that counts.
+double familyScale(Quantity q, const LinkContributions& c, int link) {
+    switch (q) {
+        case Quantity::MassMatrix:
+        case Quantity::MassMatrixEntry: return c.B(link).cwiseAbs().maxCoeff();
+        case Quantity::CoriolisMatrix:
+        case Quantity::CoriolisEntry: return c.C(link).cwiseAbs().maxCoeff();
+        case Quantity::GravityVector:
+        case Quantity::GravityEntry: return c.g(link).cwiseAbs().maxCoeff();
+        case Quantity::KineticEnergy: return std::abs(c.Ekin(link));
+        case Quantity::PotentialEnergy: return std::abs(c.Epot(link));
+        default: return 0.0;
+    }
+}
+
+// The links of the per-link sums (b, c, g, E_kin, E_pot): those whose part is not zero.
 class LinkFinder {
 public:
     explicit LinkFinder(const Scene& scene) {
         if (!scene.lagrangian) contributions_.emplace(scene.robot, scene.effects);
     }
-    std::vector<int> of(Quantity q, int row, int col) {
+    std::vector<int> of(const CatalogueEntry& entry) {
         if (!contributions_) return {};
-        LinkContributions& c = *contributions_;
-        switch (q) {
-            case Quantity::MassMatrix:
-            case Quantity::MassMatrixEntry:
-                return c.linksIn([&](const LinkContributions& l, int i) { return l.B(i)(row, col); },
-                                 [](const LinkContributions& l, int i) { return l.B(i).cwiseAbs().maxCoeff(); });
-            case Quantity::CoriolisMatrix:
-            case Quantity::CoriolisEntry:
-                return c.linksIn([&](const LinkContributions& l, int i) { return l.C(i)(row, col); },
-                                 [](const LinkContributions& l, int i) { return l.C(i).cwiseAbs().maxCoeff(); });
-            case Quantity::GravityVector:
-            case Quantity::GravityEntry:
-                return c.linksIn([&](const LinkContributions& l, int i) { return l.g(i)(row); },
-                                 [](const LinkContributions& l, int i) { return l.g(i).cwiseAbs().maxCoeff(); });
-            case Quantity::KineticEnergy:
-                return c.linksIn([](const LinkContributions& l, int i) { return l.Ekin(i); },
-                                 [](const LinkContributions& l, int i) { return l.Ekin(i); });
-            case Quantity::PotentialEnergy:
-                return c.linksIn([](const LinkContributions& l, int i) { return l.Epot(i); },
-                                 [](const LinkContributions& l, int i) { return l.Epot(i); });
-            default: return {};
-        }
+        return contributions_->linksIn([&](const LinkContributions& c, int i) { return linkPart(entry, c, i); },
+                                       [&](const LinkContributions& c, int i) { return familyScale(entry.quantity, c, i); });
     }
 
 private:
@@ -175,7 +171,7 @@ public:
         } else {
             outputs_.push_back(computed);
         }
-        if (entry.perLink && !value.expand().is_zero()) entry.links = links_.of(entry.quantity, entry.row, entry.col);
+        if (entry.perLink && !value.expand().is_zero()) entry.links = links_.of(entry);
         if (entry.link >= 0 && entry.links.empty()) entry.links = {entry.link};
         catalogue_->entries.push_back(std::move(entry));
     }
@@ -236,6 +232,20 @@ CatalogueEntry entryOf(const Scene& scene, const present::DisplayItem& item, int
 
 }  // namespace
 
+double linkPart(const CatalogueEntry& e, const LinkContributions& c, int link) {
+    switch (e.quantity) {
+        case Quantity::MassMatrix:
+        case Quantity::MassMatrixEntry: return e.row >= 0 ? c.B(link)(e.row, e.col) : 0.0;
+        case Quantity::CoriolisMatrix:
+        case Quantity::CoriolisEntry: return e.row >= 0 ? c.C(link)(e.row, e.col) : 0.0;
+        case Quantity::GravityVector:
+        case Quantity::GravityEntry: return e.row >= 0 ? c.g(link)(e.row) : 0.0;
+        case Quantity::KineticEnergy: return c.Ekin(link);
+        case Quantity::PotentialEnergy: return c.Epot(link);
+        default: return 0.0;
+    }
+}
+
 const CatalogueEntry* EntryCatalogue::find(const std::string& id) const {
     for (const CatalogueEntry& e : entries)
         if (e.id == id) return &e;
@@ -251,6 +261,22 @@ const CatalogueEntry* EntryCatalogue::find(const std::string& id) const {
 const CatalogueEntry* EntryCatalogue::at(int step, int item, int row, int col) const {
     for (const CatalogueEntry& e : entries)
         if (e.step == step && e.item == item && (!e.cell || (e.row == row && e.col == col))) return &e;
+    return nullptr;
+}
+
+const CatalogueEntry* EntryCatalogue::ofQuantity(Quantity quantity, int row, int col) const {
+    // The matrix and its single entries are one quantity, in two forms.
+    const auto family = [](Quantity q) {
+        switch (q) {
+            case Quantity::MassMatrixEntry: return Quantity::MassMatrix;
+            case Quantity::CoriolisEntry: return Quantity::CoriolisMatrix;
+            case Quantity::GravityEntry: return Quantity::GravityVector;
+            case Quantity::ForceEntry: return Quantity::GeneralizedForces;
+            default: return q;
+        }
+    };
+    for (const CatalogueEntry& e : entries)
+        if (family(e.quantity) == family(quantity) && (row < 0 || (e.row == row && e.col == std::max(col, 0)))) return &e;
     return nullptr;
 }
 

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "core/dynamics/link_contributions.hpp"
 #include "core/math/expression_tape.hpp"
 #include "core/model/scene.hpp"
 #include "core/present/display_document.hpp"
@@ -54,12 +55,20 @@ public:
     // The entry shown at item `item` of step `step` (indices into the document): its
     // cell (row, col) when the item's entries are listed, else the item's own; null: none.
     const CatalogueEntry* at(int step, int item, int row = -1, int col = -1) const;
+    // The entry (row, col) of B, C, g or Q (either form: MassMatrix and MassMatrixEntry
+    // alike), or E_kin, E_pot (row −1): what a matrix shown elsewhere (the teach pose's
+    // B(q)) picks. Null: none.
+    const CatalogueEntry* ofQuantity(present::Quantity quantity, int row = -1, int col = -1) const;
     // The entries the link (0-based) feeds.
     std::vector<const CatalogueEntry*> fedBy(int link) const;
 
     // Every entry's values at one state, into out (values.outputCount() doubles).
     void evaluate(const double* q, const double* qd, double t, std::vector<double>& out) const;
 };
+
+// Link `link`'s part of the per-link sum `entry` is (b_jk, c_ij, g_j, E_kin, E_pot) at the
+// state `contributions` was last evaluated at; 0 for any other entry.
+double linkPart(const CatalogueEntry& entry, const LinkContributions& contributions, int link);
 
 // Take the GiNaC lock themselves; `shown` is the display document built from the same
 // derivation. Throw std::invalid_argument when an entry's expression does not compile.

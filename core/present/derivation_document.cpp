@@ -24,6 +24,7 @@ DisplayOptions optionsFor(const Derivation& d, bool forPages) {
     if (o.names.coordinateNames.empty())
         for (const GiNaC::symbol& q : d.q) o.names.coordinateNames.push_back(q.get_name());
     o.names.trigSymbols = d.system == symbolic::SystemKind::Robot;
+    o.names.links = d.symbolLinks;
     o.cutLongSums = forPages;
     return o;
 }

@@ -37,6 +37,9 @@ struct DisplayNode {
     // Raw made by displayMoreTerms: the N of "⋯ (N more terms)"; 0 for any other node.
     // (Beside kind, in what would be padding.)
     std::uint32_t moreTerms = 0;
+    // Symbol: the link (0-based) whose inertial parameter it is (m2, ℓc2, I2: what the
+    // window draws in that link's colour); −1: none. (Beside kind too.)
+    std::int16_t link = -1;
     // Symbol: the base as Text prints it (θ, ℓ, q, mass), as LaTeX (\theta, \ell,
     // \mathrm{mass}), and the Plain name (GiNaC's, or cos(q1+q2) for the c/s shorthand;
     // `name` is always GiNaC's name, the sort key's spelling).

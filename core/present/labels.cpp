@@ -13,7 +13,7 @@ using symbolic::Quantity;
 // A symbol's name in LaTeX as it reads inside the expressions (theta1 → \theta_{1},
 // x_cart_dot → \dot{x}_{\mathrm{cart}}), the user's names taken as they are.
 std::string latexOfSymbol(const std::string& name) {
-    const NameRules rules{{}, false};
+    const NameRules rules{{}, false, {}};
     return renderDisplay(*symbolNode(name, symbolMeaning(name, rules), rules), DisplayStyle::Latex);
 }
 

@@ -142,7 +142,7 @@ std::shared_ptr<const DisplayDocument> structuredDisplayDocument(const Structure
     auto names = std::make_shared<std::map<std::string, DisplayPtr>>();
     for (const NamedDefinition& d : s.table->entries()) (*names)[d.name] = structuredNameNode(d.name);
     DisplayOptions options;
-    options.names = {doc->coordinateNames, true};
+    options.names = {doc->coordinateNames, true, s.symbolLinks};
     options.givenSymbols = names;
     options.readableNumbers = true;
     DisplayBuilder build(options);

@@ -222,7 +222,9 @@ DisplayPtr symbolNode(const std::string& name, const SymbolMeaning& meaning, con
         n->dots = meaning.second ? 2 : 1;
         return n;
     }
-    return namedSymbol(name);
+    auto n = namedSymbol(name);
+    if (const auto it = rules.links.find(name); it != rules.links.end()) n->link = static_cast<std::int16_t>(it->second);
+    return n;
 }
 
 DisplayPtr displaySymbolName(const std::string& name, int dots) {

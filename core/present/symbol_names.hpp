@@ -3,6 +3,7 @@
 // core/symbolic/derivation.hpp): theta1 → θ1 (\theta_{1}), lc2 → ℓc2 (\ell_{c2}),
 // Ixx1 → I_{xx,1}, xc1 → x_{c1}, m_cart → m_{\mathrm{cart}}, qd1 → q̇1, theta1_dot → θ̇1,
 // c12 → c12 (Plain: cos(q1+q2)). No GiNaC: plain strings in, display nodes out.
+#include <map>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,7 @@ struct SymbolMeaning {
 struct NameRules {
     std::vector<std::string> coordinateNames;  // empty: any q<i> is a coordinate
     bool trigSymbols = true;
+    std::map<std::string, int> links;  // a link's inertial parameters: name → link (0-based)
 };
 
 SymbolMeaning symbolMeaning(const std::string& name, const NameRules& rules);

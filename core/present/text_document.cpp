@@ -39,6 +39,54 @@ std::size_t textColumnsAtLeast(const DisplayNode& n, std::size_t limit) {
     }
 }
 
+// Terminal columns of one line of text.
+int columnsOf(const std::string& s) { return static_cast<int>(widestLine(s)); }
+
+int lineCount(const std::string& s) { return 1 + static_cast<int>(std::count(s.begin(), s.end(), '\n')); }
+
+// The spans of an item printed as `text` from line `first`: each entry of a matrix
+// printed as a block (its row's line, its column's cells), each entry listed on its own
+// line, else the item's lines whole.
+void itemSpans(const DisplayItem& item, const std::string& text, int first, int step, int index, std::vector<TextSpan>& out) {
+    const int lines = lineCount(text);
+    const DisplayNode& value = *item.value;
+    if (value.kind == DisplayKind::Matrix && !value.rows.empty()) {
+        const std::size_t rows = value.rows.size(), cols = value.rows[0].size();
+        if (text.rfind(item.name + " (", 0) == 0) {  // listed entry by entry: one line each after the heading
+            int line = first + 1;
+            for (std::size_t r = 0; r < rows; ++r)
+                for (std::size_t c = 0; c < cols; ++c)
+                    if (!isZeroNumber(*value.rows[r][c])) {
+                        const std::string entry = "  " + entryName(item, r, c) + " = " + renderDisplay(*value.rows[r][c], DisplayStyle::Text);
+                        out.push_back({line, 0, columnsOf(entry), step, index, static_cast<int>(r), static_cast<int>(c)});
+                        line += lineCount(entry);
+                    }
+            return;
+        }
+        if (lines == static_cast<int>(rows) && item.equation->kind == DisplayKind::Equation) {
+            // label = ⎡ cells ⎤, columns padded to their widest, two spaces apart
+            std::vector<std::vector<std::string>> cell(rows, std::vector<std::string>(cols));
+            std::vector<int> width(cols, 0);
+            for (std::size_t r = 0; r < rows; ++r)
+                for (std::size_t c = 0; c < cols; ++c) {
+                    cell[r][c] = renderDisplay(*value.rows[r][c], DisplayStyle::Text);
+                    width[c] = std::max(width[c], columnsOf(cell[r][c]));
+                }
+            const int left = columnsOf(renderDisplay(*item.equation->children[0], DisplayStyle::Text)) +
+                             columnsOf(item.equation->text) + 2;
+            for (std::size_t r = 0; r < rows; ++r) {
+                int from = left;
+                for (std::size_t c = 0; c < cols; ++c) {
+                    out.push_back({first + static_cast<int>(r), from, from + width[c], step, index, static_cast<int>(r), static_cast<int>(c)});
+                    from += width[c] + 2;
+                }
+            }
+            return;
+        }
+    }
+    for (int l = 0; l < lines; ++l) out.push_back({first + l, 0, 1 << 20, step, index, -1, -1});
+}
+
 }  // namespace
 
 std::string itemText(const DisplayItem& item) {
@@ -64,12 +112,21 @@ std::string itemText(const DisplayItem& item) {
     return out;
 }
 
-std::string textDocument(const DisplayDocument& document) {
+std::string textDocument(const DisplayDocument& document, std::vector<TextSpan>* spans) {
     std::string out = document.systemName + "\n" + std::string(document.systemName.size(), '=') + "\n";
     if (!document.form.empty()) out += "Form: " + document.form + " (" + document.formReason + ")\n";
-    for (const DisplayStep& step : document.steps) {
-        out += "\nStep " + std::to_string(step.number) + ". " + step.title + "\n    " + step.formulaText + "\n\n";
-        for (const DisplayItem& item : step.items) out += itemText(item) + "\n\n";
+    int line = lineCount(out) - 1;  // the line being written
+    for (std::size_t s = 0; s < document.steps.size(); ++s) {
+        const DisplayStep& step = document.steps[s];
+        const std::string heading = "\nStep " + std::to_string(step.number) + ". " + step.title + "\n    " + step.formulaText + "\n\n";
+        out += heading;
+        line += lineCount(heading) - 1;
+        for (std::size_t i = 0; i < step.items.size(); ++i) {
+            const std::string text = itemText(step.items[i]);
+            if (spans) itemSpans(step.items[i], text, line, static_cast<int>(s), static_cast<int>(i), *spans);
+            out += text + "\n\n";
+            line += lineCount(text) + 1;
+        }
     }
     return out + "Actuation: " + document.actuation + "\n";
 }

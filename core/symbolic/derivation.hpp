@@ -14,6 +14,7 @@
 //                 an index of 10 or more the indices are joined by '_' (c9_10)
 //   parameters    their scene names; in textbook-symbol mode a1, d1, m1, xc1, yc1,
 //                 zc1 (COM in frame i), Ixx1, Iyy1, Izz1, Ixy1, Ixz1, Iyz1
+#include <map>
 #include <string>
 #include <vector>
 
@@ -98,6 +99,8 @@ struct Derivation {
     GiNaC::lst trigToFunctions;
     GiNaC::lst parameterValues;
     std::vector<std::string> warnings;
+    // The symbols of one link's inertial parameters, by name → link (symbolic_robot.hpp).
+    std::map<std::string, int> symbolLinks;
 };
 
 }  // namespace ll::symbolic

@@ -279,6 +279,7 @@ StructuredDynamics deriveStructured(const Scene& scene, const DerivationOptions&
             for (double& x : q) x = u(rng);
             s.trigToFunctions = tc.toFunctions();
             s.parameterValues = robot.parameterValues;
+    s.symbolLinks = linkSymbols(robot);
             states.emplace_back(table, structuredInputs(s, q, qd), options.cancel);
         }
         for (int l = 0; l < n; ++l) {
@@ -321,6 +322,7 @@ StructuredDynamics deriveStructured(const Scene& scene, const DerivationOptions&
     s.Q = effectForces(robot, tc.qd());
     for (int i = 0; i < n; ++i) s.qdd.emplace_back("qdd" + idx(i));
     s.parameterValues = robot.parameterValues;
+    s.symbolLinks = linkSymbols(robot);
     s.trigToFunctions = tc.toFunctions();
     table.setCancel(nullptr);  // the flag may not outlive this call
     s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -20,6 +20,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -49,6 +50,7 @@ struct StructuredDynamics {
     GiNaC::lst parameterValues;  // parameter symbol == value
     GiNaC::lst trigToFunctions;  // c_i == cos(q_i), s_i == sin(q_i)
     double seconds = 0.0;        // time of the derivation
+    std::map<std::string, int> symbolLinks;  // one link's inertial parameters: name → link
     // Which coordinates b_jk depends on (bit l: q_{l+1}), as the names say.
     std::uint64_t coordinatesOfB(int j, int k) const { return table->coordinatesOf(B(j, k)); }
     // How many ∂b_jk/∂q_l with j ≤ k are non-zero.

@@ -1,5 +1,7 @@
 #include "core/symbolic/symbolic_robot.hpp"
 
+#include <set>
+
 #include <cmath>
 
 #include "core/symbolic/expression.hpp"
@@ -187,6 +189,36 @@ GiNaC::matrix effectForces(const SymbolicRobot& robot, const std::vector<GiNaC::
     for (const SymbolicTerm& f : robot.viscous) Q(f.joint, 0) += viscousFrictionForce<GiNaC::ex>(f.value, qd[f.joint]);
     for (const SymbolicTerm& f : robot.coulomb) Q(f.joint, 0) += tanhCoulombForce<GiNaC::ex>(f.value, qd[f.joint], f.extra);
     return Q;
+}
+
+namespace {
+
+void collectSymbols(const GiNaC::ex& e, std::set<std::string>& out) {
+    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::symbol>(*it)) out.insert(GiNaC::ex_to<GiNaC::symbol>(*it).get_name());
+}
+
+}  // namespace
+
+std::map<std::string, int> linkSymbols(const SymbolicRobot& robot) {
+    std::map<std::string, int> owner;
+    std::set<std::string> shared;
+    for (std::size_t i = 0; i < robot.joints.size(); ++i) {
+        const SymbolicJoint& j = robot.joints[i];
+        std::set<std::string> names;
+        collectSymbols(j.mass, names);
+        collectSymbols(j.com, names);
+        collectSymbols(j.inertia, names);
+        for (const std::string& name : names) {
+            const auto [it, inserted] = owner.emplace(name, static_cast<int>(i));
+            if (!inserted && it->second != static_cast<int>(i)) shared.insert(name);
+        }
+    }
+    // A length of the DH table (a1 in a COM written as lc1 − a1) is the geometry's, not a link's.
+    for (const SymbolicJoint& j : robot.joints)
+        for (const GiNaC::ex* e : {&j.a, &j.alpha, &j.d, &j.theta}) collectSymbols(*e, shared);
+    for (const std::string& name : shared) owner.erase(name);
+    return owner;
 }
 
 }  // namespace ll::symbolic

@@ -12,6 +12,7 @@
 // A joint's motor armature is its own term in every mode but Numeric: Jm_i G_i² for
 // "motor": {inertia, gear_ratio}, Ja_i for "armature" (or the parameters it was
 // written with, in Parametric mode), so b_ii reads "… + Jm1 G1²".
+#include <map>
 #include <string>
 #include <vector>
 
@@ -55,6 +56,13 @@ struct SymbolicRobot {
 // t is the time symbol torques depend on. Throws InputError for expressions that
 // do not parse (already checked when the scene was loaded).
 SymbolicRobot symbolicRobot(const Scene& scene, ParameterMode mode, const GiNaC::symbol& t);
+
+// The symbols that stand for one link's inertial parameters: those occurring in link i's
+// mass, centre of mass or inertia and in no other link's and no DH row (m2, ℓc2, I2; a
+// parameter two links share belongs to neither, a length a1 is the geometry's), by name
+// → link (0-based). What the window colours
+// in the formulas, each link in its colour.
+std::map<std::string, int> linkSymbols(const SymbolicRobot& robot);
 
 // The generalized forces of the declared torques and friction (n×1, n = qd.size()):
 // Q_i = τ_i(t) − b_i q̇_i − F_c,i tanh(q̇_i / v_s,i) by joint (core/model/friction_law.hpp).

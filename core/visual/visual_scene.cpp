@@ -23,12 +23,6 @@ constexpr double kZero = 1e-9;  // [m] a DH length below this draws no segment
 
 Rgba rgb(int r, int g, int b) { return {r / 255.0f, g / 255.0f, b / 255.0f, 1.0f}; }
 
-// Link colours, one per link in turn (colour-blind-safe Okabe–Ito hues).
-Rgba linkColor(int i) {
-    static const Rgba palette[] = {rgb(0, 114, 178), rgb(230, 159, 0), rgb(0, 158, 115),
-                                   rgb(204, 121, 167), rgb(86, 180, 233), rgb(213, 94, 0)};
-    return palette[i % 6];
-}
 const Rgba kJointColor = rgb(105, 112, 124);
 const Rgba kComColor = rgb(240, 200, 40);
 const Rgba kEndEffectorColor = rgb(200, 30, 40);

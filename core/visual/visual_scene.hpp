@@ -30,6 +30,7 @@
 #include "core/kinematics/body_poses.hpp"
 #include "core/model/scene.hpp"
 #include "core/simulation/trajectory.hpp"
+#include "core/visual/link_colors.hpp"
 
 namespace ll {
 
@@ -44,10 +45,6 @@ enum class PartShape { Box, Sphere, Cylinder, Rod, Bar, Sleeve };
 
 // What a part stands for (a renderer may style or hide by role).
 enum class PartRole { Link, Joint, CentreOfMass, EndEffector, Pedestal, Body };
-
-struct Rgba {
-    float r = 0.5f, g = 0.5f, b = 0.5f, a = 1.0f;
-};
 
 // True for the shapes whose `length` is set by every pose (a renderer draws them at
 // unit length and scales z).
