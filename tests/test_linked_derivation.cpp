@@ -237,7 +237,7 @@ private slots:
         for (QTableView* t : inertials)
             if (t->isVisible() && t->selectionModel() && t->selectionModel()->isRowSelected(1, {})) selected = true;
         QVERIFY(selected);
-        QVERIFY(w.readoutText().contains("link 2"));
+        QVERIFY(w.readoutText().contains("link&nbsp;2"));
     }
 
     // The Torques tab draws a joint's parts; the Properties tab says every property holds.

@@ -98,10 +98,11 @@ void EntrySelection::clear() {
     emit selectionChanged();
 }
 
-void EntrySelection::setState(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, double t) {
+void EntrySelection::setState(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, double t, bool teachPose) {
     q_ = q;
     qd_ = qd;
     t_ = t;
+    teachPose_ = teachPose;
     update();
     emit valueChanged();
 }
@@ -170,7 +171,7 @@ QString linkName(int link) {
         .arg(int(c.r * 255))
         .arg(int(c.g * 255))
         .arg(int(c.b * 255))
-        .arg(QObject::tr("link %1").arg(link + 1));
+        .arg(QObject::tr("link&nbsp;%1").arg(link + 1));
 }
 
 // q2, q3 (or q̇2, q̇3 in Latin Modern: the desktop's sans font drops the dots).
@@ -193,11 +194,12 @@ QString EntrySelection::readout() const {
     }
     const CatalogueEntry* e = entry();
     if (!e) return {};
-    QString text = "<b>" + valueText().toHtmlEscaped() + "</b>  " + tr("at t = %1 s").arg(readableNumber(t_));
+    QString text = "<b>" + valueText().toHtmlEscaped() + "</b>  " +
+                   (teachPose_ ? tr("at the teach pose") : tr("at t = %1 s").arg(readableNumber(t_)));
     QStringList fed;
     for (int i : e->links)
         if (i < static_cast<int>(shares_.size()))
-            fed << (e->perLink ? tr("%1 %2 %").arg(linkName(i)).arg(std::lround(100 * shares_[static_cast<std::size_t>(i)]))
+            fed << (e->perLink ? tr("%1&nbsp;%2&nbsp;%").arg(linkName(i)).arg(std::lround(100 * shares_[static_cast<std::size_t>(i)]))
                                : linkName(i));
     text += " · " + (fed.isEmpty() ? tr("no link's parameters occur in it") : tr("fed by %1").arg(fed.join(", ")));
     const QString q = coordinateList(e->coordinates, n, false), qd = coordinateList(e->velocities, n, true);

@@ -52,9 +52,9 @@ public:
     // The entries the picked link feeds (empty when no link is picked).
     const std::vector<const CatalogueEntry*>& marked() const { return marked_; }
 
-    // The state shown (a time of the run or the teach pose): the value and the shares
+    // The state shown (a time of the run, or the teach pose): the value and the shares
     // follow. Emits valueChanged.
-    void setState(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, double t);
+    void setState(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, double t, bool teachPose = false);
     double time() const { return t_; }
     // The picked entry's values at that state (rows·cols numbers, row by row).
     const std::vector<double>& value() const { return value_; }
@@ -91,6 +91,7 @@ private:
     std::vector<const CatalogueEntry*> marked_;
     Eigen::VectorXd q_, qd_;
     double t_ = 0;
+    bool teachPose_ = false;
     std::vector<double> all_, value_, shares_;
 };
 

@@ -321,6 +321,10 @@ void MainWindow::buildCentre() {
     readout_->setTextFormat(Qt::RichText);
     readout_->setWordWrap(true);
     readout_->setContentsMargins(6, 2, 6, 2);
+    readout_->setText(readoutHint());
+    // Three lines, always: a readout that grew or shrank with its text would resize the 3D
+    // view under the animation (and repaint the window ahead of an edit's result).
+    readout_->setFixedHeight(3 * readout_->fontMetrics().lineSpacing() + 6);
     layout->addWidget(bar);
     layout->addWidget(view_, 1);
     layout->addWidget(readout_);
@@ -420,6 +424,11 @@ void MainWindow::buildDocks() {
     for (TrajectoryChart* chart : {energy_, jointsChart_, entryChart_}) connect(chart, &TrajectoryChart::timePicked, playback_, scrub);
     connect(torques_, &TorquePane::timePicked, playback_, scrub);
     connect(properties_, &PropertiesPanel::timePicked, playback_, scrub);
+    // An entry picked in the teach panel's B(q), g(q) is the derivation's entry of that quantity.
+    connect(teach_, &TeachPanel::entryPicked, this, [this](present::Quantity quantity, int row, int col) {
+        if (!selection_.catalogue()) return;
+        if (const CatalogueEntry* e = selection_.catalogue()->ofQuantity(quantity, row, col)) selection_.select(e->id);
+    });
     connect(teach_, &TeachPanel::poseChanged, this, [this](const Eigen::VectorXd& q) {
         if (!teaching_ || !view_) return;
         showTeachPose(q);
@@ -600,7 +609,7 @@ void MainWindow::showDerivation(std::shared_ptr<const DerivationResult> result) 
     derived_ = result;
     typeset_->setDerivation(result->display, result->error);
     selection_.setCatalogue(result->catalogue, result->scene);
-    if (sampler_ && q_.size() == selection_.catalogue()->n) selection_.setState(q_, qd_, playback_->time());
+    if (sampler_ && selection_.catalogue() && q_.size() == selection_.catalogue()->n) selection_.setState(q_, qd_, playback_->time());
 }
 
 void MainWindow::showAnalysis(std::shared_ptr<const RunAnalysis> analysis) {
@@ -649,6 +658,10 @@ void MainWindow::showDerivationView(const QString& name) {
     derivationTabs_->setCurrentIndex(name == "text" ? 1 : name == "entries" ? 2 : 0);
 }
 
+QString MainWindow::readoutHint() const {
+    return tr("Click an entry of the derivation (b11, g2, …) or a link in the 3D view to see what feeds it and its value now.");
+}
+
 QString MainWindow::readoutText() const { return readout_->text(); }
 
 // The pick changed: every view shows it (marks, the plot, the 3D emphasis, the readout).
@@ -670,6 +683,18 @@ void MainWindow::selectionChanged() {
     }
     typeset_->setMarks(marks);
     derivation_->setMarks(marks);
+    // The teach panel tints the same entry of its B(q) or g(q).
+    if (const CatalogueEntry* picked = selection_.entry(); picked && picked->row >= 0) {
+        using present::Quantity;
+        const Quantity q = picked->quantity == Quantity::MassMatrixEntry   ? Quantity::MassMatrix
+                           : picked->quantity == Quantity::GravityEntry    ? Quantity::GravityVector
+                                                                           : picked->quantity;
+        teach_->matrices().setMark(q, picked->row, picked->col);
+    } else if (picked && picked->quantity == present::Quantity::PotentialEnergy) {
+        teach_->matrices().setMark(picked->quantity);
+    } else {
+        teach_->matrices().setMark(std::nullopt);
+    }
     // The entry over the run, beside the energy plot.
     std::vector<double> t, values;
     selection_.series(t, values);
@@ -689,10 +714,7 @@ void MainWindow::selectionChanged() {
 // A new time or pose: the value, the shares, the emphasis.
 void MainWindow::selectionValueChanged() {
     if (!selection_.active()) {
-        readout_->setText(selection_.catalogue()
-                              ? tr("Click an entry of the derivation (b11, g2, …) or a link in the 3D view to see what feeds it "
-                                   "and its value now.")
-                              : QString());
+        readout_->setText(readoutHint());
         if (view_->emphasis().active()) view_->setEmphasis({});
         return;
     }
@@ -778,7 +800,7 @@ void MainWindow::showTeachPose(const Eigen::VectorXd& q) {
     // The picked entry at the pose, the joints at rest (as the pose results take them).
     const Scene& scene = doc_.validScene();
     const int n = static_cast<int>(q.size());
-    selection_.setState(q, scene.initial.qd.size() == n ? scene.initial.qd : Eigen::VectorXd::Zero(n), playback_->time());
+    selection_.setState(q, scene.initial.qd.size() == n ? scene.initial.qd : Eigen::VectorXd::Zero(n), playback_->time(), true);
 }
 
 // Step 9 of the typeset derivation while teaching: B, C, g and the energies at the pose.
@@ -825,6 +847,7 @@ void MainWindow::setPresentationMode(bool on) {
     QApplication::setFont(font);
     derivation_->setZoom(on ? 1.6 : 1.0);
     typeset_->setZoom(on ? 1.6 : 1.0);
+    readout_->setFixedHeight(3 * QFontMetrics(font).lineSpacing() + 6);
     // The plots: bigger labels and lines need room, so their dock gets more height, and
     // the dock titles (which the application font does not reach) grow too.
     for (TrajectoryChart* chart : {energy_, jointsChart_}) chart->setScale(on ? 1.4 : 1.0);

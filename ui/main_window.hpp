@@ -111,6 +111,7 @@ public:
     TorquePane& torquePane() { return *torques_; }
     PropertiesPanel& propertiesPanel() { return *properties_; }
     QString readoutText() const;
+    QString readoutHint() const;
     // Shows a tab of the plots dock by name: energy, joints, teach, torques, properties,
     // work-precision (false: no such tab).
     bool showPlotTab(const QString& name);

@@ -2,20 +2,15 @@
 
 #include <cmath>
 #include <numbers>
-#include <sstream>
 
-#include <QFontDatabase>
 #include <QHBoxLayout>
 #include <QLabel>
-#include <QPlainTextEdit>
 #include <QSignalBlocker>
+#include <QScrollArea>
 #include <QSlider>
+#include <QVBoxLayout>
 
-#include "core/dynamics/energy.hpp"
-#include "core/dynamics/potential_gradient.hpp"
-#include "core/dynamics/mass_matrix.hpp"
-#include "core/kinematics/forward_kinematics.hpp"
-#include "core/model/robot_data.hpp"
+#include "core/pipeline/pose_results.hpp"
 
 namespace ll::ui {
 
@@ -26,19 +21,29 @@ double unitOf(JointType type) { return type == JointType::Revolute ? 0.1 * std::
 
 struct TeachPanel::Model {
     Scene scene;
-    RobotData data;
-    explicit Model(const Scene& s) : scene(s), data(s.robot) {}
+    explicit Model(const Scene& s) : scene(s) {}
 };
 
 TeachPanel::TeachPanel(QWidget* parent) : QWidget(parent) {
     auto* layout = new QHBoxLayout(this);
     auto* left = new QWidget(this);
     sliderBox_ = new QVBoxLayout(left);
-    readout_ = new QPlainTextEdit(this);
-    readout_->setReadOnly(true);
-    readout_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    auto* right = new QWidget(this);
+    auto* rightBox = new QVBoxLayout(right);
+    rightBox->setContentsMargins(0, 0, 0, 0);
+    auto* scroll = new QScrollArea(right);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    matrices_ = new PoseMatrices(scroll);
+    scroll->setWidget(matrices_);
+    message_ = new QLabel(right);
+    message_->setWordWrap(true);
+    message_->hide();
+    rightBox->addWidget(message_);
+    rightBox->addWidget(scroll, 1);
     layout->addWidget(left, 1);
-    layout->addWidget(readout_, 1);
+    layout->addWidget(right, 2);
+    connect(matrices_, &PoseMatrices::entryPicked, this, &TeachPanel::entryPicked);
 }
 
 TeachPanel::~TeachPanel() = default;
@@ -48,9 +53,14 @@ void TeachPanel::setScene(const Scene& scene) {
         model_.reset();
         for (QSlider* s : sliders_) s->parentWidget()->deleteLater();
         sliders_.clear(), labels_.clear();
-        readout_->setPlainText(tr("Teach mode poses robots; this scene is a hand-typed Lagrangian."));
+        matrices_->setStep({});
+        matrices_->hide();
+        message_->setText(tr("Teach mode poses robots; this scene is a hand-typed Lagrangian."));
+        message_->show();
         return;
     }
+    message_->hide();
+    matrices_->show();
     const int n = scene.robot.dof();
     const bool keep = model_ && static_cast<int>(sliders_.size()) == n;
     model_ = std::make_unique<Model>(scene);
@@ -105,24 +115,7 @@ void TeachPanel::slidersMoved() {
 void TeachPanel::evaluate() {
     if (!model_) return;
     Model& m = *model_;
-    forwardKinematics(m.scene.robot, m.data, q_);
-    computeMassMatrix(m.scene.robot, m.data);
-    computePotentialGradient(m.scene.robot, m.data, m.scene.effects, q_);
-    const double epot = potentialEnergy(m.scene.robot, m.data, m.scene.effects, q_);
-    std::ostringstream out;
-    out.precision(5);
-    out << tr("E_pot(q) = %1 J").arg(epot, 0, 'g', 5).toStdString() << "\n\n" << tr("g(q) [N·m or N] =").toStdString() << '\n';
-    for (int i = 0; i < m.data.g.size(); ++i) out << "  " << m.data.g[i] << '\n';
-    out << '\n' << tr("B(q) [kg·m², kg·m or kg] =").toStdString() << '\n';
-    for (int i = 0; i < m.data.B.rows(); ++i) {
-        out << " ";
-        for (int j = 0; j < m.data.B.cols(); ++j) {
-            out.width(11);
-            out << m.data.B(i, j);
-        }
-        out << '\n';
-    }
-    readout_->setPlainText(QString::fromStdString(out.str()));
+    matrices_->setStep(teachMatrices(m.scene, q_));
     for (std::size_t i = 0; i < labels_.size(); ++i) {
         const double v = q_[static_cast<int>(i)];
         labels_[i]->setText(m.scene.robot.joints[i].dh.type == JointType::Revolute ? tr("%1°").arg(v * 180 / std::numbers::pi, 0, 'f', 1)
@@ -130,6 +123,9 @@ void TeachPanel::evaluate() {
     }
 }
 
-QString TeachPanel::readout() const { return readout_->toPlainText(); }
+QString TeachPanel::readout() const {
+    // "E_pot(q) = …": the label with its argument, as the sliders' pose is the q.
+    return matrices_->text().replace(QString::fromUtf8("E_pot ="), QString::fromUtf8("E_pot(q) ="));
+}
 
 }  // namespace ll::ui

@@ -1,9 +1,10 @@
 #pragma once
 // Teach mode: one slider per joint poses the robot (revolute joints in degrees,
-// prismatic in metres, around the initial state) and shows at that pose, live, the
-// potential energy E_pot(q) [J], the gravity vector g(q) [N·m or N] and the mass matrix
-// B(q), evaluated by the numeric core. Robot scenes only (a hand-typed Lagrangian has
-// no joints to slide).
+// prismatic in metres, around the initial state) and shows at that pose, live and
+// typeset with the unit of every entry, the potential energy E_pot(q), the gravity vector
+// g(q) and the mass matrix B(q), evaluated by the numeric core. A click on an entry
+// picks it (entryPicked). Robot scenes only (a hand-typed Lagrangian has no joints to
+// slide).
 #include <memory>
 #include <vector>
 
@@ -11,11 +12,11 @@
 #include <QWidget>
 
 #include "core/model/scene.hpp"
+#include "ui/pose_matrices.hpp"
 
 class QLabel;
 class QSlider;
 class QVBoxLayout;
-class QPlainTextEdit;
 
 namespace ll::ui {
 
@@ -30,11 +31,13 @@ public:
     // Sets the sliders (and emits poseChanged).
     void setPose(const Eigen::VectorXd& q);
     const Eigen::VectorXd& pose() const { return q_; }
-    // E_pot, g and B at the pose, as shown.
+    // E_pot, g and B at the pose, as text prints them ("E_pot(q) = 5.886 J", …).
     QString readout() const;
+    PoseMatrices& matrices() { return *matrices_; }
 
 signals:
     void poseChanged(const Eigen::VectorXd& q);
+    void entryPicked(ll::present::Quantity quantity, int row, int col);
 
 private:
     void slidersMoved();
@@ -44,7 +47,8 @@ private:
     QVBoxLayout* sliderBox_;
     std::vector<QSlider*> sliders_;
     std::vector<QLabel*> labels_;
-    QPlainTextEdit* readout_;
+    PoseMatrices* matrices_;
+    QLabel* message_;
     Eigen::VectorXd q_;
 };
 

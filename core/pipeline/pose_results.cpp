@@ -1,5 +1,7 @@
 #include "core/pipeline/pose_results.hpp"
 
+#include <functional>
+
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -11,6 +13,7 @@
 #include "core/dynamics/mass_matrix.hpp"
 #include "core/dynamics/potential_gradient.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
+#include "core/model/quantity_units.hpp"
 #include "core/model/robot_data.hpp"
 #include "core/present/labels.hpp"
 
@@ -69,7 +72,57 @@ std::string perJoint(const Scene& scene, const char* revolute, const char* prism
     return anyPrismatic ? prismatic : revolute;
 }
 
+// value, a thin space, the unit: a row the typesetter sets side by side.
+DisplayPtr withUnit(DisplayPtr value, const std::string& unit) {
+    if (unit.empty()) return value;
+    auto u = std::make_shared<present::DisplayNode>();
+    u->kind = DisplayKind::Raw;
+    u->text = u->plain = " " + unit;
+    u->latex = "\\,\\mathrm{" + unit + "}";
+    // The typesetter sets the children side by side; text and LaTeX print the whole.
+    auto row = std::make_shared<present::DisplayNode>();
+    row->kind = DisplayKind::Raw;
+    row->text = present::renderDisplay(*value, present::DisplayStyle::Text) + u->text;
+    row->latex = present::renderDisplay(*value, present::DisplayStyle::Latex) + u->latex;
+    row->plain = present::renderDisplay(*value, present::DisplayStyle::Plain);
+    row->children = {std::move(value), u};
+    return row;
+}
+
+// m with each entry's unit unit(i, j): once after it when they are all alike.
+DisplayPtr matrixWithUnits(const Eigen::MatrixXd& m, const std::function<std::string(int, int)>& unit) {
+    bool alike = true;
+    for (int i = 0; i < m.rows(); ++i)
+        for (int j = 0; j < m.cols(); ++j) alike = alike && unit(i, j) == unit(0, 0);
+    DisplayPtr plain = matrix(m);
+    if (alike) return withUnit(plain, unit(0, 0));
+    auto node = std::make_shared<present::DisplayNode>(*plain);
+    for (int i = 0; i < m.rows(); ++i)
+        for (int j = 0; j < m.cols(); ++j) node->rows[i][j] = withUnit(node->rows[i][j], unit(i, j));
+    return node;
+}
+
 }  // namespace
+
+present::DisplayStep teachMatrices(const Scene& scene, const Eigen::VectorXd& q) {
+    const int n = scene.robot.dof();
+    if (scene.lagrangian || n == 0 || q.size() != n) throw std::invalid_argument("teachMatrices: a robot scene and one value per joint");
+    RobotData data(scene.robot);
+    forwardKinematics(scene.robot, data, q);
+    computeMassMatrix(scene.robot, data);
+    computePotentialGradient(scene.robot, data, scene.effects, q);
+    const auto revolute = [&](int j) { return scene.robot.joints[static_cast<std::size_t>(j)].dh.type == JointType::Revolute; };
+    present::DisplayStep step;
+    step.number = poseStepNumber;
+    step.title = "B(q), g(q) and E_pot at the pose";
+    step.items.push_back(item("E_pot", present::Quantity::PotentialEnergy, "E_{\\mathrm{pot}}",
+                              withUnit(number(potentialEnergy(scene.robot, data, scene.effects, q)), "J"), ""));
+    step.items.push_back(item("g", present::Quantity::GravityVector, "g(q)",
+                              matrixWithUnits(data.g, [&](int i, int) { return forceUnit(revolute(i)); }), ""));
+    step.items.push_back(item("B", present::Quantity::MassMatrix, "B(q)",
+                              matrixWithUnits(data.B, [&](int i, int j) { return massMatrixUnit(revolute(i), revolute(j)); }), ""));
+    return step;
+}
 
 present::DisplayStep poseResults(const Scene& scene, const Eigen::VectorXd& q, const Eigen::VectorXd& qd) {
     const int n = scene.robot.dof();

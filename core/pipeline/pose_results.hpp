@@ -18,4 +18,9 @@ inline constexpr int poseStepNumber = 9;
 // q̇ in the window). A robot scene (a hand-typed Lagrangian has no robot to pose).
 present::DisplayStep poseResults(const Scene& scene, const Eigen::VectorXd& q, const Eigen::VectorXd& qd);
 
+// The teach panel's matrices at pose q: E_pot, g(q) and B(q) with the unit beside each
+// number — once after the matrix when every entry has the same (a robot with only
+// revolute joints: B in kg·m²), else in every entry (kg·m² | kg·m | kg, N·m | N).
+present::DisplayStep teachMatrices(const Scene& scene, const Eigen::VectorXd& q);
+
 }  // namespace ll
