@@ -43,6 +43,8 @@ public:
         QColor colour;
     };
     std::function<void(int item, int row, int col)> picked;  // a click on an item or one of its cells
+    std::function<void(double top, double bottom)> reveal;   // scroll so that this band is seen
+    int revealItem = -1, revealRow = -1, revealCol = -1;     // the item (or its cell) to reveal after the next paint
 
     explicit DerivationCanvas(QWidget* parent) : QWidget(parent) {
         setObjectName("derivation-canvas");
@@ -156,6 +158,20 @@ protected:
             y += 0.4 * mathUnitsPerEm * s;
         }
         if (std::abs(y + margin - minimumHeight()) > 1) setMinimumHeight(static_cast<int>(y + margin));
+        if (revealItem >= 0 && revealItem < static_cast<int>(entries_.size()) && reveal) {
+            const Entry& e = entries_[static_cast<std::size_t>(revealItem)];
+            double top = e.headerTop, bottom = e.headerTop + itemHeight(e, fm);
+            for (std::size_t l = 0; revealRow >= 0 && l < e.lines.size() && l < e.lineTops.size(); ++l)  // a cell: its line
+                for (const MathRegion& r : e.lines[l].regions)
+                    if (r.row == revealRow && r.col == revealCol) {
+                        top = e.lineTops[l];
+                        bottom = top + e.lines[l].height() * scale();
+                        l = e.lines.size();
+                        break;
+                    }
+            revealItem = -1;
+            reveal(top, bottom);
+        }
     }
 
     // A click on an item's triangle collapses or opens it; on its name or its formula it
@@ -276,6 +292,11 @@ DerivationView::DerivationView(QWidget* parent) : QWidget(parent) {
     scroll_->setWidgetResizable(true);
     canvas_ = new DerivationCanvas(scroll_);
     canvas_->picked = [this](int item, int row, int col) { emit entryPicked(step_ == 9 ? -1 : shownIndex_, item, row, col); };
+    canvas_->reveal = [this](double top, double bottom) {
+        const int mid = static_cast<int>(std::min(top + 40, (top + bottom) / 2));  // a long item: its first lines
+        (void)bottom;
+        scroll_->ensureVisible(0, mid, 0, std::max(20, scroll_->viewport()->height() / 2 - 10));  // about the middle
+    };
     scroll_->setWidget(canvas_);
     layout_->addWidget(scroll_, 1);
     connect(steps_, &QListWidget::currentRowChanged, this, [this](int row) {
@@ -422,9 +443,16 @@ void DerivationView::setMarks(std::vector<Mark> marks) {
     canvas_->setMarks(std::move(here));
 }
 
-void DerivationView::showDocumentStep(int stepIndex) {
-    if (document_ && stepIndex >= 0 && stepIndex < static_cast<int>(document_->steps.size()))
+void DerivationView::showDocumentStep(int stepIndex, int item, int row, int col) {
+    if (!document_ || stepIndex < 0 || stepIndex >= static_cast<int>(document_->steps.size())) return;
+    if (document_->steps[static_cast<std::size_t>(stepIndex)].number != step_)
         showStep(document_->steps[static_cast<std::size_t>(stepIndex)].number);
+    if (item >= 0) {
+        canvas_->revealItem = item;
+        canvas_->revealRow = row;
+        canvas_->revealCol = col;
+        canvas_->update();
+    }
 }
 
 QString DerivationView::itemLatex(int index) const { return canvas_->latex(index); }

@@ -63,8 +63,9 @@ public:
     // are indices into the document's steps (−1: the pose results); row < 0 the whole item.
     using Mark = EntryMark;
     void setMarks(std::vector<Mark> marks);
-    // Shows the step holding document step `stepIndex`'s items.
-    void showDocumentStep(int stepIndex);
+    // Shows the step holding document step `stepIndex`'s items, scrolled to item `item`
+    // (−1: where it is) or to its cell (row, col).
+    void showDocumentStep(int stepIndex, int item = -1, int row = -1, int col = -1);
 
 public slots:
     void nextStep();

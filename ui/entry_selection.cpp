@@ -109,6 +109,7 @@ void EntrySelection::setState(const Eigen::VectorXd& q, const Eigen::VectorXd& q
 
 void EntrySelection::update() {
     value_.clear();
+    jointsPart_ = jointsShare_ = 0;
     const int n = scene_ ? scene_->dof() : 0;
     shares_.assign(static_cast<std::size_t>(n), -1.0);
     if (link_ >= 0 && link_ < n) shares_[static_cast<std::size_t>(link_)] = 1.0;
@@ -118,10 +119,18 @@ void EntrySelection::update() {
     if (!e) return;
     value_.assign(all_.begin() + e->first, all_.begin() + e->first + e->rows * e->cols);
     if (e->perLink && contributions_ && contributions_->links() == n && q_.size() == n) {
-        // Each feeding link's share of the value now: |its part| over the parts' sum.
+        // Each feeding link's share of the value now: |its part| over the sum of the parts'
+        // magnitudes, the joints' own part (a motor's armature on b_jj, a spring's on g_j) one of them.
         contributions_->evaluate(q_, qd_);
-        double total = 0;
-        for (int i : e->links) total += std::abs(linkPart(*e, *contributions_, i));
+        double links = 0, sum = 0;
+        for (int i : e->links) {
+            links += std::abs(linkPart(*e, *contributions_, i));
+            sum += linkPart(*e, *contributions_, i);
+        }
+        const double joints = value_.size() == 1 ? value_[0] - sum : 0.0;
+        jointsPart_ = std::abs(joints) > 1e-9 * std::max(links, 1e-300) ? std::abs(joints) : 0.0;
+        const double total = links + jointsPart_;
+        jointsShare_ = total > 0 ? jointsPart_ / total : 0.0;
         for (int i : e->links) shares_[static_cast<std::size_t>(i)] = total > 0 ? std::abs(linkPart(*e, *contributions_, i)) / total : 0.0;
     } else {
         for (int i : e->links)
@@ -196,11 +205,21 @@ QString EntrySelection::readout() const {
     if (!e) return {};
     QString text = "<b>" + valueText().toHtmlEscaped() + "</b>  " +
                    (teachPose_ ? tr("at the teach pose") : tr("at t = %1 s").arg(readableNumber(t_)));
+    // 37 %, and "<1 %" for a part that is there but small
+    const auto percent = [](double share) {
+        const long p = std::lround(100 * share);
+        return share > 0 && p == 0 ? QString("&lt;1&nbsp;%") : QString("%1&nbsp;%").arg(p);
+    };
     QStringList fed;
     for (int i : e->links)
         if (i < static_cast<int>(shares_.size()))
-            fed << (e->perLink ? tr("%1&nbsp;%2&nbsp;%").arg(linkName(i)).arg(std::lround(100 * shares_[static_cast<std::size_t>(i)]))
-                               : linkName(i));
+            fed << (e->perLink ? linkName(i) + "&nbsp;" + percent(shares_[static_cast<std::size_t>(i)]) : linkName(i));
+    if (jointsPart_ > 0) {
+        using present::Quantity;
+        const bool mass = e->quantity == Quantity::MassMatrix || e->quantity == Quantity::MassMatrixEntry ||
+                          e->quantity == Quantity::KineticEnergy;
+        fed << (mass ? tr("the motor's armature") : tr("the springs")) + "&nbsp;" + percent(jointsShare_);
+    }
     text += " · " + (fed.isEmpty() ? tr("no link's parameters occur in it") : tr("fed by %1").arg(fed.join(", ")));
     const QString q = coordinateList(e->coordinates, n, false), qd = coordinateList(e->velocities, n, true);
     if (!q.isEmpty()) text += " · " + tr("depends on %1").arg(q);

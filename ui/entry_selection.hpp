@@ -93,6 +93,7 @@ private:
     double t_ = 0;
     bool teachPose_ = false;
     std::vector<double> all_, value_, shares_;
+    double jointsPart_ = 0, jointsShare_ = 0;  // the joints' own part of the value (armature, springs)
 };
 
 // A number as a student writes it: 4 significant digits, − for minus, ×10ⁿ beyond 1e±4.

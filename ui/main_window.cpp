@@ -639,6 +639,7 @@ void MainWindow::pickLink(int link) {
     if (link >= 0 && link < joints_->rowCount()) {
         editorTabs_->setCurrentIndex(1);  // Inertials
         inertialView_->selectRow(link);
+        view_->highlightJoint(-1);  // the link shows in its own colour, not the selection's
     }
 }
 
@@ -670,9 +671,7 @@ void MainWindow::selectionChanged() {
     if (const CatalogueEntry* e = selection_.entry()) {
         marks.push_back({e->step, e->item, e->cell ? e->row : -1, e->cell ? e->col : -1, QColor(255, 214, 90, 150)});
         // Show it where it is: the typeset page of its step, the text at its line.
-        if (typeset_->document() && e->step < static_cast<int>(typeset_->document()->steps.size()) &&
-            typeset_->document()->steps[static_cast<std::size_t>(e->step)].number != typeset_->step())
-            typeset_->showDocumentStep(e->step);
+        typeset_->showDocumentStep(e->step, e->item, e->cell ? e->row : -1, e->cell ? e->col : -1);
         derivation_->showItem(e->step, e->item);
     }
     if (selection_.link() >= 0) {

@@ -555,6 +555,9 @@ bool mathFontsAvailable() {
 QFont textbookFont(QFont base) {
     loadFonts();
     base.setFamily(families[0]);
+    // Latin Modern's x-height is a sixth smaller than DejaVu's: as large to the eye
+    if (base.pointSizeF() > 0) base.setPointSizeF(base.pointSizeF() * 1.15);
+    else if (base.pixelSize() > 0) base.setPixelSize(static_cast<int>(base.pixelSize() * 1.15 + 0.5));
     return base;
 }
 

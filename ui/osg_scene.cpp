@@ -172,7 +172,9 @@ OsgScene::OsgScene(const VisualScene& scene, const OsgSceneOptions& options) : o
         transform->addChild(solid(part));
         parts_.push_back(transform);
         stretch_.push_back(stretches(part.shape));
-        colours_.push_back(part.color);
+        // a link's parts in its colour when emphasised (its COM marker too)
+        colours_.push_back(part.role == PartRole::CentreOfMass && part.coordinate >= 0 ? linkColor(part.coordinate) : part.color);
+        built_.push_back(part.color);
         root_->addChild(transform);
         // A joint's axis, shown when a picked entry depends on its coordinate: a thin rod
         // along the joint's z through the marker, well past it on both sides.
@@ -286,7 +288,7 @@ void OsgScene::setEmphasis(const VisualEmphasis& emphasis) {
         osg::Node& solid = *parts_[i]->getChild(0);
         const float strength = emphasis.active() && i < emphasis.strength.size() ? emphasis.strength[i] : NAN;
         if (std::isnan(strength)) {
-            setMaterial(solid, colours_[i]);
+            setMaterial(solid, built_[i]);
         } else if (strength < 0) {
             setMaterial(solid, faded);
         } else {

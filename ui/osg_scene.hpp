@@ -58,7 +58,8 @@ private:
     osg::ref_ptr<osg::Group> groundGroup_;
     std::vector<osg::ref_ptr<osg::MatrixTransform>> parts_, frames_;
     std::vector<bool> stretch_;
-    std::vector<Rgba> colours_;                                // each part's own
+    std::vector<Rgba> built_;                                  // each part's colour as built
+    std::vector<Rgba> colours_;                                // and when its link is emphasised
     std::vector<osg::ref_ptr<osg::MatrixTransform>> axes_;     // per part: a joint's axis line (null elsewhere)
     std::vector<osg::ref_ptr<osg::Geode>> axisGeodes_;
     osg::ref_ptr<osg::Geometry> trail_;

@@ -7,6 +7,7 @@
 #include <QVBoxLayout>
 
 #include "ui/entry_selection.hpp"
+#include "ui/math_typesetter.hpp"
 
 namespace ll::ui {
 
@@ -18,6 +19,7 @@ PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent) {
     body_->setObjectName("properties");
     body_->setTextFormat(Qt::RichText);
     body_->setWordWrap(true);
+    body_->setFont(textbookFont(body_->font()));  // the sentences name q̇ and Ḃ: a font that draws their dots
     body_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
     body_->setTextInteractionFlags(Qt::TextSelectableByMouse | Qt::LinksAccessibleByMouse);
     connect(body_, &QLabel::linkActivated, this, [this](const QString& link) { emit timePicked(link.toDouble()); });

@@ -92,7 +92,9 @@ void TorquePane::redraw() {
         // three terms of the left side always.
         if (i < 4 || largest > 0) curves.push_back(std::move(c));
     }
-    const QString axis = unit.empty() ? tr("%1").arg(joint_->currentText()) : tr("%1 [%2]").arg(joint_->currentText(), QString::fromStdString(unit));
+    // τ_j [N·m]: short, the axis title is set along the plot's height
+    const QString axis = unit.empty() ? QString::fromUtf8("τ (%1)").arg(joint_->currentText())
+                                      : QString::fromUtf8("τ%1 [%2]").arg(j + 1).arg(QString::fromStdString(unit));
     chart_->setCurves(history_->t, std::move(curves), axis);
     residual_->setText(tr("largest |B q̈ + C q̇ + g − Q| of the run: %1%2")
                            .arg(readableNumber(history_->largestResidual), unit.empty() ? QString() : " " + QString::fromStdString(unit)));

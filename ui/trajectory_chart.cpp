@@ -93,7 +93,6 @@ void TrajectoryChart::setScale(double scale) {
 
 void TrajectoryChart::setTextbookFont() {
     baseLegend_ = textbookFont(baseLegend_);
-    baseTitle_ = textbookFont(baseTitle_);
     setScale(scale_);
 }
 

@@ -38,7 +38,7 @@ public:
     // as many times as wide (1 = the desktop's). Qt Charts does not follow the
     // application font, so the window's bigger font alone leaves the plots small.
     void setScale(double scale);
-    // The legend and the axis titles in Latin Modern (names with dots: B q̈, C q̇).
+    // The legend in Latin Modern (names with dots: B q̈, C q̇).
     void setTextbookFont();
     double scale() const { return scale_; }
 

@@ -18,5 +18,7 @@ int process(const std::vector<std::string>& scenes, int runs, const std::string&
 // --gui: edit-to-view latency, a large robot opened to its derivation on screen,
 // animation frame rate, start to first frame (bench_gui.cpp).
 int gui(const std::vector<std::string>& scenes, int runs);
+// --linked: the entry catalogue, per-frame evaluation and the run's analysis (bench_linked.cpp).
+int linked(const std::vector<std::string>& scenes, int runs);
 
 }  // namespace ll::bench

@@ -37,6 +37,7 @@
 #include "ui/joint_table_model.hpp"
 #include "ui/derivation_view.hpp"
 #include "ui/main_window.hpp"
+#include "ui/playback_bar.hpp"
 #include "ui/scene_view.hpp"
 
 namespace ll::bench {
@@ -159,6 +160,23 @@ void derivationOnScreen(const std::string& path, int runs) {
                 times.size());
 }
 
+// The frames `view` draws per second while `advance` is called for 2 s, `runs` times:
+// the median frames/s and process CPU milliseconds per frame.
+template <class Advance>
+std::pair<double, double> framesPerSecond(ui::SceneView& view, int runs, Advance advance) {
+    std::vector<double> fps, cpuPerFrame;
+    for (int r = 0; r < runs; ++r) {
+        const long before = view.framesDrawn();
+        const double cpu0 = processCpu();
+        QElapsedTimer clock;
+        clock.start();
+        while (clock.elapsed() < 2000) advance();
+        fps.push_back((view.framesDrawn() - before) / (clock.elapsed() / 1000.0));
+        cpuPerFrame.push_back((processCpu() - cpu0) * 1000 / std::max(1L, view.framesDrawn() - before));
+    }
+    return {median(fps), median(cpuPerFrame)};
+}
+
 void frameRate(const std::string& path, int runs) {
     const Scene scene = loadSceneReportingWarnings(path);
     const SimulationResult result = ll::simulate(scene);
@@ -171,26 +189,48 @@ void frameRate(const std::string& path, int runs) {
     view.setVisualScene(visual, true);
     waitFor([&] { return view.framesDrawn() > 2; }, 10);
     Eigen::VectorXd q(sampler.dof()), qd(sampler.dof());
-    std::vector<double> fps, cpuPerFrame;
-    for (int r = 0; r < runs; ++r) {
-        const long before = view.framesDrawn();
-        const double cpu0 = processCpu();
-        QElapsedTimer clock;
-        clock.start();
-        double t = 0;
-        while (clock.elapsed() < 2000) {
-            t = std::fmod(t + 1.0 / 30, sampler.endTime());
-            sampler.sample(t, q, qd);
-            const long frames = view.framesDrawn();
-            view.setPose(q, t);
-            waitFor([&] { return view.framesDrawn() > frames; }, 5);
-        }
-        fps.push_back((view.framesDrawn() - before) / (clock.elapsed() / 1000.0));
-        cpuPerFrame.push_back((processCpu() - cpu0) * 1000 / std::max(1L, view.framesDrawn() - before));
-    }
+    double t = 0;
+    const auto [fps, cpu] = framesPerSecond(view, runs, [&] {
+        t = std::fmod(t + 1.0 / 30, sampler.endTime());
+        sampler.sample(t, q, qd);
+        const long frames = view.framesDrawn();
+        view.setPose(q, t);
+        waitFor([&] { return view.framesDrawn() > frames; }, 5);
+    });
     std::printf("animation, %s in a %dx%d view (%s): %.1f frames/s median of %d runs of 2 s, %.1f ms process CPU per frame\n", path.c_str(),
                 static_cast<int>(view.width() * view.devicePixelRatioF()), static_cast<int>(view.height() * view.devicePixelRatioF()),
-                "software GL, Mesa llvmpipe under the current display", median(fps), runs, median(cpuPerFrame));
+                "software GL, Mesa llvmpipe under the current display", fps, runs, cpu);
+}
+
+// The window playing with an entry picked: every frame the entry's value is evaluated
+// from the catalogue's tape, the links' shares computed, the 3D emphasis, the readout and
+// the entry plot's cursor updated. Frames the 3D view draws per second of wall time.
+void linkedFrameRate(const std::string& path, const QString& entry, int runs) {
+    ui::MainWindow window;
+    window.setAskBeforeClosing(false);
+    window.resize(1280, 800);
+    window.show();
+    if (!window.openFile(QString::fromStdString(path), nullptr, true) ||
+        !waitFor([&] { return window.result() && !window.liveDerivation().busy() && window.selection().catalogue(); }, 120) ||
+        !window.selectEntry(entry)) {
+        std::printf("%s: could not pick %s\n", path.c_str(), qPrintable(entry));
+        return;
+    }
+    // The 3D view at 1280x720 (the window around it as much larger as its docks need; the
+    // display must be large enough: xvfb-run -s '-screen 0 2400x1400x24').
+    ui::SceneView& view = window.sceneView();
+    for (int k = 0; k < 3; ++k) {
+        window.resize(window.width() + 1280 - view.width(), window.height() + 720 - view.height());
+        pauseFor(0.2);
+    }
+    window.playback().setLoop(true);
+    window.playback().play();
+    waitFor([&] { return view.framesDrawn() > 5; }, 10);
+    const auto [fps, cpu] = framesPerSecond(view, runs, [] { pauseFor(0.05); });  // the playback's timer draws
+    window.playback().pause();
+    std::printf("animation with %s picked (value, shares, emphasis, readout, entry plot every frame), %s, window %dx%d, "
+                "3D view %dx%d: %.1f frames/s median of %d runs of 2 s, %.1f ms process CPU per frame\n",
+                qPrintable(entry), path.c_str(), window.width(), window.height(), view.width(), view.height(), fps, runs, cpu);
 }
 
 void firstFrame(int runs) {
@@ -239,6 +279,8 @@ int gui(const std::vector<std::string>& scenes, int runs) {
     for (const std::string& s : latencyScenes) latency(s, runs);
     derivationOnScreen(examples + "/panda.json", std::max(3, runs / 2));
     frameRate(scenes.empty() ? examples + "/puma560.json" : scenes.front(), 3);
+    linkedFrameRate(examples + "/puma560.json", "b23", 3);
+    linkedFrameRate(examples + "/panda.json", "b11", 3);
     firstFrame(std::max(3, runs / 2));
     return 0;
 }

@@ -177,7 +177,7 @@ int dynamics(std::vector<std::string> scenes, int batches) {
 }
 
 const char* const usage =
-    "usage: lagrangelab-bench [SCENE...] [--batches N] [--rhs | --derive | --cancel | --render | --typeset | --gui | --process]\n"
+    "usage: lagrangelab-bench [SCENE...] [--batches N] [--rhs | --derive | --cancel | --render | --typeset | --gui | --process | --linked]\n"
     "                         [--chains A..B] [--cap S] [--form auto|structured|expanded]\n"
     "  median times of B, C, g, forward/inverse dynamics and one simulated second (default scenes:\n"
     "  the PUMA 560, Stanford arm, UR5, Panda and planar 2R); or\n"
@@ -190,15 +190,22 @@ const char* const usage =
     "  --gui      the window: edit-to-updated-view latency (2R, PUMA 560), the Panda opened to its\n"
     "             derivation on screen, PUMA 560 animation frames/s, start to first frame; needs a display\n"
     "  --process  whole `lagrangelab derive` processes, every example and format, against their budgets\n"
+    "  --linked   the derivation's entry catalogue, every entry evaluated at a state, the run's torques and checks\n"
     "Built in the tree, not installed; docs/benchmarks.md records what it measured.\n";
 
 int run(const std::vector<std::string>& args) {
-    const Options options(args, {"batches", "chains", "cap", "form"}, {"rhs", "derive", "cancel", "render", "typeset", "gui", "process"});
+    const Options options(args, {"batches", "chains", "cap", "form"}, {"rhs", "derive", "cancel", "render", "typeset", "gui", "process", "linked"});
     // --batches N, or each mode's default: a whole number from 1 to 1000 (0 batches have
     // no median).
     const auto batchesOr = [&](int fallback) { return checkedBatches(options.number("batches", fallback), options.text("batches")); };
     std::vector<std::string> scenes = options.positional();
     if (options.has("gui")) return gui(scenes, batchesOr(9));
+    if (options.has("linked")) {
+        if (scenes.empty())
+            for (const char* name : {"planar_2r", "scara", "stanford_arm", "puma560", "ur5", "panda", "mass_spring_pair_lagrangian"})
+                scenes.push_back(example(name));
+        return linked(scenes, batchesOr(5));
+    }
     if (options.has("render")) return render(scenes, batchesOr(3));
     if (options.has("typeset")) return typeset(scenes, batchesOr(5));
     if (options.has("form") && !options.has("process")) throw UsageError("--form: only with --process");
