@@ -14,6 +14,7 @@
 #include "app/command_usage.hpp"
 #include "app/commands.hpp"
 #include "app/scene_loading.hpp"
+#include "core/io/atomic_file.hpp"
 #include "core/pipeline/derivation_forms.hpp"
 #include "core/pipeline/display_derivation.hpp"
 #include "core/pipeline/scene_derivation.hpp"
@@ -67,8 +68,7 @@ int deriveCommand(const Args& args) {
     if (format != "text" && format != "latex" && format != "json" && !typeset)
         throw UsageError("--format: expected text, latex, json, pdf, svg or png, got '" + format + "'");
     if (typeset && !options.has("out")) throw UsageError("--out: --format " + format + " writes a file; give --out FILE");
-    if (!typeset && options.has("out")) throw UsageError("--out: only for --format pdf, svg or png (text, latex and json go to stdout)");
-    if (typeset) {  // before the work: a file that cannot be written is known now
+    if (options.has("out")) {  // before the work: a file that cannot be written is known now
         std::error_code error;
         const std::filesystem::path dir = std::filesystem::absolute(options.text("out"), error).parent_path();
         const bool isDir = !error && std::filesystem::is_directory(dir, error);
@@ -122,7 +122,10 @@ int deriveCommand(const Args& args) {
     });
     for (const std::string& line : result.verification) std::cerr << "verify: " << line << '\n';
     report(result.derived, timings);
-    std::cout << result.derived.document;
+    if (options.has("out"))  // written whole or not at all, as every file the program writes
+        saveFileAtomically(options.text("out"), result.derived.document, Backup::None);
+    else
+        std::cout << result.derived.document;
     return 0;
 }
 

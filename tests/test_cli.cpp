@@ -280,6 +280,34 @@ private slots:
         }
     }
 
+    // --out writes every format, the same bytes stdout gets; an unwritable path is refused
+    // before the work, naming it.
+    void deriveOutWritesEveryFormat_data() {
+        QTest::addColumn<QString>("format");
+        for (const char* f : {"text", "latex", "json"}) QTest::newRow(f) << QString(f);
+    }
+    void deriveOutWritesEveryFormat() {
+        QFETCH(QString, format);
+        QTemporaryDir dir;
+        const QString path = dir.filePath("2r." + format);
+        const Run toFile = run({"derive", example("planar_2r.json"), "--format", format, "--out", path});
+        QCOMPARE(toFile.exitCode, 0);
+        QVERIFY(toFile.out.isEmpty());
+        const Run toStdout = run({"derive", example("planar_2r.json"), "--format", format});
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QByteArray written = f.readAll(), shown = toStdout.out;
+        if (format == "json") {  // the derivation's own timings differ from run to run
+            static const QRegularExpression seconds("\"[a-z_]*seconds\": *[0-9.e-]+");
+            written = QString::fromUtf8(written).replace(seconds, "").toUtf8();
+            shown = QString::fromUtf8(shown).replace(seconds, "").toUtf8();
+        }
+        QCOMPARE(written, shown);
+        const Run refused = run({"derive", example("planar_2r.json"), "--format", format, "--out", "/nonexistent/x." + format});
+        QCOMPARE(refused.exitCode, 2);
+        QVERIFY(refused.err.contains("/nonexistent/x." + format.toUtf8()));
+    }
+
     void deriveTextIsTheTextbookForm() {
         const Run r = run({"derive", example("planar_2r.json"), "--steps", "7-8"});
         QCOMPARE(r.exitCode, 0);
