@@ -156,6 +156,7 @@ DisplayPtr DisplayBuilder::atom(const ex& e) {
         n->kind = DisplayKind::Symbol;
         n->name = n->plain = (std::ostringstream() << e).str();
         if (n->name == "Pi") {
+            n->plain = "pi";  // as SymPy, Python's math and our scene files write it (GiNaC's name stays the sort key)
             n->text = "π";
             n->latex = "\\pi";
         } else if (n->name == "Euler") {
