@@ -9,7 +9,12 @@
 #include <QProcess>
 #include <QTemporaryDir>
 
+#include <random>
+
 #include <ginac/ginac.h>
+
+#include "core/io/scene_file.hpp"
+#include "test_support.hpp"
 
 namespace {
 
@@ -182,6 +187,76 @@ private slots:
                 err = std::max(err, std::abs(GiNaC::ex_to<GiNaC::numeric>(v).to_double() - Bexpected[i].toArray()[j].toDouble()));
             }
         QVERIFY2(err < 1e-10, qPrintable(QString::number(err)));
+    }
+
+    // The structured JSON's Ekin and Epot, read with GiNaC's parser over its definitions,
+    // equal eval's at random states: the Panda (a base frame at the origin, parameters by
+    // name) and a seeded 10-joint chain (a rotated, offset base, prismatic joints, two
+    // springs, gravity off the vertical).
+    void structuredJsonEnergiesEqualEval_data() {
+        QTest::addColumn<QString>("scene");
+        QTest::newRow("panda") << "panda.json";
+        QTest::newRow("10-joint chain") << "";
+    }
+    void structuredJsonEnergiesEqualEval() {
+        QFETCH(QString, scene);
+        QTemporaryDir dir;
+        QString file = scene.isEmpty() ? dir.filePath("chain10.json") : example(scene.toUtf8().constData());
+        if (scene.isEmpty()) {
+            std::mt19937 rng(1010);
+            ll::Scene chain;
+            chain.name = "chain 10";
+            chain.robot = ll::test::randomRobot(rng, 10, ll::DhConvention::Standard, true);
+            chain.effects.gravity = Eigen::Vector3d(0.3, -0.2, -9.81);
+            chain.effects.springs = {{1, 12.0, 0.4}, {5, 30.0, -0.2}};
+            ll::saveScene(chain, file.toStdString());
+        }
+        const Run derived = cli({"derive", file, "--form", "structured", "--format", "json"});
+        QVERIFY2(derived.exitCode == 0, derived.err.constData());
+        const QJsonObject doc = QJsonDocument::fromJson(derived.out).object();
+        QVERIFY2(doc.contains("Ekin") && doc.contains("Epot"), "the structured JSON has the energies");
+        QFile f(file);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QJsonObject params = QJsonDocument::fromJson(f.readAll()).object()["parameters"].toObject();
+        const int n = doc["coordinates"].toArray().size();
+        std::mt19937 rng(99);
+        std::uniform_real_distribution<double> u(-2.0, 2.0);
+        for (int state = 0; state < 3; ++state) {
+            GiNaC::symtab table;
+            GiNaC::lst values;
+            QStringList q, qd;
+            const auto bind = [&](const std::string& name, const GiNaC::ex& value) {
+                const GiNaC::symbol sym(name);
+                table[name] = sym;
+                values.append(sym == value);
+            };
+            for (int i = 0; i < n; ++i) {
+                const double qi = u(rng), qdi = u(rng);
+                q << QString::number(qi, 'g', 17);
+                qd << QString::number(qdi, 'g', 17);
+                bind("q" + std::to_string(i + 1), GiNaC::numeric(q.back().toUtf8().constData()));
+                bind("qd" + std::to_string(i + 1), GiNaC::numeric(qd.back().toUtf8().constData()));
+            }
+            for (auto it = params.begin(); it != params.end(); ++it)
+                bind(it.key().toStdString(), GiNaC::numeric(QString::number(it.value().toDouble(), 'g', 17).toUtf8().constData()));
+            table["pi"] = GiNaC::Pi;
+            for (const QJsonValue d : doc["definitions"].toArray()) {
+                GiNaC::parser reader(table);
+                const GiNaC::ex value = reader(d.toObject()["expr"].toString().toStdString()).subs(values).evalf();
+                bind(d.toObject()["name"].toString().toStdString(), value);
+            }
+            const Run e = cli({"eval", file, "--q", q.join(','), "--qd", qd.join(',')});
+            QVERIFY2(e.exitCode == 0, e.err.constData());
+            const QJsonObject expected = QJsonDocument::fromJson(e.out).object();
+            for (const char* energy : {"Ekin", "Epot"}) {
+                GiNaC::parser reader(table);
+                const GiNaC::ex v = reader(doc[energy].toString().toStdString()).subs(values).evalf();
+                QVERIFY2(GiNaC::is_a<GiNaC::numeric>(v), qPrintable(QString("%1 has a free symbol").arg(energy)));
+                const double got = GiNaC::ex_to<GiNaC::numeric>(v).to_double(), want = expected[energy].toDouble();
+                QVERIFY2(std::abs(got - want) <= 1e-9 * std::max(1.0, std::abs(want)),
+                         qPrintable(QString("%1: %2, eval %3").arg(energy).arg(got, 0, 'g', 17).arg(want, 0, 'g', 17)));
+            }
+        }
     }
 
     // --entry with the expanded form expands only those entries, with term counts;

@@ -118,6 +118,9 @@ Selection select(const StructuredDynamics& s, const StructuredDocumentInfo& info
     std::vector<bool> used(table.size(), false);
     for (const EntryRef& e : needed)
         for (int k : s.table->dependenciesOf(valueOf(s, e))) used[k] = true;
+    if (sel.checks)  // the JSON's Ekin and Epot: over the names of B and of step 6
+        for (const GiNaC::ex* energy : {&s.Ekin, &s.Epot})
+            for (int k : s.table->dependenciesOf(*energy)) used[k] = true;
     for (int k = static_cast<int>(table.size()) - 1; k >= 0; --k)  // dependencies come first in the table
         if (used[k])
             for (int d : table[k].dependencies) used[d] = true;
@@ -205,6 +208,9 @@ void writeText(const StructuredDynamics& s, const StructuredDocumentInfo& info, 
     for (const EntryRef& e : sel.entries)
         out << "    " << (e.matrix == 'B' ? "b" : e.matrix == 'C' ? "c" : "g") << e.label.substr(1) << " = "
             << text(valueOf(s, e)) << "        (" << entryMeaning(s, e) << ")\n";
+    if (sel.checks)
+        out << "    E_kin = 1/2 qd^T B qd        (the kinetic energy; in JSON written out over the b_jk)\n"
+            << "    E_pot = " << text(s.Epot) << "        (the potential energy: each link's weight over its gravity and frame-0 names, and the springs)\n";
     if (sel.checks) {
         const int n = s.n, total = n * n * (n + 1) / 2;
         out << "\nZero pattern of d b_jk / d q_l (j <= k; x: non-zero): " << s.nonZeroMassDerivatives() << " of " << total
@@ -251,6 +257,10 @@ void writeLatex(const StructuredDynamics& s, const StructuredDocumentInfo& info,
     for (const EntryRef& e : sel.entries)
         out << "\\lldefinition{$" << entryName(e) << " = " << latex(valueOf(s, e)) << "$}{"
             << latexEntryMeaning(s, e) << "}\n";
+    if (sel.checks)
+        out << "\\lldefinition{$E_{\\mathrm{kin}} = \\tfrac{1}{2}\\,\\dot q^{T} B\\,\\dot q$}{the kinetic energy}\n"
+            << "\\lldefinition{$E_{\\mathrm{pot}} = " << latex(s.Epot)
+            << "$}{the potential energy: each link's weight over its gravity and frame-0 names, and the springs}\n";
     if (sel.checks) {
         const int n = s.n;
         out << "\\paragraph{Zero pattern} " << s.nonZeroMassDerivatives() << " of " << n * n * (n + 1) / 2
@@ -318,6 +328,8 @@ void writeJson(const StructuredDynamics& s, const StructuredDocumentInfo& info, 
         matrix("C", s.C);
         matrix("g", s.g);
         matrix("Q", s.Q);
+        j.member("Ekin", plain(s.Ekin));
+        j.member("Epot", plain(s.Epot));
         const int n = s.n;
         j.key("mass_derivatives");
         j.beginObject();

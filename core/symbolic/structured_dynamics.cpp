@@ -81,7 +81,8 @@ public:
             O[j] = o[a];
         }
         const SymbolicJoint& joint = robot.joints[link];
-        const Vec3 com{joint.com(0, 0), joint.com(1, 0), joint.com(2, 0)};
+        com = {joint.com(0, 0), joint.com(1, 0), joint.com(2, 0)};
+        baseOrigin = o[0];
         for (int j = 0; j <= link; ++j)
             JP[j] = vector(revolute[j] ? cross(Z[j], sub(com, O[j])) : Z[j], "J", idx(j), "J_{P," + idx(j) + ",@}^{(" + frame_ + ")}",
                            "velocity of the centre of mass of link " + frame_ + " per unit qd" + idx(j) +
@@ -151,7 +152,8 @@ public:
     }
 
     std::vector<Vec3> Z, O, JP, IZ;  // per joint j ≤ link: axis, axis origin, J_P column, I z_j
-    Vec3 gravity{0, 0, 0};
+    Vec3 gravity{0, 0, 0};           // g0 in the link frame
+    Vec3 com, baseOrigin;            // the centre of mass and the origin of frame 0, in the link frame
     matrix inertia{3, 3};
 
 private:
@@ -238,6 +240,10 @@ StructuredDynamics deriveStructured(const Scene& scene, const DerivationOptions&
             }
         if (robot.hasGravity) {
             checkpoint(6, "gamma^(" + L + ")");
+            // g0ᵀ p_ci in the world = g0^(i)·(p_ci − o_0) in the link frame + g0ᵀ of the base's offset.
+            ex offset = 0;
+            for (int r = 0; r < 3; ++r) offset += robot.gravity(r, 0) * robot.base(r, 3);
+            s.Epot -= m * (dot(link.gravity, sub(link.com, link.baseOrigin)) + offset);
             for (int j = 0; j <= i; ++j)
                 s.g(j, 0) -= m * table.name(dot(link.gravity, link.JP[j]), "gamma" + idx(j) + "_" + L,
                                             "\\gamma_{" + idx(j) + "}^{(" + L + ")}",
@@ -264,6 +270,10 @@ StructuredDynamics deriveStructured(const Scene& scene, const DerivationOptions&
             for (const ex& beta : s.beta[j][k]) b += beta;
             s.B(j, k) = s.B(k, j) = b;
         }
+    }
+    for (int j = 0; j < n; ++j) {
+        s.Ekin += GiNaC::numeric(1, 2) * s.B(j, j) * GiNaC::pow(tc.qd(j), 2);
+        for (int k = j + 1; k < n; ++k) s.Ekin += s.B(j, k) * tc.qd(j) * tc.qd(k);
     }
     checkpoint(8, "db/dq");
     // A sum of named terms can vanish identically with no term zero on its own (the
@@ -314,8 +324,10 @@ StructuredDynamics deriveStructured(const Scene& scene, const DerivationOptions&
                 c += GiNaC::numeric(1, 2) * (s.dB[k](i, j) + s.dB[j](i, k) - s.dB[i](j, k)) * tc.qd(k);
             s.C(i, j) = c.expand();
         }
-    for (const SymbolicTerm& spring : robot.springs)
+    for (const SymbolicTerm& spring : robot.springs) {
         s.g(spring.joint, 0) += spring.value * (tc.q(spring.joint) - spring.extra);
+        s.Epot += GiNaC::numeric(1, 2) * spring.value * GiNaC::pow(tc.q(spring.joint) - spring.extra, 2);
+    }
     for (int j = 0; j < n; ++j) s.g(j, 0) = s.g(j, 0).expand();
     throwIfCancelled(options.cancel);
     if (options.mode == ParameterMode::Parametric) refuseGeneratedNameClashes(scene, table);

@@ -40,6 +40,10 @@ struct StructuredDynamics {
     std::shared_ptr<TrigContext> trig;          // the q_i, q̇_i, c_i, s_i symbols
     std::shared_ptr<NamedDefinitions> table;    // the names, in dependency order
     GiNaC::matrix B, C, g, Q;                   // over the names (Q: declared non-conservative forces)
+    // The energies over the names: E_kin = ½ q̇ᵀ B q̇ (B's entries as their sums of β),
+    // E_pot = −Σ_i m_i g0ᵀ p_ci + the springs' ½ k (q − q₀)², each link's g0ᵀ p_ci written in
+    // its own frame as g0^(i) · (p_ci − o_0) (the gravity and frame-0 origin names).
+    GiNaC::ex Ekin, Epot;
     // beta[j][k]: the per-link contributions β_jk⁽ⁱ⁾ for i = max(j,k)..n−1 (j ≤ k), names or 0;
     // armature[j]: the motor's Jm G² added to b_jj (0 without one).
     std::vector<std::vector<std::vector<GiNaC::ex>>> beta;
