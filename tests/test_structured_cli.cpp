@@ -48,6 +48,37 @@ double relative(const QJsonArray& a, const QJsonArray& b) {
     return diff / scale;
 }
 
+// A random state (q, q̇ in ±2) for GiNaC's parser: q1…, qd1… and pi in its table, their
+// values to substitute, and the same numbers as --q and --qd for eval.
+struct ParsedState {
+    GiNaC::symtab table;
+    GiNaC::lst values;
+    QStringList q, qd;
+    void bind(const std::string& name, const GiNaC::ex& value) {
+        const GiNaC::symbol sym(name);
+        table[name] = sym;
+        values.append(sym == value);
+    }
+    double value(const QString& expression) {
+        GiNaC::parser reader(table);
+        const GiNaC::ex v = reader(expression.toStdString()).subs(values).evalf();
+        return GiNaC::is_a<GiNaC::numeric>(v) ? GiNaC::ex_to<GiNaC::numeric>(v).to_double() : std::nan("");
+    }
+};
+
+ParsedState randomState(std::mt19937& rng, int n) {
+    std::uniform_real_distribution<double> u(-2.0, 2.0);
+    ParsedState s;
+    s.table["pi"] = GiNaC::Pi;
+    for (int i = 0; i < n; ++i) {
+        s.q << QString::number(u(rng), 'g', 17);
+        s.qd << QString::number(u(rng), 'g', 17);
+        s.bind("q" + std::to_string(i + 1), GiNaC::numeric(s.q.back().toUtf8().constData()));
+        s.bind("qd" + std::to_string(i + 1), GiNaC::numeric(s.qd.back().toUtf8().constData()));
+    }
+    return s;
+}
+
 const char* kQ = "0.3,-0.7,1.1,0.4,-0.2,0.9";
 const char* kQd = "0.5,0.2,-0.4,1.0,-0.3,0.6";
 
@@ -220,41 +251,48 @@ private slots:
         const QJsonObject params = QJsonDocument::fromJson(f.readAll()).object()["parameters"].toObject();
         const int n = doc["coordinates"].toArray().size();
         std::mt19937 rng(99);
-        std::uniform_real_distribution<double> u(-2.0, 2.0);
         for (int state = 0; state < 3; ++state) {
-            GiNaC::symtab table;
-            GiNaC::lst values;
-            QStringList q, qd;
-            const auto bind = [&](const std::string& name, const GiNaC::ex& value) {
-                const GiNaC::symbol sym(name);
-                table[name] = sym;
-                values.append(sym == value);
-            };
-            for (int i = 0; i < n; ++i) {
-                const double qi = u(rng), qdi = u(rng);
-                q << QString::number(qi, 'g', 17);
-                qd << QString::number(qdi, 'g', 17);
-                bind("q" + std::to_string(i + 1), GiNaC::numeric(q.back().toUtf8().constData()));
-                bind("qd" + std::to_string(i + 1), GiNaC::numeric(qd.back().toUtf8().constData()));
-            }
+            ParsedState x = randomState(rng, n);
             for (auto it = params.begin(); it != params.end(); ++it)
-                bind(it.key().toStdString(), GiNaC::numeric(QString::number(it.value().toDouble(), 'g', 17).toUtf8().constData()));
-            table["pi"] = GiNaC::Pi;
+                x.bind(it.key().toStdString(), GiNaC::numeric(QString::number(it.value().toDouble(), 'g', 17).toUtf8().constData()));
             for (const QJsonValue d : doc["definitions"].toArray()) {
-                GiNaC::parser reader(table);
-                const GiNaC::ex value = reader(d.toObject()["expr"].toString().toStdString()).subs(values).evalf();
-                bind(d.toObject()["name"].toString().toStdString(), value);
+                GiNaC::parser reader(x.table);
+                const GiNaC::ex value = reader(d.toObject()["expr"].toString().toStdString()).subs(x.values).evalf();
+                x.bind(d.toObject()["name"].toString().toStdString(), value);
             }
-            const Run e = cli({"eval", file, "--q", q.join(','), "--qd", qd.join(',')});
+            const Run e = cli({"eval", file, "--q", x.q.join(','), "--qd", x.qd.join(',')});
             QVERIFY2(e.exitCode == 0, e.err.constData());
             const QJsonObject expected = QJsonDocument::fromJson(e.out).object();
             for (const char* energy : {"Ekin", "Epot"}) {
-                GiNaC::parser reader(table);
-                const GiNaC::ex v = reader(doc[energy].toString().toStdString()).subs(values).evalf();
-                QVERIFY2(GiNaC::is_a<GiNaC::numeric>(v), qPrintable(QString("%1 has a free symbol").arg(energy)));
-                const double got = GiNaC::ex_to<GiNaC::numeric>(v).to_double(), want = expected[energy].toDouble();
+                const double got = x.value(doc[energy].toString()), want = expected[energy].toDouble();
                 QVERIFY2(std::abs(got - want) <= 1e-9 * std::max(1.0, std::abs(want)),
                          qPrintable(QString("%1: %2, eval %3").arg(energy).arg(got, 0, 'g', 17).arg(want, 0, 'g', 17)));
+            }
+        }
+    }
+
+    // An entry expanded on demand of a chain with constant angles that are not special
+    // (docs/bench/chain8_general.json: twists 0.3 rad, a prismatic joint at θ = 0.624 rad),
+    // their sines and cosines folded to numbers, equals eval's at random states.
+    void expandedEntryWithGeneralAnglesEqualsEval() {
+        const QString file = QString(LL_SOURCE_DIR) + "/docs/bench/chain8_general.json";
+        const Run r = cli({"derive", file, "--form", "expanded", "--entry", "B11,B24,C11,C23,g4", "--format", "json"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QJsonObject entries = QJsonDocument::fromJson(r.out).object()["entries"].toObject();
+        QCOMPARE(entries.size(), 5);
+        std::mt19937 rng(8);
+        for (int state = 0; state < 2; ++state) {
+            ParsedState x = randomState(rng, 8);
+            const Run e = cli({"eval", file, "--q", x.q.join(','), "--qd", x.qd.join(',')});
+            QVERIFY2(e.exitCode == 0, e.err.constData());
+            const QJsonObject expected = QJsonDocument::fromJson(e.out).object();
+            for (const QString& key : entries.keys()) {
+                const int row = key.mid(1, 1).toInt() - 1, col = key.size() > 2 ? key.mid(2, 1).toInt() - 1 : -1;
+                const QJsonValue m = expected[key.left(1)];
+                const double want = col < 0 ? m.toArray()[row].toDouble() : m.toArray()[row].toArray()[col].toDouble();
+                const double got = x.value(entries[key].toObject()["expr"].toString());
+                QVERIFY2(std::abs(got - want) <= 1e-9 * std::max(1.0, std::abs(want)),
+                         qPrintable(QString("%1: %2, eval %3").arg(key).arg(got, 0, 'g', 17).arg(want, 0, 'g', 17)));
             }
         }
     }

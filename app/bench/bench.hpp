@@ -18,6 +18,10 @@ int process(const std::vector<std::string>& scenes, int runs, const std::string&
 // --gui: edit-to-view latency, a large robot opened to its derivation on screen,
 // animation frame rate, start to first frame (bench_gui.cpp).
 int gui(const std::vector<std::string>& scenes, int runs);
+// --entries: B11 and C11 expanded on demand on chains with special and general constant
+// angles (bench_expanded_entries.cpp); benchChains(): its default scenes, docs/bench/chain8*.json.
+int expandedEntries(const std::vector<std::string>& scenes, const std::vector<std::string>& entries, int runs);
+std::vector<std::string> benchChains();
 // --linked: the entry catalogue, per-frame evaluation and the run's analysis (bench_linked.cpp).
 int linked(const std::vector<std::string>& scenes, int runs);
 

@@ -177,7 +177,8 @@ int dynamics(std::vector<std::string> scenes, int batches) {
 }
 
 const char* const usage =
-    "usage: lagrangelab-bench [SCENE...] [--batches N] [--rhs | --derive | --cancel | --render | --typeset | --gui | --process | --linked]\n"
+    "usage: lagrangelab-bench [SCENE...] [--batches N] [--rhs | --derive | --cancel | --render | --typeset | --gui | --process | --linked |\n"
+    "                         --entries]\n"
     "                         [--chains A..B] [--cap S] [--form auto|structured|expanded]\n"
     "  median times of B, C, g, forward/inverse dynamics and one simulated second (default scenes:\n"
     "  the PUMA 560, Stanford arm, UR5, Panda and planar 2R); or\n"
@@ -191,10 +192,12 @@ const char* const usage =
     "             derivation on screen, PUMA 560 animation frames/s, start to first frame; needs a display\n"
     "  --process  whole `lagrangelab derive` processes, every example and format, against their budgets\n"
     "  --linked   the derivation's entry catalogue, every entry evaluated at a state, the run's torques and checks\n"
+    "  --entries  B11 and C11 expanded on demand from the structured form; default scenes docs/bench/chain8*.json\n"
+    "             (special constant angles beside general ones)\n"
     "Built in the tree, not installed; docs/benchmarks.md records what it measured.\n";
 
 int run(const std::vector<std::string>& args) {
-    const Options options(args, {"batches", "chains", "cap", "form"}, {"rhs", "derive", "cancel", "render", "typeset", "gui", "process", "linked"});
+    const Options options(args, {"batches", "chains", "cap", "form"}, {"rhs", "derive", "cancel", "render", "typeset", "gui", "process", "linked", "entries"});
     // --batches N, or each mode's default: a whole number from 1 to 1000 (0 batches have
     // no median).
     const auto batchesOr = [&](int fallback) { return checkedBatches(options.number("batches", fallback), options.text("batches")); };
@@ -206,6 +209,7 @@ int run(const std::vector<std::string>& args) {
                 scenes.push_back(example(name));
         return linked(scenes, batchesOr(5));
     }
+    if (options.has("entries")) return expandedEntries(scenes.empty() ? benchChains() : scenes, {"B11", "C11"}, batchesOr(3));
     if (options.has("render")) return render(scenes, batchesOr(3));
     if (options.has("typeset")) return typeset(scenes, batchesOr(5));
     if (options.has("form") && !options.has("process")) throw UsageError("--form: only with --process");
