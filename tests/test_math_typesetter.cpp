@@ -309,6 +309,49 @@ private slots:
         QVERIFY(!QFileInfo::exists(blocked));
     }
 
+    // Numbers as the scene typed them (issue 39): a₁ = 1.375 reads 1.375, not 11/8, in
+    // text, LaTeX and the typeset PDF (DH table, A₁, T₂⁰); the acrobot's typed gravity
+    // 9.8 reads 9.8, not 49/5; a typed Lagrangian's sin²θ stays sin²θ where 1 − cos²θ is
+    // longer (the spherical pendulum's b₂₂).
+    void numbersAsTyped() {
+        QTemporaryDir dir;
+        const QString arm = dir.filePath("decimal_2r.json");
+        QFile f(arm);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(R"({"format": "lagrangelab-scene/1", "name": "decimal 2R", "robot": {"convention": "standard", "joints": [
+            {"type": "revolute", "a": 1.375, "alpha": 0, "d": 0, "theta": 0, "mass": 2.5, "com": [-0.6875, 0, 0], "inertia": {"xx": 0, "yy": 0.3, "zz": 0.3}},
+            {"type": "revolute", "a": 1.5, "alpha": 0, "d": 0, "theta": 0, "mass": 1.25, "com": [-0.75, 0, 0], "inertia": {"xx": 0, "yy": 0.2, "zz": 0.2}}]},
+            "effects": {"gravity": [0, -9.8, 0]}})");
+        f.close();
+        const Run text = run({"derive", arm, "--numeric"});
+        QVERIFY2(text.code == 0, qPrintable(text.err));
+        QVERIFY2(text.out.contains("1.375 c1 + 1.5 c12"), qPrintable(text.out));
+        const Run latex = run({"derive", arm, "--numeric", "--format", "latex"});
+        QVERIFY(latex.out.contains("1.375") && latex.out.contains("1.5"));
+        const QString pdf = dir.filePath("decimal.pdf");
+        QCOMPARE(run({"derive", arm, "--numeric", "--format", "pdf", "--out", pdf}).code, 0);
+        const Run pages = run({pdf, "-"}, "pdftotext");
+        QVERIFY(pages.out.contains("1.375"));
+        for (const QString& out : {text.out, latex.out, pages.out}) {
+            QVERIFY2(!out.contains("11/8") && !out.contains("{11}{8}") && !out.contains("3/2") && !out.contains("{3}{2}"),
+                     "a typed decimal shown as a fraction");
+        }
+
+        const Run acrobot = run({"derive", example("acrobot.json")});
+        QVERIFY(acrobot.out.contains("9.8 m2 ℓc2 c12") && !acrobot.out.contains("49/5"));
+
+        const QString pendulum = dir.filePath("spherical.json");
+        QFile p(pendulum);
+        QVERIFY(p.open(QIODevice::WriteOnly));
+        p.write(R"json({"format": "lagrangelab-scene/1", "name": "spherical pendulum", "parameters": {"m": 1.5, "l": 0.8, "g": 9.81},
+            "lagrangian": {"coordinates": ["theta", "phi"], "kinetic": "m*l^2*(theta_dot^2 + sin(theta)^2*phi_dot^2)/2",
+            "potential": "-m*g*l*cos(theta)"}, "initial": {"q": [0.5, 0], "qd": [0, 1]}})json");
+        p.close();
+        const Run spherical = run({"derive", pendulum});
+        QVERIFY2(spherical.code == 0, qPrintable(spherical.err));
+        QVERIFY2(spherical.out.contains("m l² sin²(θ) φ̈") && !spherical.out.contains("cos²"), qPrintable(spherical.out));
+    }
+
     void pdfOfThe2R() {
         QTemporaryDir dir;
         const QString pdf = dir.filePath("2r.pdf");

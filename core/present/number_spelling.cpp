@@ -1,5 +1,6 @@
 #include "core/present/number_spelling.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdio>
 #include <sstream>
@@ -92,10 +93,17 @@ DisplayPtr exponentNode(const numeric& k) {
 
 bool isDecimalFraction(const numeric& v) { return terminates(v) && v.denom() > 8; }
 
-GiNaC::ex readableNumbers(const GiNaC::ex& e) {
+GiNaC::ex readableNumbers(const GiNaC::ex& e, const std::vector<numeric>& typed) {
+    // ½ and ¼ are also the formulas' own (½ q̇ᵀB q̇, the Christoffel ½, ½·½): typed, they
+    // read as decimals only standing alone (a DH entry 0.5), not inside an expression.
+    const auto wasTyped = [&](const numeric& v) {
+        const numeric a = GiNaC::abs(v);
+        if (!terminates(v) || (!GiNaC::is_a<numeric>(e) && (a.is_equal(numeric(1, 2)) || a.is_equal(numeric(1, 4))))) return false;
+        return std::any_of(typed.begin(), typed.end(), [&](const numeric& t) { return t.is_equal(a); });
+    };
     bool decimal = false;
     for (auto it = e.preorder_begin(); it != e.preorder_end() && !decimal; ++it)
-        decimal = GiNaC::is_a<numeric>(*it) && isDecimalFraction(GiNaC::ex_to<numeric>(*it));
+        decimal = GiNaC::is_a<numeric>(*it) && (isDecimalFraction(GiNaC::ex_to<numeric>(*it)) || wasTyped(GiNaC::ex_to<numeric>(*it)));
     if (!decimal) return e;
     struct Map : GiNaC::map_function {
         GiNaC::ex operator()(const GiNaC::ex& x) override {

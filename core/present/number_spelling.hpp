@@ -7,6 +7,7 @@
 // inertials: 0.00796990221726315 → 0.0079699); Plain keeps 17, so what is re-parsed is
 // exact. Call with the GiNaC lock held.
 #include <string>
+#include <vector>
 
 #include <ginac/ginac.h>
 
@@ -27,7 +28,9 @@ DisplayPtr exponentNode(const GiNaC::numeric& k);
 bool isDecimalFraction(const GiNaC::numeric& v);
 
 // e with every fraction that has a finite decimal form as a float, when e holds at least
-// one decimal fraction; else e itself. For showing only.
-GiNaC::ex readableNumbers(const GiNaC::ex& e);
+// one decimal fraction or one of the numbers the scene typed as decimals (`typed`, as
+// positive rationals: 1.375 typed is 11/8 and reads 1.375 again; a typed 0.5 or 0.25 only
+// when it is all of e, as ½ and ¼ are the formulas' too); else e itself. For showing only.
+GiNaC::ex readableNumbers(const GiNaC::ex& e, const std::vector<GiNaC::numeric>& typed = {});
 
 }  // namespace ll::present

@@ -101,8 +101,8 @@ ex TextbookForm::operator()(const ex& value, Grouping grouping) {
     // Shaping (sines for cosines, angle sums) costs more than linear time and only
     // pays off on entries a reader can follow: larger ones stay as derived.
     ex e = value.expand();
-    if (termCount(e) > maxShapedTerms) return shaped.emplace(value, readableNumbers(e)).first->second;
-    if (robot_) e = combiner_.combine(shorterInSines(e));
+    if (termCount(e) > maxShapedTerms) return shaped.emplace(value, readableNumbers(e, d_.typedDecimals)).first->second;
+    e = robot_ ? combiner_.combine(shorterInSines(e)) : shorterInSines(e);
     // Robots pull a common factor out (m2 a1 ℓc2 s2 (…)); a typed Lagrangian keeps its
     // parameters inside, so the notes' spring term reads K2 (θ1 − θ2).
     const ex common = robot_ ? commonFactor(e, d_.qd) : ex(1);
@@ -110,7 +110,7 @@ ex TextbookForm::operator()(const ex& value, Grouping grouping) {
     const std::vector<GiNaC::symbol> groupBy = grouping == Grouping::Velocities ? d_.qd
                                                : grouping == Grouping::Masses   ? massSymbols(e)
                                                                                 : parameters();
-    return shaped.emplace(value, common * readableNumbers(collectForDisplay(e, groupBy))).first->second;
+    return shaped.emplace(value, common * readableNumbers(collectForDisplay(e, groupBy), d_.typedDecimals)).first->second;
 }
 
 std::vector<ex> TextbookForm::equationParts(int i) {
@@ -142,6 +142,15 @@ ex TextbookForm::shorterInSines(const ex& value) const {
     for (std::size_t k = 0; k + 1 < trig.nops(); k += 2) {
         const ex c = trig.op(k).lhs(), s = trig.op(k + 1).lhs();
         if (!is_ex_the_function(trig.op(k).rhs(), cos) || e.degree(c) < 2) continue;
+        const ex alternative = symbolic::reducePythagorean(e, c, s);
+        if (termCount(alternative) < termCount(e)) e = alternative;
+    }
+    if (robot_) return e;
+    // A typed Lagrangian's cos(θ), sin(θ) are functions of its coordinates: the derivation
+    // wrote sin²θ as 1 − cos²θ; the user's sin²θ comes back where it is shorter.
+    for (const GiNaC::symbol& q : d_.q) {
+        const ex c = GiNaC::cos(q), s = GiNaC::sin(q);
+        if (e.degree(c) < 2) continue;
         const ex alternative = symbolic::reducePythagorean(e, c, s);
         if (termCount(alternative) < termCount(e)) e = alternative;
     }

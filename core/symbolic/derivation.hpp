@@ -101,6 +101,8 @@ struct Derivation {
     std::vector<std::string> warnings;
     // The symbols of one link's inertial parameters, by name → link (symbolic_robot.hpp).
     std::map<std::string, int> symbolLinks;
+    // The numbers the scene typed as decimals, exact (1.375 → 11/8): shown as typed.
+    std::vector<GiNaC::numeric> typedDecimals;
 };
 
 }  // namespace ll::symbolic

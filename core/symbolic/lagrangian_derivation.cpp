@@ -105,6 +105,10 @@ public:
     Derivation derive() {
         d_.system = SystemKind::Lagrangian;
         d_.systemName = scene_.name;
+        for (const std::string& name : table_.names())  // parameters typed as decimals (9.8): shown as typed
+            if (const ex& v = table_.definition(name); GiNaC::is_a<GiNaC::numeric>(v) && !GiNaC::ex_to<GiNaC::numeric>(v).is_rational())
+                if (const ex x = exactNumber(table_.value(name)); !GiNaC::ex_to<GiNaC::numeric>(x).is_integer())
+                    d_.typedDecimals.push_back(GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(x)));
         d_.q = s_.q;
         d_.qd = s_.qd;
         d_.qdd = s_.qdd;

@@ -379,6 +379,7 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
     d.trigToFunctions = tc.toFunctions();
     d.parameterValues = robot.parameterValues;
     d.symbolLinks = linkSymbols(robot);
+    d.typedDecimals = robot.typedDecimals;
     return d;
 }
 

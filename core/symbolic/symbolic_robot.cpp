@@ -57,14 +57,26 @@ public:
 private:
     GiNaC::ex read(const std::string& field, double number, bool isAngle) {
         const auto it = scene_.expressions.find(field);
-        if (mode_ == ParameterMode::Parametric && it != scene_.expressions.end())
-            return exactFloats(table_.parse(field, it->second));
+        if (mode_ == ParameterMode::Parametric && it != scene_.expressions.end()) {
+            const GiNaC::ex parsed = table_.parse(field, it->second);
+            for (auto f = parsed.preorder_begin(); f != parsed.preorder_end(); ++f)  // "0.5*m1": 0.5 was typed
+                if (GiNaC::is_a<GiNaC::numeric>(*f) && !GiNaC::ex_to<GiNaC::numeric>(*f).is_rational()) typed(exactNumber(GiNaC::ex_to<GiNaC::numeric>(*f).to_double()));
+            return exactFloats(parsed);
+        }
         if (it != scene_.expressions.end() && isAngle) {
             // "pi/2" stays exact in every mode.
             const GiNaC::ex e = table_.parse(field, it->second).subs(table_.values());
-            if (GiNaC::is_a<GiNaC::numeric>(e.evalf())) return isExact(e) ? e : exactAngle(number);
+            if (GiNaC::is_a<GiNaC::numeric>(e.evalf())) return isExact(e) ? e : typed(exactAngle(number));
         }
-        return isAngle ? exactAngle(number) : exactNumber(number);
+        // A field typed as a number, or an expression read as its value (numbers mode).
+        return typed(isAngle ? exactAngle(number) : exactNumber(number));
+    }
+
+    // x, remembered as typed when it is a number with a fractional part.
+    GiNaC::ex typed(const GiNaC::ex& x) {
+        if (GiNaC::is_a<GiNaC::numeric>(x) && !GiNaC::ex_to<GiNaC::numeric>(x).is_integer())
+            robot_.typedDecimals.push_back(GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(x)));
+        return x;
     }
 
     static bool isExact(const GiNaC::ex& e) {

@@ -51,6 +51,9 @@ struct SymbolicRobot {
     // derivation to say what they stand for.
     std::vector<std::pair<std::string, double>> motorSymbols;
     GiNaC::lst parameterValues;              // symbol == value for every symbol introduced
+    // The numbers the scene typed as decimals, made exact (1.375 → 11/8, 9.8 → 49/5): shown
+    // as typed wherever they appear (number_spelling.hpp's readableNumbers).
+    std::vector<GiNaC::numeric> typedDecimals;
 };
 
 // t is the time symbol torques depend on. Throws InputError for expressions that
