@@ -42,7 +42,7 @@ int reportingErrors(F&& f) {
         return f();
     } catch (const ll::InputError& e) {
         for (const ll::Diagnostic& d : e.diagnostics())
-            if (d.severity == ll::Severity::Error) std::cerr << "error: " << d.field << ": " << d.message << '\n';
+            if (d.severity == ll::Severity::Error) std::cerr << d.toString() << '\n';
         return 2;
     } catch (const UsageError& e) {
         std::cerr << "error: " << e.what() << '\n';

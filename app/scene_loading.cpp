@@ -18,7 +18,7 @@ Scene loadSceneReportingWarnings(const std::string& path) {
             const auto lock = symbolic::lockGinac();
             (void)symbolic::deriveLagrangian(loaded.scene, symbolic::ParameterMode::Numeric);
         });
-    for (const Diagnostic& w : loaded.warnings) std::cerr << "warning: " << w.field << ": " << w.message << '\n';
+    for (const Diagnostic& w : loaded.warnings) std::cerr << w.toString() << '\n';
     return std::move(loaded.scene);
 }
 

@@ -83,7 +83,7 @@ private slots:
             QCOMPARE(scene.initial.q[1], radians.initial.q[1]);
             QVERIFY2((massMatrixAtInitial(scene) - B).cwiseAbs().maxCoeff() == 0.0, alpha);
         }
-        QVERIFY(contains(errorOf([] { parseScene(pumaWith("100 grad", 0).dump()); }), "robot.joints[1].alpha: syntax error"));
+        QVERIFY(contains(errorOf([] { parseScene(pumaWith("100 grad", 0).dump()); }), "robot.joints[0].alpha: syntax error"));
     }
 
     // The derivation keeps 90° exact: the same B as pi/2, term for term (the motors'
@@ -110,7 +110,7 @@ private slots:
         QCOMPARE(loaded.scene.robot.joints[0].dh.alpha, 90.0);  // loaded as given
         std::string warning;
         for (const Diagnostic& d : loaded.warnings)
-            if (contains(d.field, "robot.joints[1].alpha")) warning = d.message;
+            if (contains(d.field, "robot.joints[0].alpha")) warning = d.message;
         QVERIFY2(contains(warning, "alpha 90 rad — did you mean 90°? write 90° or pi/2"), warning.c_str());
         // An expression, degrees or a small number do not warn; neither does the second
         // joint's initial angle of 0.5 rad.
@@ -120,7 +120,7 @@ private slots:
         }
         const LoadedScene q = loadJson(pumaWith("pi/2", 45));
         bool warnedQ = false;
-        for (const Diagnostic& d : q.warnings) warnedQ |= contains(d.field, "initial.q[2]") && contains(d.message, "pi/4");
+        for (const Diagnostic& d : q.warnings) warnedQ |= contains(d.field, "initial.q[1]") && contains(d.message, "pi/4");
         QVERIFY(warnedQ);
     }
 
@@ -138,12 +138,12 @@ private slots:
             json["robot"]["joints"][1]["a"] = "431.8°";
             parseScene(json.dump());
         });
-        QVERIFY2(contains(length, "robot.joints[2].a: '°' (U+00B0) at position 6") && contains(length, "angle fields"), length.c_str());
+        QVERIFY2(contains(length, "robot.joints[1].a: '°' (U+00B0) at position 6") && contains(length, "angle fields"), length.c_str());
         const std::string prismatic = errorOf([] {
             parseScene(R"({"format": "lagrangelab-scene/1", "name": "slider", "robot": {"convention": "standard",
               "joints": [{"type": "prismatic", "mass": 1}]}, "initial": {"q": ["10 deg"]}})");
         });
-        QVERIFY2(contains(prismatic, "initial.q[1]: 'deg' at position 4"), prismatic.c_str());
+        QVERIFY2(contains(prismatic, "initial.q[0]: 'deg' at position 4"), prismatic.c_str());
         // A revolute spring's rest angle and a torque's phase are angles.
         const Scene scene = parseScene(R"({"format": "lagrangelab-scene/1", "name": "p", "robot": {"convention": "standard",
           "joints": [{"type": "revolute", "a": 1, "mass": 1}]},
@@ -179,7 +179,7 @@ private slots:
         QFETCH(QString, text);
         QFETCH(QString, says);
         ParameterTable table;
-        const std::string error = errorOf([&] { table.evaluate("robot.joints[1].alpha", text.toStdString()); });
+        const std::string error = errorOf([&] { table.evaluate("robot.joints[0].alpha", text.toStdString()); });
         QVERIFY2(contains(error, says.toStdString()), error.c_str());
         QVERIFY(isValidUtf8(error));
     }
@@ -187,7 +187,7 @@ private slots:
     // Bytes that are not UTF-8, in an expression or in a file: named, never cut.
     void bytesThatAreNotUtf8() {
         ParameterTable table;
-        const std::string expression = errorOf([&] { table.evaluate("robot.joints[1].alpha", "90\xC2"); });
+        const std::string expression = errorOf([&] { table.evaluate("robot.joints[0].alpha", "90\xC2"); });
         QVERIFY2(contains(expression, "byte 0xC2 at position 3 in \"90\\xC2\": not UTF-8"), expression.c_str());
         QVERIFY(isValidUtf8(expression));
         std::string file = pumaWith("pi/2", 0).dump();

@@ -94,7 +94,7 @@ private slots:
         Effects effects;
         effects.springs = {{5, 10.0, 0.0}};
         QCOMPARE(invalidArgument([&] { (void)potentialEnergy(robot, fresh, effects, q5); }),
-                 QString("potentialEnergy: effects.springs[1] is joint 6 (numbered from 1), the robot has 5 joints"));
+                 QString("potentialEnergy: effects.springs[0] is joint 6 (numbered from 1), the robot has 5 joints"));
         QCOMPARE(invalidArgument([&] { (void)linkTransform(robot, 5, 0.0); }),
                  QString("linkTransform: i is joint 6 (numbered from 1), the robot has 5 joints"));
     }
@@ -110,7 +110,7 @@ private slots:
         scene.initial.qd.conservativeResize(5);
         scene.effects.viscous = {{5, 0.1}};
         QCOMPARE(invalidArgument([&] { (void)simulate(scene); }),
-                 QString("simulate: effects.viscous[1] is joint 6 (numbered from 1), the robot has 5 joints"));
+                 QString("simulate: effects.viscous[0] is joint 6 (numbered from 1), the robot has 5 joints"));
     }
 
     void compiledLagrangianRefusesAStaleState() {

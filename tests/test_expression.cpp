@@ -92,7 +92,7 @@ private slots:
         ParameterTable table;
         table.define("parameters.m1", "m1", 2.0);
         table.define("parameters.l1", "l1", 0.5);
-        const GiNaC::ex e = table.parse("robot.joints[1].inertia.zz", "m1*l1^2/12");
+        const GiNaC::ex e = table.parse("robot.joints[0].inertia.zz", "m1*l1^2/12");
         const GiNaC::ex expected = table.symbol("m1") * GiNaC::pow(table.symbol("l1"), 2) / 12;
         QVERIFY((e - expected).expand().is_zero());
         QCOMPARE(GiNaC::ex_to<GiNaC::numeric>(e.subs(table.values()).evalf()).to_double(), 2.0 * 0.25 / 12.0);
@@ -111,9 +111,9 @@ private slots:
     void unknownSymbol() {
         ParameterTable table;
         table.define("parameters.l1", "l1", 1.0);
-        EXPECT_INPUT_ERROR(table.evaluate("robot.joints[2].a", "l3/2"), "robot.joints[2].a", "unknown symbol 'l3'",
+        EXPECT_INPUT_ERROR(table.evaluate("robot.joints[1].a", "l3/2"), "robot.joints[1].a", "unknown symbol 'l3'",
                            "at position 1", "\"l3/2\"", "l1");
-        EXPECT_INPUT_ERROR(table.evaluate("robot.joints[2].a", "l1 + 2*l3"), "robot.joints[2].a",
+        EXPECT_INPUT_ERROR(table.evaluate("robot.joints[1].a", "l1 + 2*l3"), "robot.joints[1].a",
                            "unknown symbol 'l3'", "at position 8");
         // A known name inside an unknown one is not mistaken for it.
         EXPECT_INPUT_ERROR(table.evaluate("f", "l1*xl1"), "f", "unknown symbol 'xl1'", "at position 4");
@@ -123,7 +123,7 @@ private slots:
     void syntaxError() {
         ParameterTable table;
         table.define("parameters.l1", "l1", 1.0);
-        EXPECT_INPUT_ERROR(table.evaluate("robot.joints[1].d", "l1*/2"), "robot.joints[1].d", "syntax error",
+        EXPECT_INPUT_ERROR(table.evaluate("robot.joints[0].d", "l1*/2"), "robot.joints[0].d", "syntax error",
                            "at position 4", "\"l1*/2\"");
         EXPECT_INPUT_ERROR(table.evaluate("f", "2**3"), "f", "syntax error", "at position 3");
         EXPECT_INPUT_ERROR(table.evaluate("f", "l1 l1"), "f", "syntax error", "at position 4");
@@ -138,7 +138,7 @@ private slots:
         table.define("parameters.l1", "l1", 1.0);
         table.define("parameters.l2", "l2", 1.0);
         // Zero symbolically (GiNaC simplifies while parsing) ...
-        EXPECT_INPUT_ERROR(table.evaluate("robot.joints[1].mass", "1/(l1-l1)"), "robot.joints[1].mass",
+        EXPECT_INPUT_ERROR(table.evaluate("robot.joints[0].mass", "1/(l1-l1)"), "robot.joints[0].mass",
                            "division by zero", "\"1/(l1-l1)\"");
         // ... and only numerically.
         EXPECT_INPUT_ERROR(table.evaluate("f", "1/(l1-l2)"), "f", "division by zero", "\"1/(l1-l2)\"");

@@ -283,7 +283,7 @@ private slots:
             parseScene(bad);
         } catch (const InputError& e) {
             for (const Diagnostic& d : e.diagnostics())
-                named = named || (d.field == "effects.coulomb[1].model" && d.message.find("\"tanh\" or \"stick\"") != std::string::npos);
+                named = named || (d.field == "effects.coulomb[0].model" && d.message.find("\"tanh\" or \"stick\"") != std::string::npos);
         }
         QVERIFY(named);
     }
@@ -330,7 +330,7 @@ private slots:
             thrown = true;
             bool named = false;
             for (const Diagnostic& d : e.diagnostics())
-                named = named || (d.severity == Severity::Error && d.field.find("robot.joints[2]") != std::string::npos &&
+                named = named || (d.severity == Severity::Error && d.field.find("robot.joints[1]") != std::string::npos &&
                                   d.message.find("moves no mass") != std::string::npos);
             QVERIFY2(named, e.what());
         }
@@ -342,7 +342,7 @@ private slots:
         QCOMPARE(p.exitCode(), 2);
         QVERIFY(p.readAllStandardOutput().isEmpty());
         const QByteArray err = p.readAllStandardError();
-        QVERIFY(err.contains("robot.joints[2]"));
+        QVERIFY(err.contains("robot.joints[1]"));
         QVERIFY(isValidUtf8(err.toStdString()));
         // a model built in code that skips validation still stops at the first evaluation
         Scene scene;

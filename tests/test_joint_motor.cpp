@@ -184,13 +184,13 @@ private slots:
         QTest::addColumn<QString>("motor");
         QTest::addColumn<QString>("field");
         QTest::addColumn<QString>("says");
-        QTest::newRow("negative armature") << R"("armature": -0.1)" << "robot.joints[1].armature" << "negative";
-        QTest::newRow("negative rotor") << R"("motor": {"inertia": -1e-4, "gear_ratio": 50})" << "robot.joints[1].motor.inertia" << "negative";
-        QTest::newRow("zero gear") << R"("motor": {"inertia": 1e-4, "gear_ratio": 0})" << "robot.joints[1].motor.gear_ratio" << "gear ratio is 0";
-        QTest::newRow("both") << R"("armature": 0.1, "motor": {"inertia": 1e-4, "gear_ratio": 50})" << "robot.joints[1].motor" << "not both";
-        QTest::newRow("no gear") << R"("motor": {"inertia": 1e-4})" << "robot.joints[1].motor.gear_ratio" << "required";
-        QTest::newRow("unknown key") << R"("motor": {"inertia": 1e-4, "gear": 50})" << "robot.joints[1].motor.gear" << "unknown key";
-        QTest::newRow("armature in degrees") << R"("armature": "2°")" << "robot.joints[1].armature" << "U+00B0";
+        QTest::newRow("negative armature") << R"("armature": -0.1)" << "robot.joints[0].armature" << "negative";
+        QTest::newRow("negative rotor") << R"("motor": {"inertia": -1e-4, "gear_ratio": 50})" << "robot.joints[0].motor.inertia" << "negative";
+        QTest::newRow("zero gear") << R"("motor": {"inertia": 1e-4, "gear_ratio": 0})" << "robot.joints[0].motor.gear_ratio" << "gear ratio is 0";
+        QTest::newRow("both") << R"("armature": 0.1, "motor": {"inertia": 1e-4, "gear_ratio": 50})" << "robot.joints[0].motor" << "not both";
+        QTest::newRow("no gear") << R"("motor": {"inertia": 1e-4})" << "robot.joints[0].motor.gear_ratio" << "required";
+        QTest::newRow("unknown key") << R"("motor": {"inertia": 1e-4, "gear": 50})" << "robot.joints[0].motor.gear" << "unknown key";
+        QTest::newRow("armature in degrees") << R"("armature": "2°")" << "robot.joints[0].armature" << "U+00B0";
     }
     void badMotorDataIsRefusedByField() {
         QFETCH(QString, motor);

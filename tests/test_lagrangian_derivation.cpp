@@ -60,7 +60,7 @@ std::string firstError(Call call) {
         call();
     } catch (const InputError& e) {
         for (const Diagnostic& d : e.diagnostics())
-            if (d.severity == Severity::Error) return d.field + ": " + d.message;
+            if (d.severity == Severity::Error) return d.text();  // with its hint line, if any
     }
     return {};
 }
@@ -264,9 +264,9 @@ private slots:
         const auto derive = [&](const char* kinetic) {
             return deriveLagrangian(scene(p, {{"coordinates", {"x", "y"}}, {"kinetic", kinetic}}));
         };
-        EXPECT_ERROR(derive("m*x_dot^2/2 + m*y_dot^2/2 + m*x_dot"), "lagrangian.kinetic:", "not a homogeneous quadratic",
+        EXPECT_ERROR(derive("m*x_dot^2/2 + m*y_dot^2/2 + m*x_dot"), "lagrangian.kinetic:", "not a quadratic form",
                      "is left over");
-        EXPECT_ERROR(derive("m*x_dot^2/2 + m*y_dot^2/2 + k*x^2"), "lagrangian.kinetic:", "not a homogeneous quadratic");
+        EXPECT_ERROR(derive("m*x_dot^2/2 + m*y_dot^2/2 + k*x^2"), "lagrangian.kinetic:", "not a quadratic form");
         EXPECT_ERROR(derive("m*x_dot^4 + m*y_dot^2"), "lagrangian.kinetic:", "not quadratic", "x_dot");
         EXPECT_ERROR(derive("m*x_dot^2/2 + m*sqrt(y_dot^2)"), "lagrangian.kinetic:", "quadratic");
         // A mixed term that is quadratic is fine: B = [[2m, 1], [1, 2m]].
@@ -302,10 +302,10 @@ private slots:
                                               {"forces", forces}},
                                           {{"initial", {{"q", {0.1, 0.2}}}}}));
         };
-        EXPECT_ERROR(derive({"-k*x", 0}), "lagrangian.forces[1]:", "conservative", "lagrangian.potential",
+        EXPECT_ERROR(derive({"-k*x", 0}), "lagrangian.forces[0]:", "conservative", "lagrangian.potential",
                      "V = ", "x^2");
-        EXPECT_ERROR(derive({"-k*y", "-k*x"}), "lagrangian.forces[1]:", "gradient of a potential", "V = ");
-        EXPECT_ERROR(derive({0, "-m*9.81 - k*y^3"}), "lagrangian.forces[2]:", "conservative");
+        EXPECT_ERROR(derive({"-k*y", "-k*x"}), "lagrangian.forces[0]:", "gradient of a potential", "V = ");
+        EXPECT_ERROR(derive({0, "-m*9.81 - k*y^3"}), "lagrangian.forces[1]:", "conservative");
         // Not conservative: inputs, friction, a curl (a rotating field), time-dependent forces.
         for (const Json& forces : {Json{0, "tau"}, Json{"-k*x_dot", "-k*y_dot"}, Json{"-y", "x"}, Json{"-k*x*sin(t)", 0},
                                    Json{"tau", "tau"}})
@@ -330,13 +330,13 @@ private slots:
         EXPECT_ERROR(parse({{"coordinates", {"x"}}, {"kinetic", "x_dot^2/(k-2)"}}), "lagrangian.kinetic:",
                      "division by zero", "'/' at position 8");
         EXPECT_ERROR(parse({{"coordinates", {"x"}}, {"kinetic", "m*x_dot^2/2"}, {"forces", {"1/(x-x)"}}}),
-                     "lagrangian.forces[1]:", "division by zero", "'/' at position 2");
+                     "lagrangian.forces[0]:", "division by zero", "'/' at position 2");
         EXPECT_ERROR(parse({{"coordinates", {"x"}}, {"kinetic", "m*x_dot^2/2"},
                             {"bodies", {{{"shape", "sphere"}, {"size", {0.1}}, {"position", {"x", "y", 0}}}}}}),
-                     "lagrangian.bodies[1].position[2]:", "unknown symbol 'y'");
+                     "lagrangian.bodies[0].position[1]:", "unknown symbol 'y'");
         EXPECT_ERROR(parse({{"coordinates", {"x"}}, {"kinetic", "m*x_dot^2/2"},
                             {"bodies", {{{"shape", "sphere"}, {"size", {0.1}}, {"position", {"x_dot", 0, 0}}}}}}),
-                     "lagrangian.bodies[1].position[1]:", "velocity");
+                     "lagrangian.bodies[0].position[0]:", "velocity");
     }
 
     void sceneStructureErrors() {
@@ -350,7 +350,7 @@ private slots:
             l["coordinates"] = names;
             EXPECT_ERROR(parseScene(sceneJson(p, l)), "lagrangian.coordinates[", part);
         }
-        EXPECT_ERROR(parseScene(sceneJson({{"x_dot", 1}}, ok)), "lagrangian.coordinates[1]:", "'x_dot'");
+        EXPECT_ERROR(parseScene(sceneJson({{"x_dot", 1}}, ok)), "lagrangian.coordinates[0]:", "'x_dot'");
         // Unknown keys name their path; robot and lagrangian exclude each other.
         Json typo = ok;
         typo["kinetik"] = "x";
@@ -360,17 +360,17 @@ private slots:
         EXPECT_ERROR(parseScene(sceneJson(p, {{"coordinates", {"x"}}})), "lagrangian.kinetic:", "missing");
         EXPECT_ERROR(parseScene(sceneJson(p, ok, {{"lagrangian", {{"coordinates", {"x"}}, {"kinetic", "m*x_dot^2/2"},
                                                                   {"bodies", {{{"shape", "rod"}, {"size", {1}}, {"angle", "x"}}}}}}})),
-                     "lagrangian.bodies[1].angle:", "unknown key for a rod");
+                     "lagrangian.bodies[0].angle:", "unknown key for a rod");
         // Validation: gravity and springs belong in the potential; sizes by coordinates.
         const auto validate = [&](const Json& extra) { return requireValidScene(parseScene(sceneJson(p, ok, extra))); };
         EXPECT_ERROR(validate({{"effects", {{"gravity", {0, -9.81, 0}}}}}), "effects.gravity:", "write it in the potential");
         EXPECT_ERROR(validate({{"effects", {{"springs", {{{"joint", 1}, {"stiffness", 1}}}}}}}), "effects.springs:",
                      "potential");
         EXPECT_ERROR(validate({{"effects", {{"viscous", {{{"joint", 2}, {"coefficient", 1}}}}}}}),
-                     "effects.viscous[1].joint:", "coordinate 2 does not exist");
+                     "effects.viscous[0].joint:", "coordinate 2 does not exist");
         EXPECT_ERROR(validate({{"initial", {{"q", {1, 2}}}}}), "initial.q:", "1 coordinates");
         EXPECT_ERROR(validate({{"effects", {{"coulomb", {{{"joint", 1}, {"force", 1}, {"model", "stick"}}}}}}}),
-                     "effects.coulomb[1].model:", "tanh");
+                     "effects.coulomb[0].model:", "tanh");
         EXPECT_ERROR(validate({{"lagrangian", {{"coordinates", {"x"}}, {"kinetic", "m*x_dot^2/2"}, {"forces", {1, 2}}}}}),
                      "lagrangian.forces:", "one per coordinate");
         QVERIFY(firstError([&] { validate({{"initial", {{"q", {1}}}}}); }).empty());
@@ -419,7 +419,7 @@ private slots:
         const Scene s = parseScene(readFile(std::string(LL_EXAMPLES_DIR) + "/mass_spring_pair_lagrangian.json"));
         QCOMPARE(s.lagrangian->forces, (std::vector<std::string>{"0", "tau"}));
         QCOMPARE(s.lagrangian->bodies[0].size, (std::vector<double>{0.3, 0.05}));
-        QCOMPARE(s.expressions.at("lagrangian.bodies[1].size[1]"), std::string("r"));
+        QCOMPARE(s.expressions.at("lagrangian.bodies[0].size[0]"), std::string("r"));
         QCOMPARE(s.dof(), 2);
     }
 };

@@ -62,6 +62,13 @@ bool settled(MainWindow& w, int seconds = 60) {
     return false;
 }
 
+// Shows the window on an example, without asking before closing, and waits until it settled.
+bool shownOn(MainWindow& w, const char* name) {
+    w.setAskBeforeClosing(false);
+    w.show();
+    return w.openFile(example(name), nullptr, true) && settled(w);
+}
+
 // Waits until the newest edit has been checked (diagnostics and valid scene up to date).
 bool checked(MainWindow& w) {
     QElapsedTimer clock;
@@ -241,7 +248,7 @@ private slots:
         const QString tip = model.data(mass, Qt::ToolTipRole).toString();
         QVERIFY2(tip.startsWith("error:") && tip.contains("-2"), qPrintable(tip));
         QCOMPARE(model.data(mass, Qt::BackgroundRole).value<QBrush>().color(), QColor(255, 190, 190));
-        QVERIFY(w.diagnosticLines().join('\n').contains("robot.joints[2].mass"));
+        QVERIFY(w.diagnosticLines().join('\n').contains("robot.joints[1].mass"));
         // The cell shows what was typed; the model on screen is still the valid one.
         QCOMPARE(model.data(mass, Qt::DisplayRole).toString(), QString("-2"));
         QCOMPARE(w.document().validScene().robot.joints[1].link.mass, 1.5);
@@ -256,13 +263,41 @@ private slots:
         QCOMPARE(w.document().validScene().robot.joints[0].dh.a, 1.0);
     }
 
+    // The editor names a field as JSON counts it with its joint in words, and an absurd
+    // magnitude as such (not as a singular B), in the cell's tip and the checks list.
+    void absurdMagnitudesAreNamedInTheEditor_data() {
+        QTest::addColumn<int>("column");
+        QTest::addColumn<QString>("typed");
+        QTest::addColumn<QString>("expected");
+        QTest::newRow("d = 1e300") << int(JointTableModel::D) << "1e300" << "robot.joints[0].d (joint 1): absurdly large length 1e+300 m";
+        QTest::newRow("a = 1e-12") << int(JointTableModel::A) << "1e-12" << "robot.joints[0].a (joint 1): absurdly small length 1e-12 m";
+        QTest::newRow("mass = 1e10") << int(JointTableModel::Mass) << "1e10" << "robot.joints[0].mass (joint 1): absurdly large mass 1e+10 kg";
+        QTest::newRow("mass = 1e-12") << int(JointTableModel::Mass) << "1e-12" << "robot.joints[0].mass (joint 1): absurdly small mass 1e-12 kg";
+        QTest::newRow("Izz = 1e10") << int(JointTableModel::Izz) << "1e10" << "robot.joints[0].inertia.zz (joint 1): absurdly large inertia";
+        QTest::newRow("Izz = 1e-20") << int(JointTableModel::Izz) << "1e-20" << "robot.joints[0].inertia.zz (joint 1): absurdly small inertia";
+    }
+    void absurdMagnitudesAreNamedInTheEditor() {
+        QFETCH(int, column);
+        QFETCH(QString, typed);
+        QFETCH(QString, expected);
+        MainWindow w;
+        QVERIFY(shownOn(w, "planar_2r.json"));
+        JointTableModel& model = w.jointModel();
+        const QModelIndex cell = model.index(0, column);
+        QVERIFY(model.setData(cell, typed, Qt::EditRole));
+        QVERIFY(checked(w));
+        const QString lines = w.diagnosticLines().join('\n');
+        QVERIFY2(lines.contains(expected), qPrintable(lines));
+        QVERIFY2(!lines.contains("B(q)"), qPrintable(lines));
+        const QString tip = model.data(cell, Qt::ToolTipRole).toString();
+        QVERIFY2(tip.startsWith("error: absurdly"), qPrintable(tip));
+        QVERIFY(w.document().undoStack()->canUndo());
+    }
+
     // Undo and redo restore the typed text, the valid model and the simulation.
     void undoAndRedoRestore() {
         MainWindow w;
-        w.setAskBeforeClosing(false);
-        w.show();
-        QVERIFY(w.openFile(example("planar_2r.json"), nullptr, true));
-        QVERIFY(settled(w));
+        QVERIFY(shownOn(w, "planar_2r.json"));
         JointTableModel& model = w.jointModel();
         const QModelIndex alpha = model.index(1, JointTableModel::D);
         model.setData(alpha, "0.25", Qt::EditRole);
@@ -319,7 +354,7 @@ private slots:
         QCOMPARE(loaded.scene.robot.joints[1].dh.alpha, M_PI / 2);
         QCOMPARE(loaded.scene.robot.joints[0].link.mass, 2.5);
         QCOMPARE(loaded.scene.robot.joints[0].dh.d, 0.1);
-        QCOMPARE(QString::fromStdString(loaded.scene.expressions.at("robot.joints[2].alpha")), QString("90°"));
+        QCOMPARE(QString::fromStdString(loaded.scene.expressions.at("robot.joints[1].alpha")), QString("90°"));
         const ll::LoadedScene backup = ll::loadScene((path + ".bak").toStdString());
         QCOMPARE(backup.scene.robot.joints[0].dh.d, 0.0);
         MainWindow again;
@@ -386,7 +421,7 @@ private slots:
         QVERIFY(!w.openFile(bad, &errors, true));
         QVERIFY2(errors.size() >= 2, qPrintable(errors.join('\n')));
         for (const QString& e : errors) QVERIFY2(e.startsWith(bad + ": "), qPrintable(e));
-        QVERIFY2(errors.join('\n').contains("robot.joints[2].type"), qPrintable(errors.join('\n')));
+        QVERIFY2(errors.join('\n').contains("robot.joints[1].type"), qPrintable(errors.join('\n')));
         QCOMPARE(w.document().text(), text);
         QCOMPARE(w.document().undoStack()->count(), edits);
         QVERIFY(w.document().isModified());

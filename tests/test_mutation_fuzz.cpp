@@ -49,16 +49,21 @@ struct Failures {
     }
 };
 
-// A refusal's messages: at least one error, each naming a field on one short line.
+// A refusal's messages: at least one error, each naming a field on one short line
+// (`error: FIELD: what is wrong`, at most 200 bytes after the file's name), the why and
+// the fix, if any, on one following `hint:` line.
 std::string badDiagnostics(const std::vector<Diagnostic>& diagnostics) {
     if (!hasErrors(diagnostics)) return "refused without an error";
     for (const Diagnostic& d : diagnostics) {
-        const std::string line = d.toString();
-        if (d.field.empty()) return "a message names no field: " + line;
+        const std::string text = d.toString();
+        std::string line = text.substr(0, text.find('\n'));
+        if (const std::size_t file = line.find(".json: "); file != std::string::npos) line = "error: " + line.substr(file + 7);
+        if (d.field.empty()) return "a message names no field: " + text;
         if (d.message.empty()) return "an empty message for " + d.field;
-        if (line.find('\n') != std::string::npos) return "a message of several lines: " + line;
-        if (line.size() > 700) return "a message of " + std::to_string(line.size()) + " bytes: " + line.substr(0, 200);
-        if (!isValidUtf8(line)) return "a message that is not UTF-8";
+        if (d.message.find('\n') != std::string::npos || d.hint.find('\n') != std::string::npos) return "a message of several lines: " + text;
+        if (line.size() > 200) return "a first line of " + std::to_string(line.size()) + " bytes: " + line;
+        if (d.hint.size() > 700) return "a hint of " + std::to_string(d.hint.size()) + " bytes: " + d.hint.substr(0, 200);
+        if (!isValidUtf8(text)) return "a message that is not UTF-8";
     }
     return "";
 }
@@ -194,8 +199,8 @@ std::string badCliRun(const Run& r, bool resultOnStdout) {
     if (r.exitCode == 2) {
         bool named = false;
         for (const QString& line : err.split('\n', Qt::SkipEmptyParts)) {
-            if (!line.startsWith("error: ") && !line.startsWith("warning: ") && !line.startsWith("usage:") &&
-                !line.startsWith(' ') && !line.startsWith("QStandardPaths"))
+            if (!line.startsWith("error: ") && !line.startsWith("warning: ") && !line.startsWith("hint: ") &&
+                !line.startsWith("usage:") && !line.startsWith(' ') && !line.startsWith("QStandardPaths"))
                 return "an unexpected stderr line: " + line.left(200).toStdString();
             if (line.size() > 800) return "an error line of " + std::to_string(line.size()) + " characters";
             if (line.startsWith("error: ") && line.count(": ") >= 2) named = true;

@@ -244,21 +244,21 @@ private slots:
         const std::map<std::string, std::string> expected = {
             {"parameters.lc1", "l1/2"},
             {"parameters.lc2", "l2/2"},
-            {"robot.base.position[3]", "l1/4"},
-            {"robot.base.rpy[3]", "pi/4"},
-            {"robot.joints[1].a", "l1"},
-            {"robot.joints[1].mass", "m1"},
-            {"robot.joints[1].com[1]", "-l1+lc1"},
-            {"robot.joints[1].inertia.yy", "m1*l1^2/12"},
-            {"robot.joints[1].inertia.zz", "m1*l1^2/12"},
-            {"robot.joints[2].a", "l2"},
-            {"robot.joints[2].alpha", "pi/2"},
-            {"robot.joints[2].theta", "-pi/2"},
-            {"robot.joints[2].mass", "m2"},
-            {"robot.joints[2].com[1]", "-lc2"},
-            {"robot.joints[2].inertia.yz", "-0.003"},
-            {"effects.torques[1].phase", "pi/3"},
-            {"initial.q[2]", "pi/6"},
+            {"robot.base.position[2]", "l1/4"},
+            {"robot.base.rpy[2]", "pi/4"},
+            {"robot.joints[0].a", "l1"},
+            {"robot.joints[0].mass", "m1"},
+            {"robot.joints[0].com[0]", "-l1+lc1"},
+            {"robot.joints[0].inertia.yy", "m1*l1^2/12"},
+            {"robot.joints[0].inertia.zz", "m1*l1^2/12"},
+            {"robot.joints[1].a", "l2"},
+            {"robot.joints[1].alpha", "pi/2"},
+            {"robot.joints[1].theta", "-pi/2"},
+            {"robot.joints[1].mass", "m2"},
+            {"robot.joints[1].com[0]", "-lc2"},
+            {"robot.joints[1].inertia.yz", "-0.003"},
+            {"effects.torques[0].phase", "pi/3"},
+            {"initial.q[1]", "pi/6"},
         };
         QCOMPARE(scene.expressions, expected);
     }
@@ -385,13 +385,13 @@ private slots:
         EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joint"] = Json::array(); })), "robot.joint",
                      "unknown key", "joints");
         EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joints"][0]["mas"] = 1; })),
-                     "robot.joints[1].mas", "unknown key", "mass");
+                     "robot.joints[0].mas", "unknown key", "mass");
         EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joints"][0]["inertia"] = {{"zx", 1}}; })),
-                     "robot.joints[1].inertia.zx", "unknown key", "xz");
+                     "robot.joints[0].inertia.zx", "unknown key", "xz");
         EXPECT_ERROR(parseScene(minimalWith([](Json& j) {
                          j["effects"] = Json::parse(R"({"springs": [{"joint": 1, "stiffness": 1}, {"joint": 1, "k": 2}]})");
                      })),
-                     "effects.springs[2].k", "unknown key", "stiffness");
+                     "effects.springs[1].k", "unknown key", "stiffness");
         EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["simulation"] = {{"step", 0.1}}; })), "simulation.step",
                      "unknown key", "dt");
         EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["base"] = {{"orientation", 1}}; })),
@@ -414,43 +414,43 @@ private slots:
         EXPECT_ERROR(parseScene(minimalWith([](Json& j) {
                          j["effects"] = Json::parse(R"({"torques": [{"joint": 1, "kind": "constant", "value": 1, "amplitude": 2}]})");
                      })),
-                     "effects.torques[1].amplitude", "unknown key for a constant torque", "joint, kind, value");
+                     "effects.torques[0].amplitude", "unknown key for a constant torque", "joint, kind, value");
         EXPECT_ERROR(parseScene(minimalWith([](Json& j) {
                          j["effects"] = Json::parse(R"({"torques": [{"joint": 1, "kind": "sine", "amplitude": 1, "value": 2}]})");
                      })),
-                     "effects.torques[1].value", "unknown key for a sine torque", "amplitude, frequency, phase");
+                     "effects.torques[0].value", "unknown key for a sine torque", "amplitude, frequency, phase");
         EXPECT_ERROR(parseScene(minimalWith([](Json& j) {
                          j["effects"] = Json::parse(R"({"torques": [{"joint": 1, "kind": "ramp", "slope": 1, "at": 2}]})");
                      })),
-                     "effects.torques[1].at", "unknown key for a ramp torque");
+                     "effects.torques[0].at", "unknown key for a ramp torque");
         EXPECT_ERROR(parseScene(minimalWith([](Json& j) {
                          j["effects"] = Json::parse(R"({"torques": [{"joint": 1, "kind": "square", "value": 1}]})");
                      })),
-                     "effects.torques[1].kind", "\"constant\", \"step\", \"sine\" or \"ramp\"", "\"square\"");
+                     "effects.torques[0].kind", "\"constant\", \"step\", \"sine\" or \"ramp\"", "\"square\"");
     }
 
     void wrongTypes() {
         Json json = Json::parse(kFullScene);
         json["robot"]["joints"].push_back(json["robot"]["joints"][0]);
         json["robot"]["joints"][2]["mass"] = Json::array({1, 2});
-        EXPECT_ERROR(parseScene(json.dump()), "robot.joints[3].mass",
+        EXPECT_ERROR(parseScene(json.dump()), "robot.joints[2].mass",
                      "expected a number or an expression, got [1,2]");
         EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"] = "arm"; })), "robot",
                      "expected an object", "a string \"arm\"");
         EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joints"] = Json::object(); })),
                      "robot.joints", "expected an array");
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joints"][0] = 3; })), "robot.joints[1]",
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joints"][0] = 3; })), "robot.joints[0]",
                      "expected an object", "the number 3");
         EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joints"][0]["com"] = {1, 2}; })),
-                     "robot.joints[1].com", "array of 3", "[1,2]");
+                     "robot.joints[0].com", "array of 3", "[1,2]");
         EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joints"][0]["com"] = {1, true, 2}; })),
-                     "robot.joints[1].com[2]", "expected a number or an expression, got true");
+                     "robot.joints[0].com[1]", "expected a number or an expression, got true");
         EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joints"][0]["inertia"] = {1, 2, 3}; })),
-                     "robot.joints[1].inertia", "expected an object", "[1,2,3]");
+                     "robot.joints[0].inertia", "expected an object", "[1,2,3]");
         EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joints"][0]["alpha"] = nullptr; })),
-                     "robot.joints[1].alpha", "got null");
+                     "robot.joints[0].alpha", "got null");
         EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joints"][0]["type"] = "rotary"; })),
-                     "robot.joints[1].type", "\"revolute\" or \"prismatic\"", "\"rotary\"");
+                     "robot.joints[0].type", "\"revolute\" or \"prismatic\"", "\"rotary\"");
         EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["convention"] = "craig"; })),
                      "robot.convention", "\"standard\" or \"modified\"");
         EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["name"] = 5; })), "name", "expected a string",
@@ -476,7 +476,7 @@ private slots:
                              j["effects"] = Json::parse(std::string(R"({"viscous": [{"joint": )") + joint +
                                                         R"(, "coefficient": 1}]})");
                          })),
-                         "effects.viscous[1].joint", "from 1");
+                         "effects.viscous[0].joint", "from 1");
     }
 
     void missingRequiredFields() {
@@ -491,11 +491,11 @@ private slots:
         EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joints"] = Json::array(); })), "robot.joints",
                      "at least one joint");
         EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joints"][0].erase("mass"); })),
-                     "robot.joints[1].mass", "missing");
+                     "robot.joints[0].mass", "missing");
         EXPECT_ERROR(parseScene(minimalWith([](Json& j) {
                          j["effects"] = Json::parse(R"({"springs": [{"stiffness": 1}]})");
                      })),
-                     "effects.springs[1].joint", "missing");
+                     "effects.springs[0].joint", "missing");
     }
 
     void otherFormat() {
@@ -530,7 +530,7 @@ private slots:
                      "parameters.l1", "given twice");
         EXPECT_ERROR(parseScene(R"({"format": "lagrangelab-scene/1", "name": "x",
             "robot": {"convention": "standard", "joints": [{"mass": 1, "com": [1, 2, 3]}, {"mass": 1, "a": 1, "mass": 2}]}})"),
-                     "robot.joints[2].mass", "given twice");
+                     "robot.joints[1].mass", "given twice");
     }
 
     void expressionErrorsNameTheField() {
@@ -538,21 +538,21 @@ private slots:
                          j["parameters"] = {{"l1", 1}};
                          j["robot"]["joints"].push_back({{"a", "l3/2"}, {"mass", 1}});
                      })),
-                     "robot.joints[2].a", "unknown symbol 'l3' at position 1 in \"l3/2\"");
+                     "robot.joints[1].a", "unknown symbol 'l3' at position 1 in \"l3/2\"");
         EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joints"][0]["d"] = "1/(2-2)"; })),
-                     "robot.joints[1].d", "division by zero in \"1/(2-2)\"");
+                     "robot.joints[0].d", "division by zero in \"1/(2-2)\"");
         EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joints"][0]["inertia"] = {{"xz", "1e400"}}; })),
-                     "robot.joints[1].inertia.xz", "value is not finite (inf) in \"1e400\"");
+                     "robot.joints[0].inertia.xz", "value is not finite (inf) in \"1e400\"");
         EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["effects"] = {{"gravity", {0, "-9.81*", 0}}}; })),
-                     "effects.gravity[2]", "syntax error", "\"-9.81*\"");
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["initial"] = {{"qd", {"oops"}}}; })), "initial.qd[1]",
+                     "effects.gravity[1]", "syntax error", "\"-9.81*\"");
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["initial"] = {{"qd", {"oops"}}}; })), "initial.qd[0]",
                      "unknown symbol 'oops'");
         EXPECT_ERROR(parseScene(minimalWith([](Json& j) {
                          j["effects"] = Json::parse(R"({"coulomb": [{"joint": 1, "force": 1, "smoothing": "v"}]})");
                      })),
-                     "effects.coulomb[1].smoothing", "unknown symbol 'v'");
+                     "effects.coulomb[0].smoothing", "unknown symbol 'v'");
         EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["base"] = {{"rpy", {0, 0, "pi/"}}}; })),
-                     "robot.base.rpy[3]", "syntax error");
+                     "robot.base.rpy[2]", "syntax error");
         EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["simulation"] = {{"dt", "1/0"}}; })), "simulation.dt",
                      "division by zero");
         // Parameters: later ones may use earlier ones only; reserved names refused.
@@ -583,7 +583,7 @@ private slots:
         Scene second = first;
         second.name = "Second version";
         second.robot.joints[0].link.mass = 3.5;
-        second.expressions.erase("robot.joints[1].mass");
+        second.expressions.erase("robot.joints[0].mass");
         const std::string before = readFile(path);
         saveScene(second, path.string());
         QCOMPARE(readFile(path), serializeScene(second));
@@ -647,12 +647,12 @@ private slots:
 
         const fs::path typo = root / "typo.json";
         writeFile(typo, minimalWith([](Json& j) { j["robot"]["joints"][0]["mas"] = 1; }));
-        EXPECT_ERROR(loadScene(typo.string()), typo.string() + ": robot.joints[1].mas", "unknown key");
+        EXPECT_ERROR(loadScene(typo.string()), typo.string() + ": robot.joints[0].mas", "unknown key");
 
         // Physical errors and warnings come from validation, also naming the file.
         const fs::path negative = root / "negative.json";
         writeFile(negative, minimalWith([](Json& j) { j["robot"]["joints"][0]["mass"] = -1; }));
-        EXPECT_ERROR(loadScene(negative.string()), negative.string() + ": robot.joints[1].mass", "negative");
+        EXPECT_ERROR(loadScene(negative.string()), negative.string() + ": robot.joints[0].mass", "negative");
 
         const fs::path extraQ = root / "extra.json";
         writeFile(extraQ, minimalWith([](Json& j) { j["initial"] = {{"q", {0, 0}}}; }));
@@ -662,7 +662,7 @@ private slots:
         writeFile(outOfRange, minimalWith([](Json& j) {
                       j["effects"] = Json::parse(R"({"springs": [{"joint": 3, "stiffness": 1}]})");
                   }));
-        EXPECT_ERROR(loadScene(outOfRange.string()), outOfRange.string() + ": effects.springs[1].joint",
+        EXPECT_ERROR(loadScene(outOfRange.string()), outOfRange.string() + ": effects.springs[0].joint",
                      "joint 3 does not exist");
 
         const fs::path oddInertia = root / "odd.json";
@@ -672,7 +672,7 @@ private slots:
         const LoadedScene odd = loadScene(oddInertia.string());
         QVERIFY(!odd.warnings.empty());
         QCOMPARE(odd.warnings.front().severity, Severity::Warning);
-        QVERIFY(contains(odd.warnings.front().field, oddInertia.string() + ": robot.joints[1]"));
+        QVERIFY(contains(odd.warnings.front().field, oddInertia.string() + ": robot.joints[0]"));
     }
 
     void examples() {
@@ -683,7 +683,7 @@ private slots:
         if (files.empty()) QSKIP("no examples/*.json yet");
 
         const std::vector<std::string> numericFields = {"a",       "alpha",   "d",          "theta",
-                                                        "mass",    "com[1]",  "com[2]",     "com[3]",
+                                                        "mass",    "com[0]",  "com[1]",     "com[2]",
                                                         "inertia.xx", "inertia.yy", "inertia.zz", "inertia.xy",
                                                         "inertia.xz", "inertia.yz"};
         const Json corruptions[] = {"oops", Json::object({{"x", 1}}), nullptr};
@@ -707,7 +707,7 @@ private slots:
                         Json& joint = json["robot"]["joints"][i];
                         if (name.rfind("com[", 0) == 0) {
                             if (!joint.contains("com")) joint["com"] = {0, 0, 0};
-                            joint["com"][static_cast<std::size_t>(name[4] - '1')] = bad;
+                            joint["com"][static_cast<std::size_t>(name[4] - '0')] = bad;
                         } else if (name.rfind("inertia.", 0) == 0) {
                             joint["inertia"][name.substr(8)] = bad;
                         } else {

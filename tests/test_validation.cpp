@@ -61,7 +61,7 @@ private slots:
                 expectError("NaN mass", jointField(j, "mass"), [](Joint& x) { x.link.mass = std::nan(""); });
                 expectError("infinite a", jointField(j, "a"), [](Joint& x) { x.dh.a = INFINITY; });
                 expectError("NaN alpha", jointField(j, "alpha"), [](Joint& x) { x.dh.alpha = std::nan(""); });
-                expectError("NaN com", jointField(j, "com[2]"), [](Joint& x) { x.link.com[1] = std::nan(""); });
+                expectError("NaN com", jointField(j, "com[1]"), [](Joint& x) { x.link.com[1] = std::nan(""); });
                 expectError("non-PSD inertia", jointField(j, "inertia"), [](Joint& x) { x.link.inertia(0, 0) = -1.0; });
                 expectError("asymmetric inertia", jointField(j, "inertia"), [](Joint& x) { x.link.inertia(0, 1) += 0.5; });
             }
@@ -71,7 +71,7 @@ private slots:
             QVERIFY(namesError(validateScene(scene), "initial.q"));
             scene = original;
             scene.effects.springs.push_back({scene.dof(), 1.0, 0.0});  // one past the last joint (coordinate)
-            QVERIFY(namesError(validateScene(scene), "effects.springs[" + std::to_string(scene.effects.springs.size()) + "].joint"));
+            QVERIFY(namesError(validateScene(scene), "effects.springs[" + std::to_string(scene.effects.springs.size() - 1) + "].joint"));
             scene = original;
             scene.simulation.duration = 1e9;  // 1e11 samples at 100 Hz: refused, not bad_alloc
             QVERIFY(namesError(validateScene(scene), "simulation.output_rate"));
@@ -85,11 +85,11 @@ private slots:
         const LoadedScene puma = loadScene(std::string(LL_EXAMPLES_DIR) + "/puma560.json");
         bool warnedLink1 = false;
         for (const Diagnostic& d : puma.warnings)
-            warnedLink1 |= d.field.find("robot.joints[1].inertia") != std::string::npos && d.message.find("triangle") != std::string::npos;
+            warnedLink1 |= d.field.find("robot.joints[0].inertia") != std::string::npos && d.message.find("triangle") != std::string::npos;
         QVERIFY(warnedLink1);
         const LoadedScene stanford = loadScene(std::string(LL_EXAMPLES_DIR) + "/stanford_arm.json");
         bool warnedLink5 = false;
-        for (const Diagnostic& d : stanford.warnings) warnedLink5 |= d.field.find("robot.joints[5].inertia") != std::string::npos;
+        for (const Diagnostic& d : stanford.warnings) warnedLink5 |= d.field.find("robot.joints[4].inertia") != std::string::npos;
         QVERIFY(warnedLink5);
     }
 
@@ -97,7 +97,7 @@ private slots:
         RobotModel robot = test::Planar2R{}.model();
         robot.joints.push_back(Joint{});  // joint 3: no mass, no inertia
         const auto diagnostics = validateRobot(robot);
-        QVERIFY(namesError(diagnostics, jointField(2, "")));
+        QVERIFY(namesError(diagnostics, jointField(2, "mass")));  // the one value that explains it
         bool mentionsJoint = false;
         for (const Diagnostic& d : diagnostics) mentionsJoint |= d.message.find("joint 3") != std::string::npos;
         QVERIFY(mentionsJoint);

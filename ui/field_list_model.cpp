@@ -102,12 +102,12 @@ std::vector<FieldRow> initialStateRows(const SceneJson& json) {
             const QString unit = lagrangian ? QString() : (isRevolute(json, i) ? (q ? "rad" : "rad/s") : (q ? "m" : "m/s"));
             rows.push_back({q ? name(i) + "(0)" : name(i) + QString::fromUtf8("̇(0)"),
                             "/initial/" + std::string(key) + "/" + std::to_string(i),
-                            "initial." + std::string(key) + "[" + std::to_string(i + 1) + "]", unit});
+                            "initial." + std::string(key) + "[" + std::to_string(i) + "]", unit});
         }
     if (json.contains("effects") && json["effects"].contains("gravity"))
         for (int i = 0; i < 3; ++i)
             rows.push_back({QString("gravity %1").arg(QChar('x' + i)), "/effects/gravity/" + std::to_string(i),
-                            "effects.gravity[" + std::to_string(i + 1) + "]", QString::fromUtf8("m/s²")});
+                            "effects.gravity[" + std::to_string(i) + "]", QString::fromUtf8("m/s²")});
     return rows;
 }
 
@@ -127,7 +127,7 @@ std::vector<FieldRow> lagrangianRows(const SceneJson& json) {
     if (l.contains("coordinates"))
         for (std::size_t i = 0; i < l["coordinates"].size(); ++i)
             rows.push_back({QString("coordinate %1").arg(i + 1), "/lagrangian/coordinates/" + std::to_string(i),
-                            "lagrangian.coordinates[" + std::to_string(i + 1) + "]", {}});
+                            "lagrangian.coordinates[" + std::to_string(i) + "]", {}});
     for (const char* key : {"kinetic", "potential"})
         if (l.contains(key)) rows.push_back({key, "/lagrangian/" + std::string(key), "lagrangian." + std::string(key), "J"});
     return rows;

@@ -53,7 +53,7 @@ std::string JointTableModel::pointer(int row, int column) {
 }
 
 std::string JointTableModel::fieldPath(int row, int column) {
-    if (column >= ComX && column <= ComZ) return jointField(row, "com[" + std::to_string(column - ComX + 1) + "]");
+    if (column >= ComX && column <= ComZ) return jointField(row, "com[" + std::to_string(column - ComX) + "]");
     if (column >= Ixx) return jointField(row, std::string("inertia.") + kKeys[column]);
     return jointField(row, kKeys[column]);
 }

@@ -62,7 +62,7 @@ void LiveDerivation::request(const Scene& scene) {
         } catch (const Cancelled&) {
             result->stopped = true;
         } catch (const InputError& e) {
-            for (const Diagnostic& d : e.diagnostics()) result->error += QString::fromStdString(d.field + ": " + d.message + "\n");
+            for (const Diagnostic& d : e.diagnostics()) result->error += QString::fromStdString(d.text() + "\n");
         } catch (const std::exception& e) {
             result->error = QString::fromStdString(e.what());
         }

@@ -63,7 +63,7 @@ void LiveSimulation::start() {
             if (result->simulation.trajectory.size() > 0) result->visual->fitToMotion(result->simulation.trajectory);
             if (result->simulation.status == SimulationStatus::Failed) result->error = result->simulation.message;
         } catch (const InputError& e) {
-            for (const Diagnostic& d : e.diagnostics()) result->error += d.field + ": " + d.message + "\n";
+            for (const Diagnostic& d : e.diagnostics()) result->error += d.text() + "\n";
         } catch (const std::exception& e) {
             result->error = e.what();
         }

@@ -62,7 +62,7 @@ bool SceneDocument::adopt(const std::string& text, const QString& path, std::vec
     if (ll::hasErrors(found)) {
         if (errors)
             for (const Diagnostic& d : found)
-                if (d.severity == Severity::Error) *errors << prefix + QString::fromStdString(d.field + ": " + d.message);
+                if (d.severity == Severity::Error) *errors << prefix + QString::fromStdString(d.text());
         return false;
     }
     SceneJson parsed;
@@ -154,7 +154,9 @@ void SceneDocument::replace(const SceneJson& after, const QString& description) 
 QString SceneDocument::errorAt(const std::string& field) const {
     QStringList found;
     for (const Diagnostic& d : diagnostics_)
-        if (d.field == field) found << QString::fromStdString((d.severity == Severity::Error ? "error: " : "warning: ") + d.message);
+        if (d.field == field)
+            found << QString::fromStdString((d.severity == Severity::Error ? "error: " : "warning: ") + d.message +
+                                            (d.hint.empty() ? "" : "\nhint: " + d.hint));
     return found.join('\n');
 }
 

@@ -255,7 +255,7 @@ int main(int argc, char** argv) {
         return ll::bench::run(args);
     } catch (const ll::InputError& e) {
         for (const ll::Diagnostic& d : e.diagnostics())
-            if (d.severity == ll::Severity::Error) std::fprintf(stderr, "error: %s: %s\n", d.field.c_str(), d.message.c_str());
+            if (d.severity == ll::Severity::Error) std::fprintf(stderr, "%s\n", d.toString().c_str());
         return 2;
     } catch (const ll::cli::UsageError& e) {
         std::fprintf(stderr, "error: %s\n%s", e.what(), ll::bench::usage);

@@ -44,10 +44,10 @@ std::optional<Diagnostic> nonFiniteTerm(const ModelTerms& terms, const Eigen::Ve
         if (bad.empty()) continue;
         if (quantity.value.size() == 1 && quantity.vector) bad = formatValue(quantity.value(0, 0));
         return Diagnostic{Severity::Error, quantity.name,
-                          std::string(quantity.meaning) + " is not finite (" + bad + ") " + where + ", q = " +
-                              vectorText(q) + ", qd = " + vectorText(qd) +
-                              ": a number in the scene is too large for double precision here (about 1.8e308); "
-                              "check the exponents of the largest values"};
+                          std::string(quantity.meaning) + " is not finite (" + bad + ") " + where +
+                              ": a number in the scene is too large for double precision here",
+                          "at q = " + vectorText(q) + ", qd = " + vectorText(qd) +
+                              ", a value passed about 1.8e308; check the exponents of the largest values"};
     }
     return std::nullopt;
 }

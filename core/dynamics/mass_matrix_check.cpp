@@ -23,24 +23,38 @@ std::string armatureAdvice(int j) {
            "turns with the joint";
 }
 
-// The error for a B(q) that cannot be factored, saying which kind it is (core/dynamics/
-// mass_matrix_conditioning.hpp) and, for an ill-conditioned one, the likely cause.
-std::string singularMassMatrixMessage(const MassMatrixDefect& defect, const std::vector<Diagnostic>& unitSlips) {
+// The error for a B(q) that cannot be factored: one short line saying which kind it is
+// (core/dynamics/mass_matrix_conditioning.hpp), and a hint with the likely cause and the
+// fix. When the links from joint j on carry no mass and no inertia at all, that one
+// value is named: the link's mass.
+Diagnostic singularMassMatrixError(const RobotModel& model, const MassMatrixDefect& defect, const std::vector<Diagnostic>& unitSlips) {
     const int j = defect.joint;
     const std::string joint = std::to_string(j + 1);
-    if (defect.kind == MassMatrixDefect::Kind::MovesNothing)
-        return "joint " + joint +
-               " moves no mass or inertia that the joints before it do not already move, so the mass matrix B(q) "
-               "is singular; give link " + joint + " (or a link after it) mass off the joint axis or inertia about it, " +
-               armatureAdvice(j);
-    std::string message = "the mass matrix B(q) is too ill-conditioned to use (condition number " +
-                          fmt(defect.condition) + "): joint " + joint + " moves inertia of its own (b" + joint + joint +
-                          " = " + fmt(defect.diagonal) + "), but beside the largest diagonal entry (" +
-                          fmt(defect.largest) + ") double precision loses it; likely cause: ";
-    if (unitSlips.empty()) return message + "light distal links beside heavy ones: check their masses and inertias, " + armatureAdvice(j);
-    message += "a unit slip, " + unitSlips.front().field + ": " + unitSlips.front().message;
-    if (unitSlips.size() > 1) message += " (and " + std::to_string(unitSlips.size() - 1) + " more unit warnings)";
-    return message;
+    if (defect.kind == MassMatrixDefect::Kind::MovesNothing) {
+        bool nothingAfter = true;
+        for (int i = j; i < model.dof(); ++i)
+            nothingAfter = nothingAfter && model.joints[i].link.mass == 0.0 && model.joints[i].link.inertia.isZero();
+        const std::string hint = "B(q) has no inertia along joint " + joint + "; give link " + joint +
+                                 " (or a link after it) mass off the joint axis or inertia about it, " + armatureAdvice(j);
+        if (nothingAfter)
+            return {Severity::Error, jointField(j, "mass"),
+                    "joint " + joint + " moves no mass or inertia: link " + joint + " and the links after it have none, so the mass matrix B(q) is singular",
+                    hint};
+        return {Severity::Error, jointField(j, ""),
+                "joint " + joint + " moves no mass or inertia of its own, so the mass matrix B(q) is singular", hint};
+    }
+    const std::string message = "the mass matrix B(q) is too ill-conditioned to use (condition number " + fmt(defect.condition) +
+                                ") at joint " + joint;
+    std::string hint = "joint " + joint + " moves inertia of its own (b" + joint + joint + " = " + fmt(defect.diagonal) +
+                       "), but beside the largest diagonal entry (" + fmt(defect.largest) +
+                       ") double precision loses it; likely cause: ";
+    if (unitSlips.empty()) {
+        hint += "light distal links beside heavy ones: check their masses and inertias, " + armatureAdvice(j);
+        return {Severity::Error, jointField(j, ""), message, hint};
+    }
+    hint += "a unit slip, " + unitSlips.front().where() + ": " + unitSlips.front().message;
+    if (unitSlips.size() > 1) hint += " (and " + std::to_string(unitSlips.size() - 1) + " more unit warnings)";
+    return {Severity::Error, unitSlips.front().field, message, hint};
 }
 
 // B(q) must be positive definite wherever the robot may go. A structurally massless
@@ -70,7 +84,7 @@ std::vector<Diagnostic> checkMassMatrixRegular(const RobotModel& model, const Ei
     }
     for (int j = 0; j < model.dof(); ++j)
         if (singularCount[j] == trials)
-            out.push_back({Severity::Error, jointField(j, ""), singularMassMatrixMessage(defects[j], unitSlips)});
+            out.push_back(singularMassMatrixError(model, defects[j], unitSlips));
     return out;
 }
 

@@ -44,7 +44,7 @@ const char* const kDocument = "scene";
 std::string child(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
 
 std::string item(const std::string& path, std::size_t index0) {
-    return path + "[" + std::to_string(index0 + 1) + "]";
+    return path + "[" + std::to_string(index0) + "]";
 }
 
 std::string joined(const Keys& keys) {

@@ -27,7 +27,7 @@ template <class Entries>
 void requireFit(const char* function, const char* kind, const Entries& entries, Eigen::Index joints) {
     for (std::size_t k = 0; k < entries.size(); ++k)
         if (const int joint = entries[k].joint; joint < 0 || joint >= joints) [[unlikely]] {
-            const std::string what = std::string("effects.") + kind + "[" + std::to_string(k + 1) + "]";
+            const std::string what = std::string("effects.") + kind + "[" + std::to_string(k) + "]";
             throwJointIndex(function, what.c_str(), joint, joints);
         }
 }

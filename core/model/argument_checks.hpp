@@ -40,7 +40,7 @@ inline void requireJointIndex(const char* function, const char* what, int index,
 }
 
 // Every effect acts on one of `joints` joints (the effects of a scene whose robot lost
-// a joint), else "<function>: effects.springs[1] is joint 6 (numbered from 1), the
+// a joint), else "<function>: effects.springs[0] is joint 6 (numbered from 1), the
 // robot has 5 joints".
 void requireEffectsFit(const char* function, const Effects& effects, Eigen::Index joints);
 

@@ -8,9 +8,18 @@
 
 namespace ll {
 
-std::string Diagnostic::toString() const {
-    return std::string(severity == Severity::Error ? "error: " : "warning: ") + field + ": " + message;
+std::string Diagnostic::where() const {
+    static const std::string joints = "robot.joints[";
+    const std::size_t at = field.find(joints);
+    if (at == std::string::npos) return field;
+    const std::size_t start = at + joints.size(), end = field.find(']', start);
+    if (end == std::string::npos || end == start || field.find_first_not_of("0123456789", start) != end) return field;
+    return field + " (joint " + std::to_string(std::stol(field.substr(start, end - start)) + 1) + ")";
 }
+
+std::string Diagnostic::text() const { return where() + ": " + message + (hint.empty() ? "" : "\nhint: " + hint); }
+
+std::string Diagnostic::toString() const { return std::string(severity == Severity::Error ? "error: " : "warning: ") + text(); }
 
 bool hasErrors(const std::vector<Diagnostic>& diagnostics) {
     return std::any_of(diagnostics.begin(), diagnostics.end(),
@@ -22,7 +31,7 @@ static std::string joinErrors(const std::vector<Diagnostic>& diagnostics) {
     for (const Diagnostic& d : diagnostics) {
         if (d.severity != Severity::Error) continue;
         if (!text.empty()) text += "\n";
-        text += d.field + ": " + d.message;
+        text += d.text();
     }
     return text;
 }
@@ -32,6 +41,7 @@ static std::vector<Diagnostic> printable(std::vector<Diagnostic> diagnostics) {
     for (Diagnostic& d : diagnostics) {
         if (!isValidUtf8(d.field)) d.field = validUtf8(d.field);
         if (!isValidUtf8(d.message)) d.message = validUtf8(d.message);
+        if (!isValidUtf8(d.hint)) d.hint = validUtf8(d.hint);
     }
     return diagnostics;
 }
@@ -39,11 +49,11 @@ static std::vector<Diagnostic> printable(std::vector<Diagnostic> diagnostics) {
 InputError::InputError(std::vector<Diagnostic> diagnostics)
     : std::runtime_error(joinErrors(printable(diagnostics))), diagnostics_(printable(std::move(diagnostics))) {}
 
-InputError::InputError(std::string field, std::string message)
-    : InputError(std::vector<Diagnostic>{{Severity::Error, std::move(field), std::move(message)}}) {}
+InputError::InputError(std::string field, std::string message, std::string hint)
+    : InputError(std::vector<Diagnostic>{{Severity::Error, std::move(field), std::move(message), std::move(hint)}}) {}
 
 std::string jointField(int jointIndex0, const std::string& field) {
-    return "robot.joints[" + std::to_string(jointIndex0 + 1) + "]" + (field.empty() ? "" : "." + field);
+    return "robot.joints[" + std::to_string(jointIndex0) + "]" + (field.empty() ? "" : "." + field);
 }
 
 std::string formatValue(double value) {

@@ -10,10 +10,14 @@ enum class Severity { Warning, Error };
 
 struct Diagnostic {
     Severity severity = Severity::Error;
-    std::string field;    // e.g. "robot.joints[2].mass" (joints numbered from 1)
-    std::string message;  // says the value and what is wrong with it
+    std::string field;    // a path as JSON counts it: "robot.joints[0].mass" is the first joint's
+    std::string message;  // says the value and what is wrong with it: one short line
+    std::string hint = {};  // why, and what to do about it (printed on a following `hint:` line)
 
-    std::string toString() const;  // "error: robot.joints[2].mass: ..."
+    // The field with its joint in words, as the table names it: "robot.joints[0].mass (joint 1)".
+    std::string where() const;
+    std::string text() const;      // "robot.joints[0].mass (joint 1): ..." (and "\nhint: ...")
+    std::string toString() const;  // "error: " or "warning: ", then text()
 };
 
 bool hasErrors(const std::vector<Diagnostic>& diagnostics);
@@ -24,15 +28,15 @@ bool hasErrors(const std::vector<Diagnostic>& diagnostics);
 class InputError : public std::runtime_error {
 public:
     explicit InputError(std::vector<Diagnostic> diagnostics);
-    InputError(std::string field, std::string message);
+    InputError(std::string field, std::string message, std::string hint = {});
     const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
 
 private:
     std::vector<Diagnostic> diagnostics_;
 };
 
-// Field path of a joint's field, 1-based as in the textbook: jointField(1, "mass")
-// == "robot.joints[2].mass".
+// Field path of a joint's field, counted from 0 as JSON (and jq, and Python) count:
+// jointField(1, "mass") == "robot.joints[1].mass", the second joint ("joint 2" in words).
 std::string jointField(int jointIndex0, const std::string& field);
 
 // A value as diagnostics quote it: 6 significant digits ("0.4318", "1e+300").

@@ -35,8 +35,8 @@ std::string lengthSlip(double value, double limit) {
 
 std::vector<Diagnostic> unitSlipWarnings(const RobotModel& model) {
     std::vector<Diagnostic> out;
-    const auto warn = [&](std::string field, std::string message) {
-        out.push_back({Severity::Warning, std::move(field), std::move(message)});
+    const auto warn = [&](std::string field, std::string message, std::string hint) {
+        out.push_back({Severity::Warning, std::move(field), std::move(message), std::move(hint)});
     };
     double reach = 0.0;
     for (const Joint& joint : model.joints)
@@ -49,20 +49,20 @@ std::vector<Diagnostic> unitSlipWarnings(const RobotModel& model) {
         const Joint& joint = model.joints[j];
         for (const auto& [key, length] : {std::pair{"a", joint.dh.a}, std::pair{"d", joint.dh.d}})
             if (std::isfinite(length) && std::abs(length) > kLongestLength)
-                warn(jointField(j, key), fmt(length) + " m is longer than any arm (over " + fmt(kLongestLength) +
-                                             " m): " + lengthSlip(length, kLongestLength));
+                warn(jointField(j, key), fmt(length) + " m is longer than any arm (over " + fmt(kLongestLength) + " m)",
+                     lengthSlip(length, kLongestLength));
         const Eigen::Vector3d& com = joint.link.com;
         if (com.allFinite() && com.norm() > size) {
             Eigen::Index k = 0;
             com.cwiseAbs().maxCoeff(&k);
-            warn(jointField(j, "com[" + std::to_string(k + 1) + "]"),
-                 fmt(com[k]) + " m puts the centre of mass " + fmt(com.norm()) + " m from its frame, far outside " +
-                     "the robot (" + reachText + "): " + lengthSlip(com[k], size));
+            warn(jointField(j, "com[" + std::to_string(k) + "]"),
+                 fmt(com[k]) + " m puts the centre of mass " + fmt(com.norm()) + " m from its frame, far outside the robot",
+                 reachText + ": " + lengthSlip(com[k], size));
         }
         const double mass = joint.link.mass;
         if (std::isfinite(mass) && mass > kHeaviestLink)
-            warn(jointField(j, "mass"), fmt(mass) + " kg is heavier than any arm's link (over " + fmt(kHeaviestLink) +
-                                            " kg): typed in g? " + fmt(mass) + " g = " + fmt(mass * 1e-3) + " kg");
+            warn(jointField(j, "mass"), fmt(mass) + " kg is heavier than any arm's link (over " + fmt(kHeaviestLink) + " kg)",
+                 "typed in g? " + fmt(mass) + " g = " + fmt(mass * 1e-3) + " kg");
         const Eigen::Matrix3d& I = joint.link.inertia;
         if (!(mass > 0) || !I.allFinite()) continue;
         const double largest = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(I, Eigen::EigenvaluesOnly).eigenvalues()[2];
@@ -70,10 +70,10 @@ std::vector<Diagnostic> unitSlipWarnings(const RobotModel& model) {
         if (gyration > size) {
             const double grams = largest * 1e-9, kgmm = largest * 1e-6;
             warn(jointField(j, "inertia"),
-                 "radius of gyration sqrt(I/m) = " + fmt(gyration) + " m (largest principal moment " + fmt(largest) +
-                     " kg m², mass " + fmt(mass) + " kg) is larger than the whole robot (" + reachText +
-                     "): typed in g mm² or kg mm²? " + fmt(largest) + " g mm² = " + fmt(grams) + " kg m², " +
-                     fmt(largest) + " kg mm² = " + fmt(kgmm) + " kg m²");
+                 "radius of gyration sqrt(I/m) = " + fmt(gyration) + " m is larger than the whole robot",
+                 "largest principal moment " + fmt(largest) + " kg m², mass " + fmt(mass) + " kg; " + reachText +
+                     ": typed in g mm² or kg mm²? " + fmt(largest) + " g mm² = " + fmt(grams) + " kg m², " + fmt(largest) +
+                     " kg mm² = " + fmt(kgmm) + " kg m²");
         }
     }
     return out;

@@ -13,17 +13,43 @@ namespace {
 
 std::string fmt(double v) { return formatValue(v); }
 
-void error(std::vector<Diagnostic>& out, std::string field, std::string message) {
-    out.push_back({Severity::Error, std::move(field), std::move(message)});
+void error(std::vector<Diagnostic>& out, std::string field, std::string message, std::string hint = {}) {
+    out.push_back({Severity::Error, std::move(field), std::move(message), std::move(hint)});
 }
 
-void warning(std::vector<Diagnostic>& out, std::string field, std::string message) {
-    out.push_back({Severity::Warning, std::move(field), std::move(message)});
+void warning(std::vector<Diagnostic>& out, std::string field, std::string message, std::string hint = {}) {
+    out.push_back({Severity::Warning, std::move(field), std::move(message), std::move(hint)});
 }
 
 // Finite and not subnormal (core/model/usable_number.hpp).
 void requireFinite(std::vector<Diagnostic>& out, const std::string& field, double value) {
     if (auto why = unusableNumber(value)) error(out, field, *why);
+}
+
+// A magnitude outside any physical range for its unit is named as such, before a later
+// check (a singular B, a unit slip) could blame something else for it. Zero is allowed
+// (a massless link, a length not used); a value beyond `largest` or, not zero, below
+// `smallest` is an error.
+struct Range {
+    const char* quantity;
+    const char* unit;
+    double smallest, largest;
+};
+constexpr Range kLength{"length", "m", 1e-9, 1e4};
+constexpr Range kMass{"mass", "kg", 1e-9, 1e9};
+constexpr Range kInertia{"inertia", "kg m²", 1e-15, 1e9};
+constexpr Range kGravity{"gravity", "m/s²", 1e-6, 1e3};
+
+// Whether `value` is in range; if not, the error says so (finite values only: the
+// caller's requireFinite names the rest).
+bool inRange(std::vector<Diagnostic>& out, const std::string& field, double value, const Range& r) {
+    const double a = std::abs(value);
+    if (!std::isfinite(value) || a == 0.0 || (a >= r.smallest && a <= r.largest)) return true;
+    out.push_back({Severity::Error, field,
+                   std::string(a > r.largest ? "absurdly large " : "absurdly small ") + r.quantity + " " + fmt(value) + " " + r.unit,
+                   std::string("no physical ") + r.quantity + " here is " + (a > r.largest ? "above " + fmt(r.largest) : "below " + fmt(r.smallest)) +
+                       " " + r.unit + " (was it typed in the wrong unit, or with a wrong exponent?)"});
+    return false;
 }
 
 void validateInertia(std::vector<Diagnostic>& out, int j, const Eigen::Matrix3d& I) {
@@ -37,8 +63,8 @@ void validateInertia(std::vector<Diagnostic>& out, int j, const Eigen::Matrix3d&
     if (moments.minCoeff() < -1e-12 * scale) {
         error(out, field,
               "inertia tensor is not positive semi-definite: principal moments " + fmt(moments[0]) + ", " +
-                  fmt(moments[1]) + ", " + fmt(moments[2]) +
-                  " (off-diagonal entries are the tensor's own, i.e. minus the products of inertia)");
+                  fmt(moments[1]) + ", " + fmt(moments[2]),
+              "off-diagonal entries are the tensor's own, i.e. minus the products of inertia");
         return;
     }
     const double tol = 1e-9 * scale;
@@ -46,8 +72,8 @@ void validateInertia(std::vector<Diagnostic>& out, int j, const Eigen::Matrix3d&
     if (a + b < c - tol)
         warning(out, field,
                 "principal moments " + fmt(a) + ", " + fmt(b) + ", " + fmt(c) + " violate the triangle inequality (" +
-                    fmt(a) + " + " + fmt(b) + " < " + fmt(c) +
-                    "): no physical body has this inertia; the model is simulated as given");
+                    fmt(a) + " + " + fmt(b) + " < " + fmt(c) + ")",
+                "no physical body has this inertia; the model is simulated as given");
 }
 
 // A motor's armature adds Jm G² to b_jj: it must be a finite number >= 0.
@@ -79,14 +105,14 @@ void validateLagrangian(std::vector<Diagnostic>& out, const Scene& scene) {
                   std::to_string(l.coordinates.size()) + ") or none are needed");
     for (size_t b = 0; b < l.bodies.size(); ++b) {
         const VisualBody& body = l.bodies[b];
-        const std::string f = "lagrangian.bodies[" + std::to_string(b + 1) + "]";
+        const std::string f = "lagrangian.bodies[" + std::to_string(b) + "]";
         if (static_cast<int>(body.size.size()) != sizeCount(body.shape))
             error(out, f + ".size",
                   "a " + std::string(toString(body.shape)) + " takes " + std::to_string(sizeCount(body.shape)) +
                       " numbers, got " + std::to_string(body.size.size()));
         for (size_t k = 0; k < body.size.size(); ++k)
             if (!(std::isfinite(body.size[k]) && body.size[k] > 0))
-                error(out, f + ".size[" + std::to_string(k + 1) + "]", "must be a finite number > 0, got " + fmt(body.size[k]));
+                error(out, f + ".size[" + std::to_string(k) + "]", "must be a finite number > 0, got " + fmt(body.size[k]));
         if (!body.axis.allFinite() || body.axis.norm() == 0.0)
             error(out, f + ".axis", "must be a finite nonzero direction");
     }
@@ -99,6 +125,7 @@ std::vector<Diagnostic> validateRobotFields(const RobotModel& model) {
     if (model.joints.empty()) error(out, "robot.joints", "a robot needs at least one joint");
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 4; ++c) requireFinite(out, "robot.base", model.base.matrix()(r, c));
+    for (int r = 0; r < 3; ++r) inRange(out, "robot.base.position[" + std::to_string(r) + "]", model.base.translation()[r], kLength);
     for (int j = 0; j < model.dof(); ++j) {
         const Joint& joint = model.joints[j];
         requireFinite(out, jointField(j, "a"), joint.dh.a);
@@ -107,12 +134,19 @@ std::vector<Diagnostic> validateRobotFields(const RobotModel& model) {
         requireFinite(out, jointField(j, "theta"), joint.dh.theta);
         requireFinite(out, jointField(j, "mass"), joint.link.mass);
         for (int k = 0; k < 3; ++k)
-            requireFinite(out, jointField(j, "com[" + std::to_string(k + 1) + "]"), joint.link.com[k]);
+            requireFinite(out, jointField(j, "com[" + std::to_string(k) + "]"), joint.link.com[k]);
+        bool sane = inRange(out, jointField(j, "a"), joint.dh.a, kLength);
+        sane = inRange(out, jointField(j, "d"), joint.dh.d, kLength) && sane;
+        sane = inRange(out, jointField(j, "mass"), joint.link.mass, kMass) && sane;
+        for (int k = 0; k < 3; ++k) sane = inRange(out, jointField(j, "com[" + std::to_string(k) + "]"), joint.link.com[k], kLength) && sane;
+        static const char* const diagonal[3] = {"xx", "yy", "zz"};
+        for (int k = 0; k < 3; ++k)
+            sane = inRange(out, jointField(j, std::string("inertia.") + diagonal[k]), joint.link.inertia(k, k), kInertia) && sane;
         const bool inertiaFinite = joint.link.inertia.allFinite();
         if (!inertiaFinite) error(out, jointField(j, "inertia"), "inertia tensor has a non-finite entry");
         if (std::isfinite(joint.link.mass) && joint.link.mass < 0)
             error(out, jointField(j, "mass"), "mass is negative (" + fmt(joint.link.mass) + " kg); it must be >= 0");
-        if (inertiaFinite) validateInertia(out, j, joint.link.inertia);
+        if (inertiaFinite && sane) validateInertia(out, j, joint.link.inertia);
         validateMotor(out, j, joint.motor);
     }
     const std::vector<Diagnostic> unitSlips = unitSlipWarnings(model);
@@ -149,21 +183,23 @@ std::vector<Diagnostic> validateSceneFields(const Scene& scene) {
         error(out, "effects.springs",
               "a Lagrangian system has no spring effect: write it in the potential (lagrangian.potential, "
               "e.g. K*(x - rest)^2/2)");
-    if (e.gravity)
-        for (int k = 0; k < 3; ++k) requireFinite(out, "effects.gravity[" + std::to_string(k + 1) + "]", (*e.gravity)[k]);
+    if (e.gravity) {
+        for (int k = 0; k < 3; ++k) requireFinite(out, "effects.gravity[" + std::to_string(k) + "]", (*e.gravity)[k]);
+        inRange(out, "effects.gravity", e.gravity->norm(), kGravity);
+    }
     for (size_t s = 0; s < e.springs.size(); ++s) {
-        const std::string f = "effects.springs[" + std::to_string(s + 1) + "]";
+        const std::string f = "effects.springs[" + std::to_string(s) + "]";
         checkJoint(f, e.springs[s].joint);
         checkNonNegative(f + ".stiffness", e.springs[s].stiffness);
         requireFinite(out, f + ".rest", e.springs[s].rest);
     }
     for (size_t s = 0; s < e.viscous.size(); ++s) {
-        const std::string f = "effects.viscous[" + std::to_string(s + 1) + "]";
+        const std::string f = "effects.viscous[" + std::to_string(s) + "]";
         checkJoint(f, e.viscous[s].joint);
         checkNonNegative(f + ".coefficient", e.viscous[s].coefficient);
     }
     for (size_t s = 0; s < e.coulomb.size(); ++s) {
-        const std::string f = "effects.coulomb[" + std::to_string(s + 1) + "]";
+        const std::string f = "effects.coulomb[" + std::to_string(s) + "]";
         checkJoint(f, e.coulomb[s].joint);
         checkNonNegative(f + ".force", e.coulomb[s].force);
         requireFinite(out, f + ".smoothing", e.coulomb[s].smoothing);
@@ -173,7 +209,7 @@ std::vector<Diagnostic> validateSceneFields(const Scene& scene) {
                   "the stick model is implemented for robots only; a Lagrangian system uses \"tanh\" (the default)");
     }
     for (size_t s = 0; s < e.torques.size(); ++s) {
-        const std::string f = "effects.torques[" + std::to_string(s + 1) + "]";
+        const std::string f = "effects.torques[" + std::to_string(s) + "]";
         const JointTorque& t = e.torques[s];
         checkJoint(f, t.joint);
         for (double v : {t.value, t.at, t.amplitude, t.frequency, t.phase, t.slope, t.start}) requireFinite(out, f, v);
@@ -184,7 +220,7 @@ std::vector<Diagnostic> validateSceneFields(const Scene& scene) {
                                   (scene.lagrangian ? "system" : "robot") + " has " + std::to_string(n) + " " + items);
             return;
         }
-        for (int i = 0; i < n; ++i) requireFinite(out, field + "[" + std::to_string(i + 1) + "]", v[i]);
+        for (int i = 0; i < n; ++i) requireFinite(out, field + "[" + std::to_string(i) + "]", v[i]);
     };
     checkState("initial.q", scene.initial.q);
     checkState("initial.qd", scene.initial.qd);

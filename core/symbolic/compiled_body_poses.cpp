@@ -21,8 +21,8 @@ BodyPoses compileBodyPoses(const Scene& scene) {
             outputs.push_back(parseLagrangianField(table, s, field, text, LagrangianField::Pose).subs(values));
         };
         for (int k = 0; k < 3; ++k)
-            add(lagrangianBodyField(b, "position[" + std::to_string(k + 1) + "]"), body.position[k]);
-        for (int k = 0; k < 3; ++k) add(lagrangianBodyField(b, "end[" + std::to_string(k + 1) + "]"), body.end[k]);
+            add(lagrangianBodyField(b, "position[" + std::to_string(k) + "]"), body.position[k]);
+        for (int k = 0; k < 3; ++k) add(lagrangianBodyField(b, "end[" + std::to_string(k) + "]"), body.end[k]);
         add(lagrangianBodyField(b, "angle"), body.angle);
         shapes.push_back(body.shape);
         axes.push_back(body.axis.norm() > 0 ? body.axis.normalized() : Eigen::Vector3d::UnitZ());

@@ -501,11 +501,12 @@ GiNaC::ex ParameterTable::parse(const std::string& field, const PreparedExpressi
 double ParameterTable::evaluate(const std::string& field, const std::string& text, AngleUnits units) const {
     const PreparedExpression source = prepare(field, text);
     if (units == AngleUnits::Refused && source.unitPosition != 0)
-        throw InputError(field, "'" + source.unit + (source.unit == "deg" ? "'" : "' (U+00B0)") + " at position " +
-                                    std::to_string(source.unitPosition) + " in " +
-                                    source.quoted() +
-                                    ": degrees are for angle fields (alpha, theta, the base's rpy, a revolute joint's "
-                                    "initial q and spring rest, a torque's phase); write this value in SI units");
+        throw InputError(field,
+                         "'" + source.unit + (source.unit == "deg" ? "'" : "' (U+00B0)") + " at position " +
+                             std::to_string(source.unitPosition) + " in " + source.quoted() +
+                             ": degrees are for angle fields; write this value in SI units",
+                         "angle fields are alpha, theta, the base's rpy, a revolute joint's initial q and spring rest, "
+                         "a torque's phase");
     return toNumber(field, source, parse(field, source, {}, false));
 }
 
@@ -513,8 +514,7 @@ namespace {
 
 std::string tooSmall(const PreparedExpression& source) {
     return "a value in " + source.quoted() +
-           " is too close to zero for double precision (non-zero but below 2.2e-308 in magnitude, underflow): "
-           "write 0 if you mean zero, else check the exponent";
+           " is too close to zero for double precision (underflow, below 2.2e-308): write 0 for zero, else check the exponent";
 }
 
 }  // namespace

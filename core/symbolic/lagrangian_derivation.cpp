@@ -209,10 +209,12 @@ private:
             }
         const ex rest = simplified(Ekin - quadratic).normal();
         if (rest.is_zero()) return std::nullopt;
+        std::string left = str(rest);
+        if (left.size() > 60) left = left.substr(0, 57) + "...";
         return Diagnostic{Severity::Error, "lagrangian.kinetic",
-                          "E_kin = " + spec_.kinetic + " is not a homogeneous quadratic form 1/2 qd^T B(q) qd in the "
-                          "velocities: " + str(rest) + " is left over (terms free of the velocities or linear in them; "
-                          "E_kin must vanish at rest and grow as the square of the speed)"};
+                          "E_kin is not a quadratic form 1/2 qd^T B(q) qd in the velocities: " + left + " is left over",
+                          "E_kin = " + spec_.kinetic + "; terms free of the velocities or linear in them are left over: "
+                          "E_kin must vanish at rest and grow as the square of the speed"};
     }
 
     void addStep(int number, std::string title, std::string text, std::string latex, std::vector<DerivationItem> items) {
@@ -302,8 +304,8 @@ private:
         values += ")";
         const bool negative = lambda[0] < -1e-12 * scale;
         throw InputError("lagrangian.coordinates",
-                         "the mass matrix B = d^2 E_kin/dqd^2 is not positive definite at the initial state " + where +
-                             " (eigenvalues " + eigenvalues + "): " +
+                         "the mass matrix B = d^2 E_kin/dqd^2 is not positive definite at the initial state " + where,
+                         "eigenvalues " + eigenvalues + ": " +
                              (negative ? "the velocities " + velocities + " = " + values +
                                              " * s give negative kinetic energy (a negative mass or inertia?)"
                                        : "the coordinates are not independent or not minimal: the velocities " +

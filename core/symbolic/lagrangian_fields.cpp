@@ -71,7 +71,7 @@ std::vector<Diagnostic> checkCoordinateNames(const std::vector<std::string>& coo
     std::vector<std::string> taken = parameters.names();
     for (std::size_t i = 0; i < coordinates.size(); ++i) {
         if (auto why = whyNotACoordinateName(coordinates[i], taken))
-            out.push_back({Severity::Error, "lagrangian.coordinates[" + std::to_string(i + 1) + "]", *why});
+            out.push_back({Severity::Error, "lagrangian.coordinates[" + std::to_string(i) + "]", *why});
         taken.push_back(coordinates[i]);
         taken.push_back(coordinates[i] + "_dot");
     }
@@ -104,10 +104,10 @@ GiNaC::ex parseLagrangianField(const ParameterTable& parameters, const Lagrangia
     return e;
 }
 
-std::string lagrangianForceField(int coordinate0) { return "lagrangian.forces[" + std::to_string(coordinate0 + 1) + "]"; }
+std::string lagrangianForceField(int coordinate0) { return "lagrangian.forces[" + std::to_string(coordinate0) + "]"; }
 
 std::string lagrangianBodyField(int body0, const std::string& key) {
-    return "lagrangian.bodies[" + std::to_string(body0 + 1) + "]" + (key.empty() ? "" : "." + key);
+    return "lagrangian.bodies[" + std::to_string(body0) + "]" + (key.empty() ? "" : "." + key);
 }
 
 }  // namespace ll

@@ -120,7 +120,7 @@ SymbolicRobot symbolicRobot(const Scene& scene, ParameterMode mode, const GiNaC:
         sj.theta = reader.dhAngle(field("theta"), joint.dh.theta, "theta" + k);
         sj.mass = reader.value(field("mass"), joint.link.mass, "m" + k);
         for (int c = 0; c < 3; ++c)
-            sj.com(c, 0) = reader.value(field("com[" + std::to_string(c + 1) + "]"), joint.link.com[c],
+            sj.com(c, 0) = reader.value(field("com[" + std::to_string(c) + "]"), joint.link.com[c],
                                         std::string(1, axes[c]) + "c" + k);
         for (int r = 0; r < 3; ++r)
             for (int c = r; c < 3; ++c) {
@@ -145,7 +145,7 @@ SymbolicRobot symbolicRobot(const Scene& scene, ParameterMode mode, const GiNaC:
         const Eigen::Vector3d& g0 = *e.gravity;
         const int nonzero = (g0.array() != 0.0).count();
         for (int c = 0; c < 3; ++c) {
-            const std::string f = "effects.gravity[" + std::to_string(c + 1) + "]";
+            const std::string f = "effects.gravity[" + std::to_string(c) + "]";
             if (mode == ParameterMode::Textbook && nonzero == 1 && g0[c] != 0.0) {
                 const GiNaC::symbol g = reader.textbookSymbol("g", std::abs(g0[c]));
                 robot.gravity(c, 0) = g0[c] > 0 ? GiNaC::ex(g) : -g;
@@ -155,26 +155,26 @@ SymbolicRobot symbolicRobot(const Scene& scene, ParameterMode mode, const GiNaC:
         }
     }
     for (size_t s = 0; s < e.springs.size(); ++s) {
-        const std::string f = "effects.springs[" + std::to_string(s + 1) + "]";
+        const std::string f = "effects.springs[" + std::to_string(s) + "]";
         const std::string k = std::to_string(e.springs[s].joint + 1);
         robot.springs.push_back({e.springs[s].joint, reader.value(f + ".stiffness", e.springs[s].stiffness, "K" + k),
                                  reader.angle(f + ".rest", e.springs[s].rest)});
     }
     for (size_t s = 0; s < e.viscous.size(); ++s) {
-        const std::string f = "effects.viscous[" + std::to_string(s + 1) + "]";
+        const std::string f = "effects.viscous[" + std::to_string(s) + "]";
         robot.viscous.push_back({e.viscous[s].joint,
                                  reader.value(f + ".coefficient", e.viscous[s].coefficient, "b" + std::to_string(e.viscous[s].joint + 1)),
                                  0});
     }
     for (size_t s = 0; s < e.coulomb.size(); ++s) {
-        const std::string f = "effects.coulomb[" + std::to_string(s + 1) + "]";
+        const std::string f = "effects.coulomb[" + std::to_string(s) + "]";
         const std::string k = std::to_string(e.coulomb[s].joint + 1);
         robot.coulomb.push_back({e.coulomb[s].joint, reader.value(f + ".force", e.coulomb[s].force, "Fc" + k),
                                  reader.value(f + ".smoothing", e.coulomb[s].smoothing, "vs" + k)});
     }
     for (size_t s = 0; s < e.torques.size(); ++s) {
         const JointTorque& torque = e.torques[s];
-        const std::string f = "effects.torques[" + std::to_string(s + 1) + "]";
+        const std::string f = "effects.torques[" + std::to_string(s) + "]";
         const auto number = [&](const std::string& key, double v) { return reader.angle(f + "." + key, v); };
         GiNaC::ex tau;
         switch (torque.kind) {

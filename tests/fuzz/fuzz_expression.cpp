@@ -31,7 +31,7 @@ int ll::fuzz::expression(const std::uint8_t* data, std::size_t size) {
     const auto lock = ll::symbolic::lockGinac();
     for (const ll::AngleUnits units : {ll::AngleUnits::Refused, ll::AngleUnits::Allowed}) {
         try {
-            const double value = table().evaluate("robot.joints[1].a", text, units);
+            const double value = table().evaluate("robot.joints[0].a", text, units);
             ll::fuzz::require(std::isfinite(value) && std::fpclassify(value) != FP_SUBNORMAL, "an unusable value");
         } catch (const ll::InputError& e) {
             ll::fuzz::checkRefusal(e);
