@@ -377,15 +377,17 @@ private slots:
             w->jointModel().setData(w->jointModel().index(0, JointTableModel::A), "1.2", Qt::EditRole);
             QVERIFY(checked(*w));
             w->writeRecovery();  // what the 5 s autosave timer does
-            QVERIFY(MainWindow::hasRecovery());
+            QVERIFY(QFile::exists(w->recoveryCopyFile()));
             // The crash: the window goes away without closing (no closeEvent, no save).
             delete w;
         }
-        QVERIFY(MainWindow::hasRecovery());
         QCOMPARE(ll::loadScene(path.toStdString()).scene.robot.joints[0].dh.a, 1.0);  // never saved
         MainWindow next;
         next.setAskBeforeClosing(false);
-        QVERIFY(next.restoreRecovery());
+        QVERIFY(next.openFile(path, nullptr, true));
+        const std::vector<ll::ui::RecoveryCopy> left = next.recoveriesLeft();
+        QCOMPARE(int(left.size()), 1);
+        QVERIFY(next.restoreRecovery(left[0]));
         QVERIFY(checked(next));
         QCOMPARE(next.document().validScene().robot.joints[0].dh.a, 1.2);
         QCOMPARE(next.document().path(), path);
@@ -398,7 +400,7 @@ private slots:
         QVERIFY(checked(next));
         QVERIFY(next.saveTo(path));
         QCOMPARE(ll::loadScene(path.toStdString()).scene.robot.joints[0].dh.a, 1.2);
-        QVERIFY(!MainWindow::hasRecovery());  // a save discards the recovery copy
+        QVERIFY(next.recoveryCopyFile().isEmpty() && next.recoveriesLeft().empty());  // a save discards the recovery copy
     }
 
     // A scene that fails to load shows its error lines and loses nothing open.

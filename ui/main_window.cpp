@@ -29,6 +29,8 @@
 #include <QPlainTextEdit>
 #include <QProgressDialog>
 #include <QPointer>
+#include <QLocale>
+#include <QProcess>
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QScreen>
@@ -923,6 +925,8 @@ bool MainWindow::openFile(const QString& path, QStringList* errors, bool quiet) 
         return false;
     }
     if (!path.startsWith(":/")) addRecent(QFileInfo(path).absoluteFilePath());
+    discardRecovery();  // the copy of the scene open before, if it was not saved: asked in maybeSave
+    originalHash_ = CrashRecovery::hashOfFile(path);
     playback_->setTime(0);
     updateTitle();
     return true;
@@ -937,6 +941,7 @@ bool MainWindow::saveTo(const QString& path, QString* error) {
     }
     addRecent(QFileInfo(path).absoluteFilePath());
     discardRecovery();
+    originalHash_ = CrashRecovery::hashOfFile(path);
     updateTitle();
     return true;
 }
@@ -1026,58 +1031,97 @@ void MainWindow::rebuildRecentMenu() {
 
 // ---------------------------------------------------------------- recovery
 
-QString MainWindow::recoveryDirectory() {
-    const QByteArray env = qgetenv("LAGRANGELAB_RECOVERY_DIR");
-    if (!env.isEmpty()) return QString::fromLocal8Bit(env);
-    return QStandardPaths::writableLocation(QStandardPaths::GenericDataLocation) + "/lagrangelab";
-}
-
-QString MainWindow::recoveryPath() { return recoveryDirectory() + "/recovery.json"; }
-
-bool MainWindow::hasRecovery() { return QFile::exists(recoveryPath()); }
-
 void MainWindow::writeRecovery() {
-    QDir().mkpath(recoveryDirectory());
-    // The recovery copy names the file it belongs to, so a restore can keep saving there.
-    SceneJson wrapper = {{"recovery_of", doc_.path().toStdString()}, {"scene", doc_.json()}};
+    const QString original = doc_.path().startsWith(":/") ? QString() : doc_.path();
     try {
-        saveFileAtomically(recoveryPath().toStdString(), wrapper.dump(2), Backup::None);
+        recovery_.write(original, originalHash_, doc_.json());
     } catch (const std::exception& e) {
         statusBar()->showMessage(tr("Autosave failed: %1").arg(QString::fromUtf8(e.what())), 8000);
     }
 }
 
-void MainWindow::discardRecovery() { QFile::remove(recoveryPath()); }
+void MainWindow::discardRecovery() { recovery_.discard(); }
 
-bool MainWindow::restoreRecovery() {
-    QFile file(recoveryPath());
-    if (!file.open(QIODevice::ReadOnly)) return false;
-    SceneJson wrapper;
-    try {
-        wrapper = SceneJson::parse(file.readAll().toStdString());
-    } catch (const std::exception&) {
-        return false;
+std::vector<RecoveryCopy> MainWindow::recoveriesLeft(QStringList* damaged) const { return recovery_.leftBehind(damaged); }
+
+bool MainWindow::isOwnScene(const RecoveryCopy& copy) const {
+    return !copy.original.isEmpty() && !doc_.path().isEmpty() && QFileInfo(copy.original) == QFileInfo(doc_.path());
+}
+
+QString MainWindow::recoveryQuestion(const RecoveryCopy& copy) const {
+    const QString name = copy.original.isEmpty() ? tr("a new scene that was never saved") : copy.original;
+    QString text = tr("LagrangeLab did not close normally while %1 had unsaved edits (autosaved %2).")
+                       .arg(name, QLocale().toString(copy.written.toLocalTime(), QLocale::ShortFormat));
+    SceneJson before = SceneJson::object();
+    if (!copy.original.isEmpty()) {
+        if (!QFileInfo::exists(copy.original)) {
+            text += "\n\n" + tr("%1 no longer exists: the recovered scene is all that is left of it.").arg(copy.original);
+        } else {
+            if (CrashRecovery::originalChanged(copy))
+                text += "\n\n" + tr("Warning: %1 has changed on disk since these edits were made. Restoring puts the "
+                                     "recovered scene on top of the file as it is now; undo returns to it.")
+                                      .arg(copy.original);
+            QFile f(copy.original);
+            if (f.open(QIODevice::ReadOnly)) try {
+                    before = SceneJson::parse(f.readAll().toStdString());
+                } catch (const std::exception&) {
+                }
+        }
     }
-    if (!wrapper.contains("scene")) return false;
-    const QString original = QString::fromStdString(wrapper.value("recovery_of", std::string()));
-    // The original file (or an empty document) first, then the recovered JSON as an
-    // unsaved, undoable edit on top: saving writes it back to the original.
-    QStringList errors;
-    if (original.isEmpty() || !doc_.loadFile(original, &errors)) doc_.setPath(original);
-    doc_.replace(wrapper["scene"], tr("Restore unsaved edits"));
+    const QStringList changes = CrashRecovery::changes(before, copy.scene);
+    if (!changes.isEmpty()) text += "\n\n" + tr("What the edits change:") + "\n  " + changes.join("\n  ");
+    return text;
+}
+
+bool MainWindow::restoreRecovery(const RecoveryCopy& copy) {
+    if (!isOwnScene(copy)) return false;
+    // The file as it is, then the recovered JSON as an unsaved, undoable edit on top:
+    // saving writes it back to the file.
+    doc_.replace(copy.scene, tr("Restore unsaved edits"));
     updateTitle();
+    writeRecovery();  // this window's own copy first, then the crashed one goes
+    CrashRecovery::remove(copy);
     return true;
 }
 
 void MainWindow::offerRecovery() {
-    if (!hasRecovery()) return;
-    const auto answer = QMessageBox::question(this, tr("Restore unsaved work?"),
-                                              tr("LagrangeLab did not close normally. Restore the edits that were not saved?"),
-                                              QMessageBox::Yes | QMessageBox::No);
-    if (answer == QMessageBox::Yes)
-        restoreRecovery();
-    else
-        discardRecovery();
+    QStringList damaged;
+    const std::vector<RecoveryCopy> copies = recoveriesLeft(&damaged);
+    for (const QString& line : damaged) statusBar()->showMessage(line, 15000);
+    for (const RecoveryCopy& copy : copies) {
+        QMessageBox box(QMessageBox::Question, tr("Restore unsaved work?"), recoveryQuestion(copy), QMessageBox::NoButton, this);
+        if (isOwnScene(copy)) {
+            QPushButton* restore = box.addButton(tr("Restore the edits"), QMessageBox::AcceptRole);
+            QPushButton* discard = box.addButton(tr("Discard them"), QMessageBox::DestructiveRole);
+            box.addButton(tr("Keep for later"), QMessageBox::RejectRole);
+            box.exec();
+            if (box.clickedButton() == restore) restoreRecovery(copy);
+            else if (box.clickedButton() == discard) CrashRecovery::remove(copy);
+            continue;
+        }
+        // Another scene's edits: never in place of the scene asked for.
+        QPushButton* open = box.addButton(tr("Open them in a new window"), QMessageBox::AcceptRole);
+        QPushButton* discard = box.addButton(tr("Discard them"), QMessageBox::DestructiveRole);
+        box.addButton(tr("Keep for later"), QMessageBox::RejectRole);
+        box.exec();
+        if (box.clickedButton() == discard) {
+            CrashRecovery::remove(copy);
+        } else if (box.clickedButton() == open) {
+            QString scene = copy.original;
+            if (scene.isEmpty() || !QFileInfo::exists(scene)) {  // written out first, so nothing is lost
+                scene = QFileInfo(copy.file).absolutePath() + "/recovered-" +
+                        copy.written.toString("yyyyMMdd-HHmmss") + ".json";
+                try {
+                    saveFileAtomically(scene.toStdString(), copy.scene.dump(2), Backup::None);
+                } catch (const std::exception& e) {
+                    QMessageBox::critical(this, tr("Restore unsaved work"), QString::fromUtf8(e.what()));
+                    continue;
+                }
+                CrashRecovery::remove(copy);
+            }
+            QProcess::startDetached(QCoreApplication::applicationFilePath(), {scene});
+        }
+    }
 }
 
 // ---------------------------------------------------------------- exports

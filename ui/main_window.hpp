@@ -20,6 +20,7 @@
 #include "ui/live_derivation.hpp"
 #include "ui/edit_frame.hpp"
 #include "ui/live_simulation.hpp"
+#include "ui/crash_recovery.hpp"
 #include "ui/scene_document.hpp"
 
 class QAction;
@@ -60,15 +61,23 @@ public:
     bool openFile(const QString& path, QStringList* errors = nullptr, bool quiet = false);
     bool saveTo(const QString& path, QString* error = nullptr);
 
-    // Autosave: where the recovery copy is written (default: the app's data folder, or
-    // $LAGRANGELAB_RECOVERY_DIR); whether one is there; restore it as unsaved edits.
-    static QString recoveryDirectory();
-    static QString recoveryPath();
-    static bool hasRecovery();
-    bool restoreRecovery();
+    // Autosave (ui/crash_recovery.hpp): this window's recovery copy, written every 5 s
+    // while there are unsaved edits and removed on save or discard.
     void writeRecovery();
     void discardRecovery();
-    // Asks whether to restore a recovery copy left by a crash (when there is one).
+    QString recoveryCopyFile() const { return recovery_.ownFile(); }
+    // Copies left by windows that crashed (named in *damaged: those set aside as cut short).
+    std::vector<RecoveryCopy> recoveriesLeft(QStringList* damaged = nullptr) const;
+    // Whether `copy` holds edits of the scene this window has open.
+    bool isOwnScene(const RecoveryCopy& copy) const;
+    // The question asked about a copy: the file named, when it was saved, a warning first
+    // when the file changed on disk since, and what the edits change.
+    QString recoveryQuestion(const RecoveryCopy& copy) const;
+    // Restores a copy of this window's scene as an undoable, unsaved edit on top of the
+    // file as it is; the copy is replaced by this window's own.
+    bool restoreRecovery(const RecoveryCopy& copy);
+    // Asks about every copy left by a crash: this scene's as a restore, others' apart
+    // (open in a new window, discard, or keep for later): never in place of this scene.
     void offerRecovery();
 
     // Screenshot of the whole window, GL view included.
@@ -222,6 +231,8 @@ private:
     QTableView* parameterView_ = nullptr;
     QList<QAction*> presentationKeys_;  // space, arrows, F, +, −: live only when presenting
     QTimer autosave_;
+    CrashRecovery recovery_{CrashRecovery::defaultDirectory()};
+    QString originalHash_;  // of the scene file's bytes as opened or last saved
     EditFrame* editFrame_ = nullptr;  // one repaint per edit: the cell and its result together
     bool askBeforeClosing_ = true;
     bool presenting_ = false;
