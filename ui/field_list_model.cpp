@@ -71,6 +71,12 @@ Qt::ItemFlags FieldListModel::flags(const QModelIndex& index) const {
 
 namespace {
 
+// The array at `pointer`, or an empty one when there is none or something else is there.
+SceneJson arrayAt(const SceneJson& json, const std::string& pointer) {
+    const SceneJson::json_pointer p(pointer);
+    return json.contains(p) && json.at(p).is_array() ? json.at(p) : SceneJson::array();
+}
+
 bool isRevolute(const SceneJson& json, std::size_t i) {
     const SceneJson::json_pointer p("/robot/joints/" + std::to_string(i) + "/type");
     return !json.contains(p) || json.at(p) != "prismatic";
@@ -89,11 +95,13 @@ std::vector<FieldRow> parameterRows(const SceneJson& json) {
 std::vector<FieldRow> initialStateRows(const SceneJson& json) {
     std::vector<FieldRow> rows;
     if (!json.is_object()) return rows;
+    // The document may hold anything the user typed (a number for a coordinate's name, a
+    // string for the joints): rows follow what is there, never throw.
     const bool lagrangian = json.contains("lagrangian");
-    const std::size_t n = lagrangian ? json["lagrangian"].value("coordinates", SceneJson::array()).size()
-                                     : json.value("robot", SceneJson::object()).value("joints", SceneJson::array()).size();
+    const SceneJson list = lagrangian ? arrayAt(json, "/lagrangian/coordinates") : arrayAt(json, "/robot/joints");
+    const std::size_t n = list.size();
     auto name = [&](std::size_t i) {
-        if (lagrangian) return QString::fromStdString(json["lagrangian"]["coordinates"][i].get<std::string>());
+        if (lagrangian) return SceneDocument::display(list[i]);
         return QString("q%1").arg(i + 1);
     };
     for (const char* key : {"q", "qd"})
@@ -124,8 +132,8 @@ std::vector<FieldRow> lagrangianRows(const SceneJson& json) {
     std::vector<FieldRow> rows;
     if (!json.contains("lagrangian")) return rows;
     const SceneJson& l = json["lagrangian"];
-    if (l.contains("coordinates"))
-        for (std::size_t i = 0; i < l["coordinates"].size(); ++i)
+    if (!l.is_object()) return rows;
+    for (std::size_t i = 0; i < arrayAt(json, "/lagrangian/coordinates").size(); ++i)
             rows.push_back({QString("coordinate %1").arg(i + 1), "/lagrangian/coordinates/" + std::to_string(i),
                             "lagrangian.coordinates[" + std::to_string(i) + "]", {}});
     for (const char* key : {"kinetic", "potential"})

@@ -87,6 +87,10 @@ public:
     // For tests and benchmarks.
     SceneDocument& document() { return doc_; }
     JointTableModel& jointModel() { return *joints_; }
+    // The editor's smaller tabs: parameters, initial state and gravity, a Lagrangian's fields.
+    FieldListModel& parameterModel() { return *parameters_; }
+    FieldListModel& initialStateModel() { return *initial_; }
+    FieldListModel& lagrangianModel() { return *lagrangian_; }
     SceneView& sceneView() { return *view_; }
     DerivationPanel& derivationPanel() { return *derivation_; }
     DerivationView& derivationView() { return *typeset_; }

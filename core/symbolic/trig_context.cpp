@@ -51,6 +51,9 @@ void TrigContext::addConstantAngle(const GiNaC::ex& angle) {
 }
 
 GiNaC::ex TrigContext::reduce(const GiNaC::ex& e) const {
+    // Constant angles that are numbers: folded (reduceFolded), or a 3-joint arm with general
+    // twists and offsets takes minutes and gigabytes (cos(3/10)ᵃ sin(78/125)ᵇ … kept apart).
+    if (!folded_.empty()) return reduceFolded(e);
     GiNaC::ex r = e.expand();
     for (int i = 0; i < size(); ++i)
         if (revolute_[i]) r = reducePythagorean(r, s_[i], c_[i]);

@@ -35,7 +35,9 @@ public:
 
     // Expanded, with every power of s_i reduced to degree < 2 by s_i² = 1 − c_i² (and
     // of sin x by sin² x = 1 − cos² x for the constant angles). The coefficients may be
-    // anything: parameters, floats, sqrt(3), cos(3/10), cos(alpha2).
+    // anything: parameters, floats, sqrt(3), cos(alpha2). With a constant angle that is a
+    // number (3/10: not π/2, not a parameter) this is reduceFolded: its sine and cosine
+    // become floats.
     GiNaC::ex reduce(const GiNaC::ex& e) const;
     GiNaC::matrix reduce(const GiNaC::matrix& m) const;
 
