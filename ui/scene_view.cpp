@@ -11,6 +11,7 @@
 #include <osg/BlendFunc>
 #include <osg/Depth>
 #include <osg/Material>
+#include <osg/NodeVisitor>
 #include <osgUtil/LineSegmentIntersector>
 #include <osgViewer/Viewer>
 
@@ -266,6 +267,19 @@ void SceneView::resizeGL(int w, int h) {
     window_->getEventQueue()->windowResize(0, 0, pw, ph);
     viewer_->getCamera()->setViewport(0, 0, pw, ph);
     applyCamera();
+}
+
+std::size_t SceneView::graphObjects() const {
+    struct Count : osg::NodeVisitor {
+        Count() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
+        void apply(osg::Node& node) override {
+            ++objects;
+            traverse(node);
+        }
+        std::size_t objects = 0;
+    } count;
+    if (root_) root_->accept(count);
+    return count.objects;
 }
 
 void SceneView::paintGL() {

@@ -65,6 +65,9 @@ public:
 
     // Frames drawn so far (a test or benchmark waits for the next one).
     long framesDrawn() const { return frames_; }
+    // Nodes and drawables in the scene graph (each drawable owns its GL buffer objects):
+    // what a soak test watches for leaks.
+    std::size_t graphObjects() const;
     // The native window that draws and takes the mouse (tests send it input events).
     QWindow* surface() const;
     // Asks for a new frame (drawn at the GL window's next update).
