@@ -11,6 +11,9 @@
 #include <QApplication>
 #include <QDir>
 #include <QFile>
+#include <QMessageBox>
+#include <QAbstractButton>
+#include <QTimer>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
@@ -120,7 +123,7 @@ private slots:
             QVERIFY(!other.restoreRecovery(left[0]));  // never in place of the scene asked for
             QCOMPARE(other.document().path(), spring_);
             QVERIFY(!other.document().isModified());
-            QVERIFY(other.recoveryQuestion(left[0]).contains(arm_));
+            QVERIFY(other.recoveryQuestion(left[0]).contains("arm.json (in " + dir_.path()));
         }
 
         MainWindow w;
@@ -129,7 +132,7 @@ private slots:
         QCOMPARE(int(left.size()), 1);
         QVERIFY(w.isOwnScene(left[0]));
         const QString question = w.recoveryQuestion(left[0]);
-        QVERIFY2(question.contains(arm_), qPrintable(question));
+        QVERIFY2(question.contains("arm.json (in " + dir_.path()), qPrintable(question));
         QVERIFY2(question.contains("robot.joints[0].a (joint 1): \"a1\"") && question.contains("1.2"), qPrintable(question));
         QVERIFY2(!question.contains("changed on disk"), qPrintable(question));
         QVERIFY(!w.document().isModified());  // nothing restored silently
@@ -146,6 +149,32 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(w.document().validScene().robot.joints[0].dh.a, 1.0, 30000);
         w.discardRecovery();
         QVERIFY(w.recoveriesLeft().empty());
+    }
+
+    // The dialog itself, as a student meets it on the next start: it names the file and
+    // what changed; "Restore the edits" restores them (its picture: LL_SHOT_DIR/recovery.png).
+    void theQuestionIsAskedAndAnswered() {
+        auto child = editedWindow(arm_, recovery_);
+        QVERIFY(autosaved(*child));
+        killHard(*child);
+        MainWindow w;
+        QVERIFY(opened(w, arm_));
+        QString asked;
+        QTimer::singleShot(300, [&] {
+            auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+            if (!box) return;
+            asked = box->text();
+            const QString shots = qEnvironmentVariable("LL_SHOT_DIR");
+            if (!shots.isEmpty()) box->grab().save(shots + "/recovery.png");
+            for (QAbstractButton* b : box->buttons())
+                if (b->text() == "Restore the edits") b->click();
+        });
+        w.offerRecovery();
+        QVERIFY2(asked.contains("arm.json (in ") && asked.contains("What the edits change"), qPrintable(asked));
+        QTRY_COMPARE_WITH_TIMEOUT(w.document().validScene().robot.joints[0].dh.a, 1.2, 30000);
+        QVERIFY(w.document().isModified());
+        QVERIFY(w.recoveriesLeft().empty());
+        w.discardRecovery();
     }
 
     // Two windows on one scene keep a copy each; killed, both are offered; a file changed

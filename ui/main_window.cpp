@@ -1049,7 +1049,9 @@ bool MainWindow::isOwnScene(const RecoveryCopy& copy) const {
 }
 
 QString MainWindow::recoveryQuestion(const RecoveryCopy& copy) const {
-    const QString name = copy.original.isEmpty() ? tr("a new scene that was never saved") : copy.original;
+    const QString name = copy.original.isEmpty() ? tr("a new scene that was never saved")
+                                                 : tr("%1 (in %2)").arg(QFileInfo(copy.original).fileName(),
+                                                                        QFileInfo(copy.original).absolutePath());
     QString text = tr("LagrangeLab did not close normally while %1 had unsaved edits (autosaved %2).")
                        .arg(name, QLocale().toString(copy.written.toLocalTime(), QLocale::ShortFormat));
     SceneJson before = SceneJson::object();
