@@ -294,6 +294,35 @@ private slots:
         QVERIFY(w.document().undoStack()->canUndo());
     }
 
+    // Every system lists its own steps: a typed Lagrangian 0, 6, 7, 8 with its own titles
+    // (Previous/Next skip the steps it has not; the Text tab counts them), a robot its nine;
+    // the editor opens on the tab that describes the scene.
+    void everySystemListsItsOwnSteps() {
+        MainWindow w;
+        QVERIFY(shownOn(w, "mass_spring_pair_lagrangian.json"));
+        QTRY_VERIFY_WITH_TIMEOUT(w.derivationView().listedSteps().size() == 4, 30000);
+        const QStringList rows = w.derivationView().listedSteps();
+        QVERIFY2(rows[0].startsWith("Step 0: Generalized coordinates") && rows[1].startsWith("Step 6:") &&
+                     rows[2].startsWith("Step 7:") && rows[3].startsWith("Step 8:"),
+                 qPrintable(rows.join(" | ")));
+        QCOMPARE(w.editorTab(), QString("Lagrangian"));
+        w.derivationView().showStep(0);
+        w.derivationView().nextStep();
+        QCOMPARE(w.derivationView().step(), 6);
+        w.derivationView().showStep(3);  // a step it has not: the next it has
+        QCOMPARE(w.derivationView().step(), 6);
+        w.derivationPanel().showStep(0);
+        w.derivationPanel().nextStep();
+        QCOMPARE(w.derivationPanel().step(), 6);
+        QCOMPARE(int(w.derivationPanel().steps().size()), 4);
+
+        QVERIFY(w.openFile(example("planar_2r.json"), nullptr, true));
+        QVERIFY(settled(w));
+        QTRY_VERIFY_WITH_TIMEOUT(w.derivationView().listedSteps().size() >= 9, 30000);
+        QVERIFY(w.derivationView().listedSteps()[1].startsWith("Step 1: Kinematic model"));
+        QCOMPARE(w.editorTab(), QString("DH"));
+    }
+
     // Undo and redo restore the typed text, the valid model and the simulation.
     void undoAndRedoRestore() {
         MainWindow w;

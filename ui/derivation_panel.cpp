@@ -7,6 +7,8 @@
 #include <QRegularExpression>
 #include <QScrollBar>
 #include <QTextBlock>
+
+#include <algorithm>
 #include <QVBoxLayout>
 
 #include "ui/live_derivation.hpp"
@@ -119,13 +121,39 @@ void DerivationPanel::setDerivation(const DerivationResult& result) {
         view_->setPlainText(result.text);
         spans_ = result.textSpans;
         view_->verticalScrollBar()->setValue(bar);
-        if (step_ > 0) showStep(step_);
+        showStep(step_);  // or the next step this derivation has
+        emit stepChanged(step_);  // the count may have changed
     }
     emit derived();
 }
 
+// The steps the text has ("Step N." headings): a robot's 0–8, a typed Lagrangian's own.
+std::vector<int> DerivationPanel::steps() const {
+    static const QRegularExpression heading("^Step (\\d+)\\.");
+    std::vector<int> found;
+    for (QTextBlock block = view_->document()->begin(); block.isValid(); block = block.next())
+        if (const QRegularExpressionMatch m = heading.match(block.text()); m.hasMatch()) found.push_back(m.captured(1).toInt());
+    std::sort(found.begin(), found.end());
+    found.erase(std::unique(found.begin(), found.end()), found.end());
+    return found.empty() ? std::vector<int>{0} : found;
+}
+
+void DerivationPanel::nextStep() {
+    const std::vector<int> listed = steps();
+    const auto after = std::upper_bound(listed.begin(), listed.end(), step_);
+    if (after != listed.end()) showStep(*after);
+}
+
+void DerivationPanel::previousStep() {
+    const std::vector<int> listed = steps();
+    const auto at = std::lower_bound(listed.begin(), listed.end(), step_);
+    if (at != listed.begin()) showStep(*(at - 1));
+}
+
 void DerivationPanel::showStep(int n) {
-    n = std::clamp(n, 0, 8);
+    const std::vector<int> listed = steps();  // the one at or after n (the last, past it)
+    const auto at = std::lower_bound(listed.begin(), listed.end(), n);
+    n = at == listed.end() ? listed.back() : *at;
     const QRegularExpression heading(QString("^Step %1\\.").arg(n));
     for (QTextBlock block = view_->document()->begin(); block.isValid(); block = block.next())
         if (heading.match(block.text()).hasMatch()) {

@@ -42,8 +42,10 @@ public:
     bool busy() const { return busy_; }
 
 public slots:
-    void nextStep() { showStep(step_ + 1); }
-    void previousStep() { showStep(step_ - 1); }
+    void nextStep();
+    void previousStep();
+    // The step numbers of the text shown, ascending (a typed Lagrangian: 0, 6, 7, 8).
+    std::vector<int> steps() const;
 
 signals:
     void stepChanged(int step);

@@ -14,6 +14,8 @@
 #include <QScrollArea>
 #include <QVBoxLayout>
 #include <algorithm>
+
+#include <QSignalBlocker>
 #include <functional>
 
 #include "core/model/cancellation.hpp"
@@ -270,13 +272,7 @@ DerivationView::DerivationView(QWidget* parent) : QWidget(parent) {
     layout_ = new QBoxLayout(QBoxLayout::LeftToRight, this);
     auto* left = new QVBoxLayout;
     steps_ = new QListWidget(this);
-    const char* titles[] = {QT_TR_NOOP("DH parameters"),       QT_TR_NOOP("Kinematic model"),
-                            QT_TR_NOOP("Centres of mass"),     QT_TR_NOOP("Angular velocities"),
-                            QT_TR_NOOP("Velocities of the centres of mass"), QT_TR_NOOP("Link inertia tensors"),
-                            QT_TR_NOOP("Potential energy"),    QT_TR_NOOP("Kinetic energy, mass matrix"),
-                            QT_TR_NOOP("Equations of motion")};
-    for (int i = 0; i <= 8; ++i) steps_->addItem(tr("Step %1: %2").arg(i).arg(tr(titles[i])));
-    steps_->setMaximumWidth(260);
+    steps_->setMaximumWidth(260);  // filled with the steps of the derivation that is made
     left->addWidget(steps_);
     auto* buttons = new QHBoxLayout;
     previous_ = new QPushButton(tr("Previous"), this);
@@ -300,11 +296,43 @@ DerivationView::DerivationView(QWidget* parent) : QWidget(parent) {
     scroll_->setWidget(canvas_);
     layout_->addWidget(scroll_, 1);
     connect(steps_, &QListWidget::currentRowChanged, this, [this](int row) {
-        if (row >= 0) showStep(row);
+        if (row >= 0 && row < static_cast<int>(listed_.size())) showStep(listed_[static_cast<std::size_t>(row)]);
     });
     connect(previous_, &QPushButton::clicked, this, &DerivationView::previousStep);
     connect(next_, &QPushButton::clicked, this, &DerivationView::nextStep);
-    steps_->setCurrentRow(0);
+    relist();
+}
+
+// The list holds the steps of the document derived (a robot's 0–8, a typed Lagrangian's
+// 0, 6, 7, 8 with their own titles), then the pose results as step 9.
+QStringList DerivationView::listedSteps() const {
+    QStringList rows;
+    for (int i = 0; i < steps_->count(); ++i) rows << steps_->item(i)->text();
+    return rows;
+}
+
+void DerivationView::relist() {
+    std::vector<std::pair<int, QString>> rows;
+    if (document_)
+        for (const present::DisplayStep& s : document_->steps) rows.emplace_back(s.number, QString::fromStdString(s.title));
+    if (rows.empty()) rows.emplace_back(0, tr("DH parameters"));
+    if (pose_) rows.emplace_back(9, tr("Results at the teach pose"));
+    std::vector<int> numbers;
+    for (const auto& [n, title] : rows) numbers.push_back(n);
+    if (numbers != listed_ || steps_->count() != static_cast<int>(rows.size())) {
+        const QSignalBlocker quiet(steps_);
+        steps_->clear();
+        for (const auto& [n, title] : rows) steps_->addItem(tr("Step %1: %2").arg(n).arg(title));
+        listed_ = std::move(numbers);
+    }
+    const auto at = std::lower_bound(listed_.begin(), listed_.end(), step_);
+    const int step = at == listed_.end() ? listed_.back() : *at;  // a step this system has not: the next it has
+    const QSignalBlocker quiet(steps_);
+    steps_->setCurrentRow(static_cast<int>(std::find(listed_.begin(), listed_.end(), step) - listed_.begin()));
+    if (step != step_) {
+        step_ = step;
+        emit stepChanged(step_);
+    }
 }
 
 // Narrow (a dock beside the 3D view): the step list goes above the page, a few rows
@@ -387,6 +415,7 @@ void DerivationView::accept(int generation, std::shared_ptr<const present::Displ
     else
         status_->setText(tr("%1 (%2 form)").arg(QString::fromStdString(document_->systemName),
                                                 document_->form == "structured" ? tr("structured") : tr("expanded")));
+    relist();
     refresh();
     emit derivationFinished();
 }
@@ -403,32 +432,41 @@ void DerivationView::refresh() {
             }
     canvas_->show(shown, zoom_);
     setMarks(marks_);
-    previous_->setEnabled(step_ > 0);
+    previous_->setEnabled(step_ > listed_.front());
     next_->setEnabled(step_ < lastStep());
 }
 
 void DerivationView::setPoseResults(std::shared_ptr<const present::DisplayStep> step) {
     const bool had = pose_ != nullptr;
     pose_ = std::move(step);
-    if (pose_ && !had) steps_->addItem(tr("Step 9: Results at the teach pose"));
-    if (!pose_ && had) {
-        if (step_ == 9) showStep(8);
-        delete steps_->takeItem(9);
-    }
+    if (!pose_ && had && step_ == 9) showStep(8);
+    relist();
     if (step_ == 9 || had != (pose_ != nullptr)) refresh();
 }
 
 void DerivationView::showStep(int step) {
-    step = std::clamp(step, 0, lastStep());
+    // The listed step at or after `step` (before it, past the last).
+    const auto at = std::lower_bound(listed_.begin(), listed_.end(), step);
+    step = at == listed_.end() ? listed_.back() : *at;
     const bool changed = step != step_;
     step_ = step;
-    if (steps_->currentRow() != step) steps_->setCurrentRow(step);
+    const int row = static_cast<int>(std::find(listed_.begin(), listed_.end(), step) - listed_.begin());
+    if (steps_->currentRow() != row) {
+        const QSignalBlocker quiet(steps_);
+        steps_->setCurrentRow(row);
+    }
     refresh();
     if (changed) emit stepChanged(step);
 }
 
-void DerivationView::nextStep() { showStep(step_ + 1); }
-void DerivationView::previousStep() { showStep(step_ - 1); }
+void DerivationView::nextStep() {
+    const auto after = std::upper_bound(listed_.begin(), listed_.end(), step_);
+    if (after != listed_.end()) showStep(*after);
+}
+void DerivationView::previousStep() {
+    const auto at = std::lower_bound(listed_.begin(), listed_.end(), step_);
+    if (at != listed_.begin()) showStep(*(at - 1));
+}
 
 void DerivationView::setZoom(double zoom) {
     zoom_ = std::clamp(zoom, 0.25, 8.0);

@@ -42,12 +42,14 @@ public:
     // if this view had derived it. Either drops a derivation of this view's own.
     void setDeriving();
     void setDerivation(std::shared_ptr<const present::DisplayDocument> document, const QString& error = {});
-    void showStep(int step);  // 0..8 (9: the pose results); a step the scene has no items for shows empty
+    void showStep(int step);  // a listed step (9: the pose results); one the derivation has not: the next it has
     // The results at the teach pose (core/pipeline/pose_results) as step 9, listed after
     // the derivation's steps; null takes it away (and leaves step 9 for step 8).
     void setPoseResults(std::shared_ptr<const present::DisplayStep> step);
     const present::DisplayStep* poseResults() const { return pose_.get(); }
     int step() const { return step_; }
+    // The step list's rows as shown ("Step 6: Potential energy").
+    QStringList listedSteps() const;
     void setZoom(double zoom);  // 1 = 15 px per em; clamped to 0.25..8
     double zoom() const { return zoom_; }
 
@@ -101,7 +103,9 @@ private:
     DerivationCanvas* canvas_ = nullptr;
     std::shared_ptr<const present::DisplayDocument> document_;
     std::shared_ptr<const present::DisplayStep> pose_;
-    int lastStep() const { return pose_ ? 9 : 8; }
+    int lastStep() const { return listed_.back(); }
+    void relist();
+    std::vector<int> listed_;  // the step numbers listed, ascending (9: the pose results)
     std::vector<std::unique_ptr<Job>> jobs_;
     int generation_ = 0;
     int step_ = 0;

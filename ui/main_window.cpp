@@ -264,7 +264,8 @@ void MainWindow::buildEditor() {
     editorTabs_->addTab(parameterPage, tr("Parameters"));
     editorTabs_->addTab(makeTable(initial_, editorTabs_), tr("Initial && gravity"));
     editorTabs_->addTab(makeTable(solver_, editorTabs_), tr("Solver"));
-    editorTabs_->addTab(makeTable(lagrangian_, editorTabs_), tr("Lagrangian"));
+    lagrangianPage_ = makeTable(lagrangian_, editorTabs_);
+    editorTabs_->addTab(lagrangianPage_, tr("Lagrangian"));
 
     // The whole scene as JSON (effects, bodies, anything the tables do not list).
     auto* jsonPage = new QWidget(editorTabs_);
@@ -363,10 +364,14 @@ void MainWindow::buildDocks() {
     auto* stepBar = new QHBoxLayout;
     auto* prev = new QPushButton(tr("◀ Previous step"), dpane);
     auto* next = new QPushButton(tr("Next step ▶"), dpane);
-    auto* stepLabel = new QLabel(tr("step 0 of 8"), dpane);
+    auto* stepLabel = new QLabel(dpane);
     connect(prev, &QPushButton::clicked, derivation_, &DerivationPanel::previousStep);
     connect(next, &QPushButton::clicked, derivation_, &DerivationPanel::nextStep);
-    connect(derivation_, &DerivationPanel::stepChanged, stepLabel, [stepLabel](int s) { stepLabel->setText(tr("step %1 of 8").arg(s)); });
+    connect(derivation_, &DerivationPanel::stepChanged, stepLabel, [this, stepLabel](int s) {
+        const std::vector<int> listed = derivation_->steps();  // this derivation's own steps
+        const auto at = std::find(listed.begin(), listed.end(), s);
+        stepLabel->setText(tr("step %1 (%2 of %3)").arg(s).arg(at - listed.begin() + 1).arg(listed.size()));
+    });
     stepBar->addWidget(prev);
     stepBar->addWidget(stepLabel);
     stepBar->addWidget(next);
@@ -927,6 +932,8 @@ bool MainWindow::openFile(const QString& path, QStringList* errors, bool quiet) 
     if (!path.startsWith(":/")) addRecent(QFileInfo(path).absoluteFilePath());
     discardRecovery();  // the copy of the scene open before, if it was not saved: asked in maybeSave
     originalHash_ = CrashRecovery::hashOfFile(path);
+    // The editor opens on the tab that describes the scene: a typed Lagrangian's, or the DH table.
+    editorTabs_->setCurrentWidget(doc_.json().contains("lagrangian") ? lagrangianPage_ : editorTabs_->widget(0));
     playback_->setTime(0);
     updateTitle();
     return true;
@@ -1030,6 +1037,8 @@ void MainWindow::rebuildRecentMenu() {
 }
 
 // ---------------------------------------------------------------- recovery
+
+QString MainWindow::editorTab() const { return editorTabs_->tabText(editorTabs_->currentIndex()); }
 
 void MainWindow::writeRecovery() {
     const QString original = doc_.path().startsWith(":/") ? QString() : doc_.path();

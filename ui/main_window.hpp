@@ -229,6 +229,11 @@ private:
     TeachPanel* teach_ = nullptr;
     WorkPrecisionPane* workPrecision_ = nullptr;
     QTabWidget *editorTabs_ = nullptr, *bottomTabs_ = nullptr;
+    QWidget* lagrangianPage_ = nullptr;
+
+public:
+    // The editor's tab shown (tests): "DH", "Lagrangian", ...
+    QString editorTab() const;
     QLabel* status_ = nullptr;
     QMenu* recentMenu_ = nullptr;
     QDockWidget *modelDock_ = nullptr;
