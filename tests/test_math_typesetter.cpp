@@ -352,6 +352,28 @@ private slots:
         QVERIFY2(spherical.out.contains("m l² sin²(θ) φ̈") && !spherical.out.contains("cos²"), qPrintable(spherical.out));
     }
 
+    // A typed Lagrangian's labels as the notes write them (issue 40): ∂L/∂θ̇1, d/dt ∂L/∂θ̇1,
+    // ∂L/∂θ1 and the inputs on θ2, in text, LaTeX and the typeset PDF; no dL/d, theta or
+    // _dot left of the names the user typed.
+    void lagrangianLabelsAsTheNotesWriteThem() {
+        const QString scene = example("mass_spring_pair_lagrangian.json");
+        const Run text = run({"derive", scene});
+        QVERIFY2(text.code == 0, qPrintable(text.err));
+        for (const char* s : {"∂L/∂θ̇1 = I1 θ̇1", "d/dt ∂L/∂θ̇1 = I1 θ̈1", "∂L/∂θ1 = ", "Actuation: inputs on θ2"})
+            QVERIFY2(text.out.contains(QString::fromUtf8(s)), s);
+        const Run latex = run({"derive", scene, "--format", "latex"});
+        QVERIFY(latex.out.contains(R"(\frac{\partial \mathcal{L}}{\partial \dot{\theta}_{1}})"));
+        QVERIFY(latex.out.contains(R"(inputs on $\theta_{2}$)"));
+        QTemporaryDir dir;
+        const QString pdf = dir.filePath("msp.pdf");
+        QCOMPARE(run({"derive", scene, "--format", "pdf", "--out", pdf}).code, 0);
+        const Run pages = run({pdf, "-"}, "pdftotext");
+        for (const QString& out : {text.out, latex.out.section("\\begin{document}", 1), pages.out}) {
+            QVERIFY2(!out.contains("dL/d") && !out.contains("_dot") && !QRegularExpression("(?<!\\\\)theta").match(out).hasMatch(),
+                     qPrintable(out.left(3000)));
+        }
+    }
+
     void pdfOfThe2R() {
         QTemporaryDir dir;
         const QString pdf = dir.filePath("2r.pdf");

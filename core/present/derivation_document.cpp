@@ -7,6 +7,7 @@
 #include "core/present/labels.hpp"
 #include "core/present/latex_document.hpp"
 #include "core/present/latex_formula.hpp"
+#include "core/present/latex_text.hpp"
 #include "core/present/text_document.hpp"
 #include "core/present/textbook_form.hpp"
 #include "core/symbolic/ginac_lock.hpp"
@@ -65,7 +66,20 @@ std::shared_ptr<DisplayDocument> shapeDocument(const Derivation& d, TextbookForm
     auto doc = std::make_shared<DisplayDocument>();
     doc->systemName = d.systemName;
     doc->coordinateNames = d.coordinateNames;
-    doc->actuation = actuationText(d.actuated, d.coordinateNames);
+    // The coordinates named as the results show them (a typed Lagrangian's theta2 is θ2).
+    const DisplayOptions names = optionsFor(d, false);
+    std::vector<std::string> shown, latex, marks;
+    for (const std::string& name : d.coordinateNames) {
+        const DisplayPtr symbol = symbolNode(name, symbolMeaning(name, names.names), names.names);
+        shown.push_back(renderDisplay(*symbol, DisplayStyle::Text));
+        latex.push_back("$" + renderDisplay(*symbol, DisplayStyle::Latex) + "$");
+        marks.push_back("@" + std::to_string(marks.size()) + "@");
+    }
+    doc->actuation = actuationText(d.actuated, shown);
+    doc->actuationLatex = latexText(actuationText(d.actuated, marks));  // the prose escaped, then the math put in
+    for (std::size_t k = marks.size(); k-- > 0;)
+        for (std::size_t at; (at = doc->actuationLatex.find(marks[k])) != std::string::npos;)
+            doc->actuationLatex.replace(at, marks[k].size(), latex[k]);
     for (const DerivationStep& step : d.steps) {
         DisplayStep& shown = doc->steps.emplace_back(stepHead(d, step));
         for (const DerivationItem& item : step.items) {

@@ -39,7 +39,8 @@ struct DisplayDocument {
     std::string systemName;
     std::vector<std::string> coordinateNames;
     std::vector<DisplayStep> steps;
-    std::string actuation;   // "q1, q2 actuated" …
+    std::string actuation;   // "inputs on q1, q2 …", the coordinates as the results show them (θ2)
+    std::string actuationLatex;  // the same with the coordinates as LaTeX ($\theta_{2}$)
     std::string form;        // "expanded" or "structured" when a form was chosen (empty: not said)
     std::string formReason;  // why that form
 };

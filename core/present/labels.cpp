@@ -60,6 +60,24 @@ char entryLetter(Quantity q) {
     }
 }
 
+// A fraction label on one line as the notes write it inline: \frac{\partial \mathcal{L}}{\partial \dot{\theta}_{1}}
+// → ∂L/∂θ̇1, \frac{d}{dt}\frac{…}{…} → d/dt ∂L/∂θ̇1.
+std::string inlineFractions(const std::string& latex) {
+    std::string out;
+    for (std::size_t at = 0; at < latex.size();) {
+        if (latex.compare(at, 5, "\\frac") == 0) {
+            at += 5;
+            const std::string top = braced(latex, at), bottom = braced(latex, at);
+            if (!out.empty() && out.back() != ' ') out += ' ';
+            out += shownLabelPart(top) + "/" + shownLabelPart(bottom);
+        } else {
+            out += latex[at++];
+        }
+    }
+    for (std::size_t at; (at = out.find("ℒ")) != std::string::npos;) out.replace(at, std::string("ℒ").size(), "L");
+    return out;  // with the coordinate's subscript as _1
+}
+
 bool isColumn(const DisplayItem& item) { return item.value && !item.value->rows.empty() && item.value->rows[0].size() == 1; }
 
 }  // namespace
@@ -122,7 +140,15 @@ DisplayPtr displayLabel(const std::string& name, const std::string& latexName) {
         const char kind = latexName[at++];
         (kind == '_' ? sub : sup) = braced(latexName, at);
     }
-    if (head.find("\\frac") != std::string::npos || head.find("\\text") != std::string::npos || at < latexName.size()) {
+    if (head.find("\\frac") != std::string::npos) {  // ∂L/∂θ̇₁ with the coordinate's own symbol, in text ∂L/∂θ̇1
+        const std::string line = inlineFractions(latexName);
+        const std::size_t sub = line.rfind('_');
+        shown->text = line.substr(0, sub);
+        if (sub != std::string::npos) shown->subShown = line.substr(sub + 1);
+        std::erase(shown->text, '_');
+        n->text = line;
+        std::erase(n->text, '_');  // θ_1 → θ1, as the expressions write it
+    } else if (head.find("\\text") != std::string::npos || at < latexName.size()) {
         shown->text = name;
         shown->upright = true;
     } else {

@@ -22,7 +22,9 @@ std::string latexDocument(const DisplayDocument& document) {
         out += "\\section*{Step " + std::to_string(step.number) + ": " + latexText(step.title) + "}\n\\[ " + step.formulaLatex + " \\]\n";
         for (const DisplayItem& item : step.items) out += "\\[ " + itemLatex(item) + " \\]\n";
     }
-    return out + "\\paragraph{Actuation} " + latexText(document.actuation) + ".\n\\end{document}\n";
+    // The coordinates in math ($\theta_{2}$), the rest as text.
+    const std::string actuation = document.actuationLatex.empty() ? latexText(document.actuation) : document.actuationLatex;
+    return out + "\\paragraph{Actuation} " + actuation + ".\n\\end{document}\n";
 }
 
 }  // namespace ll::present

@@ -231,7 +231,7 @@ private:
             qd(i, 0) = s_.qd[i];
         }
         addStep(0, "Generalized coordinates",
-                "q = (q_1, ..., q_n): minimal, independent and complete; the velocity of x is x_dot = dx/dt",
+                "q = (q_1, …, q_n): minimal, independent and complete; the velocity of x is ẋ = dx/dt",
                 R"(q = (q_1, \dots, q_n)\ \text{minimal, independent, complete},\quad \dot{q} = \frac{dq}{dt})",
                 {{"q", Quantity::Coordinates, -1, Grouping::Parameters, q}, {"qd", Quantity::Velocities, -1, Grouping::Parameters, qd}});
     }
@@ -347,11 +347,10 @@ private:
             const std::string k = std::to_string(i + 1);
             items.push_back({"equation_" + k, Quantity::EquationOfMotion, i, Grouping::Parameters, lhs == d_.Q(i, 0)});
         }
-        const std::string actuation = actuationText(d_.actuated, spec_.coordinates);
         addStep(8, "Equations of motion (Lagrange-d'Alembert)",
-                "L = E_kin - E_pot;  d/dt dL/dqd_i - dL/dq_i = Q_i;  written as B qdd + C qd + g = Q with "
-                "g = dE_pot/dq, c_ij = sum_k 1/2 (db_ij/dq_k + db_ik/dq_j - db_jk/dq_i) qd_k, Q: non-conservative "
-                "forces only;  qdd = B^-1 (Q - C qd - g);  " + actuation,
+                "L = E_kin − E_pot;  d/dt ∂L/∂q̇_i − ∂L/∂q_i = Q_i;  written as B q̈ + C q̇ + g = Q with "
+                "g = ∂E_pot/∂q, c_ij = Σ_k ½ (∂b_ij/∂q_k + ∂b_ik/∂q_j − ∂b_jk/∂q_i) q̇_k, Q: non-conservative "
+                "forces only;  q̈ = B⁻¹ (Q − C q̇ − g)",
                 R"(\mathcal{L} = E_{\mathrm{kin}} - E_{\mathrm{pot}},\quad \frac{d}{dt}\frac{\partial \mathcal{L}}{\partial \dot{q}_i} - \frac{\partial \mathcal{L}}{\partial q_i} = Q_i,\quad g = \frac{\partial E_{\mathrm{pot}}}{\partial q},\quad c_{ij} = \sum_k \tfrac{1}{2}\left(\frac{\partial b_{ij}}{\partial q_k} + \frac{\partial b_{ik}}{\partial q_j} - \frac{\partial b_{jk}}{\partial q_i}\right)\dot{q}_k,\quad B\ddot{q} + C\dot{q} + g = Q)",
                 items);
     }
