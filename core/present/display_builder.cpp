@@ -291,6 +291,22 @@ DisplayBuilder::Product DisplayBuilder::product(const ex& e) {
         for (const ex& x : e) one(x);  // its factors, then its coefficient
     else
         one(e);
+    // GiNaC keeps a sum's numeric content in front (q̇2 (2a + 4b) is 2 q̇2 (a + 2b)); a
+    // coefficient that is not a formula's (a decimal, 5·10⁻¹⁰) goes back into the sum.
+    if (!p.coef.is_equal(1) && !p.coef.is_equal(-1) && !formulaFactor(p.coef)) {
+        const auto isSum = [](const Factor& f) { return is_a<GiNaC::add>(f.base) && f.exp.is_equal(1); };
+        if (std::count_if(p.num.begin(), p.num.end(), isSum) == 1) {
+            const auto it = std::find_if(p.num.begin(), p.num.end(), isSum);
+            GiNaC::exvector terms;
+            const numeric sign = it->negated ? numeric(-1) : numeric(1);
+            for (const ex& t : it->base) terms.push_back(t * p.coef * sign);
+            const ex distributed = GiNaC::add(terms);
+            p.num.erase(it);
+            p.coef = 1;
+            if (is_a<GiNaC::add>(distributed)) factor(distributed, 1);
+            else one(distributed);
+        }
+    }
     const auto byKey = [this](const Factor& a, const Factor& b) { return factorKey(a) < factorKey(b); };
     std::stable_sort(p.num.begin(), p.num.end(), byKey);
     std::stable_sort(p.den.begin(), p.den.end(), byKey);

@@ -51,8 +51,9 @@ std::string seventeen(double v) {
     return s;
 }
 
-DisplayPtr decimalNode(double v) {
-    const std::string s = shown(v), plain = seventeen(v);
+// `exact`: the Plain spelling when it is not the 17-digit float (an integer's digits).
+DisplayPtr decimalNode(double v, const std::string& exact = {}) {
+    const std::string s = shown(v), plain = exact.empty() ? seventeen(v) : exact;
     const auto e = s.find('e');
     if (e == std::string::npos) return displayNumber(s, s, plain);
     const std::string mantissa = s.substr(0, e), exponent = std::to_string(std::stoi(s.substr(e + 1)));
@@ -80,6 +81,7 @@ DisplayPtr numberNode(const numeric& n) {
     if (n.is_negative()) return displayNegated(numberNode(-n));
     if (n.is_integer()) {
         const std::string s = str(n);
+        if (s.size() > 6) return decimalNode(n.to_double(), s);  // 3650000 reads 3.65·10⁶; Plain keeps every digit
         return displayNumber(s, s, s);
     }
     if (n.is_rational()) return displayNode(DisplayKind::Fraction, {numberNode(n.numer()), numberNode(n.denom())});
@@ -89,6 +91,12 @@ DisplayPtr numberNode(const numeric& n) {
 DisplayPtr exponentNode(const numeric& k) {
     const std::string text = str(k);
     return displayNumber(text, text, k.is_rational() ? text : seventeen(k.to_double()));
+}
+
+bool formulaFactor(const numeric& c) {
+    if (!c.is_rational()) return false;
+    const numeric n = GiNaC::abs(c.numer()), d = c.denom();
+    return n <= 12 && d <= 12 && !GiNaC::irem(d, 10).is_zero();
 }
 
 bool isDecimalFraction(const numeric& v) { return terminates(v) && v.denom() > 8; }

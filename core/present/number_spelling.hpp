@@ -27,6 +27,11 @@ DisplayPtr exponentNode(const GiNaC::numeric& k);
 // decimal shows).
 bool isDecimalFraction(const GiNaC::numeric& v);
 
+// Whether a number may stand in front of a sum as a common factor: a small rational as
+// formulas make them (½, ⅓, 2/5, 1/12, 3), never a decimal or a power of ten
+// (−5·10⁻¹⁰ (8347998 + …) is not how anyone writes c₁₁).
+bool formulaFactor(const GiNaC::numeric& c);
+
 // e with every fraction that has a finite decimal form as a float, when e holds at least
 // one decimal fraction or one of the numbers the scene typed as decimals (`typed`, as
 // positive rationals: 1.375 typed is 11/8 and reads 1.375 again; a typed 0.5 or 0.25 only

@@ -77,7 +77,7 @@ GiNaC::ex commonFactor(const GiNaC::ex& e, const std::vector<GiNaC::symbol>& vel
             factor *= GiNaC::pow(symbol, entry.second);
     }
     if (factor.is_equal(1)) return 1;
-    GiNaC::numeric content = rational ? gcdNum / lcmDen : GiNaC::numeric(1);
+    GiNaC::numeric content = rational && formulaFactor(gcdNum / lcmDen) ? gcdNum / lcmDen : GiNaC::numeric(1);
     if (allNegative) content = -content;
     return content * factor;
 }
@@ -219,7 +219,7 @@ GiNaC::ex collectForDisplay(const ex& e, const std::vector<GiNaC::symbol>& group
             lcmDen = GiNaC::lcm(lcmDen, k.denom());
             allNegative = allNegative && k.is_negative();
         }
-        numeric content = rational ? gcdNum / lcmDen : numeric(1);
+        numeric content = rational && formulaFactor(gcdNum / lcmDen) ? gcdNum / lcmDen : numeric(1);
         if (allNegative && rational) content = -content;
         ex sum = 0;
         for (const ex& c : cofactors) sum += c / content;
