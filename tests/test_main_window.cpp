@@ -294,6 +294,27 @@ private slots:
         QVERIFY(w.document().undoStack()->canUndo());
     }
 
+    // One value that makes B singular is named in the checks list: link 2's point mass
+    // moved onto joint 2's axis (com x := -a2) makes joint 2 move nothing.
+    void theEditThatMadeBSingularIsNamed() {
+        const QString path = dir_.filePath("point_masses.json");
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(R"json({"format": "lagrangelab-scene/1", "name": "two point masses", "robot": {"convention": "standard", "joints": [
+            {"type": "revolute", "a": 1, "mass": 1, "com": [-0.5, 0, 0]},
+            {"type": "revolute", "a": 1.5, "mass": 1, "com": [-0.75, 0, 0]}]}, "effects": {"gravity": [0, -9.81, 0]}})json");
+        f.close();
+        MainWindow w;
+        w.setAskBeforeClosing(false);
+        w.show();
+        QVERIFY(w.openFile(path, nullptr, true));
+        QVERIFY(w.jointModel().setData(w.jointModel().index(1, JointTableModel::ComX), "-1.5", Qt::EditRole));
+        QVERIFY(checked(w));
+        const QString lines = w.diagnosticLines().join('\n');
+        QVERIFY2(lines.contains("robot.joints[1] (joint 2): joint 2 moves no mass or inertia"), qPrintable(lines));
+        QVERIFY2(lines.contains("hint: it happened with your edit of robot.joints[1].com[0] (joint 2)"), qPrintable(lines));
+    }
+
     // Every system lists its own steps: a typed Lagrangian 0, 6, 7, 8 with its own titles
     // (Previous/Next skip the steps it has not; the Text tab counts them), a robot its nine;
     // the editor opens on the tab that describes the scene.

@@ -540,7 +540,15 @@ void MainWindow::documentChanged() {
     refreshJson();
     diagnostics_->clear();
     for (const Diagnostic& d : doc_.diagnostics()) {
-        auto* item = new QListWidgetItem(QString::fromStdString(d.toString()), diagnostics_);
+        QString text = QString::fromStdString(d.toString());
+        // An error on a whole joint (B singular there) right after one value was edited:
+        // that value is named, the likely cause the message itself cannot know.
+        const std::string& edited = doc_.lastEditedField();
+        if (d.severity == Severity::Error && !edited.empty() && d.field.ends_with("]") &&
+            d.field.find("robot.joints[") != std::string::npos && edited.rfind("robot.joints[", 0) == 0)
+            text += "\n" + tr("hint: it happened with your edit of %1")
+                               .arg(QString::fromStdString(Diagnostic{Severity::Error, edited, ""}.where()));
+        auto* item = new QListWidgetItem(text, diagnostics_);
         item->setForeground(d.severity == Severity::Error ? QColor(180, 0, 0) : QColor(140, 100, 0));
     }
     if (doc_.diagnostics().empty()) new QListWidgetItem(tr("no errors, no warnings"), diagnostics_);

@@ -1,5 +1,8 @@
 #include "ui/scene_document.hpp"
 
+#include <algorithm>
+#include <ranges>
+
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -144,6 +147,13 @@ void SceneDocument::setValue(const std::string& pointer, const SceneJson& v, con
         after[p] = v;
     }
     replace(after, description);
+    // "/robot/joints/1/com/0" → "robot.joints[1].com[0]"
+    std::string field;
+    for (const std::string& part : p.to_string().substr(1) | std::views::split('/') | std::views::transform([](auto r) { return std::string(r.begin(), r.end()); })) {
+        if (!part.empty() && std::all_of(part.begin(), part.end(), [](char c) { return c >= '0' && c <= '9'; })) field += "[" + part + "]";
+        else field += (field.empty() ? "" : ".") + part;
+    }
+    lastEdited_ = field;
 }
 
 void SceneDocument::replace(const SceneJson& after, const QString& description) {
@@ -162,6 +172,7 @@ QString SceneDocument::errorAt(const std::string& field) const {
 
 void SceneDocument::setJson(const SceneJson& json) {
     json_ = json;
+    lastEdited_.clear();  // setValue names its field after this
     ++revision_;
     emit changed();
     validate();

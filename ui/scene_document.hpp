@@ -57,6 +57,9 @@ public:
     SceneJson value(const std::string& pointer) const;
     // One undoable edit: the value at `pointer` becomes `v` (null removes it).
     void setValue(const std::string& pointer, const SceneJson& v, const QString& description);
+    // The field the newest edit changed, as the loader names it ("robot.joints[1].com[0]"),
+    // when it was one value; empty after any other change (a joint added, undo, a load).
+    const std::string& lastEditedField() const { return lastEdited_; }
     // One undoable edit of the whole document (joints added, moved, a block typed anew).
     void replace(const SceneJson& after, const QString& description);
 
@@ -94,6 +97,7 @@ private:
 
     SceneJson json_;
     QString path_;
+    std::string lastEdited_;
     QUndoStack undo_;
     std::vector<Diagnostic> diagnostics_;
     Scene validScene_;
