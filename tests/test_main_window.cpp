@@ -30,6 +30,7 @@
 #include "core/pipeline/scene_derivation.hpp"
 #include "ui/derivation_pages.hpp"
 #include "ui/derivation_panel.hpp"
+#include "ui/field_list_model.hpp"
 #include "ui/joint_table_model.hpp"
 #include "ui/derivation_view.hpp"
 #include "ui/main_window.hpp"
@@ -292,6 +293,24 @@ private slots:
         const QString tip = model.data(cell, Qt::ToolTipRole).toString();
         QVERIFY2(tip.startsWith("error: absurdly"), qPrintable(tip));
         QVERIFY(w.document().undoStack()->canUndo());
+    }
+
+    // Gravity typed beyond any physical range, in the Initial & gravity tab: named as such.
+    void absurdGravityIsNamedInTheEditor() {
+        MainWindow w;
+        QVERIFY(shownOn(w, "planar_2r.json"));
+        ll::ui::FieldListModel& fields = w.initialStateModel();
+        int gravityY = -1;
+        for (int r = 0; r < fields.rowCount(); ++r)
+            if (fields.row(r).field == "effects.gravity[1]") gravityY = r;
+        QVERIFY(gravityY >= 0);
+        for (const auto& [typed, expected] : {std::pair{"-1e4", "effects.gravity: absurdly large gravity 10000 m/s²"},
+                                              {"-1e-9", "effects.gravity: absurdly small gravity 1e-09 m/s²"}}) {
+            QVERIFY(fields.setData(fields.index(gravityY, ll::ui::FieldListModel::Value), typed, Qt::EditRole));
+            QVERIFY(checked(w));
+            const QString lines = w.diagnosticLines().join('\n');
+            QVERIFY2(lines.contains(QString::fromUtf8(expected)) && !lines.contains("B(q)"), qPrintable(lines));
+        }
     }
 
     // One value that makes B singular is named in the checks list: link 2's point mass
