@@ -105,12 +105,12 @@ GiNaC::ex NamedDefinitions::unfold(const GiNaC::ex& e, const std::atomic<bool>* 
             throwIfCancelled(cancel_);
             GiNaC::exmap direct;
             for (int d : entries_[k].dependencies) direct[entries_[d].symbol] = unfolded_[d];
-            unfolded_[k] = tc_.reduceFolded(entries_[k].value.subs(direct, GiNaC::subs_options::no_pattern));
+            unfolded_[k] = tc_.reduce(entries_[k].value.subs(direct, GiNaC::subs_options::no_pattern));
             isUnfolded_[k] = true;
         }
     }
     for (int k : dependenciesOf(e)) substitution[entries_[k].symbol] = unfolded_[k];
-    return tc_.reduceFolded(e.subs(substitution, GiNaC::subs_options::no_pattern));
+    return tc_.reduce(e.subs(substitution, GiNaC::subs_options::no_pattern));
 }
 
 namespace {

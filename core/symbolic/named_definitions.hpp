@@ -64,7 +64,7 @@ public:
     std::vector<int> coneOf(const GiNaC::ex& e) const;
 
     // e with every name unfolded into c_i, s_i, q_i and parameters, reduced: the fully
-    // expanded form, with constant angles that are numbers folded (TrigContext::reduceFolded). Memoised per name; checks `cancel` (and the table's own flag)
+    // expanded form, with constant angles that are numbers folded (TrigContext::reduce). Memoised per name; checks `cancel` (and the table's own flag)
     // between names.
     GiNaC::ex unfold(const GiNaC::ex& e, const std::atomic<bool>* cancel = nullptr);
 

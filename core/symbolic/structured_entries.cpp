@@ -96,7 +96,7 @@ ExpandedEntry expandEntry(StructuredDynamics& s, const EntryRef& ref, const std:
         for (int k = 0; k < s.n; ++k) {
             GiNaC::ex christoffel = derivative(i, j, k);
             if (i != j) christoffel += derivative(i, k, j) - derivative(j, k, i);
-            if (!christoffel.is_zero()) c += GiNaC::numeric(1, 2) * tc.reduceFolded(christoffel) * tc.qd(k);
+            if (!christoffel.is_zero()) c += GiNaC::numeric(1, 2) * tc.reduce(christoffel) * tc.qd(k);
             throwIfCancelled(cancel);
         }
         out.value = c.expand();

@@ -51,8 +51,6 @@ void TrigContext::addConstantAngle(const GiNaC::ex& angle) {
 }
 
 GiNaC::ex TrigContext::reduce(const GiNaC::ex& e) const {
-    // Constant angles that are numbers: folded (reduceFolded), or a 3-joint arm with general
-    // twists and offsets takes minutes and gigabytes (cos(3/10)ᵃ sin(78/125)ᵇ … kept apart).
     if (!folded_.empty()) return reduceFolded(e);
     GiNaC::ex r = e.expand();
     for (int i = 0; i < size(); ++i)
@@ -96,7 +94,7 @@ GiNaC::ex lowerSines(const GiNaC::ex& term, const std::vector<std::pair<GiNaC::e
 }  // namespace
 
 GiNaC::ex TrigContext::reduceFolded(const GiNaC::ex& e) const {
-    GiNaC::ex r = folded_.empty() ? e.expand() : e.subs(folded_, GiNaC::subs_options::no_pattern).expand();
+    GiNaC::ex r = e.subs(folded_, GiNaC::subs_options::no_pattern).expand();
     // s_i² → 1 − c_i² term by term, all sines in one pass: only the terms that change are
     // expanded again (their (1 − c²)ᵏ brings no sine back).
     std::vector<std::pair<GiNaC::ex, GiNaC::ex>> pairs;
@@ -111,7 +109,7 @@ GiNaC::ex TrigContext::reduceFolded(const GiNaC::ex& e) const {
         (changed ? lowered : kept).push_back(changed ? t : term);
     }
     r = GiNaC::ex(GiNaC::add(kept)) + GiNaC::ex(GiNaC::add(lowered)).expand();
-    if (folded_.empty() || !GiNaC::is_a<GiNaC::add>(r)) return r;
+    if (!GiNaC::is_a<GiNaC::add>(r)) return r;
     double largest = 0;
     for (const GiNaC::ex& term : r) largest = std::max(largest, std::abs(coefficientOf(term).to_double()));
     GiNaC::exvector significant;

@@ -35,19 +35,15 @@ public:
 
     // Expanded, with every power of s_i reduced to degree < 2 by s_i² = 1 − c_i² (and
     // of sin x by sin² x = 1 − cos² x for the constant angles). The coefficients may be
-    // anything: parameters, floats, sqrt(3), cos(alpha2). With a constant angle that is a
-    // number (3/10: not π/2, not a parameter) this is reduceFolded: its sine and cosine
-    // become floats.
+    // anything: parameters, floats, sqrt(3), cos(alpha2).
+    // The sine and cosine of a constant angle that is a number (3/10, 78/125, π/5: not a
+    // parameter) are folded to floats first, so the expansion multiplies numbers, not
+    // cos(3/10)ᵃ sin(3/10)ᵇ cos(78/125)ᶜ monomials (an 8-joint chain's b₁₁: 15,516 terms and
+    // 45 s kept exact; a 3-joint arm with six such angles: minutes). sin² + cos² = 1 of a
+    // folded angle then holds only to rounding: a float coefficient below 1e-12 of the
+    // largest coefficient of the sum is that residue and is dropped.
     GiNaC::ex reduce(const GiNaC::ex& e) const;
     GiNaC::matrix reduce(const GiNaC::matrix& m) const;
-
-    // reduce() with the sine and cosine of every constant angle that is a number (3/10,
-    // 78/125, π/5: not a parameter) folded to a float first, so an entry expanded on
-    // demand multiplies numbers, not cos(3/10)ᵃ sin(3/10)ᵇ cos(78/125)ᶜ monomials (an
-    // 8-joint chain's b₁₁: 15,516 terms and 45 s kept exact). The identity sin² + cos² = 1
-    // of a folded angle then holds only to rounding: a float coefficient below 1e-12 of the
-    // largest coefficient of the sum is that residue and is dropped.
-    GiNaC::ex reduceFolded(const GiNaC::ex& e) const;
 
     // ∂e/∂q_k by the chain rule (not reduced).
     GiNaC::ex diffq(const GiNaC::ex& e, int k) const;
@@ -57,6 +53,7 @@ public:
     GiNaC::lst toFunctions() const;
 
 private:
+    GiNaC::ex reduceFolded(const GiNaC::ex& e) const;  // reduce() with folded angles
     std::vector<bool> revolute_;
     std::vector<std::pair<GiNaC::ex, GiNaC::ex>> constantAngles_;  // (sin x, cos x)
     GiNaC::exmap folded_;  // sin x, cos x → their floats, for the constant angles that are numbers
