@@ -120,6 +120,7 @@ void DerivationPanel::setDerivation(const DerivationResult& result) {
         const int bar = view_->verticalScrollBar()->value();
         view_->setPlainText(result.text);
         spans_ = result.textSpans;
+        readHeadings();
         view_->verticalScrollBar()->setValue(bar);
         showStep(step_);  // or the next step this derivation has
         emit stepChanged(step_);  // the count may have changed
@@ -127,42 +128,37 @@ void DerivationPanel::setDerivation(const DerivationResult& result) {
     emit derived();
 }
 
-// The steps the text has ("Step N." headings): a robot's 0–8, a typed Lagrangian's own.
-std::vector<int> DerivationPanel::steps() const {
+// The steps the text has ("Step N." headings, in order): a robot's 0–8, a typed Lagrangian's own.
+void DerivationPanel::readHeadings() {
     static const QRegularExpression heading("^Step (\\d+)\\.");
-    std::vector<int> found;
+    steps_.clear();
+    headingBlocks_.clear();
     for (QTextBlock block = view_->document()->begin(); block.isValid(); block = block.next())
-        if (const QRegularExpressionMatch m = heading.match(block.text()); m.hasMatch()) found.push_back(m.captured(1).toInt());
-    std::sort(found.begin(), found.end());
-    found.erase(std::unique(found.begin(), found.end()), found.end());
-    return found.empty() ? std::vector<int>{0} : found;
+        if (const QRegularExpressionMatch m = heading.match(block.text()); m.hasMatch()) {
+            steps_.push_back(m.captured(1).toInt());
+            headingBlocks_.push_back(block.blockNumber());
+        }
+    if (steps_.empty()) steps_ = headingBlocks_ = {0};
 }
 
 void DerivationPanel::nextStep() {
-    const std::vector<int> listed = steps();
-    const auto after = std::upper_bound(listed.begin(), listed.end(), step_);
-    if (after != listed.end()) showStep(*after);
+    const auto after = std::upper_bound(steps_.begin(), steps_.end(), step_);
+    if (after != steps_.end()) showStep(*after);
 }
 
 void DerivationPanel::previousStep() {
-    const std::vector<int> listed = steps();
-    const auto at = std::lower_bound(listed.begin(), listed.end(), step_);
-    if (at != listed.begin()) showStep(*(at - 1));
+    const auto at = std::lower_bound(steps_.begin(), steps_.end(), step_);
+    if (at != steps_.begin()) showStep(*(at - 1));
 }
 
 void DerivationPanel::showStep(int n) {
-    const std::vector<int> listed = steps();  // the one at or after n (the last, past it)
-    const auto at = std::lower_bound(listed.begin(), listed.end(), n);
-    n = at == listed.end() ? listed.back() : *at;
-    const QRegularExpression heading(QString("^Step %1\\.").arg(n));
-    for (QTextBlock block = view_->document()->begin(); block.isValid(); block = block.next())
-        if (heading.match(block.text()).hasMatch()) {
-            QTextCursor cursor(block);
-            view_->moveCursor(QTextCursor::End);
-            view_->setTextCursor(cursor);
-            view_->ensureCursorVisible();
-            break;
-        }
+    auto at = std::lower_bound(steps_.begin(), steps_.end(), n);  // the one at or after n (the last, past it)
+    if (at == steps_.end()) --at;
+    n = *at;
+    QTextCursor cursor(view_->document()->findBlockByNumber(headingBlocks_[static_cast<std::size_t>(at - steps_.begin())]));
+    view_->moveCursor(QTextCursor::End);
+    view_->setTextCursor(cursor);
+    view_->ensureCursorVisible();
     if (n != step_) {
         step_ = n;
         emit stepChanged(n);

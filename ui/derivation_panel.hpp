@@ -41,11 +41,12 @@ public:
     QString text() const;
     bool busy() const { return busy_; }
 
+    // The step numbers of the text shown, ascending (a typed Lagrangian: 0, 6, 7, 8).
+    const std::vector<int>& steps() const { return steps_; }
+
 public slots:
     void nextStep();
     void previousStep();
-    // The step numbers of the text shown, ascending (a typed Lagrangian: 0, 6, 7, 8).
-    std::vector<int> steps() const;
 
 signals:
     void stepChanged(int step);
@@ -58,11 +59,15 @@ protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
+    void readHeadings();
     QPlainTextEdit* view_;
     std::vector<present::TextSpan> spans_;
     QLabel* status_;
     bool busy_ = false;
     int step_ = 0;
+    // The text's "Step N." headings, read once per derivation: step numbers ascending and
+    // the text block each starts at.
+    std::vector<int> steps_{0}, headingBlocks_{0};
     double baseFont_ = 10.0;
 };
 

@@ -368,7 +368,7 @@ void MainWindow::buildDocks() {
     connect(prev, &QPushButton::clicked, derivation_, &DerivationPanel::previousStep);
     connect(next, &QPushButton::clicked, derivation_, &DerivationPanel::nextStep);
     connect(derivation_, &DerivationPanel::stepChanged, stepLabel, [this, stepLabel](int s) {
-        const std::vector<int> listed = derivation_->steps();  // this derivation's own steps
+        const std::vector<int>& listed = derivation_->steps();  // this derivation's own steps
         const auto at = std::find(listed.begin(), listed.end(), s);
         stepLabel->setText(tr("step %1 (%2 of %3)").arg(s).arg(at - listed.begin() + 1).arg(listed.size()));
     });
