@@ -6,6 +6,7 @@
 
 #include <QRegularExpression>
 #include <filesystem>
+#include <functional>
 #include <set>
 
 #include "core/io/scene_file.hpp"
@@ -183,15 +184,67 @@ private slots:
 
     // One number style per entry: the double pendulum's E_kin had 0.1 (…) beside 1/5 (…);
     // and no decimal is pulled out of a sum (issue 40): 0.5 m1 l1² inside the parenthesis.
-    void oneNumberStylePerEntry() {
-        const auto doc = shown("double_pendulum.json", symbolic::ParameterMode::Parametric);
-        std::string ekin;
-        for (const DisplayStep& step : doc->steps)
-            for (const DisplayItem& item : step.items)
-                if (item.name == "E_kin") ekin = renderDisplay(*item.value, DisplayStyle::Text);
-        QVERIFY2(ekin.find("(0.5 m1 l1² + 0.2 m1 r²") != std::string::npos, ekin.c_str());
-        QVERIFY2(ekin.find('/') == std::string::npos, ekin.c_str());
-        QVERIFY2(ekin.find("0.1 (") == std::string::npos, ekin.c_str());
+    // Fractions where the formulas make them, decimals where the scene typed them (issue
+    // 40): the double pendulum's E_kin has no typed decimal, so its ½ and ⅕ stay
+    // fractions (it read 0.5 m1 l1² + 0.2 m1 r²); the simple pendulum's bob reads as the
+    // textbook's point mass plus the sphere's own 2/5 m r².
+    void fractionsFromFormulasDecimalsAsTyped() {
+        const auto item = [](const char* example, const std::string& name) {
+            const auto doc = shown(example, symbolic::ParameterMode::Parametric);
+            for (const DisplayStep& step : doc->steps)
+                for (const DisplayItem& it : step.items)
+                    if (it.name == name) return it;
+            return DisplayItem{};
+        };
+        const std::string ekin = renderDisplay(*item("double_pendulum.json", "E_kin").value, DisplayStyle::Text);
+        QVERIFY2(ekin.find("(1/2 m1 l1² + 1/5 m1 r²") != std::string::npos, ekin.c_str());
+        QVERIFY2(ekin.find('.') == std::string::npos, ekin.c_str());
+        const DisplayItem b = item("simple_pendulum.json", "B"), eq = item("simple_pendulum.json", "equation_1");
+        QVERIFY(b.value && b.value->kind == DisplayKind::Matrix);
+        QCOMPARE(QString::fromStdString(renderDisplay(*b.value->rows[0][0], DisplayStyle::Text)), QString("m (l² + 2/5 r²)"));
+        QCOMPARE(QString::fromStdString(renderDisplay(*eq.equation, DisplayStyle::Text)),
+                 QString("m (l² + 2/5 r²) q̈1 + 9.81 m l s1 = 0"));
+    }
+
+    // One style per matrix (issue 40): a 3-joint arm typed in decimals shows each value
+    // of C one way in every entry (it had c22 = −0.06 s3 q̇3 beside c23 = −3/50 s3 …),
+    // and every value made of its decimals as a decimal. Read from the tree: a Number
+    // shown as a decimal carries its exact value in Plain, a Fraction its digits.
+    void oneStylePerMatrix() {
+        const Scene scene = parseScene(R"json({"format": "lagrangelab-scene/1", "name": "3R in decimals",
+            "robot": {"convention": "standard", "joints": [
+            {"type": "revolute", "a": 0.3, "alpha": 0, "d": 0, "theta": 0, "mass": 1.5, "com": [-0.15, 0, 0], "inertia": {"xx": 0, "yy": 0.01, "zz": 0.01}},
+            {"type": "revolute", "a": 0.2, "alpha": 0, "d": 0, "theta": 0, "mass": 1.2, "com": [-0.1, 0, 0], "inertia": {"xx": 0, "yy": 0.004, "zz": 0.004}},
+            {"type": "revolute", "a": 0.1, "alpha": 0, "d": 0, "theta": 0, "mass": 0.6, "com": [-0.05, 0, 0], "inertia": {"xx": 0, "yy": 0.0005, "zz": 0.0005}}]},
+            "effects": {"gravity": [0, -9.81, 0]}})json");
+        DocumentRequest request;
+        request.format = DocumentFormat::Display;
+        const auto doc = deriveDocument(scene, request).display;
+        for (const char* name : {"B", "C", "g"}) {
+            std::map<std::string, std::set<std::string>> spellings;  // exact value → how it reads
+            int numbers = 0;
+            const std::function<void(const DisplayNode&)> walk = [&](const DisplayNode& n) {
+                if (n.kind == DisplayKind::Number && n.plain.size() > 2 && n.plain.front() == '(') {
+                    spellings[n.plain.substr(1, n.plain.size() - 2)].insert("decimal");
+                    ++numbers;
+                }
+                if (n.kind == DisplayKind::Fraction && n.children[0]->kind == DisplayKind::Number &&
+                    n.children[1]->kind == DisplayKind::Number) {
+                    spellings[n.children[0]->plain + "/" + n.children[1]->plain].insert("fraction");
+                    ++numbers;
+                    return;
+                }
+                for (const auto& c : n.children) walk(*c);
+                for (const auto& row : n.rows)
+                    for (const auto& c : row) walk(*c);
+            };
+            for (const DisplayStep& step : doc->steps)
+                for (const DisplayItem& item : step.items)
+                    if (item.name == name) walk(*item.value);
+            QVERIFY2(numbers > 3, name);
+            for (const auto& [value, styles] : spellings)
+                QVERIFY2(styles == std::set<std::string>{"decimal"}, qPrintable(QString("%1: %2 reads as a fraction").arg(name, value.c_str())));
+        }
     }
 
     // Numbers as a student writes them (issue 40), on every example in parameters and in
@@ -242,6 +295,19 @@ private slots:
                 if (item.name == "equation_1") eq1 = renderDisplay(*item.equation, DisplayStyle::Text);
             }
         QVERIFY2(C.find("−m2 a1 ℓc2 s2 (q̇1 + q̇2)") != std::string::npos, C.c_str());
+        // Entry by entry as the scene's description and the textbook write them.
+        const DisplayPtr B = [&] {
+            for (const DisplayStep& step : doc->steps)
+                for (const DisplayItem& item : step.items)
+                    if (item.name == "B") return item.value;
+            return DisplayPtr{};
+        }();
+        QVERIFY(B && B->kind == DisplayKind::Matrix);
+        const auto entry = [&](int i, int j) { return QString::fromStdString(renderDisplay(*B->rows[i][j], DisplayStyle::Text)); };
+        QCOMPARE(entry(0, 0), QString("I1 + m1 ℓc1² + I2 + m2 (a1² + ℓc2² + 2 a1 ℓc2 c2)"));
+        QCOMPARE(entry(0, 1), QString("I2 + m2 (ℓc2² + a1 ℓc2 c2)"));
+        QCOMPARE(entry(1, 0), entry(0, 1));
+        QCOMPARE(entry(1, 1), QString("I2 + m2 ℓc2²"));
         QVERIFY2(eq1.find("− m2 a1 ℓc2 s2 (2 q̇1 q̇2 + q̇2²)") != std::string::npos, eq1.c_str());
     }
 

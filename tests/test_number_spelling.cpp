@@ -1,10 +1,12 @@
-// number_spelling: scene decimals (exact rationals after parsing) shown as decimals
-// again, other fractions kept, checked on the textbook cases and against the rule
-// written out here with GiNaC's own map (the independent implementation) on random
-// sums; and how one number reads in each style (6 significant digits shown, 17 in
+// number_spelling: which rationals read as decimals (a scene's typed values and what its
+// arithmetic makes of them) and which stay fractions (the formulas' ½, 1/12, 2/5),
+// checked on the textbook cases and against the rule written out here again in
+// machine integers (the independent implementation) on random rationals; and how one
+// number reads in each style (6 significant digits shown, 17 in Plain, exact rationals in
 // Plain, powers of ten apart).
 #include <QtTest>
 
+#include <numeric>
 #include <random>
 
 #include <ginac/ginac.h>
@@ -18,37 +20,34 @@ using GiNaC::ex, GiNaC::numeric;
 
 namespace {
 
-// The rule: when a fraction with a denominator over 8 made only of 2s and 5s occurs
-// (a scene decimal), every fraction whose denominator is made only of 2s and 5s
-// becomes a float, wherever it is.
-bool onlyTwosAndFives(numeric d) {
-    while (GiNaC::irem(d, 2).is_zero()) d = d / 2;
-    while (GiNaC::irem(d, 5).is_zero()) d = d / 5;
-    return d.is_equal(1);
+// The rule in long long: p/q in lowest terms (q > 0) is formula made when |p| ≤ 12,
+// q ≤ 240, q has no prime but 2, 3, 5, 7, at most one 5, and then p ∈ {1, 2, 4, 8}.
+bool referenceFormulaMade(long long p, long long q) {
+    p = std::llabs(p);
+    if (p > 12 || q > 240) return false;
+    long long rest = q;
+    int fives = 0;
+    for (long long prime : {2, 3, 5, 7})
+        while (rest % prime == 0) {
+            rest /= prime;
+            if (prime == 5) ++fives;
+        }
+    if (rest != 1 || fives > 1) return false;
+    return fives == 0 || p == 1 || p == 2 || p == 4 || p == 8;
 }
-bool finiteDecimal(const numeric& v) { return v.is_rational() && !v.is_integer() && onlyTwosAndFives(v.denom()); }
 
-struct Reference : GiNaC::map_function {
-    ex operator()(const ex& x) override {
-        if (GiNaC::is_a<numeric>(x)) return finiteDecimal(GiNaC::ex_to<numeric>(x)) ? GiNaC::ex_to<numeric>(x).evalf() : x;
-        return x.map(*this);
+// Decimal when not formula made, or |p/q| = k · t for a typed t = a/b and k ∈ {¼, ½, 1,
+// 2, 4} (a typed ½ or ¼ only standing alone): |p| b · 4 = k·4 · a q.
+bool referenceDecimal(long long p, long long q, const std::vector<std::pair<long long, long long>>& typed, bool alone) {
+    if (q == 1) return false;
+    if (!referenceFormulaMade(p, q)) return true;
+    for (auto [a, b] : typed) {
+        if (!alone && ((a == 1 && b == 2) || (a == 1 && b == 4))) continue;
+        for (long long k4 : {1, 2, 4, 8, 16})
+            if (std::llabs(p) * b * 4 == k4 * a * q) return true;
     }
-};
-bool hasSceneDecimal(const ex& e) {
-    if (GiNaC::is_a<numeric>(e)) {
-        const numeric& v = GiNaC::ex_to<numeric>(e);
-        return finiteDecimal(v) && v.denom() > 8;
-    }
-    for (std::size_t i = 0; i < e.nops(); ++i)
-        if (hasSceneDecimal(e.op(i))) return true;
     return false;
 }
-ex reference(const ex& e) {
-    Reference map;
-    return hasSceneDecimal(e) ? map(e) : e;
-}
-
-std::string printed(const ex& e) { return (std::ostringstream() << e).str(); }
 
 }  // namespace
 
@@ -57,58 +56,73 @@ class TestNumberSpelling : public QObject {
 private slots:
     void textbookCases() {
         const auto lock = lockGinac();
-        const GiNaC::symbol a("a"), b("b"), x("x");
-        // The PUMA's a2 = 0.4318 parses as 2159/5000 and prints as 0.4318 again.
-        const ex shown = readableNumbers(numeric(2159, 5000) * a);
-        QVERIFY(GiNaC::is_a<GiNaC::mul>(shown) && GiNaC::is_a<numeric>(shown.op(1)));
-        QVERIFY(!GiNaC::ex_to<numeric>(shown.op(1)).is_rational());
-        QCOMPARE(GiNaC::ex_to<numeric>(shown.op(1)).to_double(), 0.4318);
-        // Without a scene decimal a textbook fraction stays one: 1/2 m ℓ², 3/8.
-        QVERIFY(readableNumbers(numeric(1, 2) * a + numeric(3, 8) * b).is_equal(numeric(1, 2) * a + numeric(3, 8) * b));
-        // With one, 1/2 shows as 0.5 beside it; 1/3 has no finite decimal and stays.
-        const ex mixed = readableNumbers(numeric(1, 10) * a + numeric(1, 2) * b + numeric(1, 3) * x);
-        QVERIFY(mixed.is_equal(ex(numeric(1, 10)).evalf() * a + ex(numeric(1, 2)).evalf() * b + numeric(1, 3) * x));
-        // Denominators past a machine word: 2^70 is a decimal fraction, 3·2^70 is not.
-        const numeric big = GiNaC::ex_to<numeric>(GiNaC::pow(numeric(2), 70));
-        QVERIFY(isDecimalFraction(1 / big) && !isDecimalFraction(1 / (3 * big)) && !isDecimalFraction(numeric(1, 3)));
-        QVERIFY(isDecimalFraction(numeric(7, 1000)) && !isDecimalFraction(numeric(3, 8)));  // 3/8: a textbook fraction
+        const NumberSpelling none, puma({numeric(2159, 5000)}), arm({numeric(11, 8), numeric(1, 2)});
+        // The PUMA's a2 = 0.4318 parses as 2159/5000 and reads 0.4318 again; Plain keeps it exact.
+        const DisplayPtr a2 = puma.node(numeric(2159, 5000));
+        QCOMPARE(renderDisplay(*a2, DisplayStyle::Text), std::string("0.4318"));
+        QCOMPARE(renderDisplay(*a2, DisplayStyle::Plain), std::string("(2159/5000)"));
+        QCOMPARE(renderDisplay(*puma.node(numeric(-2159, 5000)), DisplayStyle::Text), std::string("−0.4318"));
+        // The formulas' fractions stay: ½ of E_kin, a rod's 1/12, a sphere's 2/5, ½·⅕, ⅓·2/5.
+        for (const numeric& f : {numeric(1, 2), numeric(1, 12), numeric(2, 5), numeric(1, 10), numeric(2, 15), numeric(3, 8), numeric(5, 3)})
+            QVERIFY2(!none.decimal(f) && !puma.decimal(f), qPrintable(QString::fromStdString((std::ostringstream() << f).str())));
+        // What a scene's decimals make: 9.8 = 49/5, 0.3·0.2 = 3/50, 0.7 + 0.2 = 9/10, 0.01/12 = 1/1200.
+        for (const numeric& d : {numeric(49, 5), numeric(3, 50), numeric(9, 10), numeric(1, 1200), numeric(21, 100)})
+            QVERIFY2(none.decimal(d), qPrintable(QString::fromStdString((std::ostringstream() << d).str())));
+        // A typed 1.375 reads as typed, and so do its half and double; not 11/24.
+        QVERIFY(arm.decimal(numeric(11, 8)) && arm.decimal(numeric(11, 16)) && arm.decimal(numeric(11, 4)));
+        QVERIFY(!arm.decimal(numeric(11, 24)) && !none.decimal(numeric(11, 8)));
+        // A typed 0.5 reads 0.5 standing alone (a DH entry), ½ inside an expression.
+        QVERIFY(arm.decimal(numeric(1, 2), true) && !arm.decimal(numeric(1, 2), false));
+        QCOMPARE(renderDisplay(*arm.node(numeric(1, 2), true), DisplayStyle::Text), std::string("0.5"));
+        QCOMPARE(renderDisplay(*arm.node(numeric(1, 2)), DisplayStyle::Text), std::string("1/2"));
+        // Integers and floats are not rationals to spell.
+        QVERIFY(!none.decimal(numeric(7)) && !none.decimal(numeric(0.25)));
     }
 
-    // Random sums as the printers meet them: monomials with integer powers, and with a
-    // square root, a number inside a function or a nested sum.
-    void sameAsTheMapOnRandomSums() {
+    // The rule against its re-statement in machine integers, on random rationals and
+    // random typed values (a scene's 0.15, 1.375, 9.81 and the like).
+    void sameAsTheReferenceOnRandomRationals() {
         const auto lock = lockGinac();
-        const GiNaC::symbol s[] = {GiNaC::symbol("m2"), GiNaC::symbol("c2"), GiNaC::symbol("s3"), GiNaC::symbol("qd1"),
-                                   GiNaC::symbol("qd2"), GiNaC::symbol("Ixx4")};
-        const numeric big = GiNaC::ex_to<numeric>(GiNaC::pow(numeric(2), 70));
-        const numeric coefficients[] = {1, -1, 2, numeric(1, 2), numeric(1, 3), numeric(2159, 5000), numeric(3, 8),
-                                        numeric(-7, 1000), numeric(-1, 5), 1 / big, 1 / (3 * big), numeric(1, 12)};
-        std::mt19937 rng(20261124);
-        std::uniform_int_distribution<int> pick(0, 5), coefficient(0, static_cast<int>(std::size(coefficients)) - 1),
-            factors(0, 4), odd(0, 9), power(1, 3);
-        int plain = 0, others = 0;
-        for (int k = 0; k < 400; ++k) {
-            ex sum = 0;
-            const bool mayBeUnusual = odd(rng) < 5;
-            bool unusual = false;
-            for (int t = std::uniform_int_distribution<int>(1, 40)(rng); t > 0; --t) {
-                ex term = coefficients[coefficient(rng)];
-                for (int f = factors(rng); f > 0; --f) term *= GiNaC::pow(s[pick(rng)], power(rng));
-                switch (mayBeUnusual ? odd(rng) : 9) {
-                case 0: term *= GiNaC::sqrt(s[pick(rng)]); unusual = true; break;
-                case 1: term *= GiNaC::sin(s[pick(rng)] + coefficients[coefficient(rng)]); unusual = true; break;
-                case 2: term *= s[pick(rng)] + coefficients[coefficient(rng)] * s[pick(rng)]; unusual = true; break;
-                default: break;
-                }
-                sum += term;
+        std::mt19937 rng(20261127);
+        std::uniform_int_distribution<long long> numer(-300, 300), denom(1, 2400), typedDigits(1, 2000);
+        int decimals = 0, fractions = 0;
+        for (int scene = 0; scene < 40; ++scene) {
+            std::vector<std::pair<long long, long long>> typed;
+            std::vector<numeric> typedExact;
+            for (int k = std::uniform_int_distribution<int>(0, 4)(rng); k > 0; --k) {
+                const long long a = typedDigits(rng), b = std::vector<long long>{2, 4, 5, 10, 100, 1000}[rng() % 6];
+                const long long g = std::gcd(a, b);
+                if (b / g == 1) continue;  // an integer is not a typed decimal
+                typed.emplace_back(a / g, b / g);
+                typedExact.push_back(numeric(a / g, b / g));
             }
-            if (odd(rng) < 3) sum += coefficients[coefficient(rng)];  // a number term
-            const ex expected = reference(sum), got = readableNumbers(sum);
-            QVERIFY2(got.is_equal(expected), (printed(sum) + "\n  gave " + printed(got) + "\n  not  " + printed(expected)).c_str());
-            QCOMPARE(QString::fromStdString(printed(got)), QString::fromStdString(printed(expected)));
-            (unusual ? others : plain) += hasSceneDecimal(sum) && GiNaC::is_a<GiNaC::add>(sum);
+            if (scene % 5 == 0) {  // a typed 0.5 now and then
+                typed.emplace_back(1, 2);
+                typedExact.push_back(numeric(1, 2));
+            }
+            const NumberSpelling spelling(typedExact);
+            for (int k = 0; k < 500; ++k) {
+                long long p = numer(rng), q = denom(rng);
+                if (p == 0) continue;
+                if (k % 3 == 0 && !typed.empty()) {  // near a typed value: k · t
+                    const auto [a, b] = typed[rng() % typed.size()];
+                    const long long mul[] = {1, 1, 2, 1, 4, 3}, div[] = {1, 2, 1, 4, 1, 1};
+                    const int pick = static_cast<int>(rng() % 6);
+                    p = a * mul[pick];
+                    q = b * div[pick];
+                }
+                const long long g = std::gcd(std::llabs(p), q);
+                p /= g;
+                q /= g;
+                const bool alone = k % 2 == 0;
+                const bool expected = referenceDecimal(p, q, typed, alone);
+                QVERIFY2(spelling.decimal(numeric(p, q), alone) == expected,
+                         qPrintable(QString("%1/%2 alone=%3: expected %4").arg(p).arg(q).arg(alone).arg(expected)));
+                QCOMPARE(formulaMade(numeric(p, q)), q != 1 && referenceFormulaMade(p, q) || (q == 1 && std::llabs(p) <= 12));
+                (expected ? decimals : fractions) += 1;
+            }
         }
-        QVERIFY2(plain >= 50 && others >= 50, qPrintable(QString("%1 plain sums, %2 others").arg(plain).arg(others)));
+        QVERIFY2(decimals > 1000 && fractions > 100, qPrintable(QString("%1 decimals, %2 fractions").arg(decimals).arg(fractions)));
     }
 
     // One number in the three styles: at most 6 significant digits shown (a scene's

@@ -27,6 +27,8 @@ DisplayOptions optionsFor(const Derivation& d, bool forPages) {
     o.names.trigSymbols = d.system == symbolic::SystemKind::Robot;
     o.names.links = d.symbolLinks;
     o.cutLongSums = forPages;
+    o.readableNumbers = true;
+    o.typedDecimals = d.typedDecimals;
     return o;
 }
 

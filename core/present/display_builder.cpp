@@ -50,6 +50,40 @@ numeric degreeOf(const ex& e) {
     return 1;
 }
 
+bool isUnit(const numeric& k) { return GiNaC::abs(k).is_equal(1); }
+
+// How many numbers other than ±1 (exponents aside) show in e when a product's
+// coefficient goes back into its one sum wherever fewer show then (as product() does).
+std::size_t numbersShown(const ex& e) {
+    if (is_a<numeric>(e)) return isUnit(ex_to<numeric>(e)) ? 0 : 1;
+    if (is_a<GiNaC::power>(e)) return numbersShown(e.op(0));
+    if (is_a<GiNaC::add>(e)) {
+        std::size_t n = 0;
+        for (const ex& t : e) n += numbersShown(t);
+        return n;
+    }
+    if (!is_a<GiNaC::mul>(e)) return 0;
+    numeric k = 1;
+    std::size_t others = 0, sums = 0;
+    ex sum;
+    for (const ex& f : e) {
+        if (is_a<numeric>(f)) {
+            k = ex_to<numeric>(f);
+        } else if (is_a<GiNaC::add>(f)) {
+            sum = f;
+            ++sums;
+            others += numbersShown(f);
+        } else {
+            others += numbersShown(f);
+        }
+    }
+    if (isUnit(k)) return others;
+    if (sums != 1) return others + 1;
+    GiNaC::exvector terms;
+    for (const ex& t : sum) terms.push_back(t * k);
+    return std::min(others + 1, others - numbersShown(sum) + numbersShown(GiNaC::add(terms)));
+}
+
 }  // namespace
 
 struct DisplayBuilder::Symbol {
@@ -80,18 +114,26 @@ struct DisplayBuilder::Term {
     bool more = false;  // "⋯ (N more terms)" of a cut sum
 };
 
-DisplayBuilder::DisplayBuilder(DisplayOptions options) : options_(std::move(options)) {}
+DisplayBuilder::DisplayBuilder(DisplayOptions options)
+    : options_(std::move(options)), numbers_(options_.typedDecimals) {}
 DisplayBuilder::~DisplayBuilder() = default;
 
-DisplayPtr DisplayBuilder::operator()(const ex& input) {
-    const ex e = options_.readableNumbers ? readableNumbers(input) : input;
-    if (!is_a<GiNaC::matrix>(e)) return node(e);
+DisplayPtr DisplayBuilder::number(const numeric& n, bool standalone) const {
+    return options_.readableNumbers ? numbers_.node(n, standalone) : numberNode(n);
+}
+
+bool DisplayBuilder::decimal(const numeric& n) const { return options_.readableNumbers && numbers_.decimal(n); }
+
+DisplayPtr DisplayBuilder::operator()(const ex& e) {
+    // A number standing alone (a DH entry 0.5) reads as typed.
+    const auto entry = [this](const ex& x) { return is_a<numeric>(x) ? number(ex_to<numeric>(x), true) : node(x); };
+    if (!is_a<GiNaC::matrix>(e)) return entry(e);
     const GiNaC::matrix& m = ex_to<GiNaC::matrix>(e);
     auto n = std::make_shared<DisplayNode>();
     n->kind = DisplayKind::Matrix;
     n->rows.assign(m.rows(), std::vector<DisplayPtr>(m.cols()));
     for (unsigned i = 0; i < m.rows(); ++i)
-        for (unsigned j = 0; j < m.cols(); ++j) n->rows[i][j] = node(m(i, j));
+        for (unsigned j = 0; j < m.cols(); ++j) n->rows[i][j] = entry(m(i, j));
     return n;
 }
 
@@ -111,7 +153,7 @@ DisplayBuilder::Symbol& DisplayBuilder::symbol(const GiNaC::symbol& s) {
 
 DisplayPtr DisplayBuilder::node(const ex& e) {
     if (is_a<GiNaC::add>(e)) return sum(e, false);
-    if (is_a<numeric>(e)) return numberNode(ex_to<numeric>(e));
+    if (is_a<numeric>(e)) return number(ex_to<numeric>(e));
     if (is_a<GiNaC::symbol>(e)) return symbol(ex_to<GiNaC::symbol>(e)).node;
     if (is_a<GiNaC::relational>(e)) {
         struct Op {
@@ -150,7 +192,7 @@ DisplayPtr DisplayBuilder::node(const ex& e) {
 // symbolic exponent, or another GiNaC class.
 DisplayPtr DisplayBuilder::atom(const ex& e) {
     if (is_a<GiNaC::add>(e)) return sum(e, false);
-    if (is_a<numeric>(e)) return numberNode(ex_to<numeric>(e));
+    if (is_a<numeric>(e)) return number(ex_to<numeric>(e));
     if (is_a<GiNaC::constant>(e)) {
         auto n = std::make_shared<DisplayNode>();
         n->kind = DisplayKind::Symbol;
@@ -292,15 +334,17 @@ DisplayBuilder::Product DisplayBuilder::product(const ex& e) {
     else
         one(e);
     // GiNaC keeps a sum's numeric content in front (q̇2 (2a + 4b) is 2 q̇2 (a + 2b)); a
-    // coefficient that is not a formula's (a decimal, 5·10⁻¹⁰) goes back into the sum.
-    if (!p.coef.is_equal(1) && !p.coef.is_equal(-1) && !formulaFactor(p.coef)) {
-        const auto isSum = [](const Factor& f) { return is_a<GiNaC::add>(f.base) && f.exp.is_equal(1); };
-        if (std::count_if(p.num.begin(), p.num.end(), isSum) == 1) {
-            const auto it = std::find_if(p.num.begin(), p.num.end(), isSum);
-            GiNaC::exvector terms;
-            const numeric sign = it->negated ? numeric(-1) : numeric(1);
-            for (const ex& t : it->base) terms.push_back(t * p.coef * sign);
-            const ex distributed = GiNaC::add(terms);
+    // coefficient that is not a formula's (a decimal, 5·10⁻¹⁰) goes back into the sum,
+    // and so does a formula's when fewer numbers show then: the textbook's
+    // m (l² + 2/5 r²), not 1/5 m (5 l² + 2 r²); ½ m (l² + r²) stays.
+    const auto isSum = [](const Factor& f) { return is_a<GiNaC::add>(f.base) && f.exp.is_equal(1); };
+    if (!p.coef.is_equal(1) && !p.coef.is_equal(-1) && std::count_if(p.num.begin(), p.num.end(), isSum) == 1) {
+        const auto it = std::find_if(p.num.begin(), p.num.end(), isSum);
+        GiNaC::exvector terms;
+        const numeric sign = it->negated ? numeric(-1) : numeric(1);
+        for (const ex& t : it->base) terms.push_back(t * p.coef * sign);
+        const ex distributed = GiNaC::add(terms);
+        if (!formulaFactor(p.coef) || decimal(p.coef) || numbersShown(distributed) < 1 + numbersShown(it->base)) {
             p.num.erase(it);
             p.coef = 1;
             if (is_a<GiNaC::add>(distributed)) factor(distributed, 1);
@@ -337,8 +381,8 @@ DisplayPtr DisplayBuilder::factorNode(const Factor& f) {
 // front; a fraction's denominator joins the factors below the line.
 DisplayPtr DisplayBuilder::productNode(const numeric& c, const Product& p) {
     std::vector<DisplayPtr> num, den;
-    if (p.den.empty() || !c.is_rational()) {
-        if (!isOne(c)) num.push_back(numberNode(c));
+    if (p.den.empty() || !c.is_rational() || decimal(c)) {
+        if (!isOne(c)) num.push_back(number(c));
     } else {
         if (c.numer() != 1) num.push_back(numberNode(c.numer()));
         if (c.denom() != 1) den.push_back(numberNode(c.denom()));

@@ -15,6 +15,7 @@
 #include <ginac/ginac.h>
 
 #include "core/present/display_tree.hpp"
+#include "core/present/number_spelling.hpp"
 #include "core/present/symbol_names.hpp"
 #include "core/present/term_order.hpp"
 
@@ -26,8 +27,11 @@ struct DisplayOptions {
     // Symbols drawn as given (the structured form's named quantities: Jx2_4 as
     // J_{P2,x}^{(4)}), by GiNaC name; any other symbol by the naming rules.
     std::shared_ptr<const std::map<std::string, DisplayPtr>> givenSymbols;
-    // Decimal fractions shown as decimals (number_spelling.hpp's readableNumbers).
+    // Numbers spelled as number_spelling.hpp's NumberSpelling reads them (a scene's
+    // decimals as decimals, `typedDecimals` the values the scene typed as decimals); else
+    // as GiNaC holds them (fractions stay fractions).
     bool readableNumbers = false;
+    std::vector<GiNaC::numeric> typedDecimals;
     // Only for pages: a sum of more than maxTypesetTerms terms is built already cut as the
     // typesetter cuts it (its first keptTypesetTerms terms in display order and "⋯ (N more
     // terms)"). Every term is still ordered; the others are never built, which for the
@@ -51,6 +55,8 @@ private:
     struct Symbol;
     struct Factor;
     DisplayPtr node(const GiNaC::ex& e);
+    DisplayPtr number(const GiNaC::numeric& n, bool standalone = false) const;
+    bool decimal(const GiNaC::numeric& n) const;
     DisplayPtr atom(const GiNaC::ex& e);
     DisplayPtr sum(const GiNaC::ex& e, bool negate);
     const std::vector<Term>& orderedTerms(const GiNaC::ex& e);
@@ -62,6 +68,7 @@ private:
     void addToKey(const GiNaC::ex& e, TermKey& key);
 
     DisplayOptions options_;
+    NumberSpelling numbers_;
     // Each symbol's meaning and node, made once per builder: names repeat in every term.
     std::unordered_map<std::string, std::unique_ptr<Symbol>> symbols_;
     // The one memo of ordered sums, by GiNaC object (held, so its address stays its own):

@@ -51,22 +51,14 @@ std::string seventeen(double v) {
     return s;
 }
 
-// `exact`: the Plain spelling when it is not the 17-digit float (an integer's digits).
+// `exact`: the Plain spelling when it is not the 17-digit float (an integer's digits, a
+// rational's (num/den)).
 DisplayPtr decimalNode(double v, const std::string& exact = {}) {
     const std::string s = shown(v), plain = exact.empty() ? seventeen(v) : exact;
     const auto e = s.find('e');
     if (e == std::string::npos) return displayNumber(s, s, plain);
     const std::string mantissa = s.substr(0, e), exponent = std::to_string(std::stoi(s.substr(e + 1)));
     return displayNumber(mantissa, mantissa, plain, exponent);
-}
-
-// A fraction whose decimal expansion ends (denominator 2^a 5^b): 1/5 = 0.2, 3/8 = 0.375.
-bool terminates(const numeric& v) {
-    if (v.is_integer() || !v.is_rational()) return false;
-    numeric d = v.denom();
-    for (int p : {2, 5})
-        while (GiNaC::irem(d, p).is_zero()) d = d / p;
-    return d.is_equal(1);
 }
 
 }  // namespace
@@ -99,30 +91,40 @@ bool formulaFactor(const numeric& c) {
     return n <= 12 && d <= 12 && !GiNaC::irem(d, 10).is_zero();
 }
 
-bool isDecimalFraction(const numeric& v) { return terminates(v) && v.denom() > 8; }
-
-GiNaC::ex readableNumbers(const GiNaC::ex& e, const std::vector<numeric>& typed) {
-    // ½ and ¼ are also the formulas' own (½ q̇ᵀB q̇, the Christoffel ½, ½·½): typed, they
-    // read as decimals only standing alone (a DH entry 0.5), not inside an expression.
-    const auto wasTyped = [&](const numeric& v) {
-        const numeric a = GiNaC::abs(v);
-        if (!terminates(v) || (!GiNaC::is_a<numeric>(e) && (a.is_equal(numeric(1, 2)) || a.is_equal(numeric(1, 4))))) return false;
-        return std::any_of(typed.begin(), typed.end(), [&](const numeric& t) { return t.is_equal(a); });
-    };
-    bool decimal = false;
-    for (auto it = e.preorder_begin(); it != e.preorder_end() && !decimal; ++it)
-        decimal = GiNaC::is_a<numeric>(*it) && (isDecimalFraction(GiNaC::ex_to<numeric>(*it)) || wasTyped(GiNaC::ex_to<numeric>(*it)));
-    if (!decimal) return e;
-    struct Map : GiNaC::map_function {
-        GiNaC::ex operator()(const GiNaC::ex& x) override {
-            if (GiNaC::is_a<numeric>(x)) {
-                const numeric& v = GiNaC::ex_to<numeric>(x);
-                return terminates(v) ? v.evalf() : x;
-            }
-            return x.map(*this);
+bool formulaMade(const numeric& v) {
+    if (!v.is_rational()) return false;
+    if (GiNaC::abs(v.numer()) > 12 || v.denom() > 240) return false;
+    numeric d = v.denom();
+    int fives = 0;
+    for (int p : {2, 3, 5, 7})
+        while (GiNaC::irem(d, p).is_zero()) {
+            d = d / p;
+            fives += p == 5;
         }
-    } map;
-    return map(e);
+    if (!d.is_equal(1) || fives > 1) return false;
+    // A 5 in the denominator comes from a sphere's 2/5 times ½s and ⅓s: 1/5, 1/10, 4/5,
+    // 2/15; 9/10 and 3/10 are a scene's decimals.
+    const numeric n = GiNaC::abs(v.numer());
+    return fives == 0 || n == 1 || n == 2 || n == 4 || n == 8;
+}
+
+NumberSpelling::NumberSpelling(std::vector<numeric> typed) : typed_(std::move(typed)) {}
+
+bool NumberSpelling::decimal(const numeric& n, bool standalone) const {
+    if (!n.is_rational() || n.is_integer()) return false;
+    const numeric a = GiNaC::abs(n);
+    if (!formulaMade(a)) return true;
+    return std::any_of(typed_.begin(), typed_.end(), [&](const numeric& t) {
+        if (!standalone && (t.is_equal(numeric(1, 2)) || t.is_equal(numeric(1, 4)))) return false;
+        const numeric k = a / t;
+        return k.is_equal(1) || k.is_equal(2) || k.is_equal(numeric(1, 2)) || k.is_equal(4) || k.is_equal(numeric(1, 4));
+    });
+}
+
+DisplayPtr NumberSpelling::node(const numeric& n, bool standalone) const {
+    if (!n.is_real() || !decimal(n, standalone)) return numberNode(n);
+    if (n.is_negative()) return displayNegated(node(-n, standalone));
+    return decimalNode(n.to_double(), "(" + str(n) + ")");
 }
 
 }  // namespace ll::present

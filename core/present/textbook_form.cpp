@@ -18,6 +18,17 @@ constexpr std::size_t maxShapedTerms = 300;
 
 std::size_t termCount(const ex& e) { return is_a<GiNaC::add>(e) ? e.nops() : 1; }
 
+// How long e reads: its symbols, functions and numbers other than ±1, each counted
+// where it occurs.
+std::size_t size(const ex& e) {
+    std::size_t n = 0;
+    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
+        if (is_a<GiNaC::symbol>(*it) || is_a<GiNaC::function>(*it) || is_a<GiNaC::constant>(*it) ||
+            (is_a<numeric>(*it) && !GiNaC::abs(ex_to<numeric>(*it)).is_equal(1)))
+            ++n;
+    return n;
+}
+
 // m, m1, m_cart: a mass, by the naming rules of derivation.hpp.
 bool isMassName(const std::string& name, std::string& digits) {
     digits = name.substr(std::min<std::size_t>(1, name.size()));
@@ -101,7 +112,7 @@ ex TextbookForm::operator()(const ex& value, Grouping grouping) {
     // Shaping (sines for cosines, angle sums) costs more than linear time and only
     // pays off on entries a reader can follow: larger ones stay as derived.
     ex e = value.expand();
-    if (termCount(e) > maxShapedTerms) return shaped.emplace(value, readableNumbers(e, d_.typedDecimals)).first->second;
+    if (termCount(e) > maxShapedTerms) return shaped.emplace(value, e).first->second;
     e = robot_ ? combiner_.combine(shorterInSines(e)) : shorterInSines(e);
     // Robots pull a common factor out (m2 a1 ℓc2 s2 (…)); a typed Lagrangian keeps its
     // parameters inside, so the notes' spring term reads K2 (θ1 − θ2).
@@ -110,7 +121,11 @@ ex TextbookForm::operator()(const ex& value, Grouping grouping) {
     const std::vector<GiNaC::symbol> groupBy = grouping == Grouping::Velocities ? d_.qd
                                                : grouping == Grouping::Masses   ? massSymbols(e)
                                                                                 : parameters();
-    return shaped.emplace(value, common * readableNumbers(collectForDisplay(e, groupBy), d_.typedDecimals)).first->second;
+    e = common * collectForDisplay(e, groupBy);
+    // A typed Lagrangian's expression reads as typed (½ K2 (θ1 − θ2)²) unless its shaped
+    // form is shorter; its expansion shows where a step makes it (∂L/∂θ1).
+    if (!robot_ && size(value) <= size(e)) e = value;
+    return shaped.emplace(value, e).first->second;
 }
 
 std::vector<ex> TextbookForm::equationParts(int i) {

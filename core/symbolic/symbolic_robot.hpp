@@ -52,7 +52,7 @@ struct SymbolicRobot {
     std::vector<std::pair<std::string, double>> motorSymbols;
     GiNaC::lst parameterValues;              // symbol == value for every symbol introduced
     // The numbers the scene typed as decimals, made exact (1.375 → 11/8, 9.8 → 49/5): shown
-    // as typed wherever they appear (number_spelling.hpp's readableNumbers).
+    // as typed wherever they appear (number_spelling.hpp's NumberSpelling).
     std::vector<GiNaC::numeric> typedDecimals;
 };
 
