@@ -63,4 +63,46 @@ Eigen::VectorXd Options::vector(const std::string& name, int size) const {
     return Eigen::Map<Eigen::VectorXd>(values.data(), size);
 }
 
+namespace {
+bool givenLanguage = false, givenNotation = false;
+present::Presentation& chosen() {
+    static present::Presentation p{present::languageFromEnvironment(), present::Notation::Notes};
+    return p;
+}
+}  // namespace
+
+void takePresentation(std::vector<std::string>& args, bool codegen) {
+    for (std::size_t k = 0; k < args.size();) {
+        const bool lang = args[k] == "--lang", notation = args[k] == "--notation";
+        if (!lang && !notation) {
+            ++k;
+            continue;
+        }
+        if (k + 1 >= args.size()) throw UsageError(args[k] + ": needs a value");
+        const std::string value = args[k + 1];
+        if (lang) {
+            const auto l = present::languageNamed(value);
+            if (!l || value == "C" || value == "POSIX") {
+                if (codegen) {  // codegen's own --lang c|python
+                    k += 2;
+                    continue;
+                }
+                throw UsageError("--lang: expected da or en, got '" + value + "'");
+            }
+            chosen().language = *l;
+            givenLanguage = true;
+        } else {
+            const auto n = present::notationNamed(value);
+            if (!n) throw UsageError("--notation: expected notes, siciliano, spong or craig, got '" + value + "'");
+            chosen().notation = *n;
+            givenNotation = true;
+        }
+        args.erase(args.begin() + static_cast<std::ptrdiff_t>(k), args.begin() + static_cast<std::ptrdiff_t>(k) + 2);
+    }
+}
+
+const present::Presentation& presentation() { return chosen(); }
+bool languageGiven() { return givenLanguage; }
+bool notationGiven() { return givenNotation; }
+
 }  // namespace ll::cli

@@ -8,6 +8,8 @@
 
 #include <Eigen/Core>
 
+#include "core/present/localized_document.hpp"
+
 namespace ll::cli {
 
 // Bad command-line input: exit code 2, one line.
@@ -36,5 +38,15 @@ private:
 };
 
 double parseNumber(const std::string& option, const std::string& text);
+
+// The language and notation every command takes (`--lang da|en`, `--notation
+// notes|siciliano|spong|craig`), taken out of `args`; without --lang, LANGUAGE, LC_ALL,
+// LC_MESSAGES and LANG decide as Debian's tools read them (English by default). codegen's
+// own --lang c|python is left in place. The process keeps it: presentation().
+void takePresentation(std::vector<std::string>& args, bool codegen);
+const present::Presentation& presentation();
+// Whether --lang / --notation was given (else the environment's language, the notes').
+bool languageGiven();
+bool notationGiven();
 
 }  // namespace ll::cli

@@ -88,6 +88,7 @@ int deriveCommand(const Args& args) {
                    : options.has("numeric") ? ParameterMode::Numeric
                                             : ParameterMode::Parametric;
     request.firstStep = range.first;
+    request.presentation = presentation();
     request.lastStep = range.last;
     request.format = format == "text" ? DocumentFormat::Text : format == "latex" ? DocumentFormat::Latex : DocumentFormat::Json;
     const DerivationForm chosenForm =
@@ -99,7 +100,7 @@ int deriveCommand(const Args& args) {
         request.forPages = true;  // long sums built as the pages cut them
         const DerivedDocument derived = inSceneFile(options.positional()[0], [&] { return deriveDisplay(scene, request, chosenForm); });
         report(derived, timings);
-        return writeDerivationPages(*derived.display, format, options.text("out"), timings);
+        return writeDerivationPages(*present::localizedDocument(*derived.display, presentation()), format, options.text("out"), timings);
     }
     FormRequest formRequest;
     formRequest.document = request;

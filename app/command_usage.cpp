@@ -20,7 +20,8 @@ constexpr std::array<CommandText, 10> commands{{
      "integrate the equations of motion; trajectory to --out or CSV on stdout, summary on stderr"},
     {"derive",
      "SCENE [--format text|latex|json|pdf|svg|png] [--out FILE] [--steps 0-8] [--symbolic] [--numeric] [--timings]\n"
-     "[--form auto|structured|expanded] [--entry B11,C23,g4] [--verify]",
+     "[--form auto|structured|expanded] [--entry B11,C23,g4] [--verify] [--lang da|en]\n"
+     "[--notation notes|siciliano|spong|craig]",
      "the model step by step as the course notes derive it (symbolic, GiNaC); structured\n"
      "(named link quantities) for large robots, single entries expanded on demand"},
     {"codegen", "SCENE --lang c|python [--out FILE] [--numeric]",

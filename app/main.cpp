@@ -67,10 +67,14 @@ int main(int argc, char** argv) {
             std::fputs("error: no display: the window needs an X server (set DISPLAY, run under xvfb-run, or use `lagrangelab render`)\n", stderr);
             return 2;
         }
-        return reportingErrors([&] { return windowCommand(Args(argv + 1, argv + argc), processStart); });
+        return reportingErrors([&] {
+            Args args(argv + 1, argv + argc);
+            takePresentation(args, false);
+            return windowCommand(args, processStart);
+        });
     }
     const std::string command = argv[1];
-    const Args args(argv + 2, argv + argc);
+    Args args(argv + 2, argv + argc);
     // `lagrangelab COMMAND --help`: that command's usage, whatever else is given
     // (`help X --help` is X's usage, below).
     if (command != "help" && !commandUsage(command).empty() && std::any_of(args.begin(), args.end(), isHelp)) {
@@ -93,6 +97,7 @@ int main(int argc, char** argv) {
         return 0;
     }
     return reportingErrors([&] {
+        takePresentation(args, command == "codegen");
         if (command == "eval") return evalCommand(args);
         if (command == "simulate") return simulateCommand(args);
         if (command == "integrators") return integratorsCommand(args);

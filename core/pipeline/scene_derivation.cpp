@@ -53,7 +53,7 @@ DerivedDocument deriveDocument(const Scene& scene, const DocumentRequest& reques
         if (request.catalogue) out.catalogue = expandedCatalogue(scene, d, *display);
         out.display = std::move(display);
     } else {
-        out.document = present::derivationDocument(d, request.format, modeName(request.mode), request.form);
+        out.document = present::derivationDocument(d, request.format, modeName(request.mode), request.form, request.presentation);
     }
     out.printSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - printing).count();
     for (const symbolic::DerivationStep& step : d.steps) out.timings.push_back({step.number, step.title, step.seconds});

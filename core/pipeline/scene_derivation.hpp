@@ -31,6 +31,9 @@ struct DocumentRequest {
     // for format Display: also trace and compile the entries the document shows, for
     // picking them (entry_catalogue.hpp)
     bool catalogue = false;
+    // for formats Text, Latex and Json: the language and notation written (Display gives
+    // the trees as derived; their readers apply it with present::localizedDocument)
+    present::Presentation presentation;
 };
 
 struct StepTiming {

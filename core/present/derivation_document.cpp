@@ -8,6 +8,7 @@
 #include "core/present/latex_document.hpp"
 #include "core/present/latex_formula.hpp"
 #include "core/present/latex_text.hpp"
+#include "core/present/localized_document.hpp"
 #include "core/present/text_document.hpp"
 #include "core/present/textbook_form.hpp"
 #include "core/symbolic/ginac_lock.hpp"
@@ -51,15 +52,12 @@ DisplayItem displayItem(const Derivation& d, const DerivationItem& item, Textboo
     return out;
 }
 
-const char* const massMatrixFormula =
-    R"(,\quad B(q) = \sum_i \left(m_i\, J_{P,i}^T J_{P,i} + J_{O,i}^T R_i\, I_{li}\, R_i^T J_{O,i}\right))";
-
 // A step as displayed, without its items yet: the notes' general formula typeset; a
 // robot's step 7 also gives B as the notes sum it.
 DisplayStep stepHead(const Derivation& d, const DerivationStep& step) {
     DisplayStep s{step.number, step.title, step.formulaText, step.formulaLatex, {}, step.seconds, {}};
     const bool sumsB = d.system == symbolic::SystemKind::Robot && step.number == 7;
-    s.formula = formulaFromLatex(step.formulaLatex + (sumsB ? massMatrixFormula : ""), step.formulaText);
+    s.formula = formulaFromLatex(step.formulaLatex + (sumsB ? massMatrixSum(notationSymbols(Notation::Notes)) : ""), step.formulaText);
     return s;
 }
 
@@ -68,20 +66,9 @@ std::shared_ptr<DisplayDocument> shapeDocument(const Derivation& d, TextbookForm
     auto doc = std::make_shared<DisplayDocument>();
     doc->systemName = d.systemName;
     doc->coordinateNames = d.coordinateNames;
-    // The coordinates named as the results show them (a typed Lagrangian's theta2 is θ2).
-    const DisplayOptions names = optionsFor(d, false);
-    std::vector<std::string> shown, latex, marks;
-    for (const std::string& name : d.coordinateNames) {
-        const DisplayPtr symbol = symbolNode(name, symbolMeaning(name, names.names), names.names);
-        shown.push_back(renderDisplay(*symbol, DisplayStyle::Text));
-        latex.push_back("$" + renderDisplay(*symbol, DisplayStyle::Latex) + "$");
-        marks.push_back("@" + std::to_string(marks.size()) + "@");
-    }
-    doc->actuation = actuationText(d.actuated, shown);
-    doc->actuationLatex = latexText(actuationText(d.actuated, marks));  // the prose escaped, then the math put in
-    for (std::size_t k = marks.size(); k-- > 0;)
-        for (std::size_t at; (at = doc->actuationLatex.find(marks[k])) != std::string::npos;)
-            doc->actuationLatex.replace(at, marks[k].size(), latex[k]);
+    doc->actuated = d.actuated;
+    doc->robot = d.system == symbolic::SystemKind::Robot;
+    doc->modifiedDH = d.modifiedDH;
     for (const DerivationStep& step : d.steps) {
         DisplayStep& shown = doc->steps.emplace_back(stepHead(d, step));
         for (const DerivationItem& item : step.items) {
@@ -89,7 +76,7 @@ std::shared_ptr<DisplayDocument> shapeDocument(const Derivation& d, TextbookForm
             shown.items.push_back(displayItem(d, item, form, build));
         }
     }
-    return doc;
+    return localizedDocument(*doc, {});  // English, the notes' notation: the actuation sentence
 }
 
 }  // namespace
@@ -107,14 +94,16 @@ std::string renderDocument(const DisplayDocument& document, DocumentFormat forma
     return {};
 }
 
-std::string derivationDocument(const Derivation& d, DocumentFormat format, const std::string& modeName, const FormNote& note) {
+std::string derivationDocument(const Derivation& d, DocumentFormat format, const std::string& modeName, const FormNote& note,
+                               const Presentation& presentation) {
     if (format == DocumentFormat::Display) return {};
     const auto lock = symbolic::lockGinac();
     DisplayBuilder build(optionsFor(d, false));
     TextbookForm form(d);
-    const std::shared_ptr<DisplayDocument> doc = shapeDocument(d, form, build, nullptr);
+    std::shared_ptr<DisplayDocument> doc = shapeDocument(d, form, build, nullptr);
     doc->form = note.form;
     doc->formReason = note.reason;
+    doc = localizedDocument(*doc, presentation);
     if (format != DocumentFormat::Json) return renderDocument(*doc, format);
     const auto shown = [&](const GiNaC::ex& value, symbolic::Grouping grouping) { return build(form(value, grouping)); };
     ModelSummary model;

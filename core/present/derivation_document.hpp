@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/present/display_document.hpp"
+#include "core/present/localized_document.hpp"
 #include "core/symbolic/derivation.hpp"
 
 namespace ll::present {
@@ -25,10 +26,10 @@ struct FormNote {
     std::string form, reason;
 };
 
-// The derivation in Text, Latex or Json (Display gives ""); modeName ("parameters",
-// "numeric", "symbolic") is recorded in the JSON.
+// The derivation in Text, Latex or Json (Display gives ""), in the presentation's language
+// and notation; modeName ("parameters", "numeric", "symbolic") is recorded in the JSON.
 std::string derivationDocument(const symbolic::Derivation& derivation, DocumentFormat format, const std::string& modeName,
-                               const FormNote& form = {});
+                               const FormNote& form = {}, const Presentation& presentation = {});
 
 // A document in Text or Latex from its display trees (no GiNaC: any thread).
 std::string renderDocument(const DisplayDocument& document, DocumentFormat format);

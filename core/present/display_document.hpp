@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "core/present/display_tree.hpp"
+#include "core/present/language.hpp"
+#include "core/present/notation.hpp"
 #include "core/symbolic/derivation.hpp"
 
 namespace ll::present {
@@ -25,6 +27,7 @@ struct DisplayItem {
     DisplayPtr equation;     // label = value (an equation of motion: B q̈ + C q̇ + g = Q)
     DisplayPtr value;        // the right side alone (for a matrix: the Matrix node)
     std::string note;        // what it means, in words (the structured form's names); may be empty
+    std::string entryLetter; // its entries' letter when a notation renames them (d of Spong's D); empty: the quantity's own
 };
 
 struct DisplayStep {
@@ -43,6 +46,15 @@ struct DisplayDocument {
     std::string actuationLatex;  // the same with the coordinates as LaTeX ($\theta_{2}$)
     std::string form;        // "expanded" or "structured" when a form was chosen (empty: not said)
     std::string formReason;  // why that form
+    // As localized_document.hpp wrote it: the language of its words, the notation of its
+    // letters, and what that needs (which coordinates have inputs, a robot's coordinates
+    // are q_i and renamed with the notation, its DH convention).
+    Language language = Language::English;
+    Notation notation = Notation::Notes;
+    std::vector<int> actuated;
+    bool robot = false;
+    bool modifiedDH = false;
+    std::string remark;      // said once about the notation (Craig's goes with modified DH); may be empty
 };
 
 }  // namespace ll::present

@@ -54,7 +54,7 @@ std::string jsonDocument(const DisplayDocument& document, const ModelSummary& mo
             json.beginObject();
             json.member("name", item.name);
             json.member("latex", itemLatex(item));
-            json.member("text", itemText(item));
+            json.member("text", itemText(item, document.language));
             json.key("expr");
             if (item.quantity == Quantity::EquationOfMotion)  // an equation: both sides
                 json.value(renderDisplay(*item.equation, DisplayStyle::Plain));

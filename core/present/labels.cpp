@@ -47,16 +47,17 @@ std::string shownLabelPart(std::string latex) {
     return shownFromLatex(latex);
 }
 
-// The letter a matrix's entries are named with (b for B), or 0 when its entries take the
-// matrix's own name with their indices.
-char entryLetter(Quantity q) {
-    switch (q) {
-        case Quantity::MassMatrix: return 'b';
-        case Quantity::CoriolisMatrix: return 'c';
-        case Quantity::GravityVector: return 'g';
-        case Quantity::GeneralizedForces: return 'Q';
-        case Quantity::Coordinates: return 'q';
-        default: return 0;
+// The letter a matrix's entries are named with (b for B; d for Spong's D, set by the
+// notation), or empty when its entries take the matrix's own name with their indices.
+std::string entryLetter(const DisplayItem& item) {
+    if (!item.entryLetter.empty()) return item.entryLetter;
+    switch (item.quantity) {
+        case Quantity::MassMatrix: return "b";
+        case Quantity::CoriolisMatrix: return "c";
+        case Quantity::GravityVector: return "g";
+        case Quantity::GeneralizedForces: return "Q";
+        case Quantity::Coordinates: return "q";
+        default: return {};
     }
 }
 
@@ -163,7 +164,7 @@ DisplayPtr displayLabel(const std::string& name, const std::string& latexName) {
 
 std::string entryName(const DisplayItem& item, std::size_t r, std::size_t c) {
     const bool column = isColumn(item);
-    if (const char letter = entryLetter(item.quantity))
+    if (const std::string letter = entryLetter(item); !letter.empty())
         return letter + std::to_string(r + 1) + (column ? "" : std::to_string(c + 1));
     std::string name = item.name + "[" + std::to_string(r + 1);
     if (!column) name.append(",").append(std::to_string(c + 1));
@@ -174,8 +175,8 @@ DisplayPtr entryLabel(const DisplayItem& item, std::size_t r, std::size_t c) {
     const std::string indices = std::to_string(r + 1) + (isColumn(item) ? "" : std::to_string(c + 1));
     auto label = std::make_shared<DisplayNode>();
     label->kind = DisplayKind::Symbol;
-    if (const char letter = entryLetter(item.quantity)) {
-        label->text = std::string(1, letter);
+    if (const std::string letter = entryLetter(item); !letter.empty()) {
+        label->text = letter;
         label->subShown = indices;
         return label;
     }

@@ -89,7 +89,7 @@ void itemSpans(const DisplayItem& item, const std::string& text, int first, int 
 
 }  // namespace
 
-std::string itemText(const DisplayItem& item) {
+std::string itemText(const DisplayItem& item, Language language) {
     // A block whose entry alone is wider than a row may be is listed entry by entry
     // without being written as a block first (the expanded Panda's C: megabytes).
     bool tooWide = false;
@@ -105,7 +105,7 @@ std::string itemText(const DisplayItem& item) {
     const auto& rows = item.value->rows;
     const bool zeros = hasZeroEntry(*item.value);  // left out, and said so
     std::string out = item.name + " (" + std::to_string(rows.size()) + "×" + std::to_string(rows.empty() ? 0 : rows[0].size()) +
-                      "), entry by entry" + (zeros ? ", the zeros left out:" : ":");
+                      "), " + translated("entry by entry", language) + (zeros ? ", " + translated("the zeros left out", language) + ":" : ":");
     for (std::size_t r = 0; r < rows.size(); ++r)
         for (std::size_t c = 0; c < rows[r].size(); ++c)
             if (!isZeroNumber(*rows[r][c])) out += "\n  " + entryName(item, r, c) + " = " + renderDisplay(*rows[r][c], DisplayStyle::Text);
@@ -114,21 +114,23 @@ std::string itemText(const DisplayItem& item) {
 
 std::string textDocument(const DisplayDocument& document, std::vector<TextSpan>* spans) {
     std::string out = document.systemName + "\n" + std::string(document.systemName.size(), '=') + "\n";
-    if (!document.form.empty()) out += "Form: " + document.form + " (" + document.formReason + ")\n";
+    const Language l = document.language;
+    if (!document.form.empty()) out += translated("Form", l) + ": " + document.form + " (" + document.formReason + ")\n";
+    if (!document.remark.empty()) out += document.remark + "\n";
     int line = lineCount(out) - 1;  // the line being written
     for (std::size_t s = 0; s < document.steps.size(); ++s) {
         const DisplayStep& step = document.steps[s];
-        const std::string heading = "\nStep " + std::to_string(step.number) + ". " + step.title + "\n    " + step.formulaText + "\n\n";
+        const std::string heading = "\n" + translated("Step", l) + " " + std::to_string(step.number) + ". " + step.title + "\n    " + step.formulaText + "\n\n";
         out += heading;
         line += lineCount(heading) - 1;
         for (std::size_t i = 0; i < step.items.size(); ++i) {
-            const std::string text = itemText(step.items[i]);
+            const std::string text = itemText(step.items[i], l);
             if (spans) itemSpans(step.items[i], text, line, static_cast<int>(s), static_cast<int>(i), *spans);
             out += text + "\n\n";
             line += lineCount(text) + 1;
         }
     }
-    return out + "Actuation: " + document.actuation + "\n";
+    return out + translated("Actuation", l) + ": " + document.actuation + "\n";
 }
 
 }  // namespace ll::present

@@ -23,6 +23,6 @@ struct TextSpan {
 std::string textDocument(const DisplayDocument& document, std::vector<TextSpan>* spans = nullptr);
 
 // One item as the text document prints it.
-std::string itemText(const DisplayItem& item);
+std::string itemText(const DisplayItem& item, Language language = Language::English);
 
 }  // namespace ll::present

@@ -91,6 +91,7 @@ struct Derivation {
     GiNaC::matrix B, C;                // n×n
     GiNaC::matrix g, Q;                // n×1
     GiNaC::ex Ekin, Epot;
+    bool modifiedDH = false;           // a robot's DH table is in the modified (Craig) convention
     std::vector<int> actuated;         // 0-based coordinates with an input
     bool underactuated = false;
     // Substitutions that turn a result into an expression of q, q̇ and the parameter

@@ -178,6 +178,7 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
         d.steps.push_back({number, std::move(title), std::move(text), std::move(latex), std::move(items), seconds});
     };
     const std::string convention = standard ? "standard" : "modified";
+    d.modifiedDH = !standard;
 
     // 0. DH table, with the joint variables in place.
     {

@@ -1,0 +1,34 @@
+#pragma once
+// The language a derivation is written in: English (the core's own words) or Danish, the
+// language the course is taught in. A small table of our own rather than GNU gettext:
+// the core's words a reader sees are a few dozen fixed phrases (step titles, document
+// headings, the actuation sentence), and gettext's lookup follows the process locale,
+// which a fresh Debian often lacks for da_DK (only C.UTF-8 is generated), so `--lang da`
+// would silently stay English. Names of fields (robot.joints[0].mass), symbols and
+// numbers are never translated.
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace ll::present {
+
+enum class Language { English, Danish };
+
+// "en", "da", also a locale name (da_DK.UTF-8, en_GB); nullopt for anything else.
+std::optional<Language> languageNamed(std::string_view name);
+// "en" or "da".
+const char* languageCode(Language language);
+// As gettext reads the environment: the first of LANGUAGE (a colon-separated list),
+// LC_ALL, LC_MESSAGES and LANG that names a language we have; English otherwise.
+Language languageFromEnvironment();
+
+// `english`, one of the core's phrases, in `language`; `english` itself when the table
+// has no translation (a scene's own name, a warning built from values).
+std::string translated(const std::string& english, Language language);
+
+// `text` (a step's general formula, a form's reason) with each of the core's phrases in
+// it in `language`: the phrases around symbols and numbers ("row i:", "Q: non-conservative
+// forces only", "auto: 2 joints: …") that whole-string lookup cannot reach.
+std::string translatedPhrases(std::string text, Language language);
+
+}  // namespace ll::present

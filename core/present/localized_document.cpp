@@ -1,0 +1,170 @@
+#include "core/present/localized_document.hpp"
+
+#include <utility>
+
+#include "core/present/labels.hpp"
+#include "core/present/latex_formula.hpp"
+#include "core/present/latex_text.hpp"
+#include "core/present/symbol_names.hpp"
+
+namespace ll::present {
+namespace {
+
+using Replacements = std::vector<std::pair<std::string, std::string>>;
+
+std::string replaced(std::string s, const Replacements& pairs) {
+    for (const auto& [from, to] : pairs)
+        for (std::size_t at = 0; (at = s.find(from, at)) != std::string::npos; at += to.size()) s.replace(at, from.size(), to);
+    return s;
+}
+
+// The general formulas of steps 7 and 8 (core/symbolic/*_derivation.cpp) in the
+// notation's letters: B(q) q̈ … = Q becomes M(Θ) Θ̈ … = τ.
+Replacements latexLetters(const NotationSymbols& n, bool robot) {
+    Replacements r;
+    if (robot) {
+        r = {{"\\partial q_", "\\partial " + n.coordinateLatex + "_"}, {"\\partial q}", "\\partial " + n.vectorLatex + "}"},
+             {"\\dot{q}_", "\\dot{" + n.coordinateLatex + "}_"},   {"\\ddot{q}", "\\ddot{" + n.vectorLatex + "}"},
+             {"\\dot{q}", "\\dot{" + n.vectorLatex + "}"},          {"B(q)", n.mass + "(" + n.vectorLatex + ")"}};
+    }
+    r.insert(r.end(), {{"B(q)", n.mass + "(q)"},
+                       {"B\\ddot", n.mass + "\\ddot"},
+                       {"B^{-1}", n.mass + "^{-1}"},
+                       {"b_{", n.massEntry + "_{"},
+                       {"g = \\frac", n.gravity + " = \\frac"},
+                       {"+ g = Q", "+ " + n.gravity + " = " + n.forceLatex},
+                       {"(Q - ", "(" + n.forceLatex + " - "},
+                       {"- g)", "- " + n.gravity + ")"}});
+    return r;
+}
+
+Replacements textLetters(const NotationSymbols& n, bool robot) {
+    const std::string q = robot && n.coordinate != "q" ? "theta" : "q", Q = robot && n.vectorLatex != "q" ? "Theta" : "q",
+                      tau = n.force == "τ" ? "tau" : n.force;
+    Replacements r;
+    if (robot)
+        r = {{"dE_pot/dq;", "dE_pot/d" + Q + ";"}, {"/dq_", "/d" + q + "_"}, {" qd_k", " " + q + "d_k"},
+             {"qd^T B(q) qd", Q + "d^T " + n.mass + "(" + Q + ") " + Q + "d"}, {"qdd = B^-1", Q + "dd = B^-1"},
+             {"B qdd + C qd", "B " + Q + "dd + C " + Q + "d"}, {"- C qd -", "- C " + Q + "d -"}};
+    r.insert(r.end(), {{"B(q)", n.mass + "(q)"},
+                       {"db_", "d" + n.massEntry + "_"},
+                       {"b_ij", n.massEntry + "_ij"},
+                       {"g = dE_pot", n.gravity + " = dE_pot"},
+                       {"Q: non-conservative", tau + ": non-conservative"},
+                       {"B ", n.mass + " "},
+                       {"B^-1", n.mass + "^-1"},
+                       {"+ g = Q", "+ " + n.gravity + " = " + tau},
+                       {"(Q - ", "(" + tau + " - "},
+                       {"- g)", "- " + n.gravity + ")"}});
+    return r;
+}
+
+// A robot's joint variables q_i, q̇_i, q̈_i with the notation's letter (Craig's θ_i) in
+// every tree; the nodes not touched are shared.
+DisplayPtr renamed(const DisplayPtr& node, const NotationSymbols& n) {
+    if (!node) return node;
+    if (node->kind == DisplayKind::Symbol && node->text == "q" && !node->subText.empty()) {
+        auto copy = std::make_shared<DisplayNode>(*node);
+        copy->text = n.coordinate;
+        copy->latex = n.coordinateLatex;
+        return copy;
+    }
+    std::shared_ptr<DisplayNode> copy;
+    for (std::size_t k = 0; k < node->children.size(); ++k)
+        if (DisplayPtr c = renamed(node->children[k], n); c != node->children[k]) {
+            if (!copy) copy = std::make_shared<DisplayNode>(*node);
+            copy->children[k] = std::move(c);
+        }
+    for (std::size_t r = 0; r < node->rows.size(); ++r)
+        for (std::size_t k = 0; k < node->rows[r].size(); ++k)
+            if (DisplayPtr c = renamed(node->rows[r][k], n); c != node->rows[r][k]) {
+                if (!copy) copy = std::make_shared<DisplayNode>(*node);
+                copy->rows[r][k] = std::move(c);
+            }
+    return copy ? copy : node;
+}
+
+// The item's label in the notation: B(q) → D(q) or M(Θ), g(q) → G(Θ), Q → τ.
+void relabel(DisplayItem& item, const NotationSymbols& n, bool robot) {
+    const std::string of = "(" + (robot ? n.vectorLatex : std::string("q")) + ")";
+    switch (item.quantity) {
+        case Quantity::MassMatrix: item.name = n.mass; item.latexName = n.mass + of; item.entryLetter = n.massEntry; break;
+        case Quantity::GravityVector: item.name = n.gravity; item.latexName = n.gravity + of; item.entryLetter = n.gravity; break;
+        case Quantity::GeneralizedForces: item.name = n.force; item.latexName = n.forceLatex; item.entryLetter = n.force; break;
+        default: return;
+    }
+    item.equation = displayEquation(displayLabel(item.name, item.latexName), item.value);
+}
+
+}  // namespace
+
+std::string massMatrixSum(const NotationSymbols& n) {
+    return ",\\quad " + n.mass + "(" + n.vectorLatex +
+           R"() = \sum_i \left(m_i\, J_{P,i}^T J_{P,i} + J_{O,i}^T R_i\, I_{li}\, R_i^T J_{O,i}\right))";
+}
+
+std::string actuationSentence(const std::vector<int>& actuated, const std::vector<std::string>& coordinates, Language language) {
+    std::string inputs;
+    for (int j : actuated) inputs += (inputs.empty() ? "" : ", ") + coordinates.at(static_cast<std::size_t>(j));
+    const std::size_t m = actuated.size(), n = coordinates.size();
+    return (inputs.empty() ? translated("no inputs", language) : translated("inputs on", language) + " " + inputs) +
+           (m < n ? " (" + translated("underactuated", language) + ": m = " + std::to_string(m) + " < n = " + std::to_string(n) + ")"
+                  : " (" + translated("fully actuated", language) + ")");
+}
+
+std::shared_ptr<DisplayDocument> localizedDocument(const DisplayDocument& document, const Presentation& p) {
+    auto out = std::make_shared<DisplayDocument>(document);
+    out->language = p.language;
+    out->notation = p.notation;
+    const NotationSymbols& n = notationSymbols(p.notation);
+    const bool letters = p.notation != Notation::Notes, rename = document.robot && n.coordinate != "q";
+    for (DisplayStep& step : out->steps) {
+        step.title = translated(step.title, p.language);
+        const std::string latexBefore = step.formulaLatex;
+        if (letters && (step.number == 7 || step.number == 8)) {
+            step.formulaLatex = replaced(step.formulaLatex, latexLetters(n, document.robot));
+            step.formulaText = replaced(step.formulaText, textLetters(n, document.robot));
+            if (p.notation == Notation::Craig && step.number == 8 && document.robot)
+                step.formulaLatex += R"(,\quad V(\Theta, \dot{\Theta}) = C\,\dot{\Theta})";
+        }
+        if (p.language != Language::English) {
+            step.formulaText = translatedPhrases(step.formulaText, p.language);
+            step.formulaLatex = translatedPhrases(step.formulaLatex, p.language);
+        }
+        if (step.formulaLatex != latexBefore || (letters && step.number == 7 && document.robot))
+            step.formula = formulaFromLatex(step.formulaLatex + (step.number == 7 && document.robot ? massMatrixSum(n) : ""),
+                                            step.formulaText);
+        for (DisplayItem& item : step.items) {
+            if (rename) {
+                item.equation = renamed(item.equation, n);
+                item.value = renamed(item.value, n);
+            }
+            if (letters) relabel(item, n, document.robot);
+        }
+    }
+    // The actuation sentence with the coordinates as the results show them.
+    const NameRules rules{document.coordinateNames, document.robot, {}};
+    std::vector<std::string> shown, latex, marks;
+    for (const std::string& name : document.coordinateNames) {
+        const DisplayPtr symbol = rename ? renamed(symbolNode(name, symbolMeaning(name, rules), rules), n)
+                                         : symbolNode(name, symbolMeaning(name, rules), rules);
+        shown.push_back(renderDisplay(*symbol, DisplayStyle::Text));
+        latex.push_back("$" + renderDisplay(*symbol, DisplayStyle::Latex) + "$");
+        marks.push_back("@" + std::to_string(marks.size()) + "@");
+    }
+    out->actuation = actuationSentence(document.actuated, shown, p.language);
+    out->actuationLatex = latexText(actuationSentence(document.actuated, marks, p.language));  // the prose escaped, then the math put in
+    for (std::size_t k = marks.size(); k-- > 0;)
+        for (std::size_t at; (at = out->actuationLatex.find(marks[k])) != std::string::npos;)
+            out->actuationLatex.replace(at, marks[k].size(), latex[k]);
+    out->form = translated(document.form, p.language);
+    out->formReason = translatedPhrases(document.formReason, p.language);
+    out->remark.clear();
+    if (document.robot && letters && n.modifiedDH != document.modifiedDH)
+        out->remark = translated(n.modifiedDH ? "Craig's notation goes with modified DH parameters; this robot is given in the standard convention"
+                                              : "this notation goes with standard DH parameters; this robot is given in the modified convention",
+                                 p.language);
+    return out;
+}
+
+}  // namespace ll::present
