@@ -27,6 +27,7 @@
 #include "core/io/atomic_file.hpp"
 #include "ui/main_window.hpp"
 #include "ui/playback_bar.hpp"
+#include "ui/app_language.hpp"
 #include "ui/scene_view.hpp"
 #include "ui/torque_pane.hpp"
 
@@ -67,7 +68,11 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
     providePrivateRuntimeDirectory();  // no "XDG_RUNTIME_DIR not set" line from Qt
     QApplication app(argc, argv);
     QApplication::setApplicationName("LagrangeLab");
+    const present::Language language =
+        ui::startLanguage(languageGiven() ? std::optional(presentation().language) : std::nullopt);
+    if (!ui::installLanguage(language)) std::cerr << "warning: the Danish catalogue could not be loaded; the window stays English\n";
     ui::MainWindow window;
+    window.setPresentation({language, notationGiven() ? presentation().notation : ui::rememberedNotation()});
     QStringList errors;
     if (!window.openFile(QString::fromStdString(scene), &errors, true)) {
         for (const QString& e : errors) std::cerr << "error: " << e.toStdString() << '\n';

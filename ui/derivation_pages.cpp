@@ -97,6 +97,7 @@ private:
 DerivationPages paginate(const present::DisplayDocument& document, const PageFormat& format) {
     DerivationPages pages;
     pages.format = format;
+    pages.language = document.language;
     paginate(document, format, [&](std::vector<PlacedBox>&& page) { pages.pages.push_back(std::move(page)); });
     return pages;
 }
@@ -106,14 +107,18 @@ namespace {
 void paginateFrom(const present::DisplayDocument& document, const PageFormat& format, const PageSink& sink) {
     Composer c(format, sink);
     const double em = mathUnitsPerEm;
-    c.block(wrapped(QString::fromStdString("Euler–Lagrange model: " + document.systemName), 1.5, c.width(), true), 0, 0, 0.3 * em);
-    c.block(wrapped("Shorthand: c_i = cos q_i, s_i = sin q_i, c12 = cos(q1 + q2); q̇, q̈ the joint velocities and "
-                    "accelerations.",
+    // The document's own language (core/present/language.hpp), not the window's.
+    const auto words = [&](const char* english) { return present::translated(english, document.language); };
+    c.block(wrapped(QString::fromStdString(words("Euler–Lagrange model") + ": " + document.systemName), 1.5, c.width(), true), 0, 0,
+            0.3 * em);
+    c.block(wrapped(QString::fromStdString(words("Shorthand") + ": c_i = cos q_i, s_i = sin q_i, c12 = cos(q1 + q2); q̇, q̈ " +
+                                           words("the joint velocities and accelerations") + "."),
                     0.85, c.width()),
             0, 0.4 * em, 0.2 * em);
     if (!document.form.empty())
-        c.block(wrapped(QString::fromStdString("Form: " + document.form + " (" + document.formReason + ")"), 0.85, c.width()), 0,
+        c.block(wrapped(QString::fromStdString(words("Form") + ": " + document.form + " (" + document.formReason + ")"), 0.85, c.width()), 0,
                 0.2 * em, 0.2 * em);
+    if (!document.remark.empty()) c.block(wrapped(QString::fromStdString(document.remark), 0.85, c.width()), 0, 0.2 * em, 0.2 * em);
     const auto indented = [&](const MathBox& l) {
         MathBox out;
         hcat(out, l, em);
@@ -121,7 +126,7 @@ void paginateFrom(const present::DisplayDocument& document, const PageFormat& fo
     };
     for (const present::DisplayStep& s : document.steps) {
         const present::DisplayStep* step = &s;
-        std::vector<MathBox> head = wrapped(QString("Step %1. %2").arg(step->number).arg(QString::fromStdString(step->title)),
+        std::vector<MathBox> head = wrapped(QString::fromStdString(words("Step") + " " + std::to_string(step->number) + ". " + step->title),
                                             1.2, c.width(), true);
         if (step->formula)  // the notes' general formula, typeset
             for (const MathBox& l : layoutFormula(*step->formula, (c.width() - em) / 0.9, 0.9)) head.push_back(indented(l));
@@ -130,7 +135,7 @@ void paginateFrom(const present::DisplayDocument& document, const PageFormat& fo
         c.block(head, 0, 1.4 * em, 0.3 * em);
         for (const present::DisplayItem& it : step->items) {
             const present::DisplayItem* item = &it;
-            std::vector<MathBox> lines = layoutItem(*item, c.width() - em);
+            std::vector<MathBox> lines = layoutItem(*item, c.width() - em, document.language);
             if (!item->note.empty()) {  // what a name means, beside it when it fits, else under it
                 const MathBox note = layoutProse(QString::fromStdString(item->note), 0.75);
                 if (lines.size() == 1 && lines[0].width + 2 * em + note.width <= c.width() - em)
@@ -141,7 +146,7 @@ void paginateFrom(const present::DisplayDocument& document, const PageFormat& fo
             c.block(lines, em, (item->note.empty() ? 0.7 : 0.35) * em, 0.45 * em);
         }
     }
-    c.block(wrapped(QString::fromStdString("Actuation: " + document.actuation), 0.9, c.width()), 0, 1.2 * em, 0.2 * em);
+    c.block(wrapped(QString::fromStdString(words("Actuation") + ": " + document.actuation), 0.9, c.width()), 0, 1.2 * em, 0.2 * em);
     c.finish();
 }
 
@@ -204,7 +209,7 @@ bool writePdf(const DerivationPages& pages, const QString& path, std::string& er
         pdf.setResolution(dpi);
         pdf.setPageSize(QPageSize(QSizeF(format.widthPt, format.heightPt), QPageSize::Point));
         pdf.setPageMargins(QMarginsF(0, 0, 0, 0));
-        pdf.setTitle("Euler–Lagrange derivation");
+        pdf.setTitle(QString::fromStdString(present::translated("Euler–Lagrange derivation", pages.language)));
         pdf.setCreator("LagrangeLab");
         QPainter painter(&pdf);
         for (std::size_t i = 0; i < pages.pages.size(); ++i) {
@@ -223,7 +228,7 @@ bool writeSvg(const DerivationPages& pages, const QString& path, std::string& er
         MathMarks marks;
         for (const PlacedBox& b : pages.pages[i]) collectMarks(b.box, b.origin * scale, scale, marks);
         const QString file = pagePath(path, static_cast<int>(i));
-        if (!save(file, svgPage(marks, size, "Euler–Lagrange derivation", glyphs), error)) return false;
+        if (!save(file, svgPage(marks, size, present::translated("Euler–Lagrange derivation", pages.language), glyphs), error)) return false;
         if (written) written->push_back(file);
     }
     return true;

@@ -32,6 +32,7 @@ struct PlacedBox {
 struct DerivationPages {
     PageFormat format;
     std::vector<std::vector<PlacedBox>> pages;
+    present::Language language = present::Language::English;  // the document's: the file's title
 };
 
 DerivationPages paginate(const present::DisplayDocument& document, const PageFormat& format = {});

@@ -120,7 +120,7 @@ void DerivationPanel::setDerivation(const DerivationResult& result) {
         const int bar = view_->verticalScrollBar()->value();
         view_->setPlainText(result.text);
         spans_ = result.textSpans;
-        readHeadings();
+        readHeadings(result.display ? result.display->language : present::Language::English);
         view_->verticalScrollBar()->setValue(bar);
         showStep(step_);  // or the next step this derivation has
         emit stepChanged(step_);  // the count may have changed
@@ -129,8 +129,9 @@ void DerivationPanel::setDerivation(const DerivationResult& result) {
 }
 
 // The steps the text has ("Step N." headings, in order): a robot's 0–8, a typed Lagrangian's own.
-void DerivationPanel::readHeadings() {
-    static const QRegularExpression heading("^Step (\\d+)\\.");
+void DerivationPanel::readHeadings(present::Language language) {
+    // "Step N." in the document's language (Trin N. in Danish).
+    const QRegularExpression heading("^" + QRegularExpression::escape(QString::fromStdString(present::translated("Step", language))) + " (\\d+)\\.");
     steps_.clear();
     headingBlocks_.clear();
     for (QTextBlock block = view_->document()->begin(); block.isValid(); block = block.next())

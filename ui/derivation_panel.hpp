@@ -59,7 +59,7 @@ protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
-    void readHeadings();
+    void readHeadings(present::Language language);
     QPlainTextEdit* view_;
     std::vector<present::TextSpan> spans_;
     QLabel* status_;

@@ -59,8 +59,9 @@ public:
         update();
     }
 
-    void show(const present::DisplayStep* step, double zoom) {
+    void show(const present::DisplayStep* step, double zoom, present::Language language) {
         step_ = step;
+        language_ = language;
         zoom_ = zoom;
         entries_.clear();
         if (step_)
@@ -106,7 +107,9 @@ protected:
         double y = margin;
         QFont headerFont = font();
         const QFontMetricsF fm(headerFont);
-        p.drawText(QPointF(margin, y + fm.ascent()), tr("Step %1. %2").arg(step_->number).arg(QString::fromStdString(step_->title)));
+        // The page's heading in the document's own language, as its title is.
+        p.drawText(QPointF(margin, y + fm.ascent()),
+                   QString::fromStdString(present::translated("Step", language_) + " " + std::to_string(step_->number) + ". " + step_->title));
         y += fm.height() * 1.2;
         p.setPen(palette().color(QPalette::PlaceholderText));
         if (step_->formula) {  // the general formula typeset, smaller than the results
@@ -230,6 +233,7 @@ private:
     }
     static constexpr double margin = 12, indent = 18;
     const present::DisplayStep* step_ = nullptr;
+    present::Language language_ = present::Language::English;
     std::vector<Entry> entries_;
     double zoom_ = 1.0;
     int laidOutWidth_ = 0;
@@ -249,7 +253,7 @@ private:
         if (!e.lines.empty()) return;
         laidOutWidth_ = width();
         const double available = std::max(200.0, (width() - 2 * margin - indent) / scale());
-        e.lines = layoutItem(item, available);
+        e.lines = layoutItem(item, available, language_);
     }
 
     double contentHeight() const { return 400; }  // grows on the first paint
@@ -319,7 +323,10 @@ void DerivationView::relist() {
     if (pose_) rows.emplace_back(9, tr("Results at the teach pose"));
     std::vector<int> numbers;
     for (const auto& [n, title] : rows) numbers.push_back(n);
-    if (numbers != listed_ || steps_->count() != static_cast<int>(rows.size())) {
+    bool retitled = false;  // the same steps in another language
+    for (int i = 0; i < steps_->count() && i < static_cast<int>(rows.size()); ++i)
+        retitled = retitled || steps_->item(i)->text() != tr("Step %1: %2").arg(rows[static_cast<std::size_t>(i)].first).arg(rows[static_cast<std::size_t>(i)].second);
+    if (numbers != listed_ || retitled || steps_->count() != static_cast<int>(rows.size())) {
         const QSignalBlocker quiet(steps_);
         steps_->clear();
         for (const auto& [n, title] : rows) steps_->addItem(tr("Step %1: %2").arg(n).arg(title));
@@ -430,7 +437,7 @@ void DerivationView::refresh() {
                 shownIndex_ = static_cast<int>(i);
                 break;
             }
-    canvas_->show(shown, zoom_);
+    canvas_->show(shown, zoom_, document_ ? document_->language : present::Language::English);
     setMarks(marks_);
     previous_->setEnabled(step_ > listed_.front());
     next_->setEnabled(step_ < lastStep());

@@ -1,4 +1,5 @@
 #include "ui/joint_table_model.hpp"
+#include <map>
 
 #include <cmath>
 #include <numbers>
@@ -70,6 +71,11 @@ QVariant JointTableModel::data(const QModelIndex& index, int role) const {
         if (degrees_ && isAngle(column) && shown.is_number()) {
             const double deg = shown.get<double>() * 180.0 / std::numbers::pi;
             return QString::number(deg, 'g', 10) + QStringLiteral("°");
+        }
+        // The joint's kind in the window's language; the scene file's word when edited.
+        if (role == Qt::DisplayRole && column == Type && shown.is_string()) {
+            if (shown.get<std::string>() == "revolute") return tr("revolute");
+            if (shown.get<std::string>() == "prismatic") return tr("prismatic");
         }
         return SceneDocument::display(shown);
     }
@@ -226,7 +232,11 @@ bool JointTableModel::fillInertiaFromShape(int row, const QString& shape, const 
     SceneJson json = doc_.json();
     json["robot"]["joints"][row]["inertia"] = {{"xx", SceneDocument::parseCell(xx)}, {"yy", SceneDocument::parseCell(yy)},
                                                {"zz", SceneDocument::parseCell(zz)}, {"xy", 0}, {"xz", 0}, {"yz", 0}};
-    doc_.replace(json, tr("Joint %1: inertia of a %2").arg(row + 1).arg(shape));
+    static const std::map<QString, const char*> shapeNames = {{"rod", QT_TR_NOOP("rod")},         {"cylinder", QT_TR_NOOP("cylinder")},
+                                                             {"disc", QT_TR_NOOP("disc")},       {"box", QT_TR_NOOP("box")},
+                                                             {"sphere", QT_TR_NOOP("sphere")}};
+    const auto named = shapeNames.find(shape);
+    doc_.replace(json, tr("Joint %1: inertia of a %2").arg(row + 1).arg(named != shapeNames.end() ? tr(named->second) : shape));
     return true;
 }
 

@@ -1,4 +1,6 @@
 #include "ui/main_window.hpp"
+
+#include "ui/app_language.hpp"
 #include "ui/parameter_rename.hpp"
 
 #include <algorithm>
@@ -305,7 +307,7 @@ void MainWindow::buildCentre() {
     auto* bar = new QToolBar(centre);
     view_ = new SceneView(centre);
     bar->addAction(tr("Fit"), view_, &SceneView::fit)->setShortcut(Qt::Key_F);
-    for (const char* name : {"front", "side", "top", "iso"})
+    for (const char* name : {QT_TR_NOOP("front"), QT_TR_NOOP("side"), QT_TR_NOOP("top"), QT_TR_NOOP("iso")})
         bar->addAction(tr(name), this, [this, name] { view_->setStandardView(name); });
     bar->addSeparator();
     auto toggle = [&](const QString& text, bool on, auto slot) {
@@ -518,6 +520,39 @@ void MainWindow::buildMenus() {
     QAction* present = view->addAction(tr("Presentation mode"), this, [this] { setPresentationMode(!presenting_); });
     present->setShortcut(Qt::Key_F11);
     view->addAction(tr("Fit view"), view_, &SceneView::fit);
+    view->addSeparator();
+    // The derivation's language and the textbook's letters; remembered for the next start.
+    languageMenu_ = view->addMenu(tr("&Language"));
+    auto* languages = new QActionGroup(languageMenu_);
+    for (const auto& [code, name] : {std::pair{"da", "Dansk"}, {"en", "English"}}) {  // each language in its own name
+        QAction* a = languageMenu_->addAction(QString::fromUtf8(name));
+        a->setData(QString::fromLatin1(code));
+        a->setCheckable(true);
+        languages->addAction(a);
+        connect(a, &QAction::triggered, this, [this, code = std::string(code)] {
+            const present::Language language = *present::languageNamed(code);
+            rememberLanguage(language);
+            setPresentation({language, presentation_.notation});
+            if (language != windowLanguage())
+                statusBar()->showMessage(tr("The derivation is shown in the new language now; the menus and panels follow when LagrangeLab starts again."), 8000);
+        });
+    }
+    notationMenu_ = view->addMenu(tr("&Notation"));
+    auto* notations = new QActionGroup(notationMenu_);
+    for (const auto& [id, label] : {std::pair{present::Notation::Notes, QT_TR_NOOP("The course notes: B q̈ + C q̇ + g = Q")},
+                                    {present::Notation::Siciliano, QT_TR_NOOP("Siciliano: B q̈ + C q̇ + g = τ")},
+                                    {present::Notation::Spong, QT_TR_NOOP("Spong: D q̈ + C q̇ + g = τ")},
+                                    {present::Notation::Craig, QT_TR_NOOP("Craig: M Θ̈ + V + G = τ (modified DH)")}}) {
+        QAction* a = notationMenu_->addAction(tr(label));
+        a->setData(QString::fromLatin1(present::notationName(id)));
+        a->setCheckable(true);
+        notations->addAction(a);
+        connect(a, &QAction::triggered, this, [this, id = id] {
+            rememberNotation(id);
+            setPresentation({presentation_.language, id});
+        });
+    }
+    setPresentation(presentation_);
 
     auto* tools = addToolBar(tr("Main"));
     tools->setObjectName("main");
@@ -615,16 +650,36 @@ void MainWindow::showResult(std::shared_ptr<const LiveResult> result) {
     emit resultShown(result->request);
 }
 
-void MainWindow::showDerivation(std::shared_ptr<const DerivationResult> result) {
+void MainWindow::showDerivation(std::shared_ptr<const DerivationResult> derived) {
+    std::shared_ptr<const DerivationResult> result = derived;
+    if (derived->display && (presentation_.language != present::Language::English || presentation_.notation != present::Notation::Notes)) {
+        auto shown = std::make_shared<DerivationResult>(*derived);
+        shown->display = present::localizedDocument(*derived->display, presentation_);
+        shown->textSpans.clear();
+        shown->text = QString::fromStdString(present::textDocument(*shown->display, &shown->textSpans));
+        result = shown;
+    }
     derivation_->setDerivation(*result);
     if (result->stopped) {
         typeset_->cancel();
         return;
     }
+    derivedAsDerived_ = derived;
     derived_ = result;
     typeset_->setDerivation(result->display, result->error);
     selection_.setCatalogue(result->catalogue, result->scene);
     if (sampler_ && selection_.catalogue() && q_.size() == selection_.catalogue()->n) selection_.setState(q_, qd_, playback_->time());
+}
+
+void MainWindow::setPresentation(const present::Presentation& presentation) {
+    presentation_ = presentation;
+    if (languageMenu_)
+        for (QAction* a : languageMenu_->actions())
+            a->setChecked(a->data().toString() == QString::fromLatin1(present::languageCode(presentation.language)));
+    if (notationMenu_)
+        for (QAction* a : notationMenu_->actions())
+            a->setChecked(a->data().toString() == QString::fromLatin1(present::notationName(presentation.notation)));
+    if (derivedAsDerived_) showDerivation(derivedAsDerived_);
 }
 
 void MainWindow::showAnalysis(std::shared_ptr<const RunAnalysis> analysis) {

@@ -135,6 +135,10 @@ public:
     // Runs a ghost with `integrator` ("" removes it).
     void setGhostIntegrator(const QString& integrator);
     void setPresentationMode(bool on);
+    // The language and notation the derivation is shown in (View → Language, Notation):
+    // the derivation on screen is relabelled at once, not derived again.
+    void setPresentation(const present::Presentation& presentation);
+    const present::Presentation& presentation() const { return presentation_; }
     // Parameters: one undoable edit each. addParameter refuses a name that is not an
     // identifier or is taken (false, the reason in *error).
     bool addParameter(const QString& name, const QString& value, QString* error = nullptr);
@@ -203,7 +207,11 @@ private:
     LiveDerivation derive_;
     EntrySelection selection_;
     std::shared_ptr<const RunAnalysis> analysis_;
-    std::shared_ptr<const DerivationResult> derived_;
+    std::shared_ptr<const DerivationResult> derived_;   // as shown: in presentation_
+    std::shared_ptr<const DerivationResult> derivedAsDerived_;  // as the worker made it (English, the notes' notation)
+    present::Presentation presentation_;
+    QMenu* languageMenu_ = nullptr;
+    QMenu* notationMenu_ = nullptr;
     std::shared_ptr<const LiveResult> result_, ghost_;
     std::unique_ptr<TrajectorySampler> sampler_, ghostSampler_;
     std::vector<Eigen::Vector3d> effectorPath_;  // end effector at every sample

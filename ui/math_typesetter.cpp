@@ -711,7 +711,7 @@ present::DisplayPtr elided(const present::DisplayPtr& node, std::size_t maxTerms
     return copy ? copy : node;
 }
 
-std::vector<MathBox> layoutItem(const present::DisplayItem& item, double maxWidth) {
+std::vector<MathBox> layoutItem(const present::DisplayItem& item, double maxWidth, present::Language language) {
     const double e = em(1);
     const DisplayNode& full = *item.equation;
     if (full.kind != DisplayKind::Equation || full.children[1]->kind != DisplayKind::Matrix) return layoutEquation(full, maxWidth);
@@ -724,8 +724,9 @@ std::vector<MathBox> layoutItem(const present::DisplayItem& item, double maxWidt
     MathBox head = layout(*shortened->children[0], 1.0);
     const std::size_t rows = rhs.rows.size(), cols = rows ? rhs.rows[0].size() : 0;
     const bool zeros = present::hasZeroEntry(rhs);  // zero entries are left out (B_m of the PUMA: 30 of 36), and said so
-    hcat(head, layoutText(zeros ? QString(" (%1×%2), entry by entry, the zeros left out:").arg(rows).arg(cols)
-                                : QString(" (%1×%2), entry by entry:").arg(rows).arg(cols)), 0.3 * e);
+    const auto words = [&](const char* english) { return QString::fromStdString(present::translated(english, language)); };
+    hcat(head, layoutText(QString(" (%1×%2), ").arg(rows).arg(cols) + words("entry by entry") +
+                          (zeros ? ", " + words("the zeros left out") + ":" : QString(":"))), 0.3 * e);
     std::vector<MathBox> lines{head};
     for (std::size_t i = 0; i < rows; ++i)
         for (std::size_t j = 0; j < cols; ++j) {

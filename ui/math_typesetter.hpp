@@ -80,7 +80,8 @@ std::vector<MathBox> layoutEquation(const present::DisplayNode& equation, double
 // An item of a derivation the same way; a matrix too wide becomes its entries listed
 // under it, each named as core/present/labels.hpp names them (b11 = …, each breaking the
 // same way).
-std::vector<MathBox> layoutItem(const present::DisplayItem& item, double maxWidth);
+std::vector<MathBox> layoutItem(const present::DisplayItem& item, double maxWidth,
+                                present::Language language = present::Language::English);
 
 // A step's general formula (core/present/latex_formula.hpp): its parts side by side,
 // 2 em apart, a new line where the next part would pass maxWidth.

@@ -78,7 +78,7 @@ void WorkPrecisionPane::run() {
             if (result) {
                 self->result_ = result;
                 self->progress_->setValue(1000);
-                self->label_->setText(tr("Done: %1 runs.").arg(result->points.size()));
+                self->label_->setText(tr("Done: %n run(s).", nullptr, static_cast<int>(result->points.size())));
             } else {
                 self->label_->setText(tr("Stopped: %1").arg(error));
             }

@@ -1,0 +1,197 @@
+// The window in Danish (issue 37), under a real X server: with the Danish catalogue
+// installed, no text of a menu, action, tab, button, label, dock title, list or table
+// header is left as an English source text the catalogue translates; the catalogue has no
+// unfinished or obsolete entries and is up to date with the sources (lupdate finds
+// nothing new); switching language or notation relabels the derivation on screen without
+// deriving it again.
+#include <QtTest>
+
+#include <QAbstractButton>
+#include <QApplication>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QFile>
+#include <QGroupBox>
+#include <QHeaderView>
+#include <QLabel>
+#include <QMenu>
+#include <QMenuBar>
+#include <QPlainTextEdit>
+#include <QStandardPaths>
+#include <QProcess>
+#include <QTabBar>
+#include <QTableView>
+#include <QTemporaryDir>
+#include <QToolBar>
+#include <QXmlStreamReader>
+
+#include "ui/app_language.hpp"
+#include "ui/derivation_panel.hpp"
+#include "ui/derivation_view.hpp"
+#include "ui/main_window.hpp"
+
+using ll::ui::MainWindow;
+namespace present = ll::present;
+
+namespace {
+
+const QString catalogue = QString(LL_SOURCE_DIR) + "/resources/translations/lagrangelab_da.ts";
+
+struct Entry {
+    QString source, translation, type;
+    bool numerus = false;
+};
+
+std::vector<Entry> readCatalogue(const QString& path) {
+    std::vector<Entry> out;
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly)) return out;
+    QXmlStreamReader xml(&f);
+    Entry e;
+    while (!xml.atEnd()) {
+        xml.readNext();
+        if (xml.isStartElement() && xml.name() == QLatin1String("message")) {
+            e = Entry{};
+            e.numerus = xml.attributes().value("numerus") == QLatin1String("yes");
+        } else if (xml.isStartElement() && xml.name() == QLatin1String("source")) {
+            e.source = xml.readElementText();
+        } else if (xml.isStartElement() && xml.name() == QLatin1String("translation")) {
+            e.type = xml.attributes().value("type").toString();
+            e.translation = xml.readElementText(QXmlStreamReader::IncludeChildElements);
+        } else if (xml.isEndElement() && xml.name() == QLatin1String("message")) {
+            out.push_back(e);
+        }
+    }
+    return out;
+}
+
+QString bare(QString s) { return s.remove('&').trimmed(); }
+
+bool settled(MainWindow& w, int seconds = 60) {
+    QElapsedTimer clock;
+    clock.start();
+    while (clock.elapsed() < seconds * 1000) {
+        QTest::qWait(20);
+        if (w.result() && !w.liveSimulation().busy() && !w.liveDerivation().busy() && w.derivation()) return true;
+    }
+    return false;
+}
+
+void menuTexts(QMenu* menu, QStringList& out) {
+    for (QAction* a : menu->actions()) {
+        if (!a->text().isEmpty()) out << a->text();
+        if (a->menu()) menuTexts(a->menu(), out);
+    }
+}
+
+}  // namespace
+
+class TestDanishWindow : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true);  // the window's settings in a test folder
+        QVERIFY(ll::ui::installLanguage(present::Language::Danish));
+    }
+
+    void catalogueIsComplete() {
+        const std::vector<Entry> entries = readCatalogue(catalogue);
+        QVERIFY(entries.size() > 250);
+        for (const Entry& e : entries) {
+            QVERIFY2(e.type.isEmpty(), qPrintable(e.type + ": " + e.source));  // not unfinished, obsolete or vanished
+            QVERIFY2(!e.translation.trimmed().isEmpty(), qPrintable(e.source));
+            for (const QString& mark : {"%1", "%2", "%3", "%n"})
+                if (e.source.contains(mark)) QVERIFY2(e.translation.contains(mark), qPrintable(mark + " lost in " + e.source));
+        }
+        // Up to date with the sources: lupdate over a copy finds nothing new and nothing gone.
+        QTemporaryDir dir;
+        const QString copy = dir.filePath("da.ts");
+        QVERIFY(QFile::copy(catalogue, copy));
+        QProcess lupdate;
+        lupdate.start("/usr/lib/qt6/bin/lupdate", {"-no-obsolete", "-locations", "relative", "-target-language", "da_DK",
+                                                   QString(LL_SOURCE_DIR) + "/ui", QString(LL_SOURCE_DIR) + "/app", "-ts", copy});
+        QVERIFY(lupdate.waitForFinished(120000));
+        const QString report = QString::fromUtf8(lupdate.readAllStandardOutput() + lupdate.readAllStandardError());
+        QVERIFY2(report.contains("(0 new and"), qPrintable(report));
+        QVERIFY2(!report.contains("Removed"), qPrintable(report));
+    }
+
+    void noEnglishLeft() {
+        std::map<QString, QString> english;  // an English source whose Danish differs
+        for (const Entry& e : readCatalogue(catalogue))
+            if (!e.numerus && bare(e.translation) != bare(e.source)) english[bare(e.source)] = e.translation;
+        MainWindow w;
+        w.setAskBeforeClosing(false);
+        w.resize(1280, 800);
+        w.show();
+        QVERIFY(w.openFile(QString(LL_EXAMPLES_DIR) + "/planar_2r.json", nullptr, true));
+        QVERIFY(settled(w));
+        QStringList texts;
+        for (QAction* a : w.menuBar()->actions()) {
+            texts << a->text();
+            if (a->menu()) menuTexts(a->menu(), texts);
+        }
+        for (QToolBar* bar : w.findChildren<QToolBar*>())
+            for (QAction* a : bar->actions()) texts << a->text();
+        for (QAbstractButton* b : w.findChildren<QAbstractButton*>()) texts << b->text();
+        for (QLabel* l : w.findChildren<QLabel*>()) texts << l->text();
+        for (QGroupBox* g : w.findChildren<QGroupBox*>()) texts << g->title();
+        for (QDockWidget* d : w.findChildren<QDockWidget*>()) texts << d->windowTitle();
+        for (QTabBar* t : w.findChildren<QTabBar*>())
+            for (int i = 0; i < t->count(); ++i) texts << t->tabText(i);
+        for (QComboBox* c : w.findChildren<QComboBox*>())
+            for (int i = 0; i < c->count(); ++i) texts << c->itemText(i);
+        for (QTableView* v : w.findChildren<QTableView*>()) {
+            if (!v->model()) continue;
+            for (int c = 0; c < v->model()->columnCount(); ++c) texts << v->model()->headerData(c, Qt::Horizontal).toString();
+            for (int r = 0; r < v->model()->rowCount(); ++r) {
+                texts << v->model()->headerData(r, Qt::Vertical).toString();
+                for (int c = 0; c < v->model()->columnCount(); ++c) texts << v->model()->data(v->model()->index(r, c)).toString();
+            }
+        }
+        QVERIFY(texts.size() > 100);
+        QStringList left;
+        for (const QString& t : texts)
+            if (english.count(bare(t))) left << bare(t);
+        left.removeDuplicates();
+        QVERIFY2(left.isEmpty(), qPrintable("English left: " + left.join(" | ")));
+        // and the Danish is there: the menus as Danish desktop programs name them
+        QStringList menus;
+        for (QAction* a : w.menuBar()->actions()) menus << bare(a->text());
+        QVERIFY2(menus.contains("Filer") && menus.contains("Rediger") && menus.contains("Vis"), qPrintable(menus.join(",")));
+    }
+
+    // View → Language and Notation relabel the derivation on screen; nothing is derived again.
+    void switchingRelabelsWithoutDeriving() {
+        MainWindow w;
+        w.setAskBeforeClosing(false);
+        w.show();
+        QVERIFY(w.openFile(QString(LL_EXAMPLES_DIR) + "/planar_2r.json", nullptr, true));
+        QVERIFY(settled(w));
+        QCOMPARE(w.derivationView().document()->steps.at(7).title, std::string("Kinetic energy and the mass matrix"));
+        const int runs = w.liveDerivation().runs();
+        w.setPresentation({present::Language::Danish, present::Notation::Spong});
+        QTest::qWait(50);
+        QCOMPARE(w.liveDerivation().runs(), runs);
+        const auto doc = w.derivationView().document();
+        QCOMPARE(doc->language, present::Language::Danish);
+        QCOMPARE(doc->steps.at(7).title, std::string("Kinetisk energi og massematricen"));
+        bool massMatrixIsD = false;
+        for (const auto& item : doc->steps.at(7).items) massMatrixIsD = massMatrixIsD || (item.quantity == present::Quantity::MassMatrix && item.name == "D");
+        QVERIFY(massMatrixIsD);
+        QVERIFY(w.derivationPanel().findChild<QPlainTextEdit*>());
+        const QString text = w.derivationPanel().findChild<QPlainTextEdit*>()->toPlainText();
+        QVERIFY2(text.contains(QString::fromUtf8("Trin 7. Kinetisk energi og massematricen")) && text.contains("D = "), qPrintable(text.left(500)));
+        // and back, through the View menu as a student would
+        QAction* english = nullptr;
+        for (QAction* a : w.findChildren<QAction*>())
+            if (a->data().toString() == "en") english = a;
+        QVERIFY(english);
+        english->trigger();
+        QCOMPARE(w.derivationView().document()->steps.at(7).title, std::string("Kinetic energy and the mass matrix"));
+        QCOMPARE(w.liveDerivation().runs(), runs);
+    }
+};
+
+QTEST_MAIN(TestDanishWindow)
+#include "test_danish_window.moc"
