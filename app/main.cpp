@@ -9,6 +9,7 @@
 #include <string>
 
 #include "app/cli_options.hpp"
+#include "core/present/diagnostic_text.hpp"
 #include "app/command_usage.hpp"
 #include "app/commands.hpp"
 #include "app/offscreen_gui.hpp"
@@ -42,7 +43,7 @@ int reportingErrors(F&& f) {
         return f();
     } catch (const ll::InputError& e) {
         for (const ll::Diagnostic& d : e.diagnostics())
-            if (d.severity == ll::Severity::Error) std::cerr << d.toString() << '\n';
+            if (d.severity == ll::Severity::Error) std::cerr << ll::present::diagnosticText(d, presentation().language) << '\n';
         return 2;
     } catch (const UsageError& e) {
         std::cerr << "error: " << e.what() << '\n';

@@ -2,7 +2,9 @@
 
 #include <iostream>
 
+#include "app/cli_options.hpp"
 #include "core/io/scene_file.hpp"
+#include "core/present/diagnostic_text.hpp"
 #include "core/simulation/scene_validation.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/lagrangian_derivation.hpp"
@@ -18,7 +20,7 @@ Scene loadSceneReportingWarnings(const std::string& path) {
             const auto lock = symbolic::lockGinac();
             (void)symbolic::deriveLagrangian(loaded.scene, symbolic::ParameterMode::Numeric);
         });
-    for (const Diagnostic& w : loaded.warnings) std::cerr << w.toString() << '\n';
+    for (const Diagnostic& w : loaded.warnings) std::cerr << present::diagnosticText(w, presentation().language) << '\n';
     return std::move(loaded.scene);
 }
 

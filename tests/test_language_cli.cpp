@@ -7,6 +7,7 @@
 #include <QtTest>
 
 #include <QProcess>
+#include <QFile>
 #include <QTemporaryDir>
 #include <filesystem>
 
@@ -92,6 +93,27 @@ private slots:
         QCOMPARE(run({"codegen", example("planar_2r.json"), "--lang", "python", "--out", dir.filePath("m.py")}).code, 0);
         // every command takes --lang
         QCOMPARE(run({"check", example("planar_2r.json"), "--lang", "da"}).code, 0);
+    }
+
+    // Errors and warnings in both languages; the field names untouched.
+    void errorsAndWarningsInDanish() {
+        QTemporaryDir dir;
+        const QString bad = dir.filePath("bad.json");
+        QFile f(bad);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(R"json({"format": "lagrangelab-scene/1", "name": "bad", "robot": {"convention": "standard", "joints": [
+            {"type": "revolute", "a": 1, "alpha": 0, "d": 0, "theta": 0, "mass": -1, "com": [0, 0, 0], "inertia": {"xx": 0, "yy": 0, "zz": 0}}]}})json");
+        f.close();
+        const Run da = run({"derive", bad, "--lang", "da"});
+        QCOMPARE(da.code, 2);
+        QVERIFY2(da.err.contains(QString::fromUtf8("fejl: ") + bad + QString::fromUtf8(": robot.joints[0].mass (led 1): massen er negativ (-1 kg); den skal være >= 0")),
+                 qPrintable(da.err));
+        const Run en = run({"derive", bad});
+        QVERIFY2(en.err.contains("error: " + bad + ": robot.joints[0].mass (joint 1): mass is negative (-1 kg); it must be >= 0"), qPrintable(en.err));
+        const Run warned = run({"derive", example("stanford_arm.json"), "--lang", "da", "--steps", "0"});
+        QVERIFY2(warned.err.contains(QString::fromUtf8("advarsel: ")) && warned.err.contains(QString::fromUtf8("overholder ikke trekantsuligheden")) &&
+                     warned.err.contains(QString::fromUtf8("tip: intet fysisk legeme har denne inerti")) && !warned.err.contains("warning:"),
+                 qPrintable(warned.err));
     }
 
     void notationProfiles_data() {

@@ -1,6 +1,7 @@
 #include "ui/main_window.hpp"
 
 #include "ui/app_language.hpp"
+#include "core/present/diagnostic_text.hpp"
 #include "ui/parameter_rename.hpp"
 
 #include <algorithm>
@@ -575,7 +576,7 @@ void MainWindow::documentChanged() {
     refreshJson();
     diagnostics_->clear();
     for (const Diagnostic& d : doc_.diagnostics()) {
-        QString text = QString::fromStdString(d.toString());
+        QString text = QString::fromStdString(present::diagnosticText(d, presentation_.language));
         // An error on a whole joint (B singular there) right after one value was edited:
         // that value is named, the likely cause the message itself cannot know.
         const std::string& edited = doc_.lastEditedField();
