@@ -69,6 +69,16 @@ private slots:
         QVERIFY(json.out.contains("\"name\": \"B\""));
     }
 
+    // The structured form (the Panda) in Danish too: its section titles, form line and the
+    // notes on its names.
+    void structuredFormInDanish() {
+        const Run text = run({"derive", example("panda.json"), "--lang", "da", "--steps", "7"});
+        QVERIFY2(text.code == 0, qPrintable(text.err));
+        for (const char* s : {"Form: struktureret (auto: 7 led:", "Trin 7. Massematrix:", "(bidrag fra link 2 til b11; afhænger af q2)"})
+            QVERIFY2(text.out.contains(QString::fromUtf8(s)), s);
+        QVERIFY2(!text.out.contains("contribution of") && !text.out.contains("depends on"), qPrintable(text.out.left(1500)));
+    }
+
     // As Debian's tools read the environment: LANGUAGE first, then LC_ALL, LC_MESSAGES,
     // LANG; --lang over all of them; C and C.UTF-8 are English.
     void environmentDecidesWithoutLang() {

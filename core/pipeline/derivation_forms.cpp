@@ -119,6 +119,7 @@ FormDocument deriveInForm(const Scene& scene, const FormRequest& request) {
         info.formReason = expanded ? out.reason + "; only the entries asked for are expanded, from the structured form's names" : out.reason;
         info.entries = entries;
         info.firstStep = request.document.firstStep;
+        info.language = request.document.presentation.language;
         info.lastStep = request.document.lastStep;
         if (request.form != DerivationForm::Structured)
             for (const EntryRef& e : entries) info.expanded.push_back(expandEntry(*structured, e, request.document.cancel));

@@ -67,6 +67,7 @@ std::shared_ptr<DisplayDocument> shapeDocument(const Derivation& d, TextbookForm
     doc->systemName = d.systemName;
     doc->coordinateNames = d.coordinateNames;
     doc->actuated = d.actuated;
+    doc->actuationFromInputs = true;
     doc->robot = d.system == symbolic::SystemKind::Robot;
     doc->modifiedDH = d.modifiedDH;
     for (const DerivationStep& step : d.steps) {

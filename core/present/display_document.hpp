@@ -52,6 +52,7 @@ struct DisplayDocument {
     Language language = Language::English;
     Notation notation = Notation::Notes;
     std::vector<int> actuated;
+    bool actuationFromInputs = false;  // `actuation` is the sentence made from `actuated` (else a fixed text)
     bool robot = false;
     bool modifiedDH = false;
     std::string remark;      // said once about the notation (Craig's goes with modified DH); may be empty

@@ -140,7 +140,15 @@ std::shared_ptr<DisplayDocument> localizedDocument(const DisplayDocument& docume
                 item.value = renamed(item.value, n);
             }
             if (letters) relabel(item, n, document.robot);
+            if (p.language != Language::English) item.note = translatedPhrases(item.note, p.language);
         }
+    }
+    out->form = translated(document.form, p.language);
+    out->formReason = translatedPhrases(document.formReason, p.language);
+    if (!document.actuationFromInputs) {  // a fixed text (the structured form's)
+        out->actuation = translated(document.actuation, p.language);
+        out->actuationLatex.clear();
+        return out;
     }
     // The actuation sentence with the coordinates as the results show them.
     const NameRules rules{document.coordinateNames, document.robot, {}};
@@ -157,8 +165,6 @@ std::shared_ptr<DisplayDocument> localizedDocument(const DisplayDocument& docume
     for (std::size_t k = marks.size(); k-- > 0;)
         for (std::size_t at; (at = out->actuationLatex.find(marks[k])) != std::string::npos;)
             out->actuationLatex.replace(at, marks[k].size(), latex[k]);
-    out->form = translated(document.form, p.language);
-    out->formReason = translatedPhrases(document.formReason, p.language);
     out->remark.clear();
     if (document.robot && letters && n.modifiedDH != document.modifiedDH)
         out->remark = translated(n.modifiedDH ? "Craig's notation goes with modified DH parameters; this robot is given in the standard convention"

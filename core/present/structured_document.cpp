@@ -194,23 +194,25 @@ void writeText(const StructuredDynamics& s, const StructuredDocumentInfo& info, 
     Printer text(s, Style::Text);
     const Selection sel = select(s, info);
     out << s.systemName << "\n" << std::string(s.systemName.size(), '=') << "\n";
-    out << "Form: " << info.form << " (" << info.formReason << ")\n";
+    const Language l = info.language;
+    out << translated("Form", l) << ": " << translated(info.form, l) << " (" << translatedPhrases(info.formReason, l) << ")\n";
     out << "B, C and g are short sums over " << sel.needed
         << " named quantities, each a few operations on earlier names; every vector of link i is written in link i's "
            "own frame, where its centre of mass and inertia tensor are constant.\n";
     forEachDefinition(
-        s, sel, [&](int step) { out << "\nStep " << step << ". " << stepTitle(step) << "\n"; },
+        s, sel, [&](int step) { out << "\n" << translated("Step", l) << " " << step << ". " << translated(stepTitle(step), l) << "\n"; },
         [&](const NamedDefinition& d) {
-            out << "    " << d.name << " = " << text(d.value) << "        (" << d.meaning << "; depends on "
-                << coordinateList(d.coordinates, s.n) << ")\n";
+            out << "    " << d.name << " = " << text(d.value) << "        ("
+                << translatedPhrases(d.meaning + "; depends on " + coordinateList(d.coordinates, s.n), l) << ")\n";
         });
     if (!sel.entries.empty()) out << "\nResults over the names\n";
     for (const EntryRef& e : sel.entries)
         out << "    " << (e.matrix == 'B' ? "b" : e.matrix == 'C' ? "c" : "g") << e.label.substr(1) << " = "
-            << text(valueOf(s, e)) << "        (" << entryMeaning(s, e) << ")\n";
+            << text(valueOf(s, e)) << "        (" << translatedPhrases(entryMeaning(s, e), l) << ")\n";
     if (sel.checks)
-        out << "    E_kin = 1/2 qd^T B qd        (the kinetic energy; in JSON written out over the b_jk)\n"
-            << "    E_pot = " << text(s.Epot) << "        (the potential energy: each link's weight over its gravity and frame-0 names, and the springs)\n";
+        out << "    E_kin = 1/2 qd^T B qd        (" << translatedPhrases("the kinetic energy; in JSON written out over the b_jk", l) << ")\n"
+            << "    E_pot = " << text(s.Epot) << "        ("
+            << translatedPhrases("the potential energy: each link's weight over its gravity and frame-0 names, and the springs", l) << ")\n";
     if (sel.checks) {
         const int n = s.n, total = n * n * (n + 1) / 2;
         out << "\nZero pattern of d b_jk / d q_l (j <= k; x: non-zero): " << s.nonZeroMassDerivatives() << " of " << total
@@ -244,11 +246,15 @@ void writeLatex(const StructuredDynamics& s, const StructuredDocumentInfo& info,
            "\\title{Euler--Lagrange model (structured form): " << latexText(s.systemName) << "}\n"
            "\\author{LagrangeLab}\n\\date{}\n"
            "\\begin{document}\n\\maketitle\n"
-        << "Form: " << info.form << " (" << latexText(info.formReason) << "). $B$, $C$ and $g$ are short sums over " << sel.needed
+        << translated("Form", info.language) << ": " << translated(info.form, info.language) << " (" << latexText(translatedPhrases(info.formReason, info.language)) << "). $B$, $C$ and $g$ are short sums over " << sel.needed
         << " named quantities; every vector of link $i$ is written in its own frame. "
            "Shorthand: $c_{i} = \\cos q_i$, $s_{i} = \\sin q_i$.\n";
     forEachDefinition(
-        s, sel, [&](int step) { out << "\\section*{Step " << step << "}\n" << latexStepTitle(step) << "\n\\medskip\n"; },
+        s, sel, [&](int step) {
+            out << "\\section*{" << translated("Step", info.language) << " " << step << "}\n"
+                << (info.language == Language::English ? std::string(latexStepTitle(step)) : latexText(translated(stepTitle(step), info.language)))
+                << "\n\\medskip\n";
+        },
         [&](const NamedDefinition& d) {
             out << "\\lldefinition{$" << latex(d.symbol) << " = " << latex(d.value) << "$}{$" << d.latex
                 << "$: " << latexText(d.meaning) << "; depends on " << coordinateList(d.coordinates, s.n, notes::Style::Latex) << "}\n";

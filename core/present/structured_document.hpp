@@ -30,6 +30,9 @@ struct StructuredDocumentInfo {
     // --steps: only the names of these steps of the course notes (1 frames, 4 Jacobian
     // columns, 6 gamma, 7 beta, 8 derivatives); B needs step 7, C, g and the checks step 8.
     int firstStep = 0, lastStep = 8;
+    // the language of its headings, titles and form line (language.hpp); the names and
+    // sums are the same in every language
+    Language language = Language::English;
 };
 
 std::string structuredDocument(const StructuredDynamics& s, DocumentFormat format, const StructuredDocumentInfo& info);
