@@ -120,6 +120,24 @@ private slots:
                  qPrintable(da.err));
         const Run en = run({"derive", bad});
         QVERIFY2(en.err.contains("error: " + bad + ": robot.joints[0].mass (joint 1): mass is negative (-1 kg); it must be >= 0"), qPrintable(en.err));
+        // Other kinds of message read as whole Danish sentences, no English clause left.
+        const char* broken[] = {
+            R"json({"format": "lagrangelab-scene/1", "name": "k", "robot": {"convention": "standard", "joints": [{"type": "revolute", "a": 1, "alpha": 0, "d": 0, "theta": 0, "mass": 1, "com": [0,0,0], "inertia": {"xx": 0.1, "yy": 0.1, "zz": 0.1}, "colour": 3}]}})json",
+            R"json({"format": "lagrangelab-scene/1", "name": "k", "robot": {"convention": "standard", "joints": [{"type": "revolute", "a": 1, "alpha": 0, "d": 0, "theta": 0, "mass": 1, "com": [0,0,0], "inertia": {"xx": 0.1, "yy": 0.1, "zz": 0.1}}]}, "effects": {"gravity": [0, -9.81]}})json",
+            R"json({"format": "lagrangelab-scene/1", "name": "k", "robot": {"convention": "standard", "joints": [{"type": "revolute", "a": 1, "alpha": 0, "d": 0, "theta": 0, "mass": 1, "com": [0,0,0], "inertia": {"xx": -0.1, "yy": 0.1, "zz": 0.1}}]}, "initial": {"q": [0, 1]}})json"};
+        const QStringList expected = {QString::fromUtf8("ukendt nøgle"), QString::fromUtf8("forventede en liste med 3 tal"),
+                                      QString::fromUtf8("inertitensoren er ikke positiv semidefinit")};
+        for (int k = 0; k < 3; ++k) {
+            QFile b(dir.filePath(QString("broken%1.json").arg(k)));
+            QVERIFY(b.open(QIODevice::WriteOnly));
+            b.write(broken[k]);
+            b.close();
+            const Run r = run({"derive", b.fileName(), "--lang", "da"});
+            QCOMPARE(r.code, 2);
+            QVERIFY2(r.err.contains(expected[k]), qPrintable(r.err));
+            for (const char* english : {" must ", "expected", " got ", " is not ", " the ", "error:", "hint:"})
+                QVERIFY2(!r.err.contains(english), qPrintable(QString(english) + " in " + r.err));
+        }
         const Run warned = run({"derive", example("stanford_arm.json"), "--lang", "da", "--steps", "0"});
         QVERIFY2(warned.err.contains(QString::fromUtf8("advarsel: ")) && warned.err.contains(QString::fromUtf8("overholder ikke trekantsuligheden")) &&
                      warned.err.contains(QString::fromUtf8("tip: intet fysisk legeme har denne inerti")) && !warned.err.contains("warning:"),
