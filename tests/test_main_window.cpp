@@ -165,6 +165,36 @@ private slots:
         QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, dir_.filePath("settings"));
     }
 
+    // An edit that makes the robot larger refits a camera the user has not moved (a1 = 1.5
+    // on the 2R left the view before); a camera the user zoomed is kept.
+    void cameraRefitsWhenAnEditResizesTheRobot() {
+        MainWindow w;
+        w.setAskBeforeClosing(false);
+        w.show();
+        QVERIFY(w.openFile(example("planar_2r.json"), nullptr, true));
+        QVERIFY(settled(w));
+        const double d0 = w.sceneView().cameraDistance(), r0 = w.sceneView().visualScene()->bounds.radius();
+        JointTableModel& model = w.jointModel();
+        QVERIFY(model.setData(model.index(0, JointTableModel::A), "1.5", Qt::EditRole));
+        QVERIFY(checked(w));
+        QVERIFY(settled(w));
+        const double d1 = w.sceneView().cameraDistance(), r1 = w.sceneView().visualScene()->bounds.radius();
+        QVERIFY2(r1 > 1.1 * r0, qPrintable(QString("%1 -> %2").arg(r0).arg(r1)));
+        QVERIFY2(std::abs(d1 / d0 - r1 / r0) < 0.05, qPrintable(QString("distance %1 -> %2, radius %3 -> %4").arg(d0).arg(d1).arg(r0).arg(r1)));
+        // The user zooms in: the next resize keeps that camera.
+        w.sceneView().zoomBy(0.5);
+        QVERIFY(w.sceneView().cameraMovedByUser());
+        const double zoomed = w.sceneView().cameraDistance();
+        QVERIFY(model.setData(model.index(0, JointTableModel::A), "2.5", Qt::EditRole));
+        QVERIFY(checked(w));
+        QVERIFY(settled(w));
+        QVERIFY(w.sceneView().visualScene()->bounds.radius() > 1.1 * r1);
+        QCOMPARE(w.sceneView().cameraDistance(), zoomed);
+        // Fit (F) refits and forgets the user's move.
+        w.sceneView().fit();
+        QVERIFY(!w.sceneView().cameraMovedByUser() && w.sceneView().cameraDistance() > zoomed);
+    }
+
     // A DH cell edit reaches the model, the derivation and the drawn 3D scene.
     void editingADhCellChangesModelDerivationAndScene() {
         MainWindow w;

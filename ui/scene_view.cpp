@@ -100,6 +100,11 @@ void SceneView::setVisualScene(std::shared_ptr<VisualScene> scene, bool fitCamer
         elevation_ = preset == CameraSpec::Preset::Front ? 0 : 30;
         distance_ = 0;
         pan_.setZero();
+        userMoved_ = false;
+    } else if (visual_ && !userMoved_ && fittedRadius_ > 0 &&
+               std::abs(visual_->bounds.radius() / fittedRadius_ - 1) > 0.05) {  // an edit resized the robot
+        distance_ = 0;
+        pan_.setZero();
     }
     applyCamera();
     requestFrame();
@@ -227,6 +232,7 @@ int SceneView::jointAt(const QPoint& p) {
 void SceneView::fit() {
     distance_ = 0;
     pan_.setZero();
+    userMoved_ = false;
     applyCamera();
     requestFrame();
 }
@@ -251,7 +257,10 @@ void SceneView::applyCamera() {
     spec.distance = distance_;
     const double aspect = double(std::max(width(), 1)) / std::max(height(), 1);
     CameraView view = cameraView(*visual_, spec, aspect);
-    if (distance_ <= 0) distance_ = (view.eye - view.centre).norm();
+    if (distance_ <= 0) {  // fitted now
+        distance_ = (view.eye - view.centre).norm();
+        fittedRadius_ = visual_->bounds.radius();
+    }
     view.eye += pan_;
     view.centre += pan_;
     const double radius = std::max(visual_->bounds.radius(), 1e-6);
@@ -302,6 +311,7 @@ void SceneView::move(QMouseEvent* e) {
     const QPoint delta = e->pos() - last_;
     last_ = e->pos();
     if (!visual_) return;
+    if (e->buttons() & (Qt::LeftButton | Qt::RightButton | Qt::MiddleButton)) userMoved_ = true;
     if (e->buttons() & Qt::LeftButton) {
         azimuth_ -= delta.x() * 0.4;
         elevation_ = std::clamp(elevation_ + delta.y() * 0.4, -89.9, 89.9);
@@ -332,8 +342,11 @@ void SceneView::move(QMouseEvent* e) {
 
 void SceneView::release() { dragging_ = Qt::NoButton; }
 
-void SceneView::wheel(QWheelEvent* e) {
-    distance_ *= std::pow(0.9, e->angleDelta().y() / 120.0);
+void SceneView::wheel(QWheelEvent* e) { zoomBy(std::pow(0.9, e->angleDelta().y() / 120.0)); }
+
+void SceneView::zoomBy(double factor) {
+    distance_ *= factor;
+    userMoved_ = true;
     applyCamera();
     requestFrame();
 }

@@ -37,8 +37,15 @@ public:
     ~SceneView() override;
 
     // Shows `scene` (shared with the caller, posed by this view only). `fit`: the camera
-    // fits the scene's bounds; otherwise it keeps its angles and distance.
+    // fits the scene's bounds; otherwise it keeps its angles and distance, and refits its
+    // distance when the scene's size changed by more than 5 % and the user has not moved it.
     void setVisualScene(std::shared_ptr<VisualScene> scene, bool fit);
+    // The camera's distance from what it looks at [m], and whether the user moved it since
+    // it was last fitted (tests, the presentation mode).
+    double cameraDistance() const { return distance_; }
+    bool cameraMovedByUser() const { return userMoved_; }
+    // Moves the camera towards what it looks at (factor < 1) or away, as the wheel does.
+    void zoomBy(double factor);
     const VisualScene* visualScene() const { return visual_.get(); }
     // Poses the scene at q, t; `trail` (optional) the end effector's path up to t.
     void setPose(const Eigen::VectorXd& q, double t, const std::vector<Eigen::Vector3d>* trail = nullptr);
@@ -109,6 +116,11 @@ private:
     std::vector<Eigen::Vector3d> trail_;
     // Camera: angles [deg] in the scene's basis, distance [m], pan offset of the centre.
     double azimuth_ = 45, elevation_ = 30, distance_ = 0;
+    // Whether the user turned, panned or zoomed since the last fit (then an edit keeps the
+    // camera), and the scene radius the camera was last fitted to (an edit that changes it
+    // by more than 5 % refits an untouched camera: a1 = 1.5 on the 2R stays in view).
+    bool userMoved_ = false;
+    double fittedRadius_ = 0;
     Eigen::Vector3d pan_ = Eigen::Vector3d::Zero();
     QPoint last_;
     Qt::MouseButton dragging_ = Qt::NoButton;
