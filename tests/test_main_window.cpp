@@ -782,6 +782,30 @@ private slots:
         QVERIFY(w.findChild<QDockWidget*>("model")->isVisible());
     }
 
+    // Leaving presentation mode puts every dock and the window back exactly where they were
+    // (the docks stayed resized before).
+    void leavingPresentationRestoresTheLayout() {
+        MainWindow w;
+        QVERIFY(openShown(w, "planar_2r.json"));
+        w.playback().pause();
+        w.resize(1100, 700);  // smaller than the screen, so full screen resizes it
+        QTest::qWait(300);
+        const auto layout = [&] {
+            QStringList out{QString("window %1x%2").arg(w.width()).arg(w.height())};
+            for (QDockWidget* dock : w.findChildren<QDockWidget*>())
+                out << QString("%1 %2,%3 %4x%5 %6").arg(dock->objectName()).arg(dock->x()).arg(dock->y()).arg(dock->width()).arg(dock->height()).arg(dock->isVisible());
+            return out.join("; ");
+        };
+        const QString before = layout();
+        w.setPresentationMode(true);
+        QTRY_VERIFY(w.isFullScreen());
+        QTest::qWait(300);
+        QVERIFY2(layout() != before, "presentation mode changed nothing");
+        w.setPresentationMode(false);
+        QTRY_VERIFY(!w.isFullScreen());
+        QTRY_COMPARE_WITH_TIMEOUT(layout(), before, 5000);
+    }
+
     // The mouse over a joint in the 3D view (the GL view's own native window) selects its
     // DH row and lights the joint up; a click makes the row's cell current.
     void hoveringAJointSelectsItsRow() {

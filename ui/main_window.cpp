@@ -9,6 +9,7 @@
 
 #include <QAction>
 #include <QActionGroup>
+#include <QLayout>
 #include <QBuffer>
 #include <QApplication>
 #include <QCheckBox>
@@ -909,6 +910,11 @@ void MainWindow::setGhostIntegrator(const QString& integrator) {
 }
 
 void MainWindow::setPresentationMode(bool on) {
+    if (on == presenting_) return;
+    if (on) {  // the layout as it is, to come back to exactly
+        layoutBeforePresenting_ = saveState();
+        geometryBeforePresenting_ = geometry();
+    }
     presenting_ = on;
     modelDock_->setVisible(!on);
     QFont font = QApplication::font();
@@ -939,7 +945,27 @@ void MainWindow::setPresentationMode(bool on) {
         resizeDocks({plots}, {std::max(320, screen.height() * 2 / 5)}, Qt::Vertical);
     }
     for (QAction* key : presentationKeys_) key->setEnabled(on);
-    on ? showFullScreen() : showNormal();
+    if (on) {
+        showFullScreen();
+    } else {  // every dock, toolbar and the window itself where they were
+        showNormal();
+        // After the event loop has applied the normal state, the smaller fonts and the
+        // removed dock titles: restored now, the window would keep the presenting layout's
+        // minimum width and the docks would be laid out again for the old sizes.
+        // Twice: the first pass lets the widgets take their smaller minimum sizes, which
+        // some (the toolbars) only do after a layout pass at the new size.
+        const auto restore = [this] {
+            if (presenting_) return;
+            for (QWidget* w : findChildren<QWidget*>())
+                if (w->layout()) w->layout()->activate();
+            setGeometry(geometryBeforePresenting_);
+            restoreState(layoutBeforePresenting_);
+        };
+        QTimer::singleShot(0, this, [this, restore] {
+            restore();
+            QTimer::singleShot(0, this, restore);
+        });
+    }
 }
 
 void MainWindow::keyPressEvent(QKeyEvent* e) {

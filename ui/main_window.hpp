@@ -253,6 +253,8 @@ public:
     EditFrame* editFrame_ = nullptr;  // one repaint per edit: the cell and its result together
     bool askBeforeClosing_ = true;
     bool presenting_ = false;
+    QByteArray layoutBeforePresenting_;  // restored when leaving presentation mode, with …
+    QRect geometryBeforePresenting_;     // … the window's place and size
     bool jsonStale_ = true;  // the JSON tab's text is older than the document
     bool teaching_ = false;
     bool opening_ = false;  // a file is being checked (openFile waits for its worker)
