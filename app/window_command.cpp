@@ -81,6 +81,7 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
     window.resize(size.width, size.height);
     const bool scripted = !screenshot.empty() || options.has("first-frame");
     if (scripted) window.setAskBeforeClosing(false);
+    if (!scripted && !options.has("size")) window.rememberLayout();
     window.show();
     if (!scripted) window.offerRecovery();
 

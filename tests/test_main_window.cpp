@@ -782,6 +782,35 @@ private slots:
         QVERIFY(w.findChild<QDockWidget*>("model")->isVisible());
     }
 
+    // The window remembers its size and its docks between runs.
+    void windowRemembersItsLayout() {
+        QString before;
+        const auto layout = [](MainWindow& w) {
+            QStringList out{QString("window %1x%2").arg(w.width()).arg(w.height())};
+            for (QDockWidget* dock : w.findChildren<QDockWidget*>())
+                out << QString("%1 %2x%3").arg(dock->objectName()).arg(dock->width()).arg(dock->height());
+            return out.join("; ");
+        };
+        {
+            MainWindow w;
+            w.rememberLayout();
+            QVERIFY(openShown(w, "planar_2r.json"));
+            w.resize(1150, 720);
+            QTest::qWait(200);
+            w.resizeDocks({w.findChild<QDockWidget*>("plots")}, {300}, Qt::Vertical);
+            QTest::qWait(200);
+            before = layout(w);
+            QVERIFY(w.close());
+        }
+        MainWindow again;  // as the program starts it: its default size, then what was remembered
+        again.setAskBeforeClosing(false);
+        again.resize(1280, 800);
+        again.rememberLayout();
+        again.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&again) && again.openFile(example("planar_2r.json"), nullptr, true) && settled(again, 120));
+        QTRY_COMPARE_WITH_TIMEOUT(layout(again), before, 5000);
+    }
+
     // Leaving presentation mode puts every dock and the window back exactly where they were
     // (the docks stayed resized before).
     void leavingPresentationRestoresTheLayout() {

@@ -1078,10 +1078,22 @@ bool MainWindow::maybeSave() {
     return answer == QMessageBox::Discard;
 }
 
+void MainWindow::rememberLayout() {
+    remembersLayout_ = true;
+    QSettings settings("LagrangeLab", "LagrangeLab");
+    if (const QByteArray g = settings.value("window/geometry").toByteArray(); !g.isEmpty()) restoreGeometry(g);
+    if (const QByteArray s = settings.value("window/state").toByteArray(); !s.isEmpty()) restoreState(s);
+}
+
 void MainWindow::closeEvent(QCloseEvent* e) {
     if (!maybeSave()) {
         e->ignore();
         return;
+    }
+    if (remembersLayout_) {  // closed while presenting: the layout from before
+        QSettings settings("LagrangeLab", "LagrangeLab");
+        if (!presenting_) settings.setValue("window/geometry", saveGeometry());
+        settings.setValue("window/state", presenting_ ? layoutBeforePresenting_ : saveState());
     }
     discardRecovery();
     e->accept();

@@ -83,6 +83,9 @@ public:
     // Screenshot of the whole window, GL view included.
     QImage screenshot();
     void setAskBeforeClosing(bool on) { askBeforeClosing_ = on; }
+    // The window's size and its docks' layout as the user left them last time: restored
+    // now, and saved when it closes (a user's window; screenshots and tests keep theirs).
+    void rememberLayout();
 
     // For tests and benchmarks.
     SceneDocument& document() { return doc_; }
@@ -253,6 +256,7 @@ public:
     EditFrame* editFrame_ = nullptr;  // one repaint per edit: the cell and its result together
     bool askBeforeClosing_ = true;
     bool presenting_ = false;
+    bool remembersLayout_ = false;
     QByteArray layoutBeforePresenting_;  // restored when leaving presentation mode, with …
     QRect geometryBeforePresenting_;     // … the window's place and size
     bool jsonStale_ = true;  // the JSON tab's text is older than the document
