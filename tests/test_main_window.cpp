@@ -725,6 +725,16 @@ private slots:
         QVERIFY(!image.isNull());
         QVERIFY(content(image, image.rect().adjusted(60, 40, -60, -60)).second > 4);
         w.screenshot().save(dir_.filePath("work_precision_tab.png"));
+        // Open large: the plot in its own window, most of the screen, drawn.
+        QWidget* large = pane.openLarge();
+        QVERIFY(large && QTest::qWaitForWindowExposed(large));
+        const QRect screen = large->screen()->availableGeometry();
+        QVERIFY2(large->width() >= screen.width() * 0.85 && large->height() >= screen.height() * 0.75,
+                 qPrintable(QString("%1x%2").arg(large->width()).arg(large->height())));
+        const QImage shown = large->grab().toImage();
+        QVERIFY(content(shown, shown.rect().adjusted(60, 40, -60, -60)).second > 4);
+        shown.save(dir_.filePath("work_precision_large.png"));
+        large->close();
     }
 
     // Presentation mode: full screen, larger fonts, the model hidden; space, the arrows

@@ -5,6 +5,7 @@
 #include <QPainter>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QScreen>
 #include <QVBoxLayout>
 
 #include "core/model/cancellation.hpp"
@@ -19,11 +20,15 @@ WorkPrecisionPane::WorkPrecisionPane(QWidget* parent) : QWidget(parent) {
     run_ = new QPushButton(tr("Run work–precision sweep"), this);
     cancel_ = new QPushButton(tr("Cancel"), this);
     cancel_->setEnabled(false);
+    large_ = new QPushButton(tr("Open large…"), this);
+    large_->setEnabled(false);
+    large_->setToolTip(tr("The plot in a window of its own, as large as the screen allows"));
     progress_ = new QProgressBar(this);
     progress_->setRange(0, 1000);
     label_ = new QLabel(tr("Error and energy drift against CPU time for every integrator (1 repeat, tolerances 1e-3…1e-10)."), this);
     row->addWidget(run_);
     row->addWidget(cancel_);
+    row->addWidget(large_);
     row->addWidget(progress_, 1);
     layout->addLayout(row);
     layout->addWidget(label_);
@@ -31,6 +36,37 @@ WorkPrecisionPane::WorkPrecisionPane(QWidget* parent) : QWidget(parent) {
     pool_.setMaxThreadCount(1);
     connect(run_, &QPushButton::clicked, this, &WorkPrecisionPane::run);
     connect(cancel_, &QPushButton::clicked, this, &WorkPrecisionPane::cancel);
+    connect(large_, &QPushButton::clicked, this, &WorkPrecisionPane::openLarge);
+}
+
+namespace {
+// The plot alone, painted at whatever size its window has.
+class PlotWindow : public QWidget {
+public:
+    PlotWindow(WorkPrecisionResult result, QWidget* parent) : QWidget(parent, Qt::Window), result_(std::move(result)) {
+        setAttribute(Qt::WA_DeleteOnClose);
+    }
+
+protected:
+    void paintEvent(QPaintEvent*) override {
+        QPainter painter(this);
+        paintWorkPrecision(painter, QRectF(rect()), result_);
+    }
+
+private:
+    WorkPrecisionResult result_;
+};
+}  // namespace
+
+QWidget* WorkPrecisionPane::openLarge() {
+    if (!result_) return nullptr;
+    auto* window = new PlotWindow(*result_, this);
+    window->setObjectName("work-precision-large");
+    window->setWindowTitle(tr("Work–precision: %1").arg(QString::fromStdString(result_->scene)));
+    const QRect screen = this->screen() ? this->screen()->availableGeometry() : QRect(0, 0, 1280, 800);
+    window->resize(screen.width() * 9 / 10, screen.height() * 8 / 10);
+    window->show();
+    return window;
 }
 
 WorkPrecisionPane::~WorkPrecisionPane() {
@@ -78,6 +114,7 @@ void WorkPrecisionPane::run() {
             if (result) {
                 self->result_ = result;
                 self->progress_->setValue(1000);
+                self->large_->setEnabled(true);
                 self->label_->setText(tr("Done: %n run(s).", nullptr, static_cast<int>(result->points.size())));
             } else {
                 self->label_->setText(tr("Stopped: %1").arg(error));

@@ -29,6 +29,9 @@ public:
     void cancel();
     bool hasResult() const { return result_.has_value(); }
     bool saveImage(const QString& path, QString* error);
+    // The plot in a window of its own (Open large…), 90 % × 80 % of the screen; null
+    // without a result.
+    QWidget* openLarge();
 
 signals:
     void finished();
@@ -39,7 +42,7 @@ protected:
 private:
     Scene scene_;
     std::optional<WorkPrecisionResult> result_;
-    QPushButton *run_, *cancel_;
+    QPushButton *run_, *cancel_, *large_;
     QProgressBar* progress_;
     QLabel* label_;
     QThreadPool pool_;

@@ -40,8 +40,9 @@ Range decades(const std::vector<double>& values) {
     return r;
 }
 
-// "10" with a raised exponent, centred (align = 0), right-aligned (1) at `anchor`.
-void drawPowerOfTen(QPainter& p, QPointF anchor, int exponent, int align) {
+// "10" with a raised exponent, centred (align = 0), right-aligned (1) at `anchor`; the
+// box it takes, drawn unless `draw` is false.
+QRectF drawPowerOfTen(QPainter& p, QPointF anchor, int exponent, int align, bool draw = true) {
     const QFont base = p.font();
     QFont small = base;
     small.setPointSizeF(base.pointSizeF() * 0.72);
@@ -50,10 +51,20 @@ void drawPowerOfTen(QPainter& p, QPointF anchor, int exponent, int align) {
     const double ascent = QFontMetricsF(base).ascent();
     double x = align == 0 ? anchor.x() - (w1 + w2) / 2 : anchor.x() - (w1 + w2);
     const double y = anchor.y();
-    p.drawText(QPointF(x, y), mantissa);
-    p.setFont(small);
-    p.drawText(QPointF(x + w1, y - 0.45 * ascent), power);
-    p.setFont(base);
+    if (draw) {
+        p.drawText(QPointF(x, y), mantissa);
+        p.setFont(small);
+        p.drawText(QPointF(x + w1, y - 0.45 * ascent), power);
+        p.setFont(base);
+    }
+    return QRectF(x, y - 0.45 * ascent - QFontMetricsF(small).ascent(), w1 + w2, 0.45 * ascent + QFontMetricsF(small).ascent() + QFontMetricsF(base).descent());
+}
+
+// Every how many decades a label fits: labels `size` long (with a gap) on an axis
+// `length` long over `decades` decades.
+int labelStep(double length, int decades, double size) {
+    const double spacing = length / std::max(decades, 1);
+    return spacing > 0 ? std::max(1, static_cast<int>(std::ceil(size / spacing))) : 1;
 }
 
 struct Series {
@@ -63,7 +74,8 @@ struct Series {
 };
 
 void paintPanel(QPainter& p, const QRectF& box, const QString& title, const QString& yLabel,
-                const std::vector<Series>& series, Range xr, Range yr, double floorValue, const QString& floorLabel) {
+                const std::vector<Series>& series, Range xr, Range yr, double floorValue, const QString& floorLabel,
+                std::vector<QRectF>* tickLabels) {
     const QFontMetricsF fm(p.font());
     const QRectF plot = box.adjusted(fm.horizontalAdvance("10−00") + 34, fm.height() * 1.8, -12, -fm.height() * 2.8);
     const auto X = [&](double v) { return plot.left() + (std::log10(v) - xr.lo) / (xr.hi - xr.lo) * plot.width(); };
@@ -76,7 +88,11 @@ void paintPanel(QPainter& p, const QRectF& box, const QString& title, const QStr
     p.drawText(QRectF(box.left(), box.top(), box.width(), fm.height() * 1.5), Qt::AlignCenter, title);
     p.setFont(QFont(p.font().family(), p.font().pointSize()));
 
-    // grid: decades solid light, 2..9 faint
+    // grid: decades solid light, 2..9 faint; a decade's label where it fits (every 2nd or
+    // 3rd decade on a small panel), so no two labels overlap
+    const int xStep = labelStep(plot.width(), xr.hi - xr.lo, fm.horizontalAdvance("10−00") + fm.averageCharWidth());
+    const int yStep = labelStep(plot.height(), yr.hi - yr.lo, fm.height() * 1.1);
+    std::vector<QRectF> xLabels;
     for (int d = xr.lo; d <= xr.hi; ++d) {
         for (int m = 1; m <= 9 && !(d == xr.hi && m > 1); ++m) {
             const double x = X(m * std::pow(10.0, d));
@@ -84,7 +100,10 @@ void paintPanel(QPainter& p, const QRectF& box, const QString& title, const QStr
             p.drawLine(QPointF(x, plot.top()), QPointF(x, plot.bottom()));
         }
         p.setPen(Qt::black);
-        drawPowerOfTen(p, QPointF(X(std::pow(10.0, d)), plot.bottom() + fm.height() * 1.1), d, 0);
+        if ((d - xr.lo) % xStep != 0) continue;
+        const QRectF r = drawPowerOfTen(p, QPointF(X(std::pow(10.0, d)), plot.bottom() + fm.height() * 1.1), d, 0);
+        xLabels.push_back(r);
+        if (tickLabels) tickLabels->push_back(r);
     }
     for (int d = yr.lo; d <= yr.hi; ++d) {
         for (int m = 1; m <= 9 && !(d == yr.hi && m > 1); ++m) {
@@ -93,7 +112,13 @@ void paintPanel(QPainter& p, const QRectF& box, const QString& title, const QStr
             p.drawLine(QPointF(plot.left(), y), QPointF(plot.right(), y));
         }
         p.setPen(Qt::black);
-        drawPowerOfTen(p, QPointF(plot.left() - 6, Y(std::pow(10.0, d)) + fm.ascent() / 2 - 1), d, 1);
+        if ((d - yr.lo) % yStep != 0) continue;
+        const QPointF at(plot.left() - 6, Y(std::pow(10.0, d)) + fm.ascent() / 2 - 1);
+        // the lowest decade's label can meet the time axis's first one in the corner
+        const QRectF box = drawPowerOfTen(p, at, d, 1, false);
+        if (std::any_of(xLabels.begin(), xLabels.end(), [&](const QRectF& x) { return x.intersects(box); })) continue;
+        const QRectF r = drawPowerOfTen(p, at, d, 1);
+        if (tickLabels) tickLabels->push_back(r);
     }
     p.setPen(QPen(Qt::black, 1.2));
     p.setBrush(Qt::NoBrush);
@@ -136,7 +161,7 @@ void paintPanel(QPainter& p, const QRectF& box, const QString& title, const QStr
 
 }  // namespace
 
-void paintWorkPrecision(QPainter& p, const QRectF& area, const WorkPrecisionResult& result) {
+void paintWorkPrecision(QPainter& p, const QRectF& area, const WorkPrecisionResult& result, std::vector<QRectF>* tickLabels) {
     p.save();
     p.fillRect(area, Qt::white);
     QFont font = p.font();
@@ -194,9 +219,9 @@ void paintWorkPrecision(QPainter& p, const QRectF& area, const WorkPrecisionResu
     const QRectF left(area.left(), area.top() + titleH, panelW, area.height() - titleH);
     const QRectF right(area.left() + panelW, area.top() + titleH, panelW, area.height() - titleH);
     paintPanel(p, left, "final-state error vs CPU time", "final-state error", errors, xr, yr1,
-               result.reference.estimatedError, "reference error estimate");
+               result.reference.estimatedError, "reference error estimate", tickLabels);
     paintPanel(p, right, "energy drift vs CPU time", "max relative energy drift |E − E0 − W| / E", drifts, xr, yr2, 0,
-               {});
+               {}, tickLabels);
 
     // legend
     const double lx = area.left() + 2 * panelW + 10;

@@ -9,11 +9,16 @@
 #include <QSize>
 #include <QString>
 
+#include <vector>
+
 #include "core/simulation/work_precision.hpp"
 
 namespace ll::ui {
 
-void paintWorkPrecision(QPainter& painter, const QRectF& area, const WorkPrecisionResult& result);
+// `tickLabels` (optional): the boxes of the decade labels drawn, for tests. On a small
+// area only every 2nd or 3rd decade is labelled, so labels never overlap.
+void paintWorkPrecision(QPainter& painter, const QRectF& area, const WorkPrecisionResult& result,
+                        std::vector<QRectF>* tickLabels = nullptr);
 
 // Writes `path` as SVG or PNG by its suffix (.svg, .png), atomically (saveFileAtomically,
 // no .bak). On failure returns false and says why in *error.

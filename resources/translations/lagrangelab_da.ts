@@ -367,7 +367,7 @@
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../ui/main_window.cpp" line="+168"/>
+        <location filename="../../ui/main_window.cpp" line="+170"/>
         <source>standard (Spong)</source>
         <translation>standard (Spong)</translation>
     </message>
@@ -693,12 +693,12 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+782"/>
+        <location line="+819"/>
         <source>Export</source>
         <translation>Eksportér</translation>
     </message>
     <message>
-        <location line="-781"/>
+        <location line="-818"/>
         <source>Screenshot (PNG)…</source>
         <translation>Skærmbillede (PNG)…</translation>
     </message>
@@ -824,13 +824,13 @@
     </message>
     <message>
         <location line="+1"/>
-        <location line="+469"/>
+        <location line="+494"/>
         <location line="+11"/>
         <source>Save</source>
         <translation>Gem</translation>
     </message>
     <message>
-        <location line="-476"/>
+        <location line="-501"/>
         <source>▶ Play</source>
         <translation>▶ Afspil</translation>
     </message>
@@ -893,7 +893,7 @@
         <translation> · modellen har fejl: viser den seneste gyldige</translation>
     </message>
     <message>
-        <location line="+114"/>
+        <location line="+139"/>
         <source>%1: another file is being opened</source>
         <translation>%1: en anden fil er ved at blive åbnet</translation>
     </message>
@@ -941,7 +941,7 @@
         <translation>Scenen har ændringer, der ikke er gemt. Vil du gemme dem?</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+44"/>
         <source>%1%2 — LagrangeLab</source>
         <translation>%1%2 — LagrangeLab</translation>
     </message>
@@ -1286,7 +1286,7 @@
         <translation>link&amp;nbsp;%1</translation>
     </message>
     <message>
-        <location filename="../../ui/main_window.cpp" line="-1333"/>
+        <location filename="../../ui/main_window.cpp" line="-1370"/>
         <source>LagrangeLab scenes (*.lagrange *.json);;All files (*)</source>
         <translation>LagrangeLab-scener (*.lagrange *.json);;Alle filer (*)</translation>
     </message>
@@ -1423,7 +1423,7 @@
 <context>
     <name>WorkPrecisionPane</name>
     <message>
-        <location filename="../../ui/work_precision_pane.cpp" line="+19"/>
+        <location filename="../../ui/work_precision_pane.cpp" line="+20"/>
         <source>Run work–precision sweep</source>
         <translation>Kør gennemløb for beregningsarbejde–præcision</translation>
     </message>
@@ -1433,17 +1433,32 @@
         <translation>Annuller</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
+        <source>Open large…</source>
+        <translation>Åbn stort…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The plot in a window of its own, as large as the screen allows</source>
+        <translation>Grafen i sit eget vindue, så stort som skærmen tillader</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Error and energy drift against CPU time for every integrator (1 repeat, tolerances 1e-3…1e-10).</source>
         <translation>Fejl og energidrift som funktion af CPU-tid for hver integrator (1 gentagelse, tolerancer 1e-3…1e-10).</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+37"/>
+        <source>Work–precision: %1</source>
+        <translation>Beregningsarbejde–præcision: %1</translation>
+    </message>
+    <message>
+        <location line="+41"/>
         <source>cancelled</source>
         <translation>annulleret</translation>
     </message>
     <message numerus="yes">
-        <location line="+11"/>
+        <location line="+12"/>
         <source>Done: %n run(s).</source>
         <translation>
             <numerusform>Færdig: %n kørsel.</numerusform>
