@@ -792,6 +792,55 @@ private slots:
         QVERIFY(w.findChild<QDockWidget*>("model")->isVisible());
     }
 
+    // The plots lay their ticks out for the space they get: at the window's default size
+    // and in presentation mode, the labels of neighbouring ticks (as Qt Charts writes
+    // them, in the axis' font) do not overlap on either axis of either plot.
+    void plotTickLabelsDoNotOverlap() {
+        MainWindow w;
+        QVERIFY(openShown(w, "double_pendulum.json"));
+        w.playback().pause();
+        const auto check = [](ll::ui::TrajectoryChart& chart, const char* where) {
+            const QRectF area = chart.chart()->plotArea();
+            QVERIFY2(area.width() > 50 && area.height() > 30, where);
+            for (Qt::Orientation o : {Qt::Horizontal, Qt::Vertical}) {
+                auto* axis = static_cast<QValueAxis*>(chart.chart()->axes(o).front());
+                const int n = axis->tickCount();
+                QVERIFY(n >= 2);
+                const QFontMetricsF fm(axis->labelsFont());
+                const QString format = axis->labelFormat().isEmpty() ? "%.1f" : axis->labelFormat();
+                double widest = 0;
+                for (int k = 0; k < n; ++k)
+                    widest = std::max(widest, fm.horizontalAdvance(QString::asprintf(format.toLatin1().constData(),
+                                                                                     axis->min() + k * (axis->max() - axis->min()) / (n - 1))));
+                const double spacing = (o == Qt::Horizontal ? area.width() : area.height()) / (n - 1);
+                const double needed = o == Qt::Horizontal ? widest : fm.height();
+                QVERIFY2(spacing > needed, qPrintable(QString("%1 %2: %3 ticks %4 px apart, labels %5 px")
+                                                          .arg(where).arg(o == Qt::Horizontal ? "x" : "y").arg(n).arg(spacing).arg(needed)));
+            }
+        };
+        QTest::qWait(300);
+        check(w.energyChart(), "energy");
+        for (QTabWidget* tabs : w.findChildren<QTabWidget*>())  // the joints' tab, so its plot is laid out
+            for (QWidget* p = &w.jointsChart(); p; p = p->parentWidget())
+                if (tabs->indexOf(p) >= 0) tabs->setCurrentWidget(p);
+        QTest::qWait(300);
+        check(w.jointsChart(), "joints");
+        w.setPresentationMode(true);
+        QTRY_VERIFY(w.isFullScreen());
+        QTest::qWait(500);
+        check(w.energyChart(), "energy presenting");
+        w.setPresentationMode(false);
+        // A small plot (a narrow dock) at presentation scale: fewer ticks, still apart.
+        ll::ui::TrajectoryChart small(ll::ui::TrajectoryChart::Kind::Energy);
+        small.setScale(1.4);
+        small.setTrajectory(w.result()->simulation.trajectory);
+        small.resize(420, 150);
+        small.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&small));
+        QTest::qWait(300);
+        check(small, "small");
+    }
+
     // The window remembers its size and its docks between runs.
     void windowRemembersItsLayout() {
         QString before;

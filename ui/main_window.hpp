@@ -101,6 +101,7 @@ public:
     // loaded machine does not decide what they see).
     void setEditHoldLimit(int milliseconds) { editFrame_->setLimit(milliseconds); }
     TrajectoryChart& energyChart() { return *energy_; }
+    TrajectoryChart& jointsChart() { return *jointsChart_; }
     PlaybackBar& playback() { return *playback_; }
     TeachPanel& teachPanel() { return *teach_; }
     LiveSimulation& liveSimulation() { return live_; }

@@ -83,6 +83,7 @@ void TrajectoryChart::setScale(double scale) {
         axis->setTitleFont(scaled(baseTitle_, scale));
     }
     chart()->legend()->setFont(scaled(baseLegend_, scale));
+    fitTicks();
     for (QAbstractSeries* a : chart()->series()) {
         auto* s = static_cast<QLineSeries*>(a);
         QPen pen = s->pen();
@@ -189,11 +190,31 @@ void TrajectoryChart::fitAxes() {
     if (lo > hi) lo = 0, hi = 1;
     // A constant (b22 of the 2R) gets room around it, not a range of its rounding.
     const double pad = hi - lo > 1e-9 * std::max(1.0, std::abs(hi)) ? (hi - lo) * 0.05 : 0.05 * std::max(std::abs(hi), 1e-9);
-    axisY_->setRange(lo - pad, hi + pad);
+    dataLo_ = lo - pad, dataHi_ = hi + pad;
+    axisX_->setRange(times_.empty() ? 0 : times_.front(), std::max(tEnd, 1e-6));
+    fitTicks();
+    setCursorTime(times_.empty() ? 0 : times_.front());
+}
+
+void TrajectoryChart::fitTicks() {
+    QRectF area = chart()->plotArea();
+    if (area.width() < 10 || area.height() < 10) area = QRectF(0, 0, width() * 0.8, height() * 0.7);  // not laid out yet
+    const QFontMetricsF fm(axisX_->labelsFont());
+    double widest = 0;
+    for (double v : {axisX_->min(), axisX_->max(), (axisX_->min() + axisX_->max()) / 2 + 0.0125})
+        widest = std::max(widest, fm.horizontalAdvance(QString::asprintf("%.4g", v)));
+    axisX_->setTickCount(std::clamp(static_cast<int>(area.width() / (widest * 2.0 + 8)) + 1, 2, 11));
+    axisY_->setRange(dataLo_, dataHi_);
+    axisY_->setTickCount(std::clamp(static_cast<int>(area.height() / (QFontMetricsF(axisY_->labelsFont()).height() * 2.0)) + 1, 2, 9));
     axisY_->applyNiceNumbers();  // ticks at round values (no "−0.0" for a 10⁻¹⁵ bound)
     yMin_ = axisY_->min(), yMax_ = axisY_->max();
-    axisX_->setRange(times_.empty() ? 0 : times_.front(), std::max(tEnd, 1e-6));
-    setCursorTime(times_.empty() ? 0 : times_.front());
+}
+
+void TrajectoryChart::resizeEvent(QResizeEvent* e) {
+    QChartView::resizeEvent(e);
+    const double t = cursor_->count() ? cursor_->at(0).x() : 0;
+    fitTicks();
+    setCursorTime(t);
 }
 
 void TrajectoryChart::setCursorTime(double t) {

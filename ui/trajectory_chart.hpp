@@ -55,6 +55,7 @@ signals:
 
 protected:
     void mousePressEvent(QMouseEvent* e) override;
+    void resizeEvent(QResizeEvent* e) override;
     void mouseMoveEvent(QMouseEvent* e) override;
 
 private:
@@ -67,6 +68,10 @@ private:
     };
     void showCurves(const std::vector<Shown>& curves);
     void fitAxes();
+    // As many ticks as the plot area has room for: a label's width apart on the time
+    // axis, two label heights apart on the value axis (no overlapping labels at the
+    // window's default size, in presentation mode or in a small dock).
+    void fitTicks();
 
     Kind kind_;
     Trajectory trajectory_, ghost_;
@@ -77,6 +82,7 @@ private:
     QValueAxis *axisX_, *axisY_;
     QLineSeries* cursor_;
     double yMin_ = 0, yMax_ = 1;
+    double dataLo_ = 0, dataHi_ = 1;  // the value range before rounding to nice numbers
     double scale_ = 1.0;
     QFont baseLabels_, baseTitle_, baseLegend_;  // the fonts at scale 1
 };
