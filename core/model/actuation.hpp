@@ -9,7 +9,15 @@
 
 namespace ll {
 
+// The sentence's words; English unless a reader's language gives others
+// (core/present/localized_document.cpp).
+struct ActuationWords {
+    std::string noInputs = "no inputs", inputsOn = "inputs on", underactuated = "underactuated",
+                fullyActuated = "fully actuated";
+};
+
 // actuated: 0-based coordinates with an input; coordinateNames: all n coordinates.
-std::string actuationText(const std::vector<int>& actuated, const std::vector<std::string>& coordinateNames);
+std::string actuationText(const std::vector<int>& actuated, const std::vector<std::string>& coordinateNames,
+                          const ActuationWords& words = {});
 
 }  // namespace ll

@@ -1,6 +1,5 @@
 #include "core/present/derivation_document.hpp"
 
-#include "core/model/actuation.hpp"
 #include "core/model/cancellation.hpp"
 #include "core/present/display_builder.hpp"
 #include "core/present/json_document.hpp"

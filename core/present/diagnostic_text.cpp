@@ -301,11 +301,7 @@ const std::vector<std::pair<std::string, std::string>>& danishMessages() {
     return table;
 }
 
-std::string replacedAll(std::string text) {
-    for (const auto& [from, to] : danishMessages())
-        for (std::size_t at = 0; (at = text.find(from, at)) != std::string::npos; at += to.size()) text.replace(at, from.size(), to);
-    return text;
-}
+std::string replacedAll(const std::string& text) { return replacedInOrder(text, danishMessages()); }
 
 }  // namespace
 

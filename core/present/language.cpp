@@ -177,11 +177,14 @@ std::string translated(const std::string& english, Language language) {
     return it != table.end() ? it->second : english;
 }
 
-std::string translatedPhrases(std::string text, Language language) {
-    if (language == Language::English) return text;
-    for (const auto& [from, to] : danishPhrases())
+std::string replacedInOrder(std::string text, const std::vector<std::pair<std::string, std::string>>& pairs) {
+    for (const auto& [from, to] : pairs)
         for (std::size_t at = 0; (at = text.find(from, at)) != std::string::npos; at += to.size()) text.replace(at, from.size(), to);
     return text;
+}
+
+std::string translatedPhrases(std::string text, Language language) {
+    return language == Language::English ? text : replacedInOrder(std::move(text), danishPhrases());
 }
 
 }  // namespace ll::present

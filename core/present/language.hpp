@@ -9,6 +9,8 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 namespace ll::present {
 
@@ -25,6 +27,10 @@ Language languageFromEnvironment();
 // `english`, one of the core's phrases, in `language`; `english` itself when the table
 // has no translation (a scene's own name, a warning built from values).
 std::string translated(const std::string& english, Language language);
+
+// `text` with every `from` of `pairs` replaced by its `to`, pair by pair in order (a longer
+// phrase before a shorter one it contains); a replacement is not searched again.
+std::string replacedInOrder(std::string text, const std::vector<std::pair<std::string, std::string>>& pairs);
 
 // `text` (a step's general formula, a form's reason) with each of the core's phrases in
 // it in `language`: the phrases around symbols and numbers ("row i:", "Q: non-conservative

@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include "core/model/actuation.hpp"
 #include "core/present/labels.hpp"
 #include "core/present/latex_formula.hpp"
 #include "core/present/latex_text.hpp"
@@ -11,12 +12,6 @@ namespace ll::present {
 namespace {
 
 using Replacements = std::vector<std::pair<std::string, std::string>>;
-
-std::string replaced(std::string s, const Replacements& pairs) {
-    for (const auto& [from, to] : pairs)
-        for (std::size_t at = 0; (at = s.find(from, at)) != std::string::npos; at += to.size()) s.replace(at, from.size(), to);
-    return s;
-}
 
 // The general formulas of steps 7 and 8 (core/symbolic/*_derivation.cpp) in the
 // notation's letters: B(q) q̈ … = Q becomes M(Θ) Θ̈ … = τ.
@@ -104,12 +99,10 @@ std::string massMatrixSum(const NotationSymbols& n) {
 }
 
 std::string actuationSentence(const std::vector<int>& actuated, const std::vector<std::string>& coordinates, Language language) {
-    std::string inputs;
-    for (int j : actuated) inputs += (inputs.empty() ? "" : ", ") + coordinates.at(static_cast<std::size_t>(j));
-    const std::size_t m = actuated.size(), n = coordinates.size();
-    return (inputs.empty() ? translated("no inputs", language) : translated("inputs on", language) + " " + inputs) +
-           (m < n ? " (" + translated("underactuated", language) + ": m = " + std::to_string(m) + " < n = " + std::to_string(n) + ")"
-                  : " (" + translated("fully actuated", language) + ")");
+    const ActuationWords english;
+    return actuationText(actuated, coordinates,
+                         {translated(english.noInputs, language), translated(english.inputsOn, language),
+                          translated(english.underactuated, language), translated(english.fullyActuated, language)});
 }
 
 std::shared_ptr<DisplayDocument> localizedDocument(const DisplayDocument& document, const Presentation& p) {
@@ -122,8 +115,8 @@ std::shared_ptr<DisplayDocument> localizedDocument(const DisplayDocument& docume
         step.title = translated(step.title, p.language);
         const std::string latexBefore = step.formulaLatex;
         if (letters && (step.number == 7 || step.number == 8)) {
-            step.formulaLatex = replaced(step.formulaLatex, latexLetters(n, document.robot));
-            step.formulaText = replaced(step.formulaText, textLetters(n, document.robot));
+            step.formulaLatex = replacedInOrder(step.formulaLatex, latexLetters(n, document.robot));
+            step.formulaText = replacedInOrder(step.formulaText, textLetters(n, document.robot));
             if (p.notation == Notation::Craig && step.number == 8 && document.robot)
                 step.formulaLatex += R"(,\quad V(\Theta, \dot{\Theta}) = C\,\dot{\Theta})";
         }
@@ -145,6 +138,11 @@ std::shared_ptr<DisplayDocument> localizedDocument(const DisplayDocument& docume
     }
     out->form = translated(document.form, p.language);
     out->formReason = translatedPhrases(document.formReason, p.language);
+    out->remark.clear();
+    if (document.robot && letters && n.modifiedDH != document.modifiedDH)
+        out->remark = translated(n.modifiedDH ? "Craig's notation goes with modified DH parameters; this robot is given in the standard convention"
+                                              : "this notation goes with standard DH parameters; this robot is given in the modified convention",
+                                 p.language);
     if (!document.actuationFromInputs) {  // a fixed text (the structured form's)
         out->actuation = translated(document.actuation, p.language);
         out->actuationLatex.clear();
@@ -165,11 +163,6 @@ std::shared_ptr<DisplayDocument> localizedDocument(const DisplayDocument& docume
     for (std::size_t k = marks.size(); k-- > 0;)
         for (std::size_t at; (at = out->actuationLatex.find(marks[k])) != std::string::npos;)
             out->actuationLatex.replace(at, marks[k].size(), latex[k]);
-    out->remark.clear();
-    if (document.robot && letters && n.modifiedDH != document.modifiedDH)
-        out->remark = translated(n.modifiedDH ? "Craig's notation goes with modified DH parameters; this robot is given in the standard convention"
-                                              : "this notation goes with standard DH parameters; this robot is given in the modified convention",
-                                 p.language);
     return out;
 }
 
