@@ -373,8 +373,16 @@ private:
         GiNaC::exmap rest;
         for (const GiNaC::symbol& v : s_.qd) rest[v] = 0;
         for (const SymbolicTerm& torque : effects.torques) d_.actuated.push_back(torque.joint);
-        for (int i = 0; i < n_; ++i)
-            if (!isZero(forces_(i, 0).subs(rest))) d_.actuated.push_back(i);
+        for (int i = 0; i < n_; ++i) {
+            ex atRest;
+            try {
+                atRest = forces_(i, 0).subs(rest);
+            } catch (const GiNaC::pole_error&) {  // -0.1/theta1_dot: no force is infinite at rest
+                throw InputError(lagrangianForceField(i), "the force is infinite at rest (every velocity 0): '" + spec_.forces[i] +
+                                                              "'; a generalized force must be finite there");
+            }
+            if (!isZero(atRest)) d_.actuated.push_back(i);
+        }
         std::sort(d_.actuated.begin(), d_.actuated.end());
         d_.actuated.erase(std::unique(d_.actuated.begin(), d_.actuated.end()), d_.actuated.end());
         d_.underactuated = static_cast<int>(d_.actuated.size()) < n_;
