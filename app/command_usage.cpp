@@ -82,7 +82,8 @@ std::string overviewUsage() {
         "           with --screenshot it plays, shows a derivation step or poses the robot, saves the\n"
         "           whole window and exits; [--select ENTRY] [--pick-link I] [--at T] [--tab NAME]\n"
         "           [--joint J] [--derivation typeset|text|entries] picture a picked entry or link, a time,\n"
-        "           the Torques or Properties tab\n"
+        "           the Torques or Properties tab; --present starts in presentation mode (full screen, or\n"
+        "           --size with --screenshot)\n"
         "\ncommands:\n";
     for (const CommandText& c : commands) s += "  " + synopsis(c, 2) + "\n" + indented(c.summary, "      ");
     return s + "\nexit codes: 0 success, 2 bad input, 3 simulation stopped early\n";

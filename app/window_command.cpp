@@ -1,5 +1,5 @@
 // `lagrangelab [SCENE] [--screenshot FILE.png [--play SECONDS] [--step N] [--teach q1,...]
-// [--select ENTRY] [--pick-link I] [--at T] [--tab NAME] [--joint J] [--derivation VIEW]]`:
+// [--select ENTRY] [--pick-link I] [--at T] [--tab NAME] [--joint J] [--derivation VIEW]] [--present]`:
 // the desktop window (ui/main_window.hpp); the options picture any state from the command line.
 #include <algorithm>
 #include <chrono>
@@ -36,8 +36,8 @@ namespace ll::cli {
 int windowCommand(const Args& args, const std::chrono::steady_clock::time_point& processStart) {
     const Options options(args,
                           {"screenshot", "play", "step", "teach", "size", "first-frame", "select", "pick-link", "at", "tab",
-                           "joint", "derivation"},
-                          {"first-frame"});
+                           "joint", "derivation", "present"},
+                          {"first-frame", "present"});
     if (options.positional().size() > 1) throw UsageError("the window takes one SCENE, got " + std::to_string(options.positional().size()));
     const std::string scene = options.positional().empty() ? (examplesDirectory() / "double_pendulum.json").string() : options.positional()[0];
     const std::string screenshot = options.text("screenshot");
@@ -84,6 +84,12 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
     if (!scripted && !options.has("size")) window.rememberLayout();
     window.show();
     if (!scripted) window.offerRecovery();
+    if (options.has("present")) {
+        // A scripted picture presents in a window of --size (the projector's pixels), the
+        // window full screen otherwise.
+        if (scripted || options.has("size")) window.setPresentationSize(QSize(size.width, size.height));
+        window.setPresentationMode(true);
+    }
 
     if (options.has("first-frame")) {
         // Start to the first drawn frame of the simulated scene (benchmarks).

@@ -792,6 +792,57 @@ private slots:
         QVERIFY(w.findChild<QDockWidget*>("model")->isVisible());
     }
 
+    // Presentation mode on a projector's 1280×720 and 1920×1080: the 3D view takes at least
+    // half the window, the robot at least 60 % of the view's height (its projection through
+    // the view's camera at the shown pose), and the derivation and the energy plot stand
+    // beside the view, not under it.
+    void presentationGivesTheRobotTheScreen_data() {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<QSize>("size");
+        for (const char* scene : {"puma560.json", "panda.json"})
+            for (QSize size : {QSize(1280, 720), QSize(1920, 1080)})
+                QTest::newRow(qPrintable(QString("%1 %2x%3").arg(scene).arg(size.width()).arg(size.height()))) << QString(scene) << size;
+    }
+    void presentationGivesTheRobotTheScreen() {
+        QFETCH(QString, scene);
+        QFETCH(QSize, size);
+        MainWindow w;
+        QVERIFY(openShown(w, qPrintable(scene)));
+        w.playback().pause();
+        w.setPresentationSize(size);
+        w.setPresentationMode(true);
+        QTRY_COMPARE(w.size(), size);
+        QTest::qWait(500);
+        ll::ui::SceneView& view = w.sceneView();
+        const double share = double(view.width()) * view.height() / (double(w.width()) * w.height());
+        const double robot = view.sceneHeightInView();
+        qInfo("%s: 3D view %dx%d (%.0f %% of the window), robot %.0f %% of its height", qPrintable(scene), view.width(),
+              view.height(), 100 * share, 100 * robot);
+        QVERIFY2(share >= 0.5, qPrintable(QString::number(share)));
+        QVERIFY2(robot >= 0.6, qPrintable(QString::number(robot)));
+        QVERIFY2(robot <= 1.0, qPrintable(QString::number(robot)));  // and all of it in view
+        const int viewRight = view.mapTo(&w, QPoint(view.width(), 0)).x();
+        for (const char* dock : {"derivation", "plots"}) {
+            auto* d = w.findChild<QDockWidget*>(dock);
+            QVERIFY(d && d->isVisible());
+            QVERIFY2(d->x() >= viewRight, dock);
+        }
+        // Played through, the robot never leaves the picture: the camera backs away as the
+        // motion needs (a falling Panda), never closer.
+        const double aspect = double(view.width()) / view.height();
+        double last = (view.camera().eye - view.camera().centre).norm();
+        std::vector<Eigen::Vector4d> extent;
+        for (int k = 0; k <= 40; ++k) {
+            w.playback().setTime(w.playback().endTime() * k / 40);
+            const double distance = (view.camera().eye - view.camera().centre).norm();
+            view.visualScene()->currentExtent(extent);
+            QVERIFY2(ll::distanceToHold(view.camera(), extent, aspect) <= distance * (1 + 1e-9), qPrintable(QString::number(k)));
+            QVERIFY(distance >= last * (1 - 1e-12));
+            last = distance;
+        }
+        w.setPresentationMode(false);
+    }
+
     // The plots lay their ticks out for the space they get: at the window's default size
     // and in presentation mode, the labels of neighbouring ticks (as Qt Charts writes
     // them, in the axis' font) do not overlap on either axis of either plot.
@@ -804,16 +855,29 @@ private slots:
             QVERIFY2(area.width() > 50 && area.height() > 30, where);
             for (Qt::Orientation o : {Qt::Horizontal, Qt::Vertical}) {
                 auto* axis = static_cast<QValueAxis*>(chart.chart()->axes(o).front());
-                const int n = axis->tickCount();
+                // The tick values: evenly spread (tickCount) or every interval from the anchor.
+                QList<double> ticks;
+                if (axis->tickType() == QValueAxis::TicksDynamic) {
+                    QVERIFY(axis->tickInterval() > 0);
+                    const double first = axis->tickAnchor() + std::ceil((axis->min() - axis->tickAnchor()) / axis->tickInterval() - 1e-9) * axis->tickInterval();
+                    for (double v = first; v <= axis->max() + 1e-9 * axis->tickInterval(); v += axis->tickInterval()) ticks << v;
+                } else {
+                    for (int k = 0; k < axis->tickCount(); ++k) ticks << axis->min() + k * (axis->max() - axis->min()) / (axis->tickCount() - 1);
+                }
+                const int n = static_cast<int>(ticks.size());
                 QVERIFY(n >= 2);
                 const QFontMetricsF fm(axis->labelsFont());
                 const QString format = axis->labelFormat().isEmpty() ? "%.1f" : axis->labelFormat();
                 double widest = 0;
-                for (int k = 0; k < n; ++k)
-                    widest = std::max(widest, fm.horizontalAdvance(QString::asprintf(format.toLatin1().constData(),
-                                                                                     axis->min() + k * (axis->max() - axis->min()) / (n - 1))));
-                const double spacing = (o == Qt::Horizontal ? area.width() : area.height()) / (n - 1);
+                for (double v : ticks) widest = std::max(widest, fm.horizontalAdvance(QString::asprintf(format.toLatin1().constData(), v)));
+                const double spacing = (o == Qt::Horizontal ? area.width() : area.height()) * (ticks[1] - ticks[0]) / (axis->max() - axis->min());
                 const double needed = o == Qt::Horizontal ? widest : fm.height();
+                if (o == Qt::Horizontal && axis->tickType() == QValueAxis::TicksDynamic) {  // round seconds
+                    const double interval = axis->tickInterval(), mantissa = interval / std::pow(10.0, std::floor(std::log10(interval)));
+                    QVERIFY2(std::abs(mantissa - 1) < 1e-9 || std::abs(mantissa - 2) < 1e-9 || std::abs(mantissa - 2.5) < 1e-9 ||
+                                 std::abs(mantissa - 5) < 1e-9,
+                             qPrintable(QString("%1: time ticks every %2 s").arg(where).arg(interval)));
+                }
                 QVERIFY2(spacing > needed, qPrintable(QString("%1 %2: %3 ticks %4 px apart, labels %5 px")
                                                           .arg(where).arg(o == Qt::Horizontal ? "x" : "y").arg(n).arg(spacing).arg(needed)));
             }

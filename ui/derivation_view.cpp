@@ -17,6 +17,7 @@
 
 #include <QSignalBlocker>
 #include <functional>
+#include <initializer_list>
 
 #include "core/model/cancellation.hpp"
 #include "core/pipeline/display_derivation.hpp"
@@ -473,6 +474,10 @@ void DerivationView::nextStep() {
 void DerivationView::previousStep() {
     const auto at = std::lower_bound(listed_.begin(), listed_.end(), step_);
     if (at != listed_.begin()) showStep(*(at - 1));
+}
+
+void DerivationView::setPageOnly(bool on) {
+    for (QWidget* w : std::initializer_list<QWidget*>{steps_, previous_, next_, status_}) w->setVisible(!on);
 }
 
 void DerivationView::setZoom(double zoom) {

@@ -50,6 +50,9 @@ public:
     int step() const { return step_; }
     // The step list's rows as shown ("Step 6: Potential energy").
     QStringList listedSteps() const;
+    // The page alone, without the step list, its buttons and status (presentation mode:
+    // the page's heading names the step, the arrow keys turn it).
+    void setPageOnly(bool on);
     void setZoom(double zoom);  // 1 = 15 px per em; clamped to 0.25..8
     double zoom() const { return zoom_; }
 

@@ -42,6 +42,7 @@
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
+#include <QTabBar>
 #include <QTabWidget>
 #include <QTableView>
 #include <QThreadPool>
@@ -521,6 +522,7 @@ void MainWindow::buildMenus() {
     QMenu* view = menuBar()->addMenu(tr("&View"));
     QAction* present = view->addAction(tr("Presentation mode"), this, [this] { setPresentationMode(!presenting_); });
     present->setShortcut(Qt::Key_F11);
+    addAction(present);  // F11 leaves presentation mode, where the menu bar is hidden
     view->addAction(tr("Fit view"), view_, &SceneView::fit);
     view->addSeparator();
     // The derivation's language and the textbook's letters; remembered for the next start.
@@ -917,12 +919,21 @@ void MainWindow::setPresentationMode(bool on) {
     }
     presenting_ = on;
     modelDock_->setVisible(!on);
+    // Nothing a projector's audience needs to read twice: the menus (F11 and the keys stay
+    // live as the window's own actions), the tool bar, the status line and the pick hint.
+    menuBar()->setVisible(!on);
+    statusBar()->setVisible(!on);
+    readout_->setVisible(!on);
+    for (QToolBar* bar : findChildren<QToolBar*>(QString(), Qt::FindDirectChildrenOnly)) bar->setVisible(!on);
     QFont font = QApplication::font();
     static const double base = font.pointSizeF() > 0 ? font.pointSizeF() : 10;
     font.setPointSizeF(on ? base * 1.6 : base);
     QApplication::setFont(font);
     derivation_->setZoom(on ? 1.6 : 1.0);
-    typeset_->setZoom(on ? 1.6 : 1.0);
+    typeset_->setZoom(on ? 1.6 : 1.0);  // 24 px per em: 18 pt at 96 dpi
+    typeset_->setPageOnly(on);
+    derivationTabs_->tabBar()->setVisible(!on);
+    bottomTabs_->tabBar()->setVisible(!on);
     readout_->setFixedHeight(3 * QFontMetrics(font).lineSpacing() + 6);
     // The plots: bigger labels and lines need room, so their dock gets more height, and
     // the dock titles (which the application font does not reach) grow too.
@@ -940,15 +951,20 @@ void MainWindow::setPresentationMode(bool on) {
             old->deleteLater();
         }
     }
-    if (auto* plots = findChild<QDockWidget*>("plots"); plots && on) {
-        const QRect screen = this->screen() ? this->screen()->availableGeometry() : geometry();
-        resizeDocks({plots}, {std::max(320, screen.height() * 2 / 5)}, Qt::Vertical);
-    }
     for (QAction* key : presentationKeys_) key->setEnabled(on);
     if (on) {
-        showFullScreen();
+        if (presentationSize_.isValid()) {
+            showNormal();
+            resize(presentationSize_);
+        } else {
+            showFullScreen();
+        }
+        layOutForPresenting();
+        // Again once the window has its full size (full screen comes through the event loop).
+        QTimer::singleShot(0, this, [this] { layOutForPresenting(); });
     } else {  // every dock, toolbar and the window itself where they were
         showNormal();
+        view_->setFramePose(false);
         // After the event loop has applied the normal state, the smaller fonts and the
         // removed dock titles: restored now, the window would keep the presenting layout's
         // minimum width and the docks would be laid out again for the old sizes.
@@ -966,6 +982,28 @@ void MainWindow::setPresentationMode(bool on) {
             QTimer::singleShot(0, this, restore);
         });
     }
+}
+
+void MainWindow::layOutForPresenting() {
+    if (!presenting_) return;
+    auto* derivationDock = findChild<QDockWidget*>("derivation");
+    auto* plots = findChild<QDockWidget*>("plots");
+    if (!derivationDock || !plots) return;
+    // The plots under the derivation, both beside the 3D view: on a projector's 16:9 the
+    // robot gets the left 58 % at full height instead of a strip above a plot.
+    if (dockWidgetArea(plots) != Qt::RightDockWidgetArea || dockWidgetArea(derivationDock) != Qt::RightDockWidgetArea) {
+        derivationDock->show();
+        splitDockWidget(derivationDock, plots, Qt::Vertical);
+    }
+    const QSize area = size();
+    resizeDocks({derivationDock}, {area.width() * 42 / 100}, Qt::Horizontal);
+    resizeDocks({derivationDock, plots}, {area.height() * 56 / 100, area.height() * 44 / 100}, Qt::Vertical);
+    showPlotTab("energy");
+    derivationTabs_->setCurrentWidget(typeset_);
+    // The camera on the robot as it stands, fitted to the view's new shape.
+    QTimer::singleShot(0, view_, [this] {
+        if (presenting_) view_->setFramePose(true);
+    });
 }
 
 void MainWindow::keyPressEvent(QKeyEvent* e) {

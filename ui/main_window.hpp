@@ -138,7 +138,12 @@ public:
     const RunAnalysis* analysis() const { return analysis_.get(); }
     // Runs a ghost with `integrator` ("" removes it).
     void setGhostIntegrator(const QString& integrator);
+    // Presentation mode: the 3D view on the left (at least half the screen), the current
+    // derivation step above the energy plot on the right, every text large; keys only.
     void setPresentationMode(bool on);
+    // What presentation mode fills: the screen (an invalid size, the default) or, for a
+    // scripted picture (--present --size), a window of `size`.
+    void setPresentationSize(QSize size) { presentationSize_ = size; }
     // The language and notation the derivation is shown in (View → Language, Notation):
     // the derivation on screen is relabelled at once, not derived again.
     void setPresentation(const present::Presentation& presentation);
@@ -260,6 +265,8 @@ public:
     bool remembersLayout_ = false;
     QByteArray layoutBeforePresenting_;  // restored when leaving presentation mode, with …
     QRect geometryBeforePresenting_;     // … the window's place and size
+    QSize presentationSize_;             // invalid: presenting fills the screen
+    void layOutForPresenting();
     bool jsonStale_ = true;  // the JSON tab's text is older than the document
     bool teaching_ = false;
     bool opening_ = false;  // a file is being checked (openFile waits for its worker)

@@ -146,6 +146,7 @@ void SceneView::setPose(const Eigen::VectorXd& q, double t, const std::vector<Ei
     if (!visual_ || !osg_ || q.size() != visual_->dof()) return;
     visual_->pose(q, t);
     osg_->update(*visual_);
+    keepPoseInView();
     if (trail && options_.trail) {
         trail_ = *trail;
         osg_->setTrail(trail_);
@@ -256,7 +257,8 @@ void SceneView::applyCamera() {
     spec.elevation = elevation_;
     spec.distance = distance_;
     const double aspect = double(std::max(width(), 1)) / std::max(height(), 1);
-    CameraView view = cameraView(*visual_, spec, aspect);
+    if (framePose_ && distance_ <= 0) visual_->currentExtent(framed_);  // fitting now: to the pose shown
+    CameraView view = cameraView(*visual_, spec, aspect, framePose_ ? &framed_ : nullptr);
     if (distance_ <= 0) {  // fitted now
         distance_ = (view.eye - view.centre).norm();
         fittedRadius_ = visual_->bounds.radius();
@@ -267,6 +269,33 @@ void SceneView::applyCamera() {
     view.zNear = std::max(1e-3 * distance_, distance_ - 3 * radius);
     view.zFar = distance_ + 4 * radius + pan_.norm();
     applyCameraView(*viewer_->getCamera(), view, aspect);
+    camera_ = view;
+}
+
+double SceneView::sceneHeightInView() const {
+    if (!visual_) return 0.0;
+    std::vector<Eigen::Vector4d> spheres;
+    visual_->currentExtent(spheres);
+    return projectedHeight(camera_, spheres);
+}
+
+void SceneView::setFramePose(bool on) {
+    framePose_ = on;
+    fit();
+}
+
+void SceneView::keepPoseInView() {
+    if (!framePose_ || userMoved_ || !visual_ || distance_ <= 0) return;
+    visual_->currentExtent(extent_);
+    CameraView unpanned = camera_;
+    unpanned.eye -= pan_;
+    unpanned.centre -= pan_;
+    const double aspect = double(std::max(width(), 1)) / std::max(height(), 1);
+    const double needed = distanceToHold(unpanned, extent_, aspect);
+    if (needed > distance_ * 1.0001) {
+        distance_ = needed;
+        applyCamera();
+    }
 }
 
 void SceneView::resizeGL(int w, int h) {

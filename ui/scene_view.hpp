@@ -46,6 +46,15 @@ public:
     bool cameraMovedByUser() const { return userMoved_; }
     // Moves the camera towards what it looks at (factor < 1) or away, as the wheel does.
     void zoomBy(double factor);
+    // The camera as last applied (its eye moved by any pan), and the share of the view's
+    // height the scene takes at its current pose (core/visual/camera_view.hpp).
+    const CameraView& camera() const { return camera_; }
+    double sceneHeightInView() const;
+    // Presentation framing: the camera fits the robot as it stands (not its whole motion,
+    // which would leave a falling Panda half the height), then backs away as far as the
+    // motion needs to stay in view, never closer again until the next fit.
+    void setFramePose(bool on);
+    bool framesPose() const { return framePose_; }
     const VisualScene* visualScene() const { return visual_.get(); }
     // Poses the scene at q, t; `trail` (optional) the end effector's path up to t.
     void setPose(const Eigen::VectorXd& q, double t, const std::vector<Eigen::Vector3d>* trail = nullptr);
@@ -122,6 +131,10 @@ private:
     bool userMoved_ = false;
     double fittedRadius_ = 0;
     Eigen::Vector3d pan_ = Eigen::Vector3d::Zero();
+    CameraView camera_;
+    bool framePose_ = false;
+    std::vector<Eigen::Vector4d> framed_, extent_;  // the spheres fitted to; the current pose's (scratch)
+    void keepPoseInView();
     QPoint last_;
     Qt::MouseButton dragging_ = Qt::NoButton;
     int highlighted_ = -1, hovered_ = -1;

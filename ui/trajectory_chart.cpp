@@ -191,6 +191,9 @@ void TrajectoryChart::fitAxes() {
     // A constant (b22 of the 2R) gets room around it, not a range of its rounding.
     const double pad = hi - lo > 1e-9 * std::max(1.0, std::abs(hi)) ? (hi - lo) * 0.05 : 0.05 * std::max(std::abs(hi), 1e-9);
     dataLo_ = lo - pad, dataHi_ = hi + pad;
+    // Evenly spread ticks while the range changes: the round interval of the old range
+    // would put millions of ticks on a new range a million times longer.
+    axisX_->setTickType(QValueAxis::TicksFixed);
     axisX_->setRange(times_.empty() ? 0 : times_.front(), std::max(tEnd, 1e-6));
     fitTicks();
     setCursorTime(times_.empty() ? 0 : times_.front());
@@ -203,7 +206,20 @@ void TrajectoryChart::fitTicks() {
     double widest = 0;
     for (double v : {axisX_->min(), axisX_->max(), (axisX_->min() + axisX_->max()) / 2 + 0.0125})
         widest = std::max(widest, fm.horizontalAdvance(QString::asprintf("%.4g", v)));
-    axisX_->setTickCount(std::clamp(static_cast<int>(area.width() / (widest * 2.0 + 8)) + 1, 2, 11));
+    // Time ticks at round seconds (1, 2 or 5 times a power of ten, or 2.5) from 0, as many
+    // as fit a label's width apart: a 5 s run ticks every second, not every 0.8333 s.
+    const int fit = std::clamp(static_cast<int>(area.width() / (widest * 2.0 + 8)) + 1, 2, 11);
+    const double span = std::max(axisX_->max() - axisX_->min(), 1e-9), least = span / (fit - 1);
+    const double decade = std::pow(10.0, std::floor(std::log10(least)));
+    double step = 10 * decade;
+    for (double m : {1.0, 2.0, 2.5, 5.0})
+        if (m * decade >= least * (1 - 1e-9)) {
+            step = m * decade;
+            break;
+        }
+    axisX_->setTickAnchor(0.0);
+    axisX_->setTickInterval(step);
+    axisX_->setTickType(QValueAxis::TicksDynamic);
     axisY_->setRange(dataLo_, dataHi_);
     axisY_->setTickCount(std::clamp(static_cast<int>(area.height() / (QFontMetricsF(axisY_->labelsFont()).height() * 2.0)) + 1, 2, 9));
     axisY_->applyNiceNumbers();  // ticks at round values (no "−0.0" for a 10⁻¹⁵ bound)

@@ -31,6 +31,7 @@ WorkPrecisionPane::WorkPrecisionPane(QWidget* parent) : QWidget(parent) {
     row->addWidget(large_);
     row->addWidget(progress_, 1);
     layout->addLayout(row);
+    label_->setWordWrap(true);  // one line would set the plots dock's minimum width (930 px presenting)
     layout->addWidget(label_);
     layout->addStretch(1);
     pool_.setMaxThreadCount(1);

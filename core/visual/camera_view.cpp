@@ -65,6 +65,22 @@ CameraSpec parseCameraSpec(const std::string& text) {
     return spec;
 }
 
+double projectedHeight(const CameraView& view, const std::vector<Eigen::Vector4d>& spheres) {
+    const Eigen::Vector3d forward = (view.centre - view.eye).normalized();
+    const Eigen::Vector3d right = forward.cross(view.up).normalized();
+    const Eigen::Vector3d up = right.cross(forward);
+    const double tanY = std::tan(view.fovy * kDegree / 2);
+    double low = 1e300, high = -1e300;
+    for (const Eigen::Vector4d& s : spheres) {
+        const Eigen::Vector3d v = s.head<3>() - view.eye;
+        const double depth = std::max(v.dot(forward), 1e-9);
+        // -1 at the picture's bottom edge, +1 at its top
+        const double y = v.dot(up) / (depth * tanY), r = s[3] / (depth * tanY);
+        low = std::min(low, y - r), high = std::max(high, y + r);
+    }
+    return spheres.empty() ? 0.0 : (high - low) / 2;
+}
+
 bool looksPlanar(const VisualScene& scene) {
     if (scene.bounds.empty()) return false;
     const Basis basis = sceneBasis(scene.up);
@@ -77,7 +93,25 @@ bool looksPlanar(const VisualScene& scene) {
     return highB - lowB < 0.35 * std::max(highR - lowR, highU - lowU);
 }
 
-CameraView cameraView(const VisualScene& scene, const CameraSpec& spec, double aspect) {
+double distanceToHold(const CameraView& view, const std::vector<Eigen::Vector4d>& spheres, double aspect) {
+    const Eigen::Vector3d toEye = (view.eye - view.centre).normalized();
+    const Eigen::Vector3d right = (-toEye).cross(view.up).normalized();
+    const Eigen::Vector3d upInPicture = right.cross(-toEye);
+    // Every sphere inside the frustum, with 5 % to spare on each side: a sphere of
+    // radius r at depth z stays inside when its centre's offset plus r·(1 + tan²)^½
+    // is within z·tan; checking offset + r against (z − r)·tan is a little stricter.
+    const double tanY = std::tan(view.fovy * kDegree / 2) * 0.95, tanX = tanY * aspect;
+    double distance = 0.0;
+    for (const Eigen::Vector4d& s : spheres) {
+        const Eigen::Vector3d v = s.head<3>() - view.centre;
+        const double towardEye = v.dot(toEye) + s[3];
+        distance = std::max({distance, towardEye + (std::abs(v.dot(right)) + s[3]) / tanX,
+                             towardEye + (std::abs(v.dot(upInPicture)) + s[3]) / tanY});
+    }
+    return distance;
+}
+
+CameraView cameraView(const VisualScene& scene, const CameraSpec& spec, double aspect, const std::vector<Eigen::Vector4d>* hold) {
     double azimuth = spec.azimuth, elevation = spec.elevation;
     CameraSpec::Preset preset = spec.preset;
     if (preset == CameraSpec::Preset::Auto) preset = looksPlanar(scene) ? CameraSpec::Preset::Front : CameraSpec::Preset::Iso;
@@ -95,7 +129,7 @@ CameraView cameraView(const VisualScene& scene, const CameraSpec& spec, double a
         (std::cos(el) * (-std::cos(az) * basis.back + std::sin(az) * basis.right) + std::sin(el) * basis.up).normalized();
 
     // What must stay in view: the spheres the scene collected, or the corners of its bounds.
-    std::vector<Eigen::Vector4d> keep = scene.keepInView;
+    std::vector<Eigen::Vector4d> keep = hold ? *hold : scene.keepInView;
     if (keep.empty() && !scene.bounds.empty())
         for (const Eigen::Vector3d& p : corners(scene.bounds)) keep.emplace_back(p.x(), p.y(), p.z(), 0.0);
 
@@ -119,19 +153,8 @@ CameraView cameraView(const VisualScene& scene, const CameraSpec& spec, double a
 
     double distance = spec.distance;
     const double radius = std::max(scene.bounds.radius(), 1e-6);
-    if (distance <= 0) {
-        // Every sphere inside the frustum, with 5 % to spare on each side: a sphere of
-        // radius r at depth z stays inside when its centre's offset plus r·(1 + tan²)^½
-        // is within z·tan; checking offset + r against (z − r)·tan is a little stricter.
-        const double tanY = std::tan(view.fovy * kDegree / 2) * 0.95, tanX = tanY * aspect;
-        distance = 0.0;
-        for (const Eigen::Vector4d& s : keep) {
-            const Eigen::Vector3d v = s.head<3>() - view.centre;
-            const double towardEye = v.dot(toEye) + s[3];
-            distance = std::max({distance, towardEye + (std::abs(v.dot(right)) + s[3]) / tanX,
-                                 towardEye + (std::abs(v.dot(upInPicture)) + s[3]) / tanY});
-        }
-    }
+    view.eye = view.centre + toEye;
+    if (distance <= 0) distance = distanceToHold(view, keep, aspect);
     view.eye = view.centre + distance * toEye;
     view.zNear = std::max(1e-3 * distance, distance - 2 * radius);
     view.zFar = distance + 4 * radius;

@@ -12,6 +12,7 @@
 // face on), iso otherwise. Distance 0 fits the bounds: every corner of the bounds box
 // lies inside the view, so the scene never leaves the frame.
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -39,8 +40,19 @@ struct CameraView {
     double zNear = 0.01, zFar = 100.0;                 // [m]
 };
 
-// The view of `scene` (its `bounds`) for a picture of width/height `aspect`.
-CameraView cameraView(const VisualScene& scene, const CameraSpec& spec, double aspect);
+// The view of `scene` (its `bounds`) for a picture of width/height `aspect`; it holds the
+// scene's keepInView spheres, or `hold` when given (the robot at one pose).
+CameraView cameraView(const VisualScene& scene, const CameraSpec& spec, double aspect,
+                      const std::vector<Eigen::Vector4d>* hold = nullptr);
+
+// How far from `view.centre`, looking along the view's direction, the eye must stand for
+// every sphere (centre x, y, z, radius [m]) to lie inside the picture with 5 % to spare.
+double distanceToHold(const CameraView& view, const std::vector<Eigen::Vector4d>& spheres, double aspect);
+
+// The share (0..1 and beyond) of the picture's height that `spheres` (centre x, y, z,
+// radius [m]) cover seen through `view`: from the lowest to the highest point of their
+// perspective projection, over the height of the view at each sphere's depth.
+double projectedHeight(const CameraView& view, const std::vector<Eigen::Vector4d>& spheres);
 
 // Whether the bounds of `scene` are flat along its back direction b (less than 35 %
 // of their largest extent across it): `auto` then looks from the front.

@@ -185,7 +185,10 @@ VisualScene::VisualScene(const Scene& scene, std::optional<BodyPoses> compiledBo
             pedestal.color = kPedestalColor;
             pedestal.pose = rig.jointFrame(0);
             const double behind = (rig.robot.joints[0].dh.type == JointType::Revolute ? kJointLength : kSleeveLength) / 2 + kPedestalThickness / 2;
-            pedestal.pose.translation() = rig.data->axisPoint[0] - behind * R * rig.data->axis[0];
+            // Under the start of link 1 on the joint's axis: o_0 (standard), o_0 + a_0 x_0
+            // (modified, where d_1 runs from there up to o_1: the Panda's base column).
+            const Eigen::Vector3d start = standard ? rig.data->axisPoint[0] : rig.elbow(0);
+            pedestal.pose.translation() = start - behind * R * rig.data->axis[0];
             add(pedestal, {Rule::Fixed, 0, false});
         }
         for (int i = 0; i < n; ++i) {
@@ -359,6 +362,13 @@ VisualBounds VisualScene::currentBounds() const {
     VisualBounds b;
     forEachExtent([&b](const Eigen::Vector3d& point, double radius) { b.add(point, radius); });
     return b;
+}
+
+void VisualScene::currentExtent(std::vector<Eigen::Vector4d>& spheres) const {
+    spheres.clear();
+    forEachExtent([&spheres](const Eigen::Vector3d& point, double radius) {
+        spheres.emplace_back(point.x(), point.y(), point.z(), radius);
+    });
 }
 
 Eigen::Vector3d VisualScene::endEffectorPosition() const {

@@ -125,6 +125,10 @@ public:
     void fitToMotion(const Trajectory& trajectory, int maxSamples = 400);
     // The bounds of the current pose alone.
     VisualBounds currentBounds() const;
+    // Spheres (centre x, y, z, radius [m]) that hold every part and triad at the current
+    // pose: what a camera must show of the robot as it stands now. Into `spheres`
+    // (cleared first; no allocation once it has grown to size).
+    void currentExtent(std::vector<Eigen::Vector4d>& spheres) const;
     // Position of the end effector part at the current pose (zero if there is none).
     Eigen::Vector3d endEffectorPosition() const;
 
