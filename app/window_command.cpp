@@ -28,6 +28,7 @@
 #include "ui/main_window.hpp"
 #include "ui/playback_bar.hpp"
 #include "ui/app_language.hpp"
+#include "ui/dh_step_panel.hpp"
 #include "ui/scene_view.hpp"
 #include "ui/torque_pane.hpp"
 
@@ -36,7 +37,7 @@ namespace ll::cli {
 int windowCommand(const Args& args, const std::chrono::steady_clock::time_point& processStart) {
     const Options options(args,
                           {"screenshot", "play", "step", "teach", "size", "first-frame", "select", "pick-link", "at", "tab",
-                           "joint", "derivation", "present"},
+                           "joint", "derivation", "present", "dh-step"},
                           {"first-frame", "present"});
     if (options.positional().size() > 1) throw UsageError("the window takes one SCENE, got " + std::to_string(options.positional().size()));
     const std::string scene = options.positional().empty() ? (examplesDirectory() / "double_pendulum.json").string() : options.positional()[0];
@@ -51,9 +52,9 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
     const double at = options.number("at", 0);
     if (at < 0) throw UsageError("--at: " + options.text("at") + " is not a time of the run (seconds from its start)");
     const std::string tab = options.text("tab");
-    static const char* const tabs[] = {"energy", "joints", "teach", "torques", "properties", "work-precision"};
+    static const char* const tabs[] = {"energy", "joints", "teach", "torques", "properties", "work-precision", "dh-steps"};
     if (options.has("tab") && std::find(std::begin(tabs), std::end(tabs), tab) == std::end(tabs))
-        throw UsageError("--tab: expected energy, joints, teach, torques, properties or work-precision, got '" + tab + "'");
+        throw UsageError("--tab: expected energy, joints, teach, torques, properties, work-precision or dh-steps, got '" + tab + "'");
     const std::string derivationView = options.text("derivation", "typeset");
     if (derivationView != "typeset" && derivationView != "text" && derivationView != "entries")
         throw UsageError("--derivation: expected typeset, text or entries, got '" + derivationView + "'");
@@ -143,6 +144,18 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
         window.teach(q);
     }
     if (options.has("step")) window.showDerivationStep(static_cast<int>(step));
+    if (options.has("dh-step")) {
+        // I,K: joint I (from 1), K of its four elementary motions done (0..4).
+        const std::string text = options.text("dh-step");
+        int joint = 0, done = -1;
+        char comma = 0, rest = 0;
+        const bool parsed = std::sscanf(text.c_str(), "%d%c%d%c", &joint, &comma, &done, &rest) == 3 && comma == ',';
+        if (!parsed || window.document().validScene().lagrangian || joint < 1 || joint > n || done < 0 || done > 4)
+            throw UsageError("--dh-step: '" + text + "' is not I,K with I a joint 1.." + std::to_string(n) +
+                             " of a DH robot and K the motions done, 0..4");
+        window.showPlotTab("dh-steps");
+        window.dhStepPanel().setStep(joint - 1, done);
+    }
     if (play > 0) {
         window.playback().setLoop(false);
         window.playback().restart();

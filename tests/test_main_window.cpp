@@ -27,12 +27,14 @@
 #include <QPushButton>
 
 #include "core/io/scene_file.hpp"
+#include "core/kinematics/forward_kinematics.hpp"
 #include "core/pipeline/scene_derivation.hpp"
 #include "ui/derivation_pages.hpp"
 #include "ui/derivation_panel.hpp"
 #include "ui/field_list_model.hpp"
 #include "ui/joint_table_model.hpp"
 #include "ui/derivation_view.hpp"
+#include "ui/dh_step_panel.hpp"
 #include "ui/main_window.hpp"
 #include "ui/parameter_rename.hpp"
 #include "ui/playback_bar.hpp"
@@ -1376,6 +1378,65 @@ private slots:
             const QByteArray err = p.readAllStandardError();
             QVERIFY2(err.startsWith(QByteArray("error: --size ") + size + ":") && err.count('\n') == 1, err.constData());
         }
+        // --dh-step I,K and --present picture the step-through and presentation mode.
+        const QString dh = dir_.filePath("dh.png"), present = dir_.filePath("present.png");
+        p.start(LL_CLI, {example("puma560.json"), "--screenshot", dh, "--dh-step", "2,3"});
+        QVERIFY(p.waitForFinished(120000));
+        QVERIFY2(p.exitCode() == 0, p.readAllStandardError().constData());
+        QCOMPARE(QImage(dh).size(), QSize(1280, 800));
+        p.start(LL_CLI, {example("planar_2r.json"), "--screenshot", present, "--present", "--size", "1024x576"});
+        QVERIFY(p.waitForFinished(120000));
+        QVERIFY2(p.exitCode() == 0, p.readAllStandardError().constData());
+        QCOMPARE(QImage(present).size(), QSize(1024, 576));
+        for (const char* bad : {"3,1", "0,1", "1,5", "1", "1,2,3", "a,b"}) {
+            p.start(LL_CLI, {example("planar_2r.json"), "--screenshot", png, "--dh-step", bad});
+            QVERIFY(p.waitForFinished(60000));
+            QCOMPARE(p.exitCode(), 2);
+            const QByteArray err = p.readAllStandardError();
+            QVERIFY2(err.startsWith(QByteArray("error: --dh-step: '") + bad + "'"), err.constData());
+        }
+        p.start(LL_CLI, {example("mass_spring_pair_lagrangian.json"), "--screenshot", png, "--dh-step", "1,1"});
+        QVERIFY(p.waitForFinished(60000));
+        QCOMPARE(p.exitCode(), 2);
+    }
+
+    // The DH step-through in the window: the moving frame the 3D view draws is frame i−1
+    // carried by the motions done (frame i−1 with none, T_i^0 of forward kinematics after
+    // all four, ≤ 1e-12), the DH table's current cell is the parameter to come, Next runs
+    // through every row's motions, and leaving the tab takes the frame away.
+    void dhStepThroughDrawsTheMovingFrame() {
+        MainWindow w;
+        QVERIFY(openShown(w, "puma560.json"));
+        w.playback().pause();
+        w.playback().setTime(0.7);
+        QVERIFY(w.showPlotTab("dh-steps"));
+        ll::ui::SceneView& view = w.sceneView();
+        ll::ui::DhStepPanel& panel = w.dhStepPanel();
+        const ll::Scene& scene = w.document().validScene();
+        ll::RobotData data(scene.robot);
+        ll::forwardKinematics(scene.robot, data, view.shownPose());
+        auto* table = w.findChild<QTableView*>("dh-table");
+        const int columns[] = {ll::ui::JointTableModel::Theta, ll::ui::JointTableModel::D, ll::ui::JointTableModel::A,
+                               ll::ui::JointTableModel::Alpha};  // standard: rot_z θ, trans_z d, trans_x a, rot_x α
+        for (int joint = 0; joint < scene.dof(); ++joint) {
+            for (int done = 0; done <= 4; ++done) {
+                panel.setStep(joint, done);
+                Eigen::Isometry3d frame;
+                QVERIFY(view.dhStepFrame(frame));
+                if (done == 0) QVERIFY((frame.matrix() - data.T_0i[joint].matrix()).cwiseAbs().maxCoeff() <= 1e-12);
+                if (done == 4) QVERIFY((frame.matrix() - data.T_0i[joint + 1].matrix()).cwiseAbs().maxCoeff() <= 1e-12);
+                QCOMPARE(table->currentIndex().row(), joint);
+                if (done < 4) QCOMPARE(table->currentIndex().column(), columns[done]);
+            }
+        }
+        panel.setStep(0, 0);
+        int presses = 0;
+        while (!(panel.joint() == scene.dof() - 1 && panel.done() == 4) && presses < 100) panel.next(), ++presses;
+        QCOMPARE(presses, 4 * scene.dof());
+        QVERIFY(panel.productText().contains("A<sub>6</sub>"));
+        QVERIFY(w.showPlotTab("energy"));
+        Eigen::Isometry3d frame;
+        QVERIFY(!view.dhStepFrame(frame));
     }
 };
 

@@ -69,6 +69,7 @@
 #include "ui/torque_pane.hpp"
 #include "ui/trajectory_chart.hpp"
 #include "ui/work_precision_pane.hpp"
+#include "ui/dh_step_panel.hpp"
 
 // Q_INIT_RESOURCE must stand outside any namespace.
 static void initExampleResources() { Q_INIT_RESOURCE(examples); }
@@ -424,6 +425,30 @@ void MainWindow::buildDocks() {
     bottomTabs_->addTab(torques_, tr("Torques"));
     bottomTabs_->addTab(properties_, tr("Properties"));
     bottomTabs_->addTab(workPrecision_, tr("Work–precision"));
+    // The DH step-through: while its tab is shown, the 3D view draws the moving frame and
+    // the DH table marks the parameter being carried out.
+    dhSteps_ = new DhStepPanel(bottomTabs_);
+    bottomTabs_->addTab(dhSteps_, tr("DH step-through"));
+    connect(dhSteps_, &DhStepPanel::stepChanged, this, [this](int joint, int done, double fraction) {
+        if (bottomTabs_->currentWidget() == dhSteps_) view_->setDhStep(joint, done, fraction);
+    });
+    connect(dhSteps_, &DhStepPanel::parameterChanged, this, [this](int joint, DhParameter parameter) {
+        if (bottomTabs_->currentWidget() != dhSteps_ || joint < 0 || joint >= joints_->rowCount()) return;
+        const int column = parameter == DhParameter::A       ? JointTableModel::A
+                           : parameter == DhParameter::Alpha ? JointTableModel::Alpha
+                           : parameter == DhParameter::D     ? JointTableModel::D
+                                                             : JointTableModel::Theta;
+        dhView_->setCurrentIndex(dhView_->model()->index(joint, column));
+    });
+    connect(bottomTabs_, &QTabWidget::currentChanged, this, [this] {
+        const bool shown = bottomTabs_->currentWidget() == dhSteps_;
+        if (shown) {
+            dhSteps_->setPose(view_->shownPose());
+            dhSteps_->setStep(dhSteps_->joint(), dhSteps_->done());  // marks the table, draws the frame
+        } else {
+            view_->setDhStep(-1, 0, 0);
+        }
+    });
     plotDock->setWidget(bottomTabs_);
     addDockWidget(Qt::BottomDockWidgetArea, plotDock);
     resizeDocks({modelDock_, derivationDock}, {360, 440}, Qt::Horizontal);
@@ -608,6 +633,7 @@ void MainWindow::validSceneChanged() {
     if (!ghostIntegrator_.isEmpty()) ghostLive_.request(scene);
     derive_.request(scene);
     teach_->setScene(scene);
+    dhSteps_->setRobot(scene.robot, !scene.lagrangian);
     updatePoseResults();
     workPrecision_->setScene(scene);
 }
@@ -720,7 +746,8 @@ void MainWindow::pickLink(int link) {
 bool MainWindow::showPlotTab(const QString& name) {
     const std::pair<const char*, QWidget*> tabs[] = {{"energy", energy_->parentWidget()}, {"joints", jointsChart_},
                                                      {"teach", teach_},                  {"torques", torques_},
-                                                     {"properties", properties_},        {"work-precision", workPrecision_}};
+                                                     {"properties", properties_},        {"work-precision", workPrecision_},
+                                                     {"dh-steps", dhSteps_}};
     for (const auto& [key, widget] : tabs)
         if (name == key) {
             bottomTabs_->setCurrentWidget(widget);
@@ -826,6 +853,7 @@ void MainWindow::showTime(double t) {
             ghostSampler_->sample(t, gq, gqd);
             view_->setGhostPose(gq, t);
         }
+        if (bottomTabs_->currentWidget() == dhSteps_) dhSteps_->setPose(q_);
     }
     energy_->setCursorTime(t);
     jointsChart_->setCursorTime(t);
@@ -870,6 +898,7 @@ void MainWindow::showDerivationStep(int n) {
 void MainWindow::showTeachPose(const Eigen::VectorXd& q) {
     static const std::vector<Eigen::Vector3d> noTrail;
     view_->setPose(q, playback_->time(), &noTrail);
+    if (bottomTabs_->currentWidget() == dhSteps_) dhSteps_->setPose(q);
     // The picked entry at the pose, the joints at rest (as the pose results take them).
     const Scene& scene = doc_.validScene();
     const int n = static_cast<int>(q.size());
@@ -934,6 +963,9 @@ void MainWindow::setPresentationMode(bool on) {
     typeset_->setPageOnly(on);
     derivationTabs_->tabBar()->setVisible(!on);
     bottomTabs_->tabBar()->setVisible(!on);
+    // Only the energy plot is shown: the other tabs' widest page (the DH step-through's
+    // matrix at 1.6×) must not set the column's width. 0 gives the pages' minimum back.
+    bottomTabs_->setMinimumWidth(on ? 200 : 0);
     readout_->setFixedHeight(3 * QFontMetrics(font).lineSpacing() + 6);
     // The plots: bigger labels and lines need room, so their dock gets more height, and
     // the dock titles (which the application font does not reach) grow too.

@@ -47,6 +47,7 @@ class SceneView;
 class TeachPanel;
 class TrajectoryChart;
 class WorkPrecisionPane;
+class DhStepPanel;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -107,6 +108,7 @@ public:
     LiveSimulation& liveSimulation() { return live_; }
     LiveDerivation& liveDerivation() { return derive_; }
     WorkPrecisionPane& workPrecisionPane() { return *workPrecision_; }
+    DhStepPanel& dhStepPanel() { return *dhSteps_; }
     const LiveResult* result() const { return result_.get(); }
     const LiveResult* ghostResult() const { return ghost_.get(); }
     // The newest derivation shown (null before the first one).
@@ -130,7 +132,7 @@ public:
     QString readoutText() const;
     QString readoutHint() const;
     // Shows a tab of the plots dock by name: energy, joints, teach, torques, properties,
-    // work-precision (false: no such tab).
+    // work-precision, dh-steps (false: no such tab).
     bool showPlotTab(const QString& name);
     // Shows the derivation dock's tab: typeset, text or entries.
     void showDerivationView(const QString& name);
@@ -245,6 +247,7 @@ private:
     QTabWidget* derivationTabs_ = nullptr;
     TeachPanel* teach_ = nullptr;
     WorkPrecisionPane* workPrecision_ = nullptr;
+    DhStepPanel* dhSteps_ = nullptr;
     QTabWidget *editorTabs_ = nullptr, *bottomTabs_ = nullptr;
     QWidget* lagrangianPage_ = nullptr;
 

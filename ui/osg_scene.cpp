@@ -165,6 +165,7 @@ osg::Matrixd partMatrix(const VisualPart& part, bool stretch) {
 OsgScene::OsgScene(const VisualScene& scene, const OsgSceneOptions& options) : options_(options), root_(new osg::Group) {
     // Stretched parts scale their normals: renormalize.
     root_->getOrCreateStateSet()->setMode(GL_NORMALIZE, osg::StateAttribute::ON);
+    if (!scene.frames.empty() && scene.frames.back().axisLength > 0) frameLength_ = scene.frames.back().axisLength;
     for (const VisualPart& part : scene.parts) {
         osg::ref_ptr<osg::MatrixTransform> transform = new osg::MatrixTransform;
         transform->setDataVariance(osg::Object::DYNAMIC);
@@ -249,6 +250,28 @@ void OsgScene::update(const VisualScene& scene) {
 void OsgScene::updateGround(const VisualScene& scene) {
     groundGroup_->removeChildren(0, groundGroup_->getNumChildren());
     if (options_.grid) groundGroup_->addChild(grid(scene));
+}
+
+void OsgScene::setMovingFrame(const Eigen::Isometry3d* pose) {
+    if (!pose) {
+        if (moving_) moving_->setNodeMask(0);
+        return;
+    }
+    if (!moving_) {
+        moving_ = new osg::MatrixTransform;
+        moving_->setDataVariance(osg::Object::DYNAMIC);
+        moving_->addChild(triad(1.8 * frameLength_));
+        // Over the solids: the frame is what the student follows, even inside a link.
+        moving_->getOrCreateStateSet()->setMode(GL_DEPTH_TEST, osg::StateAttribute::OFF);
+        moving_->getOrCreateStateSet()->setRenderBinDetails(15, "RenderBin");
+        root_->addChild(moving_);
+    }
+    moving_->setNodeMask(~0u);
+    moving_->setMatrix(toOsgMatrix(pose->matrix()));
+}
+
+void OsgScene::setFrameVisible(int k, bool on) {
+    if (k >= 0 && k < static_cast<int>(frames_.size())) frames_[static_cast<std::size_t>(k)]->setNodeMask(on ? ~0u : 0u);
 }
 
 void OsgScene::setTrail(const std::vector<Eigen::Vector3d>& points) {

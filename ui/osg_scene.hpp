@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <osg/Camera>
 #include <osg/Geode>
 #include <osg/Geometry>
@@ -48,6 +49,11 @@ public:
     void setPartVisible(int i, bool on);
     // Draws part i in the highlight colour (a joint selected or hovered in the window).
     void setPartHighlighted(int i, bool on);
+    // The DH step-through's moving frame: a triad 1.8× the frames' size drawn over the
+    // solids at `pose`; null hides it.
+    void setMovingFrame(const Eigen::Isometry3d* pose);
+    // Shows or hides DH frame k's triad and label (the step-through keeps frames i−1 and i).
+    void setFrameVisible(int k, bool on);
     // A picked entry's links in their colour by share, the others faded, the axes of the
     // joints it depends on (core/visual/visual_emphasis.hpp); an inactive one undoes it.
     void setEmphasis(const VisualEmphasis& emphasis);
@@ -63,6 +69,8 @@ private:
     std::vector<osg::ref_ptr<osg::MatrixTransform>> axes_;     // per part: a joint's axis line (null elsewhere)
     std::vector<osg::ref_ptr<osg::Geode>> axisGeodes_;
     osg::ref_ptr<osg::Geometry> trail_;
+    osg::ref_ptr<osg::MatrixTransform> moving_;
+    double frameLength_ = 0.1;
 };
 
 // Sets `camera`'s view and projection to `view` for a picture of width/height `aspect`.

@@ -122,6 +122,7 @@ void SceneView::rebuild() {
                 osg_->setPartVisible(static_cast<int>(i), coms_);
         if (options_.trail) osg_->setTrail(trail_);
         if (emphasis_.strength.size() == visual_->parts.size()) osg_->setEmphasis(emphasis_);
+        updateMovingFrame();
     }
     if (ghostVisual_) {
         OsgSceneOptions ghostOptions;
@@ -145,7 +146,9 @@ void SceneView::rebuild() {
 void SceneView::setPose(const Eigen::VectorXd& q, double t, const std::vector<Eigen::Vector3d>* trail) {
     if (!visual_ || !osg_ || q.size() != visual_->dof()) return;
     visual_->pose(q, t);
+    shownQ_ = q;
     osg_->update(*visual_);
+    updateMovingFrame();
     keepPoseInView();
     if (trail && options_.trail) {
         trail_ = *trail;
@@ -277,6 +280,27 @@ double SceneView::sceneHeightInView() const {
     std::vector<Eigen::Vector4d> spheres;
     visual_->currentExtent(spheres);
     return projectedHeight(camera_, spheres);
+}
+
+void SceneView::setDhStep(int joint, int done, double fraction) {
+    stepJoint_ = joint, stepDone_ = done, stepFraction_ = fraction;
+    updateMovingFrame();
+    requestFrame();
+}
+
+bool SceneView::dhStepFrame(Eigen::Isometry3d& frame) const {
+    return visual_ && stepJoint_ >= 0 && visual_->steppedFrame(stepJoint_, stepDone_, stepFraction_, frame);
+}
+
+void SceneView::updateMovingFrame() {
+    if (!osg_) return;
+    Eigen::Isometry3d frame;
+    const bool stepping = dhStepFrame(frame);
+    osg_->setMovingFrame(stepping ? &frame : nullptr);
+    // Stepping through row i: only frames i−1 and i beside the moving one.
+    if (visual_)
+        for (int k = 0; k < static_cast<int>(visual_->frames.size()); ++k)
+            osg_->setFrameVisible(k, !stepping || k == stepJoint_ || k == stepJoint_ + 1);
 }
 
 void SceneView::setFramePose(bool on) {

@@ -70,6 +70,15 @@ public:
     bool showTrail() const { return options_.trail; }
     std::size_t trailPoints() const { return trail_.size(); }  // of the trail drawn now
 
+    // The DH step-through (core/kinematics/dh_step_through.hpp): the moving frame of row
+    // joint+1 after `done` motions and `fraction` of the next, drawn at every pose;
+    // joint −1 hides it.
+    void setDhStep(int joint, int done, double fraction);
+    // The moving frame as drawn now (false when none is).
+    bool dhStepFrame(Eigen::Isometry3d& frame) const;
+    // The pose shown (q of the last setPose).
+    const Eigen::VectorXd& shownPose() const { return shownQ_; }
+
     // The joint (0-based) drawn highlighted; -1: none.
     void highlightJoint(int joint);
     // A picked entry's or link's emphasis (core/visual/visual_emphasis.hpp), kept across
@@ -133,6 +142,10 @@ private:
     Eigen::Vector3d pan_ = Eigen::Vector3d::Zero();
     CameraView camera_;
     bool framePose_ = false;
+    int stepJoint_ = -1, stepDone_ = 0;
+    double stepFraction_ = 0;
+    Eigen::VectorXd shownQ_;
+    void updateMovingFrame();
     std::vector<Eigen::Vector4d> framed_, extent_;  // the spheres fitted to; the current pose's (scratch)
     void keepPoseInView();
     QPoint last_;

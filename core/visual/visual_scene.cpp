@@ -5,6 +5,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "core/kinematics/dh_step_through.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
 #include "core/model/robot_data.hpp"
 
@@ -78,6 +79,7 @@ struct VisualScene::Rig {
     std::vector<BodyPose> bodyPoses;
     std::vector<PartRule> rules;  // one per part
     int n = 0;
+    Eigen::VectorXd q;            // the current pose (robot)
 
     // The point where link i turns from its first segment to its second: standard
     // o_{i-1} + d_i z_{i-1} = o_i − a_i x_i; modified o_{i-1} + a_{i-1} x_{i-1}.
@@ -299,6 +301,7 @@ void VisualScene::pose(const Eigen::VectorXd& q, double t) {
     if (rig.n == 0) return;
     RobotData& data = *rig.data;
     forwardKinematics(rig.robot, data, q);
+    rig.q = q;
     for (std::size_t p = 0; p < parts.size(); ++p) {
         const Rig::PartRule& r = rig.rules[p];
         VisualPart& part = parts[p];
@@ -369,6 +372,13 @@ void VisualScene::currentExtent(std::vector<Eigen::Vector4d>& spheres) const {
     forEachExtent([&spheres](const Eigen::Vector3d& point, double radius) {
         spheres.emplace_back(point.x(), point.y(), point.z(), radius);
     });
+}
+
+bool VisualScene::steppedFrame(int joint, int done, double fraction, Eigen::Isometry3d& frame) const {
+    const Rig& rig = *rig_;
+    if (rig.bodies || !rig.data || joint < 0 || joint >= rig.n || rig.q.size() != rig.n) return false;
+    frame = ll::steppedFrame(rig.robot, *rig.data, rig.q, joint, done, fraction);
+    return true;
 }
 
 Eigen::Vector3d VisualScene::endEffectorPosition() const {

@@ -129,6 +129,11 @@ public:
     // pose: what a camera must show of the robot as it stands now. Into `spheres`
     // (cleared first; no allocation once it has grown to size).
     void currentExtent(std::vector<Eigen::Vector4d>& spheres) const;
+    // The DH step-through's moving frame at the current pose (core/kinematics/
+    // dh_step_through.hpp): frame `joint` (0-based; the table's i−1) carried by `done`
+    // of row joint+1's four motions and `fraction` of the next. False for a Lagrangian
+    // scene or a joint out of range.
+    bool steppedFrame(int joint, int done, double fraction, Eigen::Isometry3d& frame) const;
     // Position of the end effector part at the current pose (zero if there is none).
     Eigen::Vector3d endEffectorPosition() const;
 

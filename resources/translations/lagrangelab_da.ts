@@ -27,7 +27,7 @@
 <context>
     <name>DerivationView</name>
     <message>
-        <location filename="../../ui/derivation_view.cpp" line="+282"/>
+        <location filename="../../ui/derivation_view.cpp" line="+283"/>
         <source>Previous</source>
         <translation>Forrige</translation>
     </message>
@@ -82,6 +82,59 @@
         <location line="+0"/>
         <source>expanded</source>
         <translation>ekspanderet</translation>
+    </message>
+</context>
+<context>
+    <name>DhStepPanel</name>
+    <message>
+        <location filename="../../ui/dh_step_panel.cpp" line="+24"/>
+        <source>Joint i</source>
+        <translation>Led i</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>◀ Previous motion</source>
+        <translation>◀ Forrige bevægelse</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Next motion ▶</source>
+        <translation>Næste bevægelse ▶</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Animate the next motion</source>
+        <translation>Animér den næste bevægelse</translation>
+    </message>
+    <message>
+        <location line="+86"/>
+        <source>A typed Lagrangian has no DH table: the step-through shows a robot&apos;s rows.</source>
+        <translation>En indtastet Lagrange-funktion har ingen DH-tabel: gennemgangen viser en robots rækker.</translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <source>Frame %1 becomes frame %2 by four motions, each along or about an axis of the moving frame.</source>
+        <translation>Koordinatsystem %1 bliver til koordinatsystem %2 ved fire bevægelser, hver langs eller om en akse i det bevægede koordinatsystem.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>(q&lt;sub&gt;%1&lt;/sub&gt; included)</source>
+        <translation>(q&lt;sub&gt;%1&lt;/sub&gt; medregnet)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>next</source>
+        <translation>næste</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Motions done: %1 of 4</source>
+        <translation>Udførte bevægelser: %1 af 4</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>lengths in m</source>
+        <translation>længder i m</translation>
     </message>
 </context>
 <context>
@@ -367,7 +420,7 @@
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../ui/main_window.cpp" line="+170"/>
+        <location filename="../../ui/main_window.cpp" line="+172"/>
         <source>standard (Spong)</source>
         <translation>standard (Spong)</translation>
     </message>
@@ -642,12 +695,12 @@
     </message>
     <message>
         <location line="+1"/>
-        <location line="+145"/>
+        <location line="+170"/>
         <source>Teach</source>
         <translation>Teach</translation>
     </message>
     <message>
-        <location line="-144"/>
+        <location line="-169"/>
         <source>Torques</source>
         <translation>Momenter</translation>
     </message>
@@ -662,7 +715,12 @@
         <translation>Beregningsarbejde–præcision</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+4"/>
+        <source>DH step-through</source>
+        <translation>DH-gennemgang</translation>
+    </message>
+    <message>
+        <location line="+57"/>
         <source>&amp;File</source>
         <translation>&amp;Filer</translation>
     </message>
@@ -693,12 +751,12 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+819"/>
+        <location line="+863"/>
         <source>Export</source>
         <translation>Eksportér</translation>
     </message>
     <message>
-        <location line="-818"/>
+        <location line="-862"/>
         <source>Screenshot (PNG)…</source>
         <translation>Skærmbillede (PNG)…</translation>
     </message>
@@ -773,7 +831,7 @@
         <translation>Præsentationstilstand</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Fit view</source>
         <translation>Tilpas visning</translation>
     </message>
@@ -824,13 +882,13 @@
     </message>
     <message>
         <location line="+1"/>
-        <location line="+494"/>
+        <location line="+537"/>
         <location line="+11"/>
         <source>Save</source>
         <translation>Gem</translation>
     </message>
     <message>
-        <location line="-501"/>
+        <location line="-544"/>
         <source>▶ Play</source>
         <translation>▶ Afspil</translation>
     </message>
@@ -850,17 +908,17 @@
         <translation>ingen fejl, ingen advarsler</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+26"/>
         <source>Simulation failed: %1</source>
         <translation>Simuleringen mislykkedes: %1</translation>
     </message>
     <message>
-        <location line="+119"/>
+        <location line="+120"/>
         <source>Click an entry of the derivation (b11, g2, …) or a link in the 3D view to see what feeds it and its value now.</source>
         <translation>Klik på et element i udledningen (b11, g2, …) eller på et link i 3D-visningen for at se, hvad der bidrager til det, og dets aktuelle værdi.</translation>
     </message>
     <message>
-        <location line="+101"/>
+        <location line="+102"/>
         <source>simulating…</source>
         <translation>simulerer…</translation>
     </message>
@@ -893,7 +951,7 @@
         <translation> · modellen har fejl: viser den seneste gyldige</translation>
     </message>
     <message>
-        <location line="+139"/>
+        <location line="+179"/>
         <source>%1: another file is being opened</source>
         <translation>%1: en anden fil er ved at blive åbnet</translation>
     </message>
@@ -1286,7 +1344,7 @@
         <translation>link&amp;nbsp;%1</translation>
     </message>
     <message>
-        <location filename="../../ui/main_window.cpp" line="-1370"/>
+        <location filename="../../ui/main_window.cpp" line="-1438"/>
         <source>LagrangeLab scenes (*.lagrange *.json);;All files (*)</source>
         <translation>LagrangeLab-scener (*.lagrange *.json);;Alle filer (*)</translation>
     </message>
@@ -1390,7 +1448,7 @@
         <translation>t</translation>
     </message>
     <message>
-        <location line="+63"/>
+        <location line="+64"/>
         <source>E_kin</source>
         <translation>E_kin</translation>
     </message>
@@ -1448,7 +1506,7 @@
         <translation>Fejl og energidrift som funktion af CPU-tid for hver integrator (1 gentagelse, tolerancer 1e-3…1e-10).</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+38"/>
         <source>Work–precision: %1</source>
         <translation>Beregningsarbejde–præcision: %1</translation>
     </message>
