@@ -5,6 +5,7 @@
 // simulates the scene and renders it headless (EGL, no X server) into an MP4, WebM, GIF,
 // a PNG still, or a folder of numbered PNG frames.
 #include <atomic>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <sstream>
@@ -18,7 +19,9 @@
 #include "app/pixel_size.hpp"
 #include "app/progress_bar.hpp"
 #include "app/scene_loading.hpp"
+#include "core/pipeline/display_derivation.hpp"
 #include "core/pipeline/scene_simulation.hpp"
+#include "core/present/localized_document.hpp"
 #include "ui/animation_export.hpp"
 #include "ui/headless_renderer.hpp"
 #include "ui/ffmpeg_encoder.hpp"
@@ -43,7 +46,7 @@ void catchInterrupts() {
 const char* kRenderUsage =
     "usage: lagrangelab render SCENE --out FILE.mp4|.webm|.gif|.png|FOLDER [--duration T] [--fps F] [--size WxH] "
     "[--camera front|side|top|iso|az,el[,dist]] [--speed X] [--overlay time,energy,name|none] [--trail on|off] "
-    "[--frames on|off] [--at T] [--msaa auto|edges|0|2|4|8]";
+    "[--frames on|off] [--at T] [--msaa auto|edges|0|2|4|8] [--layout view|composite] [--step N]";
 
 ui::ExportSettings parseRenderOptions(const Options& options, const Scene& scene) {
     if (!options.has("out")) throw UsageError(std::string("--out is required\n") + kRenderUsage);
@@ -108,6 +111,14 @@ ui::ExportSettings parseRenderOptions(const Options& options, const Scene& scene
     else
         throw UsageError("--msaa " + msaa +
                          ": expected auto (4x MSAA, or edge smoothing on software GL), edges, 0 (off), 2, 4 or 8 samples per pixel");
+    const std::string layout = options.text("layout", "view");
+    if (layout != "view" && layout != "composite") throw UsageError("--layout " + layout + ": expected view or composite");
+    s.composite = layout == "composite";
+    if (options.has("step") && !s.composite) throw UsageError("--step " + options.text("step") + ": only with --layout composite");
+    if (s.composite && options.has("overlay"))
+        throw UsageError("--overlay " + options.text("overlay") + ": --layout composite lays out the name, time and energy itself");
+    if (s.composite && (s.width < 480 || s.height < 270))
+        throw UsageError("--size " + size + ": --layout composite needs at least 480x270 for its equation and plot");
     if (options.has("at")) {
         if (s.kind != ui::OutputKind::Still) throw UsageError("--at " + options.text("at") + ": a single still needs --out FILE.png");
         s.at = options.number("at", 0);
@@ -118,10 +129,29 @@ ui::ExportSettings parseRenderOptions(const Options& options, const Scene& scene
     return s;
 }
 
+// The derivation step the composite frame shows (--step, default 8: the equations of
+// motion), derived as `derive --format pdf` derives it, in the --lang/--notation asked.
+std::shared_ptr<const present::DisplayStep> keyEquationStep(const Scene& scene, const std::string& path, const Options& options) {
+    const double number = options.number("step", 8);
+    if (number < 0 || number > 8 || number != std::floor(number))
+        throw UsageError("--step " + options.text("step") + ": expected a derivation step 0..8");
+    DocumentRequest request;
+    request.firstStep = request.lastStep = static_cast<int>(number);
+    request.forPages = true;
+    request.presentation = presentation();
+    const DerivedDocument derived = inSceneFile(path, [&] { return deriveDisplay(scene, request); });
+    const auto document = present::localizedDocument(*derived.display, presentation());
+    for (const present::DisplayStep& step : document->steps)
+        if (step.number == static_cast<int>(number)) return std::make_shared<const present::DisplayStep>(step);
+    throw UsageError("--step " + options.text("step") + ": " + path + " has no step " + options.text("step") +
+                     " (a typed Lagrangian's steps are 0, 6, 7 and 8)");
+}
+
 }  // namespace
 
 int renderCommand(const Args& args) {
-    const Options options(args, {"out", "duration", "fps", "size", "camera", "speed", "overlay", "trail", "frames", "at", "msaa"});
+    const Options options(args,
+                          {"out", "duration", "fps", "size", "camera", "speed", "overlay", "trail", "frames", "at", "msaa", "layout", "step"});
     if (options.positional().size() != 1) throw UsageError(kRenderUsage);
     const std::string path = options.positional()[0];
     Scene scene = loadSceneReportingWarnings(path);
@@ -130,6 +160,10 @@ int renderCommand(const Args& args) {
         throw std::runtime_error("ffmpeg not found on PATH: install it (Debian: apt-get install ffmpeg), or write PNG frames with --out FOLDER");
     scene.simulation.duration = settings.duration;
     requireValidSceneFrom(scene, path);
+    if (settings.composite) {
+        settings.step = keyEquationStep(scene, path, options);
+        settings.language = presentation().language;
+    }
 
     catchInterrupts();
     const bool tty = ::isatty(STDERR_FILENO);

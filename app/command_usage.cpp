@@ -30,8 +30,10 @@ constexpr std::array<CommandText, 10> commands{{
     {"render",
      "SCENE --out FILE.mp4|.webm|.gif|.png|FOLDER [--duration T] [--fps F] [--size WxH]\n"
      "[--camera front|side|top|iso|az,el[,dist]] [--speed X] [--overlay time,energy,name|none]\n"
-     "[--trail on|off] [--frames on|off] [--at T] [--msaa auto|edges|0|2|4|8]",
-     "simulate and render the 3D scene headless (no X server needed) to a video, a still or PNG frames"},
+     "[--trail on|off] [--frames on|off] [--at T] [--msaa auto|edges|0|2|4|8] [--layout view|composite] [--step N]",
+     "simulate and render the 3D scene headless (no X server needed) to a video, a still or PNG frames;\n"
+     "--layout composite: one slide with the 3D view, derivation step N's key equation (default 8) and\n"
+     "the energy plot with a moving cursor"},
     {"check", "SCENE [--duration T] [--format text|json]",
      "the model's properties along a simulated run: B positive definite and its condition, Ḃ − 2C\n"
      "skew, power balance, Newton–Euler against B q̈ + C q̇ + g, energy; exit 1 when one fails"},

@@ -34,6 +34,7 @@
 #include "ui/field_list_model.hpp"
 #include "ui/joint_table_model.hpp"
 #include "ui/derivation_view.hpp"
+#include "ui/composite_frame.hpp"
 #include "ui/dh_step_panel.hpp"
 #include "ui/main_window.hpp"
 #include "ui/parameter_rename.hpp"
@@ -1187,6 +1188,23 @@ private slots:
             QCOMPARE(fields[1], QString("720"));
             QCOMPARE(fields[2].toInt(), files.size());
         }
+        // The slide (File → Export → Video for slides): 1920×1080 frames whose equation
+        // panel holds the derivation step shown, inked, beside the moving plot.
+        w.showDerivationStep(8);
+        const QString slides = dir_.filePath("slide-frames/");
+        QVERIFY2(w.exportAnimationTo(slides, &error, 0.3, false, QSize(1920, 1080)), qPrintable(error));
+        QVERIFY(exported.wait(120000));
+        QCOMPARE(exported.back().at(1).toString(), QString());
+        const QStringList slideFiles = QDir(slides).entryList({"*.png"}, QDir::Files, QDir::Name);
+        QVERIFY(slideFiles.size() >= 8);
+        const QImage slide(slides + slideFiles.front()), lastSlide(slides + slideFiles.back());
+        QCOMPARE(slide.size(), QSize(1920, 1080));
+        const ll::ui::CompositeLayout layout = ll::ui::CompositeLayout::forSize(slide.size());
+        long ink = 0;
+        for (int y = layout.equation.top(); y <= layout.equation.bottom(); ++y)
+            for (int x = layout.equation.left(); x <= layout.equation.right(); ++x) ink += qGray(slide.pixel(x, y)) < 100;
+        QVERIFY2(ink > 2000, qPrintable(QString::number(ink)));
+        QVERIFY(differing(slide.copy(layout.plot), lastSlide.copy(layout.plot)) > 0.0005);
     }
 
     // Parameters are added and removed as undoable edits; removing one in use is an error

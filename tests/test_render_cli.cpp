@@ -11,6 +11,8 @@
 
 #include <csignal>
 
+#include "ui/composite_frame.hpp"
+
 class TestRenderCli : public QObject {
     Q_OBJECT
 
@@ -109,6 +111,46 @@ private slots:
         QVERIFY(std::abs(v["duration"].toDouble() - 2.0) < 0.1);
     }
 
+    // The slide layout: an MP4 of the asked size and frame count at 1280×720, and PNG
+    // frames at 1920×1080 whose plot region changes from frame to frame (the cursor) while
+    // the equation panel, inked, stays the same.
+    void compositeVideoAndFrames() {
+        QTemporaryDir dir;
+        const QString mp4 = dir.filePath("slide.mp4");
+        Run r = run({"render", example("puma560.json"), "--layout", "composite", "--duration", "2", "--fps", "15", "--size", "1280x720",
+                     "--out", mp4});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const auto v = probe(mp4);
+        QCOMPARE(v["width"], QString("1280"));
+        QCOMPARE(v["height"], QString("720"));
+        QCOMPARE(v["nb_read_frames"], QString("30"));
+        const QString folder = dir.filePath("frames");
+        r = run({"render", example("planar_2r.json"), "--layout", "composite", "--duration", "1", "--fps", "10", "--size", "1920x1080",
+                 "--out", folder});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QStringList files = QDir(folder).entryList({"frame_*.png"}, QDir::Files, QDir::Name);
+        QCOMPARE(files.size(), 10);
+        const ll::ui::CompositeLayout layout = ll::ui::CompositeLayout::forSize(QSize(1920, 1080));
+        const auto differing = [](const QImage& a, const QImage& b, const QRect& region) {
+            long n = 0;
+            for (int y = region.top(); y <= region.bottom(); ++y)
+                for (int x = region.left(); x <= region.right(); ++x) n += a.pixel(x, y) != b.pixel(x, y);
+            return n;
+        };
+        QImage previous(folder + "/" + files.first());
+        QCOMPARE(previous.size(), QSize(1920, 1080));
+        long ink = 0;
+        for (int y = layout.equation.top(); y <= layout.equation.bottom(); ++y)
+            for (int x = layout.equation.left(); x <= layout.equation.right(); ++x) ink += qGray(previous.pixel(x, y)) < 100;
+        QVERIFY2(ink > 2000, qPrintable(QString::number(ink)));  // the title and formulas are there
+        for (int k = 1; k < files.size(); ++k) {
+            const QImage frame(folder + "/" + files[k]);
+            QVERIFY2(differing(previous, frame, layout.plot) > 50, qPrintable(files[k]));
+            QCOMPARE(differing(previous, frame, layout.equation), 0L);
+            previous = frame;
+        }
+    }
+
     // Slow motion: 0.5 s of simulation at speed 0.25 is 2 s of video.
     void slowMotionGifAndWebm() {
         QTemporaryDir dir;
@@ -187,6 +229,10 @@ private slots:
         QTest::newRow("at on a video") << QStringList{"--at", "1", "--out", out} << "--at 1";
         QTest::newRow("at beyond duration") << QStringList{"--at", "20", "--out", "/tmp/lagrangelab-bad.png"} << "--at 20";
         QTest::newRow("no out") << QStringList{"--fps", "10"} << "--out";
+        QTest::newRow("layout") << QStringList{"--layout", "poster", "--out", out} << "--layout poster";
+        QTest::newRow("step without composite") << QStringList{"--step", "8", "--out", out} << "--step 8";
+        QTest::newRow("step beyond 8") << QStringList{"--layout", "composite", "--step", "9", "--out", out} << "--step 9";
+        QTest::newRow("overlay with composite") << QStringList{"--layout", "composite", "--overlay", "time", "--out", out} << "--overlay time";
     }
     void badOptions() {
         QFETCH(QStringList, args);

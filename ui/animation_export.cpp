@@ -15,6 +15,7 @@
 #include "core/pipeline/scene_visual.hpp"
 #include "core/visual/visual_scene.hpp"
 #include "ui/ffmpeg_encoder.hpp"
+#include "ui/composite_frame.hpp"
 #include "ui/headless_renderer.hpp"
 #include "ui/osg_scene.hpp"
 
@@ -171,7 +172,9 @@ ExportTimings exportAnimation(const Scene& scene, const Trajectory& trajectory, 
     sceneOptions.trail = s.trail;
     sceneOptions.labelPixels = std::max(10.0, s.height / 40.0);
     OsgScene graph(visual, sceneOptions);
-    HeadlessRenderer gl(s.width, s.height, s.antialiasing);
+    const CompositeLayout layout = CompositeLayout::forSize(QSize(s.width, s.height));
+    const QSize viewSize = s.composite ? layout.view.size() : QSize(s.width, s.height);
+    HeadlessRenderer gl(viewSize.width(), viewSize.height(), s.antialiasing);
     timings.renderer = gl.rendererName();
     timings.antialiasing = gl.antialiasing();
     gl.setScene(graph.root());
@@ -199,13 +202,17 @@ ExportTimings exportAnimation(const Scene& scene, const Trajectory& trajectory, 
     trail.reserve(OsgScene::maxTrailPoints);
 
     std::unique_ptr<FrameOverlay> overlay;
-    if (s.overlay.any())
+    std::unique_ptr<CompositeFrame> composite;
+    if (s.composite)
+        composite = std::make_unique<CompositeFrame>(trajectory, QString::fromStdString(scene.name), QSize(s.width, s.height), s.step.get(),
+                                                     s.language, hasNonConservativeForces(scene), s.speed);
+    else if (s.overlay.any())
         overlay = std::make_unique<FrameOverlay>(trajectory, QString::fromStdString(scene.name), QSize(s.width, s.height), s.overlay,
                                                  hasNonConservativeForces(scene), s.speed);
     std::unique_ptr<FrameSink> sink = makeSink(s);
     timings.setup = since(start);
 
-    QImage image;
+    QImage image, frame;
     for (std::size_t k = 0; k < times.size(); ++k) {
         if (cancel && cancel->load()) throw ExportCancelled();
         const double t = times[k];
@@ -229,13 +236,13 @@ ExportTimings exportAnimation(const Scene& scene, const Trajectory& trajectory, 
         gl.readBack(image);
         timings.readBack += since(mark);
         mark = Clock::now();
-        if (overlay)
-            overlay->paint(image, t,
-                           {sampler.scalar(trajectory.Ekin, t), sampler.scalar(trajectory.Epot, t), sampler.scalar(trajectory.E, t),
-                            sampler.scalar(trajectory.work, t)});
+        const std::array<double, 4> energies{sampler.scalar(trajectory.Ekin, t), sampler.scalar(trajectory.Epot, t),
+                                             sampler.scalar(trajectory.E, t), sampler.scalar(trajectory.work, t)};
+        if (composite) composite->paint(frame, image, t, energies);
+        else if (overlay) overlay->paint(image, t, energies);
         timings.overlay += since(mark);
         mark = Clock::now();
-        sink->write(image);
+        sink->write(composite ? frame : image);
         timings.write += since(mark);
         ++timings.frames;
         if (progress) progress(double(k + 1) / times.size());

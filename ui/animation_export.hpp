@@ -15,7 +15,10 @@
 #include <stdexcept>
 #include <string>
 
+#include <memory>
+
 #include "core/model/scene.hpp"
+#include "core/present/display_document.hpp"
 #include "core/visual/camera_view.hpp"
 #include "core/simulation/trajectory.hpp"
 #include "ui/frame_overlay.hpp"
@@ -46,6 +49,11 @@ struct ExportSettings {
     bool frames = true;        // DH triads
     double at = 0;             // Still: the picture's time [s]
     int antialiasing = -1;     // MSAA samples, or kEdgeSmoothing / kAutoAntialiasing (ui/headless_renderer.hpp)
+    // The slide layout (ui/composite_frame.hpp): the 3D view beside `step`'s key equation
+    // and the energy plot, in one width × height frame; `overlay` is then not used.
+    bool composite = false;
+    std::shared_ptr<const present::DisplayStep> step;
+    present::Language language = present::Language::English;  // the step's document's
 };
 
 // Wall time spent per stage over the whole export [s].

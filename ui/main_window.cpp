@@ -502,6 +502,15 @@ void MainWindow::buildMenus() {
     exports->addAction(tr("Plot (PNG, SVG or CSV)…"), this, &MainWindow::exportPlot);
     exports->addAction(tr("Derivation (PDF, SVG, PNG, LaTeX or text)…"), this, &MainWindow::exportDerivation);
     exports->addAction(tr("Animation (MP4, WebM, GIF)…"), this, &MainWindow::exportAnimation);
+    // One video for a slide: the 3D view, the derivation step shown and the energy plot.
+    for (const QSize size : {QSize(1280, 720), QSize(1920, 1080)})
+        exports->addAction(tr("Video for slides, %1×%2 (3D view, equation, energy)…").arg(size.width()).arg(size.height()), this, [this, size] {
+            const QString path = QFileDialog::getSaveFileName(this, tr("Export video for slides"), "slide.mp4",
+                                                              tr("MP4 (*.mp4);;WebM (*.webm);;GIF (*.gif);;PNG still (*.png)"));
+            QString error;
+            if (!path.isEmpty() && !exportAnimationTo(path, &error, -1, true, size))
+                QMessageBox::critical(this, tr("Export video for slides"), error);
+        });
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
@@ -1436,7 +1445,7 @@ void MainWindow::exportAnimation() {
     if (!path.isEmpty() && !exportAnimationTo(path, &error)) QMessageBox::critical(this, tr("Export animation"), error);
 }
 
-bool MainWindow::exportAnimationTo(const QString& path, QString* error, double duration, bool withDialog) {
+bool MainWindow::exportAnimationTo(const QString& path, QString* error, double duration, bool withDialog, QSize slide) {
     if (!result_ || !sampler_) {
         if (error) *error = tr("nothing to export: the simulation has not finished");
         return false;
@@ -1456,6 +1465,18 @@ bool MainWindow::exportAnimationTo(const QString& path, QString* error, double d
     settings.at = playback_->time();
     settings.trail = view_->showTrail();
     settings.frames = view_->showFrames();
+    if (slide.isValid()) {
+        settings.composite = true;
+        settings.width = slide.width(), settings.height = slide.height();
+        if (derived_ && derived_->display) {
+            const std::vector<present::DisplayStep>& steps = derived_->display->steps;
+            const int wanted = typeset_->step() <= 8 ? typeset_->step() : 8;
+            for (const present::DisplayStep& step : steps)
+                if (step.number == wanted) settings.step = std::make_shared<const present::DisplayStep>(step);
+            if (!settings.step && !steps.empty()) settings.step = std::make_shared<const present::DisplayStep>(steps.back());
+            settings.language = derived_->display->language;
+        }
+    }
     QPointer<QProgressDialog> dialog;
     auto cancel = std::make_shared<std::atomic<bool>>(false);
     if (withDialog) {

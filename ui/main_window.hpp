@@ -168,7 +168,10 @@ public:
     // start.
     bool exportPlotTo(const QString& path, QString* error = nullptr);
     bool exportDerivationTo(const QString& path, QString* error = nullptr);
-    bool exportAnimationTo(const QString& path, QString* error = nullptr, double duration = -1, bool withDialog = true);
+    // `slide`: a valid size renders the composite slide (ui/composite_frame.hpp) of that size
+    // with the derivation step shown (8 when the window shows the pose results).
+    bool exportAnimationTo(const QString& path, QString* error = nullptr, double duration = -1, bool withDialog = true,
+                           QSize slide = {});
 
 signals:
     // A simulation result is on screen (the 3D view, plots and playback updated).

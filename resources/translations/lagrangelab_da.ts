@@ -695,12 +695,12 @@
     </message>
     <message>
         <location line="+1"/>
-        <location line="+170"/>
+        <location line="+179"/>
         <source>Teach</source>
         <translation>Teach</translation>
     </message>
     <message>
-        <location line="-169"/>
+        <location line="-178"/>
         <source>Torques</source>
         <translation>Momenter</translation>
     </message>
@@ -751,12 +751,12 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+863"/>
+        <location line="+872"/>
         <source>Export</source>
         <translation>Eksportér</translation>
     </message>
     <message>
-        <location line="-862"/>
+        <location line="-871"/>
         <source>Screenshot (PNG)…</source>
         <translation>Skærmbillede (PNG)…</translation>
     </message>
@@ -776,7 +776,18 @@
         <translation>Animation (MP4, WebM, GIF)…</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
+        <source>Video for slides, %1×%2 (3D view, equation, energy)…</source>
+        <translation>Video til slides, %1×%2 (3D-visning, ligning, energi)…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+4"/>
+        <source>Export video for slides</source>
+        <translation>Eksportér video til slides</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>&amp;Quit</source>
         <translation>&amp;Afslut</translation>
     </message>
@@ -1176,12 +1187,13 @@
         <translation>Eksportér animation</translation>
     </message>
     <message>
-        <location line="-2"/>
+        <location line="-936"/>
+        <location line="+934"/>
         <source>MP4 (*.mp4);;WebM (*.webm);;GIF (*.gif);;PNG still (*.png)</source>
         <translation>MP4 (*.mp4);;WebM (*.webm);;GIF (*.gif);;PNG-stillbillede (*.png)</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+40"/>
         <source>Rendering %1…</source>
         <translation>Renderer %1…</translation>
     </message>
@@ -1344,7 +1356,7 @@
         <translation>link&amp;nbsp;%1</translation>
     </message>
     <message>
-        <location filename="../../ui/main_window.cpp" line="-1438"/>
+        <location filename="../../ui/main_window.cpp" line="-1459"/>
         <source>LagrangeLab scenes (*.lagrange *.json);;All files (*)</source>
         <translation>LagrangeLab-scener (*.lagrange *.json);;Alle filer (*)</translation>
     </message>
