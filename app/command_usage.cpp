@@ -11,7 +11,7 @@ struct CommandText {
     const char* summary;
 };
 
-constexpr std::array<CommandText, 10> commands{{
+constexpr std::array<CommandText, 11> commands{{
     {"eval", "SCENE --q v1,... --qd v1,... [--t T] [--tau v1,...]",
      "B, C, g, Q, q̈, E_kin, E_pot at one state, as JSON"},
     {"simulate",
@@ -34,6 +34,9 @@ constexpr std::array<CommandText, 10> commands{{
      "simulate and render the 3D scene headless (no X server needed) to a video, a still or PNG frames;\n"
      "--layout composite: one slide with the 3D view, derivation step N's key equation (default 8) and\n"
      "the energy plot with a moving cursor"},
+    {"report", "SCENE --out DIR [--duration T] [--lang da|en] [--notation notes|siciliano|spong|craig]",
+     "the lab-report bundle in one folder: derivation.pdf, trajectory.csv (units in its header),\n"
+     "energy.svg and joints.svg, the scene file, slide.mp4 (the composite slide) and index.md"},
     {"check", "SCENE [--duration T] [--format text|json]",
      "the model's properties along a simulated run: B positive definite and its condition, Ḃ − 2C\n"
      "skew, power balance, Newton–Euler against B q̈ + C q̇ + g, energy; exit 1 when one fails"},

@@ -22,6 +22,7 @@ int integratorsCommand(const Args& args);
 int accuracyCommand(const Args& args);
 int deriveCommand(const Args& args);
 int renderCommand(const Args& args);
+int reportCommand(const Args& args);
 int codegenCommand(const Args& args);
 int checkCommand(const Args& args);
 // The painting parts: each starts Qt (offscreen without a display) for its own work.

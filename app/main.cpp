@@ -19,7 +19,7 @@ namespace {
 
 bool isHelp(const std::string& arg) { return arg == "--help" || arg == "-h"; }
 
-const char* const kCommands[] = {"eval", "simulate", "integrators", "accuracy", "derive", "render", "codegen", "check", "help", "version", "--version"};
+const char* const kCommands[] = {"eval", "simulate", "integrators", "accuracy", "derive", "render", "report", "codegen", "check", "help", "version", "--version"};
 
 // `lagrangelab`, `lagrangelab SCENE …` and `lagrangelab --screenshot …` open the window:
 // no arguments, or a first argument that is no command but a scene file or an option.
@@ -105,6 +105,7 @@ int main(int argc, char** argv) {
         if (command == "accuracy") return accuracyCommand(args);
         if (command == "derive") return deriveCommand(args);
         if (command == "render") return renderCommand(args);
+        if (command == "report") return reportCommand(args);
         if (command == "codegen") return codegenCommand(args);
         if (command == "check") return checkCommand(args);
         std::fprintf(stderr, "error: unknown command '%s'\n\n%s", command.c_str(), overviewUsage().c_str());

@@ -1205,6 +1205,18 @@ private slots:
             for (int x = layout.equation.left(); x <= layout.equation.right(); ++x) ink += qGray(slide.pixel(x, y)) < 100;
         QVERIFY2(ink > 2000, qPrintable(QString::number(ink)));
         QVERIFY(differing(slide.copy(layout.plot), lastSlide.copy(layout.plot)) > 0.0005);
+
+        // The lab report (File → Export → Lab report): every file of the bundle in the
+        // folder, the scene as edited in the window.
+        const QString report = dir_.filePath("lab-report");
+        QVERIFY2(w.exportLabReportTo(report, &error, false), qPrintable(error));
+        QVERIFY(exported.wait(300000));
+        QCOMPARE(exported.back().at(1).toString(), QString());
+        for (const char* f : {"derivation.pdf", "trajectory.csv", "energy.svg", "joints.svg", "slide.mp4", "index.md"})
+            QVERIFY2(QFileInfo(report + "/" + f).size() > 0, f);
+        QFile copied(report + "/" + QFileInfo(w.document().path()).fileName());
+        QVERIFY(copied.open(QIODevice::ReadOnly));
+        QCOMPARE(copied.readAll().toStdString(), w.document().text());
     }
 
     // Parameters are added and removed as undoable edits; removing one in use is an error

@@ -70,6 +70,7 @@
 #include "ui/trajectory_chart.hpp"
 #include "ui/work_precision_pane.hpp"
 #include "ui/dh_step_panel.hpp"
+#include "ui/lab_report.hpp"
 
 // Q_INIT_RESOURCE must stand outside any namespace.
 static void initExampleResources() { Q_INIT_RESOURCE(examples); }
@@ -511,6 +512,11 @@ void MainWindow::buildMenus() {
             if (!path.isEmpty() && !exportAnimationTo(path, &error, -1, true, size))
                 QMessageBox::critical(this, tr("Export video for slides"), error);
         });
+    exports->addAction(tr("Lab report (PDF, CSV, SVG plots, scene, video) into a folder…"), this, [this] {
+        const QString dir = QFileDialog::getExistingDirectory(this, tr("Lab report: choose or make a folder"));
+        QString error;
+        if (!dir.isEmpty() && !exportLabReportTo(dir, &error)) QMessageBox::critical(this, tr("Lab report"), error);
+    });
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
@@ -1477,21 +1483,31 @@ bool MainWindow::exportAnimationTo(const QString& path, QString* error, double d
             settings.language = derived_->display->language;
         }
     }
+    auto result = result_;
+    exportOnWorker(path, tr("Rendering %1…").arg(QFileInfo(path).fileName()), withDialog,
+                   [result, settings](const std::function<void(double)>& progress, const std::atomic<bool>* cancel) {
+                       ll::ui::exportAnimation(*result->scene, result->simulation.trajectory, settings, progress, cancel);
+                   });
+    return true;
+}
+
+// `work` on a worker, with a progress dialog and Cancel when `withDialog`; then the status
+// bar (or a message box) says how it went and exportFinished(target, error) is emitted.
+void MainWindow::exportOnWorker(const QString& target, const QString& label, bool withDialog, ExportWork work) {
     QPointer<QProgressDialog> dialog;
     auto cancel = std::make_shared<std::atomic<bool>>(false);
     if (withDialog) {
-        dialog = new QProgressDialog(tr("Rendering %1…").arg(QFileInfo(path).fileName()), tr("Cancel"), 0, 1000, this);
+        dialog = new QProgressDialog(label, tr("Cancel"), 0, 1000, this);
         dialog->setWindowModality(Qt::WindowModal);
         dialog->setAttribute(Qt::WA_DeleteOnClose);
         dialog->setMinimumDuration(0);
         connect(dialog, &QProgressDialog::canceled, this, [cancel] { cancel->store(true); });
         dialog->show();
     }
-    auto result = result_;
-    QThreadPool::globalInstance()->start([self = QPointer<MainWindow>(this), dialog, cancel, result, settings, path, withDialog] {
+    QThreadPool::globalInstance()->start([self = QPointer<MainWindow>(this), dialog, cancel, work = std::move(work), target, withDialog] {
         QString failure;
         try {
-            ll::ui::exportAnimation(*result->scene, result->simulation.trajectory, settings, [dialog](double f) {
+            work([dialog](double f) {
                 QMetaObject::invokeMethod(qApp, [dialog, f] {
                     if (dialog) dialog->setValue(static_cast<int>(f * 1000));
                 }, Qt::QueuedConnection);
@@ -1499,13 +1515,30 @@ bool MainWindow::exportAnimationTo(const QString& path, QString* error, double d
         } catch (const std::exception& e) {
             failure = QString::fromUtf8(e.what());
         }
-        QMetaObject::invokeMethod(qApp, [self, dialog, path, failure, withDialog] {
+        QMetaObject::invokeMethod(qApp, [self, dialog, target, failure, withDialog] {
             if (dialog) dialog->close();
             if (!self) return;
-            reportExport(self, self->statusBar(), path, failure, withDialog);
-            emit self->exportFinished(path, failure);
+            reportExport(self, self->statusBar(), target, failure, withDialog);
+            emit self->exportFinished(target, failure);
         }, Qt::QueuedConnection);
     });
+}
+
+bool MainWindow::exportLabReportTo(const QString& dir, QString* error, bool withDialog) {
+    if (!result_ || !derived_ || !derived_->display) {
+        if (error) *error = tr("nothing to report yet: the simulation or the derivation has not finished");
+        return false;
+    }
+    LabReportInput input;  // copies: the worker shares nothing with the window
+    input.scene = *result_->scene;
+    input.simulation = result_->simulation;
+    input.display = derived_->display;
+    input.sceneText = doc_.text();
+    input.sceneFileName = doc_.path().isEmpty() ? "scene.json" : QFileInfo(doc_.path()).fileName().toStdString();
+    exportOnWorker(dir, tr("Writing the lab report into %1…").arg(dir), withDialog,
+                   [input = std::move(input), dir](const std::function<void(double)>& progress, const std::atomic<bool>* cancel) {
+                       writeLabReport(input, dir.toStdString(), progress, cancel);
+                   });
     return true;
 }
 

@@ -7,6 +7,8 @@
 // the views. Files: open, save, save as (atomic, PATH.bak),
 // recent files, the example gallery, drag and drop, an autosaved recovery copy offered
 // back after a crash, a question before unsaved work is closed.
+#include <atomic>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -172,6 +174,9 @@ public:
     // with the derivation step shown (8 when the window shows the pose results).
     bool exportAnimationTo(const QString& path, QString* error = nullptr, double duration = -1, bool withDialog = true,
                            QSize slide = {});
+    // Lab report (ui/lab_report.hpp): the bundle into folder `dir`, from the run and the
+    // derivation on screen and the scene as edited, on a worker; exportFinished(dir, …).
+    bool exportLabReportTo(const QString& dir, QString* error = nullptr, bool withDialog = true);
 
 signals:
     // A simulation result is on screen (the 3D view, plots and playback updated).
@@ -272,6 +277,8 @@ public:
     QByteArray layoutBeforePresenting_;  // restored when leaving presentation mode, with …
     QRect geometryBeforePresenting_;     // … the window's place and size
     QSize presentationSize_;             // invalid: presenting fills the screen
+    using ExportWork = std::function<void(const std::function<void(double)>& progress, const std::atomic<bool>* cancel)>;
+    void exportOnWorker(const QString& target, const QString& label, bool withDialog, ExportWork work);
     void layOutForPresenting();
     bool jsonStale_ = true;  // the JSON tab's text is older than the document
     bool teaching_ = false;

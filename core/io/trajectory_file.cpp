@@ -55,11 +55,20 @@ TorqueColumns torqueColumns(const Scene& scene, const TorqueHistory& history) {
     return columns;
 }
 
-void writeTrajectoryCsv(const Trajectory& tr, std::ostream& out, const TorqueColumns& torques) {
-    out << "t";
-    for (int i = 0; i < tr.n; ++i) out << ',' << tr.coordinateName(i);
-    for (int i = 0; i < tr.n; ++i) out << ',' << velocityName(tr, i);
-    out << ",Ekin,Epot,E,W";
+std::vector<std::string> coordinateUnits(const Scene& scene) {
+    std::vector<std::string> units(static_cast<std::size_t>(scene.dof()));
+    if (!scene.lagrangian)
+        for (int i = 0; i < scene.dof(); ++i)
+            units[static_cast<std::size_t>(i)] = coordinateUnit(scene.robot.joints[static_cast<std::size_t>(i)].dh.type == JointType::Revolute);
+    return units;
+}
+
+void writeTrajectoryCsv(const Trajectory& tr, std::ostream& out, const TorqueColumns& torques, const std::vector<std::string>* units) {
+    const auto unitOf = [&](int i) { return units && i < static_cast<int>(units->size()) ? (*units)[static_cast<std::size_t>(i)] : std::string(); };
+    out << (units ? "t [s]" : "t");
+    for (int i = 0; i < tr.n; ++i) out << ',' << withUnit(tr.coordinateName(i), unitOf(i));
+    for (int i = 0; i < tr.n; ++i) out << ',' << withUnit(velocityName(tr, i), unitOf(i).empty() ? "" : unitOf(i) + "/s");
+    out << (units ? ",Ekin [J],Epot [J],E [J],W [J]" : ",Ekin,Epot,E,W");
     if (torques.history)
         for (const TorquePart& part : kTorqueParts)
             for (int i = 0; i < tr.n; ++i) out << ',' << withUnit(indexed(part.stem, i), torques.units.at(i));

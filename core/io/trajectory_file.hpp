@@ -24,7 +24,14 @@ struct TorqueColumns {
 // The units the columns of a robot scene's run are in (empty strings for a Lagrangian's).
 TorqueColumns torqueColumns(const Scene& scene, const TorqueHistory& history);
 
-void writeTrajectoryCsv(const Trajectory& trajectory, std::ostream& out, const TorqueColumns& torques = {});
+// The units of a scene's coordinates, one per coordinate: rad or m by joint type for a
+// robot, "" for a typed Lagrangian's (its coordinates carry no declared unit).
+std::vector<std::string> coordinateUnits(const Scene& scene);
+
+// `units` (optional, one per coordinate as coordinateUnits gives): the header then names
+// every column's unit, "t [s]", "q1 [rad]", "qd1 [rad/s]", "Ekin [J]" (the lab report).
+void writeTrajectoryCsv(const Trajectory& trajectory, std::ostream& out, const TorqueColumns& torques = {},
+                        const std::vector<std::string>* units = nullptr);
 void writeTrajectoryJson(const SimulationResult& result, std::ostream& out, const TorqueColumns& torques = {});
 
 // Chooses the format by extension (.csv or .json) and writes atomically

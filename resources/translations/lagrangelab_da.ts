@@ -420,7 +420,7 @@
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../ui/main_window.cpp" line="+172"/>
+        <location filename="../../ui/main_window.cpp" line="+173"/>
         <source>standard (Spong)</source>
         <translation>standard (Spong)</translation>
     </message>
@@ -695,12 +695,12 @@
     </message>
     <message>
         <location line="+1"/>
-        <location line="+179"/>
+        <location line="+184"/>
         <source>Teach</source>
         <translation>Teach</translation>
     </message>
     <message>
-        <location line="-178"/>
+        <location line="-183"/>
         <source>Torques</source>
         <translation>Momenter</translation>
     </message>
@@ -751,12 +751,12 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+872"/>
+        <location line="+877"/>
         <source>Export</source>
         <translation>Eksportér</translation>
     </message>
     <message>
-        <location line="-871"/>
+        <location line="-876"/>
         <source>Screenshot (PNG)…</source>
         <translation>Skærmbillede (PNG)…</translation>
     </message>
@@ -785,6 +785,21 @@
         <location line="+4"/>
         <source>Export video for slides</source>
         <translation>Eksportér video til slides</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Lab report (PDF, CSV, SVG plots, scene, video) into a folder…</source>
+        <translation>Laboratorierapport (PDF, CSV, SVG-plot, scene, video) i en mappe…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Lab report: choose or make a folder</source>
+        <translation>Laboratorierapport: vælg eller opret en mappe</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Lab report</source>
+        <translation>Laboratorierapport</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -1187,23 +1202,33 @@
         <translation>Eksportér animation</translation>
     </message>
     <message>
-        <location line="-936"/>
-        <location line="+934"/>
+        <location line="-941"/>
+        <location line="+939"/>
         <source>MP4 (*.mp4);;WebM (*.webm);;GIF (*.gif);;PNG still (*.png)</source>
         <translation>MP4 (*.mp4);;WebM (*.webm);;GIF (*.gif);;PNG-stillbillede (*.png)</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+38"/>
         <source>Rendering %1…</source>
         <translation>Renderer %1…</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+13"/>
         <source>Cancel</source>
         <translation>Annuller</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+29"/>
+        <source>nothing to report yet: the simulation or the derivation has not finished</source>
+        <translation>intet at rapportere endnu: simuleringen eller udledningen er ikke færdig</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Writing the lab report into %1…</source>
+        <translation>Skriver laboratorierapporten i %1…</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>parameter name &apos;%1&apos;: letters, digits and _ only, starting with a letter</source>
         <translation>parameternavn &apos;%1&apos;: kun bogstaver, cifre og _, og det skal begynde med et bogstav</translation>
     </message>
@@ -1356,7 +1381,7 @@
         <translation>link&amp;nbsp;%1</translation>
     </message>
     <message>
-        <location filename="../../ui/main_window.cpp" line="-1459"/>
+        <location filename="../../ui/main_window.cpp" line="-1491"/>
         <source>LagrangeLab scenes (*.lagrange *.json);;All files (*)</source>
         <translation>LagrangeLab-scener (*.lagrange *.json);;Alle filer (*)</translation>
     </message>
