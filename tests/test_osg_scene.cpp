@@ -9,6 +9,7 @@
 #include "core/model/robot_data.hpp"
 #include "core/visual/trajectory_sampler.hpp"
 #include "core/pipeline/scene_visual.hpp"
+#include "core/visual/frame_labels.hpp"
 #include "core/visual/visual_scene.hpp"
 #include "core/pipeline/scene_simulation.hpp"
 #include "ui/headless_renderer.hpp"
@@ -66,6 +67,84 @@ private slots:
                     red += c.red() > 120 && c.red() > c.green() + 60 && c.red() > c.blue() + 50;
                 }
             QVERIFY2(red >= 5, qPrintable(QString("t = %1: tip at pixel (%2, %3), %4 red pixels").arg(t).arg(x).arg(y).arg(red)));
+        }
+    }
+
+    // Depth cues: the ground of a robot lies at its base (the pedestal stands on it, the
+    // motion does not move it), and each centre of mass has a drop line from its centre
+    // straight down (along −up) to a foot on that plane, at every pose.
+    void dropLinesStandOnTheGroundAtTheBase() {
+        for (const char* file : {"/puma560.json", "/panda.json", "/stanford_arm.json"}) {
+            const Scene scene = loadScene(std::string(LL_EXAMPLES_DIR) + file).scene;
+            VisualScene visual = visualScene(scene);
+            double lowest = 1e300;  // of the initial pose
+            std::vector<Eigen::Vector4d> extent;
+            visual.currentExtent(extent);
+            for (const Eigen::Vector4d& s : extent) lowest = std::min(lowest, visual.up.dot(s.head<3>()) - s[3]);
+            SimulationSettings settings = scene.simulation;
+            settings.duration = 2.0;
+            const Trajectory tr = simulate(scene, settings).trajectory;
+            visual.fitToMotion(tr);
+            const double ground = visual.up.dot(visual.ground.centre);
+            QVERIFY2(std::abs(ground - (lowest - 0.01 * visual.scale)) < 1e-12, file);
+            int coms = 0;
+            for (const VisualPart& part : visual.parts) coms += part.role == PartRole::CentreOfMass;
+            QCOMPARE(int(visual.dropLines.size()), coms);
+            QVERIFY(coms > 0);
+            const TrajectorySampler sampler(tr);
+            Eigen::VectorXd q(scene.dof()), qd(scene.dof());
+            for (double t : {0.0, 0.9, 2.0}) {
+                sampler.sample(t, q, qd);
+                visual.pose(q, t);
+                std::size_t k = 0;
+                for (const VisualPart& part : visual.parts) {
+                    if (part.role != PartRole::CentreOfMass) continue;
+                    const auto& [top, foot] = visual.dropLines[k++];
+                    QVERIFY((top - part.pose.translation()).norm() < 1e-12);
+                    QVERIFY(std::abs(visual.up.dot(foot) - ground) < 1e-12);
+                    QVERIFY(((top - foot) - visual.up.dot(top - foot) * visual.up).norm() < 1e-12);  // straight down
+                }
+            }
+        }
+    }
+
+    // The frame labels of the Panda and the PUMA at their initial poses, as `render`
+    // frames them at 1280×720 and 1920×1080 and 640×480: no two of their boxes overlap,
+    // and each box holds its label's ink in the rendered picture (so the boxes are where
+    // the renderer draws).
+    void frameLabelsDoNotOverlap_data() {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<QSize>("size");
+        for (const char* f : {"/panda.json", "/puma560.json"})
+            for (QSize s : {QSize(1280, 720), QSize(1920, 1080), QSize(640, 480)})
+                QTest::newRow(qPrintable(QString("%1 %2x%3").arg(f + 1).arg(s.width()).arg(s.height()))) << QString(f) << s;
+    }
+    void frameLabelsDoNotOverlap() {
+        QFETCH(QString, file);
+        QFETCH(QSize, size);
+        const Scene scene = loadScene(std::string(LL_EXAMPLES_DIR) + file.toStdString()).scene;
+        VisualScene visual = visualScene(scene);
+        ui::OsgSceneOptions options;
+        options.labelPixels = std::max(10.0, size.height() / 40.0);  // as render sets them
+        options.trail = false;
+        ui::OsgScene graph(visual, options);
+        ui::HeadlessRenderer gl(size.width(), size.height(), 0);
+        gl.setScene(graph.root());
+        const CameraView view = cameraView(visual, CameraSpec{}, gl.aspect());
+        ui::applyCameraView(*gl.camera(), view, gl.aspect());
+        QImage image;
+        gl.render(image);
+        const std::vector<LabelBox> boxes = frameLabelBoxes(visual, view, size.width(), size.height(), options.labelPixels);
+        QVERIFY(boxes.size() >= 4);
+        for (std::size_t a = 0; a < boxes.size(); ++a) {
+            for (std::size_t b = a + 1; b < boxes.size(); ++b)
+                QVERIFY2(!boxes[a].overlaps(boxes[b]), qPrintable(QString("\"%1\" and \"%2\"").arg(QString::fromStdString(boxes[a].text),
+                                                                                                 QString::fromStdString(boxes[b].text))));
+            int ink = 0;
+            for (int y = int(boxes[a].top); y < int(boxes[a].bottom); ++y)
+                for (int x = int(boxes[a].left); x < int(boxes[a].right); ++x)
+                    if (x >= 0 && y >= 0 && x < image.width() && y < image.height()) ink += qGray(image.pixel(x, y)) < 70;
+            QVERIFY2(ink >= 5, qPrintable(QString("label \"%1\": %2 dark pixels in its box").arg(QString::fromStdString(boxes[a].text)).arg(ink)));
         }
     }
 };

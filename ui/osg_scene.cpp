@@ -1,5 +1,7 @@
 #include "ui/osg_scene.hpp"
 
+#include "core/visual/frame_labels.hpp"
+
 #include <cmath>
 #include <filesystem>
 
@@ -8,6 +10,7 @@
 #include <osg/Geode>
 #include <osg/LineWidth>
 #include <osg/Material>
+#include <osg/Point>
 #include <osg/ShapeDrawable>
 #include <osgText/Text>
 
@@ -105,7 +108,7 @@ osg::ref_ptr<osgText::Text> label(const std::string& text, double axisLength, do
     t->setCharacterSize(float(pixels));
     t->setAxisAlignment(osgText::Text::SCREEN);
     t->setAlignment(osgText::Text::RIGHT_TOP);
-    const float back = -0.12f * float(axisLength);
+    const float back = -float(kLabelBack * axisLength);  // core/visual/frame_labels places it the same
     t->setPosition(osg::Vec3(back, back, back));
     t->setColor(osg::Vec4(0.1f, 0.1f, 0.12f, 1));
     t->setBackdropType(osgText::Text::OUTLINE);
@@ -236,7 +239,38 @@ OsgScene::OsgScene(const VisualScene& scene, const OsgSceneOptions& options) : o
         state->setRenderingHint(osg::StateSet::TRANSPARENT_BIN);
         root_->addChild(geode);
     }
+    if (options_.dropLines && !scene.dropLines.empty()) {
+        // Where each mass stands over the ground: a thin grey line down and a dot at its
+        // foot, which read as height on a projector and on software GL alike.
+        drops_ = new osg::Geometry;
+        drops_->setDataVariance(osg::Object::DYNAMIC);
+        drops_->setUseDisplayList(false);
+        drops_->setUseVertexBufferObjects(true);
+        const unsigned count = static_cast<unsigned>(2 * scene.dropLines.size());
+        drops_->setVertexArray(new osg::Vec3Array(count));
+        osg::ref_ptr<osg::Vec4Array> colour = new osg::Vec4Array(1);
+        (*colour)[0] = osg::Vec4(0.25f, 0.27f, 0.32f, 0.75f);
+        drops_->setColorArray(colour, osg::Array::BIND_OVERALL);
+        drops_->addPrimitiveSet(new osg::DrawArrays(GL_LINES, 0, static_cast<GLsizei>(count)));
+        osg::ref_ptr<osg::DrawElementsUShort> feet = new osg::DrawElementsUShort(GL_POINTS);
+        for (unsigned k = 1; k < count; k += 2) feet->push_back(static_cast<unsigned short>(k));
+        drops_->addPrimitiveSet(feet);
+        dropGeode_ = new osg::Geode;
+        dropGeode_->addDrawable(drops_);
+        osg::StateSet* state = dropGeode_->getOrCreateStateSet();
+        state->setMode(GL_LIGHTING, osg::StateAttribute::OFF | osg::StateAttribute::PROTECTED);
+        state->setMode(GL_BLEND, osg::StateAttribute::ON);
+        state->setAttributeAndModes(new osg::BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA));
+        state->setAttributeAndModes(new osg::LineWidth(1.5f));
+        state->setAttributeAndModes(new osg::Point(7.0f));
+        state->setRenderingHint(osg::StateSet::TRANSPARENT_BIN);
+        root_->addChild(dropGeode_);
+    }
     update(scene);
+}
+
+void OsgScene::setDropLinesVisible(bool on) {
+    if (dropGeode_) dropGeode_->setNodeMask(on ? ~0u : 0u);
 }
 
 void OsgScene::update(const VisualScene& scene) {
@@ -245,6 +279,15 @@ void OsgScene::update(const VisualScene& scene) {
         if (axes_[i]) axes_[i]->setMatrix(toOsgMatrix(scene.parts[i].pose.matrix()));
     }
     for (std::size_t k = 0; k < frames_.size(); ++k) frames_[k]->setMatrix(toOsgMatrix(scene.frames[k].pose.matrix()));
+    if (drops_) {
+        auto& vertices = static_cast<osg::Vec3Array&>(*drops_->getVertexArray());
+        for (std::size_t k = 0; k < scene.dropLines.size() && 2 * k + 1 < vertices.size(); ++k) {
+            vertices[2 * k] = toOsg(scene.dropLines[k].first);
+            vertices[2 * k + 1] = toOsg(scene.dropLines[k].second);
+        }
+        vertices.dirty();
+        drops_->dirtyBound();
+    }
 }
 
 void OsgScene::updateGround(const VisualScene& scene) {

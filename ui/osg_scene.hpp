@@ -26,6 +26,7 @@ struct OsgSceneOptions {
     bool frameLabels = true;   // their numbers beside them
     bool trail = true;         // the end effector's recent path
     bool grid = true;          // the ground grid
+    bool dropLines = true;     // a line from each centre of mass down to the ground, a dot at its foot
     double labelPixels = 18;   // label height on screen [px]
 };
 
@@ -52,6 +53,8 @@ public:
     // The DH step-through's moving frame: a triad 1.8× the frames' size drawn over the
     // solids at `pose`; null hides it.
     void setMovingFrame(const Eigen::Isometry3d* pose);
+    // Shows or hides the drop lines (with the centres of mass they hang from).
+    void setDropLinesVisible(bool on);
     // Shows or hides DH frame k's triad and label (the step-through keeps frames i−1 and i).
     void setFrameVisible(int k, bool on);
     // A picked entry's links in their colour by share, the others faded, the axes of the
@@ -70,6 +73,8 @@ private:
     std::vector<osg::ref_ptr<osg::Geode>> axisGeodes_;
     osg::ref_ptr<osg::Geometry> trail_;
     osg::ref_ptr<osg::MatrixTransform> moving_;
+    osg::ref_ptr<osg::Geometry> drops_;
+    osg::ref_ptr<osg::Geode> dropGeode_;
     double frameLength_ = 0.1;
 };
 

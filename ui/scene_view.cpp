@@ -120,6 +120,7 @@ void SceneView::rebuild() {
         for (std::size_t i = 0; i < visual_->parts.size(); ++i)
             if (visual_->parts[i].role == PartRole::CentreOfMass)
                 osg_->setPartVisible(static_cast<int>(i), coms_);
+        osg_->setDropLinesVisible(coms_);
         if (options_.trail) osg_->setTrail(trail_);
         if (emphasis_.strength.size() == visual_->parts.size()) osg_->setEmphasis(emphasis_);
         updateMovingFrame();

@@ -257,7 +257,24 @@ VisualScene::VisualScene(const Scene& scene, std::optional<BodyPoses> compiledBo
     }
     bounds = currentBounds();
     forEachExtent([this](const Eigen::Vector3d& point, double radius) { keepInView.emplace_back(point.x(), point.y(), point.z(), radius); });
+    if (!scene.lagrangian && !bounds.empty()) {  // the floor the pedestal stands on
+        baseHeight_ = 1e300;
+        forEachExtent([this](const Eigen::Vector3d& point, double radius) { baseHeight_ = std::min(baseHeight_, up.dot(point) - radius); });
+    }
     placeGround();
+    for (const VisualPart& part : parts)
+        if (part.role == PartRole::CentreOfMass) dropLines.emplace_back(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero());
+    placeDropLines();
+}
+
+void VisualScene::placeDropLines() {
+    std::size_t k = 0;
+    const double groundHeight = up.dot(ground.centre);
+    for (const VisualPart& part : parts) {
+        if (part.role != PartRole::CentreOfMass || k >= dropLines.size()) continue;
+        const Eigen::Vector3d c = part.pose.translation();
+        dropLines[k++] = {c, c - (up.dot(c) - groundHeight) * up};
+    }
 }
 
 void VisualScene::labelCoincidentFrames(const Eigen::VectorXd& q0) {
@@ -335,6 +352,7 @@ void VisualScene::pose(const Eigen::VectorXd& q, double t) {
         }
     }
     for (std::size_t k = 0; k < frames.size(); ++k) frames[k].pose = data.T_0i[k];
+    placeDropLines();
 }
 
 template <class Add>
@@ -409,11 +427,13 @@ void VisualScene::placeGround() {
         lowest = std::min(lowest, up.dot(p));
     }
     if (bounds.empty()) lowest = 0.0;
+    if (!std::isnan(baseHeight_)) lowest = baseHeight_;
     lowest -= 0.01 * scale;
     const Eigen::Vector3d c = bounds.empty() ? Eigen::Vector3d::Zero() : bounds.centre();
     ground.centre = c - (up.dot(c) - lowest) * up;
     ground.spacing = niceStep(scale / 8);
     ground.halfSize = ground.spacing * std::ceil(1.25 * std::max(bounds.radius(), scale / 2) / ground.spacing);
+    placeDropLines();
 }
 
 }  // namespace ll

@@ -17,9 +17,13 @@
 // A Lagrangian scene draws its own `bodies` (box, sphere, cylinder, rod), posed by
 // their expressions of q and t compiled beforehand (core/pipeline/scene_visual.hpp: no
 // GiNaC here), and the world triad.
+// The ground grid lies at a robot's base (its lowest point at the initial pose; the motion
+// may reach below), below everything for a Lagrangian scene; a drop line hangs from each
+// centre of mass to it.
 // Sizes scale with the robot's reach, so a 5 cm pendulum and a 2 m arm both look right.
 // Up is −gravity; with no gravity z, except a Lagrangian scene lying in the x–y plane
 // (a pendulum typed by hand), which gets y up.
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -108,6 +112,10 @@ public:
     std::vector<VisualFrame> frames;   // DH frames 0..n, or the world frame
     int endEffector = -1;              // the part whose path the trail draws; -1: none
     VisualGround ground;
+    // Depth cues: a drop line from each centre of mass straight down (along −up) to the
+    // ground, its foot where the mass stands over the ground. One pair (centre, foot) per
+    // COM part, in `parts` order; updated by pose().
+    std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> dropLines;
     VisualBounds bounds;               // of the initial pose, then of the motion (fitToMotion)
     // Spheres (centre x, y, z, radius [m]) that hold every part and triad at the initial
     // pose, then at every pose fitToMotion sampled: what a camera must keep in view.
@@ -142,6 +150,10 @@ private:
     std::unique_ptr<Rig> rig_;
 
     void placeGround();
+    void placeDropLines();
+    // A robot's ground stays at its base (the lowest point of its initial pose) whatever
+    // the motion reaches; NaN: below everything (a Lagrangian scene's own bodies).
+    double baseHeight_ = std::numeric_limits<double>::quiet_NaN();
     void labelCoincidentFrames(const Eigen::VectorXd& q0);
     // Calls add(centre, radius) for spheres that hold each part and triad at the current pose.
     template <class Add>

@@ -1,0 +1,30 @@
+#pragma once
+// Where the DH frames' labels ("0", "1,2", "4,5,6") stand in a picture, renderer-neutral:
+// each is drawn at a point behind its frame's origin (kLabelBack of the triad's length
+// along −x, −y and −z of the frame) with its top-right corner there, at a fixed height in
+// pixels. What a test checks for overlaps and the renderers place by (ui/osg_scene).
+#include <string>
+#include <vector>
+
+#include "core/visual/camera_view.hpp"
+#include "core/visual/visual_scene.hpp"
+
+namespace ll {
+
+constexpr double kLabelBack = 0.12;  // of the frame's axis length
+
+struct LabelBox {
+    int frame = -1;
+    std::string text;
+    double left = 0, top = 0, right = 0, bottom = 0;  // [px], y down, in a width × height picture
+    bool overlaps(const LabelBox& other) const {
+        return left < other.right && other.left < right && top < other.bottom && other.top < bottom;
+    }
+};
+
+// The boxes of the labelled frames at the scene's current pose seen through `view` in a
+// picture of width × height pixels, labels `pixels` high (bold sans: a digit 0.70 of the
+// height wide, a comma 0.38). Labels behind the eye are left out.
+std::vector<LabelBox> frameLabelBoxes(const VisualScene& scene, const CameraView& view, int width, int height, double pixels);
+
+}  // namespace ll
