@@ -15,6 +15,7 @@
 #include <QSvgRenderer>
 
 #include <QChart>
+#include <QLegend>
 #include <QDockWidget>
 #include <QLineSeries>
 #include <QValueAxis>
@@ -181,8 +182,11 @@ private slots:
         QVERIFY(model.setData(model.index(0, JointTableModel::A), "1.5", Qt::EditRole));
         QVERIFY(checked(w));
         QVERIFY(settled(w));
-        const double d1 = w.sceneView().cameraDistance(), r1 = w.sceneView().visualScene()->bounds.radius();
+        const double r1 = w.sceneView().visualScene()->bounds.radius();
         QVERIFY2(r1 > 1.1 * r0, qPrintable(QString("%1 -> %2").arg(r0).arg(r1)));
+        // The distance glides to its new fit (0.3 s).
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(w.sceneView().cameraDistance() / d0 - r1 / r0) < 0.05, 3000);
+        const double d1 = w.sceneView().cameraDistance();
         QVERIFY2(std::abs(d1 / d0 - r1 / r0) < 0.05, qPrintable(QString("distance %1 -> %2, radius %3 -> %4").arg(d0).arg(d1).arg(r0).arg(r1)));
         // The user zooms in: the next resize keeps that camera.
         w.sceneView().zoomBy(0.5);
@@ -855,6 +859,12 @@ private slots:
         w.playback().pause();
         const auto check = [](ll::ui::TrajectoryChart& chart, const char* where) {
             const QRectF area = chart.chart()->plotArea();
+            // The legend beside the plot when it is narrow next to the plot, below otherwise;
+            // never over the plot area.
+            QLegend* legend = chart.chart()->legend();
+            const QRectF legendBox = legend->geometry();
+            QVERIFY2(!legendBox.intersects(area), where);
+            if (legend->alignment() == Qt::AlignRight && chart.height() >= 200) QVERIFY2(legendBox.width() <= 0.25 * chart.width(), where);
             QVERIFY2(area.width() > 50 && area.height() > 30, where);
             for (Qt::Orientation o : {Qt::Horizontal, Qt::Vertical}) {
                 auto* axis = static_cast<QValueAxis*>(chart.chart()->axes(o).front());

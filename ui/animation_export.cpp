@@ -169,6 +169,7 @@ ExportTimings exportAnimation(const Scene& scene, const Trajectory& trajectory, 
     visual.fitToMotion(trajectory);
     OsgSceneOptions sceneOptions;
     sceneOptions.frames = s.frames;
+    sceneOptions.frameLabels = s.frameLabels;
     sceneOptions.trail = s.trail;
     sceneOptions.labelPixels = std::max(10.0, s.height / 40.0);
     OsgScene graph(visual, sceneOptions);

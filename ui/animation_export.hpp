@@ -47,6 +47,7 @@ struct ExportSettings {
     bool trail = true;         // end-effector path of the last `trailSeconds`
     double trailSeconds = 2;   // [s] simulated
     bool frames = true;        // DH triads
+    bool frameLabels = true;   // and their numbers
     double at = 0;             // Still: the picture's time [s]
     int antialiasing = -1;     // MSAA samples, or kEdgeSmoothing / kAutoAntialiasing (ui/headless_renderer.hpp)
     // The slide layout (ui/composite_frame.hpp): the 3D view beside `step`'s key equation

@@ -322,6 +322,7 @@ void MainWindow::buildCentre() {
         connect(a, &QAction::toggled, view_, slot);
     };
     toggle(tr("frames"), true, &SceneView::setShowFrames);
+    toggle(tr("labels"), true, &SceneView::setShowLabels);
     toggle(tr("COMs"), true, &SceneView::setShowComs);
     toggle(tr("trail"), true, &SceneView::setShowTrail);
     playback_ = new PlaybackBar(centre);
@@ -1471,6 +1472,7 @@ bool MainWindow::exportAnimationTo(const QString& path, QString* error, double d
     settings.at = playback_->time();
     settings.trail = view_->showTrail();
     settings.frames = view_->showFrames();
+    settings.frameLabels = view_->showLabels();
     if (slide.isValid()) {
         settings.composite = true;
         settings.width = slide.width(), settings.height = slide.height();

@@ -1,5 +1,7 @@
 #include "ui/scene_view.hpp"
 
+#include <QVariantAnimation>
+
 #include <algorithm>
 #include <cmath>
 
@@ -103,8 +105,31 @@ void SceneView::setVisualScene(std::shared_ptr<VisualScene> scene, bool fitCamer
         userMoved_ = false;
     } else if (visual_ && !userMoved_ && fittedRadius_ > 0 &&
                std::abs(visual_->bounds.radius() / fittedRadius_ - 1) > 0.05) {  // an edit resized the robot
+        // Refit, the distance gliding there over 0.3 s rather than jumping: the student
+        // sees the arm grow, not a cut.
+        const double from = distance_;
         distance_ = 0;
         pan_.setZero();
+        applyCamera();  // fits: distance_ is the target now
+        const double to = distance_;
+        if (from > 0 && std::abs(to / from - 1) > 1e-3) {
+            distance_ = from;
+            auto* glide = new QVariantAnimation(this);
+            glide->setDuration(300);
+            glide->setStartValue(from);
+            glide->setEndValue(to);
+            glide->setEasingCurve(QEasingCurve::InOutQuad);
+            connect(glide, &QVariantAnimation::valueChanged, this, [this, glide](const QVariant& value) {
+                if (userMoved_) {  // the user took the camera: it is theirs
+                    glide->stop();
+                    return;
+                }
+                distance_ = value.toDouble();
+                applyCamera();
+                requestFrame();
+            });
+            glide->start(QAbstractAnimation::DeleteWhenStopped);
+        }
     }
     applyCamera();
     requestFrame();
@@ -173,6 +198,12 @@ void SceneView::setGhostPose(const Eigen::VectorXd& q, double t) {
 
 void SceneView::setShowFrames(bool on) {
     options_.frames = on;
+    rebuild();
+    requestFrame();
+}
+
+void SceneView::setShowLabels(bool on) {
+    options_.frameLabels = on;
     rebuild();
     requestFrame();
 }

@@ -63,6 +63,8 @@ public:
     void setGhostPose(const Eigen::VectorXd& q, double t);
 
     void setShowFrames(bool on);
+    void setShowLabels(bool on);  // the frames' numbers
+    bool showLabels() const { return options_.frameLabels; }
     void setShowComs(bool on);
     void setShowTrail(bool on);
     bool showFrames() const { return options_.frames; }

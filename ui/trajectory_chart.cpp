@@ -6,6 +6,8 @@
 
 #include <QBuffer>
 #include <QChart>
+#include <QLegend>
+#include <QTimer>
 #include <QLegendMarker>
 #include <QLineSeries>
 #include <QMouseEvent>
@@ -200,6 +202,24 @@ void TrajectoryChart::fitAxes() {
 }
 
 void TrajectoryChart::fitTicks() {
+    // The legend beside the plot when it takes at most a fifth of the width, below it
+    // otherwise (a narrow dock, presentation mode's larger type) if the plot is tall
+    // enough to give a row up; the ticks are fitted again to the plot area that leaves.
+    {
+        const QFontMetricsF legend(chart()->legend()->font());
+        double widest = 0;
+        for (QAbstractSeries* s : chart()->series())
+            if (s != cursor_) widest = std::max(widest, legend.horizontalAdvance(s->name()));
+        const Qt::Alignment side = widest + 3 * legend.height() > 0.2 * width() && height() >= 200 ? Qt::AlignBottom : Qt::AlignRight;
+        if (chart()->legend()->alignment() != side) {
+            chart()->legend()->setAlignment(side);
+            QTimer::singleShot(0, this, [this] {
+                const double t = cursor_->count() ? cursor_->at(0).x() : 0;
+                fitTicks();
+                setCursorTime(t);
+            });
+        }
+    }
     QRectF area = chart()->plotArea();
     if (area.width() < 10 || area.height() < 10) area = QRectF(0, 0, width() * 0.8, height() * 0.7);  // not laid out yet
     const QFontMetricsF fm(axisX_->labelsFont());

@@ -625,6 +625,11 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>labels</source>
+        <translation>etiketter</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>COMs</source>
         <translation>massemidtpunkter</translation>
     </message>
@@ -1381,7 +1386,7 @@
         <translation>link&amp;nbsp;%1</translation>
     </message>
     <message>
-        <location filename="../../ui/main_window.cpp" line="-1491"/>
+        <location filename="../../ui/main_window.cpp" line="-1492"/>
         <source>LagrangeLab scenes (*.lagrange *.json);;All files (*)</source>
         <translation>LagrangeLab-scener (*.lagrange *.json);;Alle filer (*)</translation>
     </message>
@@ -1465,7 +1470,7 @@
 <context>
     <name>TrajectoryChart</name>
     <message>
-        <location filename="../../ui/trajectory_chart.cpp" line="+53"/>
+        <location filename="../../ui/trajectory_chart.cpp" line="+55"/>
         <source>t [s]</source>
         <translation>t [s]</translation>
     </message>
