@@ -16,6 +16,7 @@
 
 #include <QChart>
 #include <QLegend>
+#include <QListWidget>
 #include <QDockWidget>
 #include <QLineSeries>
 #include <QValueAxis>
@@ -37,6 +38,7 @@
 #include "ui/derivation_view.hpp"
 #include "ui/composite_frame.hpp"
 #include "ui/dh_step_panel.hpp"
+#include "ui/example_gallery.hpp"
 #include "ui/main_window.hpp"
 #include "ui/parameter_rename.hpp"
 #include "ui/playback_bar.hpp"
@@ -848,6 +850,34 @@ private slots:
             last = distance;
         }
         w.setPresentationMode(false);
+    }
+
+    // File → Examples → Gallery: every example of examples/ with its picture (320×200, with
+    // a drawing on it: scripts/lab thumbnails was run for each), and choosing one opens it.
+    void galleryShowsEveryExampleWithItsPicture() {
+        MainWindow w;
+        QVERIFY(openShown(w, "planar_2r.json"));
+        ll::ui::ExampleGallery gallery(&w);
+        const QStringList files = QDir(LL_EXAMPLES_DIR).entryList({"*.json"}, QDir::Files, QDir::Name);
+        QStringList expected;
+        for (const QString& f : files) expected << ":/examples/" + f;
+        QCOMPARE(gallery.examples(), expected);
+        for (int row = 0; row < files.size(); ++row) {
+            QVERIFY2(gallery.hasPicture(row), qPrintable(files[row] + ": no picture (run scripts/lab thumbnails)"));
+            const QImage picture(":/thumbnails/" + QFileInfo(files[row]).completeBaseName() + ".png");
+            QCOMPARE(picture.size(), QSize(320, 200));
+            QVERIFY2(content(picture, picture.rect()).first > 0.02, qPrintable(files[row]));
+        }
+        gallery.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&gallery));
+        gallery.grab().save(dir_.filePath("gallery.png"));  // LL_TEST_KEEP=1: to look at
+        QSignalSpy chosen(&gallery, &ll::ui::ExampleGallery::chosen);
+        const int panda = static_cast<int>(files.indexOf("panda.json"));
+        QVERIFY(panda >= 0);
+        gallery.list().setCurrentRow(panda);
+        emit gallery.list().itemActivated(gallery.list().item(panda));
+        QCOMPARE(chosen.size(), 1);
+        QCOMPARE(chosen.front().front().toString(), QString(":/examples/panda.json"));
     }
 
     // The plots lay their ticks out for the space they get: at the window's default size

@@ -70,6 +70,7 @@
 #include "ui/trajectory_chart.hpp"
 #include "ui/work_precision_pane.hpp"
 #include "ui/dh_step_panel.hpp"
+#include "ui/example_gallery.hpp"
 #include "ui/lab_report.hpp"
 
 // Q_INIT_RESOURCE must stand outside any namespace.
@@ -490,6 +491,15 @@ void MainWindow::buildMenus() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
     file->addAction(tr("&Open…"), QKeySequence::Open, this, &MainWindow::open);
     QMenu* examples = file->addMenu(tr("Examples"));
+    examples->addAction(tr("Gallery…"), this, [this] {
+        auto* gallery = new ExampleGallery(this);
+        gallery->setAttribute(Qt::WA_DeleteOnClose);
+        connect(gallery, &ExampleGallery::chosen, this, [this](const QString& path) {
+            if (maybeSave()) openFile(path);
+        });
+        gallery->open();
+    });
+    examples->addSeparator();
     for (const QString& name : QDir(":/examples").entryList({"*.json"}, QDir::Files, QDir::Name))
         examples->addAction(name, this, [this, name] {
             if (maybeSave()) openFile(":/examples/" + name);

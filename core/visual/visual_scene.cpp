@@ -257,9 +257,12 @@ VisualScene::VisualScene(const Scene& scene, std::optional<BodyPoses> compiledBo
     }
     bounds = currentBounds();
     forEachExtent([this](const Eigen::Vector3d& point, double radius) { keepInView.emplace_back(point.x(), point.y(), point.z(), radius); });
-    if (!scene.lagrangian && !bounds.empty()) {  // the floor the pedestal stands on
-        baseHeight_ = 1e300;
-        forEachExtent([this](const Eigen::Vector3d& point, double radius) { baseHeight_ = std::min(baseHeight_, up.dot(point) - radius); });
+    if (!scene.lagrangian && !parts.empty() && parts.front().role == PartRole::Pedestal) {  // the floor the pedestal stands on
+        const VisualPart& pedestal = parts.front();
+        const Eigen::Vector3d axis = pedestal.pose.linear().col(2);
+        // The lowest point of the disc: its lower rim's end, whichever way its axis leans.
+        const double rim = pedestal.radius * std::sqrt(std::max(0.0, 1.0 - std::pow(axis.dot(up), 2)));
+        baseHeight_ = up.dot(pedestal.pose.translation()) - std::abs(axis.dot(up)) * pedestal.length / 2 - rim;
     }
     placeGround();
     for (const VisualPart& part : parts)
@@ -427,7 +430,9 @@ void VisualScene::placeGround() {
         lowest = std::min(lowest, up.dot(p));
     }
     if (bounds.empty()) lowest = 0.0;
-    if (!std::isnan(baseHeight_)) lowest = baseHeight_;
+    // At the base, unless most of what is drawn hangs below it (the Stanford arm's link-3
+    // centre of mass 6.4 m down): a floor above the middle would be seen from underneath.
+    if (!std::isnan(baseHeight_) && !bounds.empty() && baseHeight_ <= up.dot(bounds.centre())) lowest = baseHeight_;
     lowest -= 0.01 * scale;
     const Eigen::Vector3d c = bounds.empty() ? Eigen::Vector3d::Zero() : bounds.centre();
     ground.centre = c - (up.dot(c) - lowest) * up;

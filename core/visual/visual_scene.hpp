@@ -17,8 +17,8 @@
 // A Lagrangian scene draws its own `bodies` (box, sphere, cylinder, rod), posed by
 // their expressions of q and t compiled beforehand (core/pipeline/scene_visual.hpp: no
 // GiNaC here), and the world triad.
-// The ground grid lies at a robot's base (its lowest point at the initial pose; the motion
-// may reach below), below everything for a Lagrangian scene; a drop line hangs from each
+// The ground grid lies at a robot's base (under its pedestal; the motion may reach
+// below), below everything for a Lagrangian scene; a drop line hangs from each
 // centre of mass to it.
 // Sizes scale with the robot's reach, so a 5 cm pendulum and a 2 m arm both look right.
 // Up is −gravity; with no gravity z, except a Lagrangian scene lying in the x–y plane
@@ -151,8 +151,8 @@ private:
 
     void placeGround();
     void placeDropLines();
-    // A robot's ground stays at its base (the lowest point of its initial pose) whatever
-    // the motion reaches; NaN: below everything (a Lagrangian scene's own bodies).
+    // A robot's ground stays at its base (under its pedestal) whatever the motion
+    // reaches; NaN: below everything (a Lagrangian scene's own bodies).
     double baseHeight_ = std::numeric_limits<double>::quiet_NaN();
     void labelCoincidentFrames(const Eigen::VectorXd& q0);
     // Calls add(centre, radius) for spheres that hold each part and triad at the current pose.

@@ -228,6 +228,14 @@
     </message>
 </context>
 <context>
+    <name>ExampleGallery</name>
+    <message>
+        <location filename="../../ui/example_gallery.cpp" line="+19"/>
+        <source>Example gallery</source>
+        <translation>Eksempelgalleri</translation>
+    </message>
+</context>
+<context>
     <name>FieldListModel</name>
     <message>
         <location filename="../../ui/field_list_model.cpp" line="+52"/>
@@ -420,7 +428,7 @@
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../ui/main_window.cpp" line="+173"/>
+        <location filename="../../ui/main_window.cpp" line="+174"/>
         <source>standard (Spong)</source>
         <translation>standard (Spong)</translation>
     </message>
@@ -700,12 +708,12 @@
     </message>
     <message>
         <location line="+1"/>
-        <location line="+184"/>
+        <location line="+193"/>
         <source>Teach</source>
         <translation>Teach</translation>
     </message>
     <message>
-        <location line="-183"/>
+        <location line="-192"/>
         <source>Torques</source>
         <translation>Momenter</translation>
     </message>
@@ -740,7 +748,12 @@
         <translation>Eksempler</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+1"/>
+        <source>Gallery…</source>
+        <translation>Galleri…</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>Recent files</source>
         <translation>Seneste filer</translation>
     </message>
@@ -1213,7 +1226,7 @@
         <translation>MP4 (*.mp4);;WebM (*.webm);;GIF (*.gif);;PNG-stillbillede (*.png)</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+39"/>
         <source>Rendering %1…</source>
         <translation>Renderer %1…</translation>
     </message>
@@ -1386,7 +1399,7 @@
         <translation>link&amp;nbsp;%1</translation>
     </message>
     <message>
-        <location filename="../../ui/main_window.cpp" line="-1492"/>
+        <location filename="../../ui/main_window.cpp" line="-1502"/>
         <source>LagrangeLab scenes (*.lagrange *.json);;All files (*)</source>
         <translation>LagrangeLab-scener (*.lagrange *.json);;Alle filer (*)</translation>
     </message>
