@@ -31,6 +31,7 @@
 #include "ui/dh_step_panel.hpp"
 #include "ui/scene_view.hpp"
 #include "ui/torque_pane.hpp"
+#include "ui/work_precision_pane.hpp"
 
 namespace ll::cli {
 
@@ -135,6 +136,13 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
         window.torquePane().setJoint(static_cast<int>(joint) - 1);
     }
     window.showDerivationView(QString::fromStdString(derivationView));
+    if (tab == "work-precision") {  // the picture of that tab is its plot: the sweep is run first
+        window.workPrecisionPane().run();
+        if (!waitFor([&] { return window.workPrecisionPane().hasResult(); }, 600)) {
+            std::cerr << "error: " << scene << ": the work-precision sweep did not finish in 600 s\n";
+            return 1;
+        }
+    }
     if ((tab == "torques" || tab == "properties") && !waitFor([&] { return window.analysis() != nullptr; }, 120)) {
         std::cerr << "error: " << scene << ": the run's torques and properties did not come in 120 s\n";
         return 1;

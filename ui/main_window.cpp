@@ -475,6 +475,11 @@ void MainWindow::buildDocks() {
         updatePoseResults();
     });
     connect(bottomTabs_, &QTabWidget::currentChanged, this, [this](int index) {
+        // The work–precision plots need height to be read (two log–log plots and a
+        // legend): their tab gives the dock at least 45 % of the window.
+        if (bottomTabs_->widget(index) == workPrecision_ && !presenting_)
+            if (auto* plots = findChild<QDockWidget*>("plots"); plots && plots->height() < height() * 45 / 100)
+                resizeDocks({plots}, {height() * 45 / 100}, Qt::Vertical);
         teaching_ = bottomTabs_->widget(index) == teach_;
         if (!teaching_ && index >= 0) selectionValueChanged();
         updatePoseResults();
