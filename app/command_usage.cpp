@@ -89,7 +89,7 @@ std::string overviewUsage() {
         "           [--joint J] [--derivation typeset|text|entries] picture a picked entry or link, a time,\n"
         "           the Torques or Properties tab; --present starts in presentation mode (full screen, or\n"
         "           --size with --screenshot); --dh-step I,K the DH step-through at joint I after K of its\n"
-        "           four elementary motions\n"
+        "           four elementary motions, --dh-dimensions every DH parameter drawn on the robot\n"
         "\ncommands:\n";
     for (const CommandText& c : commands) s += "  " + synopsis(c, 2) + "\n" + indented(c.summary, "      ");
     return s + "\nexit codes: 0 success, 2 bad input, 3 simulation stopped early\n";

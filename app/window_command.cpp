@@ -38,8 +38,8 @@ namespace ll::cli {
 int windowCommand(const Args& args, const std::chrono::steady_clock::time_point& processStart) {
     const Options options(args,
                           {"screenshot", "play", "step", "teach", "size", "first-frame", "select", "pick-link", "at", "tab",
-                           "joint", "derivation", "present", "dh-step"},
-                          {"first-frame", "present"});
+                           "joint", "derivation", "present", "dh-step", "dh-dimensions"},
+                          {"first-frame", "present", "dh-dimensions"});
     if (options.positional().size() > 1) throw UsageError("the window takes one SCENE, got " + std::to_string(options.positional().size()));
     const std::string scene = options.positional().empty() ? (examplesDirectory() / "double_pendulum.json").string() : options.positional()[0];
     const std::string screenshot = options.text("screenshot");
@@ -163,6 +163,11 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
                              " of a DH robot and K the motions done, 0..4");
         window.showPlotTab("dh-steps");
         window.dhStepPanel().setStep(joint - 1, done);
+    }
+    if (options.has("dh-dimensions")) {  // every DH parameter drawn on the robot
+        if (window.document().validScene().lagrangian) throw UsageError("--dh-dimensions: " + scene + " is a typed Lagrangian, not a DH robot");
+        window.showPlotTab("dh-steps");
+        window.dhStepPanel().setShowDimensions(true);
     }
     if (play > 0) {
         window.playback().setLoop(false);

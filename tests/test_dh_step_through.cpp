@@ -7,6 +7,7 @@
 #include "core/io/scene_file.hpp"
 #include "core/kinematics/dh_step_through.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
+#include "core/visual/dh_dimensions.hpp"
 #include "test_support.hpp"
 
 using namespace ll;
@@ -86,6 +87,50 @@ private slots:
         checkRobot(scene.robot, scene.initial.q);
         std::mt19937 rng(3);
         checkRobot(scene.robot, test::randomVector(rng, scene.dof(), 2.0));
+    }
+
+    // The static view: every parameter on the robot. A length is an arrow as long as its
+    // value; an angle is an arc of the given radius about the frame's origin, whose end
+    // points along x_i (θ_i) or z_i (α), in both conventions; zero parameters are left out;
+    // labels name the table's entries (modified: a0, α0 on row 1).
+    void dimensionsDrawTheTable_data() { examples_data(); }
+    void dimensionsDrawTheTable() {
+        QFETCH(QString, file);
+        const Scene scene = loadScene(std::string(LL_EXAMPLES_DIR) + "/" + file.toStdString()).scene;
+        const RobotModel& robot = scene.robot;
+        std::mt19937 rng(9);
+        const Eigen::VectorXd q = test::randomVector(rng, scene.dof(), 2.0);
+        RobotData data(robot);
+        forwardKinematics(robot, data, q);
+        const double r = 0.07;
+        const std::vector<DhDimension> dims = dhDimensions(robot, data, q, r);
+        int expected = 0;
+        for (int j = 0; j < robot.dof(); ++j)
+            for (const ElementaryMotion& m : elementaryMotions(robot, j, q[j])) expected += std::abs(m.amount) > 1e-9;
+        QCOMPARE(int(dims.size()), expected);
+        const bool standard = robot.convention == DhConvention::Standard;
+        for (const DhDimension& d : dims) {
+            const Eigen::Isometry3d& next = data.T_0i[d.joint + 1];
+            if (!d.angle) {
+                QCOMPARE(int(d.points.size()), 2);
+                QVERIFY(std::abs((d.points[1] - d.points[0]).norm() - std::abs(d.value)) < 1e-12);
+                if (d.parameter == DhParameter::A && standard) QVERIFY((d.points[1] - next.translation()).norm() < 1e-12);
+                if (d.parameter == DhParameter::D && !standard) QVERIFY((d.points[1] - next.translation()).norm() < 1e-12);
+            } else {
+                // The arc ends r along the turned axis (x_i for θ, z_i for α) from its centre;
+                // every point is r from that centre; the chord is 2 r |sin(value / 2)|.
+                const Eigen::Vector3d turned = d.parameter == DhParameter::Theta ? next.linear().col(0) : next.linear().col(2);
+                const Eigen::Vector3d centre = d.points.back() - r * turned;
+                for (const Eigen::Vector3d& p : d.points) QVERIFY(std::abs((p - centre).norm() - r) < 1e-12);
+                QVERIFY(std::abs((d.points.back() - d.points.front()).norm() - 2 * r * std::abs(std::sin(d.value / 2))) < 1e-12);
+                // About the right origin: standard θ_i at o_{i−1}, α_i at o_i; modified α_{i−1} at o_{i−1}.
+                if (standard && d.parameter == DhParameter::Theta) QVERIFY((centre - data.T_0i[d.joint].translation()).norm() < 1e-12);
+                if (standard && d.parameter == DhParameter::Alpha) QVERIFY((centre - next.translation()).norm() < 1e-12);
+                if (!standard && d.parameter == DhParameter::Alpha) QVERIFY((centre - data.T_0i[d.joint].translation()).norm() < 1e-12);
+            }
+            const std::string index = std::to_string(d.joint + (standard || d.parameter == DhParameter::D || d.parameter == DhParameter::Theta ? 1 : 0));
+            QVERIFY2(d.label.find(index + " = ") != std::string::npos, d.label.c_str());
+        }
     }
 
     // The motions name the table's columns in the convention's order.

@@ -1504,9 +1504,15 @@ private slots:
         while (!(panel.joint() == scene.dof() - 1 && panel.done() == 4) && presses < 100) panel.next(), ++presses;
         QCOMPARE(presses, 4 * scene.dof());
         QVERIFY(panel.productText().contains("A<sub>6</sub>"));
+        // The static view: every parameter drawn, only while the tab is shown.
+        panel.setShowDimensions(true);
+        QVERIFY(view.showDimensions());
         QVERIFY(w.showPlotTab("energy"));
+        QVERIFY(!view.showDimensions());
         Eigen::Isometry3d frame;
         QVERIFY(!view.dhStepFrame(frame));
+        QVERIFY(w.showPlotTab("dh-steps"));
+        QVERIFY(view.showDimensions());
     }
 };
 

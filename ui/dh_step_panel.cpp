@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 
+#include <QCheckBox>
 #include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -33,6 +35,9 @@ DhStepPanel::DhStepPanel(QWidget* parent) : QWidget(parent) {
     controls->addWidget(previous_);
     controls->addWidget(next_);
     controls->addWidget(animate_);
+    dimensions_ = new QCheckBox(tr("Every parameter on the robot"), this);
+    dimensions_->setToolTip(tr("Each row's θ, d, a and α drawn as arcs and arrows with their values, at the pose shown"));
+    controls->addWidget(dimensions_);
     controls->addStretch(1);
     layout->addLayout(controls);
     product_ = new QLabel(this);
@@ -50,6 +55,7 @@ DhStepPanel::DhStepPanel(QWidget* parent) : QWidget(parent) {
     connect(previous_, &QPushButton::clicked, this, &DhStepPanel::previous);
     connect(next_, &QPushButton::clicked, this, &DhStepPanel::next);
     connect(animate_, &QPushButton::clicked, this, &DhStepPanel::animate);
+    connect(dimensions_, &QCheckBox::toggled, this, &DhStepPanel::dimensionsToggled);
     timer_.setInterval(kTickMs);
     connect(&timer_, &QTimer::timeout, this, [this] {
         fraction_ += double(kTickMs) / kAnimationMs;
@@ -110,10 +116,12 @@ void DhStepPanel::animate() {
 }
 
 QString DhStepPanel::productText() const { return product_->text(); }
+bool DhStepPanel::showsDimensions() const { return dimensions_->isChecked(); }
+void DhStepPanel::setShowDimensions(bool on) { dimensions_->setChecked(on); }
 
 void DhStepPanel::refresh() {
     const bool on = isRobot_;
-    for (QWidget* w : std::initializer_list<QWidget*>{jointBox_, previous_, next_, animate_}) w->setEnabled(on);
+    for (QWidget* w : std::initializer_list<QWidget*>{jointBox_, previous_, next_, animate_, dimensions_}) w->setEnabled(on);
     if (!on) {
         product_->setText(tr("A typed Lagrangian has no DH table: the step-through shows a robot's rows."));
         matrix_->clear();

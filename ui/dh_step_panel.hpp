@@ -12,6 +12,7 @@
 #include "core/model/robot_model.hpp"
 #include "core/kinematics/dh_step_through.hpp"
 
+class QCheckBox;
 class QLabel;
 class QPushButton;
 class QSpinBox;
@@ -34,6 +35,9 @@ public:
     double fraction() const { return fraction_; }
     // The panel's text as shown (tests): the product with the current motion marked.
     QString productText() const;
+    // Whether every parameter is drawn on the robot (the static view) and to set it.
+    bool showsDimensions() const;
+    void setShowDimensions(bool on);
 
 public slots:
     void next();      // the next motion, to the next row after the 4th
@@ -45,6 +49,7 @@ signals:
     void stepChanged(int joint, int done, double fraction);
     // The DH table's parameter being carried out (its column), −1 for none.
     void parameterChanged(int joint, ll::DhParameter parameter);
+    void dimensionsToggled(bool on);
 
 private:
     void refresh();
@@ -58,6 +63,7 @@ private:
     QLabel* product_;
     QLabel* matrix_;
     QPushButton *previous_, *next_, *animate_;
+    QCheckBox* dimensions_;
 };
 
 }  // namespace ll::ui

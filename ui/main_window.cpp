@@ -443,8 +443,12 @@ void MainWindow::buildDocks() {
                                                              : JointTableModel::Theta;
         dhView_->setCurrentIndex(dhView_->model()->index(joint, column));
     });
+    connect(dhSteps_, &DhStepPanel::dimensionsToggled, this, [this](bool on) {
+        view_->setShowDimensions(on && bottomTabs_->currentWidget() == dhSteps_);
+    });
     connect(bottomTabs_, &QTabWidget::currentChanged, this, [this] {
         const bool shown = bottomTabs_->currentWidget() == dhSteps_;
+        view_->setShowDimensions(shown && dhSteps_->showsDimensions());
         if (shown) {
             dhSteps_->setPose(view_->shownPose());
             dhSteps_->setStep(dhSteps_->joint(), dhSteps_->done());  // marks the table, draws the frame

@@ -8,6 +8,8 @@
 #include <osg/BlendFunc>
 #include <osg/Depth>
 #include <osg/Geode>
+#include <osg/Light>
+#include <osg/LightSource>
 #include <osg/LineWidth>
 #include <osg/Material>
 #include <osg/Point>
@@ -168,6 +170,22 @@ osg::Matrixd partMatrix(const VisualPart& part, bool stretch) {
 OsgScene::OsgScene(const VisualScene& scene, const OsgSceneOptions& options) : options_(options), root_(new osg::Group) {
     // Stretched parts scale their normals: renormalize.
     root_->getOrCreateStateSet()->setMode(GL_NORMALIZE, osg::StateAttribute::ON);
+    // A sky light beside the viewer's headlight: from straight above (the scene's up), so
+    // faces turned up stay lit from any camera and the tops of links read as tops.
+    {
+        osg::ref_ptr<osg::Light> sky = new osg::Light(1);
+        const Eigen::Vector3d up = scene.up.normalized();
+        sky->setPosition(osg::Vec4(float(up.x()), float(up.y()), float(up.z()), 0.0f));  // directional
+        sky->setAmbient(osg::Vec4(0, 0, 0, 1));
+        sky->setDiffuse(osg::Vec4(0.45f, 0.45f, 0.45f, 1));
+        sky->setSpecular(osg::Vec4(0, 0, 0, 1));
+        osg::ref_ptr<osg::LightSource> source = new osg::LightSource;
+        source->setLight(sky);
+        source->setReferenceFrame(osg::LightSource::ABSOLUTE_RF);
+        source->setLocalStateSetModes(osg::StateAttribute::ON);
+        source->setStateSetModes(*root_->getOrCreateStateSet(), osg::StateAttribute::ON);
+        root_->addChild(source);
+    }
     if (!scene.frames.empty() && scene.frames.back().axisLength > 0) frameLength_ = scene.frames.back().axisLength;
     for (const VisualPart& part : scene.parts) {
         osg::ref_ptr<osg::MatrixTransform> transform = new osg::MatrixTransform;
@@ -311,6 +329,55 @@ void OsgScene::setMovingFrame(const Eigen::Isometry3d* pose) {
     }
     moving_->setNodeMask(~0u);
     moving_->setMatrix(toOsgMatrix(pose->matrix()));
+}
+
+void OsgScene::setDimensions(const std::vector<DhDimension>* dimensions) {
+    if (dimensions_) root_->removeChild(dimensions_);
+    dimensions_ = nullptr;
+    if (!dimensions || dimensions->empty()) return;
+    dimensions_ = new osg::Group;
+    osg::StateSet* state = dimensions_->getOrCreateStateSet();
+    state->setMode(GL_LIGHTING, osg::StateAttribute::OFF | osg::StateAttribute::PROTECTED);
+    state->setMode(GL_DEPTH_TEST, osg::StateAttribute::OFF);
+    state->setRenderBinDetails(16, "RenderBin");
+    state->setAttributeAndModes(new osg::LineWidth(2.5f));
+    state->setAttributeAndModes(new osg::Point(6.0f));
+    osg::ref_ptr<osgText::Font> font = labelFont();
+    for (const DhDimension& d : *dimensions) {
+        // θ orange, d blue, a green, α purple: the same in every row.
+        const osg::Vec4 colour = d.parameter == DhParameter::Theta ? osg::Vec4(0.85f, 0.45f, 0.0f, 1)
+                                 : d.parameter == DhParameter::D   ? osg::Vec4(0.0f, 0.45f, 0.75f, 1)
+                                 : d.parameter == DhParameter::A   ? osg::Vec4(0.0f, 0.55f, 0.3f, 1)
+                                                                   : osg::Vec4(0.6f, 0.2f, 0.65f, 1);
+        osg::ref_ptr<osg::Geometry> line = new osg::Geometry;
+        osg::ref_ptr<osg::Vec3Array> vertices = new osg::Vec3Array;
+        for (const Eigen::Vector3d& p : d.points) vertices->push_back(toOsg(p));
+        line->setVertexArray(vertices);
+        osg::ref_ptr<osg::Vec4Array> colours = new osg::Vec4Array(1);
+        (*colours)[0] = colour;
+        line->setColorArray(colours, osg::Array::BIND_OVERALL);
+        line->addPrimitiveSet(new osg::DrawArrays(GL_LINE_STRIP, 0, static_cast<GLsizei>(vertices->size())));
+        osg::ref_ptr<osg::DrawElementsUShort> ends = new osg::DrawElementsUShort(GL_POINTS);
+        ends->push_back(0);
+        ends->push_back(static_cast<unsigned short>(vertices->size() - 1));
+        line->addPrimitiveSet(ends);
+        osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+        geode->addDrawable(line);
+        osg::ref_ptr<osgText::Text> text = new osgText::Text;
+        text->setFont(font.get());
+        text->setText(d.label, osgText::String::ENCODING_UTF8);
+        text->setCharacterSizeMode(osgText::Text::SCREEN_COORDS);
+        text->setCharacterSize(float(0.8 * options_.labelPixels));
+        text->setAxisAlignment(osgText::Text::SCREEN);
+        text->setAlignment(osgText::Text::LEFT_CENTER);
+        text->setPosition(toOsg(d.labelAt));
+        text->setColor(colour);
+        text->setBackdropType(osgText::Text::OUTLINE);
+        text->setBackdropColor(osg::Vec4(1, 1, 1, 0.9f));
+        geode->addDrawable(text);
+        dimensions_->addChild(geode);
+    }
+    root_->addChild(dimensions_);
 }
 
 void OsgScene::setFrameVisible(int k, bool on) {

@@ -53,6 +53,9 @@ public:
     // The DH step-through's moving frame: a triad 1.8× the frames' size drawn over the
     // solids at `pose`; null hides it.
     void setMovingFrame(const Eigen::Isometry3d* pose);
+    // The DH table drawn on the robot (core/visual/dh_dimensions.hpp): arrows and arcs
+    // with their labels, over the solids, a colour per kind of parameter; null removes them.
+    void setDimensions(const std::vector<DhDimension>* dimensions);
     // Shows or hides the drop lines (with the centres of mass they hang from).
     void setDropLinesVisible(bool on);
     // Shows or hides DH frame k's triad and label (the step-through keeps frames i−1 and i).
@@ -74,6 +77,7 @@ private:
     osg::ref_ptr<osg::Geometry> trail_;
     osg::ref_ptr<osg::MatrixTransform> moving_;
     osg::ref_ptr<osg::Geometry> drops_;
+    osg::ref_ptr<osg::Group> dimensions_;
     osg::ref_ptr<osg::Geode> dropGeode_;
     double frameLength_ = 0.1;
 };

@@ -320,6 +320,12 @@ void SceneView::setDhStep(int joint, int done, double fraction) {
     requestFrame();
 }
 
+void SceneView::setShowDimensions(bool on) {
+    dimensionsShown_ = on;
+    updateMovingFrame();
+    requestFrame();
+}
+
 bool SceneView::dhStepFrame(Eigen::Isometry3d& frame) const {
     return visual_ && stepJoint_ >= 0 && visual_->steppedFrame(stepJoint_, stepDone_, stepFraction_, frame);
 }
@@ -329,6 +335,13 @@ void SceneView::updateMovingFrame() {
     Eigen::Isometry3d frame;
     const bool stepping = dhStepFrame(frame);
     osg_->setMovingFrame(stepping ? &frame : nullptr);
+    if (dimensionsShown_ && visual_) {
+        // Rebuilt at each pose while shown (a teaching view, not the playback's hot path).
+        const std::vector<DhDimension> dimensions = visual_->dhDimensions();
+        osg_->setDimensions(&dimensions);
+    } else {
+        osg_->setDimensions(nullptr);
+    }
     // Stepping through row i: only frames i−1 and i beside the moving one.
     if (visual_)
         for (int k = 0; k < static_cast<int>(visual_->frames.size()); ++k)

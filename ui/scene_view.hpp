@@ -76,6 +76,10 @@ public:
     // joint+1 after `done` motions and `fraction` of the next, drawn at every pose;
     // joint −1 hides it.
     void setDhStep(int joint, int done, double fraction);
+    // The step-through's static view: every DH parameter drawn on the robot as an arrow or
+    // an arc with its value, kept up with the pose.
+    void setShowDimensions(bool on);
+    bool showDimensions() const { return dimensionsShown_; }
     // The moving frame as drawn now (false when none is).
     bool dhStepFrame(Eigen::Isometry3d& frame) const;
     // The pose shown (q of the last setPose).
@@ -145,6 +149,7 @@ private:
     CameraView camera_;
     bool framePose_ = false;
     int stepJoint_ = -1, stepDone_ = 0;
+    bool dimensionsShown_ = false;
     double stepFraction_ = 0;
     Eigen::VectorXd shownQ_;
     void updateMovingFrame();

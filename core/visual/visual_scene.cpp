@@ -402,6 +402,12 @@ bool VisualScene::steppedFrame(int joint, int done, double fraction, Eigen::Isom
     return true;
 }
 
+std::vector<DhDimension> VisualScene::dhDimensions(double arcShare) const {
+    const Rig& rig = *rig_;
+    if (rig.bodies || !rig.data || rig.q.size() != rig.n) return {};
+    return ll::dhDimensions(rig.robot, *rig.data, rig.q, arcShare * scale);
+}
+
 Eigen::Vector3d VisualScene::endEffectorPosition() const {
     return endEffector >= 0 ? Eigen::Vector3d(parts[endEffector].pose.translation()) : Eigen::Vector3d::Zero();
 }

@@ -32,6 +32,7 @@
 #include <Eigen/Geometry>
 
 #include "core/kinematics/body_poses.hpp"
+#include "core/visual/dh_dimensions.hpp"
 #include "core/model/scene.hpp"
 #include "core/simulation/trajectory.hpp"
 #include "core/visual/link_colors.hpp"
@@ -142,6 +143,10 @@ public:
     // of row joint+1's four motions and `fraction` of the next. False for a Lagrangian
     // scene or a joint out of range.
     bool steppedFrame(int joint, int done, double fraction, Eigen::Isometry3d& frame) const;
+    // Every DH parameter as a dimension on the robot at the current pose
+    // (core/visual/dh_dimensions.hpp), arcs `arcShare` of the reach; empty for a
+    // Lagrangian scene.
+    std::vector<DhDimension> dhDimensions(double arcShare = 0.06) const;
     // Position of the end effector part at the current pose (zero if there is none).
     Eigen::Vector3d endEffectorPosition() const;
 

@@ -87,7 +87,7 @@
 <context>
     <name>DhStepPanel</name>
     <message>
-        <location filename="../../ui/dh_step_panel.cpp" line="+24"/>
+        <location filename="../../ui/dh_step_panel.cpp" line="+26"/>
         <source>Joint i</source>
         <translation>Led i</translation>
     </message>
@@ -107,7 +107,17 @@
         <translation>Animér den næste bevægelse</translation>
     </message>
     <message>
-        <location line="+86"/>
+        <location line="+4"/>
+        <source>Every parameter on the robot</source>
+        <translation>Alle parametre på robotten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Each row&apos;s θ, d, a and α drawn as arcs and arrows with their values, at the pose shown</source>
+        <translation>Hver rækkes θ, d, a og α tegnet som buer og pile med deres værdier, i den viste stilling</translation>
+    </message>
+    <message>
+        <location line="+87"/>
         <source>A typed Lagrangian has no DH table: the step-through shows a robot&apos;s rows.</source>
         <translation>En indtastet Lagrange-funktion har ingen DH-tabel: gennemgangen viser en robots rækker.</translation>
     </message>
@@ -708,12 +718,12 @@
     </message>
     <message>
         <location line="+1"/>
-        <location line="+193"/>
+        <location line="+202"/>
         <source>Teach</source>
         <translation>Teach</translation>
     </message>
     <message>
-        <location line="-192"/>
+        <location line="-201"/>
         <source>Torques</source>
         <translation>Momenter</translation>
     </message>
@@ -733,7 +743,7 @@
         <translation>DH-gennemgang</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+66"/>
         <source>&amp;File</source>
         <translation>&amp;Filer</translation>
     </message>
@@ -1399,7 +1409,7 @@
         <translation>link&amp;nbsp;%1</translation>
     </message>
     <message>
-        <location filename="../../ui/main_window.cpp" line="-1502"/>
+        <location filename="../../ui/main_window.cpp" line="-1511"/>
         <source>LagrangeLab scenes (*.lagrange *.json);;All files (*)</source>
         <translation>LagrangeLab-scener (*.lagrange *.json);;Alle filer (*)</translation>
     </message>
