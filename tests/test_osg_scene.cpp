@@ -124,14 +124,19 @@ private slots:
     void frameLabelsDoNotOverlap_data() {
         QTest::addColumn<QString>("file");
         QTest::addColumn<QSize>("size");
+        QTest::addColumn<double>("d4");  // the PUMA's d4 made small: frames 3 and 4 nearly meet, their labels must move apart
         for (const char* f : {"/panda.json", "/puma560.json"})
             for (QSize s : {QSize(1280, 720), QSize(1920, 1080), QSize(640, 480)})
-                QTest::newRow(qPrintable(QString("%1 %2x%3").arg(f + 1).arg(s.width()).arg(s.height()))) << QString(f) << s;
+                QTest::newRow(qPrintable(QString("%1 %2x%3").arg(f + 1).arg(s.width()).arg(s.height()))) << QString(f) << s << -1.0;
+        QTest::newRow("puma560 d4 = 0.02 m, 1280x720") << QString("/puma560.json") << QSize(1280, 720) << 0.02;
+        QTest::newRow("puma560 d4 = 0.02 m, 640x480") << QString("/puma560.json") << QSize(640, 480) << 0.02;
     }
     void frameLabelsDoNotOverlap() {
         QFETCH(QString, file);
         QFETCH(QSize, size);
-        const Scene scene = loadScene(std::string(LL_EXAMPLES_DIR) + file.toStdString()).scene;
+        QFETCH(double, d4);
+        Scene scene = loadScene(std::string(LL_EXAMPLES_DIR) + file.toStdString()).scene;
+        if (d4 > 0) scene.robot.joints[3].dh.d = d4;
         VisualScene visual = visualScene(scene);
         ui::OsgSceneOptions options;
         options.labelPixels = std::max(10.0, size.height() / 40.0);  // as render sets them
@@ -141,10 +146,19 @@ private slots:
         gl.setScene(graph.root());
         const CameraView view = cameraView(visual, CameraSpec{}, gl.aspect());
         ui::applyCameraView(*gl.camera(), view, gl.aspect());
+        std::vector<LabelBox> boxes = frameLabelBoxes(visual, view, size.width(), size.height(), options.labelPixels);
+        bool overlapped = false;  // before they are moved apart
+        for (std::size_t a = 0; a < boxes.size(); ++a)
+            for (std::size_t b = a + 1; b < boxes.size(); ++b) overlapped = overlapped || boxes[a].overlaps(boxes[b]);
+        QCOMPARE(overlapped, d4 > 0);  // the examples' labels sit apart as placed; the squeezed PUMA's do not
+        separateLabels(boxes, size.width(), size.height());
+        graph.placeLabels(visual, view, size.width(), size.height());
         QImage image;
         gl.render(image);
-        const std::vector<LabelBox> boxes = frameLabelBoxes(visual, view, size.width(), size.height(), options.labelPixels);
         QVERIFY(boxes.size() >= 4);
+        int moved = 0;
+        for (const LabelBox& b : boxes) moved += b.moved();
+        QCOMPARE(moved > 0, d4 > 0);
         for (std::size_t a = 0; a < boxes.size(); ++a) {
             for (std::size_t b = a + 1; b < boxes.size(); ++b)
                 QVERIFY2(!boxes[a].overlaps(boxes[b]), qPrintable(QString("\"%1\" and \"%2\"").arg(QString::fromStdString(boxes[a].text),

@@ -179,7 +179,8 @@ ExportTimings exportAnimation(const Scene& scene, const Trajectory& trajectory, 
     timings.renderer = gl.rendererName();
     timings.antialiasing = gl.antialiasing();
     gl.setScene(graph.root());
-    applyCameraView(*gl.camera(), cameraView(visual, s.camera, gl.aspect()), gl.aspect());
+    const CameraView camera = cameraView(visual, s.camera, gl.aspect());
+    applyCameraView(*gl.camera(), camera, gl.aspect());
 
     const TrajectorySampler sampler(trajectory);
     const std::vector<double> times =
@@ -221,6 +222,7 @@ ExportTimings exportAnimation(const Scene& scene, const Trajectory& trajectory, 
         sampler.sample(t, q, qd);
         visual.pose(q, t);
         graph.update(visual);
+        graph.placeLabels(visual, camera, viewSize.width(), viewSize.height());
         if (!path.empty()) {
             trail.clear();
             const auto first = std::lower_bound(pathTimes.begin(), pathTimes.end(), t - s.trailSeconds);

@@ -220,14 +220,41 @@ OsgScene::OsgScene(const VisualScene& scene, const OsgSceneOptions& options) : o
             osg::ref_ptr<osg::MatrixTransform> transform = new osg::MatrixTransform;
             transform->setDataVariance(osg::Object::DYNAMIC);
             transform->addChild(triad(frame.axisLength));
+            osg::ref_ptr<osgText::Text> drawn;
+            osg::ref_ptr<osg::Geometry> leader;
+            osg::ref_ptr<osg::Geode> leaderGeode;
             if (font && !frame.label.empty()) {  // frames sharing an origin share one label
                 osg::ref_ptr<osg::Geode> text = new osg::Geode;
-                text->addDrawable(label(frame.label, frame.axisLength, options_.labelPixels, font.get()));
+                drawn = label(frame.label, frame.axisLength, options_.labelPixels, font.get());
+                drawn->setDataVariance(osg::Object::DYNAMIC);
+                text->addDrawable(drawn);
                 // Labels stay readable in front of the solids.
                 text->getOrCreateStateSet()->setMode(GL_DEPTH_TEST, osg::StateAttribute::OFF);
                 text->getOrCreateStateSet()->setRenderBinDetails(20, "RenderBin");
                 transform->addChild(text);
+                // The leader line of a label moved off its frame (hidden until then).
+                leader = new osg::Geometry;
+                leader->setDataVariance(osg::Object::DYNAMIC);
+                leader->setUseDisplayList(false);
+                leader->setUseVertexBufferObjects(true);
+                leader->setVertexArray(new osg::Vec3Array(2));
+                osg::ref_ptr<osg::Vec4Array> colour = new osg::Vec4Array(1);
+                (*colour)[0] = osg::Vec4(0.15f, 0.15f, 0.2f, 0.8f);
+                leader->setColorArray(colour, osg::Array::BIND_OVERALL);
+                leader->addPrimitiveSet(new osg::DrawArrays(GL_LINES, 0, 2));
+                leaderGeode = new osg::Geode;
+                leaderGeode->addDrawable(leader);
+                osg::StateSet* state = leaderGeode->getOrCreateStateSet();
+                state->setMode(GL_LIGHTING, osg::StateAttribute::OFF | osg::StateAttribute::PROTECTED);
+                state->setMode(GL_DEPTH_TEST, osg::StateAttribute::OFF);
+                state->setRenderBinDetails(19, "RenderBin");
+                state->setAttributeAndModes(new osg::LineWidth(1.2f));
+                leaderGeode->setNodeMask(0u);
+                transform->addChild(leaderGeode);
             }
+            labels_.push_back(drawn);
+            leaders_.push_back(leader);
+            leaderGeodes_.push_back(leaderGeode);
             frames_.push_back(transform);
             root_->addChild(transform);
         }
@@ -378,6 +405,36 @@ void OsgScene::setDimensions(const std::vector<DhDimension>* dimensions) {
         dimensions_->addChild(geode);
     }
     root_->addChild(dimensions_);
+}
+
+void OsgScene::placeLabels(const VisualScene& scene, const CameraView& view, int width, int height) {
+    if (labels_.empty() || width <= 0 || height <= 0) return;
+    std::vector<LabelBox> boxes = frameLabelBoxes(scene, view, width, height, options_.labelPixels);
+    separateLabels(boxes, width, height);
+    const Eigen::Vector3d forward = (view.centre - view.eye).normalized();
+    const Eigen::Vector3d right = forward.cross(view.up).normalized(), up = right.cross(forward);
+    const double tanY = std::tan(view.fovy * osg::PI / 360.0);
+    for (const LabelBox& box : boxes) {
+        const std::size_t k = static_cast<std::size_t>(box.frame);
+        if (k >= labels_.size() || !labels_[k]) continue;
+        const VisualFrame& frame = scene.frames[k];
+        const Eigen::Vector3d local = Eigen::Vector3d::Constant(-kLabelBack * frame.axisLength);
+        const Eigen::Vector3d anchor = frame.pose * local;
+        // Pixels to metres at the anchor's depth.
+        const double perPixel = 2 * std::max((anchor - view.eye).dot(forward), 1e-9) * tanY / height;
+        const Eigen::Vector3d moved = anchor + perPixel * ((box.right - box.anchorX) * right - (box.top - box.anchorY) * up);
+        const Eigen::Vector3d at = frame.pose.inverse() * moved;
+        labels_[k]->setPosition(toOsg(at));
+        const bool shifted = box.moved();
+        leaderGeodes_[k]->setNodeMask(shifted ? ~0u : 0u);
+        if (shifted) {
+            auto& v = static_cast<osg::Vec3Array&>(*leaders_[k]->getVertexArray());
+            v[0] = toOsg(local);
+            v[1] = toOsg(at);
+            v.dirty();
+            leaders_[k]->dirtyBound();
+        }
+    }
 }
 
 void OsgScene::setFrameVisible(int k, bool on) {

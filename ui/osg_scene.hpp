@@ -14,6 +14,7 @@
 #include <osg/Group>
 #include <osg/MatrixTransform>
 #include <osg/Switch>
+#include <osgText/Text>
 
 #include "core/visual/camera_view.hpp"
 #include "core/visual/visual_emphasis.hpp"
@@ -58,6 +59,11 @@ public:
     void setDimensions(const std::vector<DhDimension>* dimensions);
     // Shows or hides the drop lines (with the centres of mass they hang from).
     void setDropLinesVisible(bool on);
+    // Places the frame labels for a picture of width × height seen through `view`
+    // (core/visual/frame_labels.hpp): each at its frame, or, where it would overlap an
+    // earlier one, moved to the nearest free place with a leader line back to its frame.
+    // Called before every frame is drawn (the camera or the pose may have changed).
+    void placeLabels(const VisualScene& scene, const CameraView& view, int width, int height);
     // Shows or hides DH frame k's triad and label (the step-through keeps frames i−1 and i).
     void setFrameVisible(int k, bool on);
     // A picked entry's links in their colour by share, the others faded, the axes of the
@@ -78,6 +84,9 @@ private:
     osg::ref_ptr<osg::MatrixTransform> moving_;
     osg::ref_ptr<osg::Geometry> drops_;
     osg::ref_ptr<osg::Group> dimensions_;
+    std::vector<osg::ref_ptr<osgText::Text>> labels_;     // per frame (null: no label)
+    std::vector<osg::ref_ptr<osg::Geometry>> leaders_;    // per frame: anchor → moved label
+    std::vector<osg::ref_ptr<osg::Geode>> leaderGeodes_;
     osg::ref_ptr<osg::Geode> dropGeode_;
     double frameLength_ = 0.1;
 };

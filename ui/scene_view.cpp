@@ -391,6 +391,10 @@ std::size_t SceneView::graphObjects() const {
 
 void SceneView::paintGL() {
     window_->setDefaultFboId(gl_->defaultFramebufferObject());
+    if (osg_ && visual_) {  // labels apart for this camera and pose
+        const double r = devicePixelRatioF();
+        osg_->placeLabels(*visual_, camera_, static_cast<int>(width() * r), static_cast<int>(height() * r));
+    }
     viewer_->frame();
     ++frames_;
     emit frameDrawn();

@@ -21,9 +21,34 @@ std::vector<LabelBox> frameLabelBoxes(const VisualScene& scene, const CameraView
         const double y = (1 - v.dot(up) / (depth * tanY)) / 2 * height;
         double textWidth = 0;
         for (char c : frame.label) textWidth += (c == ',' ? 0.38 : 0.70) * pixels;
-        boxes.push_back({k, frame.label, x - textWidth, y, x, y + pixels});
+        boxes.push_back({k, frame.label, x - textWidth, y, x, y + pixels, x, y});
     }
     return boxes;
+}
+
+void separateLabels(std::vector<LabelBox>& boxes, int width, int height) {
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+        const auto free = [&](const LabelBox& b) {
+            for (std::size_t j = 0; j < i; ++j)
+                if (b.overlaps(boxes[j])) return false;
+            return true;
+        };
+        if (free(boxes[i])) continue;
+        const LabelBox start = boxes[i];
+        const double w = start.right - start.left, h = start.bottom - start.top, step = 0.6 * h;
+        bool placed = false;
+        // Rings of 16 directions around the anchor, farther each time.
+        for (int ring = 1; ring <= 12 && !placed; ++ring)
+            for (int k = 0; k < 16 && !placed; ++k) {
+                const double phi = 3.14159265358979323846 * (0.5 + k / 8.0);  // below first, then round
+                LabelBox b = start;
+                const double dx = ring * step * 1.6 * std::cos(phi), dy = ring * step * std::sin(phi);
+                b.left += dx, b.right += dx, b.top += dy, b.bottom += dy;
+                const bool inside = b.left >= 0 && b.top >= 0 && b.right <= width && b.bottom <= height;
+                if (inside && free(b)) boxes[i] = b, placed = true;
+            }
+        (void)w;
+    }
 }
 
 }  // namespace ll

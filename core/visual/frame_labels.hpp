@@ -3,6 +3,7 @@
 // each is drawn at a point behind its frame's origin (kLabelBack of the triad's length
 // along −x, −y and −z of the frame) with its top-right corner there, at a fixed height in
 // pixels. What a test checks for overlaps and the renderers place by (ui/osg_scene).
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,8 @@ struct LabelBox {
     int frame = -1;
     std::string text;
     double left = 0, top = 0, right = 0, bottom = 0;  // [px], y down, in a width × height picture
+    double anchorX = 0, anchorY = 0;                  // [px] where the label belongs (its box's top-right before moving)
+    bool moved() const { return std::abs(right - anchorX) > 0.5 || std::abs(top - anchorY) > 0.5; }
     bool overlaps(const LabelBox& other) const {
         return left < other.right && other.left < right && top < other.bottom && other.top < bottom;
     }
@@ -26,5 +29,11 @@ struct LabelBox {
 // picture of width × height pixels, labels `pixels` high (bold sans: a digit 0.70 of the
 // height wide, a comma 0.38). Labels behind the eye are left out.
 std::vector<LabelBox> frameLabelBoxes(const VisualScene& scene, const CameraView& view, int width, int height, double pixels);
+
+// Moves labels that would overlap an earlier one (in frame order) to the nearest free
+// place, trying rings of positions around its anchor a label height apart; a moved label
+// is drawn with a leader line from its anchor (ui/osg_scene). Boxes stay inside the
+// width × height picture where they can.
+void separateLabels(std::vector<LabelBox>& boxes, int width, int height);
 
 }  // namespace ll
