@@ -117,6 +117,7 @@ private slots:
         visual.pose(tr.q.back(), tr.t.back());
         ui::OsgSceneOptions options;
         options.frameLabels = false;  // glyphs are drawn with their own smoothing
+        options.dropLines = false;    // 1.5 px lines and dots: no edge of a solid to smooth, MSAA draws them wider
         ui::OsgScene graph(visual, options);
         QImage frames[3];
         const int modes[3] = {0, ui::kEdgeSmoothing, 4};
