@@ -29,6 +29,7 @@
 #include <QPushButton>
 
 #include "core/io/scene_file.hpp"
+#include "core/kinematics/dh_step_through.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
 #include "core/pipeline/scene_derivation.hpp"
 #include "ui/derivation_pages.hpp"
@@ -1499,6 +1500,21 @@ private slots:
                 if (done < 4) QCOMPARE(table->currentIndex().column(), columns[done]);
             }
         }
+        // Animate carries the next motion out over a second: the frame passes through the
+        // motion's middle (rot_z by part of θ2: not yet at its end), then the motion is done.
+        panel.setStep(1, 0);
+        panel.animate();
+        QTRY_VERIFY_WITH_TIMEOUT(panel.fraction() > 0.2 && panel.fraction() < 0.8, 3000);
+        QVERIFY(panel.done() == 0);
+        {
+            Eigen::Isometry3d midway;
+            QVERIFY(view.dhStepFrame(midway));
+            const Eigen::Isometry3d before = data.T_0i[1];
+            const Eigen::Isometry3d after = ll::steppedFrame(scene.robot, data, view.shownPose(), 1, 1);
+            QVERIFY((midway.matrix() - before.matrix()).norm() > 1e-6 && (midway.matrix() - after.matrix()).norm() > 1e-6);
+        }
+        QTRY_COMPARE_WITH_TIMEOUT(panel.done(), 1, 3000);
+        QCOMPARE(panel.fraction(), 0.0);
         panel.setStep(0, 0);
         int presses = 0;
         while (!(panel.joint() == scene.dof() - 1 && panel.done() == 4) && presses < 100) panel.next(), ++presses;
