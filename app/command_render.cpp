@@ -141,8 +141,7 @@ std::shared_ptr<const present::DisplayStep> keyEquationStep(const Scene& scene, 
     request.presentation = presentation();
     const DerivedDocument derived = inSceneFile(path, [&] { return deriveDisplay(scene, request); });
     const auto document = present::localizedDocument(*derived.display, presentation());
-    for (const present::DisplayStep& step : document->steps)
-        if (step.number == static_cast<int>(number)) return std::make_shared<const present::DisplayStep>(step);
+    if (const present::DisplayStep* step = document->step(static_cast<int>(number))) return std::make_shared<const present::DisplayStep>(*step);
     throw UsageError("--step " + options.text("step") + ": " + path + " has no step " + options.text("step") +
                      " (a typed Lagrangian's steps are 0, 6, 7 and 8)");
 }

@@ -11,23 +11,17 @@
 #include <QSvgRenderer>
 #include <QTemporaryDir>
 
+#include "process_run.hpp"
 #include "ui/lab_report.hpp"  // the bundle's contents, as documented there
 
 class TestReportCli : public QObject {
     Q_OBJECT
-    struct Run {
-        int exitCode;
-        QByteArray out, err;
-    };
-    static Run run(const QStringList& args) {
-        QProcess p;
+    using Run = ll::test::ProcessRun;
+    static Run run(const QStringList& args) {  // headless, as a student's shell without X
         QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
         env.remove("DISPLAY");
         env.remove("WAYLAND_DISPLAY");
-        p.setProcessEnvironment(env);
-        p.start(LL_CLI, args);
-        p.waitForFinished(600000);
-        return {p.exitCode(), p.readAllStandardOutput(), p.readAllStandardError()};
+        return ll::test::runProcess(LL_CLI, args, {}, env);
     }
     static QString example(const char* name) { return QString(LL_EXAMPLES_DIR) + "/" + name; }
     static QByteArray bytes(const QString& path) {

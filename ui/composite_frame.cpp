@@ -67,16 +67,14 @@ CompositeFrame::CompositeFrame(const Trajectory& trajectory, const QString& scen
         for (const MathBox& f : layoutFormula(*step->formula, maxWidth)) place(f, 10);
     for (const present::DisplayItem& item : step->items) {
         if (!item.equation) continue;
-        bool all = true;
         // A matrix too wide is listed entry by entry (as the window does).
         std::vector<MathBox> lines = layoutItem(item, maxWidth, language);
         // An equation is shown whole or not at all.
         double need = 0, widest = 0;
         for (const MathBox& l : lines) need += (12 + l.ascent + l.descent) * scale, widest = std::max(widest, l.width);
         if (widest > maxWidth) continue;  // a line that cannot break
-        if (y + need > box.bottom()) break;
-        for (const MathBox& l : lines) all = place(l, 12) && all;
-        if (!all) break;
+        if (y + need > box.bottom()) break;  // it fits whole: every line is placed
+        for (const MathBox& l : lines) place(l, 12);
     }
 }
 

@@ -77,8 +77,7 @@ std::vector<std::string> writeLabReport(const LabReportInput& in, const std::str
     slide.duration = tr.t.empty() ? 0 : tr.t.back() - tr.t.front();
     slide.composite = true;
     if (in.display) {
-        for (const present::DisplayStep& s : in.display->steps)
-            if (s.number == 8) slide.step = std::make_shared<const present::DisplayStep>(s);
+        if (const present::DisplayStep* equations = in.display->step(8)) slide.step = std::make_shared<const present::DisplayStep>(*equations);
         slide.language = in.display->language;
     }
     exportAnimation(in.scene, tr, slide, [&](double f) { step(0.35 + 0.6 * f); }, cancel);

@@ -1496,11 +1496,10 @@ bool MainWindow::exportAnimationTo(const QString& path, QString* error, double d
         settings.composite = true;
         settings.width = slide.width(), settings.height = slide.height();
         if (derived_ && derived_->display) {
-            const std::vector<present::DisplayStep>& steps = derived_->display->steps;
-            const int wanted = typeset_->step() <= 8 ? typeset_->step() : 8;
-            for (const present::DisplayStep& step : steps)
-                if (step.number == wanted) settings.step = std::make_shared<const present::DisplayStep>(step);
-            if (!settings.step && !steps.empty()) settings.step = std::make_shared<const present::DisplayStep>(steps.back());
+            const present::DisplayDocument& document = *derived_->display;
+            const present::DisplayStep* shown = document.step(typeset_->step() <= 8 ? typeset_->step() : 8);
+            if (!shown && !document.steps.empty()) shown = &document.steps.back();
+            if (shown) settings.step = std::make_shared<const present::DisplayStep>(*shown);
             settings.language = derived_->display->language;
         }
     }

@@ -118,6 +118,17 @@ osg::ref_ptr<osgText::Text> label(const std::string& text, double axisLength, do
     return t;
 }
 
+// Geometry whose `count` vertices change every frame (the trail, the drop lines, the
+// leader lines): no display list, vertex buffers, the vertices allocated once.
+osg::ref_ptr<osg::Geometry> dynamicGeometry(unsigned count) {
+    osg::ref_ptr<osg::Geometry> g = new osg::Geometry;
+    g->setDataVariance(osg::Object::DYNAMIC);
+    g->setUseDisplayList(false);
+    g->setUseVertexBufferObjects(true);
+    g->setVertexArray(new osg::Vec3Array(count));
+    return g;
+}
+
 // Lines on the ground plane every `spacing`, every fifth darker.
 osg::ref_ptr<osg::Geode> grid(const VisualScene& scene) {
     const VisualGround& g = scene.ground;
@@ -221,7 +232,6 @@ OsgScene::OsgScene(const VisualScene& scene, const OsgSceneOptions& options) : o
             transform->setDataVariance(osg::Object::DYNAMIC);
             transform->addChild(triad(frame.axisLength));
             osg::ref_ptr<osgText::Text> drawn;
-            osg::ref_ptr<osg::Geometry> leader;
             osg::ref_ptr<osg::Geode> leaderGeode;
             if (font && !frame.label.empty()) {  // frames sharing an origin share one label
                 osg::ref_ptr<osg::Geode> text = new osg::Geode;
@@ -233,11 +243,7 @@ OsgScene::OsgScene(const VisualScene& scene, const OsgSceneOptions& options) : o
                 text->getOrCreateStateSet()->setRenderBinDetails(20, "RenderBin");
                 transform->addChild(text);
                 // The leader line of a label moved off its frame (hidden until then).
-                leader = new osg::Geometry;
-                leader->setDataVariance(osg::Object::DYNAMIC);
-                leader->setUseDisplayList(false);
-                leader->setUseVertexBufferObjects(true);
-                leader->setVertexArray(new osg::Vec3Array(2));
+                osg::ref_ptr<osg::Geometry> leader = dynamicGeometry(2);
                 osg::ref_ptr<osg::Vec4Array> colour = new osg::Vec4Array(1);
                 (*colour)[0] = osg::Vec4(0.15f, 0.15f, 0.2f, 0.8f);
                 leader->setColorArray(colour, osg::Array::BIND_OVERALL);
@@ -253,7 +259,6 @@ OsgScene::OsgScene(const VisualScene& scene, const OsgSceneOptions& options) : o
                 transform->addChild(leaderGeode);
             }
             labels_.push_back(drawn);
-            leaders_.push_back(leader);
             leaderGeodes_.push_back(leaderGeode);
             frames_.push_back(transform);
             root_->addChild(transform);
@@ -264,13 +269,8 @@ OsgScene::OsgScene(const VisualScene& scene, const OsgSceneOptions& options) : o
     updateGround(scene);
 
     if (options_.trail && scene.endEffector >= 0) {
-        trail_ = new osg::Geometry;
-        trail_->setDataVariance(osg::Object::DYNAMIC);
-        trail_->setUseDisplayList(false);
-        trail_->setUseVertexBufferObjects(true);
-        osg::ref_ptr<osg::Vec3Array> vertices = new osg::Vec3Array(maxTrailPoints);
+        trail_ = dynamicGeometry(maxTrailPoints);
         osg::ref_ptr<osg::Vec4Array> colours = new osg::Vec4Array(maxTrailPoints);
-        trail_->setVertexArray(vertices);
         trail_->setColorArray(colours, osg::Array::BIND_PER_VERTEX);
         trail_->addPrimitiveSet(new osg::DrawArrays(GL_LINE_STRIP, 0, 0));
         osg::ref_ptr<osg::Geode> geode = new osg::Geode;
@@ -287,12 +287,8 @@ OsgScene::OsgScene(const VisualScene& scene, const OsgSceneOptions& options) : o
     if (options_.dropLines && !scene.dropLines.empty()) {
         // Where each mass stands over the ground: a thin grey line down and a dot at its
         // foot, which read as height on a projector and on software GL alike.
-        drops_ = new osg::Geometry;
-        drops_->setDataVariance(osg::Object::DYNAMIC);
-        drops_->setUseDisplayList(false);
-        drops_->setUseVertexBufferObjects(true);
         const unsigned count = static_cast<unsigned>(2 * scene.dropLines.size());
-        drops_->setVertexArray(new osg::Vec3Array(count));
+        drops_ = dynamicGeometry(count);
         osg::ref_ptr<osg::Vec4Array> colour = new osg::Vec4Array(1);
         (*colour)[0] = osg::Vec4(0.25f, 0.27f, 0.32f, 0.75f);
         drops_->setColorArray(colour, osg::Array::BIND_OVERALL);
@@ -411,9 +407,7 @@ void OsgScene::placeLabels(const VisualScene& scene, const CameraView& view, int
     if (labels_.empty() || width <= 0 || height <= 0) return;
     std::vector<LabelBox> boxes = frameLabelBoxes(scene, view, width, height, options_.labelPixels);
     separateLabels(boxes, width, height);
-    const Eigen::Vector3d forward = (view.centre - view.eye).normalized();
-    const Eigen::Vector3d right = forward.cross(view.up).normalized(), up = right.cross(forward);
-    const double tanY = std::tan(view.fovy * osg::PI / 360.0);
+    const PictureAxes axes = pictureAxes(view);
     for (const LabelBox& box : boxes) {
         const std::size_t k = static_cast<std::size_t>(box.frame);
         if (k >= labels_.size() || !labels_[k]) continue;
@@ -421,18 +415,19 @@ void OsgScene::placeLabels(const VisualScene& scene, const CameraView& view, int
         const Eigen::Vector3d local = Eigen::Vector3d::Constant(-kLabelBack * frame.axisLength);
         const Eigen::Vector3d anchor = frame.pose * local;
         // Pixels to metres at the anchor's depth.
-        const double perPixel = 2 * std::max((anchor - view.eye).dot(forward), 1e-9) * tanY / height;
-        const Eigen::Vector3d moved = anchor + perPixel * ((box.right - box.anchorX) * right - (box.top - box.anchorY) * up);
+        const double perPixel = 2 * std::max((anchor - view.eye).dot(axes.forward), 1e-9) * axes.tanHalfFovy / height;
+        const Eigen::Vector3d moved = anchor + perPixel * ((box.right - box.anchorX) * axes.right - (box.top - box.anchorY) * axes.up);
         const Eigen::Vector3d at = frame.pose.inverse() * moved;
         labels_[k]->setPosition(toOsg(at));
         const bool shifted = box.moved();
         leaderGeodes_[k]->setNodeMask(shifted ? ~0u : 0u);
         if (shifted) {
-            auto& v = static_cast<osg::Vec3Array&>(*leaders_[k]->getVertexArray());
+            osg::Geometry& leader = *leaderGeodes_[k]->getDrawable(0)->asGeometry();
+            auto& v = static_cast<osg::Vec3Array&>(*leader.getVertexArray());
             v[0] = toOsg(local);
             v[1] = toOsg(at);
             v.dirty();
-            leaders_[k]->dirtyBound();
+            leader.dirtyBound();
         }
     }
 }

@@ -85,8 +85,7 @@ private:
     osg::ref_ptr<osg::Geometry> drops_;
     osg::ref_ptr<osg::Group> dimensions_;
     std::vector<osg::ref_ptr<osgText::Text>> labels_;     // per frame (null: no label)
-    std::vector<osg::ref_ptr<osg::Geometry>> leaders_;    // per frame: anchor → moved label
-    std::vector<osg::ref_ptr<osg::Geode>> leaderGeodes_;
+    std::vector<osg::ref_ptr<osg::Geode>> leaderGeodes_;   // per frame: the line anchor → moved label
     osg::ref_ptr<osg::Geode> dropGeode_;
     double frameLength_ = 0.1;
 };

@@ -9,19 +9,9 @@
 #include <QSvgGenerator>
 
 #include "core/io/atomic_file.hpp"
+#include "ui/round_step.hpp"
 
 namespace ll::ui {
-namespace {
-
-// 1, 2, 2.5 or 5 times a power of ten, the smallest at or above x.
-double roundStep(double x) {
-    const double decade = std::pow(10.0, std::floor(std::log10(x)));
-    for (double m : {1.0, 2.0, 2.5, 5.0})
-        if (m * decade >= x * (1 - 1e-9)) return m * decade;
-    return 10 * decade;
-}
-
-}  // namespace
 
 void writePlotSvg(const std::string& path, const QString& title, const QString& valueAxis, const std::vector<double>& times,
                   const std::vector<PlotCurve>& curves) {
@@ -41,7 +31,6 @@ void writePlotSvg(const std::string& path, const QString& title, const QString& 
         QFont font = p.font();
         font.setPixelSize(14);
         p.setFont(font);
-        const QFontMetricsF fm(font);
         const int rows = static_cast<int>((curves.size() + 3) / 4);
         const QRectF plot(80, 40, size.width() - 110, size.height() - 110 - rows * 22);
         double t0 = times.empty() ? 0 : times.front(), t1 = times.empty() ? 1 : times.back();
@@ -103,7 +92,6 @@ void writePlotSvg(const std::string& path, const QString& title, const QString& 
             p.setPen(QColor(20, 20, 30));
             p.drawText(corner + QPointF(24, 14), curves[i].name);
         }
-        (void)fm;
     }
     buffer.close();
     saveFileAtomically(path, bytes.toStdString(), Backup::None);

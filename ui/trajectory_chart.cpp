@@ -1,5 +1,7 @@
 #include "ui/trajectory_chart.hpp"
 
+#include "ui/round_step.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -229,16 +231,9 @@ void TrajectoryChart::fitTicks() {
     // Time ticks at round seconds (1, 2 or 5 times a power of ten, or 2.5) from 0, as many
     // as fit a label's width apart: a 5 s run ticks every second, not every 0.8333 s.
     const int fit = std::clamp(static_cast<int>(area.width() / (widest * 2.0 + 8)) + 1, 2, 11);
-    const double span = std::max(axisX_->max() - axisX_->min(), 1e-9), least = span / (fit - 1);
-    const double decade = std::pow(10.0, std::floor(std::log10(least)));
-    double step = 10 * decade;
-    for (double m : {1.0, 2.0, 2.5, 5.0})
-        if (m * decade >= least * (1 - 1e-9)) {
-            step = m * decade;
-            break;
-        }
+    const double span = std::max(axisX_->max() - axisX_->min(), 1e-9);
     axisX_->setTickAnchor(0.0);
-    axisX_->setTickInterval(step);
+    axisX_->setTickInterval(roundStep(span / (fit - 1)));
     axisX_->setTickType(QValueAxis::TicksDynamic);
     axisY_->setRange(dataLo_, dataHi_);
     axisY_->setTickCount(std::clamp(static_cast<int>(area.height() / (QFontMetricsF(axisY_->labelsFont()).height() * 2.0)) + 1, 2, 9));

@@ -42,6 +42,12 @@ struct DisplayDocument {
     std::string systemName;
     std::vector<std::string> coordinateNames;
     std::vector<DisplayStep> steps;
+    // Step `number` (0..8), or null when this document has none (a typed Lagrangian's 1–5).
+    const DisplayStep* step(int number) const {
+        for (const DisplayStep& s : steps)
+            if (s.number == number) return &s;
+        return nullptr;
+    }
     std::string actuation;   // "inputs on q1, q2 …", the coordinates as the results show them (θ2)
     std::string actuationLatex;  // the same with the coordinates as LaTeX ($\theta_{2}$)
     std::string form;        // "expanded" or "structured" when a form was chosen (empty: not said)

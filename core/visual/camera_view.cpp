@@ -65,17 +65,24 @@ CameraSpec parseCameraSpec(const std::string& text) {
     return spec;
 }
 
+PictureAxes pictureAxes(const CameraView& view) {
+    PictureAxes axes;
+    axes.forward = (view.centre - view.eye).normalized();
+    axes.right = axes.forward.cross(view.up).normalized();
+    axes.up = axes.right.cross(axes.forward);
+    axes.tanHalfFovy = std::tan(view.fovy * kDegree / 2);
+    return axes;
+}
+
 double projectedHeight(const CameraView& view, const std::vector<Eigen::Vector4d>& spheres) {
-    const Eigen::Vector3d forward = (view.centre - view.eye).normalized();
-    const Eigen::Vector3d right = forward.cross(view.up).normalized();
-    const Eigen::Vector3d up = right.cross(forward);
-    const double tanY = std::tan(view.fovy * kDegree / 2);
+    const PictureAxes axes = pictureAxes(view);
+    const double tanY = axes.tanHalfFovy;
     double low = 1e300, high = -1e300;
     for (const Eigen::Vector4d& s : spheres) {
         const Eigen::Vector3d v = s.head<3>() - view.eye;
-        const double depth = std::max(v.dot(forward), 1e-9);
+        const double depth = std::max(v.dot(axes.forward), 1e-9);
         // -1 at the picture's bottom edge, +1 at its top
-        const double y = v.dot(up) / (depth * tanY), r = s[3] / (depth * tanY);
+        const double y = v.dot(axes.up) / (depth * tanY), r = s[3] / (depth * tanY);
         low = std::min(low, y - r), high = std::max(high, y + r);
     }
     return spheres.empty() ? 0.0 : (high - low) / 2;
@@ -94,19 +101,18 @@ bool looksPlanar(const VisualScene& scene) {
 }
 
 double distanceToHold(const CameraView& view, const std::vector<Eigen::Vector4d>& spheres, double aspect) {
-    const Eigen::Vector3d toEye = (view.eye - view.centre).normalized();
-    const Eigen::Vector3d right = (-toEye).cross(view.up).normalized();
-    const Eigen::Vector3d upInPicture = right.cross(-toEye);
+    const PictureAxes axes = pictureAxes(view);
+    const Eigen::Vector3d toEye = -axes.forward;
     // Every sphere inside the frustum, with 5 % to spare on each side: a sphere of
     // radius r at depth z stays inside when its centre's offset plus r·(1 + tan²)^½
     // is within z·tan; checking offset + r against (z − r)·tan is a little stricter.
-    const double tanY = std::tan(view.fovy * kDegree / 2) * 0.95, tanX = tanY * aspect;
+    const double tanY = axes.tanHalfFovy * 0.95, tanX = tanY * aspect;
     double distance = 0.0;
     for (const Eigen::Vector4d& s : spheres) {
         const Eigen::Vector3d v = s.head<3>() - view.centre;
         const double towardEye = v.dot(toEye) + s[3];
-        distance = std::max({distance, towardEye + (std::abs(v.dot(right)) + s[3]) / tanX,
-                             towardEye + (std::abs(v.dot(upInPicture)) + s[3]) / tanY});
+        distance = std::max({distance, towardEye + (std::abs(v.dot(axes.right)) + s[3]) / tanX,
+                             towardEye + (std::abs(v.dot(axes.up)) + s[3]) / tanY});
     }
     return distance;
 }

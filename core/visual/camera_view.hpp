@@ -49,6 +49,14 @@ CameraView cameraView(const VisualScene& scene, const CameraSpec& spec, double a
 // every sphere (centre x, y, z, radius [m]) to lie inside the picture with 5 % to spare.
 double distanceToHold(const CameraView& view, const std::vector<Eigen::Vector4d>& spheres, double aspect);
 
+// The picture's directions seen through `view`, unit: forward (eye → centre), right and
+// up in the picture; and tan of half the vertical field of view.
+struct PictureAxes {
+    Eigen::Vector3d forward, right, up;
+    double tanHalfFovy = 0.0;
+};
+PictureAxes pictureAxes(const CameraView& view);
+
 // The share (0..1 and beyond) of the picture's height that `spheres` (centre x, y, z,
 // radius [m]) cover seen through `view`: from the lowest to the highest point of their
 // perspective projection, over the height of the view at each sphere's depth.
