@@ -3,9 +3,9 @@
 #include <cmath>
 #include <limits>
 
-#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 
+#include "core/math/cholesky.hpp"
 #include "core/dynamics/forward_dynamics.hpp"
 
 namespace ll {
@@ -37,7 +37,7 @@ MassMatrixDefect diagnoseMassMatrix(const RobotData& data, double relTol) {
     defect.pivot = B(j, j);
     if (j > 0) {  // the joints before j passed: their block is positive definite
         const Eigen::VectorXd coupling = B.col(j).head(j);
-        defect.pivot -= coupling.dot(B.topLeftCorner(j, j).llt().solve(coupling));
+        defect.pivot -= coupling.dot(Cholesky(j).compute(B.topLeftCorner(j, j)).solve(coupling));
     }
     const Eigen::VectorXd eigenvalues = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(B, Eigen::EigenvaluesOnly).eigenvalues();
     defect.condition = eigenvalues[0] > 0 ? eigenvalues[eigenvalues.size() - 1] / eigenvalues[0]

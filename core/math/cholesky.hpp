@@ -2,7 +2,8 @@
 // Cholesky factorisation B = L Lᵀ for the small symmetric positive definite matrices of
 // robot dynamics. Unblocked: for n <= ~10 Eigen's blocked LLT spends more time on
 // bookkeeping than on arithmetic (PUMA 560: 0.21 µs for factor + solve, this 0.05 µs).
-// Sized once; compute and solveInPlace allocate nothing.
+// Sized once; compute and solveInPlace allocate nothing. The project's one Cholesky: every
+// B q̈ = rhs solve uses it (the ODEs, evaluation, torque parts, model properties).
 #include <cmath>
 
 #include <Eigen/Core>
@@ -62,6 +63,13 @@ public:
     template <class Derived>
     void solveInPlace(Eigen::MatrixBase<Derived>&& X) const {
         solveInPlace(X);
+    }
+
+    // B⁻¹ b as a new vector (outside hot loops; there solveInPlace allocates nothing).
+    Eigen::VectorXd solve(const Eigen::VectorXd& b) const {
+        Eigen::VectorXd x = b;
+        solveInPlace(x);
+        return x;
     }
 
     const Eigen::MatrixXd& matrixL() const { return L_; }  // lower triangle

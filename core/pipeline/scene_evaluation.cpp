@@ -1,7 +1,6 @@
 #include "core/pipeline/scene_evaluation.hpp"
 
-#include <Eigen/Cholesky>
-
+#include "core/math/cholesky.hpp"
 #include "core/dynamics/finite_terms.hpp"
 #include "core/dynamics/forward_dynamics.hpp"
 #include "core/model/actuation.hpp"
@@ -34,8 +33,8 @@ SceneEvaluation evaluateLagrangian(const Scene& scene, const Eigen::VectorXd& q,
     out.coordinates = d.coordinateNames;
     if (auto bad = nonFiniteTerm(out.terms, Eigen::VectorXd(), q, qd, "at t = " + formatValue(t))) throw InputError({*bad});
     const ModelTerms& m = out.terms;
-    const Eigen::LLT<Eigen::MatrixXd> llt(m.B);
-    if (llt.info() != Eigen::Success)
+    Cholesky llt(n);
+    if (llt.compute(m.B).info() != Eigen::Success)
         throw InputError("q", std::string(kNotPositiveDefinite) + "the coordinates are not independent here");
     out.qdd = llt.solve(m.Q - m.C * qd - m.g);
     return out;

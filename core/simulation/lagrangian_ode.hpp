@@ -1,14 +1,14 @@
 #pragma once
 // A system typed by hand as a Lagrangian (Scene::lagrangian) as a first-order ODE over
 // the same state as RobotOde, x = [q; q̇; W] (W: work done by Q):
-//   q̇ = q̇,  q̈ = B⁻¹(Q − C q̇ − g) by a Cholesky (LLT) solve,  Ẇ = Qᵀ q̇,
+//   q̇ = q̇,  q̈ = B⁻¹(Q − C q̇ − g) by a Cholesky solve (core/math/cholesky.hpp),  Ẇ = Qᵀ q̇,
 // with B, C, g and Q from the derivation compiled once by the symbolic layer
 // (CompiledLagrangian, plain data): no GiNaC anywhere in a simulation, and no
 // allocation per right-hand side.
 // Odeint copies systems by value; pass this with std::ref.
-#include <Eigen/Cholesky>
 #include <Eigen/Core>
 
+#include "core/math/cholesky.hpp"
 #include "core/simulation/ode_system.hpp"
 #include "core/dynamics/compiled_lagrangian.hpp"
 
@@ -32,7 +32,7 @@ private:
     CompiledLagrangian model_;
     Eigen::MatrixXd B_;
     Eigen::VectorXd rhs_, Q_;
-    Eigen::LLT<Eigen::MatrixXd> llt_;
+    Cholesky llt_;
     long evaluations_ = 0;
 };
 

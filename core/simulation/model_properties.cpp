@@ -1,5 +1,7 @@
 #include "core/simulation/model_properties.hpp"
 
+#include "core/math/cholesky.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -7,7 +9,6 @@
 #include <random>
 #include <stdexcept>
 
-#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 
 #include "core/dynamics/coriolis.hpp"
@@ -176,7 +177,8 @@ ModelProperties checkModelProperties(const SimulationInput& input, const Traject
             worst(skew, std::abs(x.dot(N * x)) / (x.squaredNorm() * Bnorm), t, q);
         }
 
-        const Eigen::LLT<Eigen::MatrixXd> llt(m.B);
+        Cholesky llt(n);
+        llt.compute(m.B);
         const Eigen::VectorXd qdd = llt.solve(m.Q - m.C * qd - m.g);
         // dE/dt from E = ½ q̇ᵀBq̇ + E_pot: q̇ᵀB q̈ + ½ q̇ᵀḂq̇ + gᵀq̇, against q̇ᵀQ.
         const double kinetic = qd.dot(m.B * qdd), bdot = 0.5 * qd.dot(m.Bdot * qd), potential = m.g.dot(qd), input = qd.dot(m.Q);

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include <Eigen/Cholesky>
 
+#include "core/math/cholesky.hpp"
 #include "core/dynamics/forward_dynamics.hpp"
 #include "core/dynamics/potential_gradient.hpp"
 #include "core/dynamics/inverse_dynamics.hpp"
@@ -181,7 +181,7 @@ void RobotOde::solveAccelerations() {
             rf[a] = rhs_[free[a]];
             for (int b = 0; b < m; ++b) Bff(a, b) = data_.B(free[a], free[b]);
         }
-        const Eigen::VectorXd af = m > 0 ? Eigen::VectorXd(Bff.llt().solve(rf)) : Eigen::VectorXd();
+        const Eigen::VectorXd af = m > 0 ? Cholesky(m).compute(Bff).solve(rf) : Eigen::VectorXd();
         qdd_.setZero();
         for (int a = 0; a < m; ++a) qdd_[free[a]] = af[a];
         int worst = -1;
@@ -296,7 +296,7 @@ bool RobotOde::afterStep(double t, OdeState& x) {
     data_.B_llt.solveInPlace(M);
     Eigen::MatrixXd G(k, k);
     for (int a = 0; a < k; ++a) G.row(a) = M.row(S[a]);
-    const Eigen::VectorXd lambda = -G.llt().solve(vS);
+    const Eigen::VectorXd lambda = -Cholesky(k).compute(G).solve(vS);
     const Eigen::VectorXd dqd = M * lambda;
     for (int i = 0; i < n; ++i) x[n + i] += dqd[i];
     for (int i : S) x[n + i] = 0.0;

@@ -5,8 +5,8 @@
 #include <string>
 #include <stdexcept>
 
-#include <Eigen/Cholesky>
 
+#include "core/math/cholesky.hpp"
 #include "core/dynamics/coriolis.hpp"
 #include "core/dynamics/forward_dynamics.hpp"
 #include "core/dynamics/potential_gradient.hpp"
@@ -20,8 +20,8 @@ namespace {
 void complete(TorqueParts& p, const Eigen::MatrixXd& B, const Eigen::VectorXd& Cqd, const Eigen::VectorXd& g) {
     p.coriolis = Cqd;
     p.potential = g;
-    const Eigen::LLT<Eigen::MatrixXd> llt(B);
-    if (llt.info() != Eigen::Success) throw SingularMassMatrix(firstSingularJoint(B), "torqueHistory: B(q) is not positive definite");
+    Cholesky llt(static_cast<int>(B.rows()));
+    if (llt.compute(B).info() != Eigen::Success) throw SingularMassMatrix(firstSingularJoint(B), "torqueHistory: B(q) is not positive definite");
     p.qdd = llt.solve(p.Q() - Cqd - g);
     p.inertial = B * p.qdd;
 }
