@@ -1,0 +1,588 @@
+#include "core/io/scene_reader.hpp"
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <numbers>
+#include <optional>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include <Eigen/Geometry>
+
+#include "core/symbolic/expression.hpp"
+#include "core/symbolic/lagrangian_fields.hpp"
+#include "core/simulation/scene_validation.hpp"
+#include "core/symbolic/ginac_lock.hpp"
+#include "core/symbolic/angle_units.hpp"
+#include "core/model/utf8_text.hpp"
+#include "core/model/usable_number.hpp"
+namespace ll {
+
+namespace {
+
+using namespace scene_json;
+
+// Whether a numeric field is an angle: then it takes degrees ("90°", "90 deg") and a
+// bare number beyond 2π is warned about (probably degrees typed as radians). `Maybe`:
+// degrees are allowed, but the field may as well be a length (a Lagrangian's coordinate).
+enum class Angle { No, Yes, Maybe };
+
+class SceneReader {
+public:
+    explicit SceneReader(std::vector<Diagnostic> errors) : errors_(std::move(errors)) {}
+
+    // Warnings found while reading (angles that look like degrees typed as radians).
+    const std::vector<Diagnostic>& warnings() const { return warnings_; }
+
+    Scene read(const Json& root) {
+        readFormat(root);
+        checkKeys(root, "",
+                  {"format", "name", "description", "source", "parameters", "robot", "lagrangian", "effects", "initial",
+                   "simulation"});
+        const std::size_t errorsBefore = errors_.size();
+        if (const Json* parameters = member(root, "parameters")) readParameters(*parameters);
+        // Every later field may use the parameters: a broken one would echo everywhere.
+        if (errors_.size() > errorsBefore) throwIfErrors();
+
+        if (const Json* name = required(root, "", "name", "the scene's title")) readText(*name, "name", scene_.name);
+        if (const Json* description = member(root, "description"))
+            readText(*description, "description", scene_.description);
+        if (const Json* source = member(root, "source")) readText(*source, "source", scene_.source);
+        scene_.robot.name = scene_.name;
+        // Exactly one of a robot (DH table) and a Lagrangian typed by hand.
+        const Json* robot = member(root, "robot");
+        const Json* lagrangian = member(root, "lagrangian");
+        if (robot && lagrangian)
+            error("lagrangian", "a scene has either \"robot\" or \"lagrangian\", not both");
+        else if (robot)
+            readRobot(*robot);
+        else if (lagrangian)
+            readLagrangian(*lagrangian);
+        else
+            error("robot", "required field is missing (the DH table and links; or \"lagrangian\" for a system "
+                           "given by its coordinates, E_kin and E_pot)");
+        if (const Json* effects = member(root, "effects")) readEffects(*effects);
+        readInitial(member(root, "initial"));
+        if (const Json* simulation = member(root, "simulation")) readSimulation(*simulation);
+        throwIfErrors();
+        return std::move(scene_);
+    }
+
+private:
+    void error(const std::string& field, const std::string& message) {
+        errors_.push_back({Severity::Error, field, message});
+    }
+
+    [[noreturn]] void fail(const std::string& field, const std::string& message) {
+        error(field, message);
+        throw InputError(errors_);
+    }
+
+    void throwIfErrors() const {
+        if (!errors_.empty()) throw InputError(errors_);
+    }
+
+    static const Json* member(const Json& object, const std::string& key) {
+        const auto found = object.find(key);
+        return found == object.end() ? nullptr : &*found;
+    }
+
+    const Json* required(const Json& object, const std::string& path, const std::string& key, const std::string& what) {
+        const Json* value = member(object, key);
+        if (!value) error(child(path, key), "required field is missing (" + what + ")");
+        return value;
+    }
+
+    // An object holding only `allowed` keys; false (and an error) when it is no object.
+    bool checkObject(const Json& value, const std::string& path, const Keys& allowed) {
+        if (!value.is_object()) {
+            error(path, "expected an object {...}, got " + describe(value));
+            return false;
+        }
+        checkKeys(value, path, allowed);
+        return true;
+    }
+
+    void checkKeys(const Json& object, const std::string& path, const Keys& allowed,
+                   const std::string& context = "") {
+        for (const auto& [key, value] : object.items())
+            if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())  // "" is named as typed: ""
+                error(child(path, key.empty() ? "\"\"" : key), "unknown key" + context + " (expected one of " + joined(allowed) + ")");
+    }
+
+    std::optional<double> number(const Json& value, const std::string& path, Angle angle = Angle::No) {
+        if (value.is_number()) {
+            const double number = value.get<double>();
+            if (angle == Angle::Yes) warnIfDegrees(path, number);
+            if (auto why = unusableNumber(number)) {
+                error(path, *why);
+                return std::nullopt;
+            }
+            return number;
+        }
+        if (value.is_string()) {
+            const std::string text = value.get<std::string>();
+            try {
+                const double number =
+                    parameters_.evaluate(path, text, angle == Angle::No ? AngleUnits::Refused : AngleUnits::Allowed);
+                scene_.expressions[path] = text;
+                if (angle == Angle::Yes && isPlainNumber(text)) warnIfDegrees(path, number);
+                return number;
+            } catch (const InputError& e) {
+                errors_.insert(errors_.end(), e.diagnostics().begin(), e.diagnostics().end());
+                return std::nullopt;
+            }
+        }
+        error(path, "expected a number or an expression, got " + describe(value));
+        return std::nullopt;
+    }
+
+    // "90" as a string is as bare as 90.
+    static bool isPlainNumber(const std::string& text) {
+        char* end = nullptr;
+        std::strtod(text.c_str(), &end);
+        return end != text.c_str() && text.find_first_not_of(" \t\n", static_cast<std::size_t>(end - text.c_str())) == std::string::npos;
+    }
+
+    // A bare number beyond 2π in an angle field is loaded as radians, with a warning.
+    void warnIfDegrees(const std::string& path, double value) {
+        if (!std::isfinite(value) || std::abs(value) <= 2 * std::numbers::pi) return;
+        const DegreeReading reading = readAsDegrees(value);
+        const std::string name = path.substr(path.rfind('.') + 1);
+        std::ostringstream number;
+        number.precision(10);
+        number << value;
+        warnings_.push_back({Severity::Warning, path,
+                             name + " " + number.str() + " rad — did you mean " + reading.degrees + "? write " +
+                                 reading.degrees + " or " + reading.radians + " (loaded as " + number.str() + " rad)"});
+    }
+
+    // Degrees are for a revolute joint's angles; a prismatic joint's q is a length. A
+    // Lagrangian's coordinates may be either.
+    Angle jointAngle(int joint) const {
+        if (scene_.lagrangian) return Angle::Maybe;
+        if (joint < 0 || joint >= scene_.robot.dof()) return Angle::Maybe;  // validation names the joint
+        return scene_.robot.joints[static_cast<std::size_t>(joint)].dh.type == JointType::Revolute ? Angle::Yes : Angle::No;
+    }
+
+    void readNumber(const Json& object, const std::string& path, const std::string& key, double& target,
+                    Angle angle = Angle::No) {
+        if (const Json* value = member(object, key))
+            if (auto n = number(*value, child(path, key), angle)) target = *n;
+    }
+
+    void readText(const Json& value, const std::string& path, std::string& target) {
+        if (value.is_string())
+            target = value.get<std::string>();
+        else
+            error(path, "expected a string \"...\", got " + describe(value));
+    }
+
+    // A string that must be one of `choices`; the index of the match.
+    std::optional<std::size_t> readChoice(const Json& value, const std::string& path, const Keys& choices) {
+        if (value.is_string()) {
+            const auto found = std::find(choices.begin(), choices.end(), value.get<std::string>());
+            if (found != choices.end()) return static_cast<std::size_t>(found - choices.begin());
+        }
+        std::string expected;
+        for (std::size_t i = 0; i < choices.size(); ++i)
+            expected += (i == 0 ? "\"" : i + 1 == choices.size() ? " or \"" : ", \"") + choices[i] + "\"";
+        error(path, "expected " + expected + ", got " + describe(value));
+        return std::nullopt;
+    }
+
+    void readVector3(const Json& object, const std::string& path, const std::string& key, Eigen::Vector3d& target,
+                     Angle angle = Angle::No) {
+        const Json* value = member(object, key);
+        if (!value) return;
+        const std::string field = child(path, key);
+        if (!value->is_array() || value->size() != 3) {
+            error(field, "expected an array of 3 numbers or expressions [x, y, z], got " + describe(*value));
+            return;
+        }
+        for (std::size_t i = 0; i < 3; ++i)
+            if (auto n = number((*value)[i], item(field, i), angle)) target[static_cast<Eigen::Index>(i)] = *n;
+    }
+
+    void readFormat(const Json& root) {
+        const Json* format = member(root, "format");
+        if (!format) {
+            error("format", std::string("required field is missing (expected \"") + kFormat + "\")");
+            return;
+        }
+        // Another format (or version) would make every later message misleading.
+        if (!format->is_string() || format->get<std::string>() != kFormat)
+            fail("format", std::string("expected \"") + kFormat + "\", got " + describe(*format));
+    }
+
+    void readParameters(const Json& parameters) {
+        if (!parameters.is_object()) {
+            error("parameters", "expected an object {\"name\": value, ...}, got " + describe(parameters));
+            return;
+        }
+        for (const auto& [name, value] : parameters.items()) {
+            const std::string field = child("parameters", name);
+            try {
+                if (value.is_number()) {
+                    parameters_.define(field, name, value.get<double>());
+                } else if (value.is_string()) {
+                    parameters_.define(field, name, value.get<std::string>());
+                    scene_.expressions[field] = value.get<std::string>();
+                } else {
+                    error(field, "expected a number or an expression, got " + describe(value));
+                    continue;
+                }
+                scene_.parameters.emplace_back(name, parameters_.value(name));
+            } catch (const InputError& e) {
+                errors_.insert(errors_.end(), e.diagnostics().begin(), e.diagnostics().end());
+            }
+        }
+    }
+
+    void readRobot(const Json& robot) {
+        if (!checkObject(robot, "robot", {"convention", "base", "joints"})) return;
+        if (const Json* convention = required(robot, "robot", "convention", "\"standard\" or \"modified\" DH"))
+            if (auto choice = readChoice(*convention, "robot.convention", {"standard", "modified"}))
+                scene_.robot.convention = *choice == 0 ? DhConvention::Standard : DhConvention::Modified;
+        if (const Json* base = member(robot, "base")) readBase(*base);
+        const Json* joints = required(robot, "robot", "joints", "one entry per joint, base to tip");
+        if (!joints) return;
+        if (!joints->is_array() || joints->empty()) {
+            error("robot.joints", "expected an array of at least one joint [{...}, ...], got " + describe(*joints));
+            return;
+        }
+        scene_.robot.joints.resize(joints->size());
+        for (std::size_t i = 0; i < joints->size(); ++i)
+            readJoint((*joints)[i], jointField(static_cast<int>(i), ""), scene_.robot.joints[i]);
+    }
+
+    // The "lagrangian" block (core/model/lagrangian_spec.hpp): every expression is parsed
+    // here, so its errors name the field and the position when the file is read.
+    void readLagrangian(const Json& value) {
+        const std::string path = "lagrangian";
+        if (!checkObject(value, path, {"coordinates", "kinetic", "potential", "forces", "bodies"})) return;
+        LagrangianSpec spec;
+        if (const Json* coordinates =
+                required(value, path, "coordinates", "the generalized coordinates by name, e.g. [\"theta1\", \"theta2\"]")) {
+            if (!coordinates->is_array() || coordinates->empty())
+                error("lagrangian.coordinates", "expected an array of names [\"x\", ...], got " + describe(*coordinates));
+            else
+                for (std::size_t i = 0; i < coordinates->size(); ++i) {
+                    const Json& name = (*coordinates)[i];
+                    if (name.is_string())
+                        spec.coordinates.push_back(name.get<std::string>());
+                    else
+                        error(item("lagrangian.coordinates", i), "expected a name \"...\", got " + describe(name));
+                }
+        }
+        const std::size_t errorsBefore = errors_.size();
+        for (const Diagnostic& d : checkCoordinateNames(spec.coordinates, parameters_)) errors_.push_back(d);
+        // Without usable names every expression would echo the problem.
+        const bool namesOk = errors_.size() == errorsBefore && !spec.coordinates.empty();
+        const LagrangianSymbols symbols = lagrangianSymbols(spec.coordinates);
+        const auto expression = [&](const Json& text, const std::string& field, LagrangianField kind) -> std::string {
+            if (!text.is_string() && !text.is_number()) {
+                error(field, "expected an expression \"...\" or a number, got " + describe(text));
+                return "0";
+            }
+            const std::string written = text.is_string() ? text.get<std::string>() : text.dump();
+            if (namesOk) try {
+                    (void)parseLagrangianField(parameters_, symbols, field, written, kind);
+                } catch (const InputError& e) {
+                    errors_.insert(errors_.end(), e.diagnostics().begin(), e.diagnostics().end());
+                }
+            return written;
+        };
+        if (const Json* kinetic = required(value, path, "kinetic", "E_kin in the coordinates and velocities <name>_dot"))
+            spec.kinetic = expression(*kinetic, "lagrangian.kinetic", LagrangianField::Kinetic);
+        if (const Json* potential = member(value, "potential"))
+            spec.potential = expression(*potential, "lagrangian.potential", LagrangianField::Potential);
+        if (const Json* forces = member(value, "forces")) {
+            if (!forces->is_array())
+                error("lagrangian.forces", "expected an array of expressions, one per coordinate, got " + describe(*forces));
+            else
+                for (std::size_t i = 0; i < forces->size(); ++i)
+                    spec.forces.push_back(expression((*forces)[i], item("lagrangian.forces", i), LagrangianField::Force));
+        }
+        if (const Json* bodies = member(value, "bodies")) {
+            if (!bodies->is_array())
+                error("lagrangian.bodies", "expected an array of objects [{...}, ...], got " + describe(*bodies));
+            else
+                for (std::size_t i = 0; i < bodies->size(); ++i) {
+                    VisualBody body;
+                    readBody((*bodies)[i], item("lagrangian.bodies", i), body, expression);
+                    spec.bodies.push_back(std::move(body));
+                }
+        }
+        scene_.lagrangian = std::move(spec);
+    }
+
+    template <class Expression>
+    void readBody(const Json& body, const std::string& path, VisualBody& target, const Expression& expression) {
+        if (!body.is_object()) {
+            error(path, "expected an object {...}, got " + describe(body));
+            return;
+        }
+        static const Keys shapes = {"box", "sphere", "cylinder", "rod"};
+        std::optional<std::size_t> shape;
+        if (const Json* value = required(body, path, "shape", "\"box\", \"sphere\", \"cylinder\" or \"rod\""))
+            shape = readChoice(*value, child(path, "shape"), shapes);
+        if (shape) target.shape = static_cast<BodyShape>(*shape);
+        const bool rod = shape && target.shape == BodyShape::Rod;
+        if (shape)
+            checkKeys(body, path,
+                      rod ? Keys{"name", "shape", "size", "position", "end", "color"}
+                          : Keys{"name", "shape", "size", "position", "angle", "axis", "color"},
+                      " for a " + shapes[*shape]);
+        if (const Json* name = member(body, "name")) readText(*name, child(path, "name"), target.name);
+        if (const Json* color = member(body, "color")) {
+            readText(*color, child(path, "color"), target.color);
+            static const std::regex hex("#[0-9A-Fa-f]{6}");
+            if (color->is_string() && !std::regex_match(target.color, hex))
+                error(child(path, "color"), "expected a colour \"#rrggbb\", got " + describe(*color));
+        }
+        if (const Json* size = required(body, path, "size", "the shape's dimensions")) {
+            const std::string field = child(path, "size");
+            if (!size->is_array()) {
+                error(field, "expected an array of numbers or expressions [...], got " + describe(*size));
+            } else {
+                target.size.assign(size->size(), 0.0);
+                for (std::size_t k = 0; k < size->size(); ++k)
+                    if (auto n = number((*size)[k], item(field, k))) target.size[k] = *n;
+            }
+        }
+        const auto point = [&](const char* key, std::array<std::string, 3>& out) {
+            const Json* value = member(body, key);
+            if (!value) return;
+            const std::string field = child(path, key);
+            if (!value->is_array() || value->size() != 3) {
+                error(field, "expected an array of 3 expressions of the coordinates [x, y, z], got " + describe(*value));
+                return;
+            }
+            for (std::size_t k = 0; k < 3; ++k) out[k] = expression((*value)[k], item(field, k), LagrangianField::Pose);
+        };
+        point("position", target.position);
+        if (rod) point("end", target.end);
+        if (const Json* angle = member(body, "angle"))
+            target.angle = expression(*angle, child(path, "angle"), LagrangianField::Pose);
+        readVector3(body, path, "axis", target.axis);
+    }
+
+    void readBase(const Json& base) {
+        if (!checkObject(base, "robot.base", {"position", "rpy"})) return;
+        Eigen::Vector3d position = Eigen::Vector3d::Zero(), rpy = Eigen::Vector3d::Zero();
+        readVector3(base, "robot.base", "position", position);
+        readVector3(base, "robot.base", "rpy", rpy, Angle::Yes);
+        scene_.robot.base = Eigen::Isometry3d::Identity();
+        scene_.robot.base.translation() = position;
+        scene_.robot.base.linear() = rotationFromRpy(rpy);
+    }
+
+    void readJoint(const Json& joint, const std::string& path, Joint& target) {
+        if (!checkObject(joint, path, {"type", "a", "alpha", "d", "theta", "mass", "com", "inertia", "armature", "motor"}))
+            return;
+        if (const Json* type = member(joint, "type"))
+            if (auto choice = readChoice(*type, child(path, "type"), {"revolute", "prismatic"}))
+                target.dh.type = *choice == 0 ? JointType::Revolute : JointType::Prismatic;
+        readNumber(joint, path, "a", target.dh.a);
+        readNumber(joint, path, "alpha", target.dh.alpha, Angle::Yes);
+        readNumber(joint, path, "d", target.dh.d);
+        // θ is the revolute joint's offset angle; a prismatic joint's θ is a constant angle too.
+        readNumber(joint, path, "theta", target.dh.theta, Angle::Yes);
+        if (required(joint, path, "mass", "the link's mass in kg; 0 for a massless link"))
+            readNumber(joint, path, "mass", target.link.mass);
+        readVector3(joint, path, "com", target.link.com);
+        if (const Json* inertia = member(joint, "inertia")) readInertia(*inertia, child(path, "inertia"), target.link);
+        readMotor(joint, path, target.motor);
+    }
+
+    // "armature": Jm G² as one number, or "motor": {"inertia": Jm, "gear_ratio": G}.
+    void readMotor(const Json& joint, const std::string& path, JointMotor& motor) {
+        const Json* armature = member(joint, "armature");
+        const Json* rotor = member(joint, "motor");
+        if (armature && rotor) {
+            error(child(path, "motor"), "give either \"armature\" (Jm*G^2, the reflected inertia) or \"motor\" "
+                                        "{\"inertia\": Jm, \"gear_ratio\": G}, not both");
+            return;
+        }
+        if (armature) readNumber(joint, path, "armature", motor.inertia);
+        if (!rotor) return;
+        const std::string field = child(path, "motor");
+        if (!checkObject(*rotor, field, {"inertia", "gear_ratio"})) return;
+        motor.fromMotor = true;
+        if (required(*rotor, field, "inertia", "the rotor's inertia Jm in kg m²"))
+            readNumber(*rotor, field, "inertia", motor.inertia);
+        if (required(*rotor, field, "gear_ratio", "G, motor turns per joint turn"))
+            readNumber(*rotor, field, "gear_ratio", motor.gearRatio);
+    }
+
+    void readInertia(const Json& inertia, const std::string& path, LinkInertia& link) {
+        if (!checkObject(inertia, path, {"xx", "yy", "zz", "xy", "xz", "yz"})) return;
+        const std::pair<const char*, std::pair<int, int>> entries[] = {
+            {"xx", {0, 0}}, {"yy", {1, 1}}, {"zz", {2, 2}}, {"xy", {0, 1}}, {"xz", {0, 2}}, {"yz", {1, 2}}};
+        for (const auto& [key, index] : entries) {
+            double value = 0.0;
+            readNumber(inertia, path, key, value);
+            link.inertia(index.first, index.second) = link.inertia(index.second, index.first) = value;
+        }
+    }
+
+    // Effects number joints from 1; the structs from 0.
+    std::optional<int> readJointNumber(const Json& entry, const std::string& path) {
+        const Json* value = required(entry, path, "joint", "the joint's number, from 1");
+        if (!value) return std::nullopt;
+        const std::string field = child(path, "joint");
+        const bool integral = value->is_number() && std::floor(value->get<double>()) == value->get<double>();
+        if (!integral || std::abs(value->get<double>()) > 1e6) {
+            error(field, "expected a joint number (an integer from 1), got " + describe(*value));
+            return std::nullopt;
+        }
+        const int joint = static_cast<int>(value->get<double>());
+        if (joint < 1) {
+            error(field, "joints are numbered from 1 as in the textbook, got " + value->dump());
+            return std::nullopt;
+        }
+        return joint - 1;
+    }
+
+    template <class Entry>
+    void readList(const Json& effects, const std::string& key, std::vector<Entry>& target,
+                  const std::function<void(const Json&, const std::string&, Entry&)>& readEntry) {
+        const Json* list = member(effects, key);
+        if (!list) return;
+        const std::string path = child("effects", key);
+        if (!list->is_array()) {
+            error(path, "expected an array of objects [{...}, ...], got " + describe(*list));
+            return;
+        }
+        for (std::size_t i = 0; i < list->size(); ++i) {
+            const Json& entry = (*list)[i];
+            const std::string field = item(path, i);
+            if (!entry.is_object()) {
+                error(field, "expected an object {...}, got " + describe(entry));
+                continue;
+            }
+            Entry parsed;
+            if (auto joint = readJointNumber(entry, field)) parsed.joint = *joint;
+            readEntry(entry, field, parsed);
+            target.push_back(parsed);
+        }
+    }
+
+    void readEffects(const Json& effects) {
+        if (!checkObject(effects, "effects", {"gravity", "springs", "viscous", "coulomb", "torques"})) return;
+        if (member(effects, "gravity")) {
+            Eigen::Vector3d gravity = Eigen::Vector3d::Zero();
+            readVector3(effects, "effects", "gravity", gravity);
+            scene_.effects.gravity = gravity;
+        }
+        Effects& e = scene_.effects;
+        readList<JointSpring>(effects, "springs", e.springs, [this](const Json& j, const std::string& p, JointSpring& s) {
+            checkKeys(j, p, {"joint", "stiffness", "rest"});
+            readNumber(j, p, "stiffness", s.stiffness);
+            readNumber(j, p, "rest", s.rest, jointAngle(s.joint));
+        });
+        readList<ViscousFriction>(effects, "viscous", e.viscous,
+                                  [this](const Json& j, const std::string& p, ViscousFriction& v) {
+                                      checkKeys(j, p, {"joint", "coefficient"});
+                                      readNumber(j, p, "coefficient", v.coefficient);
+                                  });
+        readList<CoulombFriction>(effects, "coulomb", e.coulomb,
+                                  [this](const Json& j, const std::string& p, CoulombFriction& c) {
+                                      checkKeys(j, p, {"joint", "force", "smoothing", "model"});
+                                      readNumber(j, p, "force", c.force);
+                                      readNumber(j, p, "smoothing", c.smoothing);
+                                      if (const Json* model = member(j, "model"))
+                                          if (auto choice = readChoice(*model, child(p, "model"), {"tanh", "stick"}))
+                                              c.model = static_cast<CoulombModel>(*choice);
+                                  });
+        readList<JointTorque>(effects, "torques", e.torques,
+                              [this](const Json& j, const std::string& p, JointTorque& t) { readTorque(j, p, t); });
+    }
+
+    void readTorque(const Json& entry, const std::string& path, JointTorque& torque) {
+        static const Keys kinds = {"constant", "step", "sine", "ramp"};
+        static const Keys keysOf[] = {{"value"}, {"value", "at"}, {"amplitude", "frequency", "phase"}, {"slope", "start"}};
+        std::optional<std::size_t> kind = 0;  // constant unless said otherwise
+        if (const Json* kindValue = member(entry, "kind")) kind = readChoice(*kindValue, child(path, "kind"), kinds);
+        if (!kind) {  // the keys cannot be judged without the kind
+            checkKeys(entry, path, {"joint", "kind", "value", "at", "amplitude", "frequency", "phase", "slope", "start"});
+            return;
+        }
+        torque.kind = static_cast<TorqueKind>(*kind);
+        Keys allowed = {"joint", "kind"};
+        allowed.insert(allowed.end(), keysOf[*kind].begin(), keysOf[*kind].end());
+        checkKeys(entry, path, allowed, " for a " + kinds[*kind] + " torque");
+        readNumber(entry, path, "value", torque.value);
+        readNumber(entry, path, "at", torque.at);
+        readNumber(entry, path, "amplitude", torque.amplitude);
+        readNumber(entry, path, "frequency", torque.frequency);
+        readNumber(entry, path, "phase", torque.phase, Angle::Yes);
+        readNumber(entry, path, "slope", torque.slope);
+        readNumber(entry, path, "start", torque.start);
+    }
+
+    Eigen::VectorXd readVector(const Json* object, const std::string& key, Eigen::Index n) {
+        const Json* value = object ? member(*object, key) : nullptr;
+        if (!value) return Eigen::VectorXd::Zero(n);
+        const std::string field = child("initial", key);
+        if (!value->is_array()) {
+            error(field, "expected an array of numbers or expressions [...], got " + describe(*value));
+            return Eigen::VectorXd::Zero(n);
+        }
+        // Any length: whether it matches the joints is validation's call. Positions of
+        // revolute joints are angles; velocities are not (no deg/s).
+        Eigen::VectorXd vector = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(value->size()));
+        for (std::size_t i = 0; i < value->size(); ++i) {
+            const Angle angle = key == "q" ? jointAngle(static_cast<int>(i)) : Angle::No;
+            if (auto x = number((*value)[i], item(field, i), angle)) vector[static_cast<Eigen::Index>(i)] = *x;
+        }
+        return vector;
+    }
+
+    void readInitial(const Json* initial) {
+        if (initial && !checkObject(*initial, "initial", {"q", "qd"})) initial = nullptr;
+        const Eigen::Index n = scene_.dof();
+        scene_.initial.q = readVector(initial, "q", n);
+        scene_.initial.qd = readVector(initial, "qd", n);
+    }
+
+    void readSimulation(const Json& simulation) {
+        if (!checkObject(simulation, "simulation",
+                         {"duration", "integrator", "abs_tol", "rel_tol", "dt", "output_rate"}))
+            return;
+        SimulationSettings& s = scene_.simulation;
+        readNumber(simulation, "simulation", "duration", s.duration);
+        if (const Json* integrator = member(simulation, "integrator"))
+            readText(*integrator, "simulation.integrator", s.integrator);
+        readNumber(simulation, "simulation", "abs_tol", s.absTol);
+        readNumber(simulation, "simulation", "rel_tol", s.relTol);
+        readNumber(simulation, "simulation", "dt", s.dt);
+        readNumber(simulation, "simulation", "output_rate", s.outputRate);
+    }
+
+    std::vector<Diagnostic> errors_;
+    std::vector<Diagnostic> warnings_;
+    ParameterTable parameters_;
+    Scene scene_;
+};
+
+}  // namespace
+
+Scene readScene(const scene_json::Json& root, std::vector<Diagnostic> duplicates, std::vector<Diagnostic>* warnings) {
+    SceneReader reader(std::move(duplicates));
+    Scene scene = reader.read(root);
+    if (warnings) *warnings = reader.warnings();
+    return scene;
+}
+
+}  // namespace ll
