@@ -4,7 +4,7 @@
 
 #include "app/commands.hpp"
 #include "app/offscreen_gui.hpp"
-#include "ui/work_precision_plot.hpp"
+#include "ui/paint/work_precision_plot.hpp"
 
 namespace ll::cli {
 

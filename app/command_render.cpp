@@ -22,9 +22,9 @@
 #include "core/pipeline/display_derivation.hpp"
 #include "core/pipeline/scene_simulation.hpp"
 #include "core/present/localized_document.hpp"
-#include "ui/animation_export.hpp"
-#include "ui/headless_renderer.hpp"
-#include "ui/ffmpeg_encoder.hpp"
+#include "ui/document/animation_export.hpp"
+#include "ui/paint/headless_renderer.hpp"
+#include "ui/paint/ffmpeg_encoder.hpp"
 
 namespace ll::cli {
 namespace {

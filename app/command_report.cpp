@@ -1,5 +1,5 @@
 // `lagrangelab report SCENE --out DIR [--duration T]`: the lab-report bundle
-// (ui/lab_report.hpp) in one folder: the derivation PDF, the trajectory CSV, the energy
+// (ui/document/lab_report.hpp) in one folder: the derivation PDF, the trajectory CSV, the energy
 // and joint plots as SVG, the scene file, the composite slide video and an index.
 #include <cstdio>
 #include <filesystem>
@@ -16,8 +16,8 @@
 #include "core/pipeline/display_derivation.hpp"
 #include "core/pipeline/scene_simulation.hpp"
 #include "core/present/localized_document.hpp"
-#include "ui/lab_report.hpp"
-#include "ui/math_typesetter.hpp"
+#include "ui/document/lab_report.hpp"
+#include "ui/paint/math_typesetter.hpp"
 
 namespace ll::cli {
 

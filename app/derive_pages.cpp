@@ -6,7 +6,7 @@
 #include "app/commands.hpp"
 #include "app/cli_options.hpp"
 #include "app/offscreen_gui.hpp"
-#include "ui/derivation_pages.hpp"
+#include "ui/paint/derivation_pages.hpp"
 
 namespace ll::cli {
 namespace {

@@ -1,6 +1,6 @@
 // `lagrangelab [SCENE] [--screenshot FILE.png [--play SECONDS] [--step N] [--teach q1,...]
 // [--select ENTRY] [--pick-link I] [--at T] [--tab NAME] [--joint J] [--derivation VIEW]] [--present]`:
-// the desktop window (ui/main_window.hpp); the options picture any state from the command line.
+// the desktop window (ui/window/main_window.hpp); the options picture any state from the command line.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -25,13 +25,17 @@
 #include "app/offscreen_gui.hpp"
 #include "app/pixel_size.hpp"
 #include "core/io/atomic_file.hpp"
-#include "ui/main_window.hpp"
-#include "ui/playback_bar.hpp"
-#include "ui/app_language.hpp"
-#include "ui/dh_step_panel.hpp"
-#include "ui/scene_view.hpp"
-#include "ui/torque_pane.hpp"
-#include "ui/work_precision_pane.hpp"
+#include "ui/window/main_window.hpp"
+#include "ui/window/language_menu.hpp"
+#include "ui/window/entry_linking.hpp"
+#include "ui/window/presentation_mode.hpp"
+#include "ui/window/autosave.hpp"
+#include "ui/window/playback_bar.hpp"
+#include "ui/document/app_language.hpp"
+#include "ui/window/dh_step_panel.hpp"
+#include "ui/window/scene_view.hpp"
+#include "ui/window/torque_pane.hpp"
+#include "ui/window/work_precision_pane.hpp"
 
 namespace ll::cli {
 
@@ -74,7 +78,7 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
         ui::startLanguage(languageGiven() ? std::optional(presentation().language) : std::nullopt);
     if (!ui::installLanguage(language)) std::cerr << "warning: the Danish catalogue could not be loaded; the window stays English\n";
     ui::MainWindow window;
-    window.setPresentation({language, notationGiven() ? presentation().notation : ui::rememberedNotation()});
+    window.language().set({language, notationGiven() ? presentation().notation : ui::rememberedNotation()});
     QStringList errors;
     if (!window.openFile(QString::fromStdString(scene), &errors, true)) {
         for (const QString& e : errors) std::cerr << "error: " << e.toStdString() << '\n';
@@ -85,12 +89,12 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
     if (scripted) window.setAskBeforeClosing(false);
     if (!scripted && !options.has("size")) window.rememberLayout();
     window.show();
-    if (!scripted) window.offerRecovery();
+    if (!scripted) window.autosave().offer();
     if (options.has("present")) {
         // A scripted picture presents in a window of --size (the projector's pixels), the
         // window full screen otherwise.
-        if (scripted || options.has("size")) window.setPresentationSize(QSize(size.width, size.height));
-        window.setPresentationMode(true);
+        if (scripted || options.has("size")) window.presentationMode().setSize(QSize(size.width, size.height));
+        window.presentationMode().setOn(true);
     }
 
     if (options.has("first-frame")) {
@@ -112,14 +116,14 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
         return 1;
     }
     const int n = window.document().validScene().dof();
-    if (options.has("select") && !window.selectEntry(QString::fromStdString(options.text("select"))))
+    if (options.has("select") && !window.linking().selectEntry(QString::fromStdString(options.text("select"))))
         throw UsageError("--select: the derivation of " + scene + " has no entry '" + options.text("select") +
                          "' (names as the Entries tab lists them: b12, g2, beta23_4, p_c2)");
     if (options.has("pick-link")) {
         const double link = options.number("pick-link", 0);
         if (link < 1 || link > n || link != std::floor(link))
             throw UsageError("--pick-link: " + options.text("pick-link") + " is not a link 1.." + std::to_string(n));
-        window.pickLink(static_cast<int>(link) - 1);
+        window.linking().pickLink(static_cast<int>(link) - 1);
     }
     if (options.has("at")) {
         const double end = window.playback().endTime();

@@ -34,11 +34,13 @@
 #include "core/pipeline/scene_simulation.hpp"
 #include "core/pipeline/scene_visual.hpp"
 #include "core/visual/trajectory_sampler.hpp"
-#include "ui/joint_table_model.hpp"
-#include "ui/derivation_view.hpp"
-#include "ui/main_window.hpp"
-#include "ui/playback_bar.hpp"
-#include "ui/scene_view.hpp"
+#include "ui/document/joint_table_model.hpp"
+#include "ui/window/derivation_view.hpp"
+#include "ui/window/main_window.hpp"
+#include "ui/window/entry_linking.hpp"
+#include "ui/window/model_editor.hpp"
+#include "ui/window/playback_bar.hpp"
+#include "ui/window/scene_view.hpp"
 
 namespace ll::bench {
 
@@ -79,7 +81,7 @@ void latency(const std::string& path, int runs) {
     }
     waitFor([&] { return window.result() && !window.liveDerivation().busy(); }, 120);
     auto [row, column] = editableCell(window.document());
-    ui::JointTableModel& model = window.jointModel();
+    ui::JointTableModel& model = window.editor().joints();
     const QModelIndex cell = model.index(row, column);
     const QString original = model.data(cell, Qt::EditRole).toString();
     double value = original.toDouble();
@@ -212,7 +214,7 @@ void linkedFrameRate(const std::string& path, const QString& entry, int runs) {
     window.show();
     if (!window.openFile(QString::fromStdString(path), nullptr, true) ||
         !waitFor([&] { return window.result() && !window.liveDerivation().busy() && window.selection().catalogue(); }, 120) ||
-        !window.selectEntry(entry)) {
+        !window.linking().selectEntry(entry)) {
         std::printf("%s: could not pick %s\n", path.c_str(), qPrintable(entry));
         return;
     }

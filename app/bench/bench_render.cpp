@@ -26,10 +26,10 @@
 #include "core/pipeline/scene_visual.hpp"
 #include "core/visual/visual_scene.hpp"
 #include "core/pipeline/scene_simulation.hpp"
-#include "ui/animation_export.hpp"
+#include "ui/document/animation_export.hpp"
 #include "core/io/data_directory.hpp"
-#include "ui/headless_renderer.hpp"
-#include "ui/osg_scene.hpp"
+#include "ui/paint/headless_renderer.hpp"
+#include "ui/paint/osg_scene.hpp"
 
 namespace ll::bench {
 

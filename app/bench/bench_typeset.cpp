@@ -23,7 +23,7 @@
 #include "core/pipeline/scene_derivation.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/structured_dynamics.hpp"
-#include "ui/derivation_pages.hpp"
+#include "ui/paint/derivation_pages.hpp"
 
 namespace ll::bench {
 

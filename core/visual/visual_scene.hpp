@@ -1,7 +1,7 @@
 #pragma once
 // The 3D picture of a scene, renderer-neutral (MuJoCo's abstract mjvScene idea): what
 // to draw and where, as plain data. Built once from a Scene; `pose(q, t)` then moves
-// every part with no allocation, and a renderer (ui/osg_scene.hpp, for the window and
+// every part with no allocation, and a renderer (ui/paint/osg_scene.hpp, for the window and
 // the headless export alike) only copies poses into its transforms.
 //
 // A robot is drawn as the textbook's DH stick figure, solid (standard convention;

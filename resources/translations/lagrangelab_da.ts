@@ -2,24 +2,99 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="da_DK">
 <context>
+    <name>Autosave</name>
+    <message>
+        <location filename="../../ui/window/autosave.cpp" line="+32" />
+        <source>Autosave failed: %1</source>
+        <translation>Automatisk gemning mislykkedes: %1</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>a new scene that was never saved</source>
+        <translation>en ny scene, der aldrig er blevet gemt</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 (in %2)</source>
+        <translation>%1 (i %2)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>LagrangeLab did not close normally while %1 had unsaved edits (autosaved %2).</source>
+        <translation>LagrangeLab blev ikke lukket normalt, mens %1 havde ændringer, der ikke var gemt (automatisk gemt %2).</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>%1 no longer exists: the recovered scene is all that is left of it.</source>
+        <translation>%1 findes ikke længere: den gendannede scene er alt, hvad der er tilbage af den.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Warning: %1 has changed on disk since these edits were made. Restoring puts the recovered scene on top of the file as it is now; undo returns to it.</source>
+        <translation>Advarsel: %1 er blevet ændret på disken, siden disse ændringer blev foretaget. Gendannelse lægger den gendannede scene oven på filen, som den ser ud nu; Fortryd bringer dig tilbage til filen.</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>What the edits change:</source>
+        <translation>Ændringerne omfatter:</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>Restore unsaved edits</source>
+        <translation>Gendan ikke-gemte ændringer</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>Restore unsaved work?</source>
+        <translation>Gendan ikke-gemt arbejde?</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Restore the edits</source>
+        <translation>Gendan ændringerne</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <location line="+9" />
+        <source>Discard them</source>
+        <translation>Kassér dem</translation>
+    </message>
+    <message>
+        <location line="-8" />
+        <location line="+9" />
+        <source>Keep for later</source>
+        <translation>Behold til senere</translation>
+    </message>
+    <message>
+        <location line="-2" />
+        <source>Open them in a new window</source>
+        <translation>Åbn dem i et nyt vindue</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>Restore unsaved work</source>
+        <translation>Gendan ikke-gemt arbejde</translation>
+    </message>
+</context>
+<context>
     <name>DerivationPanel</name>
     <message>
-        <location filename="../../ui/derivation_panel.cpp" line="+107"/>
+        <location filename="../../ui/window/derivation_panel.cpp" line="+107" />
         <source>Deriving…</source>
         <translation>Udleder…</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+6" />
         <source>Derivation stopped: the model is being edited</source>
         <translation>Udledningen er stoppet: modellen er ved at blive redigeret</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+4" />
         <source>The derivation stopped: %1</source>
         <translation>Udledningen stoppede: %1</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+2" />
         <source>Derived in %1 ms</source>
         <translation>Udledt på %1 ms</translation>
     </message>
@@ -27,59 +102,59 @@
 <context>
     <name>DerivationView</name>
     <message>
-        <location filename="../../ui/derivation_view.cpp" line="+283"/>
+        <location filename="../../ui/window/derivation_view.cpp" line="+283" />
         <source>Previous</source>
         <translation>Forrige</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+1" />
         <source>Next</source>
         <translation>Næste</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+4" />
         <source>No scene</source>
         <translation>Ingen scene</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+35" />
         <source>DH parameters</source>
         <translation>DH-parametre</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+1" />
         <source>Results at the teach pose</source>
         <translation>Resultater i teach-stillingen</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <location line="+4"/>
+        <location line="+5" />
+        <location line="+4" />
         <source>Step %1: %2</source>
         <translation>Trin %1: %2</translation>
     </message>
     <message>
-        <location line="+45"/>
-        <location line="+28"/>
+        <location line="+45" />
+        <location line="+28" />
         <source>Deriving…</source>
         <translation>Udleder…</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+14" />
         <source>Error: %1</source>
         <translation>Fejl: %1</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+4" />
         <source>%1 (%2 form)</source>
         <translation>%1 (%2 form)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+1" />
         <source>structured</source>
         <translation>struktureret</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+0" />
         <source>expanded</source>
         <translation>ekspanderet</translation>
     </message>
@@ -87,62 +162,62 @@
 <context>
     <name>DhStepPanel</name>
     <message>
-        <location filename="../../ui/dh_step_panel.cpp" line="+26"/>
+        <location filename="../../ui/window/dh_step_panel.cpp" line="+26" />
         <source>Joint i</source>
         <translation>Led i</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+6" />
         <source>◀ Previous motion</source>
         <translation>◀ Forrige bevægelse</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+1" />
         <source>Next motion ▶</source>
         <translation>Næste bevægelse ▶</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+1" />
         <source>Animate the next motion</source>
         <translation>Animér den næste bevægelse</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+4" />
         <source>Every parameter on the robot</source>
         <translation>Alle parametre på robotten</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Each row&apos;s θ, d, a and α drawn as arcs and arrows with their values, at the pose shown</source>
+        <location line="+1" />
+        <source>Each row's θ, d, a and α drawn as arcs and arrows with their values, at the pose shown</source>
         <translation>Hver rækkes θ, d, a og α tegnet som buer og pile med deres værdier, i den viste stilling</translation>
     </message>
     <message>
-        <location line="+87"/>
-        <source>A typed Lagrangian has no DH table: the step-through shows a robot&apos;s rows.</source>
+        <location line="+87" />
+        <source>A typed Lagrangian has no DH table: the step-through shows a robot's rows.</source>
         <translation>En indtastet Lagrange-funktion har ingen DH-tabel: gennemgangen viser en robots rækker.</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+44" />
         <source>Frame %1 becomes frame %2 by four motions, each along or about an axis of the moving frame.</source>
         <translation>Koordinatsystem %1 bliver til koordinatsystem %2 ved fire bevægelser, hver langs eller om en akse i det bevægede koordinatsystem.</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+9" />
         <source>(q&lt;sub&gt;%1&lt;/sub&gt; included)</source>
         <translation>(q&lt;sub&gt;%1&lt;/sub&gt; medregnet)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+1" />
         <source>next</source>
         <translation>næste</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+3" />
         <source>Motions done: %1 of 4</source>
         <translation>Udførte bevægelser: %1 af 4</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+10" />
         <source>lengths in m</source>
         <translation>længder i m</translation>
     </message>
@@ -150,15 +225,23 @@
 <context>
     <name>EnergyInset</name>
     <message>
-        <location filename="../../ui/energy_inset.cpp" line="+154"/>
+        <location filename="../../ui/paint/energy_inset.cpp" line="+154" />
         <source>%1 J</source>
         <translation>%1 J</translation>
     </message>
 </context>
 <context>
+    <name>EntryLinking</name>
+    <message>
+        <location filename="../../ui/window/entry_linking.cpp" line="+36" />
+        <source>Click an entry of the derivation (b11, g2, …) or a link in the 3D view to see what feeds it and its value now.</source>
+        <translation>Klik på et element i udledningen (b11, g2, …) eller på et link i 3D-visningen for at se, hvad der bidrager til det, og dets aktuelle værdi.</translation>
+    </message>
+</context>
+<context>
     <name>EntryList</name>
     <message>
-        <location filename="../../ui/entry_list.cpp" line="+85"/>
+        <location filename="../../ui/window/entry_list.cpp" line="+85" />
         <source>Find an entry: b11, g2, beta, p_c…</source>
         <translation>Find et element: b11, g2, beta, p_c…</translation>
     </message>
@@ -166,22 +249,22 @@
 <context>
     <name>EntryListModel</name>
     <message>
-        <location line="-12"/>
+        <location line="-12" />
         <source>entry</source>
         <translation>element</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+1" />
         <source>value now</source>
         <translation>aktuel værdi</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+1" />
         <source>unit</source>
         <translation>enhed</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+1" />
         <source>links</source>
         <translation>links</translation>
     </message>
@@ -189,7 +272,7 @@
 <context>
     <name>EntrySelection</name>
     <message numerus="yes">
-        <location filename="../../ui/entry_selection.cpp" line="+200"/>
+        <location filename="../../ui/document/entry_selection.cpp" line="+200" />
         <source>%1 picked: it feeds %n entries of the derivation, marked in the list and the typeset view</source>
         <translation>
             <numerusform>%1 valgt: det indgår i %n element i udledningen, markeret i listen og i den typesatte visning</numerusform>
@@ -197,42 +280,42 @@
         </translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+7" />
         <source>at the teach pose</source>
         <translation>i teach-stillingen</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+0" />
         <source>at t = %1 s</source>
         <translation>ved t = %1 s</translation>
     </message>
     <message>
-        <location line="+14"/>
-        <source>the motor&apos;s armature</source>
+        <location line="+14" />
+        <source>the motor's armature</source>
         <translation>motorens rotorinerti</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+0" />
         <source>the springs</source>
         <translation>fjedrene</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>no link&apos;s parameters occur in it</source>
+        <location line="+2" />
+        <source>no link's parameters occur in it</source>
         <translation>ingen linkparametre indgår i det</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+0" />
         <source>fed by %1</source>
         <translation>bidrag fra %1</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+2" />
         <source>depends on %1</source>
         <translation>afhænger af %1</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+1" />
         <source>with the velocities %1</source>
         <translation>med hastighederne %1</translation>
     </message>
@@ -240,965 +323,143 @@
 <context>
     <name>ExampleGallery</name>
     <message>
-        <location filename="../../ui/example_gallery.cpp" line="+19"/>
+        <location filename="../../ui/window/example_gallery.cpp" line="+19" />
         <source>Example gallery</source>
         <translation>Eksempelgalleri</translation>
     </message>
 </context>
 <context>
-    <name>FieldListModel</name>
+    <name>ExportActions</name>
     <message>
-        <location filename="../../ui/field_list_model.cpp" line="+52"/>
-        <source>%1 = %2</source>
-        <translation>%1 = %2</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>field</source>
-        <translation>felt</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>value</source>
-        <translation>værdi</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>unit</source>
-        <translation>enhed</translation>
-    </message>
-</context>
-<context>
-    <name>FrameOverlay</name>
-    <message>
-        <location filename="../../ui/frame_overlay.cpp" line="+32"/>
-        <source>t = %1 s</source>
-        <translation>t = %1 s</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>   (%1× real time)</source>
-        <translation>   (%1× realtid)</translation>
-    </message>
-</context>
-<context>
-    <name>JointTableModel</name>
-    <message>
-        <location filename="../../ui/joint_table_model.cpp" line="+77"/>
-        <source>revolute</source>
-        <translation>roterende</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>prismatic</source>
-        <translation>prismatisk</translation>
-    </message>
-    <message>
-        <location line="+32"/>
-        <location line="+3"/>
-        <source>Joint %1: %2 = %3</source>
-        <translation>Led %1: %2 = %3</translation>
-    </message>
-    <message>
-        <location line="+13"/>
-        <source>joint %1</source>
-        <translation>led %1</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>[°]</source>
-        <translation>[°]</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>[rad]</source>
-        <translation>[rad]</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>type</source>
-        <translation>type</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>a [m]</source>
-        <translation>a [m]</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>α %1</source>
-        <translation>α %1</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>d [m]</source>
-        <translation>d [m]</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>θ offset %1</source>
-        <translation>θ-offset %1</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>mass [kg]</source>
-        <translation>masse [kg]</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>COM x [m]</source>
-        <translation>massemidtpunkt x [m]</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>COM y [m]</source>
-        <translation>massemidtpunkt y [m]</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>COM z [m]</source>
-        <translation>massemidtpunkt z [m]</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Ixx [kg·m²]</source>
-        <translation>Ixx [kg·m²]</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Iyy [kg·m²]</source>
-        <translation>Iyy [kg·m²]</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Izz [kg·m²]</source>
-        <translation>Izz [kg·m²]</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Ixy [kg·m²]</source>
-        <translation>Ixy [kg·m²]</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Ixz [kg·m²]</source>
-        <translation>Ixz [kg·m²]</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Iyz [kg·m²]</source>
-        <translation>Iyz [kg·m²]</translation>
-    </message>
-    <message>
-        <location line="+40"/>
-        <source>Add joint %1</source>
-        <translation>Tilføj led %1</translation>
-    </message>
-    <message>
-        <location line="+11"/>
-        <source>Remove joint %1</source>
-        <translation>Fjern led %1</translation>
-    </message>
-    <message>
-        <location line="+12"/>
-        <source>Move joint %1 to %2</source>
-        <translation>Flyt led %1 til %2</translation>
-    </message>
-    <message>
-        <location line="+29"/>
-        <source>rod</source>
-        <translation>stang</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>cylinder</source>
-        <translation>cylinder</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>disc</source>
-        <translation>skive</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>box</source>
-        <translation>kasse</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>sphere</source>
-        <translation>kugle</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Joint %1: inertia of a %2</source>
-        <translation>Led %1: inerti ud fra formen %2</translation>
-    </message>
-</context>
-<context>
-    <name>MainWindow</name>
-    <message>
-        <location filename="../../ui/main_window.cpp" line="+174"/>
-        <source>standard (Spong)</source>
-        <translation>standard (Spong)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>modified (Craig)</source>
-        <translation>modificeret (Craig)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>angles in degrees</source>
-        <translation>vinkler i grader</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>convention</source>
-        <translation>konvention</translation>
-    </message>
-    <message>
-        <location line="+12"/>
-        <source>Add joint</source>
-        <translation>Tilføj led</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <location line="+51"/>
-        <source>Remove</source>
-        <translation>Fjern</translation>
-    </message>
-    <message>
-        <location line="-50"/>
-        <source>Move up</source>
-        <translation>Flyt op</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Move down</source>
-        <translation>Flyt ned</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>Convention: %1</source>
-        <translation>Konvention: %1</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>DH</source>
-        <translation>DH</translation>
-    </message>
-    <message>
-        <location line="+10"/>
-        <source>rod (length L)</source>
-        <translation>stang (længde L)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>cylinder (r, h)</source>
-        <translation>cylinder (r, h)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>disc (r)</source>
-        <translation>skive (r)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>box (x, y, z)</source>
-        <translation>kasse (x, y, z)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>sphere (r)</source>
-        <translation>kugle (r)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Fill inertia from shape…</source>
-        <translation>Udfyld inerti ud fra form…</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Inertia from a shape</source>
-        <translation>Inerti ud fra en form</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Joint %1, %2: dimensions in metres, comma-separated (numbers or parameters)</source>
-        <translation>Led %1, %2: dimensioner i meter, adskilt med komma (tal eller parametre)</translation>
-    </message>
-    <message>
-        <location line="+9"/>
-        <source>Inertials</source>
-        <translation>Masse og inerti</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>Add parameter…</source>
-        <translation>Tilføj parameter…</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Rename…</source>
-        <translation>Omdøb…</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <location line="+3"/>
-        <source>Rename parameter</source>
-        <translation>Omdøb parameter</translation>
-    </message>
-    <message>
-        <location line="-3"/>
-        <source>New name of %1 (every expression using it follows):</source>
-        <translation>Nyt navn til %1 (alle udtryk, der bruger den, opdateres):</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <location line="+3"/>
-        <location line="+3"/>
-        <source>Add parameter</source>
-        <translation>Tilføj parameter</translation>
-    </message>
-    <message>
-        <location line="-6"/>
-        <source>Name (letters, digits, _; e.g. m3, l2, k):</source>
-        <translation>Navn (bogstaver, cifre, _; f.eks. m3, l2, k):</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Value of %1 (a number, SI units):</source>
-        <translation>Værdi af %1 (et tal i SI-enheder):</translation>
-    </message>
-    <message>
-        <location line="+14"/>
-        <source>Parameters</source>
-        <translation>Parametre</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Initial &amp;&amp; gravity</source>
-        <translation>Startværdier &amp;&amp; tyngdekraft</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Solver</source>
-        <translation>Løser</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Lagrangian</source>
-        <translation>Lagrange-funktion</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>Apply (undoable)</source>
-        <translation>Anvend (kan fortrydes)</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Edit scene JSON</source>
-        <translation>Rediger scenens JSON</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Scene JSON</source>
-        <translation>Scenens JSON</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>JSON</source>
-        <translation>JSON</translation>
-    </message>
-    <message>
-        <location line="+21"/>
-        <source>Fit</source>
-        <translation>Tilpas</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>front</source>
-        <translation>forfra</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>side</source>
-        <translation>fra siden</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>top</source>
-        <translation>oppefra</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>iso</source>
-        <translation>iso</translation>
-    </message>
-    <message>
-        <location line="+9"/>
-        <source>frames</source>
-        <translation>koordinatsystemer</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>labels</source>
-        <translation>etiketter</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>COMs</source>
-        <translation>massemidtpunkter</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>trail</source>
-        <translation>spor</translation>
-    </message>
-    <message>
-        <location line="+27"/>
-        <source>Model</source>
-        <translation>Model</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>Checks (errors keep the last valid model on screen):</source>
-        <translation>Kontroller (ved fejl bliver den seneste gyldige model stående på skærmen):</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>Derivation</source>
-        <translation>Udledning</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>◀ Previous step</source>
-        <translation>◀ Forrige trin</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Next step ▶</source>
-        <translation>Næste trin ▶</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>step %1 (%2 of %3)</source>
-        <translation>trin %1 (%2 af %3)</translation>
-    </message>
-    <message>
-        <location line="+17"/>
-        <source>Typeset</source>
-        <translation>Typesat</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Text</source>
-        <translation>Tekst</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Entries</source>
-        <translation>Elementer</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>Plots</source>
-        <translation>Grafer</translation>
-    </message>
-    <message>
-        <location line="+16"/>
-        <source>Energy</source>
-        <translation>Energi</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Joints q, dq/dt</source>
-        <translation>Led q, dq/dt</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <location line="+202"/>
-        <source>Teach</source>
-        <translation>Teach</translation>
-    </message>
-    <message>
-        <location line="-201"/>
-        <source>Torques</source>
-        <translation>Momenter</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Properties</source>
-        <translation>Egenskaber</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Work–precision</source>
-        <translation>Beregningsarbejde–præcision</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>DH step-through</source>
-        <translation>DH-gennemgang</translation>
-    </message>
-    <message>
-        <location line="+66"/>
-        <source>&amp;File</source>
-        <translation>&amp;Filer</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>&amp;Open…</source>
-        <translation>&amp;Åbn…</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Examples</source>
-        <translation>Eksempler</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Gallery…</source>
-        <translation>Galleri…</translation>
-    </message>
-    <message>
-        <location line="+13"/>
-        <source>Recent files</source>
-        <translation>Seneste filer</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>&amp;Save</source>
-        <translation>&amp;Gem</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Save &amp;as…</source>
-        <translation>Gem &amp;som…</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <location line="+877"/>
-        <source>Export</source>
-        <translation>Eksportér</translation>
-    </message>
-    <message>
-        <location line="-876"/>
+        <location filename="../../ui/window/export_actions.cpp" line="+44" />
         <source>Screenshot (PNG)…</source>
         <translation>Skærmbillede (PNG)…</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+1" />
         <source>Plot (PNG, SVG or CSV)…</source>
         <translation>Graf (PNG, SVG eller CSV)…</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+1" />
         <source>Derivation (PDF, SVG, PNG, LaTeX or text)…</source>
         <translation>Udledning (PDF, SVG, PNG, LaTeX eller tekst)…</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+1" />
         <source>Animation (MP4, WebM, GIF)…</source>
         <translation>Animation (MP4, WebM, GIF)…</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+3" />
         <source>Video for slides, %1×%2 (3D view, equation, energy)…</source>
         <translation>Video til slides, %1×%2 (3D-visning, ligning, energi)…</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <location line="+4"/>
-        <source>Export video for slides</source>
-        <translation>Eksportér video til slides</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+2" />
         <source>Lab report (PDF, CSV, SVG plots, scene, video) into a folder…</source>
         <translation>Laboratorierapport (PDF, CSV, SVG-plot, scene, video) i en mappe…</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Lab report: choose or make a folder</source>
-        <translation>Laboratorierapport: vælg eller opret en mappe</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Lab report</source>
-        <translation>Laboratorierapport</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>&amp;Quit</source>
-        <translation>&amp;Afslut</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>&amp;Edit</source>
-        <translation>&amp;Rediger</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>&amp;Undo</source>
-        <translation>&amp;Fortryd</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>&amp;Redo</source>
-        <translation>&amp;Gentag</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>&amp;Simulation</source>
-        <translation>&amp;Simulering</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Play / pause</source>
-        <translation>Afspil/pause</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Restart</source>
-        <translation>Start forfra</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Ghost run</source>
-        <translation>Spøgelseskørsel</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>none</source>
-        <translation>ingen</translation>
-    </message>
-    <message>
-        <location line="+25"/>
-        <source>&amp;View</source>
-        <translation>&amp;Vis</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Presentation mode</source>
-        <translation>Præsentationstilstand</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Fit view</source>
-        <translation>Tilpas visning</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>&amp;Language</source>
-        <translation>&amp;Sprog</translation>
-    </message>
-    <message>
-        <location line="+12"/>
-        <source>The derivation is shown in the new language now; the menus and panels follow when LagrangeLab starts again.</source>
-        <translation>Udledningen vises nu på det nye sprog; menuer og paneler følger med, når LagrangeLab startes igen.</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>&amp;Notation</source>
-        <translation>&amp;Notation</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>The course notes: B q̈ + C q̇ + g = Q</source>
-        <translation>Kursusnoterne: B q̈ + C q̇ + g = Q</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Siciliano: B q̈ + C q̇ + g = τ</source>
-        <translation>Siciliano: B q̈ + C q̇ + g = τ</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Spong: D q̈ + C q̇ + g = τ</source>
-        <translation>Spong: D q̈ + C q̇ + g = τ</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Craig: M Θ̈ + V + G = τ (modified DH)</source>
-        <translation>Craig: M Θ̈ + V + G = τ (modificeret DH)</translation>
-    </message>
-    <message>
-        <location line="+12"/>
-        <source>Main</source>
-        <translation>Hovedværktøjslinje</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Open</source>
-        <translation>Åbn</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <location line="+537"/>
-        <location line="+11"/>
-        <source>Save</source>
-        <translation>Gem</translation>
-    </message>
-    <message>
-        <location line="-544"/>
-        <source>▶ Play</source>
-        <translation>▶ Afspil</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Present</source>
-        <translation>Præsentér</translation>
-    </message>
-    <message>
-        <location line="+18"/>
-        <source>hint: it happened with your edit of %1</source>
-        <translation>tip: det skete ved din ændring af %1</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>no errors, no warnings</source>
-        <translation>ingen fejl, ingen advarsler</translation>
-    </message>
-    <message>
-        <location line="+26"/>
-        <source>Simulation failed: %1</source>
-        <translation>Simuleringen mislykkedes: %1</translation>
-    </message>
-    <message>
-        <location line="+120"/>
-        <source>Click an entry of the derivation (b11, g2, …) or a link in the 3D view to see what feeds it and its value now.</source>
-        <translation>Klik på et element i udledningen (b11, g2, …) eller på et link i 3D-visningen for at se, hvad der bidrager til det, og dets aktuelle værdi.</translation>
-    </message>
-    <message>
-        <location line="+102"/>
-        <source>simulating…</source>
-        <translation>simulerer…</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>dt %1 s</source>
-        <translation>dt %1 s</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>tol %1</source>
-        <translation>tol %1</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>%1 · %2 · %3 steps · |ΔE|/E %4 · %5× real time · simulated in %6 ms</source>
-        <translation>%1 · %2 · %3 skridt · |ΔE|/E %4 · %5× realtid · simuleret på %6 ms</translation>
-    </message>
-    <message numerus="yes">
-        <location line="+6"/>
-        <source> · %n warning(s)</source>
-        <translation>
-            <numerusform> · %n advarsel</numerusform>
-            <numerusform> · %n advarsler</numerusform>
-        </translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source> · the model has errors: showing the last valid one</source>
-        <translation> · modellen har fejl: viser den seneste gyldige</translation>
-    </message>
-    <message>
-        <location line="+179"/>
-        <source>%1: another file is being opened</source>
-        <translation>%1: en anden fil er ved at blive åbnet</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>Opening %1…</source>
-        <translation>Åbner %1…</translation>
-    </message>
-    <message>
-        <location line="+17"/>
-        <source>Cannot open %1</source>
-        <translation>Kan ikke åbne %1</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>The scene has errors; the open scene is kept.</source>
-        <translation>Scenen indeholder fejl; den åbne scene bevares.</translation>
-    </message>
-    <message numerus="yes">
-        <location line="+5"/>
-        <source>%1: %n error(s), nothing changed</source>
-        <translation>
-            <numerusform>%1: %n fejl, intet er ændret</numerusform>
-            <numerusform>%1: %n fejl, intet er ændret</numerusform>
-        </translation>
-    </message>
-    <message>
-        <location line="+29"/>
-        <source>Open scene</source>
-        <translation>Åbn scene</translation>
-    </message>
-    <message>
-        <location line="+15"/>
-        <source>Save scene as</source>
-        <translation>Gem scene som</translation>
-    </message>
-    <message>
-        <location line="+12"/>
-        <source>Unsaved changes</source>
-        <translation>Ikke-gemte ændringer</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>The scene has unsaved changes. Save them?</source>
-        <translation>Scenen har ændringer, der ikke er gemt. Vil du gemme dem?</translation>
-    </message>
-    <message>
-        <location line="+44"/>
-        <source>%1%2 — LagrangeLab</source>
-        <translation>%1%2 — LagrangeLab</translation>
-    </message>
-    <message>
-        <location line="+31"/>
-        <source>Autosave failed: %1</source>
-        <translation>Automatisk gemning mislykkedes: %1</translation>
-    </message>
-    <message>
-        <location line="+13"/>
-        <source>a new scene that was never saved</source>
-        <translation>en ny scene, der aldrig er blevet gemt</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>%1 (in %2)</source>
-        <translation>%1 (i %2)</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>LagrangeLab did not close normally while %1 had unsaved edits (autosaved %2).</source>
-        <translation>LagrangeLab blev ikke lukket normalt, mens %1 havde ændringer, der ikke var gemt (automatisk gemt %2).</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>%1 no longer exists: the recovered scene is all that is left of it.</source>
-        <translation>%1 findes ikke længere: den gendannede scene er alt, hvad der er tilbage af den.</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Warning: %1 has changed on disk since these edits were made. Restoring puts the recovered scene on top of the file as it is now; undo returns to it.</source>
-        <translation>Advarsel: %1 er blevet ændret på disken, siden disse ændringer blev foretaget. Gendannelse lægger den gendannede scene oven på filen, som den ser ud nu; Fortryd bringer dig tilbage til filen.</translation>
-    </message>
-    <message>
-        <location line="+11"/>
-        <source>What the edits change:</source>
-        <translation>Ændringerne omfatter:</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>Restore unsaved edits</source>
-        <translation>Gendan ikke-gemte ændringer</translation>
-    </message>
-    <message>
-        <location line="+12"/>
-        <source>Restore unsaved work?</source>
-        <translation>Gendan ikke-gemt arbejde?</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Restore the edits</source>
-        <translation>Gendan ændringerne</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <location line="+9"/>
-        <source>Discard them</source>
-        <translation>Kassér dem</translation>
-    </message>
-    <message>
-        <location line="-8"/>
-        <location line="+9"/>
-        <source>Keep for later</source>
-        <translation>Behold til senere</translation>
-    </message>
-    <message>
-        <location line="-2"/>
-        <source>Open them in a new window</source>
-        <translation>Åbn dem i et nyt vindue</translation>
-    </message>
-    <message>
-        <location line="+14"/>
-        <source>Restore unsaved work</source>
-        <translation>Gendan ikke-gemt arbejde</translation>
-    </message>
-    <message>
-        <location line="+22"/>
+        <location line="+7" />
         <source>Save screenshot</source>
         <translation>Gem skærmbillede</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+0" />
         <source>PNG images (*.png)</source>
         <translation>PNG-billeder (*.png)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+9" />
         <source>Screenshot</source>
         <translation>Skærmbillede</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <location line="+2"/>
+        <location line="+5" />
+        <location line="+2" />
         <source>Export plot</source>
         <translation>Eksportér graf</translation>
     </message>
     <message>
-        <location line="-2"/>
+        <location line="-2" />
         <source>PNG (*.png);;SVG (*.svg);;CSV (*.csv)</source>
         <translation>PNG (*.png);;SVG (*.svg);;CSV (*.csv)</translation>
     </message>
     <message>
-        <location line="+8"/>
-        <location line="+97"/>
-        <source>nothing to export: the simulation has not finished</source>
-        <translation>intet at eksportere: simuleringen er ikke færdig</translation>
-    </message>
-    <message>
-        <location line="-88"/>
-        <source>Plot written to %1</source>
-        <translation>Grafen er skrevet til %1</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>Written: %1</source>
-        <translation>Skrevet: %1</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Export of %1 stopped: %2</source>
-        <translation>Eksporten af %1 blev afbrudt: %2</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <location line="+7"/>
+        <location line="+8" />
+        <location line="+7" />
         <source>Export derivation</source>
         <translation>Eksportér udledning</translation>
     </message>
     <message>
-        <location line="-6"/>
+        <location line="-6" />
         <source>PDF, typeset (*.pdf);;SVG, typeset, a file per page (*.svg);;PNG, typeset, a file per page (*.png);;LaTeX (*.tex);;Text (*.txt)</source>
         <translation>PDF, typesat (*.pdf);;SVG, typesat, én fil pr. side (*.svg);;PNG, typesat, én fil pr. side (*.png);;LaTeX (*.tex);;Tekst (*.txt)</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+10" />
+        <source>Export video for slides</source>
+        <translation>Eksportér video til slides</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Export animation</source>
+        <translation>Eksportér animation</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>MP4 (*.mp4);;WebM (*.webm);;GIF (*.gif);;PNG still (*.png)</source>
+        <translation>MP4 (*.mp4);;WebM (*.webm);;GIF (*.gif);;PNG-stillbillede (*.png)</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Lab report: choose or make a folder</source>
+        <translation>Laboratorierapport: vælg eller opret en mappe</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Lab report</source>
+        <translation>Laboratorierapport</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <location line="+79" />
+        <source>nothing to export: the simulation has not finished</source>
+        <translation>intet at eksportere: simuleringen er ikke færdig</translation>
+    </message>
+    <message>
+        <location line="-70" />
+        <source>Plot written to %1</source>
+        <translation>Grafen er skrevet til %1</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>Written: %1</source>
+        <translation>Skrevet: %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Export</source>
+        <translation>Eksportér</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Export of %1 stopped: %2</source>
+        <translation>Eksporten af %1 blev afbrudt: %2</translation>
+    </message>
+    <message>
+        <location line="+6" />
         <source>%1: expected a .pdf, .svg, .png, .tex or .txt file</source>
         <translation>%1: forventede en .pdf-, .svg-, .png-, .tex- eller .txt-fil</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+4" />
         <source>nothing to export: the derivation has not finished</source>
         <translation>intet at eksportere: udledningen er ikke færdig</translation>
     </message>
     <message numerus="yes">
-        <location line="+20"/>
+        <location line="+20" />
         <source>%1 … %2 (%n pages)</source>
         <translation>
             <numerusform>%1 … %2 (%n side)</numerusform>
@@ -1206,12 +467,12 @@
         </translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+4" />
         <source>; 1 page file of an earlier, longer export remains beside it, not deleted: %1</source>
         <translation>; 1 sidefil fra en tidligere, længere eksport ligger stadig ved siden af og er ikke slettet: %1</translation>
     </message>
     <message numerus="yes">
-        <location line="+1"/>
+        <location line="+1" />
         <source>; %n page files of an earlier, longer export remain beside it, not deleted: %1</source>
         <translation>
             <numerusform>; %n sidefil fra en tidligere, længere eksport ligger stadig ved siden af og er ikke slettet: %1</numerusform>
@@ -1219,69 +480,742 @@
         </translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+16" />
         <source>Writing %1…</source>
         <translation>Skriver %1…</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <location line="+2"/>
-        <source>Export animation</source>
-        <translation>Eksportér animation</translation>
-    </message>
-    <message>
-        <location line="-941"/>
-        <location line="+939"/>
-        <source>MP4 (*.mp4);;WebM (*.webm);;GIF (*.gif);;PNG still (*.png)</source>
-        <translation>MP4 (*.mp4);;WebM (*.webm);;GIF (*.gif);;PNG-stillbillede (*.png)</translation>
-    </message>
-    <message>
-        <location line="+39"/>
+        <location line="+40" />
         <source>Rendering %1…</source>
         <translation>Renderer %1…</translation>
     </message>
     <message>
-        <location line="+13"/>
-        <source>Cancel</source>
-        <translation>Annuller</translation>
-    </message>
-    <message>
-        <location line="+29"/>
+        <location line="+9" />
         <source>nothing to report yet: the simulation or the derivation has not finished</source>
         <translation>intet at rapportere endnu: simuleringen eller udledningen er ikke færdig</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+9" />
         <source>Writing the lab report into %1…</source>
         <translation>Skriver laboratorierapporten i %1…</translation>
     </message>
     <message>
-        <location line="+14"/>
-        <source>parameter name &apos;%1&apos;: letters, digits and _ only, starting with a letter</source>
-        <translation>parameternavn &apos;%1&apos;: kun bogstaver, cifre og _, og det skal begynde med et bogstav</translation>
+        <location line="+13" />
+        <source>Cancel</source>
+        <translation>Annuller</translation>
+    </message>
+</context>
+<context>
+    <name>FieldListModel</name>
+    <message>
+        <location filename="../../ui/document/field_list_model.cpp" line="+52" />
+        <source>%1 = %2</source>
+        <translation>%1 = %2</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>parameter name &apos;%1&apos;: there is a parameter of that name</source>
-        <translation>parameternavn &apos;%1&apos;: der findes allerede en parameter med det navn</translation>
+        <location line="+7" />
+        <source>field</source>
+        <translation>felt</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+1" />
+        <source>value</source>
+        <translation>værdi</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>unit</source>
+        <translation>enhed</translation>
+    </message>
+</context>
+<context>
+    <name>FrameOverlay</name>
+    <message>
+        <location filename="../../ui/paint/frame_overlay.cpp" line="+32" />
+        <source>t = %1 s</source>
+        <translation>t = %1 s</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>   (%1× real time)</source>
+        <translation>   (%1× realtid)</translation>
+    </message>
+</context>
+<context>
+    <name>GhostRun</name>
+    <message>
+        <location filename="../../ui/window/ghost_run.cpp" line="+19" />
+        <source>Ghost run</source>
+        <translation>Spøgelseskørsel</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>none</source>
+        <translation>ingen</translation>
+    </message>
+</context>
+<context>
+    <name>JointTableModel</name>
+    <message>
+        <location filename="../../ui/document/joint_table_model.cpp" line="+77" />
+        <source>revolute</source>
+        <translation>roterende</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>prismatic</source>
+        <translation>prismatisk</translation>
+    </message>
+    <message>
+        <location line="+32" />
+        <location line="+3" />
+        <source>Joint %1: %2 = %3</source>
+        <translation>Led %1: %2 = %3</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>joint %1</source>
+        <translation>led %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>[°]</source>
+        <translation>[°]</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>[rad]</source>
+        <translation>[rad]</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>type</source>
+        <translation>type</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>a [m]</source>
+        <translation>a [m]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>α %1</source>
+        <translation>α %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>d [m]</source>
+        <translation>d [m]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>θ offset %1</source>
+        <translation>θ-offset %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>mass [kg]</source>
+        <translation>masse [kg]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>COM x [m]</source>
+        <translation>massemidtpunkt x [m]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>COM y [m]</source>
+        <translation>massemidtpunkt y [m]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>COM z [m]</source>
+        <translation>massemidtpunkt z [m]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Ixx [kg·m²]</source>
+        <translation>Ixx [kg·m²]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Iyy [kg·m²]</source>
+        <translation>Iyy [kg·m²]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Izz [kg·m²]</source>
+        <translation>Izz [kg·m²]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Ixy [kg·m²]</source>
+        <translation>Ixy [kg·m²]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Ixz [kg·m²]</source>
+        <translation>Ixz [kg·m²]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Iyz [kg·m²]</source>
+        <translation>Iyz [kg·m²]</translation>
+    </message>
+    <message>
+        <location line="+40" />
+        <source>Add joint %1</source>
+        <translation>Tilføj led %1</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>Remove joint %1</source>
+        <translation>Fjern led %1</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>Move joint %1 to %2</source>
+        <translation>Flyt led %1 til %2</translation>
+    </message>
+    <message>
+        <location line="+29" />
+        <source>rod</source>
+        <translation>stang</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>cylinder</source>
+        <translation>cylinder</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>disc</source>
+        <translation>skive</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>box</source>
+        <translation>kasse</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>sphere</source>
+        <translation>kugle</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Joint %1: inertia of a %2</source>
+        <translation>Led %1: inerti ud fra formen %2</translation>
+    </message>
+</context>
+<context>
+    <name>LanguageMenu</name>
+    <message>
+        <location filename="../../ui/window/language_menu.cpp" line="+18" />
+        <source>&amp;Language</source>
+        <translation>&amp;Sprog</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>The derivation is shown in the new language now; the menus and panels follow when LagrangeLab starts again.</source>
+        <translation>Udledningen vises nu på det nye sprog; menuer og paneler følger med, når LagrangeLab startes igen.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>&amp;Notation</source>
+        <translation>&amp;Notation</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>The course notes: B q̈ + C q̇ + g = Q</source>
+        <translation>Kursusnoterne: B q̈ + C q̇ + g = Q</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Siciliano: B q̈ + C q̇ + g = τ</source>
+        <translation>Siciliano: B q̈ + C q̇ + g = τ</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Spong: D q̈ + C q̇ + g = τ</source>
+        <translation>Spong: D q̈ + C q̇ + g = τ</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Craig: M Θ̈ + V + G = τ (modified DH)</source>
+        <translation>Craig: M Θ̈ + V + G = τ (modificeret DH)</translation>
+    </message>
+</context>
+<context>
+    <name>MainWindow</name>
+    <message>
+        <location filename="../../ui/window/main_window.cpp" line="+93" />
+        <source>Fit</source>
+        <translation>Tilpas</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>front</source>
+        <translation>forfra</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>side</source>
+        <translation>fra siden</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>top</source>
+        <translation>oppefra</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>iso</source>
+        <translation>iso</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>frames</source>
+        <translation>koordinatsystemer</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>labels</source>
+        <translation>etiketter</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>COMs</source>
+        <translation>massemidtpunkter</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>trail</source>
+        <translation>spor</translation>
+    </message>
+    <message>
+        <location line="+19" />
+        <source>Model</source>
+        <translation>Model</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>Derivation</source>
+        <translation>Udledning</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>◀ Previous step</source>
+        <translation>◀ Forrige trin</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Next step ▶</source>
+        <translation>Næste trin ▶</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>step %1 (%2 of %3)</source>
+        <translation>trin %1 (%2 af %3)</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>Typeset</source>
+        <translation>Typesat</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Text</source>
+        <translation>Tekst</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Entries</source>
+        <translation>Elementer</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Plots</source>
+        <translation>Grafer</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>Energy</source>
+        <translation>Energi</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Joints q, dq/dt</source>
+        <translation>Led q, dq/dt</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <location line="+103" />
+        <source>Teach</source>
+        <translation>Teach</translation>
+    </message>
+    <message>
+        <location line="-102" />
+        <source>Torques</source>
+        <translation>Momenter</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Properties</source>
+        <translation>Egenskaber</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Work–precision</source>
+        <translation>Beregningsarbejde–præcision</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>DH step-through</source>
+        <translation>DH-gennemgang</translation>
+    </message>
+    <message>
+        <location line="+64" />
+        <source>&amp;File</source>
+        <translation>&amp;Filer</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Export</source>
+        <translation>Eksportér</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>&amp;Quit</source>
+        <translation>&amp;Afslut</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>&amp;Edit</source>
+        <translation>&amp;Rediger</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>&amp;Undo</source>
+        <translation>&amp;Fortryd</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>&amp;Redo</source>
+        <translation>&amp;Gentag</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>&amp;Simulation</source>
+        <translation>&amp;Simulering</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Play / pause</source>
+        <translation>Afspil/pause</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Restart</source>
+        <translation>Start forfra</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>&amp;View</source>
+        <translation>&amp;Vis</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Fit view</source>
+        <translation>Tilpas visning</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Main</source>
+        <translation>Hovedværktøjslinje</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Open</source>
+        <translation>Åbn</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Save</source>
+        <translation>Gem</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>▶ Play</source>
+        <translation>▶ Afspil</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Present</source>
+        <translation>Præsentér</translation>
+    </message>
+    <message>
+        <location line="+52" />
+        <source>Simulation failed: %1</source>
+        <translation>Simuleringen mislykkedes: %1</translation>
+    </message>
+    <message>
+        <location line="+114" />
+        <source>simulating…</source>
+        <translation>simulerer…</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>dt %1 s</source>
+        <translation>dt %1 s</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>tol %1</source>
+        <translation>tol %1</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>%1 · %2 · %3 steps · |ΔE|/E %4 · %5× real time · simulated in %6 ms</source>
+        <translation>%1 · %2 · %3 skridt · |ΔE|/E %4 · %5× realtid · simuleret på %6 ms</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+6" />
+        <source> · %n warning(s)</source>
+        <translation>
+            <numerusform> · %n advarsel</numerusform>
+            <numerusform> · %n advarsler</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source> · the model has errors: showing the last valid one</source>
+        <translation> · modellen har fejl: viser den seneste gyldige</translation>
+    </message>
+    <message>
+        <location line="+119" />
+        <source>%1%2 — LagrangeLab</source>
+        <translation>%1%2 — LagrangeLab</translation>
+    </message>
+</context>
+<context>
+    <name>ModelEditor</name>
+    <message>
+        <location filename="../../ui/window/model_editor.cpp" line="+52" />
+        <source>DH</source>
+        <translation>DH</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Inertials</source>
+        <translation>Masse og inerti</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Parameters</source>
+        <translation>Parametre</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Initial &amp;&amp; gravity</source>
+        <translation>Startværdier &amp;&amp; tyngdekraft</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Solver</source>
+        <translation>Løser</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Lagrangian</source>
+        <translation>Lagrange-funktion</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>JSON</source>
+        <translation>JSON</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>Checks (errors keep the last valid model on screen):</source>
+        <translation>Kontroller (ved fejl bliver den seneste gyldige model stående på skærmen):</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>standard (Spong)</source>
+        <translation>standard (Spong)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>modified (Craig)</source>
+        <translation>modificeret (Craig)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>angles in degrees</source>
+        <translation>vinkler i grader</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>convention</source>
+        <translation>konvention</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>Add joint</source>
+        <translation>Tilføj led</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <location line="+55" />
+        <source>Remove</source>
+        <translation>Fjern</translation>
+    </message>
+    <message>
+        <location line="-54" />
+        <source>Move up</source>
+        <translation>Flyt op</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Move down</source>
+        <translation>Flyt ned</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>Convention: %1</source>
+        <translation>Konvention: %1</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>rod (length L)</source>
+        <translation>stang (længde L)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>cylinder (r, h)</source>
+        <translation>cylinder (r, h)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>disc (r)</source>
+        <translation>skive (r)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>box (x, y, z)</source>
+        <translation>kasse (x, y, z)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>sphere (r)</source>
+        <translation>kugle (r)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Fill inertia from shape…</source>
+        <translation>Udfyld inerti ud fra form…</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Inertia from a shape</source>
+        <translation>Inerti ud fra en form</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Joint %1, %2: dimensions in metres, comma-separated (numbers or parameters)</source>
+        <translation>Led %1, %2: dimensioner i meter, adskilt med komma (tal eller parametre)</translation>
+    </message>
+    <message>
+        <location line="+19" />
+        <source>Add parameter…</source>
+        <translation>Tilføj parameter…</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Rename…</source>
+        <translation>Omdøb…</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <location line="+3" />
+        <source>Rename parameter</source>
+        <translation>Omdøb parameter</translation>
+    </message>
+    <message>
+        <location line="-3" />
+        <source>New name of %1 (every expression using it follows):</source>
+        <translation>Nyt navn til %1 (alle udtryk, der bruger den, opdateres):</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <location line="+3" />
+        <location line="+3" />
+        <source>Add parameter</source>
+        <translation>Tilføj parameter</translation>
+    </message>
+    <message>
+        <location line="-6" />
+        <source>Name (letters, digits, _; e.g. m3, l2, k):</source>
+        <translation>Navn (bogstaver, cifre, _; f.eks. m3, l2, k):</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Value of %1 (a number, SI units):</source>
+        <translation>Værdi af %1 (et tal i SI-enheder):</translation>
+    </message>
+    <message>
+        <location line="+24" />
+        <source>Apply (undoable)</source>
+        <translation>Anvend (kan fortrydes)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Edit scene JSON</source>
+        <translation>Rediger scenens JSON</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Scene JSON</source>
+        <translation>Scenens JSON</translation>
+    </message>
+    <message>
+        <location line="+21" />
+        <source>hint: it happened with your edit of %1</source>
+        <translation>tip: det skete ved din ændring af %1</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>no errors, no warnings</source>
+        <translation>ingen fejl, ingen advarsler</translation>
+    </message>
+    <message>
+        <location line="+42" />
+        <source>parameter name '%1': letters, digits and _ only, starting with a letter</source>
+        <translation>parameternavn '%1': kun bogstaver, cifre og _, og det skal begynde med et bogstav</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>parameter name '%1': there is a parameter of that name</source>
+        <translation>parameternavn '%1': der findes allerede en parameter med det navn</translation>
+    </message>
+    <message>
+        <location line="+10" />
         <source>Add parameter %1</source>
         <translation>Tilføj parameter %1</translation>
     </message>
     <message>
-        <location line="+7"/>
-        <source>no parameter &apos;%1&apos;</source>
-        <translation>ingen parameter ved navn &apos;%1&apos;</translation>
+        <location line="+7" />
+        <source>no parameter '%1'</source>
+        <translation>ingen parameter ved navn '%1'</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+7" />
         <source>Rename parameter %1 to %2</source>
         <translation>Omdøb parameter %1 til %2</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+5" />
         <source>Remove parameter %1</source>
         <translation>Fjern parameter %1</translation>
     </message>
@@ -1289,96 +1223,104 @@
 <context>
     <name>PlaybackBar</name>
     <message>
-        <location filename="../../ui/playback_bar.cpp" line="+28"/>
+        <location filename="../../ui/window/playback_bar.cpp" line="+28" />
         <source>Play / pause (Space)</source>
         <translation>Afspil/pause (Space)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+3" />
         <source>Restart</source>
         <translation>Start forfra</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+3" />
         <source>Playback time: drag to scrub</source>
         <translation>Afspilningstid: træk for at spole</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+8" />
         <source>×</source>
         <translation>×</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+1" />
         <source>Playback speed (simulated seconds per second)</source>
         <translation>Afspilningshastighed (simulerede sekunder pr. sekund)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+1" />
         <source>loop</source>
         <translation>gentag</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+6" />
         <source>speed</source>
         <translation>hastighed</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+79" />
         <source>t = %1 s / %2 s</source>
         <translation>t = %1 s / %2 s</translation>
     </message>
 </context>
 <context>
+    <name>PresentationMode</name>
+    <message>
+        <location filename="../../ui/window/presentation_mode.cpp" line="+30" />
+        <source>Presentation mode</source>
+        <translation>Præsentationstilstand</translation>
+    </message>
+</context>
+<context>
     <name>PropertiesPanel</name>
     <message>
-        <location filename="../../ui/properties_panel.cpp" line="+17"/>
-        <location line="+34"/>
+        <location filename="../../ui/window/properties_panel.cpp" line="+17" />
+        <location line="+34" />
         <source>Checking the model along the run…</source>
         <translation>Kontrollerer modellen gennem kørslen…</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+9" />
         <source>n/a</source>
         <translation>i/r</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+1" />
         <source>does not apply to a typed Lagrangian (it has no links to recurse over)</source>
         <translation>gælder ikke for en indtastet Lagrange-funktion (der er ingen links at gennemløbe rekursivt)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+4" />
         <source>pass</source>
         <translation>bestået</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+1" />
         <source>fail</source>
         <translation>ikke bestået</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+3" />
         <source>must stay above</source>
         <translation>skal holde sig over</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+0" />
         <source>tolerance</source>
         <translation>tolerance</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>worst at &lt;a href=&apos;%1&apos;&gt;t = %2 s&lt;/a&gt;, q = %3</source>
-        <translation>værst ved &lt;a href=&apos;%1&apos;&gt;t = %2 s&lt;/a&gt;, q = %3</translation>
+        <location line="+2" />
+        <source>worst at &lt;a href='%1'&gt;t = %2 s&lt;/a&gt;, q = %3</source>
+        <translation>værst ved &lt;a href='%1'&gt;t = %2 s&lt;/a&gt;, q = %3</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+11" />
         <source>All %1 properties that apply hold along the run.</source>
         <translation>Alle %1 relevante egenskaber holder gennem hele kørslen.</translation>
     </message>
     <message numerus="yes">
-        <location line="+1"/>
+        <location line="+1" />
         <source>%n of the properties fails along the run: see where.</source>
         <translation>
             <numerusform>%n af egenskaberne holder ikke gennem kørslen: se hvor.</numerusform>
@@ -1389,45 +1331,132 @@
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../../ui/crash_recovery.cpp" line="+35"/>
+        <location filename="../../ui/document/crash_recovery.cpp" line="+35" />
         <source>(none)</source>
         <translation>(ingen)</translation>
     </message>
     <message>
-        <location line="+88"/>
+        <location line="+88" />
         <source>A recovery copy that was cut short was set aside: %1</source>
         <translation>En ufuldstændig gendannelseskopi blev lagt til side: %1</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+28" />
         <source>… and %1 more</source>
         <translation>… og %1 mere</translation>
     </message>
     <message>
-        <location filename="../../ui/entry_selection.cpp" line="-43"/>
+        <location filename="../../ui/document/entry_selection.cpp" line="-43" />
         <source>link&amp;nbsp;%1</source>
         <translation>link&amp;nbsp;%1</translation>
     </message>
+</context>
+<context>
+    <name>SceneFiles</name>
     <message>
-        <location filename="../../ui/main_window.cpp" line="-1511"/>
+        <location filename="../../ui/window/scene_files.cpp" line="+23" />
         <source>LagrangeLab scenes (*.lagrange *.json);;All files (*)</source>
         <translation>LagrangeLab-scener (*.lagrange *.json);;Alle filer (*)</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>&amp;Open…</source>
+        <translation>&amp;Åbn…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Examples</source>
+        <translation>Eksempler</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Gallery…</source>
+        <translation>Galleri…</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>Recent files</source>
+        <translation>Seneste filer</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>&amp;Save</source>
+        <translation>&amp;Gem</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Save &amp;as…</source>
+        <translation>Gem &amp;som…</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>%1: another file is being opened</source>
+        <translation>%1: en anden fil er ved at blive åbnet</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Opening %1…</source>
+        <translation>Åbner %1…</translation>
+    </message>
+    <message>
+        <location line="+17" />
+        <source>Cannot open %1</source>
+        <translation>Kan ikke åbne %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The scene has errors; the open scene is kept.</source>
+        <translation>Scenen indeholder fejl; den åbne scene bevares.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5" />
+        <source>%1: %n error(s), nothing changed</source>
+        <translation>
+            <numerusform>%1: %n fejl, intet er ændret</numerusform>
+            <numerusform>%1: %n fejl, intet er ændret</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+22" />
+        <source>Open scene</source>
+        <translation>Åbn scene</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <location line="+11" />
+        <source>Save</source>
+        <translation>Gem</translation>
+    </message>
+    <message>
+        <location line="-4" />
+        <source>Save scene as</source>
+        <translation>Gem scene som</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>Unsaved changes</source>
+        <translation>Ikke-gemte ændringer</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>The scene has unsaved changes. Save them?</source>
+        <translation>Scenen har ændringer, der ikke er gemt. Vil du gemme dem?</translation>
     </message>
 </context>
 <context>
     <name>TeachPanel</name>
     <message>
-        <location filename="../../ui/teach_panel.cpp" line="+58"/>
+        <location filename="../../ui/window/teach_panel.cpp" line="+58" />
         <source>Teach mode poses robots; this scene is a hand-typed Lagrangian.</source>
         <translation>Teach-tilstanden bruges til at stille robotter i en bestemt stilling; denne scene er en håndindtastet Lagrange-funktion.</translation>
     </message>
     <message>
-        <location line="+63"/>
+        <location line="+63" />
         <source>%1°</source>
         <translation>%1°</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+1" />
         <source>%1 m</source>
         <translation>%1 m</translation>
     </message>
@@ -1435,57 +1464,57 @@
 <context>
     <name>TorquePane</name>
     <message>
-        <location filename="../../ui/torque_pane.cpp" line="+22"/>
+        <location filename="../../ui/window/torque_pane.cpp" line="+22" />
         <source>Where the torque of</source>
         <translation>Hvordan momentet i</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+2" />
         <source>goes: B q̈ + C q̇ + g = Q</source>
         <translation>fordeler sig: B q̈ + C q̇ + g = Q</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+23" />
         <source>joint %1</source>
         <translation>led %1</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+27" />
         <source>B q̈ (inertial)</source>
         <translation>B q̈ (inerti)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+1" />
         <source>C q̇ (Coriolis, centrifugal)</source>
         <translation>C q̇ (Coriolis, centrifugal)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+1" />
         <source>g (gravity, springs)</source>
         <translation>g (tyngdekraft, fjedre)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+1" />
         <source>Q (non-conservative)</source>
         <translation>Q (ikke-konservativ)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+1" />
         <source>Q: actuation</source>
         <translation>Q: aktuering</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+1" />
         <source>Q: viscous friction</source>
         <translation>Q: viskos friktion</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+1" />
         <source>Q: Coulomb friction</source>
         <translation>Q: Coulomb-friktion</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+19" />
         <source>largest |B q̈ + C q̇ + g − Q| of the run: %1%2</source>
         <translation>største |B q̈ + C q̇ + g − Q| i kørslen: %1%2</translation>
     </message>
@@ -1493,52 +1522,52 @@
 <context>
     <name>TrajectoryChart</name>
     <message>
-        <location filename="../../ui/trajectory_chart.cpp" line="+55"/>
+        <location filename="../../ui/window/trajectory_chart.cpp" line="+57" />
         <source>t [s]</source>
         <translation>t [s]</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+3" />
         <source>energy [J]</source>
         <translation>energi [J]</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+0" />
         <source>q [rad or m], q̇ [rad/s or m/s]</source>
         <translation>q [rad eller m], q̇ [rad/s eller m/s]</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+4" />
         <source>t</source>
         <translation>t</translation>
     </message>
     <message>
-        <location line="+64"/>
+        <location line="+64" />
         <source>E_kin</source>
         <translation>E_kin</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+1" />
         <source>E_pot</source>
         <translation>E_pot</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+1" />
         <source>E</source>
         <translation>E</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+2" />
         <source>W</source>
         <translation>W</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+1" />
         <source>E − W</source>
         <translation>E − W</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+3" />
         <source>E, ghost (%1)</source>
         <translation>E, spøgelse (%1)</translation>
     </message>
@@ -1546,42 +1575,42 @@
 <context>
     <name>WorkPrecisionPane</name>
     <message>
-        <location filename="../../ui/work_precision_pane.cpp" line="+20"/>
+        <location filename="../../ui/window/work_precision_pane.cpp" line="+20" />
         <source>Run work–precision sweep</source>
         <translation>Kør gennemløb for beregningsarbejde–præcision</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+1" />
         <source>Cancel</source>
         <translation>Annuller</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+2" />
         <source>Open large…</source>
         <translation>Åbn stort…</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+2" />
         <source>The plot in a window of its own, as large as the screen allows</source>
         <translation>Grafen i sit eget vindue, så stort som skærmen tillader</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+3" />
         <source>Error and energy drift against CPU time for every integrator (1 repeat, tolerances 1e-3…1e-10).</source>
         <translation>Fejl og energidrift som funktion af CPU-tid for hver integrator (1 gentagelse, tolerancer 1e-3…1e-10).</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+38" />
         <source>Work–precision: %1</source>
         <translation>Beregningsarbejde–præcision: %1</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+41" />
         <source>cancelled</source>
         <translation>annulleret</translation>
     </message>
     <message numerus="yes">
-        <location line="+12"/>
+        <location line="+12" />
         <source>Done: %n run(s).</source>
         <translation>
             <numerusform>Færdig: %n kørsel.</numerusform>
@@ -1589,12 +1618,12 @@
         </translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+2" />
         <source>Stopped: %1</source>
         <translation>Stoppet: %1</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+19" />
         <source>no work–precision result yet: run the sweep first</source>
         <translation>endnu intet resultat for beregningsarbejde–præcision: kør gennemløbet først</translation>
     </message>
@@ -1602,7 +1631,7 @@
 <context>
     <name>ll::ui::DerivationCanvas</name>
     <message>
-        <location filename="../../ui/derivation_view.cpp" line="-211"/>
+        <location filename="../../ui/window/derivation_view.cpp" line="-211" />
         <source>Copy %1 as LaTeX</source>
         <translation>Kopiér %1 som LaTeX</translation>
     </message>
@@ -1610,7 +1639,7 @@
 <context>
     <name>ll::ui::DerivationView</name>
     <message>
-        <location line="-181"/>
+        <location line="-181" />
         <source>equation %1</source>
         <translation>ligning %1</translation>
     </message>

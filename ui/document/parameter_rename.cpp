@@ -1,0 +1,63 @@
+#include "ui/document/parameter_rename.hpp"
+
+#include <set>
+
+namespace ll::ui {
+namespace {
+
+bool nameChar(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_'; }
+
+// Keys whose strings are words, not expressions.
+const std::set<std::string>& proseKeys() {
+    static const std::set<std::string> keys = {"format", "name", "description", "source", "convention",
+                                               "type", "integrator", "recovery_of", "kind", "law", "unit", "shape", "color", "axis"};
+    return keys;
+}
+
+void rewrite(SceneJson& node, const std::string& from, const std::string& to) {
+    if (node.is_string()) {
+        node = renamedInExpression(node.get<std::string>(), from, to);
+    } else if (node.is_array()) {
+        for (SceneJson& item : node) rewrite(item, from, to);
+    } else if (node.is_object()) {
+        for (auto it = node.begin(); it != node.end(); ++it)
+            if (!proseKeys().count(it.key())) rewrite(it.value(), from, to);
+    }
+}
+
+}  // namespace
+
+std::string renamedInExpression(const std::string& text, const std::string& from, const std::string& to) {
+    std::string out;
+    out.reserve(text.size());
+    std::size_t i = 0;
+    while (i < text.size()) {
+        if (!nameChar(text[i])) {
+            out += text[i++];
+            continue;
+        }
+        std::size_t end = i;
+        while (end < text.size() && nameChar(text[end])) ++end;
+        const std::string word = text.substr(i, end - i);
+        out += word == from ? to : word;  // a number (1e1) is a word starting with a digit: never a name
+        i = end;
+    }
+    return out;
+}
+
+SceneJson renamedParameter(const SceneJson& scene, const std::string& from, const std::string& to) {
+    if (!scene.contains("parameters") || !scene["parameters"].is_object() || !scene["parameters"].contains(from)) return scene;
+    SceneJson out = scene;
+    SceneJson parameters = SceneJson::object();  // rebuilt in order, the renamed one in its place
+    for (auto it = scene["parameters"].begin(); it != scene["parameters"].end(); ++it) {
+        SceneJson value = it.value();
+        rewrite(value, from, to);  // a parameter given as an expression of another
+        parameters[it.key() == from ? to : it.key()] = value;
+    }
+    for (auto it = out.begin(); it != out.end(); ++it)
+        if (it.key() != "parameters" && !proseKeys().count(it.key())) rewrite(it.value(), from, to);
+    out["parameters"] = parameters;
+    return out;
+}
+
+}  // namespace ll::ui

@@ -1,0 +1,222 @@
+#include "ui/document/scene_document.hpp"
+
+#include <algorithm>
+#include <ranges>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include <QFile>
+#include <QUndoCommand>
+
+#include "core/io/atomic_file.hpp"
+#include "core/io/scene_file.hpp"
+#include "core/pipeline/scene_check.hpp"
+
+namespace ll::ui {
+
+// One edit: the whole JSON before and after (a scene is a few kilobytes, so a snapshot
+// is cheaper to get right than an inverse per kind of edit).
+class SceneEditCommand : public QUndoCommand {
+public:
+    SceneEditCommand(SceneDocument& doc, SceneJson before, SceneJson after, const QString& text)
+        : QUndoCommand(text), doc_(doc), before_(std::move(before)), after_(std::move(after)) {}
+    void undo() override { doc_.setJson(before_); }
+    void redo() override { doc_.setJson(after_); }
+
+private:
+    SceneDocument& doc_;
+    SceneJson before_, after_;
+};
+
+SceneDocument::SceneDocument(QObject* parent) : QObject(parent) { checker_.setMaxThreadCount(1); }
+
+SceneDocument::~SceneDocument() { checker_.waitForDone(); }
+
+namespace {
+
+// Whole-text problems (JSON syntax, unknown keys, bad values) as the loader reports them,
+// or the errors of checkScene, each "field: message".
+std::vector<Diagnostic> diagnose(const std::string& text, Scene* scene) {
+    try {
+        Scene parsed = parseScene(text);
+        std::vector<Diagnostic> found = checkScene(parsed);
+        if (scene) *scene = std::move(parsed);
+        return found;
+    } catch (const InputError& e) {
+        return e.diagnostics();
+    } catch (const std::exception& e) {
+        return {Diagnostic{Severity::Error, "scene", e.what()}};
+    }
+}
+
+}  // namespace
+
+bool SceneDocument::loadText(const std::string& text, const QString& path, QStringList* errors) {
+    Scene scene;
+    std::vector<Diagnostic> found = diagnose(text, &scene);
+    return adopt(text, path, std::move(found), scene, errors);
+}
+
+bool SceneDocument::adopt(const std::string& text, const QString& path, std::vector<Diagnostic> found, Scene& scene,
+                          QStringList* errors) {
+    const QString prefix = path.isEmpty() ? QString() : path + ": ";
+    if (ll::hasErrors(found)) {
+        if (errors)
+            for (const Diagnostic& d : found)
+                if (d.severity == Severity::Error) *errors << prefix + QString::fromStdString(d.text());
+        return false;
+    }
+    SceneJson parsed;
+    try {
+        parsed = SceneJson::parse(text);
+    } catch (const std::exception& e) {
+        if (errors) *errors << prefix + QString::fromUtf8(e.what());
+        return false;
+    }
+    undo_.clear();
+    path_ = path;
+    json_ = parsed;
+    validated_ = checks_.request();
+    emit changed();
+    accept(std::move(found), &scene);
+    undo_.setClean();
+    return true;
+}
+
+namespace {
+
+// The file's bytes, or false with the reason in `errors`.
+bool readScene(const QString& path, std::string& text, QStringList* errors) {
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        if (errors) *errors << path + ": " + file.errorString();
+        return false;
+    }
+    text = file.readAll().toStdString();
+    return true;
+}
+
+QString shownPath(const QString& path) { return path.startsWith(":/") ? QString() : path; }
+
+}  // namespace
+
+bool SceneDocument::loadFile(const QString& path, QStringList* errors) {
+    std::string text;
+    return readScene(path, text, errors) && loadText(text, shownPath(path), errors);
+}
+
+void SceneDocument::loadFileInBackground(const QString& path, std::function<void(bool, const QStringList&)> done) {
+    auto text = std::make_shared<std::string>();
+    QStringList errors;
+    if (!readScene(path, *text, &errors)) {
+        done(false, errors);
+        return;
+    }
+    checker_.start([self = this, text, path, done = std::move(done)] {
+        auto scene = std::make_shared<Scene>();
+        auto found = std::make_shared<std::vector<Diagnostic>>(diagnose(*text, scene.get()));
+        QMetaObject::invokeMethod(self, [self, text, path, done, scene, found] {
+            QStringList lines;
+            const bool ok = self->adopt(*text, shownPath(path), std::move(*found), *scene, &lines);
+            done(ok, lines);
+        }, Qt::QueuedConnection);
+    });
+}
+
+void SceneDocument::saveFile(const QString& path) {
+    saveFileAtomically(path.toStdString(), text() + "\n", Backup::Keep);
+    path_ = path;
+    undo_.setClean();
+}
+
+SceneJson SceneDocument::value(const std::string& pointer) const {
+    const SceneJson::json_pointer p(pointer);
+    return json_.contains(p) ? json_.at(p) : SceneJson();
+}
+
+void SceneDocument::setValue(const std::string& pointer, const SceneJson& v, const QString& description) {
+    SceneJson after = json_;
+    const SceneJson::json_pointer p(pointer);
+    if (v.is_null()) {
+        if (!after.contains(p)) return;
+        after.at(p.parent_pointer()).erase(p.back());
+    } else {
+        if (after.contains(p) && after.at(p) == v) return;
+        after[p] = v;
+    }
+    replace(after, description);
+    // "/robot/joints/1/com/0" → "robot.joints[1].com[0]"
+    std::string field;
+    for (const std::string& part : p.to_string().substr(1) | std::views::split('/') | std::views::transform([](auto r) { return std::string(r.begin(), r.end()); })) {
+        if (!part.empty() && std::all_of(part.begin(), part.end(), [](char c) { return c >= '0' && c <= '9'; })) field += "[" + part + "]";
+        else field += (field.empty() ? "" : ".") + part;
+    }
+    lastEdited_ = field;
+}
+
+void SceneDocument::replace(const SceneJson& after, const QString& description) {
+    if (after == json_) return;
+    undo_.push(new SceneEditCommand(*this, json_, after, description));
+}
+
+QString SceneDocument::errorAt(const std::string& field) const {
+    QStringList found;
+    for (const Diagnostic& d : diagnostics_)
+        if (d.field == field)
+            found << QString::fromStdString((d.severity == Severity::Error ? "error: " : "warning: ") + d.message +
+                                            (d.hint.empty() ? "" : "\nhint: " + d.hint));
+    return found.join('\n');
+}
+
+void SceneDocument::setJson(const SceneJson& json) {
+    json_ = json;
+    lastEdited_.clear();  // setValue names its field after this
+    checks_.request();
+    emit changed();
+    validate();
+}
+
+void SceneDocument::validate() {
+    const int revision = checks_.newest();
+    checker_.start([self = this, text = json_.dump(), revision] {
+        auto scene = std::make_shared<Scene>();
+        auto found = std::make_shared<std::vector<Diagnostic>>(diagnose(text, scene.get()));
+        self->checks_.deliver(self, revision, [self, revision, scene, found] {  // dropped when a newer edit is being checked
+            self->validated_ = revision;
+            self->accept(std::move(*found), scene.get());
+        });
+    });
+}
+
+void SceneDocument::accept(std::vector<Diagnostic> diagnostics, Scene* scene) {
+    diagnostics_ = std::move(diagnostics);
+    const bool valid = !ll::hasErrors(diagnostics_);
+    if (valid) {
+        validScene_ = std::move(*scene);
+        ++validRevision_;
+    }
+    emit validated();
+    if (valid) emit validSceneChanged();
+}
+
+QString SceneDocument::display(const SceneJson& v) {
+    if (v.is_string()) return QString::fromStdString(v.get<std::string>());
+    if (v.is_number_integer()) return QString::number(v.get<long long>());
+    if (v.is_number()) return QString::number(v.get<double>(), 'g', 15).replace("e+", "e");
+    if (v.is_null()) return {};
+    return QString::fromStdString(v.dump());
+}
+
+SceneJson SceneDocument::parseCell(const QString& text) {
+    const QString t = text.trimmed();
+    bool ok = false;
+    const long long i = t.toLongLong(&ok);
+    if (ok) return i;
+    const double d = t.toDouble(&ok);
+    if (ok && std::isfinite(d)) return d;
+    return t.toStdString();
+}
+
+}  // namespace ll::ui

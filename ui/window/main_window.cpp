@@ -1,0 +1,597 @@
+#include "ui/window/main_window.hpp"
+
+#include <algorithm>
+
+#include <QAction>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QFileInfo>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMimeData>
+#include <QPushButton>
+#include <QSettings>
+#include <QSplitter>
+#include <QStatusBar>
+#include <QTabWidget>
+#include <QTimer>
+#include <QToolBar>
+#include <QVBoxLayout>
+
+#include "core/pipeline/pose_results.hpp"
+#include "ui/window/autosave.hpp"
+#include "ui/window/derivation_panel.hpp"
+#include "ui/window/derivation_view.hpp"
+#include "ui/window/dh_step_link.hpp"
+#include "ui/window/dh_step_panel.hpp"
+#include "ui/window/edit_frame.hpp"
+#include "ui/window/entry_linking.hpp"
+#include "ui/window/entry_list.hpp"
+#include "ui/window/export_actions.hpp"
+#include "ui/window/ghost_run.hpp"
+#include "ui/window/language_menu.hpp"
+#include "ui/window/model_editor.hpp"
+#include "ui/window/playback_bar.hpp"
+#include "ui/window/presentation_mode.hpp"
+#include "ui/window/properties_panel.hpp"
+#include "ui/window/scene_files.hpp"
+#include "ui/window/scene_view.hpp"
+#include "ui/window/teach_panel.hpp"
+#include "ui/window/torque_pane.hpp"
+#include "ui/window/trajectory_chart.hpp"
+#include "ui/window/work_precision_pane.hpp"
+
+// Q_INIT_RESOURCE must stand outside any namespace.
+static void initExampleResources() { Q_INIT_RESOURCE(examples); }
+
+namespace ll::ui {
+
+namespace {
+constexpr double kTrailSeconds = 2.0;
+}
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
+    initExampleResources();
+    setAcceptDrops(true);
+    resize(1280, 800);
+    parts_.window = this;
+    parts_.editor = new ModelEditor(doc_, this);
+    buildCentre();
+    buildDocks();
+    buildFeatures();
+    buildMenus();
+    status_ = new QLabel(this);
+    statusBar()->addWidget(status_, 1);
+    connectDocument();
+    updateTitle();
+}
+
+MainWindow::~MainWindow() {
+    // The features link the widgets, and the widgets and models read the document: the
+    // features go first, then the widgets and models, then (as members) the document.
+    ghost_.reset();
+    language_.reset();
+    presentationMode_.reset();
+    dhStepLink_.reset();
+    linking_.reset();
+    exports_.reset();
+    autosave_.reset();
+    files_.reset();
+    qDeleteAll(findChildren<QWidget*>(QString(), Qt::FindDirectChildrenOnly));
+    qDeleteAll(findChildren<QAbstractItemModel*>(QString(), Qt::FindDirectChildrenOnly));
+}
+
+// ---------------------------------------------------------------- building
+
+void MainWindow::buildCentre() {
+    auto* centre = new QWidget(this);
+    auto* layout = new QVBoxLayout(centre);
+    layout->setContentsMargins(0, 0, 0, 0);
+    auto* bar = new QToolBar(centre);
+    SceneView* view = parts_.view = new SceneView(centre);
+    bar->addAction(tr("Fit"), view, &SceneView::fit)->setShortcut(Qt::Key_F);
+    for (const char* name : {QT_TR_NOOP("front"), QT_TR_NOOP("side"), QT_TR_NOOP("top"), QT_TR_NOOP("iso")})
+        bar->addAction(tr(name), this, [view, name] { view->setStandardView(name); });
+    bar->addSeparator();
+    auto toggle = [&](const QString& text, auto slot) {
+        QAction* a = bar->addAction(text);
+        a->setCheckable(true);
+        a->setChecked(true);
+        connect(a, &QAction::toggled, view, slot);
+    };
+    toggle(tr("frames"), &SceneView::setShowFrames);
+    toggle(tr("labels"), &SceneView::setShowLabels);
+    toggle(tr("COMs"), &SceneView::setShowComs);
+    toggle(tr("trail"), &SceneView::setShowTrail);
+    parts_.playback = new PlaybackBar(centre);
+    // The picked entry's value now, what feeds it; or how to pick one (ui/window/entry_linking).
+    // Three lines, always: a readout that grew or shrank with its text would resize the 3D
+    // view under the animation (and repaint the window ahead of an edit's result).
+    QLabel* readout = parts_.readout = new QLabel(centre);
+    readout->setObjectName("entry-readout");
+    readout->setTextFormat(Qt::RichText);
+    readout->setWordWrap(true);
+    readout->setContentsMargins(6, 2, 6, 2);
+    readout->setFixedHeight(3 * readout->fontMetrics().lineSpacing() + 6);
+    layout->addWidget(bar);
+    layout->addWidget(view, 1);
+    layout->addWidget(readout);
+    layout->addWidget(parts_.playback);
+    setCentralWidget(centre);
+}
+
+void MainWindow::buildDocks() {
+    parts_.modelDock = new QDockWidget(tr("Model"), this);
+    parts_.modelDock->setObjectName("model");
+    parts_.modelDock->setWidget(parts_.editor);
+    connect(parts_.modelDock, &QDockWidget::visibilityChanged, parts_.editor, &ModelEditor::refreshJson);
+    addDockWidget(Qt::LeftDockWidgetArea, parts_.modelDock);
+
+    // The derivation: typeset as a textbook prints it, as plain text (searchable,
+    // copyable) with Previous/Next, and its entries listed; the renderings follow each
+    // other's step.
+    QDockWidget* derivationDock = parts_.derivationDock = new QDockWidget(tr("Derivation"), this);
+    derivationDock->setObjectName("derivation");
+    auto* textPage = new QWidget(derivationDock);
+    auto* textLayout = new QVBoxLayout(textPage);
+    textLayout->setContentsMargins(2, 2, 2, 2);
+    DerivationPanel* derivation = parts_.derivation = new DerivationPanel(textPage);
+    auto* stepBar = new QHBoxLayout;
+    auto* prev = new QPushButton(tr("◀ Previous step"), textPage);
+    auto* next = new QPushButton(tr("Next step ▶"), textPage);
+    auto* stepLabel = new QLabel(textPage);
+    connect(prev, &QPushButton::clicked, derivation, &DerivationPanel::previousStep);
+    connect(next, &QPushButton::clicked, derivation, &DerivationPanel::nextStep);
+    connect(derivation, &DerivationPanel::stepChanged, stepLabel, [derivation, stepLabel](int s) {
+        const std::vector<int>& listed = derivation->steps();  // this derivation's own steps
+        const auto at = std::find(listed.begin(), listed.end(), s);
+        stepLabel->setText(tr("step %1 (%2 of %3)").arg(s).arg(at - listed.begin() + 1).arg(listed.size()));
+    });
+    stepBar->addWidget(prev);
+    stepBar->addWidget(stepLabel);
+    stepBar->addWidget(next);
+    textLayout->addLayout(stepBar);
+    textLayout->addWidget(derivation, 1);
+    DerivationView* typeset = parts_.typeset = new DerivationView(derivationDock);
+    connect(derivation, &DerivationPanel::stepChanged, typeset, [typeset](int s) {
+        if (typeset->step() != s && typeset->step() <= 8) typeset->showStep(s);
+    });
+    connect(typeset, &DerivationView::stepChanged, derivation, [derivation](int s) {
+        if (s <= 8 && derivation->step() != s) derivation->showStep(s);  // step 9 (the pose) is typeset only
+    });
+    parts_.derivationTabs = new QTabWidget(derivationDock);
+    parts_.derivationTabs->addTab(typeset, tr("Typeset"));
+    parts_.derivationTabs->addTab(textPage, tr("Text"));
+    parts_.derivationTabs->addTab(new EntryList(selection_, parts_.derivationTabs), tr("Entries"));
+    derivationDock->setWidget(parts_.derivationTabs);
+    addDockWidget(Qt::RightDockWidgetArea, derivationDock);
+
+    QDockWidget* plotDock = parts_.plotDock = new QDockWidget(tr("Plots"), this);
+    plotDock->setObjectName("plots");
+    QTabWidget* tabs = parts_.plotTabs = new QTabWidget(plotDock);
+    // The energy plot, and beside it the picked entry over the run (same time cursor).
+    auto* energyPage = new QSplitter(Qt::Horizontal, tabs);
+    parts_.energyPage = energyPage;
+    parts_.energy = new TrajectoryChart(TrajectoryChart::Kind::Energy, energyPage);
+    parts_.entryChart = new TrajectoryChart(TrajectoryChart::Kind::Curves, energyPage);
+    parts_.entryChart->setObjectName("entry-chart");
+    parts_.entryChart->hide();
+    energyPage->addWidget(parts_.energy);
+    energyPage->addWidget(parts_.entryChart);
+    parts_.joints = new TrajectoryChart(TrajectoryChart::Kind::Joints, tabs);
+    parts_.teach = new TeachPanel(tabs);
+    parts_.torques = new TorquePane(tabs);
+    parts_.properties = new PropertiesPanel(tabs);
+    parts_.workPrecision = new WorkPrecisionPane(tabs);
+    parts_.dhSteps = new DhStepPanel(tabs);
+    tabs->addTab(energyPage, tr("Energy"));
+    tabs->addTab(parts_.joints, tr("Joints q, dq/dt"));
+    tabs->addTab(parts_.teach, tr("Teach"));
+    tabs->addTab(parts_.torques, tr("Torques"));
+    tabs->addTab(parts_.properties, tr("Properties"));
+    tabs->addTab(parts_.workPrecision, tr("Work–precision"));
+    tabs->addTab(parts_.dhSteps, tr("DH step-through"));
+    plotDock->setWidget(tabs);
+    addDockWidget(Qt::BottomDockWidgetArea, plotDock);
+    resizeDocks({parts_.modelDock, derivationDock}, {360, 440}, Qt::Horizontal);
+    resizeDocks({plotDock}, {230}, Qt::Vertical);
+}
+
+void MainWindow::buildFeatures() {
+    files_ = std::make_unique<SceneFiles>(doc_, derive_, *this);
+    autosave_ = std::make_unique<Autosave>(doc_, *this);
+    exports_ = std::make_unique<ExportActions>(doc_, shown_, parts_);
+    linking_ = std::make_unique<EntryLinking>(selection_, shown_, parts_);
+    dhStepLink_ = std::make_unique<DhStepLink>(parts_);
+    presentationMode_ = std::make_unique<PresentationMode>(parts_);
+    language_ = std::make_unique<LanguageMenu>(*this);
+    ghost_ = std::make_unique<GhostRun>(doc_, parts_);
+
+    connect(files_.get(), &SceneFiles::opened, this, [this](const QString& path) {
+        autosave_->discard();  // the copy of the scene open before, if it was not saved: asked in maybeSave
+        autosave_->setOriginal(path);
+        parts_.editor->showTabForOpenedScene();
+        parts_.playback->setTime(0);
+        updateTitle();
+    });
+    connect(files_.get(), &SceneFiles::saved, this, [this](const QString& path) {
+        autosave_->discard();
+        autosave_->setOriginal(path);
+        updateTitle();
+    });
+    connect(language_.get(), &LanguageMenu::changed, this, [this] {
+        if (derivedAsDerived_) showDerivation(derivedAsDerived_);
+    });
+    connect(ghost_.get(), &GhostRun::shown, this, [this] { showTime(parts_.playback->time()); });
+
+    // The 3D view: a joint pointed at selects its DH row; a row chosen lights its joint.
+    connect(parts_.view, &SceneView::jointHovered, this, [this](int joint) {
+        parts_.editor->selectDhRow(joint);
+        parts_.view->highlightJoint(joint);
+    });
+    connect(parts_.editor, &ModelEditor::jointHighlighted, parts_.view, &SceneView::highlightJoint);
+    // Time: the playback bar drives every view; a click on a plot moves it there.
+    connect(parts_.playback, &PlaybackBar::timeChanged, this, &MainWindow::showTime);
+    connect(parts_.playback, &PlaybackBar::playingChanged, this, [this](bool playing) {
+        if (!playing) return;
+        teaching_ = false;
+        updatePoseResults();  // the pose step goes with teach mode
+    });
+    const auto scrub = [this](double t) {
+        parts_.playback->pause();
+        parts_.playback->setTime(t);
+    };
+    for (TrajectoryChart* chart : {parts_.energy, parts_.joints, parts_.entryChart})
+        connect(chart, &TrajectoryChart::timePicked, parts_.playback, scrub);
+    connect(parts_.torques, &TorquePane::timePicked, parts_.playback, scrub);
+    connect(parts_.properties, &PropertiesPanel::timePicked, parts_.playback, scrub);
+    connect(parts_.teach, &TeachPanel::poseChanged, this, [this](const Eigen::VectorXd& q) {
+        if (!teaching_) return;
+        showTeachPose(q);
+        updatePoseResults();
+    });
+    connect(parts_.plotTabs, &QTabWidget::currentChanged, this, &MainWindow::plotTabChanged);
+}
+
+void MainWindow::buildMenus() {
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    files_->addOpenEntries(file);
+    files_->addSaveEntries(file);
+    file->addSeparator();
+    exports_->addTo(file->addMenu(tr("Export")));
+    file->addSeparator();
+    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    QAction* undo = doc_.undoStack()->createUndoAction(this, tr("&Undo"));
+    undo->setShortcut(QKeySequence::Undo);
+    QAction* redo = doc_.undoStack()->createRedoAction(this, tr("&Redo"));
+    redo->setShortcut(QKeySequence::Redo);
+    edit->addAction(undo);
+    edit->addAction(redo);
+
+    QMenu* sim = menuBar()->addMenu(tr("&Simulation"));
+    sim->addAction(tr("Play / pause"), parts_.playback, &PlaybackBar::togglePlay);
+    sim->addAction(tr("Restart"), parts_.playback, &PlaybackBar::restart);
+    ghost_->addTo(sim);
+
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    view->addAction(presentationMode_->toggleAction());
+    view->addAction(tr("Fit view"), parts_.view, &SceneView::fit);
+    view->addSeparator();
+    language_->addTo(view);
+
+    auto* tools = addToolBar(tr("Main"));
+    tools->setObjectName("main");
+    tools->addAction(tr("Open"), files_.get(), &SceneFiles::open);
+    tools->addAction(tr("Save"), files_.get(), &SceneFiles::save);
+    tools->addAction(undo);
+    tools->addAction(redo);
+    tools->addSeparator();
+    tools->addAction(tr("▶ Play"), parts_.playback, &PlaybackBar::togglePlay);
+    tools->addAction(tr("Teach"), this, [this] { parts_.plotTabs->setCurrentWidget(parts_.teach); });
+    tools->addAction(tr("Present"), this, [this] { presentationMode_->setOn(!presentationMode_->on()); });
+}
+
+// The document and the workers: an edit is checked, each valid scene re-simulated and
+// re-derived, and each result shown when it arrives (one repaint per edit, EditFrame).
+void MainWindow::connectDocument() {
+    editFrame_ = new EditFrame(this);
+    connect(&doc_, &SceneDocument::changed, editFrame_, &EditFrame::hold);
+    connect(&doc_, &SceneDocument::changed, this, &MainWindow::documentChanged);
+    connect(&doc_, &SceneDocument::validated, this, &MainWindow::documentChanged);
+    // A derivation of the previous scene holds the GiNaC lock the check of an edit needs:
+    // it stops, and derives again when the edit turns out invalid (the valid scene stays).
+    connect(&doc_, &SceneDocument::changed, &derive_, &LiveDerivation::cancel);
+    connect(&doc_, &SceneDocument::validated, this, [this] {
+        if (doc_.hasErrors()) {
+            derive_.resume();
+            editFrame_->release();  // no result to wait for: the marked cell now
+        }
+    });
+    connect(&derive_, &LiveDerivation::started, this, [this] {
+        parts_.derivation->setDeriving();
+        parts_.typeset->setDeriving();
+    });
+    connect(&derive_, &LiveDerivation::finished, this, &MainWindow::showDerivation);
+    connect(&doc_, &SceneDocument::validSceneChanged, this, &MainWindow::validSceneChanged);
+    connect(doc_.undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
+    connect(&live_, &LiveSimulation::finished, this, &MainWindow::showResult);
+    live_.setAnalysing(true);  // torques and properties of each run, after it is shown
+    connect(&live_, &LiveSimulation::analysed, this, &MainWindow::showAnalysis);
+}
+
+// ---------------------------------------------------------------- document → views
+
+void MainWindow::documentChanged() {
+    parts_.editor->documentChanged(language_->current().language);
+    updateTitle();
+}
+
+void MainWindow::validSceneChanged() {
+    const Scene& scene = doc_.validScene();
+    live_.request(scene);
+    ghost_->sceneChanged(scene);
+    derive_.request(scene);
+    parts_.teach->setScene(scene);
+    parts_.dhSteps->setRobot(scene.robot, !scene.lagrangian);
+    updatePoseResults();
+    parts_.workPrecision->setScene(scene);
+}
+
+void MainWindow::showResult(std::shared_ptr<const LiveResult> result) {
+    if (result->request >= live_.latestRequest()) editFrame_->release();  // painted with this result, below
+    if (!result->visual || result->simulation.trajectory.size() == 0) {
+        status_->setText(tr("Simulation failed: %1").arg(QString::fromStdString(result->error)));
+        return;
+    }
+    shown_.result = result;
+    const Trajectory& traj = result->simulation.trajectory;
+    shown_.sampler = std::make_unique<TrajectorySampler>(traj);
+    q_.resize(traj.n);
+    qd_.resize(traj.n);
+    // The end effector at every sample, for the trail.
+    effectorPath_.clear();
+    VisualScene& visual = *result->visual;
+    if (visual.endEffector >= 0) {
+        effectorPath_.reserve(traj.size());
+        for (std::size_t k = 0; k < traj.size(); ++k) {
+            visual.pose(traj.q[k], traj.t[k]);
+            effectorPath_.push_back(visual.endEffectorPosition());
+        }
+    }
+    const int structure = result->scene->dof();
+    const QString name = QString::fromStdString(result->scene->name);
+    const bool refit = structure != shownStructure_ || name != shownName_;
+    shownStructure_ = structure;
+    shownName_ = name;
+    parts_.view->setVisualScene(result->visual, refit);
+    parts_.energy->setTrajectory(traj);
+    parts_.joints->setTrajectory(traj);
+    selection_.setTrajectory(&traj);
+    shown_.analysis.reset();  // the torques and properties of this run follow
+    parts_.torques->setTorques(nullptr, result->scene);
+    parts_.properties->setProperties(nullptr);
+    linking_->runShown();
+    ghost_->runShown();
+    parts_.playback->setRange(shown_.sampler->startTime(), shown_.sampler->endTime());
+    showTime(parts_.playback->time());
+    status_->setText(statusText());
+    emit resultShown(result->request);
+}
+
+// The derivation as the worker made it (English, the notes' notation), shown in the
+// language and notation chosen.
+void MainWindow::showDerivation(std::shared_ptr<const DerivationResult> derived) {
+    std::shared_ptr<const DerivationResult> result = derived;
+    const present::Presentation& presentation = language_->current();
+    if (derived->display && (presentation.language != present::Language::English || presentation.notation != present::Notation::Notes)) {
+        auto shown = std::make_shared<DerivationResult>(*derived);
+        shown->display = present::localizedDocument(*derived->display, presentation);
+        shown->textSpans.clear();
+        shown->text = QString::fromStdString(present::textDocument(*shown->display, &shown->textSpans));
+        result = shown;
+    }
+    parts_.derivation->setDerivation(*result);
+    if (result->stopped) {
+        parts_.typeset->cancel();
+        return;
+    }
+    derivedAsDerived_ = derived;
+    shown_.derived = result;
+    parts_.typeset->setDerivation(result->display, result->error);
+    selection_.setCatalogue(result->catalogue, result->scene);
+    if (shown_.sampler && selection_.catalogue() && q_.size() == selection_.catalogue()->n)
+        selection_.setState(q_, qd_, parts_.playback->time());
+}
+
+void MainWindow::showAnalysis(std::shared_ptr<const RunAnalysis> analysis) {
+    if (!shown_.result || analysis->request != shown_.result->request) return;  // of a run no longer shown
+    shown_.analysis = analysis;
+    parts_.torques->setTorques(analysis->torques, shown_.result->scene);
+    parts_.torques->setCursorTime(parts_.playback->time());
+    parts_.properties->setProperties(analysis->properties);
+}
+
+void MainWindow::showTime(double t) {
+    if (!shown_.sampler || !shown_.result) return;
+    shown_.sampler->sample(t, q_, qd_);
+    if (!teaching_) {
+        std::vector<Eigen::Vector3d> trail;
+        if (!effectorPath_.empty()) {
+            const Trajectory& tr = shown_.result->simulation.trajectory;
+            const auto from = std::lower_bound(tr.t.begin(), tr.t.end(), t - kTrailSeconds) - tr.t.begin();
+            const auto to = std::upper_bound(tr.t.begin(), tr.t.end(), t) - tr.t.begin();
+            trail.assign(effectorPath_.begin() + from, effectorPath_.begin() + to);
+        }
+        parts_.view->setPose(q_, t, &trail);
+        if (!trail.empty() || shown_.result->visual->endEffector >= 0) {
+            // The trail ends at the current (interpolated) position of the end effector.
+            trail.push_back(shown_.result->visual->endEffectorPosition());
+            parts_.view->setPose(q_, t, &trail);
+        }
+        ghost_->showAt(t);
+        dhStepLink_->poseShown(q_);
+    }
+    for (TrajectoryChart* chart : {parts_.energy, parts_.joints, parts_.entryChart}) chart->setCursorTime(t);
+    parts_.torques->setCursorTime(t);
+    if (!teaching_) selection_.setState(q_, qd_, t);
+}
+
+void MainWindow::plotTabChanged(int index) {
+    QTabWidget* tabs = parts_.plotTabs;
+    // The work–precision plots need height to be read (two log–log plots and a legend):
+    // their tab gives the dock at least 45 % of the window.
+    if (tabs->widget(index) == parts_.workPrecision && !presentationMode_->on() && parts_.plotDock->height() < height() * 45 / 100)
+        resizeDocks({parts_.plotDock}, {height() * 45 / 100}, Qt::Vertical);
+    teaching_ = tabs->widget(index) == parts_.teach;
+    if (!teaching_ && index >= 0) linking_->valueChanged();
+    updatePoseResults();
+    if (teaching_) {
+        parts_.playback->pause();
+        showTeachPose(parts_.teach->pose());
+    } else {
+        showTime(parts_.playback->time());
+    }
+}
+
+QString MainWindow::statusText() const {
+    if (!shown_.result) return tr("simulating…");
+    const SimulationStats& s = shown_.result->simulation.stats;
+    const SimulationSettings& settings = shown_.result->scene->simulation;
+    const bool fixed = s.dt > 0;
+    const QString tolerance = fixed ? tr("dt %1 s").arg(s.dt) : tr("tol %1").arg(settings.absTol);
+    const double realTime = s.cpuSeconds > 0 ? s.simulatedSeconds / s.cpuSeconds : 0;
+    int warnings = 0;
+    for (const Diagnostic& d : doc_.diagnostics()) warnings += d.severity == Severity::Warning;
+    QString text = tr("%1 · %2 · %3 steps · |ΔE|/E %4 · %5× real time · simulated in %6 ms")
+                       .arg(QString::fromStdString(s.integrator), tolerance)
+                       .arg(s.steps)
+                       .arg(s.maxRelEnergyError, 0, 'g', 2)
+                       .arg(realTime, 0, 'f', 0)
+                       .arg(shown_.result->workerSeconds * 1000, 0, 'f', 1);
+    if (warnings) text += tr(" · %n warning(s)", "", warnings);
+    if (doc_.hasErrors()) text += tr(" · the model has errors: showing the last valid one");
+    if (!shown_.result->error.empty()) text += " · " + QString::fromStdString(shown_.result->error).trimmed();
+    return text;
+}
+
+void MainWindow::showDerivationStep(int n) {
+    if (n <= 8) parts_.derivation->showStep(n);
+    parts_.typeset->showStep(n);
+}
+
+// The robot at a teach pose, without the trail of the motion (which is not where it is).
+void MainWindow::showTeachPose(const Eigen::VectorXd& q) {
+    static const std::vector<Eigen::Vector3d> noTrail;
+    parts_.view->setPose(q, parts_.playback->time(), &noTrail);
+    dhStepLink_->poseShown(q);
+    // The picked entry at the pose, the joints at rest (as the pose results take them).
+    const Scene& scene = doc_.validScene();
+    const int n = static_cast<int>(q.size());
+    selection_.setState(q, scene.initial.qd.size() == n ? scene.initial.qd : Eigen::VectorXd::Zero(n), parts_.playback->time(), true);
+}
+
+// Step 9 of the typeset derivation while teaching: B, C, g and the energies at the pose.
+void MainWindow::updatePoseResults() {
+    const Scene& scene = doc_.validScene();
+    const int n = scene.robot.dof();
+    if (!teaching_ || scene.lagrangian || n == 0 || parts_.teach->pose().size() != n) {
+        parts_.typeset->setPoseResults(nullptr);
+        return;
+    }
+    const Eigen::VectorXd qd = scene.initial.qd.size() == n ? scene.initial.qd : Eigen::VectorXd::Zero(n);
+    parts_.typeset->setPoseResults(std::make_shared<const present::DisplayStep>(poseResults(scene, parts_.teach->pose(), qd)));
+}
+
+void MainWindow::teach(const Eigen::VectorXd& q) {
+    parts_.plotTabs->setCurrentWidget(parts_.teach);
+    parts_.teach->setPose(q);
+    showTeachPose(parts_.teach->pose());
+}
+
+bool MainWindow::showPlotTab(const QString& name) {
+    const std::pair<const char*, QWidget*> tabs[] = {
+        {"energy", parts_.energyPage},         {"joints", parts_.joints},   {"teach", parts_.teach},
+        {"torques", parts_.torques},           {"properties", parts_.properties},
+        {"work-precision", parts_.workPrecision}, {"dh-steps", parts_.dhSteps}};
+    for (const auto& [key, widget] : tabs)
+        if (name == key) {
+            parts_.plotTabs->setCurrentWidget(widget);
+            return true;
+        }
+    return false;
+}
+
+void MainWindow::showDerivationView(const QString& name) {
+    parts_.derivationTabs->setCurrentIndex(name == "text" ? 1 : name == "entries" ? 2 : 0);
+}
+
+void MainWindow::setEditHoldLimit(int milliseconds) { editFrame_->setLimit(milliseconds); }
+
+// ---------------------------------------------------------------- the window itself
+
+bool MainWindow::openFile(const QString& path, QStringList* errors, bool quiet) { return files_->openFile(path, errors, quiet); }
+
+QImage MainWindow::screenshot() { return screenshotOf(*this); }
+
+void MainWindow::setAskBeforeClosing(bool on) { files_->setAskBeforeClosing(on); }
+
+void MainWindow::rememberLayout() {
+    remembersLayout_ = true;
+    QSettings settings("LagrangeLab", "LagrangeLab");
+    if (const QByteArray g = settings.value("window/geometry").toByteArray(); !g.isEmpty()) restoreGeometry(g);
+    if (const QByteArray s = settings.value("window/state").toByteArray(); !s.isEmpty()) restoreState(s);
+}
+
+void MainWindow::closeEvent(QCloseEvent* e) {
+    if (!files_->maybeSave()) {
+        e->ignore();
+        return;
+    }
+    if (remembersLayout_) {  // closed while presenting: the layout from before
+        QSettings settings("LagrangeLab", "LagrangeLab");
+        if (!presentationMode_->on()) settings.setValue("window/geometry", saveGeometry());
+        settings.setValue("window/state", presentationMode_->layoutToRemember());
+    }
+    autosave_->discard();
+    e->accept();
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* e) {
+    if (e->mimeData()->hasUrls()) e->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* e) {
+    const QList<QUrl> urls = e->mimeData()->urls();
+    if (urls.isEmpty() || !urls.front().isLocalFile()) return;
+    e->acceptProposedAction();
+    // Opened once the drop is over (the drag source is not kept waiting on the check).
+    const QString path = urls.front().toLocalFile();
+    QTimer::singleShot(0, this, [this, path] {
+        if (files_->maybeSave()) openFile(path);
+    });
+}
+
+void MainWindow::keyPressEvent(QKeyEvent* e) {
+    switch (e->key()) {
+        case Qt::Key_Space: parts_.playback->togglePlay(); return;
+        case Qt::Key_Right: parts_.derivation->nextStep(); return;
+        case Qt::Key_Left: parts_.derivation->previousStep(); return;
+        case Qt::Key_F: parts_.view->fit(); return;
+        case Qt::Key_Plus: parts_.playback->faster(); return;
+        case Qt::Key_Minus: parts_.playback->slower(); return;
+        case Qt::Key_Escape:
+            if (presentationMode_->on()) presentationMode_->setOn(false);
+            return;
+        default: QMainWindow::keyPressEvent(e);
+    }
+}
+
+void MainWindow::updateTitle() {
+    const QString name = doc_.path().isEmpty() ? QString::fromStdString(doc_.validScene().name) : QFileInfo(doc_.path()).fileName();
+    setWindowTitle(tr("%1%2 — LagrangeLab").arg(name, doc_.isModified() ? "*" : ""));
+}
+
+}  // namespace ll::ui

@@ -1,0 +1,305 @@
+#include "ui/window/model_editor.hpp"
+
+#include <functional>
+#include <initializer_list>
+#include <utility>
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QFontDatabase>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QInputDialog>
+#include <QLabel>
+#include <QListWidget>
+#include <QMessageBox>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QRegularExpression>
+#include <QTabWidget>
+#include <QTableView>
+#include <QVBoxLayout>
+
+#include "core/present/diagnostic_text.hpp"
+#include "ui/document/field_list_model.hpp"
+#include "ui/document/joint_table_model.hpp"
+#include "ui/document/parameter_rename.hpp"
+#include "ui/document/scene_document.hpp"
+
+namespace ll::ui {
+
+namespace {
+
+QTableView* makeTable(QAbstractItemModel* model, QWidget* parent) {
+    auto* table = new QTableView(parent);
+    table->setModel(model);
+    table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    table->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed | QAbstractItemView::AnyKeyPressed);
+    table->setSelectionBehavior(QAbstractItemView::SelectItems);
+    return table;
+}
+
+}  // namespace
+
+ModelEditor::ModelEditor(SceneDocument& document, QWidget* parent) : QWidget(parent), doc_(document) {
+    joints_ = new JointTableModel(doc_, this);
+    parameters_ = new FieldListModel(doc_, parameterRows, this);
+    initial_ = new FieldListModel(doc_, initialStateRows, this);
+    solver_ = new FieldListModel(doc_, solverRows, this);
+    lagrangian_ = new FieldListModel(doc_, lagrangianRows, this);
+
+    tabs_ = new QTabWidget(this);
+    tabs_->addTab(buildDhPage(), tr("DH"));
+    tabs_->addTab(buildInertialPage(), tr("Inertials"));
+    tabs_->addTab(buildParameterPage(), tr("Parameters"));
+    tabs_->addTab(makeTable(initial_, tabs_), tr("Initial && gravity"));
+    tabs_->addTab(makeTable(solver_, tabs_), tr("Solver"));
+    lagrangianPage_ = makeTable(lagrangian_, tabs_);
+    tabs_->addTab(lagrangianPage_, tr("Lagrangian"));
+    tabs_->addTab(buildJsonPage(), tr("JSON"));
+    connect(tabs_, &QTabWidget::currentChanged, this, &ModelEditor::refreshJson);
+
+    diagnostics_ = new QListWidget(this);
+    diagnostics_->setMaximumHeight(110);
+    diagnostics_->setWordWrap(true);
+
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(2, 2, 2, 2);
+    layout->addWidget(tabs_, 1);
+    layout->addWidget(new QLabel(tr("Checks (errors keep the last valid model on screen):"), this));
+    layout->addWidget(diagnostics_);
+
+    // A joint's row chosen in the DH or inertials table lights the joint up in the 3D view.
+    const auto highlight = [this](const QModelIndex& index) { emit jointHighlighted(index.isValid() ? index.row() : -1); };
+    connect(dhView_->selectionModel(), &QItemSelectionModel::currentChanged, this, highlight);
+    connect(inertialView_->selectionModel(), &QItemSelectionModel::currentChanged, this, highlight);
+}
+
+// DH table with the convention, degree switch and joint list buttons.
+QWidget* ModelEditor::buildDhPage() {
+    auto* page = new QWidget(tabs_);
+    auto* layout = new QVBoxLayout(page);
+    auto* bar = new QHBoxLayout;
+    convention_ = new QComboBox(page);
+    convention_->addItem(tr("standard (Spong)"), "standard");
+    convention_->addItem(tr("modified (Craig)"), "modified");
+    auto* degrees = new QCheckBox(tr("angles in degrees"), page);
+    bar->addWidget(new QLabel(tr("convention"), page));
+    bar->addWidget(convention_);
+    bar->addWidget(degrees);
+    bar->addStretch(1);
+    layout->addLayout(bar);
+    dhView_ = makeTable(joints_, page);
+    dhView_->setObjectName("dh-table");
+    for (int c = JointTableModel::firstInertialColumn; c <= JointTableModel::lastInertialColumn; ++c) dhView_->setColumnHidden(c, true);
+    layout->addWidget(dhView_, 1);
+    auto* rowBar = new QHBoxLayout;
+    const auto currentRow = [this] { return dhView_->currentIndex().isValid() ? dhView_->currentIndex().row() : joints_->rowCount() - 1; };
+    for (auto [text, action] : std::initializer_list<std::pair<QString, std::function<void()>>>{
+             {tr("Add joint"), [this, currentRow] { joints_->addJoint(currentRow()); }},
+             {tr("Remove"), [this, currentRow] { joints_->removeJoint(currentRow()); }},
+             {tr("Move up"), [this, currentRow] { joints_->moveJoint(currentRow(), -1); }},
+             {tr("Move down"), [this, currentRow] { joints_->moveJoint(currentRow(), +1); }}}) {
+        auto* button = new QPushButton(text, page);
+        connect(button, &QPushButton::clicked, this, action);
+        rowBar->addWidget(button);
+    }
+    rowBar->addStretch(1);
+    layout->addLayout(rowBar);
+    connect(convention_, &QComboBox::activated, this, [this](int i) {
+        doc_.setValue("/robot/convention", convention_->itemData(i).toString().toStdString(), tr("Convention: %1").arg(convention_->itemText(i)));
+    });
+    connect(degrees, &QCheckBox::toggled, joints_, &JointTableModel::setDegrees);
+    return page;
+}
+
+// Inertials with the shape helper.
+QWidget* ModelEditor::buildInertialPage() {
+    auto* page = new QWidget(tabs_);
+    auto* layout = new QVBoxLayout(page);
+    inertialView_ = makeTable(joints_, page);
+    for (int c = JointTableModel::firstDhColumn; c <= JointTableModel::lastDhColumn; ++c) inertialView_->setColumnHidden(c, true);
+    layout->addWidget(inertialView_, 1);
+    auto* bar = new QHBoxLayout;
+    auto* shape = new QComboBox(page);
+    shape->addItem(tr("rod (length L)"), "rod");
+    shape->addItem(tr("cylinder (r, h)"), "cylinder");
+    shape->addItem(tr("disc (r)"), "disc");
+    shape->addItem(tr("box (x, y, z)"), "box");
+    shape->addItem(tr("sphere (r)"), "sphere");
+    auto* fill = new QPushButton(tr("Fill inertia from shape…"), page);
+    connect(fill, &QPushButton::clicked, this, [this, shape] {
+        const int row = inertialView_->currentIndex().isValid() ? inertialView_->currentIndex().row() : 0;
+        bool ok = false;
+        const QString dims = QInputDialog::getText(this, tr("Inertia from a shape"),
+                                                   tr("Joint %1, %2: dimensions in metres, comma-separated (numbers or parameters)")
+                                                       .arg(row + 1).arg(shape->currentText()),
+                                                   QLineEdit::Normal, "", &ok);
+        if (ok) joints_->fillInertiaFromShape(row, shape->currentData().toString(), dims.split(','));
+    });
+    bar->addWidget(shape);
+    bar->addWidget(fill);
+    bar->addStretch(1);
+    layout->addLayout(bar);
+    return page;
+}
+
+// Parameters with add, remove and rename (each one undoable edit).
+QWidget* ModelEditor::buildParameterPage() {
+    auto* page = new QWidget(tabs_);
+    auto* layout = new QVBoxLayout(page);
+    parameterView_ = makeTable(parameters_, page);
+    layout->addWidget(parameterView_, 1);
+    auto* bar = new QHBoxLayout;
+    auto* add = new QPushButton(tr("Add parameter…"), page);
+    auto* remove = new QPushButton(tr("Remove"), page);
+    auto* rename = new QPushButton(tr("Rename…"), page);
+    connect(rename, &QPushButton::clicked, this, [this] {
+        const QModelIndex index = parameterView_->currentIndex();
+        if (!index.isValid()) return;
+        const QString from = parameters_->row(index.row()).name;
+        bool ok = false;
+        const QString to = QInputDialog::getText(this, tr("Rename parameter"), tr("New name of %1 (every expression using it follows):").arg(from),
+                                                 QLineEdit::Normal, from, &ok);
+        QString error;
+        if (ok && !renameParameter(from, to, &error)) QMessageBox::warning(this, tr("Rename parameter"), error);
+    });
+    connect(add, &QPushButton::clicked, this, [this] {
+        bool ok = false;
+        const QString name = QInputDialog::getText(this, tr("Add parameter"), tr("Name (letters, digits, _; e.g. m3, l2, k):"),
+                                                   QLineEdit::Normal, "", &ok);
+        if (!ok || name.isEmpty()) return;
+        const QString value = QInputDialog::getText(this, tr("Add parameter"), tr("Value of %1 (a number, SI units):").arg(name),
+                                                    QLineEdit::Normal, "1", &ok);
+        QString error;
+        if (ok && !addParameter(name, value, &error)) QMessageBox::warning(this, tr("Add parameter"), error);
+    });
+    connect(remove, &QPushButton::clicked, this, [this] {
+        const QModelIndex index = parameterView_->currentIndex();
+        if (index.isValid()) removeParameter(parameters_->row(index.row()).name);
+    });
+    bar->addWidget(add);
+    bar->addWidget(remove);
+    bar->addWidget(rename);
+    bar->addStretch(1);
+    layout->addLayout(bar);
+    return page;
+}
+
+// The whole scene as JSON (effects, bodies, anything the tables do not list).
+QWidget* ModelEditor::buildJsonPage() {
+    auto* page = new QWidget(tabs_);
+    auto* layout = new QVBoxLayout(page);
+    jsonEdit_ = new QPlainTextEdit(page);
+    jsonEdit_->setObjectName("scene-json");
+    jsonEdit_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    auto* apply = new QPushButton(tr("Apply (undoable)"), page);
+    connect(apply, &QPushButton::clicked, this, [this] {
+        try {
+            doc_.replace(SceneJson::parse(jsonEdit_->toPlainText().toStdString()), tr("Edit scene JSON"));
+        } catch (const std::exception& e) {
+            QMessageBox::warning(this, tr("Scene JSON"), QString::fromUtf8(e.what()));
+        }
+    });
+    layout->addWidget(jsonEdit_, 1);
+    layout->addWidget(apply);
+    return page;
+}
+
+void ModelEditor::documentChanged(present::Language language) {
+    const std::string convention = doc_.value("/robot/convention").is_string() ? doc_.value("/robot/convention").get<std::string>() : "standard";
+    convention_->setCurrentIndex(convention == "modified" ? 1 : 0);
+    jsonStale_ = true;
+    refreshJson();
+    diagnostics_->clear();
+    for (const Diagnostic& d : doc_.diagnostics()) {
+        QString text = QString::fromStdString(present::diagnosticText(d, language));
+        // An error on a whole joint (B singular there) right after one value was edited:
+        // that value is named, the likely cause the message itself cannot know.
+        const std::string& edited = doc_.lastEditedField();
+        if (d.severity == Severity::Error && !edited.empty() && d.field.ends_with("]") &&
+            d.field.find("robot.joints[") != std::string::npos && edited.rfind("robot.joints[", 0) == 0)
+            text += "\n" + tr("hint: it happened with your edit of %1")
+                               .arg(QString::fromStdString(Diagnostic{Severity::Error, edited, ""}.where()));
+        auto* item = new QListWidgetItem(text, diagnostics_);
+        item->setForeground(d.severity == Severity::Error ? QColor(180, 0, 0) : QColor(140, 100, 0));
+    }
+    if (doc_.diagnostics().empty()) new QListWidgetItem(tr("no errors, no warnings"), diagnostics_);
+}
+
+QStringList ModelEditor::diagnosticLines() const {
+    QStringList lines;
+    for (int i = 0; i < diagnostics_->count(); ++i) lines << diagnostics_->item(i)->text();
+    return lines;
+}
+
+// Hidden, the JSON text is refilled when shown (setPlainText and its layout cost 2–3 ms
+// of every edit's frame for nothing).
+void ModelEditor::refreshJson() {
+    if (!jsonStale_ || !jsonEdit_->isVisible() || jsonEdit_->hasFocus()) return;
+    jsonEdit_->setPlainText(QString::fromStdString(doc_.text()));
+    jsonStale_ = false;
+}
+
+QString ModelEditor::currentTabName() const { return tabs_->tabText(tabs_->currentIndex()); }
+
+void ModelEditor::showTabForOpenedScene() {
+    tabs_->setCurrentWidget(doc_.json().contains("lagrangian") ? lagrangianPage_ : tabs_->widget(0));
+}
+
+void ModelEditor::showLinkInertials(int link) {
+    if (link < 0 || link >= joints_->rowCount()) return;
+    tabs_->setCurrentWidget(inertialView_->parentWidget());
+    inertialView_->selectRow(link);
+}
+
+void ModelEditor::selectDhRow(int joint) {
+    if (joint >= 0 && joint < joints_->rowCount()) dhView_->selectRow(joint);
+}
+
+void ModelEditor::markDhParameter(int joint, int column) {
+    if (joint >= 0 && joint < joints_->rowCount()) dhView_->setCurrentIndex(dhView_->model()->index(joint, column));
+}
+
+// Whether `typed` (trimmed) can name a new parameter: an identifier no parameter has.
+bool ModelEditor::freeParameterName(const QString& typed, QString* error) const {
+    static const QRegularExpression identifier("^[A-Za-z_][A-Za-z0-9_]*$");
+    const QString trimmed = typed.trimmed();
+    if (!identifier.match(trimmed).hasMatch()) {
+        if (error) *error = tr("parameter name '%1': letters, digits and _ only, starting with a letter").arg(typed);
+        return false;
+    }
+    if (!doc_.value("/parameters/" + trimmed.toStdString()).is_null()) {
+        if (error) *error = tr("parameter name '%1': there is a parameter of that name").arg(trimmed);
+        return false;
+    }
+    return true;
+}
+
+bool ModelEditor::addParameter(const QString& name, const QString& value, QString* error) {
+    const QString trimmed = name.trimmed();
+    if (!freeParameterName(name, error)) return false;
+    // The loader checks the rest (reserved names such as c1 or s12, the value) and marks it.
+    doc_.setValue("/parameters/" + trimmed.toStdString(), SceneDocument::parseCell(value), tr("Add parameter %1").arg(trimmed));
+    return true;
+}
+
+bool ModelEditor::renameParameter(const QString& from, const QString& to, QString* error) {
+    const QString trimmed = to.trimmed();
+    if (doc_.value("/parameters/" + from.toStdString()).is_null()) {
+        if (error) *error = tr("no parameter '%1'").arg(from);
+        return false;
+    }
+    if (trimmed == from) return true;
+    if (!freeParameterName(to, error)) return false;
+    // The loader checks the rest (a reserved name such as c1, a clash with a coordinate).
+    doc_.replace(renamedParameter(doc_.json(), from.toStdString(), trimmed.toStdString()),
+                 tr("Rename parameter %1 to %2").arg(from, trimmed));
+    return true;
+}
+
+void ModelEditor::removeParameter(const QString& name) {
+    doc_.setValue("/parameters/" + name.toStdString(), SceneJson(), tr("Remove parameter %1").arg(name));
+}
+
+}  // namespace ll::ui

@@ -1,0 +1,159 @@
+#include "ui/window/scene_files.hpp"
+
+#include <QDir>
+#include <QEventLoop>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMainWindow>
+#include <QMenu>
+#include <QMessageBox>
+#include <QSettings>
+#include <QStatusBar>
+
+#include "ui/document/live_derivation.hpp"
+#include "ui/document/scene_document.hpp"
+#include "ui/window/example_gallery.hpp"
+
+namespace ll::ui {
+
+namespace {
+
+constexpr int kMaxRecent = 8;
+
+QString sceneFilter() { return SceneFiles::tr("LagrangeLab scenes (*.lagrange *.json);;All files (*)"); }
+
+}  // namespace
+
+SceneFiles::SceneFiles(SceneDocument& document, LiveDerivation& derivation, QMainWindow& window)
+    : doc_(document), derive_(derivation), window_(window) {}
+
+void SceneFiles::addOpenEntries(QMenu* file) {
+    file->addAction(tr("&Open…"), QKeySequence::Open, this, &SceneFiles::open);
+    QMenu* examples = file->addMenu(tr("Examples"));
+    examples->addAction(tr("Gallery…"), this, [this] {
+        auto* gallery = new ExampleGallery(&window_);
+        gallery->setAttribute(Qt::WA_DeleteOnClose);
+        connect(gallery, &ExampleGallery::chosen, this, &SceneFiles::openAsked);
+        gallery->open();
+    });
+    examples->addSeparator();
+    for (const QString& name : QDir(":/examples").entryList({"*.json"}, QDir::Files, QDir::Name))
+        examples->addAction(name, this, [this, name] { openAsked(":/examples/" + name); });
+    recentMenu_ = file->addMenu(tr("Recent files"));
+    rebuildRecentMenu();
+}
+
+void SceneFiles::addSaveEntries(QMenu* file) {
+    file->addAction(tr("&Save"), QKeySequence::Save, this, &SceneFiles::save);
+    file->addAction(tr("Save &as…"), QKeySequence::SaveAs, this, &SceneFiles::saveAs);
+}
+
+void SceneFiles::openAsked(const QString& path) {
+    if (maybeSave()) openFile(path);
+}
+
+bool SceneFiles::openFile(const QString& path, QStringList* errors, bool quiet) {
+    if (opening_) {
+        if (errors) *errors = QStringList{tr("%1: another file is being opened").arg(path)};
+        return false;
+    }
+    derive_.cancel();  // loading checks the scene under the GiNaC lock
+    // The check runs on the document's worker; the window keeps drawing meanwhile.
+    opening_ = true;
+    window_.statusBar()->showMessage(tr("Opening %1…").arg(QFileInfo(path).fileName()));
+    QEventLoop loop;
+    bool done = false, loaded = false;
+    QStringList found;
+    doc_.loadFileInBackground(path, [&](bool ok, const QStringList& lines) {
+        done = true;
+        loaded = ok;
+        found = lines;
+        loop.quit();
+    });
+    if (!done) loop.exec(QEventLoop::ExcludeUserInputEvents);
+    opening_ = false;
+    window_.statusBar()->clearMessage();
+    if (!loaded) {
+        derive_.resume();
+        if (errors) *errors = found;
+        if (!quiet) {
+            QMessageBox box(QMessageBox::Warning, tr("Cannot open %1").arg(QFileInfo(path).fileName()),
+                            tr("The scene has errors; the open scene is kept."), QMessageBox::Ok, &window_);
+            box.setDetailedText(found.join('\n'));
+            box.setInformativeText(found.mid(0, 6).join('\n'));
+            box.exec();
+        }
+        window_.statusBar()->showMessage(tr("%1: %n error(s), nothing changed", "", found.size()).arg(path), 8000);
+        return false;
+    }
+    if (!path.startsWith(":/")) addRecent(QFileInfo(path).absoluteFilePath());
+    emit opened(path);
+    return true;
+}
+
+bool SceneFiles::saveTo(const QString& path, QString* error) {
+    try {
+        doc_.saveFile(path);
+    } catch (const std::exception& e) {
+        if (error) *error = QString::fromUtf8(e.what());
+        return false;
+    }
+    addRecent(QFileInfo(path).absoluteFilePath());
+    emit saved(path);
+    return true;
+}
+
+void SceneFiles::open() {
+    if (!maybeSave()) return;
+    const QString path = QFileDialog::getOpenFileName(&window_, tr("Open scene"), QFileInfo(doc_.path()).absolutePath(), sceneFilter());
+    if (!path.isEmpty()) openFile(path);
+}
+
+bool SceneFiles::save() {
+    if (doc_.path().isEmpty()) return saveAs();
+    QString error;
+    if (!saveTo(doc_.path(), &error)) {
+        QMessageBox::critical(&window_, tr("Save"), error);
+        return false;
+    }
+    return true;
+}
+
+bool SceneFiles::saveAs() {
+    const QString path = QFileDialog::getSaveFileName(&window_, tr("Save scene as"), doc_.path(), sceneFilter());
+    if (path.isEmpty()) return false;
+    QString error;
+    if (!saveTo(path, &error)) {
+        QMessageBox::critical(&window_, tr("Save"), error);
+        return false;
+    }
+    return true;
+}
+
+bool SceneFiles::maybeSave() {
+    if (!doc_.isModified() || !askBeforeClosing_) return true;
+    const auto answer = QMessageBox::warning(&window_, tr("Unsaved changes"), tr("The scene has unsaved changes. Save them?"),
+                                             QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+    if (answer == QMessageBox::Save) return save();
+    return answer == QMessageBox::Discard;
+}
+
+void SceneFiles::addRecent(const QString& path) {
+    QSettings settings("LagrangeLab", "LagrangeLab");
+    QStringList recent = settings.value("recent").toStringList();
+    recent.removeAll(path);
+    recent.prepend(path);
+    settings.setValue("recent", recent.mid(0, kMaxRecent));
+    rebuildRecentMenu();
+}
+
+void SceneFiles::rebuildRecentMenu() {
+    if (!recentMenu_) return;
+    recentMenu_->clear();
+    QSettings settings("LagrangeLab", "LagrangeLab");
+    for (const QString& path : settings.value("recent").toStringList())
+        recentMenu_->addAction(path, this, [this, path] { openAsked(path); });
+    recentMenu_->setEnabled(!recentMenu_->isEmpty());
+}
+
+}  // namespace ll::ui

@@ -1,0 +1,56 @@
+#pragma once
+// The scene's file: open (checked on a worker while the window keeps drawing; a scene
+// with errors is refused and the open one kept), save and save as (atomic, PATH.bak),
+// the recent files, the examples, and a question before unsaved work is closed.
+#include <QObject>
+#include <QString>
+#include <QStringList>
+
+class QMainWindow;
+class QMenu;
+
+namespace ll::ui {
+
+class LiveDerivation;
+class SceneDocument;
+
+class SceneFiles : public QObject {
+    Q_OBJECT
+public:
+    SceneFiles(SceneDocument& document, LiveDerivation& derivation, QMainWindow& window);
+
+    // Opens `path` (a file or a ":/examples/…" resource); waits for its check in a local
+    // event loop. On failure the errors are shown (a dialog unless `quiet`), returned in
+    // *errors, and the open document is kept.
+    bool openFile(const QString& path, QStringList* errors = nullptr, bool quiet = false);
+    bool saveTo(const QString& path, QString* error = nullptr);
+    // Asks what to do with unsaved edits: true when the caller may go on.
+    bool maybeSave();
+    void setAskBeforeClosing(bool on) { askBeforeClosing_ = on; }
+
+    // File menu entries: Open, Examples, Recent files, Save, Save as.
+    void addOpenEntries(QMenu* file);
+    void addSaveEntries(QMenu* file);
+    void open();
+    bool save();
+
+signals:
+    // A scene was opened or saved at `path`.
+    void opened(const QString& path);
+    void saved(const QString& path);
+
+private:
+    bool saveAs();
+    void addRecent(const QString& path);
+    void rebuildRecentMenu();
+    void openAsked(const QString& path);  // after maybeSave
+
+    SceneDocument& doc_;
+    LiveDerivation& derive_;
+    QMainWindow& window_;
+    QMenu* recentMenu_ = nullptr;
+    bool askBeforeClosing_ = true;
+    bool opening_ = false;  // a file is being checked (openFile waits for its worker)
+};
+
+}  // namespace ll::ui

@@ -1,0 +1,456 @@
+#include "ui/window/scene_view.hpp"
+
+#include <QVariantAnimation>
+
+#include <algorithm>
+#include <cmath>
+
+#include <QMouseEvent>
+#include <QOpenGLWindow>
+#include <QSurfaceFormat>
+#include <QVBoxLayout>
+#include <QWheelEvent>
+#include <osg/BlendFunc>
+#include <osg/Depth>
+#include <osg/Material>
+#include <osg/NodeVisitor>
+#include <osgUtil/LineSegmentIntersector>
+#include <osgViewer/Viewer>
+
+namespace ll::ui {
+
+namespace {
+
+// What Debian's OSG needs: a compatibility context. Requesting no version gives one
+// on Mesa (a versioned request without DeprecatedFunctions silently gives core 4.5).
+QSurfaceFormat viewFormat() {
+    QSurfaceFormat format;
+    format.setDepthBufferSize(24);
+    format.setStencilBufferSize(8);
+    format.setSamples(0);
+    return format;
+}
+
+osg::Vec3d toOsg(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+
+}  // namespace
+
+// The native window the view draws in. It takes no keyboard focus, so the window's keys
+// (Space, F, arrows) keep working after a click in the view.
+class SceneView::GlWindow : public QOpenGLWindow {
+public:
+    explicit GlWindow(SceneView* view) : QOpenGLWindow(QOpenGLWindow::NoPartialUpdate), view_(view) {
+        setFormat(viewFormat());
+        setFlag(Qt::WindowDoesNotAcceptFocus);
+        connect(this, &QOpenGLWindow::frameSwapped, view, &SceneView::frameSwapped);
+    }
+
+protected:
+    void resizeGL(int w, int h) override { view_->resizeGL(w, h); }
+    void paintGL() override { view_->paintGL(); }
+    void mousePressEvent(QMouseEvent* e) override { view_->press(e); }
+    void mouseMoveEvent(QMouseEvent* e) override { view_->move(e); }
+    void mouseReleaseEvent(QMouseEvent*) override { view_->release(); }
+    void wheelEvent(QWheelEvent* e) override { view_->wheel(e); }
+
+private:
+    SceneView* view_;
+};
+
+SceneView::SceneView(QWidget* parent) : QWidget(parent) {
+    setMinimumSize(200, 150);
+    gl_ = new GlWindow(this);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(QWidget::createWindowContainer(gl_, this));
+    viewer_ = new osgViewer::Viewer;
+    viewer_->setThreadingModel(osgViewer::Viewer::SingleThreaded);
+    window_ = viewer_->setUpViewerAsEmbeddedInWindow(0, 0, 640, 480);
+    viewer_->getCamera()->setClearColor(osg::Vec4(0.93f, 0.94f, 0.96f, 1.0f));
+    viewer_->setKeyEventSetsDone(0);
+    root_ = new osg::Group;
+    viewer_->setSceneData(root_);
+}
+
+SceneView::~SceneView() {
+    // OSG releases its GL objects in the context that made them.
+    const bool current = gl_->isValid();
+    if (current) gl_->makeCurrent();
+    viewer_ = nullptr;
+    window_ = nullptr;
+    if (current) gl_->doneCurrent();
+}
+
+void SceneView::requestFrame() { gl_->update(); }
+
+QWindow* SceneView::surface() const { return gl_; }
+
+QImage SceneView::grabView() {
+    if (!gl_->isValid()) return {};
+    gl_->makeCurrent();
+    paintGL();  // into the back buffer, read before any swap
+    return gl_->grabFramebuffer();
+}
+
+void SceneView::setVisualScene(std::shared_ptr<VisualScene> scene, bool fitCamera) {
+    visual_ = std::move(scene);
+    trail_.clear();
+    rebuild();
+    if (fitCamera) {
+        const CameraSpec::Preset preset = visual_ && looksPlanar(*visual_) ? CameraSpec::Preset::Front : CameraSpec::Preset::Iso;
+        azimuth_ = preset == CameraSpec::Preset::Front ? 0 : 45;
+        elevation_ = preset == CameraSpec::Preset::Front ? 0 : 30;
+        distance_ = 0;
+        pan_.setZero();
+        userMoved_ = false;
+    } else if (visual_ && !userMoved_ && fittedRadius_ > 0 &&
+               std::abs(visual_->bounds.radius() / fittedRadius_ - 1) > 0.05) {  // an edit resized the robot
+        // Refit, the distance gliding there over 0.3 s rather than jumping: the student
+        // sees the arm grow, not a cut.
+        const double from = distance_;
+        distance_ = 0;
+        pan_.setZero();
+        applyCamera();  // fits: distance_ is the target now
+        const double to = distance_;
+        if (from > 0 && std::abs(to / from - 1) > 1e-3) {
+            distance_ = from;
+            auto* glide = new QVariantAnimation(this);
+            glide->setDuration(300);
+            glide->setStartValue(from);
+            glide->setEndValue(to);
+            glide->setEasingCurve(QEasingCurve::InOutQuad);
+            connect(glide, &QVariantAnimation::valueChanged, this, [this, glide](const QVariant& value) {
+                if (userMoved_) {  // the user took the camera: it is theirs
+                    glide->stop();
+                    return;
+                }
+                distance_ = value.toDouble();
+                applyCamera();
+                requestFrame();
+            });
+            glide->start(QAbstractAnimation::DeleteWhenStopped);
+        }
+    }
+    applyCamera();
+    requestFrame();
+}
+
+void SceneView::rebuild() {
+    root_->removeChildren(0, root_->getNumChildren());
+    osg_.reset();
+    ghost_.reset();
+    if (visual_) {
+        osg_ = std::make_unique<OsgScene>(*visual_, options_);
+        root_->addChild(osg_->root());
+        for (std::size_t i = 0; i < visual_->parts.size(); ++i)
+            if (visual_->parts[i].role == PartRole::CentreOfMass)
+                osg_->setPartVisible(static_cast<int>(i), coms_);
+        osg_->setDropLinesVisible(coms_);
+        if (options_.trail) osg_->setTrail(trail_);
+        if (emphasis_.strength.size() == visual_->parts.size()) osg_->setEmphasis(emphasis_);
+        updateMovingFrame();
+    }
+    if (ghostVisual_) {
+        OsgSceneOptions ghostOptions;
+        ghostOptions.frames = ghostOptions.frameLabels = ghostOptions.grid = ghostOptions.trail = false;
+        ghost_ = std::make_unique<OsgScene>(*ghostVisual_, ghostOptions);
+        // Translucent: blended, drawn after the opaque robot, not writing depth.
+        osg::StateSet* ss = ghost_->root()->getOrCreateStateSet();
+        ss->setMode(GL_BLEND, osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
+        ss->setAttributeAndModes(new osg::BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA), osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
+        auto* material = new osg::Material;
+        material->setDiffuse(osg::Material::FRONT_AND_BACK, osg::Vec4(0.2f, 0.45f, 0.95f, 0.35f));
+        material->setAmbient(osg::Material::FRONT_AND_BACK, osg::Vec4(0.1f, 0.2f, 0.5f, 0.35f));
+        ss->setAttributeAndModes(material, osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
+        ss->setAttributeAndModes(new osg::Depth(osg::Depth::LESS, 0, 1, false), osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
+        ss->setRenderingHint(osg::StateSet::TRANSPARENT_BIN);
+        root_->addChild(ghost_->root());
+    }
+    applyHighlight();
+}
+
+void SceneView::setPose(const Eigen::VectorXd& q, double t, const std::vector<Eigen::Vector3d>* trail) {
+    if (!visual_ || !osg_ || q.size() != visual_->dof()) return;
+    visual_->pose(q, t);
+    shownQ_ = q;
+    osg_->update(*visual_);
+    updateMovingFrame();
+    keepPoseInView();
+    if (trail && options_.trail) {
+        trail_ = *trail;
+        osg_->setTrail(trail_);
+    }
+    requestFrame();
+}
+
+void SceneView::setGhost(std::shared_ptr<VisualScene> ghost) {
+    ghostVisual_ = std::move(ghost);
+    rebuild();
+    requestFrame();
+}
+
+void SceneView::setGhostPose(const Eigen::VectorXd& q, double t) {
+    if (!ghostVisual_ || !ghost_ || q.size() != ghostVisual_->dof()) return;
+    ghostVisual_->pose(q, t);
+    ghost_->update(*ghostVisual_);
+    requestFrame();
+}
+
+void SceneView::setShowFrames(bool on) {
+    options_.frames = on;
+    rebuild();
+    requestFrame();
+}
+
+void SceneView::setShowLabels(bool on) {
+    options_.frameLabels = on;
+    rebuild();
+    requestFrame();
+}
+
+void SceneView::setShowComs(bool on) {
+    coms_ = on;
+    rebuild();
+    requestFrame();
+}
+
+void SceneView::setShowTrail(bool on) {
+    options_.trail = on;
+    if (!on) trail_.clear();
+    rebuild();
+    requestFrame();
+}
+
+void SceneView::highlightJoint(int joint) {
+    if (joint == highlighted_) return;
+    highlighted_ = joint;
+    applyHighlight();
+    requestFrame();
+}
+
+void SceneView::setEmphasis(VisualEmphasis emphasis) {
+    emphasis_ = std::move(emphasis);
+    if (!visual_ || !osg_) return;
+    if (emphasis_.active() && emphasis_.strength.size() != visual_->parts.size()) emphasis_ = {};  // of another scene
+    osg_->setEmphasis(emphasis_);
+    requestFrame();
+}
+
+void SceneView::applyHighlight() {
+    if (!visual_ || !osg_) return;
+    for (std::size_t i = 0; i < visual_->parts.size(); ++i) {
+        const VisualPart& part = visual_->parts[i];
+        osg_->setPartHighlighted(static_cast<int>(i), highlighted_ >= 0 && part.coordinate == highlighted_ &&
+                                                          (part.role == PartRole::Joint || part.role == PartRole::Link));
+    }
+}
+
+int SceneView::jointAt(const QPoint& p) {
+    if (!visual_ || !osg_ || !viewer_) return -1;
+    const double r = devicePixelRatioF();
+    auto picker = osg::ref_ptr<osgUtil::LineSegmentIntersector>(
+        new osgUtil::LineSegmentIntersector(osgUtil::Intersector::WINDOW, p.x() * r, (height() - p.y()) * r));
+    osgUtil::IntersectionVisitor visitor(picker.get());
+    viewer_->getCamera()->accept(visitor);
+    if (!picker->containsIntersections()) return -1;
+    for (const auto& hit : picker->getIntersections()) {
+        for (osg::Node* node : hit.nodePath)
+            for (std::size_t i = 0; i < visual_->parts.size(); ++i)
+                if (node == osg_->partTransform(static_cast<int>(i))) {
+                    const VisualPart& part = visual_->parts[i];
+                    if (part.coordinate >= 0 && (part.role == PartRole::Joint || part.role == PartRole::Link || part.role == PartRole::CentreOfMass))
+                        return part.coordinate;
+                }
+    }
+    return -1;
+}
+
+void SceneView::fit() {
+    distance_ = 0;
+    pan_.setZero();
+    userMoved_ = false;
+    applyCamera();
+    requestFrame();
+}
+
+void SceneView::setStandardView(const QString& name) {
+    const CameraSpec spec = parseCameraSpec(name.toStdString());
+    switch (spec.preset) {
+        case CameraSpec::Preset::Front: azimuth_ = 0, elevation_ = 0; break;
+        case CameraSpec::Preset::Side: azimuth_ = 90, elevation_ = 0; break;
+        case CameraSpec::Preset::Top: azimuth_ = 0, elevation_ = 89.9; break;
+        default: azimuth_ = 45, elevation_ = 30; break;
+    }
+    fit();
+}
+
+void SceneView::applyCamera() {
+    if (!visual_ || !viewer_) return;
+    CameraSpec spec;
+    spec.preset = CameraSpec::Preset::Angles;
+    spec.azimuth = azimuth_;
+    spec.elevation = elevation_;
+    spec.distance = distance_;
+    const double aspect = double(std::max(width(), 1)) / std::max(height(), 1);
+    if (framePose_ && distance_ <= 0) visual_->currentExtent(framed_);  // fitting now: to the pose shown
+    CameraView view = cameraView(*visual_, spec, aspect, framePose_ ? &framed_ : nullptr);
+    if (distance_ <= 0) {  // fitted now
+        distance_ = (view.eye - view.centre).norm();
+        fittedRadius_ = visual_->bounds.radius();
+    }
+    view.eye += pan_;
+    view.centre += pan_;
+    const double radius = std::max(visual_->bounds.radius(), 1e-6);
+    view.zNear = std::max(1e-3 * distance_, distance_ - 3 * radius);
+    view.zFar = distance_ + 4 * radius + pan_.norm();
+    applyCameraView(*viewer_->getCamera(), view, aspect);
+    camera_ = view;
+}
+
+double SceneView::sceneHeightInView() const {
+    if (!visual_) return 0.0;
+    std::vector<Eigen::Vector4d> spheres;
+    visual_->currentExtent(spheres);
+    return projectedHeight(camera_, spheres);
+}
+
+void SceneView::setDhStep(int joint, int done, double fraction) {
+    stepJoint_ = joint, stepDone_ = done, stepFraction_ = fraction;
+    updateMovingFrame();
+    requestFrame();
+}
+
+void SceneView::setShowDimensions(bool on) {
+    dimensionsShown_ = on;
+    updateMovingFrame();
+    requestFrame();
+}
+
+bool SceneView::dhStepFrame(Eigen::Isometry3d& frame) const {
+    return visual_ && stepJoint_ >= 0 && visual_->steppedFrame(stepJoint_, stepDone_, stepFraction_, frame);
+}
+
+void SceneView::updateMovingFrame() {
+    if (!osg_) return;
+    Eigen::Isometry3d frame;
+    const bool stepping = dhStepFrame(frame);
+    osg_->setMovingFrame(stepping ? &frame : nullptr);
+    if (dimensionsShown_ && visual_) {
+        // Rebuilt at each pose while shown (a teaching view, not the playback's hot path).
+        const std::vector<DhDimension> dimensions = visual_->dhDimensions();
+        osg_->setDimensions(&dimensions);
+    } else {
+        osg_->setDimensions(nullptr);
+    }
+    // Stepping through row i: only frames i−1 and i beside the moving one.
+    if (visual_)
+        for (int k = 0; k < static_cast<int>(visual_->frames.size()); ++k)
+            osg_->setFrameVisible(k, !stepping || k == stepJoint_ || k == stepJoint_ + 1);
+}
+
+void SceneView::setFramePose(bool on) {
+    framePose_ = on;
+    fit();
+}
+
+void SceneView::keepPoseInView() {
+    if (!framePose_ || userMoved_ || !visual_ || distance_ <= 0) return;
+    visual_->currentExtent(extent_);
+    CameraView unpanned = camera_;
+    unpanned.eye -= pan_;
+    unpanned.centre -= pan_;
+    const double aspect = double(std::max(width(), 1)) / std::max(height(), 1);
+    const double needed = distanceToHold(unpanned, extent_, aspect);
+    if (needed > distance_ * 1.0001) {
+        distance_ = needed;
+        applyCamera();
+    }
+}
+
+void SceneView::resizeGL(int w, int h) {
+    const double r = devicePixelRatioF();
+    const int pw = static_cast<int>(w * r), ph = static_cast<int>(h * r);
+    window_->resized(0, 0, pw, ph);
+    window_->getEventQueue()->windowResize(0, 0, pw, ph);
+    viewer_->getCamera()->setViewport(0, 0, pw, ph);
+    applyCamera();
+}
+
+std::size_t SceneView::graphObjects() const {
+    struct Count : osg::NodeVisitor {
+        Count() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
+        void apply(osg::Node& node) override {
+            ++objects;
+            traverse(node);
+        }
+        std::size_t objects = 0;
+    } count;
+    if (root_) root_->accept(count);
+    return count.objects;
+}
+
+void SceneView::paintGL() {
+    window_->setDefaultFboId(gl_->defaultFramebufferObject());
+    if (osg_ && visual_) {  // labels apart for this camera and pose
+        const double r = devicePixelRatioF();
+        osg_->placeLabels(*visual_, camera_, static_cast<int>(width() * r), static_cast<int>(height() * r));
+    }
+    viewer_->frame();
+    ++frames_;
+    emit frameDrawn();
+}
+
+void SceneView::press(QMouseEvent* e) {
+    last_ = e->pos();
+    dragging_ = e->button();
+    if (e->button() == Qt::LeftButton) {
+        const int joint = jointAt(e->pos());
+        if (joint >= 0) emit jointClicked(joint);
+    }
+}
+
+void SceneView::move(QMouseEvent* e) {
+    const QPoint delta = e->pos() - last_;
+    last_ = e->pos();
+    if (!visual_) return;
+    if (e->buttons() & (Qt::LeftButton | Qt::RightButton | Qt::MiddleButton)) userMoved_ = true;
+    if (e->buttons() & Qt::LeftButton) {
+        azimuth_ -= delta.x() * 0.4;
+        elevation_ = std::clamp(elevation_ + delta.y() * 0.4, -89.9, 89.9);
+        applyCamera();
+        requestFrame();
+    } else if (e->buttons() & (Qt::RightButton | Qt::MiddleButton)) {
+        // Move the looked-at point in the picture plane, a pixel's worth of the view.
+        osg::Vec3d eye, centre, up;
+        viewer_->getCamera()->getViewMatrixAsLookAt(eye, centre, up);
+        osg::Vec3d forward = centre - eye;
+        forward.normalize();
+        osg::Vec3d right = forward ^ up;
+        right.normalize();
+        const osg::Vec3d pictureUp = right ^ forward;
+        const double perPixel = 2 * distance_ * std::tan(15.0 * M_PI / 180) / std::max(height(), 1);
+        const osg::Vec3d shift = (right * -delta.x() + pictureUp * delta.y()) * perPixel;
+        pan_ += Eigen::Vector3d(shift.x(), shift.y(), shift.z());
+        applyCamera();
+        requestFrame();
+    } else {
+        const int joint = jointAt(e->pos());
+        if (joint != hovered_) {
+            hovered_ = joint;
+            emit jointHovered(joint);
+        }
+    }
+}
+
+void SceneView::release() { dragging_ = Qt::NoButton; }
+
+void SceneView::wheel(QWheelEvent* e) { zoomBy(std::pow(0.9, e->angleDelta().y() / 120.0)); }
+
+void SceneView::zoomBy(double factor) {
+    distance_ *= factor;
+    userMoved_ = true;
+    applyCamera();
+    requestFrame();
+}
+
+}  // namespace ll::ui
