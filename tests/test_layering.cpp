@@ -2,12 +2,15 @@
 // OpenSceneGraph and nothing from ui/ or app/; ui includes nothing from app/. Inside
 // core the folders are layers in the order core/CMakeLists.txt lists (LL_CORE_LAYERS):
 // a folder includes only itself and the folders before it, and GiNaC only from
-// core/symbolic on (the build enforces the same with per-layer include folders).
+// core/symbolic on. Inside ui the same, in the order ui/CMakeLists.txt lists
+// (LL_UI_LAYERS: paint → document → window), and no Qt Widgets, Charts or OpenGL
+// widgets below window. The build enforces both with per-layer include folders.
 #include <QtTest>
 
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -40,12 +43,14 @@ class TestLayering : public QObject {
         return found;
     }
 
-    // The layer order as core/CMakeLists.txt declares it.
-    static std::vector<std::string> coreLayers() {
-        std::ifstream in(fs::path(LL_SOURCE_DIR) / "core" / "CMakeLists.txt");
+    // The layer order as core/CMakeLists.txt (or ui/'s) declares it.
+    static std::vector<std::string> coreLayers() { return layersOf("core", "LL_CORE_LAYERS"); }
+    static std::vector<std::string> uiLayers() { return layersOf("ui", "LL_UI_LAYERS"); }
+    static std::vector<std::string> layersOf(const char* folder, const std::string& variable) {
+        std::ifstream in(fs::path(LL_SOURCE_DIR) / folder / "CMakeLists.txt");
         const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
         std::smatch m;
-        if (!std::regex_search(text, m, std::regex("set\\(LL_CORE_LAYERS ([a-z ]+)\\)"))) qFatal("no LL_CORE_LAYERS");
+        if (!std::regex_search(text, m, std::regex("set\\(" + variable + " ([a-z ]+)\\)"))) qFatal("no %s", variable.c_str());
         std::vector<std::string> layers;
         std::istringstream words(m[1].str());
         for (std::string w; words >> w;) layers.push_back(w);
@@ -74,6 +79,36 @@ class TestLayering : public QObject {
                 found << QString("%1:%2: %3").arg(QString::fromStdString(file)).arg(n).arg(QString::fromStdString(line));
         }
         return found;
+    }
+
+    // "file:line: text" for each include of a higher ui layer in the sources of ui/<folder>,
+    // and, below `widgetsFrom`, of a header of `widgetHeaders` (Qt Widgets, Charts, OpenGL widgets).
+    static QStringList uiLayerViolations(const std::vector<std::string>& layers, const std::string& folder,
+                                         const std::string& file, const std::string& text,
+                                         const std::set<std::string>& widgetHeaders) {
+        QStringList found;
+        const int own = rank(layers, folder), widgetsFrom = rank(layers, "window");
+        const std::regex uiInclude("^\\s*#\\s*include\\s*\"ui/([a-z_]+)/"), qtInclude("^\\s*#\\s*include\\s*<(?:Qt[A-Za-z]+/)?(Q[A-Za-z]+)>");
+        std::istringstream lines(text);
+        std::string line;
+        for (int n = 1; std::getline(lines, line); ++n) {
+            std::smatch m;
+            const bool up = std::regex_search(line, m, uiInclude) && rank(layers, m[1].str()) > own;
+            const bool widget = own < widgetsFrom && std::regex_search(line, m, qtInclude) && widgetHeaders.count(m[1].str());
+            if (up || widget) found << QString("%1:%2: %3").arg(QString::fromStdString(file)).arg(n).arg(QString::fromStdString(line));
+        }
+        return found;
+    }
+
+    // The class headers of Qt's widget modules as installed (QWidget, QChartView, QOpenGLWidget, …).
+    static std::set<std::string> widgetHeaders() {
+        std::set<std::string> names;
+        for (const char* folder : {LL_QT_WIDGETS_INCLUDE, LL_QT_CHARTS_INCLUDE, LL_QT_OPENGLWIDGETS_INCLUDE})
+            for (const auto& entry : fs::directory_iterator(folder))
+                if (const std::string name = entry.path().filename().string(); name.size() > 1 && name[0] == 'Q' && entry.path().extension().empty())
+                    names.insert(name);
+        if (!names.count("QWidget") || !names.count("QChartView")) qFatal("Qt's widget headers not found");
+        return names;
     }
 
 private slots:
@@ -110,6 +145,43 @@ private slots:
         QVERIFY(rank(layers, "visual") < rank(layers, "symbolic"));
         QCOMPARE(layerViolations(layers, "visual", "f", "#include <ginac/ginac.h>\n").size(), 1);
         QCOMPARE(layerViolations(layers, "visual", "f", "#include \"core/symbolic/compiled_body_poses.hpp\"\n").size(), 1);
+    }
+
+    void uiLayersPointDown() {
+        const std::vector<std::string> layers = uiLayers();
+        QCOMPARE(layers, (std::vector<std::string>{"paint", "document", "window"}));
+        const std::set<std::string> widgets = widgetHeaders();
+        QStringList bad;
+        int files = 0;
+        for (const auto& dir : fs::directory_iterator(fs::path(LL_SOURCE_DIR) / "ui")) {
+            if (!dir.is_directory()) {
+                QVERIFY2(dir.path().filename() == "CMakeLists.txt", qPrintable(QString::fromStdString(dir.path().string() + " is outside the layers")));
+                continue;
+            }
+            const std::string folder = dir.path().filename().string();
+            QVERIFY2(rank(layers, folder) >= 0, qPrintable(QString::fromStdString("ui/" + folder + " is not a layer")));
+            for (const auto& entry : fs::directory_iterator(dir.path())) {
+                std::ifstream in(entry.path());
+                const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+                bad << uiLayerViolations(layers, folder, entry.path().string(), text, widgets);
+                ++files;
+            }
+        }
+        QVERIFY(files > 50);
+        QVERIFY2(bad.isEmpty(), qPrintable(bad.join('\n')));
+    }
+
+    // The ui check sees an upward include and a widget below the window layer.
+    void detectsAUiLayerViolation() {
+        const std::vector<std::string> layers = uiLayers();
+        const std::set<std::string> widgets = widgetHeaders();
+        QCOMPARE(uiLayerViolations(layers, "paint", "f", "#include \"ui/document/scene_document.hpp\"\n", widgets).size(), 1);
+        QCOMPARE(uiLayerViolations(layers, "document", "f", "#include \"ui/window/main_window.hpp\"\n", widgets).size(), 1);
+        QCOMPARE(uiLayerViolations(layers, "document", "f", "#include \"ui/paint/osg_scene.hpp\"\n", widgets).size(), 0);
+        QCOMPARE(uiLayerViolations(layers, "paint", "f", "#include <QWidget>\n", widgets).size(), 1);
+        QCOMPARE(uiLayerViolations(layers, "document", "f", "#include <QtCharts/QChartView>\n", widgets).size(), 1);
+        QCOMPARE(uiLayerViolations(layers, "document", "f", "#include <QUndoStack>\n", widgets).size(), 0);  // Qt Gui
+        QCOMPARE(uiLayerViolations(layers, "window", "f", "#include <QWidget>\n", widgets).size(), 0);
     }
 
     // How an item reads is decided from the quantity it is (core/symbolic/derivation.hpp),

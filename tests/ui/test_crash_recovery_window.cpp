@@ -23,8 +23,10 @@
 #include <iostream>
 
 #include "core/io/scene_file.hpp"
-#include "ui/joint_table_model.hpp"
-#include "ui/main_window.hpp"
+#include "ui/document/joint_table_model.hpp"
+#include "ui/window/main_window.hpp"
+#include "ui/window/autosave.hpp"
+#include "ui/window/model_editor.hpp"
 
 using namespace ll::ui;
 
@@ -39,14 +41,10 @@ int recoveryChild(const QString& scene) {
     w.setAskBeforeClosing(false);
     w.show();
     if (!w.openFile(scene, nullptr, true)) return 2;
-    w.jointModel().setData(w.jointModel().index(0, JointTableModel::A), "1.2", Qt::EditRole);
-    QElapsedTimer clock;
-    clock.start();
-    while (w.recoveryCopyFile().isEmpty() || !QFile::exists(w.recoveryCopyFile())) {
-        if (clock.elapsed() > 60000) return 3;
-        QTest::qWait(50);
-    }
-    std::cout << "autosaved " << w.recoveryCopyFile().toStdString() << std::endl;
+    w.editor().joints().setData(w.editor().joints().index(0, JointTableModel::A), "1.2", Qt::EditRole);
+    // The autosave timer writes the copy within 5 s of the edit.
+    if (!QTest::qWaitFor([&] { return !w.autosave().ownFile().isEmpty() && QFile::exists(w.autosave().ownFile()); }, 60000)) return 3;
+    std::cout << "autosaved " << w.autosave().ownFile().toStdString() << std::endl;
     return QApplication::exec();  // until SIGKILL
 }
 
@@ -117,38 +115,38 @@ private slots:
         {  // another scene: opened as asked; the arm's edits are pending apart, named
             MainWindow other;
             QVERIFY(opened(other, spring_));
-            const std::vector<RecoveryCopy> left = other.recoveriesLeft();
+            const std::vector<RecoveryCopy> left = other.autosave().leftBehind();
             QCOMPARE(int(left.size()), 1);
-            QVERIFY(!other.isOwnScene(left[0]));
-            QVERIFY(!other.restoreRecovery(left[0]));  // never in place of the scene asked for
+            QVERIFY(!other.autosave().isOwnScene(left[0]));
+            QVERIFY(!other.autosave().restore(left[0]));  // never in place of the scene asked for
             QCOMPARE(other.document().path(), spring_);
             QVERIFY(!other.document().isModified());
-            QVERIFY(other.recoveryQuestion(left[0]).contains("arm.json (in " + dir_.path()));
+            QVERIFY(other.autosave().question(left[0]).contains("arm.json (in " + dir_.path()));
         }
 
         MainWindow w;
         QVERIFY(opened(w, arm_));
-        const std::vector<RecoveryCopy> left = w.recoveriesLeft();
+        const std::vector<RecoveryCopy> left = w.autosave().leftBehind();
         QCOMPARE(int(left.size()), 1);
-        QVERIFY(w.isOwnScene(left[0]));
-        const QString question = w.recoveryQuestion(left[0]);
+        QVERIFY(w.autosave().isOwnScene(left[0]));
+        const QString question = w.autosave().question(left[0]);
         QVERIFY2(question.contains("arm.json (in " + dir_.path()), qPrintable(question));
         QVERIFY2(question.contains("robot.joints[0].a (joint 1): \"a1\"") && question.contains("1.2"), qPrintable(question));
         QVERIFY2(!question.contains("changed on disk"), qPrintable(question));
         QVERIFY(!w.document().isModified());  // nothing restored silently
-        QVERIFY(w.restoreRecovery(left[0]));
+        QVERIFY(w.autosave().restore(left[0]));
         QTRY_COMPARE_WITH_TIMEOUT(w.document().validScene().robot.joints[0].dh.a, 1.2, 30000);
         QVERIFY(w.document().isModified());
         QCOMPARE(w.document().path(), arm_);
         QVERIFY(!QFile::exists(left[0].file));           // the crashed copy is gone...
-        QVERIFY(QFile::exists(w.recoveryCopyFile()));    // ...after this window's own was written
+        QVERIFY(QFile::exists(w.autosave().ownFile()));    // ...after this window's own was written
         QFile f(arm_);
         QVERIFY(f.open(QIODevice::ReadOnly));
         QCOMPARE(f.readAll(), original);  // still untouched until saved
         w.document().undoStack()->undo();  // undo returns to the file as it is
         QTRY_COMPARE_WITH_TIMEOUT(w.document().validScene().robot.joints[0].dh.a, 1.0, 30000);
-        w.discardRecovery();
-        QVERIFY(w.recoveriesLeft().empty());
+        w.autosave().discard();
+        QVERIFY(w.autosave().leftBehind().empty());
     }
 
     // The dialog itself, as a student meets it on the next start: it names the file and
@@ -169,12 +167,12 @@ private slots:
             for (QAbstractButton* b : box->buttons())
                 if (b->text() == "Restore the edits") b->click();
         });
-        w.offerRecovery();
+        w.autosave().offer();
         QVERIFY2(asked.contains("arm.json (in ") && asked.contains("What the edits change"), qPrintable(asked));
         QTRY_COMPARE_WITH_TIMEOUT(w.document().validScene().robot.joints[0].dh.a, 1.2, 30000);
         QVERIFY(w.document().isModified());
-        QVERIFY(w.recoveriesLeft().empty());
-        w.discardRecovery();
+        QVERIFY(w.autosave().leftBehind().empty());
+        w.autosave().discard();
     }
 
     // Two windows on one scene keep a copy each; killed, both are offered; a file changed
@@ -189,7 +187,7 @@ private slots:
         {
             MainWindow w;  // both still running: their copies are theirs, not offered
             QVERIFY(opened(w, arm_));
-            QVERIFY(w.recoveriesLeft().empty());
+            QVERIFY(w.autosave().leftBehind().empty());
         }
         killHard(*first);
         killHard(*second);
@@ -208,11 +206,11 @@ private slots:
         }
         MainWindow w;
         QVERIFY(opened(w, arm_));
-        const std::vector<RecoveryCopy> left = w.recoveriesLeft();
+        const std::vector<RecoveryCopy> left = w.autosave().leftBehind();
         QCOMPARE(int(left.size()), 2);
         for (const RecoveryCopy& copy : left) {
-            QVERIFY(w.isOwnScene(copy));
-            const QString question = w.recoveryQuestion(copy);
+            QVERIFY(w.autosave().isOwnScene(copy));
+            const QString question = w.autosave().question(copy);
             const int warning = question.indexOf("has changed on disk");
             QVERIFY2(warning > 0 && warning < question.indexOf("What the edits change"), qPrintable(question));
             CrashRecovery::remove(copy);
@@ -234,7 +232,7 @@ private slots:
         MainWindow w;
         QVERIFY(opened(w, spring_));
         QStringList damaged;
-        QVERIFY(w.recoveriesLeft(&damaged).empty());
+        QVERIFY(w.autosave().leftBehind(&damaged).empty());
         QCOMPARE(damaged.size(), 2);
         QVERIFY(QFile::exists(recovery_ + "/cut.json.damaged") && QFile::exists(recovery_ + "/empty.json.damaged"));
         QVERIFY(!QFile::exists(recovery_ + "/cut.json"));

@@ -12,8 +12,8 @@
 #include "core/visual/frame_labels.hpp"
 #include "core/visual/visual_scene.hpp"
 #include "core/pipeline/scene_simulation.hpp"
-#include "ui/headless_renderer.hpp"
-#include "ui/osg_scene.hpp"
+#include "ui/paint/headless_renderer.hpp"
+#include "ui/paint/osg_scene.hpp"
 
 using namespace ll;
 

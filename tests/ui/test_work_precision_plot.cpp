@@ -9,7 +9,7 @@
 #include <QImage>
 #include <QPainter>
 
-#include "ui/work_precision_plot.hpp"
+#include "ui/paint/work_precision_plot.hpp"
 
 using namespace ll;
 

@@ -18,15 +18,17 @@
 #include <QTextBlock>
 
 #include "process_run.hpp"
-#include "ui/derivation_panel.hpp"
-#include "ui/derivation_view.hpp"
-#include "ui/entry_list.hpp"
-#include "ui/main_window.hpp"
-#include "ui/playback_bar.hpp"
-#include "ui/properties_panel.hpp"
-#include "ui/scene_view.hpp"
-#include "ui/torque_pane.hpp"
-#include "ui/trajectory_chart.hpp"
+#include "ui/window/derivation_panel.hpp"
+#include "ui/window/derivation_view.hpp"
+#include "ui/window/entry_list.hpp"
+#include "ui/window/main_window.hpp"
+#include "window_waits.hpp"
+#include "ui/window/entry_linking.hpp"
+#include "ui/window/playback_bar.hpp"
+#include "ui/window/properties_panel.hpp"
+#include "ui/window/scene_view.hpp"
+#include "ui/window/torque_pane.hpp"
+#include "ui/window/trajectory_chart.hpp"
 
 using ll::ui::MainWindow;
 
@@ -35,15 +37,12 @@ namespace {
 QString example(const char* name) { return QString(LL_EXAMPLES_DIR "/") + name; }
 
 bool settled(MainWindow& w, int seconds = 120) {
-    QElapsedTimer clock;
-    clock.start();
-    while (clock.elapsed() < seconds * 1000) {
-        QTest::qWait(20);
-        if (w.result() && !w.liveSimulation().busy() && !w.liveDerivation().busy() && w.derivation() &&
-            w.result()->request == w.liveSimulation().latestRequest() && w.selection().catalogue())
-            return true;
-    }
-    return false;
+    return QTest::qWaitFor(
+        [&] {
+            return w.result() && !w.liveSimulation().busy() && !w.liveDerivation().busy() && w.derivation() &&
+                   w.result()->request == w.liveSimulation().latestRequest() && w.selection().catalogue();
+        },
+        seconds * 1000);
 }
 
 // Per link: the emphasis the 3D view draws on its rods and COM (−1 faded, 0..1 lit; the
@@ -99,7 +98,7 @@ private slots:
     void planar2rLinksLightUp() {
         const auto window = opened("planar_2r.json");
         MainWindow& w = *window;
-        QVERIFY(w.selectEntry("b11"));
+        QVERIFY(w.linking().selectEntry("b11"));
         QCOMPARE(lit(w), (std::vector<int>{0, 1}));
         const ll::VisualScene& scene = *w.result()->visual;
         int axes = 0;
@@ -110,16 +109,16 @@ private slots:
                 ++axes;
             }
         QCOMPARE(axes, 1);
-        QVERIFY(w.selectEntry("b22"));
+        QVERIFY(w.linking().selectEntry("b22"));
         QCOMPARE(lit(w), (std::vector<int>{1}));
         QCOMPARE(linkStrengths(w)[0], -1.0f);
-        QVERIFY(w.readoutText().contains("b22"));
-        QVERIFY(w.readoutText().contains("kg·m²"));
+        QVERIFY(w.linking().readoutText().contains("b22"));
+        QVERIFY(w.linking().readoutText().contains("kg·m²"));
         // its curve over the run beside the energy plot
         QVERIFY(w.entryChart().isVisible());
         QVERIFY(w.entryChart().curvePoints() > 100);
         // an unknown entry is refused and the pick kept
-        QVERIFY(!w.selectEntry("b99"));
+        QVERIFY(!w.linking().selectEntry("b99"));
         QCOMPARE(w.selection().entry()->id, std::string("b22"));
     }
 
@@ -127,10 +126,10 @@ private slots:
     void zeroEntryLightsNothing() {
         const auto window = opened("puma560.json");
         MainWindow& w = *window;
-        QVERIFY(w.selectEntry("g1"));
+        QVERIFY(w.linking().selectEntry("g1"));
         QVERIFY(lit(w).empty());
         for (float s : linkStrengths(w)) QCOMPARE(s, -1.0f);
-        QVERIFY(w.readoutText().contains("no link"));
+        QVERIFY(w.linking().readoutText().contains("no link"));
     }
 
     // The Panda (structured form): each β_jk⁽ⁱ⁾ lights link i alone.
@@ -141,7 +140,7 @@ private slots:
         for (const ll::CatalogueEntry& e : w.selection().catalogue()->entries) {
             if (e.id.rfind("beta", 0) != 0 || betas >= 12) continue;
             ++betas;
-            QVERIFY(w.selectEntry(QString::fromStdString(e.id)));
+            QVERIFY(w.linking().selectEntry(QString::fromStdString(e.id)));
             QCOMPARE(lit(w), std::vector<int>{e.link});
         }
         QCOMPARE(betas, 12);
@@ -152,12 +151,12 @@ private slots:
     void valueIsEvalAtTheState() {
         const auto window = opened("puma560.json");
         MainWindow& w = *window;
-        QVERIFY(w.selectEntry("b23"));
+        QVERIFY(w.linking().selectEntry("b23"));
         const ll::Trajectory& traj = w.result()->simulation.trajectory;
         for (std::size_t k : {traj.size() / 5, traj.size() / 2, traj.size() - 1}) {
             w.playback().pause();
             w.playback().setTime(traj.t[k]);
-            QTest::qWait(10);
+            ll::test::flushEvents();
             QCOMPARE(w.selection().time(), traj.t[k]);
             const double shown = w.selection().value().at(0);
             QStringList q, qd;
@@ -186,10 +185,10 @@ private slots:
         at.setPosition(found.selectionStart() + 3);
         text->setTextCursor(at);
         text->ensureCursorVisible();
-        QTest::qWait(20);
+        ll::test::flushEvents();
         const QPoint p = text->cursorRect(at).center();
         QTest::mouseClick(text->viewport(), Qt::LeftButton, {}, p);
-        QTest::qWait(20);
+        ll::test::flushEvents();
         QVERIFY(w.selection().entry());
         const std::string id = w.selection().entry()->id;
         QVERIFY2(id == "b12" || id == "b21", id.c_str());
@@ -204,7 +203,7 @@ private slots:
         MainWindow& w = *window;
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         w.showDerivationStep(7);
-        QTest::qWait(50);
+        ll::test::flushEvents();
         QWidget* canvas = w.derivationView().findChild<QWidget*>("derivation-canvas");
         QVERIFY(canvas);
         std::set<std::string> picked;
@@ -212,7 +211,7 @@ private slots:
         // taking its size on a loaded machine moved b11 between clicks once in CI); a
         // real picking fault fails every pass.
         for (int pass = 0; pass < 3 && !picked.count("b11"); ++pass) {
-            QTest::qWait(100 * pass);
+            ll::test::flushEvents();
             const QSize size = canvas->size();
             for (int y = 4; y < std::min(canvas->height(), 700); y += 7)
                 for (int x = 40; x < canvas->width() - 10; x += 24) {
@@ -231,7 +230,7 @@ private slots:
     void pickedLinkMarksItsEntries() {
         const auto window = opened("planar_2r.json");
         MainWindow& w = *window;
-        w.pickLink(1);
+        w.linking().pickLink(1);
         QCOMPARE(w.selection().link(), 1);
         const auto& marked = w.selection().marked();
         QVERIFY(!marked.empty());
@@ -246,16 +245,14 @@ private slots:
         for (QTableView* t : inertials)
             if (t->isVisible() && t->selectionModel() && t->selectionModel()->isRowSelected(1, {})) selected = true;
         QVERIFY(selected);
-        QVERIFY(w.readoutText().contains("link&nbsp;2"));
+        QVERIFY(w.linking().readoutText().contains("link&nbsp;2"));
     }
 
     // The Torques tab draws a joint's parts; the Properties tab says every property holds.
     void torquesAndProperties() {
         const auto window = opened("puma560.json");
         MainWindow& w = *window;
-        QElapsedTimer clock;
-        clock.start();
-        while (!w.analysis() && clock.elapsed() < 60000) QTest::qWait(20);
+        QTest::qWaitFor([&] { return w.analysis() != nullptr; }, 60000);
         QVERIFY(w.analysis());
         QVERIFY(w.showPlotTab("torques"));
         w.torquePane().setJoint(1);

@@ -18,8 +18,8 @@
 #include "core/io/scene_file.hpp"
 #include "core/model/cancellation.hpp"
 #include "core/pipeline/display_derivation.hpp"
-#include "ui/derivation_pages.hpp"
-#include "ui/math_typesetter.hpp"
+#include "ui/paint/derivation_pages.hpp"
+#include "ui/paint/math_typesetter.hpp"
 #include "pdf_streams.hpp"
 
 using namespace ll;

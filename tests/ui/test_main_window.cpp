@@ -32,60 +32,47 @@
 #include "core/kinematics/dh_step_through.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
 #include "core/pipeline/scene_derivation.hpp"
-#include "ui/derivation_pages.hpp"
-#include "ui/derivation_panel.hpp"
-#include "ui/field_list_model.hpp"
-#include "ui/joint_table_model.hpp"
-#include "ui/derivation_view.hpp"
-#include "ui/composite_frame.hpp"
-#include "ui/dh_step_panel.hpp"
-#include "ui/example_gallery.hpp"
-#include "ui/main_window.hpp"
-#include "ui/parameter_rename.hpp"
-#include "ui/playback_bar.hpp"
-#include "ui/scene_view.hpp"
-#include "ui/teach_panel.hpp"
-#include "ui/trajectory_chart.hpp"
-#include "ui/work_precision_pane.hpp"
+#include "ui/paint/derivation_pages.hpp"
+#include "ui/window/derivation_panel.hpp"
+#include "ui/document/field_list_model.hpp"
+#include "ui/document/joint_table_model.hpp"
+#include "ui/window/derivation_view.hpp"
+#include "ui/paint/composite_frame.hpp"
+#include "ui/window/dh_step_panel.hpp"
+#include "ui/window/example_gallery.hpp"
+#include "ui/window/main_window.hpp"
+#include "ui/window/scene_files.hpp"
+#include "window_waits.hpp"
+#include "ui/window/ghost_run.hpp"
+#include "ui/window/presentation_mode.hpp"
+#include "ui/window/export_actions.hpp"
+#include "ui/window/autosave.hpp"
+#include "ui/window/model_editor.hpp"
+#include "ui/document/parameter_rename.hpp"
+#include "ui/window/playback_bar.hpp"
+#include "ui/window/scene_view.hpp"
+#include "ui/window/teach_panel.hpp"
+#include "ui/window/trajectory_chart.hpp"
+#include "ui/window/work_precision_pane.hpp"
 
 using ll::ui::JointTableModel;
 using ll::ui::MainWindow;
 namespace symbolic = ll::symbolic;
 namespace present = ll::present;
 
+using ll::test::checked;
+using ll::test::flushEvents;
+using ll::test::settled;
+
 namespace {
 
 QString example(const char* name) { return QString(LL_EXAMPLES_DIR "/") + name; }
-
-// Waits (processing events) until the window shows a simulation and a derivation of its
-// newest valid scene.
-bool settled(MainWindow& w, int seconds = 60) {
-    QElapsedTimer clock;
-    clock.start();
-    while (clock.elapsed() < seconds * 1000) {
-        QTest::qWait(20);
-        if (w.result() && !w.liveSimulation().busy() && !w.liveDerivation().busy() && w.result()->request == w.liveSimulation().latestRequest())
-            return true;
-    }
-    return false;
-}
 
 // Shows the window on an example, without asking before closing, and waits until it settled.
 bool shownOn(MainWindow& w, const char* name) {
     w.setAskBeforeClosing(false);
     w.show();
     return w.openFile(example(name), nullptr, true) && settled(w);
-}
-
-// Waits until the newest edit has been checked (diagnostics and valid scene up to date).
-bool checked(MainWindow& w) {
-    QElapsedTimer clock;
-    clock.start();
-    while (w.document().validating()) {
-        if (clock.elapsed() > 30000) return false;
-        QTest::qWait(5);
-    }
-    return true;
 }
 
 // Distance between the origins of DH frames 0 and 1 of the drawn scene at q = 0.
@@ -127,11 +114,7 @@ double differing(const QImage& a, const QImage& b) {
 
 // The GL view's picture after the next frame is drawn.
 QImage nextFrame(MainWindow& w) {
-    const long frames = w.sceneView().framesDrawn();
-    w.sceneView().requestFrame();
-    QElapsedTimer clock;
-    clock.start();
-    while (w.sceneView().framesDrawn() <= frames && clock.elapsed() < 10000) QTest::qWait(10);
+    ll::test::nextFrameDrawn(w);
     return w.sceneView().grabView();
 }
 
@@ -181,7 +164,7 @@ private slots:
         QVERIFY(w.openFile(example("planar_2r.json"), nullptr, true));
         QVERIFY(settled(w));
         const double d0 = w.sceneView().cameraDistance(), r0 = w.sceneView().visualScene()->bounds.radius();
-        JointTableModel& model = w.jointModel();
+        JointTableModel& model = w.editor().joints();
         QVERIFY(model.setData(model.index(0, JointTableModel::A), "1.5", Qt::EditRole));
         QVERIFY(checked(w));
         QVERIFY(settled(w));
@@ -217,7 +200,7 @@ private slots:
         const QString before = w.derivationPanel().text();
         QVERIFY2(before.contains("DH = "), qPrintable(before.left(300)));
 
-        JointTableModel& model = w.jointModel();
+        JointTableModel& model = w.editor().joints();
         QVERIFY(model.setData(model.index(0, JointTableModel::A), "1.5", Qt::EditRole));
         QVERIFY(checked(w));
         QCOMPARE(w.document().validScene().robot.joints[0].dh.a, 1.5);
@@ -258,11 +241,11 @@ private slots:
         const auto connection = connect(&w, &MainWindow::resultShown, this, [&] {
             if (cellPaintsBeforeResult < 0) cellPaintsBeforeResult = paints.count;
         });
-        JointTableModel& model = w.jointModel();
+        JointTableModel& model = w.editor().joints();
         QVERIFY(model.setData(model.index(0, JointTableModel::A), "1.25", Qt::EditRole));
         QVERIFY(checked(w));  // first the check: before it nothing is busy yet, and settled() would pass at once
         QVERIFY(settled(w));
-        QTest::qWait(200);  // the frame after the result
+        QVERIFY(ll::test::nextFrameDrawn(w));  // the frame after the result
         disconnect(connection);
         QCOMPARE(cellPaintsBeforeResult, 0);
         QVERIFY2(paints.count >= 1, "the edited cell was never painted");
@@ -281,7 +264,7 @@ private slots:
         QVERIFY(w.openFile(example("planar_2r.json"), nullptr, true));
         QVERIFY(settled(w));
         const int request = w.result()->request;
-        JointTableModel& model = w.jointModel();
+        JointTableModel& model = w.editor().joints();
         const QModelIndex mass = model.index(1, JointTableModel::Mass);
         QVERIFY(model.setData(mass, "-2", Qt::EditRole));
         QVERIFY(checked(w));
@@ -289,11 +272,11 @@ private slots:
         const QString tip = model.data(mass, Qt::ToolTipRole).toString();
         QVERIFY2(tip.startsWith("error:") && tip.contains("-2"), qPrintable(tip));
         QCOMPARE(model.data(mass, Qt::BackgroundRole).value<QBrush>().color(), QColor(255, 190, 190));
-        QVERIFY(w.diagnosticLines().join('\n').contains("robot.joints[1].mass"));
+        QVERIFY(w.editor().diagnosticLines().join('\n').contains("robot.joints[1].mass"));
         // The cell shows what was typed; the model on screen is still the valid one.
         QCOMPARE(model.data(mass, Qt::DisplayRole).toString(), QString("-2"));
         QCOMPARE(w.document().validScene().robot.joints[1].link.mass, 1.5);
-        QTest::qWait(200);
+        QVERIFY(ll::test::idle(w));  // no run of the invalid scene comes
         QCOMPARE(w.result()->request, request);
         QCOMPARE(w.result()->scene->robot.joints[1].link.mass, 1.5);
         // An unknown parameter in an expression names it.
@@ -323,11 +306,11 @@ private slots:
         QFETCH(QString, expected);
         MainWindow w;
         QVERIFY(shownOn(w, "planar_2r.json"));
-        JointTableModel& model = w.jointModel();
+        JointTableModel& model = w.editor().joints();
         const QModelIndex cell = model.index(0, column);
         QVERIFY(model.setData(cell, typed, Qt::EditRole));
         QVERIFY(checked(w));
-        const QString lines = w.diagnosticLines().join('\n');
+        const QString lines = w.editor().diagnosticLines().join('\n');
         QVERIFY2(lines.contains(expected), qPrintable(lines));
         QVERIFY2(!lines.contains("B(q)"), qPrintable(lines));
         const QString tip = model.data(cell, Qt::ToolTipRole).toString();
@@ -339,7 +322,7 @@ private slots:
     void absurdGravityIsNamedInTheEditor() {
         MainWindow w;
         QVERIFY(shownOn(w, "planar_2r.json"));
-        ll::ui::FieldListModel& fields = w.initialStateModel();
+        ll::ui::FieldListModel& fields = w.editor().initialState();
         int gravityY = -1;
         for (int r = 0; r < fields.rowCount(); ++r)
             if (fields.row(r).field == "effects.gravity[1]") gravityY = r;
@@ -348,7 +331,7 @@ private slots:
                                               {"-1e-9", "effects.gravity: absurdly small gravity 1e-09 m/s²"}}) {
             QVERIFY(fields.setData(fields.index(gravityY, ll::ui::FieldListModel::Value), typed, Qt::EditRole));
             QVERIFY(checked(w));
-            const QString lines = w.diagnosticLines().join('\n');
+            const QString lines = w.editor().diagnosticLines().join('\n');
             QVERIFY2(lines.contains(QString::fromUtf8(expected)) && !lines.contains("B(q)"), qPrintable(lines));
         }
     }
@@ -367,9 +350,9 @@ private slots:
         w.setAskBeforeClosing(false);
         w.show();
         QVERIFY(w.openFile(path, nullptr, true));
-        QVERIFY(w.jointModel().setData(w.jointModel().index(1, JointTableModel::ComX), "-1.5", Qt::EditRole));
+        QVERIFY(w.editor().joints().setData(w.editor().joints().index(1, JointTableModel::ComX), "-1.5", Qt::EditRole));
         QVERIFY(checked(w));
-        const QString lines = w.diagnosticLines().join('\n');
+        const QString lines = w.editor().diagnosticLines().join('\n');
         QVERIFY2(lines.contains("robot.joints[1] (joint 2): joint 2 moves no mass or inertia"), qPrintable(lines));
         QVERIFY2(lines.contains("hint: it happened with your edit of robot.joints[1].com[0] (joint 2)"), qPrintable(lines));
     }
@@ -385,7 +368,7 @@ private slots:
         QVERIFY2(rows[0].startsWith("Step 0: Generalized coordinates") && rows[1].startsWith("Step 6:") &&
                      rows[2].startsWith("Step 7:") && rows[3].startsWith("Step 8:"),
                  qPrintable(rows.join(" | ")));
-        QCOMPARE(w.editorTab(), QString("Lagrangian"));
+        QCOMPARE(w.editor().currentTabName(), QString("Lagrangian"));
         w.derivationView().showStep(0);
         w.derivationView().nextStep();
         QCOMPARE(w.derivationView().step(), 6);
@@ -400,14 +383,14 @@ private slots:
         QVERIFY(settled(w));
         QTRY_VERIFY_WITH_TIMEOUT(w.derivationView().listedSteps().size() >= 9, 30000);
         QVERIFY(w.derivationView().listedSteps()[1].startsWith("Step 1: Kinematic model"));
-        QCOMPARE(w.editorTab(), QString("DH"));
+        QCOMPARE(w.editor().currentTabName(), QString("DH"));
     }
 
     // Undo and redo restore the typed text, the valid model and the simulation.
     void undoAndRedoRestore() {
         MainWindow w;
         QVERIFY(shownOn(w, "planar_2r.json"));
-        JointTableModel& model = w.jointModel();
+        JointTableModel& model = w.editor().joints();
         const QModelIndex alpha = model.index(1, JointTableModel::D);
         model.setData(alpha, "0.25", Qt::EditRole);
         QVERIFY(checked(w));
@@ -445,18 +428,18 @@ private slots:
             MainWindow w;
             w.setAskBeforeClosing(false);
             QVERIFY(w.openFile(example("planar_2r.json"), nullptr, true));
-            JointTableModel& model = w.jointModel();
+            JointTableModel& model = w.editor().joints();
             model.setDegrees(true);
             model.setData(model.index(1, JointTableModel::Alpha), "90", Qt::EditRole);  // degrees: stored as "90°"
             QVERIFY(checked(w));
             model.setData(model.index(0, JointTableModel::Mass), "m1*1.25", Qt::EditRole);
             QVERIFY(checked(w));
             QString error;
-            QVERIFY2(w.saveTo(path, &error), qPrintable(error));
+            QVERIFY2(w.files().saveTo(path, &error), qPrintable(error));
             QVERIFY(!w.document().isModified());
             model.setData(model.index(0, JointTableModel::D), "0.1", Qt::EditRole);
             QVERIFY(checked(w));
-            QVERIFY(w.saveTo(path, &error));
+            QVERIFY(w.files().saveTo(path, &error));
             QVERIFY(QFile::exists(path + ".bak"));  // the previous save is the recovery copy
         }
         const ll::LoadedScene loaded = ll::loadScene(path.toStdString());
@@ -470,7 +453,7 @@ private slots:
         again.setAskBeforeClosing(false);
         QVERIFY(again.openFile(path, nullptr, true));
         QCOMPARE(again.document().validScene().robot.joints[0].link.mass, 2.5);
-        QCOMPARE(again.jointModel().data(again.jointModel().index(1, JointTableModel::Alpha), Qt::DisplayRole).toString(), QString("90°"));
+        QCOMPARE(again.editor().joints().data(again.editor().joints().index(1, JointTableModel::Alpha), Qt::DisplayRole).toString(), QString("90°"));
         QVERIFY(!again.document().isModified());
     }
 
@@ -483,10 +466,10 @@ private slots:
             auto* w = new MainWindow;
             w->setAskBeforeClosing(false);
             QVERIFY(w->openFile(path, nullptr, true));
-            w->jointModel().setData(w->jointModel().index(0, JointTableModel::A), "1.2", Qt::EditRole);
+            w->editor().joints().setData(w->editor().joints().index(0, JointTableModel::A), "1.2", Qt::EditRole);
             QVERIFY(checked(*w));
-            w->writeRecovery();  // what the 5 s autosave timer does
-            QVERIFY(QFile::exists(w->recoveryCopyFile()));
+            w->autosave().write();  // what the 5 s autosave timer does
+            QVERIFY(QFile::exists(w->autosave().ownFile()));
             // The crash: the window goes away without closing (no closeEvent, no save).
             delete w;
         }
@@ -494,9 +477,9 @@ private slots:
         MainWindow next;
         next.setAskBeforeClosing(false);
         QVERIFY(next.openFile(path, nullptr, true));
-        const std::vector<ll::ui::RecoveryCopy> left = next.recoveriesLeft();
+        const std::vector<ll::ui::RecoveryCopy> left = next.autosave().leftBehind();
         QCOMPARE(int(left.size()), 1);
-        QVERIFY(next.restoreRecovery(left[0]));
+        QVERIFY(next.autosave().restore(left[0]));
         QVERIFY(checked(next));
         QCOMPARE(next.document().validScene().robot.joints[0].dh.a, 1.2);
         QCOMPARE(next.document().path(), path);
@@ -507,9 +490,9 @@ private slots:
         QCOMPARE(next.document().validScene().robot.joints[0].dh.a, 1.0);
         next.document().undoStack()->redo();
         QVERIFY(checked(next));
-        QVERIFY(next.saveTo(path));
+        QVERIFY(next.files().saveTo(path));
         QCOMPARE(ll::loadScene(path.toStdString()).scene.robot.joints[0].dh.a, 1.2);
-        QVERIFY(next.recoveryCopyFile().isEmpty() && next.recoveriesLeft().empty());  // a save discards the recovery copy
+        QVERIFY(next.autosave().ownFile().isEmpty() && next.autosave().leftBehind().empty());  // a save discards the recovery copy
     }
 
     // A scene that fails to load shows its error lines and loses nothing open.
@@ -524,7 +507,7 @@ private slots:
         MainWindow w;
         w.setAskBeforeClosing(false);
         QVERIFY(w.openFile(example("planar_2r.json"), nullptr, true));
-        w.jointModel().setData(w.jointModel().index(0, JointTableModel::A), "1.1", Qt::EditRole);
+        w.editor().joints().setData(w.editor().joints().index(0, JointTableModel::A), "1.1", Qt::EditRole);
         QVERIFY(checked(w));
         const std::string text = w.document().text();
         const int edits = w.document().undoStack()->count();
@@ -562,7 +545,7 @@ private slots:
         w.playback().setTime(1.0);
         const long frames = w.sceneView().framesDrawn();
         QTRY_VERIFY(w.sceneView().framesDrawn() > frames);
-        QTest::qWait(100);
+        flushEvents();
         const QImage shot = w.screenshot();
         QVERIFY(shot.width() >= 1000 && shot.height() >= 700);
         shot.save(dir_.filePath(scene + ".png"));
@@ -588,7 +571,7 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(!w.derivationView().isDeriving() && w.derivationView().document(), 120000);
         QCOMPARE(w.derivationView().step(), 7);
         QVERIFY(w.derivationView().isVisible());
-        QTest::qWait(100);
+        flushEvents();
         const QImage page = w.screenshot();
         const QRect pane(w.derivationView().mapTo(&w, QPoint(0, 0)), w.derivationView().size());
         const auto [typeset, inks] = content(page, pane.adjusted(4, pane.height() / 3, -20, -20));
@@ -645,13 +628,13 @@ private slots:
     void oneEditDerivesOnce() {
         MainWindow w;
         QVERIFY(openShown(w, "planar_2r.json"));
-        QTest::qWait(200);
+        QVERIFY(ll::test::idle(w));
         const long before = ll::documentDerivations();
-        JointTableModel& model = w.jointModel();
+        JointTableModel& model = w.editor().joints();
         QVERIFY(model.setData(model.index(0, JointTableModel::A), "1.5", Qt::EditRole));
         QVERIFY(checked(w));
         QVERIFY(settled(w));
-        QTest::qWait(300);  // anything else that would derive has had its chance
+        QVERIFY(ll::test::idle(w));  // anything else that would derive has had its chance
         QCOMPARE(ll::documentDerivations() - before, 1L);
         QVERIFY(w.derivation() && w.derivation()->display);
         QCOMPARE(w.derivationView().document().get(), w.derivation()->display.get());
@@ -686,11 +669,11 @@ private slots:
         w.playback().pause();
         w.playback().setTime(3.0);
         const QImage alone = nextFrame(w);
-        w.setGhostIntegrator("euler");
-        QTRY_VERIFY_WITH_TIMEOUT(w.ghostResult() != nullptr, 60000);
-        QCOMPARE(QString::fromStdString(w.ghostResult()->simulation.stats.integrator), QString("euler"));
+        w.ghost().setIntegrator("euler");
+        QTRY_VERIFY_WITH_TIMEOUT(w.ghost().result() != nullptr, 60000);
+        QCOMPARE(QString::fromStdString(w.ghost().result()->simulation.stats.integrator), QString("euler"));
         // The classic lesson: Euler's energy drifts by orders of magnitude more.
-        const double drift = w.ghostResult()->simulation.stats.maxRelEnergyError;
+        const double drift = w.ghost().result()->simulation.stats.maxRelEnergyError;
         const double reference = w.result()->simulation.stats.maxRelEnergyError;
         QVERIFY2(drift > 100 * reference && drift > 1e-3, qPrintable(QString("euler %1, dopri5 %2").arg(drift).arg(reference)));
         w.playback().setTime(3.0);
@@ -704,8 +687,8 @@ private slots:
         QVERIFY(dashed);
         QVERIFY(dashed->count() > 50);
         w.screenshot().save(dir_.filePath("ghost.png"));
-        w.setGhostIntegrator("");
-        QVERIFY(!w.ghostResult());
+        w.ghost().setIntegrator("");
+        QVERIFY(!w.ghost().result());
         int dashedLeft = 0;
         for (QAbstractSeries* a : w.energyChart().chart()->series())
             if (auto* line = qobject_cast<QLineSeries*>(a); line && line->name().contains("euler")) ++dashedLeft;
@@ -756,12 +739,12 @@ private slots:
         const double font = QApplication::font().pointSizeF();
         auto axisFont = [&] { return static_cast<QValueAxis*>(w.energyChart().chart()->axes(Qt::Horizontal).front())->labelsFont().pointSizeF(); };
         const double chartFont = axisFont();
-        w.setPresentationMode(true);
+        w.presentationMode().setOn(true);
         QTRY_VERIFY(w.isFullScreen());
-        QVERIFY(w.presenting());
+        QVERIFY(w.presentationMode().on());
         QCOMPARE(QApplication::font().pointSizeF(), font * 1.6);
         QVERIFY(!w.findChild<QDockWidget*>("model")->isVisible());
-        QTest::qWait(1000);
+        QVERIFY(ll::test::nextFrameDrawn(w));  // laid out for presenting, the camera refitted
         w.screenshot().save(dir_.filePath("presentation.png"));
         // The plots grow with the window: Qt Charts keeps its own fonts.
         QCOMPARE(axisFont(), chartFont * 1.4);
@@ -797,7 +780,7 @@ private slots:
         QVERIFY2(differing(before, refitted) < 0.002, qPrintable(QString::number(differing(before, refitted))));
         QTest::keyClick(next, Qt::Key_Escape);
         QTRY_VERIFY(!w.isFullScreen());
-        QVERIFY(!w.presenting());
+        QVERIFY(!w.presentationMode().on());
         QCOMPARE(QApplication::font().pointSizeF(), font);
         QVERIFY(w.findChild<QDockWidget*>("model")->isVisible());
     }
@@ -819,10 +802,10 @@ private slots:
         MainWindow w;
         QVERIFY(openShown(w, qPrintable(scene)));
         w.playback().pause();
-        w.setPresentationSize(size);
-        w.setPresentationMode(true);
+        w.presentationMode().setSize(size);
+        w.presentationMode().setOn(true);
         QTRY_COMPARE(w.size(), size);
-        QTest::qWait(500);
+        QVERIFY(ll::test::nextFrameDrawn(w));  // laid out for presenting, the camera refitted
         ll::ui::SceneView& view = w.sceneView();
         const double share = double(view.width()) * view.height() / (double(w.width()) * w.height());
         const double robot = view.sceneHeightInView();
@@ -850,7 +833,7 @@ private slots:
             QVERIFY(distance >= last * (1 - 1e-12));
             last = distance;
         }
-        w.setPresentationMode(false);
+        w.presentationMode().setOn(false);
     }
 
     // File → Examples → Gallery: every example of examples/ with its picture (320×200, with
@@ -926,18 +909,18 @@ private slots:
                                                           .arg(where).arg(o == Qt::Horizontal ? "x" : "y").arg(n).arg(spacing).arg(needed)));
             }
         };
-        QTest::qWait(300);
+        flushEvents();
         check(w.energyChart(), "energy");
         for (QTabWidget* tabs : w.findChildren<QTabWidget*>())  // the joints' tab, so its plot is laid out
             for (QWidget* p = &w.jointsChart(); p; p = p->parentWidget())
                 if (tabs->indexOf(p) >= 0) tabs->setCurrentWidget(p);
-        QTest::qWait(300);
+        flushEvents();
         check(w.jointsChart(), "joints");
-        w.setPresentationMode(true);
+        w.presentationMode().setOn(true);
         QTRY_VERIFY(w.isFullScreen());
-        QTest::qWait(500);
+        flushEvents();
         check(w.energyChart(), "energy presenting");
-        w.setPresentationMode(false);
+        w.presentationMode().setOn(false);
         // A small plot (a narrow dock) at presentation scale: fewer ticks, still apart.
         ll::ui::TrajectoryChart small(ll::ui::TrajectoryChart::Kind::Energy);
         small.setScale(1.4);
@@ -945,7 +928,7 @@ private slots:
         small.resize(420, 150);
         small.show();
         QVERIFY(QTest::qWaitForWindowExposed(&small));
-        QTest::qWait(300);
+        flushEvents();
         check(small, "small");
     }
 
@@ -963,9 +946,9 @@ private slots:
             w.rememberLayout();
             QVERIFY(openShown(w, "planar_2r.json"));
             w.resize(1150, 720);
-            QTest::qWait(200);
+            flushEvents();
             w.resizeDocks({w.findChild<QDockWidget*>("plots")}, {300}, Qt::Vertical);
-            QTest::qWait(200);
+            flushEvents();
             before = layout(w);
             QVERIFY(w.close());
         }
@@ -985,7 +968,7 @@ private slots:
         QVERIFY(openShown(w, "planar_2r.json"));
         w.playback().pause();
         w.resize(1100, 700);  // smaller than the screen, so full screen resizes it
-        QTest::qWait(300);
+        flushEvents();
         const auto layout = [&] {
             QStringList out{QString("window %1x%2").arg(w.width()).arg(w.height())};
             for (QDockWidget* dock : w.findChildren<QDockWidget*>())
@@ -993,11 +976,11 @@ private slots:
             return out.join("; ");
         };
         const QString before = layout();
-        w.setPresentationMode(true);
+        w.presentationMode().setOn(true);
         QTRY_VERIFY(w.isFullScreen());
-        QTest::qWait(300);
+        flushEvents();
         QVERIFY2(layout() != before, "presentation mode changed nothing");
-        w.setPresentationMode(false);
+        w.presentationMode().setOn(false);
         QTRY_VERIFY(!w.isFullScreen());
         QTRY_COMPARE_WITH_TIMEOUT(layout(), before, 5000);
     }
@@ -1103,7 +1086,7 @@ private slots:
             static_cast<QDialog*>(dialog)->accept();  // QFileDialog::accept, through QDialog (protected in QFileDialog)
         });
         poll.start();
-        QSignalSpy exported(&w, &MainWindow::exportFinished);
+        QSignalSpy exported(&w.exports(), &ll::ui::ExportActions::finished);
         action->trigger();  // returns when the dialog is accepted
         QVERIFY2(chosen.startsWith("SVG") && chosen.contains("(*.svg)"), qPrintable(chosen));
         QVERIFY2(refused.isEmpty(), qPrintable(refused));
@@ -1122,9 +1105,9 @@ private slots:
         QVERIFY(openShown(w, "planar_2r.json"));
         QString error;
         const QString png = dir_.filePath("energy.png"), svg = dir_.filePath("energy.svg"), csv = dir_.filePath("energy.csv");
-        QVERIFY2(w.exportPlotTo(png, &error), qPrintable(error));
-        QVERIFY2(w.exportPlotTo(svg, &error), qPrintable(error));
-        QVERIFY2(w.exportPlotTo(csv, &error), qPrintable(error));
+        QVERIFY2(w.exports().plotTo(png, &error), qPrintable(error));
+        QVERIFY2(w.exports().plotTo(svg, &error), qPrintable(error));
+        QVERIFY2(w.exports().plotTo(csv, &error), qPrintable(error));
         const QImage plot(png);
         QVERIFY(!plot.isNull());
         QVERIFY(content(plot, plot.rect().adjusted(60, 20, -150, -40)).first > 0.005);
@@ -1138,17 +1121,17 @@ private slots:
             const QList<QByteArray> v = row.split(',');
             QVERIFY(std::abs(v[1].toDouble() + v[2].toDouble() - v[3].toDouble()) < 1e-9 * (1 + std::abs(v[3].toDouble())));
         }
-        QVERIFY(!w.exportPlotTo(dir_.filePath("missing/energy.png"), &error));
+        QVERIFY(!w.exports().plotTo(dir_.filePath("missing/energy.png"), &error));
         QVERIFY(!error.isEmpty());
 
-        QSignalSpy exported(&w, &MainWindow::exportFinished);
+        QSignalSpy exported(&w.exports(), &ll::ui::ExportActions::finished);
         const QString pdf = dir_.filePath("derivation.pdf"), tex = dir_.filePath("derivation.tex");
         const long derivations = ll::documentDerivations();
-        QVERIFY2(w.exportDerivationTo(pdf, &error), qPrintable(error));
+        QVERIFY2(w.exports().derivationTo(pdf, &error), qPrintable(error));
         QVERIFY(exported.wait(60000));
         QCOMPARE(exported.back().at(1).toString(), QString());
         QVERIFY(readAll(pdf).startsWith("%PDF-"));
-        QVERIFY2(w.exportDerivationTo(tex, &error), qPrintable(error));
+        QVERIFY2(w.exports().derivationTo(tex, &error), qPrintable(error));
         QVERIFY(exported.wait(60000));
         const QByteArray latex = readAll(tex);
         QVERIFY(latex.startsWith("\\documentclass") && latex.contains("\\end{document}"));
@@ -1160,7 +1143,7 @@ private slots:
             const QString words = QString::fromUtf8(text.readAllStandardOutput());
             QVERIFY2(words.contains("Step 7") && words.contains("B(q)"), qPrintable(words.left(300)));
         }
-        QVERIFY(!w.exportDerivationTo(dir_.filePath("derivation.doc"), &error));
+        QVERIFY(!w.exports().derivationTo(dir_.filePath("derivation.doc"), &error));
         // Typeset pages as SVG and PNG, a file per page, as many as the PDF has; each
         // opens and shows ink.
         const int pdfPages = static_cast<int>(ll::ui::paginate(*w.derivation()->display).pages.size());
@@ -1174,7 +1157,7 @@ private slots:
                     QFile stale(dir_.filePath(QString("slides/derivation-%1.svg").arg(k)));
                     QVERIFY(stale.open(QIODevice::WriteOnly) && stale.write("<svg/>") == 6);
                 }
-            QVERIFY2(w.exportDerivationTo(file, &error), qPrintable(error));
+            QVERIFY2(w.exports().derivationTo(file, &error), qPrintable(error));
             QVERIFY(exported.wait(60000));
             QCOMPARE(exported.back().at(1).toString(), QString());
             const QStringList written = QDir(dir_.filePath("slides")).entryList({QString("*.%1").arg(suffix)});
@@ -1207,7 +1190,7 @@ private slots:
 
         // The animation: 0.5 s at 30 fps as a folder of frames, then as MP4.
         const QString frames = dir_.filePath("frames/");
-        QVERIFY2(w.exportAnimationTo(frames, &error, 0.5, false), qPrintable(error));
+        QVERIFY2(w.exports().animationTo(frames, &error, 0.5, false), qPrintable(error));
         QVERIFY(exported.wait(120000));
         QCOMPARE(exported.back().at(1).toString(), QString());
         const QStringList files = QDir(frames).entryList({"*.png"}, QDir::Files, QDir::Name);
@@ -1217,7 +1200,7 @@ private slots:
         QVERIFY(differing(first, last) > 0.001);  // the arm moved
         if (!QStandardPaths::findExecutable("ffprobe").isEmpty()) {
             const QString mp4 = dir_.filePath("animation.mp4");
-            QVERIFY2(w.exportAnimationTo(mp4, &error, 0.5, false), qPrintable(error));
+            QVERIFY2(w.exports().animationTo(mp4, &error, 0.5, false), qPrintable(error));
             QVERIFY(exported.wait(120000));
             QCOMPARE(exported.back().at(1).toString(), QString());
             QProcess probe;
@@ -1233,7 +1216,7 @@ private slots:
         // panel holds the derivation step shown, inked, beside the moving plot.
         w.showDerivationStep(8);
         const QString slides = dir_.filePath("slide-frames/");
-        QVERIFY2(w.exportAnimationTo(slides, &error, 0.3, false, QSize(1920, 1080)), qPrintable(error));
+        QVERIFY2(w.exports().animationTo(slides, &error, 0.3, false, QSize(1920, 1080)), qPrintable(error));
         QVERIFY(exported.wait(120000));
         QCOMPARE(exported.back().at(1).toString(), QString());
         const QStringList slideFiles = QDir(slides).entryList({"*.png"}, QDir::Files, QDir::Name);
@@ -1250,7 +1233,7 @@ private slots:
         // The lab report (File → Export → Lab report): every file of the bundle in the
         // folder, the scene as edited in the window.
         const QString report = dir_.filePath("lab-report");
-        QVERIFY2(w.exportLabReportTo(report, &error, false), qPrintable(error));
+        QVERIFY2(w.exports().labReportTo(report, &error, false), qPrintable(error));
         QVERIFY(exported.wait(300000));
         QCOMPARE(exported.back().at(1).toString(), QString());
         for (const char* f : {"derivation.pdf", "trajectory.csv", "energy.svg", "joints.svg", "slide.mp4", "index.md"})
@@ -1274,10 +1257,10 @@ private slots:
         QVERIFY(settled(w));
         const std::string description = w.document().value("/description").get<std::string>();
         QString error;
-        QVERIFY(!w.renameParameter("a1", "a2", &error));  // taken
+        QVERIFY(!w.editor().renameParameter("a1", "a2", &error));  // taken
         QVERIFY2(error.contains("a2"), qPrintable(error));
-        QVERIFY(!w.renameParameter("a1", "1x", &error));  // not a name
-        QVERIFY2(w.renameParameter("a1", "L1", &error), qPrintable(error));
+        QVERIFY(!w.editor().renameParameter("a1", "1x", &error));  // not a name
+        QVERIFY2(w.editor().renameParameter("a1", "L1", &error), qPrintable(error));
         QVERIFY(checked(w));
         QVERIFY(!w.document().hasErrors());
         QCOMPARE(w.document().value("/robot/joints/0/a").get<std::string>(), std::string("L1"));
@@ -1306,28 +1289,28 @@ private slots:
             return std::nan("");
         };
         QString error;
-        QVERIFY2(w.addParameter("m3", "0.75", &error), qPrintable(error));
+        QVERIFY2(w.editor().addParameter("m3", "0.75", &error), qPrintable(error));
         QVERIFY(checked(w));
         QCOMPARE(value("m3"), 0.75);
-        QVERIFY(!w.addParameter("m3", "1", &error));
+        QVERIFY(!w.editor().addParameter("m3", "1", &error));
         QVERIFY(error.contains("m3"));
-        QVERIFY(!w.addParameter("3m", "1", &error));
+        QVERIFY(!w.editor().addParameter("3m", "1", &error));
         // Using it: the mass of link 2 becomes m3.
-        w.jointModel().setData(w.jointModel().index(1, JointTableModel::Mass), "m3", Qt::EditRole);
+        w.editor().joints().setData(w.editor().joints().index(1, JointTableModel::Mass), "m3", Qt::EditRole);
         QVERIFY(checked(w));
         QCOMPARE(w.document().validScene().robot.joints[1].link.mass, 0.75);
         // Removing a parameter in use: the loader names it, the valid model stays.
-        w.removeParameter("m3");
+        w.editor().removeParameter("m3");
         QVERIFY(checked(w));
         QVERIFY(w.document().hasErrors());
-        QVERIFY2(w.diagnosticLines().join('\n').contains("m3"), qPrintable(w.diagnosticLines().join('\n')));
+        QVERIFY2(w.editor().diagnosticLines().join('\n').contains("m3"), qPrintable(w.editor().diagnosticLines().join('\n')));
         QCOMPARE(w.document().validScene().robot.joints[1].link.mass, 0.75);
         w.document().undoStack()->undo();
         QVERIFY(checked(w));
         QVERIFY(!w.document().hasErrors());
         QCOMPARE(value("m3"), 0.75);
         // Unused: removed cleanly; undo brings it back.
-        w.removeParameter("m2");
+        w.editor().removeParameter("m2");
         QVERIFY(checked(w));
         QVERIFY(!w.document().hasErrors());
         QVERIFY(std::isnan(value("m2")));
@@ -1352,17 +1335,17 @@ private slots:
         QVERIFY(w.openFile(":/examples/planar_2r.json", nullptr, true));
         QVERIFY(settled(w, 120));
         const auto shot = [&](const char* name) {
-            QTest::qWait(300);  // the window repainted before the screen is grabbed
+            QVERIFY(ll::test::nextFrameDrawn(w));  // the window repainted before the screen is grabbed
             w.screenshot().save(dir_.filePath(QString("student-%1.png").arg(name)));
         };
         shot("1-opened");
         // The DH table: select joint 1's a, type 1.2, Enter.
         QTableView* dh = nullptr;
         for (QTableView* t : w.findChildren<QTableView*>())
-            if (t->model() == &w.jointModel() && !t->isColumnHidden(JointTableModel::A) && t->isVisible()) dh = t;
+            if (t->model() == &w.editor().joints() && !t->isColumnHidden(JointTableModel::A) && t->isVisible()) dh = t;
         QVERIFY(dh);
         dh->setFocus();
-        dh->setCurrentIndex(w.jointModel().index(0, JointTableModel::A));
+        dh->setCurrentIndex(w.editor().joints().index(0, JointTableModel::A));
         QTest::keyClick(dh, '1');  // any key opens the cell's editor with that key typed
         auto* editor = dh->viewport()->findChild<QLineEdit*>();
         QVERIFY(editor && editor->isVisible());
@@ -1393,8 +1376,7 @@ private slots:
         w.playback().pause();
         play->trigger();
         QVERIFY(w.playback().isPlaying());
-        QTest::qWait(1000);
-        QVERIFY2(w.playback().time() > 0.2, qPrintable(QString::number(w.playback().time())));
+        QVERIFY2(QTest::qWaitFor([&] { return w.playback().time() > 0.2; }, 20000), qPrintable(QString::number(w.playback().time())));
         shot("3-playing");
         // Scrub: a click in the energy plot at 60 % of its width pauses there.
         auto& chart = w.energyChart();
@@ -1416,7 +1398,7 @@ private slots:
         QVERIFY(w.teachPanel().readout() != readout);
         shot("5-teach");
         QString error;
-        QVERIFY2(w.exportPlotTo(dir_.filePath("student-energy.png"), &error), qPrintable(error));
+        QVERIFY2(w.exports().plotTo(dir_.filePath("student-energy.png"), &error), qPrintable(error));
         QVERIFY(!QImage(dir_.filePath("student-energy.png")).isNull());
     }
 

@@ -5,7 +5,7 @@
 #include "core/io/scene_file.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "test_support.hpp"
-#include "ui/trajectory_table_model.hpp"
+#include "ui/document/trajectory_table_model.hpp"
 
 using namespace ll;
 

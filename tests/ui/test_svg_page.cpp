@@ -17,9 +17,9 @@
 #include "core/io/scene_file.hpp"
 #include "core/pipeline/display_derivation.hpp"
 #include "core/present/display_builder.hpp"
-#include "ui/derivation_pages.hpp"
-#include "ui/math_typesetter.hpp"
-#include "ui/svg_page.hpp"
+#include "ui/paint/derivation_pages.hpp"
+#include "ui/paint/math_typesetter.hpp"
+#include "ui/paint/svg_page.hpp"
 
 using namespace ll;
 

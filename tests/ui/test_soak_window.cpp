@@ -16,12 +16,13 @@
 #include <fstream>
 #include <random>
 
-#include "ui/joint_table_model.hpp"
-#include "ui/live_derivation.hpp"
-#include "ui/live_simulation.hpp"
-#include "ui/main_window.hpp"
-#include "ui/playback_bar.hpp"
-#include "ui/scene_view.hpp"
+#include "ui/document/joint_table_model.hpp"
+#include "ui/document/live_derivation.hpp"
+#include "ui/document/live_simulation.hpp"
+#include "ui/window/main_window.hpp"
+#include "ui/window/model_editor.hpp"
+#include "ui/window/playback_bar.hpp"
+#include "ui/window/scene_view.hpp"
 
 using namespace ll::ui;
 
@@ -88,9 +89,9 @@ private slots:
                 nextScene += period;
             }
             if (t >= nextEdit) {  // a student's edit: a link's mass, as typed in the table
-                const int row = static_cast<int>(rng() % static_cast<unsigned>(w.jointModel().rowCount()));
+                const int row = static_cast<int>(rng() % static_cast<unsigned>(w.editor().joints().rowCount()));
                 const QString mass = QString::number(1.0 + (rng() % 100) / 20.0);
-                QVERIFY(w.jointModel().setData(w.jointModel().index(row, JointTableModel::Mass), mass, Qt::EditRole));
+                QVERIFY(w.editor().joints().setData(w.editor().joints().index(row, JointTableModel::Mass), mass, Qt::EditRole));
                 ++edits;
                 nextEdit += 10;
             }

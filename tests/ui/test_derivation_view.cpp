@@ -7,7 +7,7 @@
 #include <QSignalSpy>
 
 #include "core/io/scene_file.hpp"
-#include "ui/derivation_view.hpp"
+#include "ui/window/derivation_view.hpp"
 
 using namespace ll;
 

@@ -12,7 +12,7 @@
 #include <QTemporaryDir>
 
 #include "process_run.hpp"
-#include "ui/lab_report.hpp"  // the bundle's contents, as documented there
+#include "ui/document/lab_report.hpp"  // the bundle's contents, as documented there
 
 class TestReportCli : public QObject {
     Q_OBJECT

@@ -13,9 +13,9 @@
 #include "core/visual/trajectory_sampler.hpp"
 #include "core/pipeline/scene_visual.hpp"
 #include "core/visual/visual_scene.hpp"
-#include "ui/edge_smoothing.hpp"
-#include "ui/headless_renderer.hpp"
-#include "ui/osg_scene.hpp"
+#include "ui/paint/edge_smoothing.hpp"
+#include "ui/paint/headless_renderer.hpp"
+#include "ui/paint/osg_scene.hpp"
 
 using namespace ll;
 

@@ -11,7 +11,7 @@
 #include "core/io/scene_file.hpp"
 #include "core/pipeline/scene_simulation.hpp"
 #include "core/model/utf8_text.hpp"
-#include "ui/work_precision_plot.hpp"
+#include "ui/paint/work_precision_plot.hpp"
 
 class TestAccuracyCli : public QObject {
     Q_OBJECT

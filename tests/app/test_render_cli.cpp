@@ -11,7 +11,7 @@
 
 #include <csignal>
 
-#include "ui/composite_frame.hpp"
+#include "ui/paint/composite_frame.hpp"
 
 class TestRenderCli : public QObject {
     Q_OBJECT

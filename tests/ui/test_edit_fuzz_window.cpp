@@ -18,34 +18,24 @@
 #include <random>
 
 #include "core/io/scene_file.hpp"
-#include "ui/field_list_model.hpp"
-#include "ui/joint_table_model.hpp"
-#include "ui/live_simulation.hpp"
-#include "ui/main_window.hpp"
+#include "ui/document/field_list_model.hpp"
+#include "ui/document/joint_table_model.hpp"
+#include "ui/document/live_simulation.hpp"
+#include "ui/window/main_window.hpp"
+#include "window_waits.hpp"
+#include "ui/window/model_editor.hpp"
 
 using namespace ll;
 using namespace ll::ui;
 
 namespace {
 
-bool checked(MainWindow& w) {
-    QElapsedTimer clock;
-    clock.start();
-    while (w.document().validating()) {
-        if (clock.elapsed() > 30000) return false;
-        QTest::qWait(1);
-    }
-    return true;
-}
+using ll::test::checked;
 
+// The newest edit's simulation is shown (its derivation may still run: the fuzz does not wait for it).
 bool settled(MainWindow& w) {
-    QElapsedTimer clock;
-    clock.start();
-    while (clock.elapsed() < 120000) {
-        QTest::qWait(10);
-        if (w.result() && !w.liveSimulation().busy() && w.result()->request == w.liveSimulation().latestRequest()) return true;
-    }
-    return false;
+    return QTest::qWaitFor(
+        [&] { return w.result() && !w.liveSimulation().busy() && w.result()->request == w.liveSimulation().latestRequest(); }, 120000);
 }
 
 std::vector<std::string> examples() {
@@ -130,7 +120,7 @@ private:
             const bool robot = doc.json().contains("robot");
             for (int step = 0; step < perScene; ++step, ++edits_) {
                 const std::string before = doc.json().dump();
-                JointTableModel& joints = w.jointModel();
+                JointTableModel& joints = w.editor().joints();
                 const int rows = joints.rowCount();
                 std::uniform_int_distribution<int> action(0, 19);
                 // A student fixes most mistakes before going on: from an invalid state, undo half the time.
@@ -155,19 +145,19 @@ private:
                     static const char* const shapes[] = {"rod", "cylinder", "disc", "sphere", "box"};
                     joints.fillInertiaFromShape(anyRow(), shapes[rng() % 5], {QString::number(0.1 + (rng() % 10) / 10.0), "0.2", "0.3"});
                 } else if (a == 14) {
-                    const int n = w.parameterModel().rowCount();
+                    const int n = w.editor().parameters().rowCount();
                     const int what = static_cast<int>(rng() % 3);
                     if (what == 0 || n == 0) {
-                        w.addParameter(QString("p%1").arg(rng() % 50), QString::number((rng() % 100) / 10.0));
+                        w.editor().addParameter(QString("p%1").arg(rng() % 50), QString::number((rng() % 100) / 10.0));
                     } else {
-                        const QString name = w.parameterModel().data(w.parameterModel().index(static_cast<int>(rng() % n), 0), Qt::DisplayRole).toString();
-                        if (what == 1) w.renameParameter(name, QString("r%1").arg(rng() % 50));
-                        else w.removeParameter(name);
+                        const QString name = w.editor().parameters().data(w.editor().parameters().index(static_cast<int>(rng() % n), 0), Qt::DisplayRole).toString();
+                        if (what == 1) w.editor().renameParameter(name, QString("r%1").arg(rng() % 50));
+                        else w.editor().removeParameter(name);
                     }
                 } else if (a == 15) {
-                    editFieldList(w.parameterModel(), rng);
+                    editFieldList(w.editor().parameters(), rng);
                 } else if (a == 16) {
-                    editFieldList(robot ? w.initialStateModel() : w.lagrangianModel(), rng);
+                    editFieldList(robot ? w.editor().initialState() : w.editor().lagrangian(), rng);
                 } else if (a == 17 || a == 18) {
                     doc.undoStack()->undo();
                 } else {
