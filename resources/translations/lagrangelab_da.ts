@@ -102,7 +102,7 @@
 <context>
     <name>DerivationView</name>
     <message>
-        <location filename="../../ui/window/derivation_view.cpp" line="+283" />
+        <location filename="../../ui/window/derivation_view.cpp" line="+311" />
         <source>Previous</source>
         <translation>Forrige</translation>
     </message>
@@ -112,12 +112,12 @@
         <translation>Næste</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+101" />
         <source>No scene</source>
         <translation>Ingen scene</translation>
     </message>
     <message>
-        <location line="+35" />
+        <location line="-83" />
         <source>DH parameters</source>
         <translation>DH-parametre</translation>
     </message>
@@ -133,13 +133,14 @@
         <translation>Trin %1: %2</translation>
     </message>
     <message>
-        <location line="+45" />
-        <location line="+28" />
+        <location line="+37" />
+        <location line="+22" />
+        <location line="+12" />
         <source>Deriving…</source>
         <translation>Udleder…</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+4" />
         <source>Error: %1</source>
         <translation>Fejl: %1</translation>
     </message>
@@ -162,12 +163,12 @@
 <context>
     <name>DhStepPanel</name>
     <message>
-        <location filename="../../ui/window/dh_step_panel.cpp" line="+26" />
+        <location filename="../../ui/window/dh_step_panel.cpp" line="+58" />
         <source>Joint i</source>
         <translation>Led i</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+1" />
         <source>◀ Previous motion</source>
         <translation>◀ Forrige bevægelse</translation>
     </message>
@@ -182,7 +183,7 @@
         <translation>Animér den næste bevægelse</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+1" />
         <source>Every parameter on the robot</source>
         <translation>Alle parametre på robotten</translation>
     </message>
@@ -192,7 +193,7 @@
         <translation>Hver rækkes θ, d, a og α tegnet som buer og pile med deres værdier, i den viste stilling</translation>
     </message>
     <message>
-        <location line="+87" />
+        <location line="+74" />
         <source>A typed Lagrangian has no DH table: the step-through shows a robot's rows.</source>
         <translation>En indtastet Lagrange-funktion har ingen DH-tabel: gennemgangen viser en robots rækker.</translation>
     </message>
@@ -241,7 +242,7 @@
 <context>
     <name>EntryList</name>
     <message>
-        <location filename="../../ui/window/entry_list.cpp" line="+85" />
+        <location filename="../../ui/window/entry_list.cpp" line="+87" />
         <source>Find an entry: b11, g2, beta, p_c…</source>
         <translation>Find et element: b11, g2, beta, p_c…</translation>
     </message>
@@ -323,7 +324,7 @@
 <context>
     <name>ExampleGallery</name>
     <message>
-        <location filename="../../ui/window/example_gallery.cpp" line="+19" />
+        <location filename="../../ui/window/example_gallery.cpp" line="+21" />
         <source>Example gallery</source>
         <translation>Eksempelgalleri</translation>
     </message>
@@ -331,7 +332,7 @@
 <context>
     <name>ExportActions</name>
     <message>
-        <location filename="../../ui/window/export_actions.cpp" line="+44" />
+        <location filename="../../ui/window/export_actions.cpp" line="+51" />
         <source>Screenshot (PNG)…</source>
         <translation>Skærmbillede (PNG)…</translation>
     </message>
@@ -351,12 +352,12 @@
         <translation>Animation (MP4, WebM, GIF)…</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+6" />
         <source>Video for slides, %1×%2 (3D view, equation, energy)…</source>
         <translation>Video til slides, %1×%2 (3D-visning, ligning, energi)…</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+4" />
         <source>Lab report (PDF, CSV, SVG plots, scene, video) into a folder…</source>
         <translation>Laboratorierapport (PDF, CSV, SVG-plot, scene, video) i en mappe…</translation>
     </message>
@@ -544,12 +545,12 @@
 <context>
     <name>GhostRun</name>
     <message>
-        <location filename="../../ui/window/ghost_run.cpp" line="+19" />
+        <location filename="../../ui/window/ghost_run.cpp" line="+22" />
         <source>Ghost run</source>
         <translation>Spøgelseskørsel</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+8" />
         <source>none</source>
         <translation>ingen</translation>
     </message>
@@ -711,22 +712,17 @@
 <context>
     <name>LanguageMenu</name>
     <message>
-        <location filename="../../ui/window/language_menu.cpp" line="+18" />
+        <location filename="../../ui/window/language_menu.cpp" line="+35" />
         <source>&amp;Language</source>
         <translation>&amp;Sprog</translation>
     </message>
     <message>
-        <location line="+13" />
-        <source>The derivation is shown in the new language now; the menus and panels follow when LagrangeLab starts again.</source>
-        <translation>Udledningen vises nu på det nye sprog; menuer og paneler følger med, når LagrangeLab startes igen.</translation>
-    </message>
-    <message>
-        <location line="+3" />
+        <location line="+1" />
         <source>&amp;Notation</source>
         <translation>&amp;Notation</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+3" />
         <source>The course notes: B q̈ + C q̇ + g = Q</source>
         <translation>Kursusnoterne: B q̈ + C q̇ + g = Q</translation>
     </message>
@@ -749,7 +745,7 @@
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../ui/window/main_window.cpp" line="+93" />
+        <location filename="../../ui/window/main_window.cpp" line="+97" />
         <source>Fit</source>
         <translation>Tilpas</translation>
     </message>
@@ -774,7 +770,7 @@
         <translation>iso</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+5" />
         <source>frames</source>
         <translation>koordinatsystemer</translation>
     </message>
@@ -794,17 +790,17 @@
         <translation>spor</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="+26" />
         <source>Model</source>
         <translation>Model</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+10" />
         <source>Derivation</source>
         <translation>Udledning</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+11" />
         <source>◀ Previous step</source>
         <translation>◀ Forrige trin</translation>
     </message>
@@ -814,12 +810,12 @@
         <translation>Næste trin ▶</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+8" />
         <source>step %1 (%2 of %3)</source>
         <translation>trin %1 (%2 af %3)</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+21" />
         <source>Typeset</source>
         <translation>Typesat</translation>
     </message>
@@ -834,33 +830,33 @@
         <translation>Elementer</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+6" />
         <source>Plots</source>
         <translation>Grafer</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+24" />
         <source>Energy</source>
         <translation>Energi</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+0" />
         <source>Joints q, dq/dt</source>
         <translation>Led q, dq/dt</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location line="+103" />
+        <location line="+0" />
+        <location line="+123" />
         <source>Teach</source>
         <translation>Teach</translation>
     </message>
     <message>
-        <location line="-102" />
+        <location line="-123" />
         <source>Torques</source>
         <translation>Momenter</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+0" />
         <source>Properties</source>
         <translation>Egenskaber</translation>
     </message>
@@ -870,42 +866,52 @@
         <translation>Beregningsarbejde–præcision</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+0" />
         <source>DH step-through</source>
         <translation>DH-gennemgang</translation>
     </message>
     <message>
-        <location line="+64" />
+        <location line="+77" />
         <source>&amp;File</source>
         <translation>&amp;Filer</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+5" />
         <source>Export</source>
         <translation>Eksportér</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+3" />
         <source>&amp;Quit</source>
         <translation>&amp;Afslut</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+3" />
         <source>&amp;Edit</source>
         <translation>&amp;Rediger</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+5" />
         <source>&amp;Undo</source>
         <translation>&amp;Fortryd</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+0" />
+        <source>&amp;Undo %1</source>
+        <translation>&amp;Fortryd %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>&amp;Redo</source>
         <translation>&amp;Gentag</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+0" />
+        <source>&amp;Redo %1</source>
+        <translation>&amp;Gentag %1</translation>
+    </message>
+    <message>
+        <location line="+8" />
         <source>&amp;Simulation</source>
         <translation>&amp;Simulering</translation>
     </message>
@@ -930,12 +936,12 @@
         <translation>Tilpas visning</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+6" />
         <source>Main</source>
         <translation>Hovedværktøjslinje</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+1" />
         <source>Open</source>
         <translation>Åbn</translation>
     </message>
@@ -955,7 +961,7 @@
         <translation>Præsentér</translation>
     </message>
     <message>
-        <location line="+52" />
+        <location line="+57" />
         <source>Simulation failed: %1</source>
         <translation>Simuleringen mislykkedes: %1</translation>
     </message>
@@ -1001,47 +1007,47 @@
 <context>
     <name>ModelEditor</name>
     <message>
-        <location filename="../../ui/window/model_editor.cpp" line="+52" />
+        <location filename="../../ui/window/model_editor.cpp" line="+64" />
         <source>DH</source>
         <translation>DH</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+0" />
         <source>Inertials</source>
         <translation>Masse og inerti</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+0" />
         <source>Parameters</source>
         <translation>Parametre</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+0" />
         <source>Initial &amp;&amp; gravity</source>
         <translation>Startværdier &amp;&amp; tyngdekraft</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+0" />
         <source>Solver</source>
         <translation>Løser</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+1" />
         <source>Lagrangian</source>
         <translation>Lagrange-funktion</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+0" />
         <source>JSON</source>
         <translation>JSON</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+13" />
         <source>Checks (errors keep the last valid model on screen):</source>
         <translation>Kontroller (ved fejl bliver den seneste gyldige model stående på skærmen):</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+21" />
         <source>standard (Spong)</source>
         <translation>standard (Spong)</translation>
     </message>
@@ -1061,18 +1067,18 @@
         <translation>konvention</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+14" />
         <source>Add joint</source>
         <translation>Tilføj led</translation>
     </message>
     <message>
         <location line="+1" />
-        <location line="+55" />
+        <location line="+62" />
         <source>Remove</source>
         <translation>Fjern</translation>
     </message>
     <message>
-        <location line="-54" />
+        <location line="-61" />
         <source>Move up</source>
         <translation>Flyt op</translation>
     </message>
@@ -1082,42 +1088,42 @@
         <translation>Flyt ned</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+9" />
         <source>Convention: %1</source>
         <translation>Konvention: %1</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+19" />
         <source>rod (length L)</source>
         <translation>stang (længde L)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+0" />
         <source>cylinder (r, h)</source>
         <translation>cylinder (r, h)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+0" />
         <source>disc (r)</source>
         <translation>skive (r)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+0" />
         <source>box (x, y, z)</source>
         <translation>kasse (x, y, z)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+0" />
         <source>sphere (r)</source>
         <translation>kugle (r)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+2" />
         <source>Fill inertia from shape…</source>
         <translation>Udfyld inerti ud fra form…</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+5" />
         <source>Inertia from a shape</source>
         <translation>Inerti ud fra en form</translation>
     </message>
@@ -1127,7 +1133,7 @@
         <translation>Led %1, %2: dimensioner i meter, adskilt med komma (tal eller parametre)</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="+23" />
         <source>Add parameter…</source>
         <translation>Tilføj parameter…</translation>
     </message>
@@ -1137,7 +1143,7 @@
         <translation>Omdøb…</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+7" />
         <location line="+3" />
         <source>Rename parameter</source>
         <translation>Omdøb parameter</translation>
@@ -1165,7 +1171,7 @@
         <translation>Værdi af %1 (et tal i SI-enheder):</translation>
     </message>
     <message>
-        <location line="+24" />
+        <location line="+25" />
         <source>Apply (undoable)</source>
         <translation>Anvend (kan fortrydes)</translation>
     </message>
@@ -1223,22 +1229,22 @@
 <context>
     <name>PlaybackBar</name>
     <message>
-        <location filename="../../ui/window/playback_bar.cpp" line="+28" />
+        <location filename="../../ui/window/playback_bar.cpp" line="+44" />
         <source>Play / pause (Space)</source>
         <translation>Afspil/pause (Space)</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+1" />
         <source>Restart</source>
         <translation>Start forfra</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+1" />
         <source>Playback time: drag to scrub</source>
         <translation>Afspilningstid: træk for at spole</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+1" />
         <source>×</source>
         <translation>×</translation>
     </message>
@@ -1253,12 +1259,12 @@
         <translation>gentag</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+1" />
         <source>speed</source>
         <translation>hastighed</translation>
     </message>
     <message>
-        <location line="+79" />
+        <location line="+87" />
         <source>t = %1 s / %2 s</source>
         <translation>t = %1 s / %2 s</translation>
     </message>
@@ -1266,7 +1272,7 @@
 <context>
     <name>PresentationMode</name>
     <message>
-        <location filename="../../ui/window/presentation_mode.cpp" line="+30" />
+        <location filename="../../ui/window/presentation_mode.cpp" line="+32" />
         <source>Presentation mode</source>
         <translation>Præsentationstilstand</translation>
     </message>
@@ -1274,8 +1280,7 @@
 <context>
     <name>PropertiesPanel</name>
     <message>
-        <location filename="../../ui/window/properties_panel.cpp" line="+17" />
-        <location line="+34" />
+        <location filename="../../ui/window/properties_panel.cpp" line="+54" />
         <source>Checking the model along the run…</source>
         <translation>Kontrollerer modellen gennem kørslen…</translation>
     </message>
@@ -1354,12 +1359,12 @@
 <context>
     <name>SceneFiles</name>
     <message>
-        <location filename="../../ui/window/scene_files.cpp" line="+23" />
+        <location filename="../../ui/window/scene_files.cpp" line="+24" />
         <source>LagrangeLab scenes (*.lagrange *.json);;All files (*)</source>
         <translation>LagrangeLab-scener (*.lagrange *.json);;Alle filer (*)</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+19" />
         <source>&amp;Open…</source>
         <translation>&amp;Åbn…</translation>
     </message>
@@ -1374,12 +1379,12 @@
         <translation>Galleri…</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+1" />
         <source>Recent files</source>
         <translation>Seneste filer</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+12" />
         <source>&amp;Save</source>
         <translation>&amp;Gem</translation>
     </message>
@@ -1389,7 +1394,7 @@
         <translation>Gem &amp;som…</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+10" />
         <source>%1: another file is being opened</source>
         <translation>%1: en anden fil er ved at blive åbnet</translation>
     </message>
@@ -1446,12 +1451,12 @@
 <context>
     <name>TeachPanel</name>
     <message>
-        <location filename="../../ui/window/teach_panel.cpp" line="+58" />
+        <location filename="../../ui/window/teach_panel.cpp" line="+42" />
         <source>Teach mode poses robots; this scene is a hand-typed Lagrangian.</source>
         <translation>Teach-tilstanden bruges til at stille robotter i en bestemt stilling; denne scene er en håndindtastet Lagrange-funktion.</translation>
     </message>
     <message>
-        <location line="+63" />
+        <location line="+81" />
         <source>%1°</source>
         <translation>%1°</translation>
     </message>
@@ -1464,17 +1469,18 @@
 <context>
     <name>TorquePane</name>
     <message>
-        <location filename="../../ui/window/torque_pane.cpp" line="+22" />
+        <location filename="../../ui/window/torque_pane.cpp" line="+39" />
         <source>Where the torque of</source>
         <translation>Hvordan momentet i</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+1" />
         <source>goes: B q̈ + C q̇ + g = Q</source>
         <translation>fordeler sig: B q̈ + C q̇ + g = Q</translation>
     </message>
     <message>
-        <location line="+23" />
+        <location line="+3" />
+        <location line="+17" />
         <source>joint %1</source>
         <translation>led %1</translation>
     </message>
@@ -1522,12 +1528,12 @@
 <context>
     <name>TrajectoryChart</name>
     <message>
-        <location filename="../../ui/window/trajectory_chart.cpp" line="+57" />
+        <location filename="../../ui/window/trajectory_chart.cpp" line="+73" />
         <source>t [s]</source>
         <translation>t [s]</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+2" />
         <source>energy [J]</source>
         <translation>energi [J]</translation>
     </message>
@@ -1537,12 +1543,12 @@
         <translation>q [rad eller m], q̇ [rad/s eller m/s]</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+1" />
         <source>t</source>
         <translation>t</translation>
     </message>
     <message>
-        <location line="+64" />
+        <location line="+58" />
         <source>E_kin</source>
         <translation>E_kin</translation>
     </message>
@@ -1575,7 +1581,7 @@
 <context>
     <name>WorkPrecisionPane</name>
     <message>
-        <location filename="../../ui/window/work_precision_pane.cpp" line="+20" />
+        <location filename="../../ui/window/work_precision_pane.cpp" line="+31" />
         <source>Run work–precision sweep</source>
         <translation>Kør gennemløb for beregningsarbejde–præcision</translation>
     </message>
@@ -1585,32 +1591,32 @@
         <translation>Annuller</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+1" />
         <source>Open large…</source>
         <translation>Åbn stort…</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+1" />
         <source>The plot in a window of its own, as large as the screen allows</source>
         <translation>Grafen i sit eget vindue, så stort som skærmen tillader</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+2" />
         <source>Error and energy drift against CPU time for every integrator (1 repeat, tolerances 1e-3…1e-10).</source>
         <translation>Fejl og energidrift som funktion af CPU-tid for hver integrator (1 gentagelse, tolerancer 1e-3…1e-10).</translation>
     </message>
     <message>
-        <location line="+38" />
+        <location line="+39" />
         <source>Work–precision: %1</source>
         <translation>Beregningsarbejde–præcision: %1</translation>
     </message>
     <message>
-        <location line="+41" />
+        <location line="+37" />
         <source>cancelled</source>
         <translation>annulleret</translation>
     </message>
     <message numerus="yes">
-        <location line="+12" />
+        <location line="+11" />
         <source>Done: %n run(s).</source>
         <translation>
             <numerusform>Færdig: %n kørsel.</numerusform>
@@ -1631,7 +1637,7 @@
 <context>
     <name>ll::ui::DerivationCanvas</name>
     <message>
-        <location filename="../../ui/window/derivation_view.cpp" line="-211" />
+        <location filename="../../ui/window/derivation_view.cpp" line="-204" />
         <source>Copy %1 as LaTeX</source>
         <translation>Kopiér %1 som LaTeX</translation>
     </message>

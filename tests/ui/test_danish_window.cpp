@@ -81,6 +81,53 @@ void menuTexts(QMenu* menu, QStringList& out) {
     }
 }
 
+// Every text the window shows: menus and actions, tool bars, buttons, labels, group boxes,
+// dock titles, tabs, combo boxes, table headers and cells.
+QStringList windowTexts(MainWindow& w) {
+    QStringList texts;
+    for (QAction* a : w.menuBar()->actions()) {
+        texts << a->text();
+        if (a->menu()) menuTexts(a->menu(), texts);
+    }
+    for (QToolBar* bar : w.findChildren<QToolBar*>())
+        for (QAction* a : bar->actions()) texts << a->text();
+    for (QAbstractButton* b : w.findChildren<QAbstractButton*>()) texts << b->text();
+    for (QLabel* l : w.findChildren<QLabel*>()) texts << l->text();
+    for (QGroupBox* g : w.findChildren<QGroupBox*>()) texts << g->title();
+    for (QDockWidget* d : w.findChildren<QDockWidget*>()) texts << d->windowTitle();
+    for (QTabBar* t : w.findChildren<QTabBar*>())
+        for (int i = 0; i < t->count(); ++i) texts << t->tabText(i);
+    for (QComboBox* c : w.findChildren<QComboBox*>())
+        for (int i = 0; i < c->count(); ++i) texts << c->itemText(i);
+    for (QTableView* v : w.findChildren<QTableView*>()) {
+        if (!v->model()) continue;
+        for (int c = 0; c < v->model()->columnCount(); ++c) texts << v->model()->headerData(c, Qt::Horizontal).toString();
+        for (int r = 0; r < v->model()->rowCount(); ++r) {
+            texts << v->model()->headerData(r, Qt::Vertical).toString();
+            for (int c = 0; c < v->model()->columnCount(); ++c) texts << v->model()->data(v->model()->index(r, c)).toString();
+        }
+    }
+    return texts;
+}
+
+// The texts of `texts` that are an English source the catalogue translates into something else.
+QStringList englishLeft(const QStringList& texts) {
+    std::map<QString, QString> english;
+    for (const Entry& e : readCatalogue(catalogue))
+        if (!e.numerus && bare(e.translation) != bare(e.source)) english[bare(e.source)] = e.translation;
+    QStringList left;
+    for (const QString& t : texts)
+        if (english.count(bare(t))) left << bare(t);
+    left.removeDuplicates();
+    return left;
+}
+
+QStringList menuTitles(MainWindow& w) {
+    QStringList menus;
+    for (QAction* a : w.menuBar()->actions()) menus << bare(a->text());
+    return menus;
+}
+
 }  // namespace
 
 class TestDanishWindow : public QObject {
@@ -114,47 +161,18 @@ private slots:
     }
 
     void noEnglishLeft() {
-        std::map<QString, QString> english;  // an English source whose Danish differs
-        for (const Entry& e : readCatalogue(catalogue))
-            if (!e.numerus && bare(e.translation) != bare(e.source)) english[bare(e.source)] = e.translation;
         MainWindow w;
         w.setAskBeforeClosing(false);
         w.resize(1280, 800);
         w.show();
         QVERIFY(w.openFile(QString(LL_EXAMPLES_DIR) + "/planar_2r.json", nullptr, true));
         QVERIFY(settled(w));
-        QStringList texts;
-        for (QAction* a : w.menuBar()->actions()) {
-            texts << a->text();
-            if (a->menu()) menuTexts(a->menu(), texts);
-        }
-        for (QToolBar* bar : w.findChildren<QToolBar*>())
-            for (QAction* a : bar->actions()) texts << a->text();
-        for (QAbstractButton* b : w.findChildren<QAbstractButton*>()) texts << b->text();
-        for (QLabel* l : w.findChildren<QLabel*>()) texts << l->text();
-        for (QGroupBox* g : w.findChildren<QGroupBox*>()) texts << g->title();
-        for (QDockWidget* d : w.findChildren<QDockWidget*>()) texts << d->windowTitle();
-        for (QTabBar* t : w.findChildren<QTabBar*>())
-            for (int i = 0; i < t->count(); ++i) texts << t->tabText(i);
-        for (QComboBox* c : w.findChildren<QComboBox*>())
-            for (int i = 0; i < c->count(); ++i) texts << c->itemText(i);
-        for (QTableView* v : w.findChildren<QTableView*>()) {
-            if (!v->model()) continue;
-            for (int c = 0; c < v->model()->columnCount(); ++c) texts << v->model()->headerData(c, Qt::Horizontal).toString();
-            for (int r = 0; r < v->model()->rowCount(); ++r) {
-                texts << v->model()->headerData(r, Qt::Vertical).toString();
-                for (int c = 0; c < v->model()->columnCount(); ++c) texts << v->model()->data(v->model()->index(r, c)).toString();
-            }
-        }
+        const QStringList texts = windowTexts(w);
         QVERIFY(texts.size() > 100);
-        QStringList left;
-        for (const QString& t : texts)
-            if (english.count(bare(t))) left << bare(t);
-        left.removeDuplicates();
+        const QStringList left = englishLeft(texts);
         QVERIFY2(left.isEmpty(), qPrintable("English left: " + left.join(" | ")));
         // and the Danish is there: the menus as Danish desktop programs name them
-        QStringList menus;
-        for (QAction* a : w.menuBar()->actions()) menus << bare(a->text());
+        const QStringList menus = menuTitles(w);
         QVERIFY2(menus.contains("Filer") && menus.contains("Rediger") && menus.contains("Vis"), qPrintable(menus.join(",")));
     }
 
@@ -187,6 +205,48 @@ private slots:
         english->trigger();
         QCOMPARE(w.derivationView().document()->steps.at(7).title, std::string("Kinetic energy and the mass matrix"));
         QCOMPARE(w.liveDerivation().runs(), runs);
+    }
+
+    // View → Language → Dansk relabels the whole window at once, without a restart: menus,
+    // tool bars, docks, tabs, panels, tables; English comes back the same way. The
+    // screenshots before and after are kept with LL_TEST_KEEP=1.
+    void theWindowRelabelsItselfLive() {
+        QVERIFY(ll::ui::installLanguage(present::Language::English));
+        QTemporaryDir dir;
+        dir.setAutoRemove(!qEnvironmentVariableIsSet("LL_TEST_KEEP"));
+        MainWindow w;
+        w.setAskBeforeClosing(false);
+        w.resize(1280, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.openFile(QString(LL_EXAMPLES_DIR) + "/planar_2r.json", nullptr, true));
+        QVERIFY(settled(w));
+        QVERIFY2(menuTitles(w).contains("File"), qPrintable(menuTitles(w).join(",")));
+        QVERIFY(ll::test::nextFrameDrawn(w));
+        const QImage before = w.screenshot();
+        before.save(dir.filePath("language-before.png"));
+        const auto choose = [&](const char* code) {
+            for (QAction* a : w.findChildren<QAction*>())
+                if (a->data().toString() == QLatin1String(code)) return a->trigger(), true;
+            return false;
+        };
+        QVERIFY(choose("da"));
+        ll::test::flushEvents();
+        const QStringList left = englishLeft(windowTexts(w));
+        QVERIFY2(left.isEmpty(), qPrintable("English left after the switch: " + left.join(" | ")));
+        QVERIFY2(menuTitles(w).contains("Filer") && menuTitles(w).contains("Vis"), qPrintable(menuTitles(w).join(",")));
+        QCOMPARE(w.derivationView().document()->language, present::Language::Danish);
+        QVERIFY(ll::test::nextFrameDrawn(w));
+        const QImage after = w.screenshot();
+        after.save(dir.filePath("language-after.png"));
+        // The menu bar was painted anew with other words.
+        const QRect bar(w.menuBar()->mapTo(&w, QPoint(0, 0)), w.menuBar()->size());
+        QVERIFY(before.copy(bar) != after.copy(bar));
+        // and back
+        QVERIFY(choose("en"));
+        ll::test::flushEvents();
+        QVERIFY2(menuTitles(w).contains("File") && !menuTitles(w).contains("Filer"), qPrintable(menuTitles(w).join(",")));
+        QVERIFY(ll::ui::installLanguage(present::Language::Danish));  // as initTestCase left it
     }
 };
 

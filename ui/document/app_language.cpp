@@ -58,11 +58,21 @@ present::Language startLanguage(std::optional<present::Language> given) {
 }
 
 bool installLanguage(present::Language language) {
+    // Owned by the application; the ones of the language before are taken out first, so a
+    // switch while the window runs leaves only the new language's (Qt then sends every
+    // widget QEvent::LanguageChange, and the window relabels itself: ui/window/relabel.hpp).
+    static QTranslator* ours = nullptr;
+    static QTranslator* qt = nullptr;
+    for (QTranslator** t : {&ours, &qt})
+        if (*t) {
+            QCoreApplication::removeTranslator(*t);
+            delete *t;
+            *t = nullptr;
+        }
     installed = language;
     if (language == present::Language::English) return true;
-    // Owned by the application, alive as long as it is.
-    auto* ours = new Catalogue(QCoreApplication::instance());
-    auto* qt = new QTranslator(QCoreApplication::instance());
+    ours = new Catalogue(QCoreApplication::instance());
+    qt = new QTranslator(QCoreApplication::instance());
     const bool loaded = ours->load(QStringLiteral(":/i18n/lagrangelab_da.qm"));
     if (loaded) QCoreApplication::installTranslator(ours);
     if (qt->load(QStringLiteral("qtbase_da"), QLibraryInfo::path(QLibraryInfo::TranslationsPath)))

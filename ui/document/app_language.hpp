@@ -4,7 +4,7 @@
 // (standard dialogs: Cancel, Yes) from Debian's qtbase_da.qm. Chosen when the window
 // starts: --lang, else what View → Language remembered, else the system locale (LANGUAGE,
 // LC_ALL, LC_MESSAGES, LANG). The derivation follows a change at once (the document is
-// relabelled, not derived again); the menus and panels at the next start.
+// relabelled, not derived again), and so do the menus and panels (ui/window/relabel.hpp).
 #include <optional>
 
 #include <QString>
@@ -25,7 +25,8 @@ void rememberNotation(present::Notation notation);
 // system's.
 present::Language startLanguage(std::optional<present::Language> given);
 
-// Installs the translators for `language` into the running application (English: none).
+// Installs the translators for `language` into the running application (English: none),
+// in place of those of the language before: the window relabels itself at once.
 // False when our catalogue could not be loaded.
 bool installLanguage(present::Language language);
 

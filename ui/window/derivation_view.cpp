@@ -1,5 +1,7 @@
 #include "ui/window/derivation_view.hpp"
 
+#include "ui/window/relabel.hpp"
+
 #include <QApplication>
 #include <QClipboard>
 #include <QContextMenuEvent>
@@ -280,12 +282,12 @@ DerivationView::DerivationView(QWidget* parent) : QWidget(parent) {
     steps_->setMaximumWidth(260);  // filled with the steps of the derivation that is made
     left->addWidget(steps_);
     auto* buttons = new QHBoxLayout;
-    previous_ = new QPushButton(tr("Previous"), this);
-    next_ = new QPushButton(tr("Next"), this);
+    previous_ = new QPushButton(this);
+    next_ = new QPushButton(this);
     buttons->addWidget(previous_);
     buttons->addWidget(next_);
     left->addLayout(buttons);
-    status_ = new QLabel(tr("No scene"), this);
+    status_ = new QLabel(this);
     status_->setWordWrap(true);
     left->addWidget(status_);
     layout_->addLayout(left);
@@ -305,7 +307,12 @@ DerivationView::DerivationView(QWidget* parent) : QWidget(parent) {
     });
     connect(previous_, &QPushButton::clicked, this, &DerivationView::previousStep);
     connect(next_, &QPushButton::clicked, this, &DerivationView::nextStep);
-    relist();
+    (*new Relabel(this))([this] {
+        previous_->setText(tr("Previous"));
+        next_->setText(tr("Next"));
+        showStatus();
+        relist();
+    });
 }
 
 // The list holds the steps of the document derived (a robot's 0–8, a typed Lagrangian's
@@ -398,17 +405,26 @@ void DerivationView::setDerivation(std::shared_ptr<const present::DisplayDocumen
     accept(std::move(document), error);
 }
 
-void DerivationView::accept(std::shared_ptr<const present::DisplayDocument> document, QString error) {
-    deriving_ = false;
-    error_ = error;
-    if (document) document_ = std::move(document);
-    if (!error.isEmpty() || !document_)
-        status_->setText(tr("Error: %1").arg(error));
+// What the derivation shown is, or why there is none.
+void DerivationView::showStatus() {
+    if (deriving_)
+        status_->setText(tr("Deriving…"));
+    else if (!document_ && error_.isEmpty())
+        status_->setText(tr("No scene"));
+    else if (!error_.isEmpty() || !document_)
+        status_->setText(tr("Error: %1").arg(error_));
     else if (document_->form.empty())
         status_->setText(QString::fromStdString(document_->systemName));
     else
         status_->setText(tr("%1 (%2 form)").arg(QString::fromStdString(document_->systemName),
                                                 document_->form == "structured" ? tr("structured") : tr("expanded")));
+}
+
+void DerivationView::accept(std::shared_ptr<const present::DisplayDocument> document, QString error) {
+    deriving_ = false;
+    error_ = error;
+    if (document) document_ = std::move(document);
+    showStatus();
     relist();
     refresh();
     emit derivationFinished();

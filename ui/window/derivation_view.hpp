@@ -92,6 +92,7 @@ protected:
 private:
     void accept(std::shared_ptr<const present::DisplayDocument> document, QString error);
     void refresh();
+    void showStatus();
 
     QBoxLayout* layout_ = nullptr;
     QListWidget* steps_ = nullptr;

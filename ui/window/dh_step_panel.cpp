@@ -1,5 +1,7 @@
 #include "ui/window/dh_step_panel.hpp"
 
+#include "ui/window/relabel.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
@@ -23,20 +25,20 @@ DhStepPanel::DhStepPanel(QWidget* parent) : QWidget(parent) {
     auto* layout = new QHBoxLayout(this);
     auto* controls = new QVBoxLayout;
     auto* pick = new QHBoxLayout;
-    pick->addWidget(new QLabel(tr("Joint i"), this));
+    auto* jointLabel = new QLabel(this);
+    pick->addWidget(jointLabel);
     jointBox_ = new QSpinBox(this);
     jointBox_->setRange(1, 1);
     pick->addWidget(jointBox_);
     pick->addStretch(1);
     controls->addLayout(pick);
-    previous_ = new QPushButton(tr("◀ Previous motion"), this);
-    next_ = new QPushButton(tr("Next motion ▶"), this);
-    animate_ = new QPushButton(tr("Animate the next motion"), this);
+    previous_ = new QPushButton(this);
+    next_ = new QPushButton(this);
+    animate_ = new QPushButton(this);
     controls->addWidget(previous_);
     controls->addWidget(next_);
     controls->addWidget(animate_);
-    dimensions_ = new QCheckBox(tr("Every parameter on the robot"), this);
-    dimensions_->setToolTip(tr("Each row's θ, d, a and α drawn as arcs and arrows with their values, at the pose shown"));
+    dimensions_ = new QCheckBox(this);
     controls->addWidget(dimensions_);
     controls->addStretch(1);
     layout->addLayout(controls);
@@ -51,6 +53,15 @@ DhStepPanel::DhStepPanel(QWidget* parent) : QWidget(parent) {
     layout->addWidget(matrix_, 1);
     connect(jointBox_, &QSpinBox::valueChanged, this, [this](int i) {
         if (i - 1 != joint_) setStep(i - 1, 0);
+    });
+    (*new Relabel(this))([this, jointLabel] {
+        jointLabel->setText(tr("Joint i"));
+        previous_->setText(tr("◀ Previous motion"));
+        next_->setText(tr("Next motion ▶"));
+        animate_->setText(tr("Animate the next motion"));
+        dimensions_->setText(tr("Every parameter on the robot"));
+        dimensions_->setToolTip(tr("Each row's θ, d, a and α drawn as arcs and arrows with their values, at the pose shown"));
+        refresh();
     });
     connect(previous_, &QPushButton::clicked, this, &DhStepPanel::previous);
     connect(next_, &QPushButton::clicked, this, &DhStepPanel::next);

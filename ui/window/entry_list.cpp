@@ -1,5 +1,7 @@
 #include "ui/window/entry_list.hpp"
 
+#include "ui/window/relabel.hpp"
+
 #include <QHeaderView>
 #include <QLineEdit>
 #include <QSortFilterProxyModel>
@@ -82,7 +84,7 @@ EntryList::EntryList(EntrySelection& selection, QWidget* parent) : QWidget(paren
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(2, 2, 2, 2);
     search_ = new QLineEdit(this);
-    search_->setPlaceholderText(tr("Find an entry: b11, g2, beta, p_c…"));
+    (*new Relabel(this))([this] { search_->setPlaceholderText(tr("Find an entry: b11, g2, beta, p_c…")); });
     search_->setClearButtonEnabled(true);
     model_ = new EntryListModel(selection, this);
     filter_ = new QSortFilterProxyModel(this);

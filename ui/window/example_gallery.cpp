@@ -1,5 +1,7 @@
 #include "ui/window/example_gallery.hpp"
 
+#include "ui/window/relabel.hpp"
+
 #include <QDialogButtonBox>
 #include <QDir>
 #include <QFile>
@@ -16,7 +18,7 @@ constexpr int kPathRole = Qt::UserRole, kPictureRole = Qt::UserRole + 1;
 }
 
 ExampleGallery::ExampleGallery(QWidget* parent) : QDialog(parent) {
-    setWindowTitle(tr("Example gallery"));
+    (*new Relabel(this))([this] { setWindowTitle(tr("Example gallery")); });
     auto* layout = new QVBoxLayout(this);
     list_ = new QListWidget(this);
     list_->setViewMode(QListView::IconMode);

@@ -18,6 +18,7 @@
 #include <QWindow>
 
 #include "core/io/atomic_file.hpp"
+#include "ui/window/relabel.hpp"
 #include "ui/document/animation_export.hpp"
 #include "ui/document/lab_report.hpp"
 #include "ui/document/scene_document.hpp"
@@ -41,15 +42,26 @@ ExportActions::ExportActions(const SceneDocument& document, const OnScreen& show
     : doc_(document), shown_(shown), parts_(parts) {}
 
 void ExportActions::addTo(QMenu* menu) {
-    menu->addAction(tr("Screenshot (PNG)…"), this, &ExportActions::askScreenshot);
-    menu->addAction(tr("Plot (PNG, SVG or CSV)…"), this, &ExportActions::askPlot);
-    menu->addAction(tr("Derivation (PDF, SVG, PNG, LaTeX or text)…"), this, &ExportActions::askDerivation);
-    menu->addAction(tr("Animation (MP4, WebM, GIF)…"), this, [this] { askAnimation({}); });
+    Relabel& relabel = *new Relabel(parts_.window);
+    QAction* screenshot = menu->addAction(QString(), this, &ExportActions::askScreenshot);
+    QAction* plot = menu->addAction(QString(), this, &ExportActions::askPlot);
+    QAction* derivation = menu->addAction(QString(), this, &ExportActions::askDerivation);
+    QAction* animation = menu->addAction(QString(), this, [this] { askAnimation({}); });
+    relabel([screenshot, plot, derivation, animation] {
+        screenshot->setText(tr("Screenshot (PNG)…"));
+        plot->setText(tr("Plot (PNG, SVG or CSV)…"));
+        derivation->setText(tr("Derivation (PDF, SVG, PNG, LaTeX or text)…"));
+        animation->setText(tr("Animation (MP4, WebM, GIF)…"));
+    });
     // One video for a slide: the 3D view, the derivation step shown and the energy plot.
-    for (const QSize size : {QSize(1280, 720), QSize(1920, 1080)})
-        menu->addAction(tr("Video for slides, %1×%2 (3D view, equation, energy)…").arg(size.width()).arg(size.height()), this,
-                        [this, size] { askAnimation(size); });
-    menu->addAction(tr("Lab report (PDF, CSV, SVG plots, scene, video) into a folder…"), this, &ExportActions::askLabReport);
+    for (const QSize size : {QSize(1280, 720), QSize(1920, 1080)}) {
+        QAction* slide = menu->addAction(QString(), this, [this, size] { askAnimation(size); });
+        relabel([slide, size] {
+            slide->setText(tr("Video for slides, %1×%2 (3D view, equation, energy)…").arg(size.width()).arg(size.height()));
+        });
+    }
+    QAction* report = menu->addAction(QString(), this, &ExportActions::askLabReport);
+    relabel([report] { report->setText(tr("Lab report (PDF, CSV, SVG plots, scene, video) into a folder…")); });
 }
 
 // ---------------------------------------------------------------- asking for the path

@@ -1,10 +1,12 @@
 #include "ui/window/ghost_run.hpp"
 
 #include <QActionGroup>
+#include <QMainWindow>
 #include <QMenu>
 #include <QStringList>
 
 #include "core/simulation/integrators.hpp"
+#include "ui/window/relabel.hpp"
 #include "ui/document/scene_document.hpp"
 #include "ui/window/scene_view.hpp"
 #include "ui/window/trajectory_chart.hpp"
@@ -16,14 +18,17 @@ GhostRun::GhostRun(const SceneDocument& document, const WindowParts& parts) : do
 }
 
 void GhostRun::addTo(QMenu* simulation) {
-    QMenu* menu = simulation->addMenu(tr("Ghost run"));
+    QMenu* menu = simulation->addMenu(QString());
+    Relabel& relabel = *new Relabel(parts_.window);
+    relabel([menu] { menu->setTitle(tr("Ghost run")); });
     auto* group = new QActionGroup(menu);
     QStringList names{QString()};
     for (const IntegratorInfo& info : integratorCatalogue())
         if (!info.adaptive) names << QString::fromStdString(info.name);
     names << "dopri5 1e-3";
     for (const QString& name : names) {
-        QAction* a = menu->addAction(name.isEmpty() ? tr("none") : name, this, [this, name] { setIntegrator(name); });
+        QAction* a = menu->addAction(name, this, [this, name] { setIntegrator(name); });
+        if (name.isEmpty()) relabel([a] { a->setText(tr("none")); });
         a->setCheckable(true);
         a->setChecked(name.isEmpty());
         group->addAction(a);

@@ -19,7 +19,6 @@
 #include <QToolBar>
 #include <QVBoxLayout>
 
-#include "core/pipeline/pose_results.hpp"
 #include "ui/window/autosave.hpp"
 #include "ui/window/derivation_panel.hpp"
 #include "ui/window/derivation_view.hpp"
@@ -34,9 +33,11 @@
 #include "ui/window/model_editor.hpp"
 #include "ui/window/playback_bar.hpp"
 #include "ui/window/presentation_mode.hpp"
+#include "ui/window/relabel.hpp"
 #include "ui/window/properties_panel.hpp"
 #include "ui/window/scene_files.hpp"
 #include "ui/window/scene_view.hpp"
+#include "ui/window/teach_mode.hpp"
 #include "ui/window/teach_panel.hpp"
 #include "ui/window/torque_pane.hpp"
 #include "ui/window/trajectory_chart.hpp"
@@ -55,6 +56,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     initExampleResources();
     setAcceptDrops(true);
     resize(1280, 800);
+    relabel_ = new Relabel(this);
     parts_.window = this;
     parts_.editor = new ModelEditor(doc_, this);
     buildCentre();
@@ -71,6 +73,7 @@ MainWindow::~MainWindow() {
     // The features link the widgets, and the widgets and models read the document: the
     // features go first, then the widgets and models, then (as members) the document.
     ghost_.reset();
+    teachMode_.reset();
     language_.reset();
     presentationMode_.reset();
     dhStepLink_.reset();
@@ -90,20 +93,24 @@ void MainWindow::buildCentre() {
     layout->setContentsMargins(0, 0, 0, 0);
     auto* bar = new QToolBar(centre);
     SceneView* view = parts_.view = new SceneView(centre);
-    bar->addAction(tr("Fit"), view, &SceneView::fit)->setShortcut(Qt::Key_F);
-    for (const char* name : {QT_TR_NOOP("front"), QT_TR_NOOP("side"), QT_TR_NOOP("top"), QT_TR_NOOP("iso")})
-        bar->addAction(tr(name), this, [view, name] { view->setStandardView(name); });
+    QAction* fit = bar->addAction(QString(), view, &SceneView::fit);
+    fit->setShortcut(Qt::Key_F);
+    (*relabel_)([fit] { fit->setText(tr("Fit")); });
+    for (const char* name : {QT_TR_NOOP("front"), QT_TR_NOOP("side"), QT_TR_NOOP("top"), QT_TR_NOOP("iso")}) {
+        QAction* a = bar->addAction(QString(), this, [view, name] { view->setStandardView(name); });
+        (*relabel_)([a, name] { a->setText(tr(name)); });
+    }
     bar->addSeparator();
-    auto toggle = [&](const QString& text, auto slot) {
-        QAction* a = bar->addAction(text);
+    for (const auto& [name, slot] : {std::pair{QT_TR_NOOP("frames"), &SceneView::setShowFrames},
+                                     {QT_TR_NOOP("labels"), &SceneView::setShowLabels},
+                                     {QT_TR_NOOP("COMs"), &SceneView::setShowComs},
+                                     {QT_TR_NOOP("trail"), &SceneView::setShowTrail}}) {
+        QAction* a = bar->addAction(QString());
         a->setCheckable(true);
         a->setChecked(true);
         connect(a, &QAction::toggled, view, slot);
-    };
-    toggle(tr("frames"), &SceneView::setShowFrames);
-    toggle(tr("labels"), &SceneView::setShowLabels);
-    toggle(tr("COMs"), &SceneView::setShowComs);
-    toggle(tr("trail"), &SceneView::setShowTrail);
+        (*relabel_)([a, name = name] { a->setText(tr(name)); });
+    }
     parts_.playback = new PlaybackBar(centre);
     // The picked entry's value now, what feeds it; or how to pick one (ui/window/entry_linking).
     // Three lines, always: a readout that grew or shrank with its text would resize the 3D
@@ -122,7 +129,8 @@ void MainWindow::buildCentre() {
 }
 
 void MainWindow::buildDocks() {
-    parts_.modelDock = new QDockWidget(tr("Model"), this);
+    parts_.modelDock = new QDockWidget(this);
+    (*relabel_)([dock = parts_.modelDock] { dock->setWindowTitle(tr("Model")); });
     parts_.modelDock->setObjectName("model");
     parts_.modelDock->setWidget(parts_.editor);
     connect(parts_.modelDock, &QDockWidget::visibilityChanged, parts_.editor, &ModelEditor::refreshJson);
@@ -131,23 +139,31 @@ void MainWindow::buildDocks() {
     // The derivation: typeset as a textbook prints it, as plain text (searchable,
     // copyable) with Previous/Next, and its entries listed; the renderings follow each
     // other's step.
-    QDockWidget* derivationDock = parts_.derivationDock = new QDockWidget(tr("Derivation"), this);
+    QDockWidget* derivationDock = parts_.derivationDock = new QDockWidget(this);
+    (*relabel_)([derivationDock] { derivationDock->setWindowTitle(tr("Derivation")); });
     derivationDock->setObjectName("derivation");
     auto* textPage = new QWidget(derivationDock);
     auto* textLayout = new QVBoxLayout(textPage);
     textLayout->setContentsMargins(2, 2, 2, 2);
     DerivationPanel* derivation = parts_.derivation = new DerivationPanel(textPage);
     auto* stepBar = new QHBoxLayout;
-    auto* prev = new QPushButton(tr("◀ Previous step"), textPage);
-    auto* next = new QPushButton(tr("Next step ▶"), textPage);
+    auto* prev = new QPushButton(textPage);
+    auto* next = new QPushButton(textPage);
     auto* stepLabel = new QLabel(textPage);
+    (*relabel_)([prev, next] {
+        prev->setText(tr("◀ Previous step"));
+        next->setText(tr("Next step ▶"));
+    });
     connect(prev, &QPushButton::clicked, derivation, &DerivationPanel::previousStep);
     connect(next, &QPushButton::clicked, derivation, &DerivationPanel::nextStep);
-    connect(derivation, &DerivationPanel::stepChanged, stepLabel, [derivation, stepLabel](int s) {
+    const auto showStep = [derivation, stepLabel] {
+        const int s = derivation->step();
         const std::vector<int>& listed = derivation->steps();  // this derivation's own steps
         const auto at = std::find(listed.begin(), listed.end(), s);
-        stepLabel->setText(tr("step %1 (%2 of %3)").arg(s).arg(at - listed.begin() + 1).arg(listed.size()));
-    });
+        if (at != listed.end()) stepLabel->setText(tr("step %1 (%2 of %3)").arg(s).arg(at - listed.begin() + 1).arg(listed.size()));
+    };
+    connect(derivation, &DerivationPanel::stepChanged, stepLabel, showStep);
+    (*relabel_)(showStep);
     stepBar->addWidget(prev);
     stepBar->addWidget(stepLabel);
     stepBar->addWidget(next);
@@ -161,13 +177,19 @@ void MainWindow::buildDocks() {
         if (s <= 8 && derivation->step() != s) derivation->showStep(s);  // step 9 (the pose) is typeset only
     });
     parts_.derivationTabs = new QTabWidget(derivationDock);
-    parts_.derivationTabs->addTab(typeset, tr("Typeset"));
-    parts_.derivationTabs->addTab(textPage, tr("Text"));
-    parts_.derivationTabs->addTab(new EntryList(selection_, parts_.derivationTabs), tr("Entries"));
+    parts_.derivationTabs->addTab(typeset, QString());
+    parts_.derivationTabs->addTab(textPage, QString());
+    parts_.derivationTabs->addTab(new EntryList(selection_, parts_.derivationTabs), QString());
+    (*relabel_)([tabs = parts_.derivationTabs] {
+        tabs->setTabText(0, tr("Typeset"));
+        tabs->setTabText(1, tr("Text"));
+        tabs->setTabText(2, tr("Entries"));
+    });
     derivationDock->setWidget(parts_.derivationTabs);
     addDockWidget(Qt::RightDockWidgetArea, derivationDock);
 
-    QDockWidget* plotDock = parts_.plotDock = new QDockWidget(tr("Plots"), this);
+    QDockWidget* plotDock = parts_.plotDock = new QDockWidget(this);
+    (*relabel_)([plotDock] { plotDock->setWindowTitle(tr("Plots")); });
     plotDock->setObjectName("plots");
     QTabWidget* tabs = parts_.plotTabs = new QTabWidget(plotDock);
     // The energy plot, and beside it the picked entry over the run (same time cursor).
@@ -185,13 +207,15 @@ void MainWindow::buildDocks() {
     parts_.properties = new PropertiesPanel(tabs);
     parts_.workPrecision = new WorkPrecisionPane(tabs);
     parts_.dhSteps = new DhStepPanel(tabs);
-    tabs->addTab(energyPage, tr("Energy"));
-    tabs->addTab(parts_.joints, tr("Joints q, dq/dt"));
-    tabs->addTab(parts_.teach, tr("Teach"));
-    tabs->addTab(parts_.torques, tr("Torques"));
-    tabs->addTab(parts_.properties, tr("Properties"));
-    tabs->addTab(parts_.workPrecision, tr("Work–precision"));
-    tabs->addTab(parts_.dhSteps, tr("DH step-through"));
+    for (QWidget* page : std::initializer_list<QWidget*>{energyPage, parts_.joints, parts_.teach, parts_.torques, parts_.properties,
+                                                         parts_.workPrecision, parts_.dhSteps})
+        tabs->addTab(page, QString());
+    (*relabel_)([tabs] {
+        int i = 0;
+        for (const QString& title : {tr("Energy"), tr("Joints q, dq/dt"), tr("Teach"), tr("Torques"), tr("Properties"),
+                                     tr("Work–precision"), tr("DH step-through")})
+            tabs->setTabText(i++, title);
+    });
     plotDock->setWidget(tabs);
     addDockWidget(Qt::BottomDockWidgetArea, plotDock);
     resizeDocks({parts_.modelDock, derivationDock}, {360, 440}, Qt::Horizontal);
@@ -204,6 +228,7 @@ void MainWindow::buildFeatures() {
     exports_ = std::make_unique<ExportActions>(doc_, shown_, parts_);
     linking_ = std::make_unique<EntryLinking>(selection_, shown_, parts_);
     dhStepLink_ = std::make_unique<DhStepLink>(parts_);
+    teachMode_ = std::make_unique<TeachMode>(doc_, selection_, *dhStepLink_, parts_);
     presentationMode_ = std::make_unique<PresentationMode>(parts_);
     language_ = std::make_unique<LanguageMenu>(*this);
     ghost_ = std::make_unique<GhostRun>(doc_, parts_);
@@ -221,6 +246,7 @@ void MainWindow::buildFeatures() {
         updateTitle();
     });
     connect(language_.get(), &LanguageMenu::changed, this, [this] {
+        parts_.editor->documentChanged(language_->current().language);  // the checks in the new language
         if (derivedAsDerived_) showDerivation(derivedAsDerived_);
     });
     connect(ghost_.get(), &GhostRun::shown, this, [this] { showTime(parts_.playback->time()); });
@@ -233,11 +259,6 @@ void MainWindow::buildFeatures() {
     connect(parts_.editor, &ModelEditor::jointHighlighted, parts_.view, &SceneView::highlightJoint);
     // Time: the playback bar drives every view; a click on a plot moves it there.
     connect(parts_.playback, &PlaybackBar::timeChanged, this, &MainWindow::showTime);
-    connect(parts_.playback, &PlaybackBar::playingChanged, this, [this](bool playing) {
-        if (!playing) return;
-        teaching_ = false;
-        updatePoseResults();  // the pose step goes with teach mode
-    });
     const auto scrub = [this](double t) {
         parts_.playback->pause();
         parts_.playback->setTime(t);
@@ -246,52 +267,72 @@ void MainWindow::buildFeatures() {
         connect(chart, &TrajectoryChart::timePicked, parts_.playback, scrub);
     connect(parts_.torques, &TorquePane::timePicked, parts_.playback, scrub);
     connect(parts_.properties, &PropertiesPanel::timePicked, parts_.playback, scrub);
-    connect(parts_.teach, &TeachPanel::poseChanged, this, [this](const Eigen::VectorXd& q) {
-        if (!teaching_) return;
-        showTeachPose(q);
-        updatePoseResults();
-    });
     connect(parts_.plotTabs, &QTabWidget::currentChanged, this, &MainWindow::plotTabChanged);
 }
 
 void MainWindow::buildMenus() {
-    QMenu* file = menuBar()->addMenu(tr("&File"));
+    // Every text is set again when the language changes (ui/window/relabel.hpp).
+    const auto menu = [this](const char* title) {
+        QMenu* m = menuBar()->addMenu(QString());
+        (*relabel_)([m, title] { m->setTitle(tr(title)); });
+        return m;
+    };
+    const auto labelled = [this](QAction* a, const char* text) {
+        (*relabel_)([a, text] { a->setText(tr(text)); });
+        return a;
+    };
+    QMenu* file = menu(QT_TR_NOOP("&File"));
     files_->addOpenEntries(file);
     files_->addSaveEntries(file);
     file->addSeparator();
-    exports_->addTo(file->addMenu(tr("Export")));
+    QMenu* exports = file->addMenu(QString());
+    (*relabel_)([exports] { exports->setTitle(tr("Export")); });
+    exports_->addTo(exports);
     file->addSeparator();
-    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+    labelled(file->addAction(QString(), QKeySequence::Quit, this, &QWidget::close), QT_TR_NOOP("&Quit"));
 
-    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
-    QAction* undo = doc_.undoStack()->createUndoAction(this, tr("&Undo"));
-    undo->setShortcut(QKeySequence::Undo);
-    QAction* redo = doc_.undoStack()->createRedoAction(this, tr("&Redo"));
-    redo->setShortcut(QKeySequence::Redo);
-    edit->addAction(undo);
-    edit->addAction(redo);
+    // Undo and redo name the edit they undo ("Undo Convention: modified (Craig)").
+    QMenu* edit = menu(QT_TR_NOOP("&Edit"));
+    QUndoStack* stack = doc_.undoStack();
+    QAction* undo = edit->addAction(QString(), QKeySequence::Undo, stack, &QUndoStack::undo);
+    QAction* redo = edit->addAction(QString(), QKeySequence::Redo, stack, &QUndoStack::redo);
+    const auto name = [stack, undo, redo] {
+        undo->setText(stack->undoText().isEmpty() ? tr("&Undo") : tr("&Undo %1").arg(stack->undoText()));
+        redo->setText(stack->redoText().isEmpty() ? tr("&Redo") : tr("&Redo %1").arg(stack->redoText()));
+        undo->setEnabled(stack->canUndo());
+        redo->setEnabled(stack->canRedo());
+    };
+    connect(stack, &QUndoStack::indexChanged, undo, name);  // undo as context: gone with the menu, before the stack
+    connect(stack, &QUndoStack::cleanChanged, undo, name);
+    (*relabel_)(name);
 
-    QMenu* sim = menuBar()->addMenu(tr("&Simulation"));
-    sim->addAction(tr("Play / pause"), parts_.playback, &PlaybackBar::togglePlay);
-    sim->addAction(tr("Restart"), parts_.playback, &PlaybackBar::restart);
+    QMenu* sim = menu(QT_TR_NOOP("&Simulation"));
+    labelled(sim->addAction(QString(), parts_.playback, &PlaybackBar::togglePlay), QT_TR_NOOP("Play / pause"));
+    labelled(sim->addAction(QString(), parts_.playback, &PlaybackBar::restart), QT_TR_NOOP("Restart"));
     ghost_->addTo(sim);
 
-    QMenu* view = menuBar()->addMenu(tr("&View"));
+    QMenu* view = menu(QT_TR_NOOP("&View"));
     view->addAction(presentationMode_->toggleAction());
-    view->addAction(tr("Fit view"), parts_.view, &SceneView::fit);
+    labelled(view->addAction(QString(), parts_.view, &SceneView::fit), QT_TR_NOOP("Fit view"));
     view->addSeparator();
     language_->addTo(view);
 
-    auto* tools = addToolBar(tr("Main"));
+    auto* tools = addToolBar(QString());
     tools->setObjectName("main");
-    tools->addAction(tr("Open"), files_.get(), &SceneFiles::open);
-    tools->addAction(tr("Save"), files_.get(), &SceneFiles::save);
+    (*relabel_)([tools] { tools->setWindowTitle(tr("Main")); });
+    labelled(tools->addAction(QString(), files_.get(), &SceneFiles::open), QT_TR_NOOP("Open"));
+    labelled(tools->addAction(QString(), files_.get(), &SceneFiles::save), QT_TR_NOOP("Save"));
     tools->addAction(undo);
     tools->addAction(redo);
     tools->addSeparator();
-    tools->addAction(tr("▶ Play"), parts_.playback, &PlaybackBar::togglePlay);
-    tools->addAction(tr("Teach"), this, [this] { parts_.plotTabs->setCurrentWidget(parts_.teach); });
-    tools->addAction(tr("Present"), this, [this] { presentationMode_->setOn(!presentationMode_->on()); });
+    labelled(tools->addAction(QString(), parts_.playback, &PlaybackBar::togglePlay), QT_TR_NOOP("▶ Play"));
+    labelled(tools->addAction(QString(), this, [this] { parts_.plotTabs->setCurrentWidget(parts_.teach); }), QT_TR_NOOP("Teach"));
+    labelled(tools->addAction(QString(), this, [this] { presentationMode_->setOn(!presentationMode_->on()); }), QT_TR_NOOP("Present"));
+    // The status line and the title follow the language too.
+    (*relabel_)([this] {
+        if (status_ && shown_.result) status_->setText(statusText());
+        updateTitle();
+    });
 }
 
 // The document and the workers: an edit is checked, each valid scene re-simulated and
@@ -336,7 +377,7 @@ void MainWindow::validSceneChanged() {
     derive_.request(scene);
     parts_.teach->setScene(scene);
     parts_.dhSteps->setRobot(scene.robot, !scene.lagrangian);
-    updatePoseResults();
+    teachMode_->sceneChanged();
     parts_.workPrecision->setScene(scene);
 }
 
@@ -417,7 +458,7 @@ void MainWindow::showAnalysis(std::shared_ptr<const RunAnalysis> analysis) {
 void MainWindow::showTime(double t) {
     if (!shown_.sampler || !shown_.result) return;
     shown_.sampler->sample(t, q_, qd_);
-    if (!teaching_) {
+    if (!teachMode_->active()) {
         std::vector<Eigen::Vector3d> trail;
         if (!effectorPath_.empty()) {
             const Trajectory& tr = shown_.result->simulation.trajectory;
@@ -436,7 +477,7 @@ void MainWindow::showTime(double t) {
     }
     for (TrajectoryChart* chart : {parts_.energy, parts_.joints, parts_.entryChart}) chart->setCursorTime(t);
     parts_.torques->setCursorTime(t);
-    if (!teaching_) selection_.setState(q_, qd_, t);
+    if (!teachMode_->active()) selection_.setState(q_, qd_, t);
 }
 
 void MainWindow::plotTabChanged(int index) {
@@ -445,15 +486,9 @@ void MainWindow::plotTabChanged(int index) {
     // their tab gives the dock at least 45 % of the window.
     if (tabs->widget(index) == parts_.workPrecision && !presentationMode_->on() && parts_.plotDock->height() < height() * 45 / 100)
         resizeDocks({parts_.plotDock}, {height() * 45 / 100}, Qt::Vertical);
-    teaching_ = tabs->widget(index) == parts_.teach;
-    if (!teaching_ && index >= 0) linking_->valueChanged();
-    updatePoseResults();
-    if (teaching_) {
-        parts_.playback->pause();
-        showTeachPose(parts_.teach->pose());
-    } else {
-        showTime(parts_.playback->time());
-    }
+    if (teachMode_->tabShown(index)) return;
+    if (index >= 0) linking_->valueChanged();
+    showTime(parts_.playback->time());
 }
 
 QString MainWindow::statusText() const {
@@ -482,46 +517,13 @@ void MainWindow::showDerivationStep(int n) {
     parts_.typeset->showStep(n);
 }
 
-// The robot at a teach pose, without the trail of the motion (which is not where it is).
-void MainWindow::showTeachPose(const Eigen::VectorXd& q) {
-    static const std::vector<Eigen::Vector3d> noTrail;
-    parts_.view->setPose(q, parts_.playback->time(), &noTrail);
-    dhStepLink_->poseShown(q);
-    // The picked entry at the pose, the joints at rest (as the pose results take them).
-    const Scene& scene = doc_.validScene();
-    const int n = static_cast<int>(q.size());
-    selection_.setState(q, scene.initial.qd.size() == n ? scene.initial.qd : Eigen::VectorXd::Zero(n), parts_.playback->time(), true);
-}
-
-// Step 9 of the typeset derivation while teaching: B, C, g and the energies at the pose.
-void MainWindow::updatePoseResults() {
-    const Scene& scene = doc_.validScene();
-    const int n = scene.robot.dof();
-    if (!teaching_ || scene.lagrangian || n == 0 || parts_.teach->pose().size() != n) {
-        parts_.typeset->setPoseResults(nullptr);
-        return;
-    }
-    const Eigen::VectorXd qd = scene.initial.qd.size() == n ? scene.initial.qd : Eigen::VectorXd::Zero(n);
-    parts_.typeset->setPoseResults(std::make_shared<const present::DisplayStep>(poseResults(scene, parts_.teach->pose(), qd)));
-}
-
-void MainWindow::teach(const Eigen::VectorXd& q) {
-    parts_.plotTabs->setCurrentWidget(parts_.teach);
-    parts_.teach->setPose(q);
-    showTeachPose(parts_.teach->pose());
-}
+void MainWindow::teach(const Eigen::VectorXd& q) { teachMode_->teach(q); }
 
 bool MainWindow::showPlotTab(const QString& name) {
-    const std::pair<const char*, QWidget*> tabs[] = {
-        {"energy", parts_.energyPage},         {"joints", parts_.joints},   {"teach", parts_.teach},
-        {"torques", parts_.torques},           {"properties", parts_.properties},
-        {"work-precision", parts_.workPrecision}, {"dh-steps", parts_.dhSteps}};
-    for (const auto& [key, widget] : tabs)
-        if (name == key) {
-            parts_.plotTabs->setCurrentWidget(widget);
-            return true;
-        }
-    return false;
+    // The plots dock's tabs in the order buildDocks adds them.
+    static const QStringList names{"energy", "joints", "teach", "torques", "properties", "work-precision", "dh-steps"};
+    if (names.indexOf(name) >= 0) parts_.plotTabs->setCurrentIndex(names.indexOf(name));
+    return names.indexOf(name) >= 0;
 }
 
 void MainWindow::showDerivationView(const QString& name) {

@@ -14,6 +14,7 @@
 //   PresentationMode  the projector layout and its keys
 //   LanguageMenu      the derivation's language and notation
 //   GhostRun          the same scene with a cheaper integrator beside it
+//   TeachMode         the robot at a pose of the sliders, B, C, g evaluated there
 #include <memory>
 
 #include <Eigen/Core>
@@ -37,7 +38,9 @@ class ExportActions;
 class GhostRun;
 class LanguageMenu;
 class PresentationMode;
+class Relabel;
 class SceneFiles;
+class TeachMode;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -127,8 +130,6 @@ private:
     void showAnalysis(std::shared_ptr<const RunAnalysis> analysis);
     void showTime(double t);
     void plotTabChanged(int index);
-    void showTeachPose(const Eigen::VectorXd& q);
-    void updatePoseResults();
     void updateTitle();
 
     SceneDocument doc_;
@@ -140,6 +141,7 @@ private:
     std::shared_ptr<const DerivationResult> derivedAsDerived_;  // as the worker made it (English, the notes' notation)
     std::vector<Eigen::Vector3d> effectorPath_;                 // end effector at every sample (the trail)
     Eigen::VectorXd q_, qd_;                                     // the state shown
+    Relabel* relabel_ = nullptr;      // the window's own texts, set again when the language changes
     EditFrame* editFrame_ = nullptr;  // one repaint per edit: the cell and its result together
     QLabel* status_ = nullptr;
 
@@ -151,9 +153,9 @@ private:
     std::unique_ptr<PresentationMode> presentationMode_;
     std::unique_ptr<LanguageMenu> language_;
     std::unique_ptr<GhostRun> ghost_;
+    std::unique_ptr<TeachMode> teachMode_;
 
     bool remembersLayout_ = false;
-    bool teaching_ = false;
     int shownStructure_ = -1;  // joints/coordinates of the scene on screen (a change refits the camera)
     QString shownName_;
 };

@@ -25,6 +25,7 @@
 #include "ui/document/joint_table_model.hpp"
 #include "ui/document/parameter_rename.hpp"
 #include "ui/document/scene_document.hpp"
+#include "ui/window/relabel.hpp"
 
 namespace ll::ui {
 
@@ -48,15 +49,22 @@ ModelEditor::ModelEditor(SceneDocument& document, QWidget* parent) : QWidget(par
     solver_ = new FieldListModel(doc_, solverRows, this);
     lagrangian_ = new FieldListModel(doc_, lagrangianRows, this);
 
+    relabel_ = new Relabel(this);
     tabs_ = new QTabWidget(this);
-    tabs_->addTab(buildDhPage(), tr("DH"));
-    tabs_->addTab(buildInertialPage(), tr("Inertials"));
-    tabs_->addTab(buildParameterPage(), tr("Parameters"));
-    tabs_->addTab(makeTable(initial_, tabs_), tr("Initial && gravity"));
-    tabs_->addTab(makeTable(solver_, tabs_), tr("Solver"));
+    tabs_->addTab(buildDhPage(), QString());
+    tabs_->addTab(buildInertialPage(), QString());
+    tabs_->addTab(buildParameterPage(), QString());
+    tabs_->addTab(makeTable(initial_, tabs_), QString());
+    tabs_->addTab(makeTable(solver_, tabs_), QString());
     lagrangianPage_ = makeTable(lagrangian_, tabs_);
-    tabs_->addTab(lagrangianPage_, tr("Lagrangian"));
-    tabs_->addTab(buildJsonPage(), tr("JSON"));
+    tabs_->addTab(lagrangianPage_, QString());
+    tabs_->addTab(buildJsonPage(), QString());
+    (*relabel_)([tabs = tabs_] {
+        int i = 0;
+        for (const QString& title : {tr("DH"), tr("Inertials"), tr("Parameters"), tr("Initial && gravity"), tr("Solver"),
+                                     tr("Lagrangian"), tr("JSON")})
+            tabs->setTabText(i++, title);
+    });
     connect(tabs_, &QTabWidget::currentChanged, this, &ModelEditor::refreshJson);
 
     diagnostics_ = new QListWidget(this);
@@ -66,7 +74,9 @@ ModelEditor::ModelEditor(SceneDocument& document, QWidget* parent) : QWidget(par
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(2, 2, 2, 2);
     layout->addWidget(tabs_, 1);
-    layout->addWidget(new QLabel(tr("Checks (errors keep the last valid model on screen):"), this));
+    auto* checks = new QLabel(this);
+    (*relabel_)([checks] { checks->setText(tr("Checks (errors keep the last valid model on screen):")); });
+    layout->addWidget(checks);
     layout->addWidget(diagnostics_);
 
     // A joint's row chosen in the DH or inertials table lights the joint up in the 3D view.
@@ -81,10 +91,17 @@ QWidget* ModelEditor::buildDhPage() {
     auto* layout = new QVBoxLayout(page);
     auto* bar = new QHBoxLayout;
     convention_ = new QComboBox(page);
-    convention_->addItem(tr("standard (Spong)"), "standard");
-    convention_->addItem(tr("modified (Craig)"), "modified");
-    auto* degrees = new QCheckBox(tr("angles in degrees"), page);
-    bar->addWidget(new QLabel(tr("convention"), page));
+    convention_->addItem(QString(), "standard");
+    convention_->addItem(QString(), "modified");
+    auto* degrees = new QCheckBox(page);
+    auto* conventionLabel = new QLabel(page);
+    (*relabel_)([convention = convention_, degrees, conventionLabel] {
+        convention->setItemText(0, tr("standard (Spong)"));
+        convention->setItemText(1, tr("modified (Craig)"));
+        degrees->setText(tr("angles in degrees"));
+        conventionLabel->setText(tr("convention"));
+    });
+    bar->addWidget(conventionLabel);
     bar->addWidget(convention_);
     bar->addWidget(degrees);
     bar->addStretch(1);
@@ -95,12 +112,13 @@ QWidget* ModelEditor::buildDhPage() {
     layout->addWidget(dhView_, 1);
     auto* rowBar = new QHBoxLayout;
     const auto currentRow = [this] { return dhView_->currentIndex().isValid() ? dhView_->currentIndex().row() : joints_->rowCount() - 1; };
-    for (auto [text, action] : std::initializer_list<std::pair<QString, std::function<void()>>>{
-             {tr("Add joint"), [this, currentRow] { joints_->addJoint(currentRow()); }},
-             {tr("Remove"), [this, currentRow] { joints_->removeJoint(currentRow()); }},
-             {tr("Move up"), [this, currentRow] { joints_->moveJoint(currentRow(), -1); }},
-             {tr("Move down"), [this, currentRow] { joints_->moveJoint(currentRow(), +1); }}}) {
-        auto* button = new QPushButton(text, page);
+    for (auto [text, action] : std::initializer_list<std::pair<const char*, std::function<void()>>>{
+             {QT_TR_NOOP("Add joint"), [this, currentRow] { joints_->addJoint(currentRow()); }},
+             {QT_TR_NOOP("Remove"), [this, currentRow] { joints_->removeJoint(currentRow()); }},
+             {QT_TR_NOOP("Move up"), [this, currentRow] { joints_->moveJoint(currentRow(), -1); }},
+             {QT_TR_NOOP("Move down"), [this, currentRow] { joints_->moveJoint(currentRow(), +1); }}}) {
+        auto* button = new QPushButton(page);
+        (*relabel_)([button, text = text] { button->setText(tr(text)); });
         connect(button, &QPushButton::clicked, this, action);
         rowBar->addWidget(button);
     }
@@ -122,12 +140,14 @@ QWidget* ModelEditor::buildInertialPage() {
     layout->addWidget(inertialView_, 1);
     auto* bar = new QHBoxLayout;
     auto* shape = new QComboBox(page);
-    shape->addItem(tr("rod (length L)"), "rod");
-    shape->addItem(tr("cylinder (r, h)"), "cylinder");
-    shape->addItem(tr("disc (r)"), "disc");
-    shape->addItem(tr("box (x, y, z)"), "box");
-    shape->addItem(tr("sphere (r)"), "sphere");
-    auto* fill = new QPushButton(tr("Fill inertia from shape…"), page);
+    for (const char* id : {"rod", "cylinder", "disc", "box", "sphere"}) shape->addItem(QString(), id);
+    auto* fill = new QPushButton(page);
+    (*relabel_)([shape, fill] {
+        int i = 0;
+        for (const QString& text : {tr("rod (length L)"), tr("cylinder (r, h)"), tr("disc (r)"), tr("box (x, y, z)"), tr("sphere (r)")})
+            shape->setItemText(i++, text);
+        fill->setText(tr("Fill inertia from shape…"));
+    });
     connect(fill, &QPushButton::clicked, this, [this, shape] {
         const int row = inertialView_->currentIndex().isValid() ? inertialView_->currentIndex().row() : 0;
         bool ok = false;
@@ -151,9 +171,14 @@ QWidget* ModelEditor::buildParameterPage() {
     parameterView_ = makeTable(parameters_, page);
     layout->addWidget(parameterView_, 1);
     auto* bar = new QHBoxLayout;
-    auto* add = new QPushButton(tr("Add parameter…"), page);
-    auto* remove = new QPushButton(tr("Remove"), page);
-    auto* rename = new QPushButton(tr("Rename…"), page);
+    auto* add = new QPushButton(page);
+    auto* remove = new QPushButton(page);
+    auto* rename = new QPushButton(page);
+    (*relabel_)([add, remove, rename] {
+        add->setText(tr("Add parameter…"));
+        remove->setText(tr("Remove"));
+        rename->setText(tr("Rename…"));
+    });
     connect(rename, &QPushButton::clicked, this, [this] {
         const QModelIndex index = parameterView_->currentIndex();
         if (!index.isValid()) return;
@@ -193,7 +218,8 @@ QWidget* ModelEditor::buildJsonPage() {
     jsonEdit_ = new QPlainTextEdit(page);
     jsonEdit_->setObjectName("scene-json");
     jsonEdit_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
-    auto* apply = new QPushButton(tr("Apply (undoable)"), page);
+    auto* apply = new QPushButton(page);
+    (*relabel_)([apply] { apply->setText(tr("Apply (undoable)")); });
     connect(apply, &QPushButton::clicked, this, [this] {
         try {
             doc_.replace(SceneJson::parse(jsonEdit_->toPlainText().toStdString()), tr("Edit scene JSON"));

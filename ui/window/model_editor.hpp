@@ -19,6 +19,7 @@ namespace ll::ui {
 
 class FieldListModel;
 class JointTableModel;
+class Relabel;
 class SceneDocument;
 
 class ModelEditor : public QWidget {
@@ -69,6 +70,7 @@ private:
     bool freeParameterName(const QString& typed, QString* error) const;
 
     SceneDocument& doc_;
+    Relabel* relabel_ = nullptr;  // the texts, set again when the language changes
     JointTableModel* joints_ = nullptr;
     FieldListModel *parameters_ = nullptr, *initial_ = nullptr, *solver_ = nullptr, *lagrangian_ = nullptr;
     QTabWidget* tabs_ = nullptr;

@@ -1,5 +1,7 @@
 #include "ui/window/playback_bar.hpp"
 
+#include "ui/window/relabel.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -25,13 +27,10 @@ PlaybackBar::PlaybackBar(QWidget* parent) : QWidget(parent) {
     layout->setContentsMargins(4, 2, 4, 2);
     play_ = new QToolButton(this);
     play_->setIcon(style()->standardIcon(QStyle::SP_MediaPlay));
-    play_->setToolTip(tr("Play / pause (Space)"));
     restart_ = new QToolButton(this);
     restart_->setIcon(style()->standardIcon(QStyle::SP_MediaSkipBackward));
-    restart_->setToolTip(tr("Restart"));
     slider_ = new QSlider(Qt::Horizontal, this);
     slider_->setRange(0, kSliderSteps);
-    slider_->setToolTip(tr("Playback time: drag to scrub"));
     label_ = new QLabel(this);
     label_->setMinimumWidth(150);
     speed_ = new QDoubleSpinBox(this);
@@ -39,15 +38,24 @@ PlaybackBar::PlaybackBar(QWidget* parent) : QWidget(parent) {
     speed_->setSingleStep(0.1);
     speed_->setDecimals(2);
     speed_->setValue(1.0);
-    speed_->setSuffix(tr("×"));
-    speed_->setToolTip(tr("Playback speed (simulated seconds per second)"));
-    loop_ = new QCheckBox(tr("loop"), this);
+    loop_ = new QCheckBox(this);
+    auto* speedLabel = new QLabel(this);
+    (*new Relabel(this))([this, speedLabel] {
+        play_->setToolTip(tr("Play / pause (Space)"));
+        restart_->setToolTip(tr("Restart"));
+        slider_->setToolTip(tr("Playback time: drag to scrub"));
+        speed_->setSuffix(tr("×"));
+        speed_->setToolTip(tr("Playback speed (simulated seconds per second)"));
+        loop_->setText(tr("loop"));
+        speedLabel->setText(tr("speed"));
+        showTime();
+    });
     loop_->setChecked(true);
     layout->addWidget(play_);
     layout->addWidget(restart_);
     layout->addWidget(label_);
     layout->addWidget(slider_, 1);
-    layout->addWidget(new QLabel(tr("speed"), this));
+    layout->addWidget(speedLabel);
     layout->addWidget(speed_);
     layout->addWidget(loop_);
     timer_.setInterval(15);

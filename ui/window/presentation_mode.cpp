@@ -17,6 +17,7 @@
 #include <QTimer>
 #include <QToolBar>
 
+#include "ui/window/relabel.hpp"
 #include "ui/window/derivation_panel.hpp"
 #include "ui/window/derivation_view.hpp"
 #include "ui/window/playback_bar.hpp"
@@ -27,7 +28,8 @@ namespace ll::ui {
 
 PresentationMode::PresentationMode(const WindowParts& parts) : parts_(parts) {
     QMainWindow* window = parts.window;
-    toggle_ = new QAction(tr("Presentation mode"), window);
+    toggle_ = new QAction(window);
+    (*new Relabel(window))([toggle = toggle_] { toggle->setText(tr("Presentation mode")); });
     toggle_->setShortcut(Qt::Key_F11);
     connect(toggle_, &QAction::triggered, this, [this] { setOn(!on_); });
     window->addAction(toggle_);  // F11 leaves presentation mode, where the menu bar is hidden

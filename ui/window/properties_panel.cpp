@@ -1,5 +1,7 @@
 #include "ui/window/properties_panel.hpp"
 
+#include "ui/window/relabel.hpp"
+
 #include <cmath>
 
 #include <QLabel>
@@ -14,7 +16,7 @@ namespace ll::ui {
 PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
-    summary_ = new QLabel(tr("Checking the model along the run…"), this);
+    summary_ = new QLabel(this);
     body_ = new QLabel(this);
     body_->setObjectName("properties");
     body_->setTextFormat(Qt::RichText);
@@ -28,6 +30,7 @@ PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent) {
     scroll->setFrameShape(QFrame::NoFrame);
     scroll->setWidget(body_);
     layout->addWidget(summary_);
+    (*new Relabel(this))([this] { setProperties(properties_); });
     layout->addWidget(scroll, 1);
 }
 

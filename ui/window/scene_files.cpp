@@ -10,6 +10,7 @@
 #include <QSettings>
 #include <QStatusBar>
 
+#include "ui/window/relabel.hpp"
 #include "ui/document/live_derivation.hpp"
 #include "ui/document/scene_document.hpp"
 #include "ui/window/example_gallery.hpp"
@@ -28,24 +29,35 @@ SceneFiles::SceneFiles(SceneDocument& document, LiveDerivation& derivation, QMai
     : doc_(document), derive_(derivation), window_(window) {}
 
 void SceneFiles::addOpenEntries(QMenu* file) {
-    file->addAction(tr("&Open…"), QKeySequence::Open, this, &SceneFiles::open);
-    QMenu* examples = file->addMenu(tr("Examples"));
-    examples->addAction(tr("Gallery…"), this, [this] {
-        auto* gallery = new ExampleGallery(&window_);
-        gallery->setAttribute(Qt::WA_DeleteOnClose);
-        connect(gallery, &ExampleGallery::chosen, this, &SceneFiles::openAsked);
-        gallery->open();
+    Relabel& relabel = *new Relabel(&window_);
+    QAction* open = file->addAction(QString(), QKeySequence::Open, this, &SceneFiles::open);
+    QMenu* examples = file->addMenu(QString());
+    QAction* gallery = examples->addAction(QString(), this, [this] {
+        auto* dialog = new ExampleGallery(&window_);
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        connect(dialog, &ExampleGallery::chosen, this, &SceneFiles::openAsked);
+        dialog->open();
+    });
+    recentMenu_ = file->addMenu(QString());
+    relabel([open, examples, gallery, recent = recentMenu_] {
+        open->setText(tr("&Open…"));
+        examples->setTitle(tr("Examples"));
+        gallery->setText(tr("Gallery…"));
+        recent->setTitle(tr("Recent files"));
     });
     examples->addSeparator();
     for (const QString& name : QDir(":/examples").entryList({"*.json"}, QDir::Files, QDir::Name))
         examples->addAction(name, this, [this, name] { openAsked(":/examples/" + name); });
-    recentMenu_ = file->addMenu(tr("Recent files"));
     rebuildRecentMenu();
 }
 
 void SceneFiles::addSaveEntries(QMenu* file) {
-    file->addAction(tr("&Save"), QKeySequence::Save, this, &SceneFiles::save);
-    file->addAction(tr("Save &as…"), QKeySequence::SaveAs, this, &SceneFiles::saveAs);
+    QAction* save = file->addAction(QString(), QKeySequence::Save, this, &SceneFiles::save);
+    QAction* saveAs = file->addAction(QString(), QKeySequence::SaveAs, this, &SceneFiles::saveAs);
+    (*new Relabel(&window_))([save, saveAs] {
+        save->setText(tr("&Save"));
+        saveAs->setText(tr("Save &as…"));
+    });
 }
 
 void SceneFiles::openAsked(const QString& path) {

@@ -1,5 +1,7 @@
 #include "ui/window/teach_panel.hpp"
 
+#include "ui/window/relabel.hpp"
+
 #include <cmath>
 #include <numbers>
 
@@ -37,6 +39,7 @@ TeachPanel::TeachPanel(QWidget* parent) : QWidget(parent) {
     matrices_ = new PoseMatrices(scroll);
     scroll->setWidget(matrices_);
     message_ = new QLabel(right);
+    (*new Relabel(this))([this] { message_->setText(tr("Teach mode poses robots; this scene is a hand-typed Lagrangian.")); });
     message_->setWordWrap(true);
     message_->hide();
     rightBox->addWidget(message_);
@@ -55,7 +58,6 @@ void TeachPanel::setScene(const Scene& scene) {
         sliders_.clear(), labels_.clear();
         matrices_->setStep({});
         matrices_->hide();
-        message_->setText(tr("Teach mode poses robots; this scene is a hand-typed Lagrangian."));
         message_->show();
         return;
     }

@@ -1,8 +1,11 @@
 #include "ui/window/torque_pane.hpp"
 
+#include "ui/window/relabel.hpp"
+
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QSignalBlocker>
 #include <QVBoxLayout>
 
 #include "core/model/quantity_units.hpp"
@@ -19,9 +22,10 @@ TorquePane::TorquePane(QWidget* parent) : QWidget(parent) {
     joint_ = new QComboBox(this);
     residual_ = new QLabel(this);
     residual_->setFont(textbookFont(residual_->font()));
-    bar->addWidget(new QLabel(tr("Where the torque of"), this));
+    auto* where = new QLabel(this);
+    bar->addWidget(where);
     bar->addWidget(joint_);
-    auto* equation = new QLabel(tr("goes: B q̈ + C q̇ + g = Q"), this);
+    auto* equation = new QLabel(this);
     equation->setFont(textbookFont(equation->font()));
     bar->addWidget(equation);
     bar->addStretch(1);
@@ -31,6 +35,15 @@ TorquePane::TorquePane(QWidget* parent) : QWidget(parent) {
     layout->addLayout(bar);
     layout->addWidget(chart_, 1);
     connect(joint_, &QComboBox::currentIndexChanged, this, &TorquePane::redraw);
+    (*new Relabel(this))([this, where, equation] {
+        where->setText(tr("Where the torque of"));
+        equation->setText(tr("goes: B q̈ + C q̇ + g = Q"));
+        if (joint_->count() > 0) {  // the joints' names and the curves' again, in the new language
+            const QSignalBlocker block(joint_);
+            for (int j = 0; j < joint_->count() && scene_ && !scene_->lagrangian; ++j) joint_->setItemText(j, tr("joint %1").arg(j + 1));
+            redraw();
+        }
+    });
     connect(chart_, &TrajectoryChart::timePicked, this, &TorquePane::timePicked);
 }
 

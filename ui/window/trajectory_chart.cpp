@@ -1,5 +1,7 @@
 #include "ui/window/trajectory_chart.hpp"
 
+#include "ui/window/relabel.hpp"
+
 #include "ui/paint/round_step.hpp"
 
 #include <algorithm>
@@ -54,14 +56,11 @@ TrajectoryChart::TrajectoryChart(Kind kind, QWidget* parent) : QChartView(parent
     setChart(chart);
     setRenderHint(QPainter::Antialiasing);
     axisX_ = new QValueAxis;
-    axisX_->setTitleText(tr("t [s]"));
     axisX_->setLabelFormat("%.4g");  // 1.25 s, not 1.3 (a 5 s run's quarter ticks)
     axisY_ = new QValueAxis;
-    axisY_->setTitleText(kind == Kind::Energy ? tr("energy [J]") : kind == Kind::Joints ? tr("q [rad or m], q̇ [rad/s or m/s]") : QString());
     chart->addAxis(axisX_, Qt::AlignBottom);
     chart->addAxis(axisY_, Qt::AlignLeft);
     cursor_ = new QLineSeries;
-    cursor_->setName(tr("t"));
     cursor_->setPen(QPen(QColor(60, 60, 60), 1.2, Qt::SolidLine));
     chart->addSeries(cursor_);
     cursor_->attachAxis(axisX_);
@@ -70,6 +69,13 @@ TrajectoryChart::TrajectoryChart(Kind kind, QWidget* parent) : QChartView(parent
     baseLabels_ = axisX_->labelsFont();
     baseTitle_ = axisX_->titleFont();
     baseLegend_ = chart->legend()->font();
+    (*new Relabel(this))([this] {
+        axisX_->setTitleText(tr("t [s]"));
+        if (kind_ != Kind::Curves)
+            axisY_->setTitleText(kind_ == Kind::Energy ? tr("energy [J]") : tr("q [rad or m], q̇ [rad/s or m/s]"));
+        cursor_->setName(tr("t"));
+        if (kind_ != Kind::Curves && !trajectory_.t.empty()) setTrajectory(Trajectory(trajectory_));  // the curves' names
+    });
 }
 
 namespace {

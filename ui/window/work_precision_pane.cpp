@@ -1,5 +1,7 @@
 #include "ui/window/work_precision_pane.hpp"
 
+#include "ui/window/relabel.hpp"
+
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPainter>
@@ -17,15 +19,22 @@ namespace ll::ui {
 WorkPrecisionPane::WorkPrecisionPane(QWidget* parent) : QWidget(parent) {
     auto* layout = new QVBoxLayout(this);
     auto* row = new QHBoxLayout;
-    run_ = new QPushButton(tr("Run work–precision sweep"), this);
-    cancel_ = new QPushButton(tr("Cancel"), this);
+    run_ = new QPushButton(this);
+    cancel_ = new QPushButton(this);
     cancel_->setEnabled(false);
-    large_ = new QPushButton(tr("Open large…"), this);
+    large_ = new QPushButton(this);
     large_->setEnabled(false);
-    large_->setToolTip(tr("The plot in a window of its own, as large as the screen allows"));
     progress_ = new QProgressBar(this);
     progress_->setRange(0, 1000);
-    label_ = new QLabel(tr("Error and energy drift against CPU time for every integrator (1 repeat, tolerances 1e-3…1e-10)."), this);
+    label_ = new QLabel(this);
+    (*new Relabel(this))([this] {
+        run_->setText(tr("Run work–precision sweep"));
+        cancel_->setText(tr("Cancel"));
+        large_->setText(tr("Open large…"));
+        large_->setToolTip(tr("The plot in a window of its own, as large as the screen allows"));
+        if (!result_ && run_->isEnabled())
+            label_->setText(tr("Error and energy drift against CPU time for every integrator (1 repeat, tolerances 1e-3…1e-10)."));
+    });
     row->addWidget(run_);
     row->addWidget(cancel_);
     row->addWidget(large_);
