@@ -25,6 +25,7 @@
 #include "core/io/scene_file.hpp"
 #include "ui/document/joint_table_model.hpp"
 #include "ui/window/main_window.hpp"
+#include "window_waits.hpp"
 #include "ui/window/autosave.hpp"
 #include "ui/window/model_editor.hpp"
 
@@ -43,7 +44,7 @@ int recoveryChild(const QString& scene) {
     if (!w.openFile(scene, nullptr, true)) return 2;
     w.editor().joints().setData(w.editor().joints().index(0, JointTableModel::A), "1.2", Qt::EditRole);
     // The autosave timer writes the copy within 5 s of the edit.
-    if (!QTest::qWaitFor([&] { return !w.autosave().ownFile().isEmpty() && QFile::exists(w.autosave().ownFile()); }, 60000)) return 3;
+    if (!ll::test::waitUntil([&] { return !w.autosave().ownFile().isEmpty() && QFile::exists(w.autosave().ownFile()); }, 60000)) return 3;
     std::cout << "autosaved " << w.autosave().ownFile().toStdString() << std::endl;
     return QApplication::exec();  // until SIGKILL
 }

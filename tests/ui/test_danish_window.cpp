@@ -70,7 +70,7 @@ std::vector<Entry> readCatalogue(const QString& path) {
 QString bare(QString s) { return s.remove('&').trimmed(); }
 
 bool settled(MainWindow& w, int seconds = 60) {
-    return QTest::qWaitFor([&] { return w.result() && !w.liveSimulation().busy() && !w.liveDerivation().busy() && w.derivation(); },
+    return ll::test::waitUntil([&] { return w.result() && !w.liveSimulation().busy() && !w.liveDerivation().busy() && w.derivation(); },
                            seconds * 1000);
 }
 

@@ -34,7 +34,7 @@ using ll::test::checked;
 
 // The newest edit's simulation is shown (its derivation may still run: the fuzz does not wait for it).
 bool settled(MainWindow& w) {
-    return QTest::qWaitFor(
+    return ll::test::waitUntil(
         [&] { return w.result() && !w.liveSimulation().busy() && w.result()->request == w.liveSimulation().latestRequest(); }, 120000);
 }
 

@@ -37,7 +37,7 @@ namespace {
 QString example(const char* name) { return QString(LL_EXAMPLES_DIR "/") + name; }
 
 bool settled(MainWindow& w, int seconds = 120) {
-    return QTest::qWaitFor(
+    return ll::test::waitUntil(
         [&] {
             return w.result() && !w.liveSimulation().busy() && !w.liveDerivation().busy() && w.derivation() &&
                    w.result()->request == w.liveSimulation().latestRequest() && w.selection().catalogue();
@@ -252,7 +252,7 @@ private slots:
     void torquesAndProperties() {
         const auto window = opened("puma560.json");
         MainWindow& w = *window;
-        QTest::qWaitFor([&] { return w.analysis() != nullptr; }, 60000);
+        ll::test::waitUntil([&] { return w.analysis() != nullptr; }, 60000);
         QVERIFY(w.analysis());
         QVERIFY(w.showPlotTab("torques"));
         w.torquePane().setJoint(1);

@@ -1376,7 +1376,7 @@ private slots:
         w.playback().pause();
         play->trigger();
         QVERIFY(w.playback().isPlaying());
-        QVERIFY2(QTest::qWaitFor([&] { return w.playback().time() > 0.2; }, 20000), qPrintable(QString::number(w.playback().time())));
+        QVERIFY2(ll::test::waitUntil([&] { return w.playback().time() > 0.2; }, 20000), qPrintable(QString::number(w.playback().time())));
         shot("3-playing");
         // Scrub: a click in the energy plot at 60 % of its width pauses there.
         auto& chart = w.energyChart();
