@@ -9,21 +9,16 @@
 #include <Eigen/Core>
 
 #include "core/model/effects.hpp"
+#include "core/model/integration_settings.hpp"
 #include "core/model/lagrangian_spec.hpp"
 #include "core/model/robot_model.hpp"
 
 namespace ll {
 
-struct SimulationSettings {
-    double duration = 5.0;            // [s]
-    std::string integrator = "dopri5";
-    double absTol = 1e-8;
-    double relTol = 1e-8;
-    double dt = 1e-3;                 // fixed step, or first trial step of adaptive methods [s]
-    double outputRate = 100.0;        // samples per second in the recorded trajectory
-    // Not a scene-file field: explicit adaptive methods stop on a stiff scene unless this is
-    // off (the work–precision reference turns it off: it must resolve every mode).
-    bool detectStiffness = true;
+// The scene's "simulation" block: how to integrate (IntegrationSettings) and what to run.
+struct SimulationSettings : IntegrationSettings {
+    double duration = 5.0;      // [s]
+    double outputRate = 100.0;  // samples per second in the recorded trajectory
 };
 
 struct InitialState {

@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 
+#include "core/model/integration_settings.hpp"
 #include "core/simulation/ode_system.hpp"
 
 namespace ll {
@@ -25,17 +26,6 @@ const std::vector<IntegratorInfo>& integratorCatalogue();
 const IntegratorInfo* findIntegrator(const std::string& name);  // nullptr if unknown
 std::string integratorNames();                                   // "euler, midpoint, ..."
 
-struct IntegrationSettings {
-    std::string integrator = "dopri5";
-    double absTol = 1e-8;
-    double relTol = 1e-8;
-    double dt = 1e-3;       // fixed step, or the first trial step of adaptive methods
-    long maxSteps = 20'000'000;
-    // Explicit adaptive methods stop with an IntegrationError recommending rosenbrock4
-    // when their step size is pinned at the stability limit of a mode far faster than
-    // the rest of the motion (see integrators.cpp, StiffnessMonitor).
-    bool detectStiffness = true;
-};
 
 struct IntegrationCounts {
     long steps = 0;

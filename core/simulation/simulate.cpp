@@ -108,12 +108,7 @@ SimulationResult simulate(SimulationInput input, const SimulationSettings& setti
     requireSize("simulate", "initial.q", scene.initial.q.size(), scene.dof(), "the scene", "coordinates");
     requireSize("simulate", "initial.qd", scene.initial.qd.size(), scene.dof(), "the scene", "coordinates");
     if (!scene.lagrangian) requireEffectsFit("simulate", scene.effects, scene.dof());
-    IntegrationSettings integration;
-    integration.integrator = settings.integrator;
-    integration.absTol = settings.absTol;
-    integration.relTol = settings.relTol;
-    integration.dt = settings.dt;
-    integration.detectStiffness = settings.detectStiffness;
+    const IntegrationSettings& integration = settings;  // the scene's settings extend the integrator's
     if (!findIntegrator(integration.integrator))
         throw std::invalid_argument("unknown integrator '" + settings.integrator + "' (known: " + integratorNames() + ")");
 

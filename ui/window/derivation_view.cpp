@@ -367,6 +367,7 @@ DerivationView::~DerivationView() {
 
 void DerivationView::cancel() {
     derivations_.cancel();
+    derivations_.request();  // a job that finishes anyway is stale: its result is dropped
     deriving_ = false;
 }
 

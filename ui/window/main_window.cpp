@@ -70,8 +70,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 }
 
 MainWindow::~MainWindow() {
-    // The features link the widgets, and the widgets and models read the document: the
-    // features go first, then the widgets and models, then (as members) the document.
+    // Features, then widgets and models, then (as members) the document they read; nothing
+    // signals while they go (a slot would meet a feature or widget already gone).
+    for (QObject* o : findChildren<QObject*>()) o->blockSignals(true);
+    doc_.blockSignals(true), doc_.undoStack()->blockSignals(true);
     ghost_.reset();
     teachMode_.reset();
     language_.reset();
@@ -136,9 +138,7 @@ void MainWindow::buildDocks() {
     connect(parts_.modelDock, &QDockWidget::visibilityChanged, parts_.editor, &ModelEditor::refreshJson);
     addDockWidget(Qt::LeftDockWidgetArea, parts_.modelDock);
 
-    // The derivation: typeset as a textbook prints it, as plain text (searchable,
-    // copyable) with Previous/Next, and its entries listed; the renderings follow each
-    // other's step.
+    // The derivation typeset, as text (Previous/Next) and its entries; the renderings follow each other.
     QDockWidget* derivationDock = parts_.derivationDock = new QDockWidget(this);
     (*relabel_)([derivationDock] { derivationDock->setWindowTitle(tr("Derivation")); });
     derivationDock->setObjectName("derivation");
@@ -160,7 +160,7 @@ void MainWindow::buildDocks() {
         const int s = derivation->step();
         const std::vector<int>& listed = derivation->steps();  // this derivation's own steps
         const auto at = std::find(listed.begin(), listed.end(), s);
-        if (at != listed.end()) stepLabel->setText(tr("step %1 (%2 of %3)").arg(s).arg(at - listed.begin() + 1).arg(listed.size()));
+        stepLabel->setText(tr("step %1 (%2 of %3)").arg(s).arg(at - listed.begin() + 1).arg(listed.size()));
     };
     connect(derivation, &DerivationPanel::stepChanged, stepLabel, showStep);
     (*relabel_)(showStep);
@@ -330,7 +330,7 @@ void MainWindow::buildMenus() {
     labelled(tools->addAction(QString(), this, [this] { presentationMode_->setOn(!presentationMode_->on()); }), QT_TR_NOOP("Present"));
     // The status line and the title follow the language too.
     (*relabel_)([this] {
-        if (status_ && shown_.result) status_->setText(statusText());
+        if (status_ && shown_.result && !runFailed_) status_->setText(statusText());
         updateTitle();
     });
 }
@@ -383,7 +383,8 @@ void MainWindow::validSceneChanged() {
 
 void MainWindow::showResult(std::shared_ptr<const LiveResult> result) {
     if (result->request >= live_.latestRequest()) editFrame_->release();  // painted with this result, below
-    if (!result->visual || result->simulation.trajectory.size() == 0) {
+    runFailed_ = !result->visual || result->simulation.trajectory.size() == 0;
+    if (runFailed_) {
         status_->setText(tr("Simulation failed: %1").arg(QString::fromStdString(result->error)));
         return;
     }
@@ -482,8 +483,7 @@ void MainWindow::showTime(double t) {
 
 void MainWindow::plotTabChanged(int index) {
     QTabWidget* tabs = parts_.plotTabs;
-    // The work–precision plots need height to be read (two log–log plots and a legend):
-    // their tab gives the dock at least 45 % of the window.
+    // The work–precision plots need height to be read: their tab gives the dock ≥ 45 % of the window.
     if (tabs->widget(index) == parts_.workPrecision && !presentationMode_->on() && parts_.plotDock->height() < height() * 45 / 100)
         resizeDocks({parts_.plotDock}, {height() * 45 / 100}, Qt::Vertical);
     if (teachMode_->tabShown(index)) return;

@@ -156,6 +156,7 @@ private:
     std::unique_ptr<TeachMode> teachMode_;
 
     bool remembersLayout_ = false;
+    bool runFailed_ = false;  // the status line says why the newest run failed
     int shownStructure_ = -1;  // joints/coordinates of the scene on screen (a change refits the camera)
     QString shownName_;
 };

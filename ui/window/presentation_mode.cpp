@@ -51,6 +51,13 @@ PresentationMode::PresentationMode(const WindowParts& parts) : parts_(parts) {
         window->addAction(action);
         keys_ << action;
     }
+    // The large dock titles of presenting follow a language change (after the docks' own).
+    (*new Relabel(window))([this] {
+        QTimer::singleShot(0, this, [this] {
+            for (QDockWidget* dock : parts_.window->findChildren<QDockWidget*>())
+                if (auto* title = qobject_cast<QLabel*>(dock->titleBarWidget())) title->setText(dock->windowTitle());
+        });
+    });
 }
 
 QByteArray PresentationMode::layoutToRemember() const { return on_ ? layoutBefore_ : parts_.window->saveState(); }
@@ -148,7 +155,7 @@ void PresentationMode::layOut() {
     parts_.plotTabs->setCurrentWidget(parts_.energyPage);
     parts_.derivationTabs->setCurrentWidget(parts_.typeset);
     // The camera on the robot as it stands, fitted to the view's new shape.
-    QTimer::singleShot(0, parts_.view, [this] {
+    QTimer::singleShot(0, this, [this] {
         if (on_) parts_.view->setFramePose(true);
     });
 }

@@ -32,7 +32,7 @@ WorkPrecisionPane::WorkPrecisionPane(QWidget* parent) : QWidget(parent) {
         cancel_->setText(tr("Cancel"));
         large_->setText(tr("Open large…"));
         large_->setToolTip(tr("The plot in a window of its own, as large as the screen allows"));
-        if (!result_ && run_->isEnabled())
+        if (introShown_)
             label_->setText(tr("Error and energy drift against CPU time for every integrator (1 repeat, tolerances 1e-3…1e-10)."));
     });
     row->addWidget(run_);
@@ -89,6 +89,7 @@ void WorkPrecisionPane::setScene(const Scene& scene) { scene_ = scene; }
 void WorkPrecisionPane::cancel() { sweep_.cancel(); }
 
 void WorkPrecisionPane::run() {
+    introShown_ = false;
     const int generation = sweep_.request();
     NewestWins::Flag stop = sweep_.begin();
     run_->setEnabled(false);
