@@ -120,7 +120,9 @@ private slots:
             if (!dir.is_directory()) continue;
             const std::string folder = dir.path().filename().string();
             QVERIFY2(rank(layers, folder) >= 0, qPrintable(QString::fromStdString("core/" + folder + " is not a layer")));
-            for (const auto& entry : fs::directory_iterator(dir.path())) {
+            // Sub-folders (a layer's message catalogues, core/model/messages) belong to their layer.
+            for (const auto& entry : fs::recursive_directory_iterator(dir.path())) {
+                if (!entry.is_regular_file()) continue;
                 std::ifstream in(entry.path());
                 const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
                 bad << layerViolations(layers, folder, entry.path().string(), text);

@@ -11,43 +11,43 @@ std::string vectorText(const Eigen::VectorXd& v) {
     return text + "]";
 }
 
-// "inf in B[1][2]" (1-based) for the first non-finite entry, or "".
-std::string firstNonFinite(const Eigen::MatrixXd& m, const std::string& name, bool vector) {
+// "inf in B[1][2]" (1-based) for the first non-finite entry, or nothing.
+std::optional<Message> firstNonFinite(const Eigen::MatrixXd& m, const char* name, bool vector) {
+    using enum MessageId;
     for (Eigen::Index r = 0; r < m.rows(); ++r)
         for (Eigen::Index c = 0; c < m.cols(); ++c)
             if (!std::isfinite(m(r, c)))
-                return formatValue(m(r, c)) + " in " + name + "[" + std::to_string(r + 1) + "]" +
-                       (vector ? "" : "[" + std::to_string(c + 1) + "]");
-    return "";
+                return vector ? message(NonFiniteVectorEntry, m(r, c), name, r + 1)
+                              : message(NonFiniteMatrixEntry, m(r, c), name, r + 1, c + 1);
+    return std::nullopt;
 }
 
 }  // namespace
 
 std::optional<Diagnostic> nonFiniteTerm(const ModelTerms& terms, const Eigen::VectorXd& qdd, const Eigen::VectorXd& q,
-                                        const Eigen::VectorXd& qd, const std::string& where) {
+                                        const Eigen::VectorXd& qd, const Message& where) {
+    using enum MessageId;
     const struct {
         const char* name;
-        const char* meaning;
+        MessageId notFinite;  // "the mass matrix is not finite ({1}) {2}"
         Eigen::MatrixXd value;
         bool vector;
     } quantities[] = {
-        {"B", "the mass matrix", terms.B, false},
-        {"C", "the Coriolis/centrifugal matrix", terms.C, false},
-        {"g", "the gravity and spring torques g = dEpot/dq", terms.g, true},
-        {"Q", "the generalized forces", terms.Q, true},
-        {"Ekin", "the kinetic energy", Eigen::MatrixXd::Constant(1, 1, terms.Ekin), true},
-        {"Epot", "the potential energy", Eigen::MatrixXd::Constant(1, 1, terms.Epot), true},
-        {"qdd", "the acceleration", qdd, true},
+        {"B", MassMatrixNotFinite, terms.B, false},
+        {"C", CoriolisMatrixNotFinite, terms.C, false},
+        {"g", GravityTorquesNotFinite, terms.g, true},
+        {"Q", GeneralizedForcesNotFinite, terms.Q, true},
+        {"Ekin", KineticEnergyNotFinite, Eigen::MatrixXd::Constant(1, 1, terms.Ekin), true},
+        {"Epot", PotentialEnergyNotFinite, Eigen::MatrixXd::Constant(1, 1, terms.Epot), true},
+        {"qdd", AccelerationNotFinite, qdd, true},
     };
     for (const auto& quantity : quantities) {
-        std::string bad = firstNonFinite(quantity.value, quantity.name, quantity.vector);
-        if (bad.empty()) continue;
-        if (quantity.value.size() == 1 && quantity.vector) bad = formatValue(quantity.value(0, 0));
+        std::optional<Message> bad = firstNonFinite(quantity.value, quantity.name, quantity.vector);
+        if (!bad) continue;
+        if (quantity.value.size() == 1 && quantity.vector) bad = literal(formatValue(quantity.value(0, 0)));
         return Diagnostic{Severity::Error, quantity.name,
-                          std::string(quantity.meaning) + " is not finite (" + bad + ") " + where +
-                              ": a number in the scene is too large for double precision here",
-                          "at q = " + vectorText(q) + ", qd = " + vectorText(qd) +
-                              ", a value passed about 1.8e308; check the exponents of the largest values"};
+                          message(TooLargeForDoublePrecision, message(quantity.notFinite, *bad, where)),
+                          message(NonFiniteTermHint, vectorText(q), vectorText(qd))};
     }
     return std::nullopt;
 }

@@ -6,6 +6,7 @@
 #include "core/dynamics/mass_matrix.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
 #include "core/model/argument_checks.hpp"
+#include "core/model/message.hpp"
 
 namespace ll {
 
@@ -32,8 +33,8 @@ void factorMassMatrix(RobotData& data) {
     data.B_llt.compute(data.B);
     if (data.B_llt.info() == Eigen::Success) return;
     const int joint = firstSingularJoint(data.B);
-    throw SingularMassMatrix(joint, "mass matrix B(q) is singular: joint " + std::to_string(joint + 1) +
-                                        " moves no mass or inertia that earlier joints do not already move");
+    // core/pipeline/scene_evaluation.cpp says the same in the reader's language
+    throw SingularMassMatrix(joint, message(MessageId::MassMatrixSingularAtJoint, joint + 1).english());
 }
 
 const Eigen::VectorXd& forwardDynamics(const RobotModel& model, RobotData& data, const Effects& effects,

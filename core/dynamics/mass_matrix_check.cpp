@@ -12,49 +12,33 @@
 namespace ll {
 namespace {
 
-std::string fmt(double v) { return formatValue(v); }
-
-// What to do about a joint that moves (almost) nothing: give its links inertia, or
-// its motor's.
-std::string armatureAdvice(int j) {
-    return "or add the motor's inertia as armature (\"armature\": Jm*G^2, or \"motor\": {\"inertia\": Jm, "
-           "\"gear_ratio\": G} on joint " + std::to_string(j + 1) +
-           "): published tables often leave light distal links without inertia, but the motor's rotor still "
-           "turns with the joint";
-}
-
 // The error for a B(q) that cannot be factored: one short line saying which kind it is
 // (core/dynamics/mass_matrix_conditioning.hpp), and a hint with the likely cause and the
-// fix. When the links from joint j on carry no mass and no inertia at all, that one
-// value is named: the link's mass.
+// fix (among them, adding the motor's inertia as armature). When the links from joint j
+// on carry no mass and no inertia at all, that one value is named: the link's mass.
 Diagnostic singularMassMatrixError(const RobotModel& model, const MassMatrixDefect& defect, const std::vector<Diagnostic>& unitSlips) {
+    using enum MessageId;
     const int j = defect.joint;
-    const std::string joint = std::to_string(j + 1);
+    const int joint = j + 1;
+    const Message armatureAdvice = message(ArmatureAdvice, joint);
     if (defect.kind == MassMatrixDefect::Kind::MovesNothing) {
         bool nothingAfter = true;
         for (int i = j; i < model.dof(); ++i)
             nothingAfter = nothingAfter && model.joints[i].link.mass == 0.0 && model.joints[i].link.inertia.isZero();
-        const std::string hint = "B(q) has no inertia along joint " + joint + "; give link " + joint +
-                                 " (or a link after it) mass off the joint axis or inertia about it, " + armatureAdvice(j);
-        if (nothingAfter)
-            return {Severity::Error, jointField(j, "mass"),
-                    "joint " + joint + " moves no mass or inertia: link " + joint + " and the links after it have none, so the mass matrix B(q) is singular",
-                    hint};
-        return {Severity::Error, jointField(j, ""),
-                "joint " + joint + " moves no mass or inertia of its own, so the mass matrix B(q) is singular", hint};
+        const Message hint = message(NoInertiaAlongJoint, joint, armatureAdvice);
+        if (nothingAfter) return {Severity::Error, jointField(j, "mass"), message(JointAndLaterMoveNothing, joint), hint};
+        return {Severity::Error, jointField(j, ""), message(JointMovesNothingOfItsOwn, joint), hint};
     }
-    const std::string message = "the mass matrix B(q) is too ill-conditioned to use (condition number " + fmt(defect.condition) +
-                                ") at joint " + joint;
-    std::string hint = "joint " + joint + " moves inertia of its own (b" + joint + joint + " = " + fmt(defect.diagonal) +
-                       "), but beside the largest diagonal entry (" + fmt(defect.largest) +
-                       ") double precision loses it; likely cause: ";
-    if (unitSlips.empty()) {
-        hint += "light distal links beside heavy ones: check their masses and inertias, " + armatureAdvice(j);
-        return {Severity::Error, jointField(j, ""), message, hint};
-    }
-    hint += "a unit slip, " + unitSlips.front().where() + ": " + unitSlips.front().message;
-    if (unitSlips.size() > 1) hint += " (and " + std::to_string(unitSlips.size() - 1) + " more unit warnings)";
-    return {Severity::Error, unitSlips.front().field, message, hint};
+    const Message error = message(MassMatrixIllConditioned, defect.condition, joint);
+    const auto hint = [&](Message cause) {
+        return message(IllConditionedHint, joint, defect.diagonal, defect.largest, std::move(cause));
+    };
+    if (unitSlips.empty()) return {Severity::Error, jointField(j, ""), error, hint(message(LikelyLightLinks, armatureAdvice))};
+    const Diagnostic& slip = unitSlips.front();
+    const Message cause = unitSlips.size() > 1
+                              ? message(LikelyUnitSlips, slip.place(), slip.message, static_cast<int>(unitSlips.size() - 1))
+                              : message(LikelyUnitSlip, slip.place(), slip.message);
+    return {Severity::Error, slip.field, error, hint(cause)};
 }
 
 // B(q) must be positive definite wherever the robot may go. A structurally massless

@@ -10,11 +10,16 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "core/model/message.hpp"
+
 namespace ll {
 namespace {
 
-std::runtime_error saveError(const std::string& path, const std::string& what, int error) {
-    return std::runtime_error(path + ": cannot save: " + what + (error ? std::string(": ") + std::strerror(error) : ""));
+// "PATH: cannot save: <what>: <system error>"; what() is in English.
+std::runtime_error saveError(const std::string& path, Message what, int error) {
+    const Message m = error ? message(MessageId::CannotSaveForReason, path, std::move(what), std::strerror(error))
+                            : message(MessageId::CannotSave, path, std::move(what));
+    return std::runtime_error(m.english());
 }
 
 // fsync of a file or directory by name (a descriptor opened for reading may be synced).
@@ -27,13 +32,13 @@ bool syncPath(const std::string& path, int flags) {
 
 void replaceDurably(const std::string& path, const std::function<void(std::ostream&)>& write) {
     const std::string temporary = path + ".tmp-" + std::to_string(::getpid());
-    const auto abandon = [&](const std::string& what, int error) {
+    const auto abandon = [&](Message what, int error) {
         ::unlink(temporary.c_str());
-        return saveError(path, what, error);
+        return saveError(path, std::move(what), error);
     };
     {
         std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        if (!out) throw saveError(path, "cannot create " + temporary, errno);
+        if (!out) throw saveError(path, message(MessageId::CannotCreateTemporary, temporary), errno);
         try {
             write(out);
         } catch (...) {
@@ -42,15 +47,16 @@ void replaceDurably(const std::string& path, const std::function<void(std::ostre
             throw;
         }
         out.flush();
-        if (!out) throw abandon("cannot write " + temporary, errno);
+        if (!out) throw abandon(message(MessageId::CannotWriteTemporary, temporary), errno);
         out.close();
-        if (out.fail()) throw abandon("cannot close " + temporary, errno);
+        if (out.fail()) throw abandon(message(MessageId::CannotCloseTemporary, temporary), errno);
     }
     // Keep the permissions of the file being replaced.
     struct stat old {};
     if (::stat(path.c_str(), &old) == 0) ::chmod(temporary.c_str(), old.st_mode & 07777);
-    if (!syncPath(temporary, 0)) throw abandon("cannot flush " + temporary, errno);
-    if (::rename(temporary.c_str(), path.c_str()) != 0) throw abandon("cannot rename " + temporary + " over it", errno);
+    if (!syncPath(temporary, 0)) throw abandon(message(MessageId::CannotFlushTemporary, temporary), errno);
+    if (::rename(temporary.c_str(), path.c_str()) != 0)
+        throw abandon(message(MessageId::CannotRenameTemporary, temporary), errno);
     // The rename itself lives in the directory; sync it too (best effort).
     std::string directory = std::filesystem::path(path).parent_path().string();
     syncPath(directory.empty() ? "." : directory, O_DIRECTORY);
@@ -61,11 +67,12 @@ void replaceDurably(const std::string& path, const std::function<void(std::ostre
 void saveFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write, Backup backup) {
     std::error_code ec;
     if (backup == Backup::Keep && std::filesystem::exists(path, ec)) {
+        const Message cannotKeep = message(MessageId::CannotKeepPrevious, path + ".bak");
         std::ifstream previous(path, std::ios::binary);
-        if (!previous) throw saveError(path, "cannot read the previous content to keep it as " + path + ".bak", errno);
+        if (!previous) throw saveError(path, cannotKeep, errno);
         replaceDurably(path + ".bak", [&](std::ostream& out) {
             if (previous.peek() != std::ifstream::traits_type::eof()) out << previous.rdbuf();
-            if (previous.bad()) throw saveError(path, "cannot read the previous content to keep it as " + path + ".bak", errno);
+            if (previous.bad()) throw saveError(path, cannotKeep, errno);
         });
     }
     replaceDurably(path, write);

@@ -3,6 +3,8 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "core/model/message.hpp"
+
 namespace ll {
 
 namespace fs = std::filesystem;
@@ -10,7 +12,7 @@ namespace fs = std::filesystem;
 fs::path executableDirectory() {
     std::error_code error;
     const fs::path exe = fs::read_symlink("/proc/self/exe", error);
-    if (error) throw std::runtime_error("cannot find the program's own location (/proc/self/exe: " + error.message() + ")");
+    if (error) throw std::runtime_error(message(MessageId::ProgramLocationUnknown, error.message()).english());
     return exe.parent_path();
 }
 

@@ -44,9 +44,9 @@ Scene parseScene(const std::string& jsonText) {
 
 LoadedScene loadScene(const std::string& path) {
     std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) throw InputError(path, "is a directory, not a scene file");
+    if (std::filesystem::is_directory(path, ec)) throw InputError(path, MessageId::PathIsDirectory);
     const std::optional<std::string> text = readWholeFile(path);
-    if (!text) throw InputError(path, std::string("cannot read the file: ") + std::strerror(errno));
+    if (!text) throw InputError(path, message(MessageId::CannotReadSceneFile, std::strerror(errno)));
     std::vector<Diagnostic> duplicates;
     scene_json::Json root;
     try {

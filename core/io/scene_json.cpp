@@ -30,8 +30,7 @@ public:
                 Level& level = levels_.back();
                 level.key = parsed.get<std::string>();
                 if (!level.keys.insert(level.key).second)
-                    out_.push_back({Severity::Error, child(level.path, level.key),
-                                    "key given twice (only one value may be given)"});
+                    out_.push_back({Severity::Error, child(level.path, level.key), MessageId::KeyGivenTwice});
                 break;
             }
             case Json::parse_event_t::value:
@@ -69,9 +68,9 @@ std::pair<std::size_t, std::size_t> lineAndColumn(const std::string& text, std::
     return {line, characterCount(std::string_view(text).substr(lineStart), offset - lineStart) + 1};
 }
 
-std::string at(const std::string& text, std::size_t offset) {
+Message at(const std::string& text, std::size_t offset) {
     const auto [line, column] = lineAndColumn(text, offset);
-    return "at line " + std::to_string(line) + ", column " + std::to_string(column);
+    return message(MessageId::AtLineColumn, line, column);
 }
 
 }  // namespace
@@ -80,8 +79,7 @@ Json parseJson(const std::string& text, std::vector<Diagnostic>& duplicates) {
     for (std::size_t i = 0; i < text.size();) {
         const Utf8Char c = decodeUtf8(text, i);
         if (!c.valid)
-            throw InputError(kDocument, "the file is not UTF-8: " + describeCharacter(c, text, i) + " " + at(text, i) +
-                                            " starts no character (save the file as UTF-8)");
+            throw InputError(kDocument, message(MessageId::FileNotUtf8, describeCharacter(c, text, i), at(text, i)));
         i += c.bytes;
     }
     Json root;
@@ -103,7 +101,7 @@ Json parseJson(const std::string& text, std::vector<Diagnostic>& duplicates) {
             while (from < reason.size() && (static_cast<unsigned char>(reason[from]) & 0xC0) == 0x80) ++from;
             reason = reason.substr(0, quoted) + "..." + reason.substr(from);
         }
-        throw InputError(kDocument, "JSON syntax error " + at(text, e.byte > 0 ? e.byte - 1 : 0) + ": " + reason);
+        throw InputError(kDocument, message(MessageId::JsonSyntaxError, at(text, e.byte > 0 ? e.byte - 1 : 0), reason));
     } catch (const Json::out_of_range& e) {
         // "number overflow parsing '1e400'" has no position; find the number.
         std::string what = e.what();
@@ -111,14 +109,16 @@ Json parseJson(const std::string& text, std::vector<Diagnostic>& duplicates) {
         if (open != std::string::npos && close > open) {
             const std::string number = what.substr(open + 1, close - open - 1);
             const std::size_t offset = text.find(number);
-            throw InputError(kDocument, "JSON number out of range " + at(text, offset == std::string::npos ? 0 : offset) +
-                                            ": " + number + " (the largest number is about 1.8e308)");
+            const Message where = at(text, offset == std::string::npos ? 0 : offset);
+            throw InputError(kDocument, message(MessageId::JsonNumberOutOfRange, where, number));
         }
-        throw InputError(kDocument, std::string("JSON error: ") + e.what());
+        throw InputError(kDocument, message(MessageId::JsonError, e.what()));
     } catch (const Json::exception& e) {
-        throw InputError(kDocument, std::string("JSON error: ") + e.what());
+        throw InputError(kDocument, message(MessageId::JsonError, e.what()));
     }
-    if (!root.is_object()) throw InputError(kDocument, "expected a JSON object {...} at the top level, got " + describe(root));
+    if (!root.is_object())
+        throw InputError(kDocument,
+                         message(MessageId::JsonExpectedGot, Message(MessageId::WantedTopLevelObject), describe(root)));
     return root;
 }
 

@@ -35,12 +35,12 @@ inline std::string joined(const Keys& keys) {
 }
 
 // The offending value as the student wrote it, with its type where the text does not show it.
-inline std::string describe(const Json& value) {
+inline Message describe(const Json& value) {
     std::string text = value.dump();
     if (text.size() > 60) text = text.substr(0, 57) + "...";
-    if (value.is_string()) return "a string " + text;
-    if (value.is_number()) return "the number " + text;
-    return text;
+    if (value.is_string()) return message(MessageId::DescribedString, text);
+    if (value.is_number()) return message(MessageId::DescribedNumber, text);
+    return literal(text);
 }
 
 inline Eigen::Matrix3d rotationFromRpy(const Eigen::Vector3d& rpy) {

@@ -36,6 +36,19 @@ using namespace scene_json;
 // degrees are allowed, but the field may as well be a length (a Lagrangian's coordinate).
 enum class Angle { No, Yes, Maybe };
 
+// The choices as a message lists them: "\"a\"", "\"a\" or \"b\"", "\"a\", \"b\" or \"c\"".
+Message alternatives(const Keys& choices) {
+    std::string first;
+    for (std::size_t i = 0; i + 1 < choices.size(); ++i) first += (i == 0 ? "\"" : ", \"") + choices[i] + "\"";
+    const std::string last = choices.empty() ? std::string() : "\"" + choices.back() + "\"";
+    return first.empty() ? literal(last) : message(MessageId::ChoiceOr, first, last);
+}
+
+// "expected <what>, got <the value>".
+Message expectedGot(MessageId what, const Json& value) {
+    return message(MessageId::JsonExpectedGot, Message(what), describe(value));
+}
+
 class SceneReader {
 public:
     explicit SceneReader(std::vector<Diagnostic> errors) : errors_(std::move(errors)) {}
@@ -53,7 +66,7 @@ public:
         // Every later field may use the parameters: a broken one would echo everywhere.
         if (errors_.size() > errorsBefore) throwIfErrors();
 
-        if (const Json* name = required(root, "", "name", "the scene's title")) readText(*name, "name", scene_.name);
+        if (const Json* name = required(root, "", "name", MessageId::SceneTitleField)) readText(*name, "name", scene_.name);
         if (const Json* description = member(root, "description"))
             readText(*description, "description", scene_.description);
         if (const Json* source = member(root, "source")) readText(*source, "source", scene_.source);
@@ -62,14 +75,13 @@ public:
         const Json* robot = member(root, "robot");
         const Json* lagrangian = member(root, "lagrangian");
         if (robot && lagrangian)
-            error("lagrangian", "a scene has either \"robot\" or \"lagrangian\", not both");
+            error("lagrangian", MessageId::RobotAndLagrangianKeysBoth);
         else if (robot)
             readRobot(*robot);
         else if (lagrangian)
             readLagrangian(*lagrangian);
         else
-            error("robot", "required field is missing (the DH table and links; or \"lagrangian\" for a system "
-                           "given by its coordinates, E_kin and E_pot)");
+            error("robot", message(MessageId::RequiredFieldMissing, Message(MessageId::RobotOrLagrangianField)));
         if (const Json* effects = member(root, "effects")) readEffects(*effects);
         readInitial(member(root, "initial"));
         if (const Json* simulation = member(root, "simulation")) readSimulation(*simulation);
@@ -78,12 +90,12 @@ public:
     }
 
 private:
-    void error(const std::string& field, const std::string& message) {
-        errors_.push_back({Severity::Error, field, message});
+    void error(const std::string& field, Message message) {
+        errors_.push_back({Severity::Error, field, std::move(message)});
     }
 
-    [[noreturn]] void fail(const std::string& field, const std::string& message) {
-        error(field, message);
+    [[noreturn]] void fail(const std::string& field, Message message) {
+        error(field, std::move(message));
         throw InputError(errors_);
     }
 
@@ -96,27 +108,29 @@ private:
         return found == object.end() ? nullptr : &*found;
     }
 
-    const Json* required(const Json& object, const std::string& path, const std::string& key, const std::string& what) {
+    const Json* required(const Json& object, const std::string& path, const std::string& key, Message what) {
         const Json* value = member(object, key);
-        if (!value) error(child(path, key), "required field is missing (" + what + ")");
+        if (!value) error(child(path, key), message(MessageId::RequiredFieldMissing, std::move(what)));
         return value;
     }
 
     // An object holding only `allowed` keys; false (and an error) when it is no object.
     bool checkObject(const Json& value, const std::string& path, const Keys& allowed) {
         if (!value.is_object()) {
-            error(path, "expected an object {...}, got " + describe(value));
+            error(path, expectedGot(MessageId::WantedObject, value));
             return false;
         }
         checkKeys(value, path, allowed);
         return true;
     }
 
-    void checkKeys(const Json& object, const std::string& path, const Keys& allowed,
-                   const std::string& context = "") {
+    // `owner`, if given, says whose keys they are ("a box", "a step torque").
+    void checkKeys(const Json& object, const std::string& path, const Keys& allowed, const Message& owner = {}) {
         for (const auto& [key, value] : object.items())
             if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())  // "" is named as typed: ""
-                error(child(path, key.empty() ? "\"\"" : key), "unknown key" + context + " (expected one of " + joined(allowed) + ")");
+                error(child(path, key.empty() ? "\"\"" : key),
+                      owner.empty() ? message(MessageId::UnknownKey, joined(allowed))
+                                    : message(MessageId::UnknownKeyFor, owner, joined(allowed)));
     }
 
     std::optional<double> number(const Json& value, const std::string& path, Angle angle = Angle::No) {
@@ -142,7 +156,7 @@ private:
                 return std::nullopt;
             }
         }
-        error(path, "expected a number or an expression, got " + describe(value));
+        error(path, expectedGot(MessageId::WantedNumberOrExpression, value));
         return std::nullopt;
     }
 
@@ -162,8 +176,7 @@ private:
         number.precision(10);
         number << value;
         warnings_.push_back({Severity::Warning, path,
-                             name + " " + number.str() + " rad — did you mean " + reading.degrees + "? write " +
-                                 reading.degrees + " or " + reading.radians + " (loaded as " + number.str() + " rad)"});
+                             message(MessageId::DegreesTypedAsRadians, name, number.str(), reading.degrees, reading.radians)});
     }
 
     // Degrees are for a revolute joint's angles; a prismatic joint's q is a length. A
@@ -184,7 +197,7 @@ private:
         if (value.is_string())
             target = value.get<std::string>();
         else
-            error(path, "expected a string \"...\", got " + describe(value));
+            error(path, expectedGot(MessageId::WantedString, value));
     }
 
     // A string that must be one of `choices`; the index of the match.
@@ -193,10 +206,7 @@ private:
             const auto found = std::find(choices.begin(), choices.end(), value.get<std::string>());
             if (found != choices.end()) return static_cast<std::size_t>(found - choices.begin());
         }
-        std::string expected;
-        for (std::size_t i = 0; i < choices.size(); ++i)
-            expected += (i == 0 ? "\"" : i + 1 == choices.size() ? " or \"" : ", \"") + choices[i] + "\"";
-        error(path, "expected " + expected + ", got " + describe(value));
+        error(path, message(MessageId::JsonExpectedGot, alternatives(choices), describe(value)));
         return std::nullopt;
     }
 
@@ -206,7 +216,7 @@ private:
         if (!value) return;
         const std::string field = child(path, key);
         if (!value->is_array() || value->size() != 3) {
-            error(field, "expected an array of 3 numbers or expressions [x, y, z], got " + describe(*value));
+            error(field, expectedGot(MessageId::WantedVector3, *value));
             return;
         }
         for (std::size_t i = 0; i < 3; ++i)
@@ -216,17 +226,17 @@ private:
     void readFormat(const Json& root) {
         const Json* format = member(root, "format");
         if (!format) {
-            error("format", std::string("required field is missing (expected \"") + kFormat + "\")");
+            error("format", message(MessageId::RequiredFieldMissing, message(MessageId::JsonExpected, alternatives({kFormat}))));
             return;
         }
         // Another format (or version) would make every later message misleading.
         if (!format->is_string() || format->get<std::string>() != kFormat)
-            fail("format", std::string("expected \"") + kFormat + "\", got " + describe(*format));
+            fail("format", message(MessageId::JsonExpectedGot, alternatives({kFormat}), describe(*format)));
     }
 
     void readParameters(const Json& parameters) {
         if (!parameters.is_object()) {
-            error("parameters", "expected an object {\"name\": value, ...}, got " + describe(parameters));
+            error("parameters", expectedGot(MessageId::WantedParameterObject, parameters));
             return;
         }
         for (const auto& [name, value] : parameters.items()) {
@@ -238,7 +248,7 @@ private:
                     parameters_.define(field, name, value.get<std::string>());
                     scene_.expressions[field] = value.get<std::string>();
                 } else {
-                    error(field, "expected a number or an expression, got " + describe(value));
+                    error(field, expectedGot(MessageId::WantedNumberOrExpression, value));
                     continue;
                 }
                 scene_.parameters.emplace_back(name, parameters_.value(name));
@@ -250,14 +260,14 @@ private:
 
     void readRobot(const Json& robot) {
         if (!checkObject(robot, "robot", {"convention", "base", "joints"})) return;
-        if (const Json* convention = required(robot, "robot", "convention", "\"standard\" or \"modified\" DH"))
+        if (const Json* convention = required(robot, "robot", "convention", MessageId::DhConventionField))
             if (auto choice = readChoice(*convention, "robot.convention", {"standard", "modified"}))
                 scene_.robot.convention = *choice == 0 ? DhConvention::Standard : DhConvention::Modified;
         if (const Json* base = member(robot, "base")) readBase(*base);
-        const Json* joints = required(robot, "robot", "joints", "one entry per joint, base to tip");
+        const Json* joints = required(robot, "robot", "joints", MessageId::JointsField);
         if (!joints) return;
         if (!joints->is_array() || joints->empty()) {
-            error("robot.joints", "expected an array of at least one joint [{...}, ...], got " + describe(*joints));
+            error("robot.joints", expectedGot(MessageId::WantedJointArray, *joints));
             return;
         }
         scene_.robot.joints.resize(joints->size());
@@ -271,17 +281,16 @@ private:
         const std::string path = "lagrangian";
         if (!checkObject(value, path, {"coordinates", "kinetic", "potential", "forces", "bodies"})) return;
         LagrangianSpec spec;
-        if (const Json* coordinates =
-                required(value, path, "coordinates", "the generalized coordinates by name, e.g. [\"theta1\", \"theta2\"]")) {
+        if (const Json* coordinates = required(value, path, "coordinates", MessageId::CoordinatesField)) {
             if (!coordinates->is_array() || coordinates->empty())
-                error("lagrangian.coordinates", "expected an array of names [\"x\", ...], got " + describe(*coordinates));
+                error("lagrangian.coordinates", expectedGot(MessageId::WantedNameArray, *coordinates));
             else
                 for (std::size_t i = 0; i < coordinates->size(); ++i) {
                     const Json& name = (*coordinates)[i];
                     if (name.is_string())
                         spec.coordinates.push_back(name.get<std::string>());
                     else
-                        error(item("lagrangian.coordinates", i), "expected a name \"...\", got " + describe(name));
+                        error(item("lagrangian.coordinates", i), expectedGot(MessageId::WantedName, name));
                 }
         }
         const std::size_t errorsBefore = errors_.size();
@@ -291,7 +300,7 @@ private:
         const LagrangianSymbols symbols = lagrangianSymbols(spec.coordinates);
         const auto expression = [&](const Json& text, const std::string& field, LagrangianField kind) -> std::string {
             if (!text.is_string() && !text.is_number()) {
-                error(field, "expected an expression \"...\" or a number, got " + describe(text));
+                error(field, expectedGot(MessageId::WantedExpressionOrNumber, text));
                 return "0";
             }
             const std::string written = text.is_string() ? text.get<std::string>() : text.dump();
@@ -302,20 +311,20 @@ private:
                 }
             return written;
         };
-        if (const Json* kinetic = required(value, path, "kinetic", "E_kin in the coordinates and velocities <name>_dot"))
+        if (const Json* kinetic = required(value, path, "kinetic", MessageId::KineticField))
             spec.kinetic = expression(*kinetic, "lagrangian.kinetic", LagrangianField::Kinetic);
         if (const Json* potential = member(value, "potential"))
             spec.potential = expression(*potential, "lagrangian.potential", LagrangianField::Potential);
         if (const Json* forces = member(value, "forces")) {
             if (!forces->is_array())
-                error("lagrangian.forces", "expected an array of expressions, one per coordinate, got " + describe(*forces));
+                error("lagrangian.forces", expectedGot(MessageId::WantedForceArray, *forces));
             else
                 for (std::size_t i = 0; i < forces->size(); ++i)
                     spec.forces.push_back(expression((*forces)[i], item("lagrangian.forces", i), LagrangianField::Force));
         }
         if (const Json* bodies = member(value, "bodies")) {
             if (!bodies->is_array())
-                error("lagrangian.bodies", "expected an array of objects [{...}, ...], got " + describe(*bodies));
+                error("lagrangian.bodies", expectedGot(MessageId::WantedObjectArray, *bodies));
             else
                 for (std::size_t i = 0; i < bodies->size(); ++i) {
                     VisualBody body;
@@ -329,12 +338,12 @@ private:
     template <class Expression>
     void readBody(const Json& body, const std::string& path, VisualBody& target, const Expression& expression) {
         if (!body.is_object()) {
-            error(path, "expected an object {...}, got " + describe(body));
+            error(path, expectedGot(MessageId::WantedObject, body));
             return;
         }
         static const Keys shapes = {"box", "sphere", "cylinder", "rod"};
         std::optional<std::size_t> shape;
-        if (const Json* value = required(body, path, "shape", "\"box\", \"sphere\", \"cylinder\" or \"rod\""))
+        if (const Json* value = required(body, path, "shape", alternatives(shapes)))
             shape = readChoice(*value, child(path, "shape"), shapes);
         if (shape) target.shape = static_cast<BodyShape>(*shape);
         const bool rod = shape && target.shape == BodyShape::Rod;
@@ -342,18 +351,18 @@ private:
             checkKeys(body, path,
                       rod ? Keys{"name", "shape", "size", "position", "end", "color"}
                           : Keys{"name", "shape", "size", "position", "angle", "axis", "color"},
-                      " for a " + shapes[*shape]);
+                      message(MessageId::ShapeOfKind, shapes[*shape]));
         if (const Json* name = member(body, "name")) readText(*name, child(path, "name"), target.name);
         if (const Json* color = member(body, "color")) {
             readText(*color, child(path, "color"), target.color);
             static const std::regex hex("#[0-9A-Fa-f]{6}");
             if (color->is_string() && !std::regex_match(target.color, hex))
-                error(child(path, "color"), "expected a colour \"#rrggbb\", got " + describe(*color));
+                error(child(path, "color"), expectedGot(MessageId::WantedColour, *color));
         }
-        if (const Json* size = required(body, path, "size", "the shape's dimensions")) {
+        if (const Json* size = required(body, path, "size", MessageId::ShapeSizeField)) {
             const std::string field = child(path, "size");
             if (!size->is_array()) {
-                error(field, "expected an array of numbers or expressions [...], got " + describe(*size));
+                error(field, expectedGot(MessageId::WantedNumberArray, *size));
             } else {
                 target.size.assign(size->size(), 0.0);
                 for (std::size_t k = 0; k < size->size(); ++k)
@@ -365,7 +374,7 @@ private:
             if (!value) return;
             const std::string field = child(path, key);
             if (!value->is_array() || value->size() != 3) {
-                error(field, "expected an array of 3 expressions of the coordinates [x, y, z], got " + describe(*value));
+                error(field, expectedGot(MessageId::WantedPoint, *value));
                 return;
             }
             for (std::size_t k = 0; k < 3; ++k) out[k] = expression((*value)[k], item(field, k), LagrangianField::Pose);
@@ -398,7 +407,7 @@ private:
         readNumber(joint, path, "d", target.dh.d);
         // θ is the revolute joint's offset angle; a prismatic joint's θ is a constant angle too.
         readNumber(joint, path, "theta", target.dh.theta, Angle::Yes);
-        if (required(joint, path, "mass", "the link's mass in kg; 0 for a massless link"))
+        if (required(joint, path, "mass", MessageId::LinkMassField))
             readNumber(joint, path, "mass", target.link.mass);
         readVector3(joint, path, "com", target.link.com);
         if (const Json* inertia = member(joint, "inertia")) readInertia(*inertia, child(path, "inertia"), target.link);
@@ -410,8 +419,7 @@ private:
         const Json* armature = member(joint, "armature");
         const Json* rotor = member(joint, "motor");
         if (armature && rotor) {
-            error(child(path, "motor"), "give either \"armature\" (Jm*G^2, the reflected inertia) or \"motor\" "
-                                        "{\"inertia\": Jm, \"gear_ratio\": G}, not both");
+            error(child(path, "motor"), MessageId::ArmatureAndMotorBoth);
             return;
         }
         if (armature) readNumber(joint, path, "armature", motor.inertia);
@@ -419,9 +427,9 @@ private:
         const std::string field = child(path, "motor");
         if (!checkObject(*rotor, field, {"inertia", "gear_ratio"})) return;
         motor.fromMotor = true;
-        if (required(*rotor, field, "inertia", "the rotor's inertia Jm in kg m²"))
+        if (required(*rotor, field, "inertia", MessageId::RotorInertiaField))
             readNumber(*rotor, field, "inertia", motor.inertia);
-        if (required(*rotor, field, "gear_ratio", "G, motor turns per joint turn"))
+        if (required(*rotor, field, "gear_ratio", MessageId::GearRatioField))
             readNumber(*rotor, field, "gear_ratio", motor.gearRatio);
     }
 
@@ -438,17 +446,17 @@ private:
 
     // Effects number joints from 1; the structs from 0.
     std::optional<int> readJointNumber(const Json& entry, const std::string& path) {
-        const Json* value = required(entry, path, "joint", "the joint's number, from 1");
+        const Json* value = required(entry, path, "joint", MessageId::EffectJointField);
         if (!value) return std::nullopt;
         const std::string field = child(path, "joint");
         const bool integral = value->is_number() && std::floor(value->get<double>()) == value->get<double>();
         if (!integral || std::abs(value->get<double>()) > 1e6) {
-            error(field, "expected a joint number (an integer from 1), got " + describe(*value));
+            error(field, expectedGot(MessageId::WantedJointNumber, *value));
             return std::nullopt;
         }
         const int joint = static_cast<int>(value->get<double>());
         if (joint < 1) {
-            error(field, "joints are numbered from 1 as in the textbook, got " + value->dump());
+            error(field, message(MessageId::JointsNumberedFromOne, value->dump()));
             return std::nullopt;
         }
         return joint - 1;
@@ -461,14 +469,14 @@ private:
         if (!list) return;
         const std::string path = child("effects", key);
         if (!list->is_array()) {
-            error(path, "expected an array of objects [{...}, ...], got " + describe(*list));
+            error(path, expectedGot(MessageId::WantedObjectArray, *list));
             return;
         }
         for (std::size_t i = 0; i < list->size(); ++i) {
             const Json& entry = (*list)[i];
             const std::string field = item(path, i);
             if (!entry.is_object()) {
-                error(field, "expected an object {...}, got " + describe(entry));
+                error(field, expectedGot(MessageId::WantedObject, entry));
                 continue;
             }
             Entry parsed;
@@ -521,7 +529,7 @@ private:
         torque.kind = static_cast<TorqueKind>(*kind);
         Keys allowed = {"joint", "kind"};
         allowed.insert(allowed.end(), keysOf[*kind].begin(), keysOf[*kind].end());
-        checkKeys(entry, path, allowed, " for a " + kinds[*kind] + " torque");
+        checkKeys(entry, path, allowed, message(MessageId::TorqueOfKind, kinds[*kind]));
         readNumber(entry, path, "value", torque.value);
         readNumber(entry, path, "at", torque.at);
         readNumber(entry, path, "amplitude", torque.amplitude);
@@ -536,7 +544,7 @@ private:
         if (!value) return Eigen::VectorXd::Zero(n);
         const std::string field = child("initial", key);
         if (!value->is_array()) {
-            error(field, "expected an array of numbers or expressions [...], got " + describe(*value));
+            error(field, expectedGot(MessageId::WantedNumberArray, *value));
             return Eigen::VectorXd::Zero(n);
         }
         // Any length: whether it matches the joints is validation's call. Positions of

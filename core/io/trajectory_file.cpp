@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/io/atomic_file.hpp"
+#include "core/model/message.hpp"
 #include "core/model/quantity_units.hpp"
 
 namespace ll {
@@ -145,7 +146,7 @@ void writeTrajectoryJson(const SimulationResult& result, std::ostream& out, cons
 void saveTrajectory(const SimulationResult& result, const std::string& path, const TorqueColumns& torques) {
     const bool json = path.size() >= 5 && path.compare(path.size() - 5, 5, ".json") == 0;
     const bool csv = path.size() >= 4 && path.compare(path.size() - 4, 4, ".csv") == 0;
-    if (!json && !csv) throw std::runtime_error(path + ": output file must end in .csv or .json");
+    if (!json && !csv) throw std::runtime_error(message(MessageId::TrajectoryFileExtension, path).english());
     saveFileAtomically(
         path,
         [&](std::ostream& out) {

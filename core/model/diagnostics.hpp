@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "core/model/message.hpp"
+
 namespace ll {
 
 enum class Severity { Warning, Error };
@@ -11,12 +13,13 @@ enum class Severity { Warning, Error };
 struct Diagnostic {
     Severity severity = Severity::Error;
     std::string field;    // a path as JSON counts it: "robot.joints[0].mass" is the first joint's
-    std::string message;  // says the value and what is wrong with it: one short line
-    std::string hint = {};  // why, and what to do about it (printed on a following `hint:` line)
+    Message message;  // says the value and what is wrong with it: one short line
+    Message hint = {};  // why, and what to do about it (printed on a following `hint:` line)
 
     // The field with its joint in words, as the table names it: "robot.joints[0].mass (joint 1)".
-    std::string where() const;
-    std::string text() const;      // "robot.joints[0].mass (joint 1): ..." (and "\nhint: ...")
+    std::string where() const;  // place() in English
+    Message place() const;
+    std::string text() const;      // "robot.joints[0].mass (joint 1): ..." (and "\nhint: ..."), in English
     std::string toString() const;  // "error: " or "warning: ", then text()
 };
 
@@ -28,7 +31,7 @@ bool hasErrors(const std::vector<Diagnostic>& diagnostics);
 class InputError : public std::runtime_error {
 public:
     explicit InputError(std::vector<Diagnostic> diagnostics);
-    InputError(std::string field, std::string message, std::string hint = {});
+    InputError(std::string field, Message message, Message hint = {});
     const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
 
 private:

@@ -7,11 +7,9 @@
 
 namespace ll {
 
-std::optional<std::string> unusableNumber(double value) {
-    if (!std::isfinite(value)) return "value is not finite (" + formatValue(value) + ")";
-    if (std::fpclassify(value) == FP_SUBNORMAL)
-        return "value " + formatValue(value) + " is too close to zero for double precision (subnormal, below " +
-               formatValue(std::numeric_limits<double>::min()) + "): write 0 for zero, else check the exponent";
+std::optional<Message> unusableNumber(double value) {
+    if (!std::isfinite(value)) return message(MessageId::ValueNotFinite, value);
+    if (std::fpclassify(value) == FP_SUBNORMAL) return message(MessageId::ValueSubnormal, value, std::numeric_limits<double>::min());
     return std::nullopt;
 }
 

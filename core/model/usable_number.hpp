@@ -8,10 +8,12 @@
 #include <optional>
 #include <string>
 
+#include "core/model/message.hpp"
+
 namespace ll {
 
 // Why `value` cannot be used as a field's number ("value is not finite (inf)", "value
 // 1e-310 is subnormal ..."), or nothing when it can.
-std::optional<std::string> unusableNumber(double value);
+std::optional<Message> unusableNumber(double value);
 
 }  // namespace ll

@@ -11,13 +11,11 @@
 namespace ll {
 namespace {
 
-std::string fmt(double v) { return formatValue(v); }
-
-void error(std::vector<Diagnostic>& out, std::string field, std::string message, std::string hint = {}) {
+void error(std::vector<Diagnostic>& out, std::string field, Message message, Message hint = {}) {
     out.push_back({Severity::Error, std::move(field), std::move(message), std::move(hint)});
 }
 
-void warning(std::vector<Diagnostic>& out, std::string field, std::string message, std::string hint = {}) {
+void warning(std::vector<Diagnostic>& out, std::string field, Message message, Message hint = {}) {
     out.push_back({Severity::Warning, std::move(field), std::move(message), std::move(hint)});
 }
 
@@ -31,98 +29,91 @@ void requireFinite(std::vector<Diagnostic>& out, const std::string& field, doubl
 // (a massless link, a length not used); a value beyond `largest` or, not zero, below
 // `smallest` is an error.
 struct Range {
-    const char* quantity;
+    MessageId quantity;  // its name: "length", "mass", ...
     const char* unit;
     double smallest, largest;
 };
-constexpr Range kLength{"length", "m", 1e-9, 1e4};
-constexpr Range kMass{"mass", "kg", 1e-9, 1e9};
-constexpr Range kInertia{"inertia", "kg m²", 1e-15, 1e9};
-constexpr Range kGravity{"gravity", "m/s²", 1e-6, 1e3};
+constexpr Range kLength{MessageId::QuantityLength, "m", 1e-9, 1e4};
+constexpr Range kMass{MessageId::QuantityMass, "kg", 1e-9, 1e9};
+constexpr Range kInertia{MessageId::QuantityInertia, "kg m²", 1e-15, 1e9};
+constexpr Range kGravity{MessageId::QuantityGravity, "m/s²", 1e-6, 1e3};
 
 // Whether `value` is in range; if not, the error says so (finite values only: the
 // caller's requireFinite names the rest).
 bool inRange(std::vector<Diagnostic>& out, const std::string& field, double value, const Range& r) {
+    using enum MessageId;
     const double a = std::abs(value);
     if (!std::isfinite(value) || a == 0.0 || (a >= r.smallest && a <= r.largest)) return true;
-    out.push_back({Severity::Error, field,
-                   std::string(a > r.largest ? "absurdly large " : "absurdly small ") + r.quantity + " " + fmt(value) + " " + r.unit,
-                   std::string("no physical ") + r.quantity + " here is " + (a > r.largest ? "above " + fmt(r.largest) : "below " + fmt(r.smallest)) +
-                       " " + r.unit + " (was it typed in the wrong unit, or with a wrong exponent?)"});
+    const bool large = a > r.largest;
+    out.push_back({Severity::Error, field, message(large ? AbsurdlyLarge : AbsurdlySmall, r.quantity, value, r.unit),
+                   large ? message(NoPhysicalAbove, r.quantity, r.largest, r.unit)
+                         : message(NoPhysicalBelow, r.quantity, r.smallest, r.unit)});
     return false;
 }
 
 void validateInertia(std::vector<Diagnostic>& out, int j, const Eigen::Matrix3d& I) {
+    using enum MessageId;
     const std::string field = jointField(j, "inertia");
     const double scale = std::max(I.cwiseAbs().maxCoeff(), 1e-300);
     if ((I - I.transpose()).cwiseAbs().maxCoeff() > 1e-12 * scale) {
-        error(out, field, "inertia tensor is not symmetric");
+        error(out, field, InertiaNotSymmetric);
         return;
     }
     const Eigen::Vector3d moments = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(I).eigenvalues();
     if (moments.minCoeff() < -1e-12 * scale) {
-        error(out, field,
-              "inertia tensor is not positive semi-definite: principal moments " + fmt(moments[0]) + ", " +
-                  fmt(moments[1]) + ", " + fmt(moments[2]),
-              "off-diagonal entries are the tensor's own, i.e. minus the products of inertia");
+        error(out, field, message(InertiaNotPositiveSemidefinite, moments[0], moments[1], moments[2]), InertiaOffDiagonalHint);
         return;
     }
     const double tol = 1e-9 * scale;
     const double a = moments[0], b = moments[1], c = moments[2];
     if (a + b < c - tol)
-        warning(out, field,
-                "principal moments " + fmt(a) + ", " + fmt(b) + ", " + fmt(c) + " violate the triangle inequality (" +
-                    fmt(a) + " + " + fmt(b) + " < " + fmt(c) + ")",
-                "no physical body has this inertia; the model is simulated as given");
+        warning(out, field, message(TriangleInequalityViolated, a, b, c), NoPhysicalBodyHasThisInertia);
 }
 
 // A motor's armature adds Jm G² to b_jj: it must be a finite number >= 0.
 void validateMotor(std::vector<Diagnostic>& out, int j, const JointMotor& motor) {
+    using enum MessageId;
     if (!motor.fromMotor) {
         requireFinite(out, jointField(j, "armature"), motor.inertia);
-        if (motor.inertia < 0) error(out, jointField(j, "armature"), "armature is negative (" + fmt(motor.inertia) + "); it must be >= 0");
+        if (motor.inertia < 0) error(out, jointField(j, "armature"), message(ArmatureNegative, motor.inertia));
         return;
     }
     requireFinite(out, jointField(j, "motor.inertia"), motor.inertia);
     requireFinite(out, jointField(j, "motor.gear_ratio"), motor.gearRatio);
     if (motor.inertia < 0)
-        error(out, jointField(j, "motor.inertia"), "rotor inertia is negative (" + fmt(motor.inertia) + " kg m²); it must be >= 0");
+        error(out, jointField(j, "motor.inertia"), message(RotorInertiaNegative, motor.inertia));
     if (motor.gearRatio == 0)
-        error(out, jointField(j, "motor.gear_ratio"),
-              "gear ratio is 0 (motor turns per joint turn: 1 for a direct drive, e.g. 62.6 for PUMA joint 1)");
+        error(out, jointField(j, "motor.gear_ratio"), GearRatioZero);
 }
 
 // The structure of a hand-typed Lagrangian; its expressions are checked when they are
 // parsed (scene file) and derived (core/symbolic/lagrangian_derivation).
 void validateLagrangian(std::vector<Diagnostic>& out, const Scene& scene) {
+    using enum MessageId;
     const LagrangianSpec& l = *scene.lagrangian;
-    if (!scene.robot.joints.empty())
-        error(out, "robot", "a scene has either a robot or a lagrangian, not both");
-    if (l.coordinates.empty()) error(out, "lagrangian.coordinates", "a Lagrangian system needs at least one coordinate");
+    if (!scene.robot.joints.empty()) error(out, "robot", RobotAndLagrangianBoth);
+    if (l.coordinates.empty()) error(out, "lagrangian.coordinates", LagrangianNeedsCoordinate);
     if (!l.forces.empty() && l.forces.size() != l.coordinates.size())
-        error(out, "lagrangian.forces",
-              "has " + std::to_string(l.forces.size()) + " entries, one per coordinate (" +
-                  std::to_string(l.coordinates.size()) + ") or none are needed");
+        error(out, "lagrangian.forces", message(ForcesOnePerCoordinate, l.forces.size(), l.coordinates.size()));
     for (size_t b = 0; b < l.bodies.size(); ++b) {
         const VisualBody& body = l.bodies[b];
         const std::string f = "lagrangian.bodies[" + std::to_string(b) + "]";
         if (static_cast<int>(body.size.size()) != sizeCount(body.shape))
-            error(out, f + ".size",
-                  "a " + std::string(toString(body.shape)) + " takes " + std::to_string(sizeCount(body.shape)) +
-                      " numbers, got " + std::to_string(body.size.size()));
+            error(out, f + ".size", message(ShapeTakesNumbers, toString(body.shape), sizeCount(body.shape), body.size.size()));
         for (size_t k = 0; k < body.size.size(); ++k)
             if (!(std::isfinite(body.size[k]) && body.size[k] > 0))
-                error(out, f + ".size[" + std::to_string(k) + "]", "must be a finite number > 0, got " + fmt(body.size[k]));
+                error(out, f + ".size[" + std::to_string(k) + "]", message(MustBeFinitePositive, body.size[k]));
         if (!body.axis.allFinite() || body.axis.norm() == 0.0)
-            error(out, f + ".axis", "must be a finite nonzero direction");
+            error(out, f + ".axis", MustBeFiniteDirection);
     }
 }
 
 }  // namespace
 
 std::vector<Diagnostic> validateRobotFields(const RobotModel& model) {
+    using enum MessageId;
     std::vector<Diagnostic> out;
-    if (model.joints.empty()) error(out, "robot.joints", "a robot needs at least one joint");
+    if (model.joints.empty()) error(out, "robot.joints", RobotNeedsJoint);
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 4; ++c) requireFinite(out, "robot.base", model.base.matrix()(r, c));
     for (int r = 0; r < 3; ++r) inRange(out, "robot.base.position[" + std::to_string(r) + "]", model.base.translation()[r], kLength);
@@ -143,9 +134,9 @@ std::vector<Diagnostic> validateRobotFields(const RobotModel& model) {
         for (int k = 0; k < 3; ++k)
             sane = inRange(out, jointField(j, std::string("inertia.") + diagonal[k]), joint.link.inertia(k, k), kInertia) && sane;
         const bool inertiaFinite = joint.link.inertia.allFinite();
-        if (!inertiaFinite) error(out, jointField(j, "inertia"), "inertia tensor has a non-finite entry");
+        if (!inertiaFinite) error(out, jointField(j, "inertia"), InertiaNotFinite);
         if (std::isfinite(joint.link.mass) && joint.link.mass < 0)
-            error(out, jointField(j, "mass"), "mass is negative (" + fmt(joint.link.mass) + " kg); it must be >= 0");
+            error(out, jointField(j, "mass"), message(MassNegative, joint.link.mass));
         if (inertiaFinite && sane) validateInertia(out, j, joint.link.inertia);
         validateMotor(out, j, joint.motor);
     }
@@ -155,6 +146,7 @@ std::vector<Diagnostic> validateRobotFields(const RobotModel& model) {
 }
 
 std::vector<Diagnostic> validateSceneFields(const Scene& scene) {
+    using enum MessageId;
     std::vector<Diagnostic> out;
     if (scene.lagrangian)
         validateLagrangian(out, scene);
@@ -162,27 +154,17 @@ std::vector<Diagnostic> validateSceneFields(const Scene& scene) {
         out = validateRobotFields(scene.robot);
     const int n = scene.dof();
     // A Lagrangian system's effects name its coordinates by number.
-    const std::string items = scene.lagrangian ? "coordinates" : "joints";
     const auto checkJoint = [&](const std::string& field, int joint) {
         if (joint < 0 || joint >= n)
-            error(out, field + ".joint",
-                  std::string(scene.lagrangian ? "coordinate " : "joint ") + std::to_string(joint + 1) +
-                      " does not exist (the " + (scene.lagrangian ? "system" : "robot") + " has " + items + " 1.." +
-                      std::to_string(n) + ")");
+            error(out, field + ".joint", message(scene.lagrangian ? CoordinateDoesNotExist : JointDoesNotExist, joint + 1, n));
     };
     const auto checkNonNegative = [&](const std::string& field, double value) {
         requireFinite(out, field, value);
-        if (value < 0) error(out, field, "must be >= 0, got " + fmt(value));
+        if (value < 0) error(out, field, message(MustBeNonNegative, value));
     };
     const Effects& e = scene.effects;
-    if (scene.lagrangian && e.gravity)
-        error(out, "effects.gravity",
-              "a Lagrangian system has no gravity effect: write it in the potential (lagrangian.potential, "
-              "e.g. m*g*y for height y), otherwise it would be modelled twice or not at all");
-    if (scene.lagrangian && !e.springs.empty())
-        error(out, "effects.springs",
-              "a Lagrangian system has no spring effect: write it in the potential (lagrangian.potential, "
-              "e.g. K*(x - rest)^2/2)");
+    if (scene.lagrangian && e.gravity) error(out, "effects.gravity", LagrangianNoGravityEffect);
+    if (scene.lagrangian && !e.springs.empty()) error(out, "effects.springs", LagrangianNoSpringEffect);
     if (e.gravity) {
         for (int k = 0; k < 3; ++k) requireFinite(out, "effects.gravity[" + std::to_string(k) + "]", (*e.gravity)[k]);
         inRange(out, "effects.gravity", e.gravity->norm(), kGravity);
@@ -203,10 +185,9 @@ std::vector<Diagnostic> validateSceneFields(const Scene& scene) {
         checkJoint(f, e.coulomb[s].joint);
         checkNonNegative(f + ".force", e.coulomb[s].force);
         requireFinite(out, f + ".smoothing", e.coulomb[s].smoothing);
-        if (!(e.coulomb[s].smoothing > 0)) error(out, f + ".smoothing", "must be > 0, got " + fmt(e.coulomb[s].smoothing));
+        if (!(e.coulomb[s].smoothing > 0)) error(out, f + ".smoothing", message(MustBePositive, e.coulomb[s].smoothing));
         if (scene.lagrangian && e.coulomb[s].model == CoulombModel::Stick)
-            error(out, f + ".model",
-                  "the stick model is implemented for robots only; a Lagrangian system uses \"tanh\" (the default)");
+            error(out, f + ".model", StickModelRobotsOnly);
     }
     for (size_t s = 0; s < e.torques.size(); ++s) {
         const std::string f = "effects.torques[" + std::to_string(s) + "]";
@@ -216,8 +197,7 @@ std::vector<Diagnostic> validateSceneFields(const Scene& scene) {
     }
     const auto checkState = [&](const std::string& field, const Eigen::VectorXd& v) {
         if (v.size() != n) {
-            error(out, field, "has " + std::to_string(v.size()) + " entries, the " +
-                                  (scene.lagrangian ? "system" : "robot") + " has " + std::to_string(n) + " " + items);
+            error(out, field, message(scene.lagrangian ? EntriesForCoordinates : EntriesForJoints, v.size(), n));
             return;
         }
         for (int i = 0; i < n; ++i) requireFinite(out, field + "[" + std::to_string(i) + "]", v[i]);
@@ -226,7 +206,7 @@ std::vector<Diagnostic> validateSceneFields(const Scene& scene) {
     checkState("initial.qd", scene.initial.qd);
     const SimulationSettings& sim = scene.simulation;
     const auto checkPositive = [&](const std::string& field, double value) {
-        if (!(std::isfinite(value) && value > 0)) error(out, field, "must be a finite number > 0, got " + fmt(value));
+        if (!(std::isfinite(value) && value > 0)) error(out, field, message(MustBeFinitePositive, value));
     };
     checkPositive("simulation.duration", sim.duration);
     checkPositive("simulation.abs_tol", sim.absTol);
@@ -237,8 +217,7 @@ std::vector<Diagnostic> validateSceneFields(const Scene& scene) {
     constexpr double maxSamples = 1e7;
     if (std::isfinite(sim.duration) && std::isfinite(sim.outputRate) && sim.duration * sim.outputRate > maxSamples)
         error(out, "simulation.output_rate",
-              "duration " + fmt(sim.duration) + " s at " + fmt(sim.outputRate) + " samples/s would record " +
-                  fmt(sim.duration * sim.outputRate) + " samples (at most 1e+07): lower the output rate or the duration");
+              message(TooManySamples, sim.duration, sim.outputRate, sim.duration * sim.outputRate, maxSamples));
     return out;
 }
 

@@ -14,9 +14,6 @@
 namespace ll {
 namespace {
 
-const char* const kNotPositiveDefinite =
-    "the mass matrix B(q) is not positive definite at this state: ";
-
 // A Lagrangian system: its derivation, compiled once. With tau the inputs (what Q is at
 // rest) are replaced and friction (what vanishes at rest) stays.
 SceneEvaluation evaluateLagrangian(const Scene& scene, const Eigen::VectorXd& q, const Eigen::VectorXd& qd, double t,
@@ -31,11 +28,11 @@ SceneEvaluation evaluateLagrangian(const Scene& scene, const Eigen::VectorXd& q,
     out.actuated = d.actuated;
     out.underactuated = d.underactuated;
     out.coordinates = d.coordinateNames;
-    if (auto bad = nonFiniteTerm(out.terms, Eigen::VectorXd(), q, qd, "at t = " + formatValue(t))) throw InputError({*bad});
+    if (auto bad = nonFiniteTerm(out.terms, Eigen::VectorXd(), q, qd, message(MessageId::WhereAtTime, t))) throw InputError({*bad});
     const ModelTerms& m = out.terms;
     Cholesky llt(n);
     if (llt.compute(m.B).info() != Eigen::Success)
-        throw InputError("q", std::string(kNotPositiveDefinite) + "the coordinates are not independent here");
+        throw InputError("q", message(MessageId::MassMatrixNotPositiveDefiniteHere, MessageId::CoordinatesNotIndependentHere));
     out.qdd = llt.solve(m.Q - m.C * qd - m.g);
     return out;
 }
@@ -53,7 +50,8 @@ SceneEvaluation evaluateScene(const Scene& scene, const Eigen::VectorXd& q, cons
             out.terms = std::move(e.terms);
             out.qdd = std::move(e.qdd);
         } catch (const SingularMassMatrix& e) {
-            throw InputError("q", std::string(kNotPositiveDefinite) + e.what());
+            throw InputError("q", message(MessageId::MassMatrixNotPositiveDefiniteHere,
+                                          message(MessageId::MassMatrixSingularAtJoint, e.joint() + 1)));  // e.what() in words
         }
         out.actuated = actuatedJoints(scene.effects, scene.dof());
         out.underactuated = static_cast<int>(out.actuated.size()) < scene.dof();
@@ -63,9 +61,9 @@ SceneEvaluation evaluateScene(const Scene& scene, const Eigen::VectorXd& q, cons
         for (int i = 0; i < scene.dof(); ++i) out.actuated.push_back(i);
         out.underactuated = false;
     }
-    if (auto bad = nonFiniteTerm(out.terms, out.qdd, q, qd, "at t = " + formatValue(t))) throw InputError({*bad});
+    if (auto bad = nonFiniteTerm(out.terms, out.qdd, q, qd, message(MessageId::WhereAtTime, t))) throw InputError({*bad});
     if (out.qdd.size() != scene.dof())  // evaluateRobot leaves qdd empty when a term is not finite
-        throw InputError("qdd", "the acceleration could not be computed at this state");
+        throw InputError("qdd", MessageId::AccelerationNotComputed);
     return out;
 }
 

@@ -16,7 +16,7 @@ SimulationInput prepareSimulation(const Scene& scene) {
         // A robot's initial terms are checked by requireValidScene; a Lagrangian's here.
         if (scene.initial.q.size() == scene.dof() && scene.initial.qd.size() == scene.dof())
             if (auto bad = nonFiniteTerm(input.lagrangian->terms(scene.initial.q, scene.initial.qd, 0.0), Eigen::VectorXd(),
-                                         scene.initial.q, scene.initial.qd, "at the initial state (t = 0)"))
+                                         scene.initial.q, scene.initial.qd, MessageId::WhereInitialState))
                 throw InputError({*bad});
     }
     return input;

@@ -1,9 +1,8 @@
 #pragma once
-// An error or warning as a reader sees it, in a language (language.hpp): "fejl:",
-// "advarsel:", "tip:", "(led 2)" and the most common messages a student meets (a negative
-// mass, an inertia no body has, a centre of mass far away, a number typed in mm, a key
-// the format does not know) in Danish; the field (robot.joints[1].mass), names and numbers
-// as they are. A message the table does not know stays English within the Danish frame.
+// An error or warning as a reader sees it, in a language (language.hpp): its frame
+// ("fejl:", "advarsel:", "tip:", "(led 2)") and its message and hint in words
+// (message_text.hpp), each from the language's catalogue; the field
+// (robot.joints[1].mass), names and numbers as they are.
 #include <string>
 
 #include "core/model/diagnostics.hpp"
@@ -11,7 +10,10 @@
 
 namespace ll::present {
 
-// Diagnostic::toString() in `language`.
-std::string diagnosticText(const Diagnostic& diagnostic, Language language);
+enum class Place { Named, Omitted };
+
+// Diagnostic::toString() in `language`: "error: robot.joints[0].mass (joint 1): ..."; with
+// Place::Omitted without the field (a tooltip on the field itself).
+std::string diagnosticText(const Diagnostic& diagnostic, Language language, Place place = Place::Named);
 
 }  // namespace ll::present

@@ -20,7 +20,7 @@ void checkFiniteAtInitialState(const Scene& scene, std::vector<Diagnostic>& out)
     if (scene.initial.q.size() != n || scene.initial.qd.size() != n) return;  // the field checks name it
     try {
         const RobotEvaluation e = evaluateRobot(scene, scene.initial.q, scene.initial.qd, 0.0);
-        if (auto bad = nonFiniteTerm(e.terms, e.qdd, scene.initial.q, scene.initial.qd, "at the initial state (t = 0)"))
+        if (auto bad = nonFiniteTerm(e.terms, e.qdd, scene.initial.q, scene.initial.qd, MessageId::WhereInitialState))
             out.push_back(*bad);
     } catch (const SingularMassMatrix&) {
         // B singular at the initial state but not at q = 0: simulate() reports it there.
@@ -50,8 +50,7 @@ std::vector<Diagnostic> validateScene(const Scene& scene) {
     }
     const std::string& integrator = scene.simulation.integrator;
     if (!findIntegrator(integrator))
-        out.push_back({Severity::Error, "simulation.integrator",
-                       "unknown integrator '" + integrator + "' (known: " + integratorNames() + ")"});
+        out.push_back({Severity::Error, "simulation.integrator", message(MessageId::UnknownIntegrator, integrator, integratorNames())});
     return out;
 }
 

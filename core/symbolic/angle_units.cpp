@@ -16,19 +16,20 @@ namespace {
 const char* const kDegreeProduct = "*deg_unit_ ";
 
 // What to write instead of a character people paste from documents.
-std::string lookAlikeHint(char32_t c) {
+Message lookAlikeHint(char32_t c) {
+    using enum MessageId;
     switch (c) {
-        case 0x2212: case 0x2013: case 0x2014: return "write - (the ASCII minus)";
-        case 0x00D7: case 0x00B7: case 0x22C5: case 0x2219: return "write * for a product";
-        case 0x00F7: case 0x2215: return "write / for a quotient";
-        case 0x03C0: return "write pi";
-        case 0x00B2: return "write ^2";
-        case 0x00B3: return "write ^3";
-        case 0x00BA: case 0x02DA: case 0x2218: return "it is not the degree sign: write ° (U+00B0) or deg";
-        case 0x00A0: case 0x2009: case 0x202F: return "write a plain space";
-        case 0x2032: return "write deg (or °) for degrees; minutes of arc are not supported";
-        case 0x00B5: case 0x03BC: return "write the value in SI units (m, kg, s, rad)";
-        default: return "expressions are ASCII: numbers, names, + - * / ^ ( ), and ° or deg in angles";
+        case 0x2212: case 0x2013: case 0x2014: return WriteAsciiMinus;
+        case 0x00D7: case 0x00B7: case 0x22C5: case 0x2219: return WriteStarForProduct;
+        case 0x00F7: case 0x2215: return WriteSlashForQuotient;
+        case 0x03C0: return WritePi;
+        case 0x00B2: return WriteSquare;
+        case 0x00B3: return WriteCube;
+        case 0x00BA: case 0x02DA: case 0x2218: return NotTheDegreeSign;
+        case 0x00A0: case 0x2009: case 0x202F: return WritePlainSpace;
+        case 0x2032: return NoMinutesOfArc;
+        case 0x00B5: case 0x03BC: return WriteSiUnits;
+        default: return ExpressionsAreAscii;
     }
 }
 
@@ -60,10 +61,10 @@ std::string shortNumber(double value) {
 
 }  // namespace
 
-std::string PreparedExpression::at(std::size_t bytePosition) const {
-    if (bytePosition == 0 || position.empty()) return "";
+Message PreparedExpression::atPosition(std::size_t bytePosition) const {
+    if (bytePosition == 0 || position.empty()) return {};
     const std::size_t index = std::min(bytePosition - 1, position.size() - 1);
-    return " at position " + std::to_string(position[index]);
+    return message(MessageId::ExpressionAtPosition, position[index]);
 }
 
 std::string PreparedExpression::quoted() const {
@@ -91,10 +92,10 @@ PreparedExpression prepareExpression(const std::string& field, const std::string
             }
             if (p.unitPosition == 0) p.unitPosition = character, p.unit = "°";
         } else {
-            const std::string what = c.valid ? "unexpected character " : "";
-            throw InputError(field, what + describeCharacter(c, text, i) + " at position " + std::to_string(character) +
-                                        " in " + p.quoted() + ": " +
-                                        (c.valid ? lookAlikeHint(c.codePoint) : "not UTF-8 (the text must be UTF-8)"));
+            const std::string shown = describeCharacter(c, text, i);
+            if (!c.valid) throw InputError(field, message(MessageId::ExpressionNotUtf8, shown, character, p.quoted()));
+            throw InputError(field,
+                             message(MessageId::UnexpectedCharacter, shown, character, p.quoted(), lookAlikeHint(c.codePoint)));
         }
         i += c.bytes;
     }
@@ -117,9 +118,9 @@ PreparedExpression prepareExpression(const std::string& field, const std::string
                 std::size_t k = e + 1 + (literal[e + 1] == '+' || literal[e + 1] == '-');
                 while (k + 1 < literal.size() && literal[k] == '0') ++k;
                 if (literal.size() - k > 3 || std::stoi(literal.substr(k)) > 400)
-                    throw InputError(field, "number " + validUtf8(literal.size() > 24 ? literal.substr(0, 24) + "…" : literal) +
-                                                " at position " + std::to_string(asciiPosition[i]) + " in " + p.quoted() +
-                                                ": its exponent is beyond what a number here can hold (about ±308)");
+                    throw InputError(field, message(MessageId::NumberExponentTooLarge,
+                                                    validUtf8(literal.size() > 24 ? literal.substr(0, 24) + "…" : literal),
+                                                    asciiPosition[i], p.quoted()));
             }
         } else if (isNameStart(c)) {
             while (i + length < ascii.size() && isNameChar(ascii[i + length])) ++length;
@@ -156,8 +157,7 @@ PreparedExpression prepareExpression(const std::string& field, const std::string
         while (nameStart < start && !isNameStart(p.text[nameStart])) ++nameStart;  // "2sin()": the name is "sin"
         if (nameStart == start) continue;  // "()" alone: GiNaC reports it
         const std::string name = p.text.substr(nameStart, start - nameStart);
-        throw InputError(field, "'" + name + "()' has no argument" + p.at(nameStart + 1) + " in " + p.quoted() +
-                                    " (write what it applies to, e.g. " + name + "(q1))");
+        throw InputError(field, message(MessageId::CallWithoutArgument, name, p.atPosition(nameStart + 1), p.quoted()));
     }
     return p;
 }

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "core/model/message.hpp"
+
 namespace ll {
 
 // An expression rewritten for GiNaC's parser, with the way back to what was typed.
@@ -25,8 +27,10 @@ struct PreparedExpression {
     std::size_t unitPosition = 0;
     std::string unit;  // "°" or "deg" as written there
 
-    // " at position N" for a 1-based byte position in `text` (0: "").
-    std::string at(std::size_t bytePosition) const;
+    // " at position N" for a 1-based byte position in `text`, N counted in characters of
+    // `original` (0: an empty message); at() is the same in English.
+    Message atPosition(std::size_t bytePosition) const;
+    std::string at(std::size_t bytePosition) const { return atPosition(bytePosition).english(); }
     // The original text in double quotes.
     std::string quoted() const;
 };

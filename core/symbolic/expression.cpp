@@ -66,39 +66,57 @@ std::size_t tokenPosition(const std::string& text, const std::string& token, std
     return at == std::string::npos ? 0 : at + 1;
 }
 
+// What GiNaC expected, in our words where we know them ("expected ')'", "expected EOF").
+Message parserExpectation(const std::string& what) {
+    using enum MessageId;
+    if (what == "expected EOF") return ParserExpectedEnd;
+    if (what == "expected ')' or ',' in argument list") return ParserExpectedArgumentListEnd;
+    if (what.rfind("expected '", 0) == 0) return message(ParserExpected, what.substr(9));
+    return literal(what);  // GiNaC's own words
+}
+
+// GiNaC's reason, "<what>, got: <token>" with the token quoted or EOF, in our words:
+// "unexpected \"/\"", "expected ')', got end of expression".
+Message parseErrorDetail(const std::string& reason) {
+    using enum MessageId;
+    const std::size_t got = reason.find(", got: ");
+    if (got == std::string::npos) return literal(reason);
+    const std::string what = reason.substr(0, got);
+    const std::string token = reason.substr(got + 7);
+    if (what == "unexpected token") return token == "EOF" ? Message(ParserUnexpectedEnd) : message(ParserUnexpectedToken, token);
+    return message(ParserExpectedGot, parserExpectation(what), token == "EOF" ? Message(ParserEndOfExpression) : literal(token));
+}
+
 // Positions are found in the text GiNaC read (source.text) and reported in characters
 // of what the user typed (source.original).
-std::string describeParseError(const PreparedExpression& source, const std::string& what, std::streamoff consumed) {
+Message describeParseError(const PreparedExpression& source, const std::string& what, std::streamoff consumed) {
+    using enum MessageId;
     const std::string reason = parseErrorReason(what);
     if (reason.rfind("no function \"", 0) == 0) {
         const std::string name = reason.substr(13, reason.find('"', 13) - 13);
-        return "unknown function '" + name + "'" + source.at(identifierPosition(source.text, name)) + " in " +
-               source.quoted() + " (or wrong number of arguments)";
+        return message(ExpressionUnknownFunction, name, source.atPosition(identifierPosition(source.text, name)), source.quoted());
     }
     const std::string token = offendingToken(reason);
-    std::string detail = reason;
-    if (detail.rfind("unexpected token, got: ", 0) == 0) detail = "unexpected " + detail.substr(23);
-    for (std::size_t at; (at = detail.find("got: ")) != std::string::npos;) detail.replace(at, 5, "got ");
-    for (std::size_t at; (at = detail.find("EOF")) != std::string::npos;) detail.replace(at, 3, "end of expression");
-    const std::string where =
-        token.empty() ? " at the end of" : source.at(tokenPosition(source.text, token, consumed)) + " in";
-    return "syntax error" + where + " " + source.quoted() + ": " + detail;
+    if (token.empty()) return message(ExpressionSyntaxErrorAtEnd, source.quoted(), parseErrorDetail(reason));
+    return message(ExpressionSyntaxError, source.atPosition(tokenPosition(source.text, token, consumed)), source.quoted(),
+                   parseErrorDetail(reason));
 }
 
-std::string describeUnknownSymbol(const PreparedExpression& source, const std::string& what,
-                                  const std::vector<std::string>& known) {
+Message describeUnknownSymbol(const PreparedExpression& source, const std::string& what,
+                              const std::vector<std::string>& known) {
+    using enum MessageId;
     // find_or_insert_symbol: symbol "l3" not found
     const std::size_t open = what.find('"');
     const std::size_t close = open == std::string::npos ? open : what.find('"', open + 1);
-    if (close == std::string::npos) return "cannot parse " + source.quoted() + ": " + what;
+    if (close == std::string::npos) return message(ExpressionCannotParse, source.quoted(), what);
     const std::string name = what.substr(open + 1, close - open - 1);
     std::string knownList;
     const std::size_t shown = std::min<std::size_t>(known.size(), 12);  // a long list would bury the message
     for (std::size_t i = 0; i < shown; ++i) knownList += known[i] + ", ";
     if (shown < known.size()) knownList += "..., ";
     knownList += "pi";
-    return "unknown symbol '" + name + "'" + source.at(identifierPosition(source.text, name)) + " in " +
-           source.quoted() + " (known: " + knownList + ")";
+    return message(ExpressionUnknownSymbol, name, source.atPosition(identifierPosition(source.text, name)), source.quoted(),
+                   knownList);
 }
 
 // Index just past the ')' that closes the '(' at `open`, or npos.
@@ -204,6 +222,7 @@ constexpr std::size_t kLargestOperands = 100000;
 
 void checkPowers(const std::string& field, const PreparedExpression& source, const GiNaC::symtab& symbols,
                  const GiNaC::lst& values) {
+    using enum MessageId;
     const std::string& text = source.text;
     struct Power {
         std::size_t at, baseBegin, baseEnd, begin, end;  // the '^' or the call's name; base; exponent
@@ -238,9 +257,7 @@ void checkPowers(const std::string& field, const PreparedExpression& source, con
     std::size_t operands = 0;
     for (const Power& x : powers) operands += (x.end - x.begin) + (x.baseEnd - x.baseBegin);
     if (operands > kLargestOperands)
-        throw InputError(field, "the powers in " + source.quoted() + " are nested too deeply to check (their bases and "
-                                    "exponents add up to " + std::to_string(operands) + " characters; at most " +
-                                    std::to_string(kLargestOperands) + ")");
+        throw InputError(field, message(PowersNestedTooDeeply, source.quoted(), operands, kLargestOperands));
     // The value of a piece of the text alone, or nothing when it does not read alone (the
     // whole parse reports that) or is not a real number.
     const auto valueOf = [&](std::size_t begin, std::size_t end, bool exact) -> std::optional<GiNaC::numeric> {
@@ -264,18 +281,15 @@ void checkPowers(const std::string& field, const PreparedExpression& source, con
         const std::optional<GiNaC::numeric> exponent = valueOf(x.begin, x.end, false);
         if (!exponent) continue;
         const double e = exponent->to_double();  // inf when beyond a double
-        const std::string where = std::string(text[x.at] == '^' ? "after the '^'" : "of the 'pow'") + source.at(x.at + 1) +
-                                  " in " + source.quoted();
-        if (!(std::abs(e) <= kLargestExponent))
-            throw InputError(field, "exponent " + shown(e) + " " + where + " is beyond ±1000 (GiNaC computes powers exactly "
-                                    "and would not finish)");
+        const Message where = message(text[x.at] == '^' ? PowerAfterCaret : PowerOfPowCall, source.atPosition(x.at + 1),
+                                      source.quoted());
+        if (!(std::abs(e) <= kLargestExponent)) throw InputError(field, message(PowerExponentTooLarge, shown(e), where));
         const std::optional<GiNaC::numeric> base = valueOf(x.baseBegin, x.baseEnd, true);
         if (!base || !base->is_rational()) continue;  // a float (a parameter's value) is raised in floating point
         const double bits = std::max(base->numer().int_length(), base->denom().int_length());
         const double digits = std::abs(e) * bits * std::log10(2.0);
         if (digits > kLargestDigits)
-            throw InputError(field, "the power " + where + " would be an exact number of about " + shown(digits) +
-                                    " digits (more than 10000 are refused: it would not finish)");
+            throw InputError(field, message(PowerTooManyDigits, where, shown(digits)));
     }
 }
 
@@ -320,8 +334,7 @@ void checkReal(const std::string& field, const PreparedExpression& source, const
             shown << e;
             std::string value = shown.str();
             if (value.size() > 60) value = value.substr(0, 60) + "…";
-            throw InputError(field, "value is not a real number (" + value + ") in " + source.quoted() +
-                                        " (I is the imaginary unit; quantities here are real)");
+            throw InputError(field, message(MessageId::ExpressionImaginaryValue, value, source.quoted()));
         }
 }
 
@@ -332,8 +345,7 @@ void checkExpansion(const std::string& field, const PreparedExpression& source, 
     std::ostringstream shown;
     shown.precision(3);
     shown << largest;
-    throw InputError(field, source.quoted() + " would expand to about " + shown.str() +
-                                " terms (more than 10000 are refused: the derivation expands it and would not finish)");
+    throw InputError(field, message(MessageId::ExpressionExpandsTooFar, source.quoted(), shown.str()));
 }
 
 // The functions an expression may call: those the simulation compiles
@@ -369,21 +381,22 @@ void checkFunctions(const std::string& field, const PreparedExpression& source) 
         const std::string name = text.substr(i, end - i);
         const std::size_t next = text.find_first_not_of(" \t\n", end);
         if (next != std::string::npos && text[next] == '(' && known.count(name) && !availableFunctions().count(name))
-            throw InputError(field, "function '" + name + "'" + source.at(i + 1) + " in " + source.quoted() +
-                                        " is not available (available: sin, cos, tan, exp, log, sqrt, sinh, cosh, tanh, "
-                                        "asin, acos, atan, atan2, abs, step, csgn, pow)");
+            throw InputError(field,
+                             message(MessageId::ExpressionFunctionNotAvailable, name, source.atPosition(i + 1), source.quoted()));
         i = end;
     }
 }
 
-std::string divisorNote(const PreparedExpression& source, std::size_t position) {
-    return position == 0 ? "" : " (the divisor after the '/'" + source.at(position) + " is zero)";
+// "division by zero in <quoted>", naming the '/' whose divisor is zero (0: not found).
+Message divisionByZero(const PreparedExpression& source, std::size_t divisor) {
+    using enum MessageId;
+    const Message note = divisor == 0 ? Message() : message(ExpressionZeroDivisor, source.atPosition(divisor));
+    return message(ExpressionDivisionByZero, source.quoted(), note);
 }
 
-std::string describePole(const PreparedExpression& source, const std::string& what, std::size_t divisor = 0) {
-    if (what.find("division by zero") != std::string::npos)
-        return "division by zero in " + source.quoted() + divisorNote(source, divisor);
-    return "singular value in " + source.quoted() + " (" + what + ")";
+Message describePole(const PreparedExpression& source, const std::string& what, std::size_t divisor = 0) {
+    if (what.find("division by zero") != std::string::npos) return divisionByZero(source, divisor);
+    return message(MessageId::ExpressionSingularValue, source.quoted(), what);
 }
 
 // The constants every expression may use: pi, and deg = π/180 for angles (unless a
@@ -407,20 +420,19 @@ const std::set<std::string>& reservedWords() {
 
 }  // namespace
 
-std::optional<std::string> ParameterTable::whyNotAName(const std::string& name) {
+std::optional<Message> ParameterTable::whyNotAName(const std::string& name) {
+    using enum MessageId;
     static const std::regex identifier("[A-Za-z][A-Za-z0-9_]*");
     static const std::regex jointVariable("q(d|dd)?[0-9]+");
-    if (!std::regex_match(name, identifier))
-        return "'" + name + "' is not a name (a letter, then letters, digits or _)";
-    if (std::regex_match(name, jointVariable))
-        return "'" + name + "' is reserved for a joint coordinate (q1, qd1, qdd1, ...)";
-    if (reservedWords().count(name)) return "'" + name + "' is reserved (a constant, time t or a function name)";
+    if (!std::regex_match(name, identifier)) return message(NotAName, name);
+    if (std::regex_match(name, jointVariable)) return message(NameReservedForJointCoordinate, name);
+    if (reservedWords().count(name)) return message(NameReserved, name);
     return std::nullopt;
 }
 
 void ParameterTable::add(const std::string& field, const std::string& name, double value, GiNaC::ex definition) {
     if (auto why = whyNotAName(name)) throw InputError(field, *why);
-    if (contains(name)) throw InputError(field, "parameter '" + name + "' is defined twice");
+    if (contains(name)) throw InputError(field, message(MessageId::ParameterDefinedTwice, name));
     // Finite and not subnormal: GiNaC::numeric cannot hold inf, NaN or a subnormal double.
     if (auto why = unusableNumber(value)) throw InputError(field, *why);
     Parameter parameter{GiNaC::symbol(name), value, definition};
@@ -456,8 +468,8 @@ GiNaC::ex ParameterTable::parse(const std::string& field, const std::string& tex
 
 GiNaC::ex ParameterTable::parse(const std::string& field, const PreparedExpression& source,
                                 const std::vector<GiNaC::symbol>& extra, bool checkValues) const {
-    if (source.text.find_first_not_of(" \t\n") == std::string::npos)
-        throw InputError(field, "empty expression (expected a number or an expression of the parameters)");
+    using enum MessageId;
+    if (source.text.find_first_not_of(" \t\n") == std::string::npos) throw InputError(field, ExpressionEmpty);
     GiNaC::symtab symbols = symbols_;
     std::vector<std::string> known;
     for (const GiNaC::symbol& s : extra) {
@@ -484,61 +496,56 @@ GiNaC::ex ParameterTable::parse(const std::string& field, const PreparedExpressi
     } catch (const GiNaC::pole_error& e) {
         throw InputError(field, describePole(source, e.what(), zeroDivisorPosition(source.text, symbols, values())));
     } catch (const cln::division_by_0_exception&) {
-        throw InputError(field, "division by zero in " + source.quoted() +
-                                    divisorNote(source, zeroDivisorPosition(source.text, symbols, values())));
+        throw InputError(field, divisionByZero(source, zeroDivisorPosition(source.text, symbols, values())));
     } catch (const cln::read_number_exception&) {
-        throw InputError(field, "syntax error in " + source.quoted() + ": malformed number");
+        throw InputError(field, message(ExpressionSyntaxError, Message(), source.quoted(), ExpressionMalformedNumber));
     } catch (const std::invalid_argument& e) {
         const std::string what = e.what();
         if (what.find("find_or_insert_symbol") != std::string::npos)  // strict mode refused a name
             throw InputError(field, describeUnknownSymbol(source, what, known));
-        throw InputError(field, "cannot parse " + source.quoted() + ": " + what);
+        throw InputError(field, message(ExpressionCannotParse, source.quoted(), what));
     } catch (const std::exception& e) {
-        throw InputError(field, "cannot parse " + source.quoted() + ": " + e.what());
+        throw InputError(field, message(ExpressionCannotParse, source.quoted(), e.what()));
     }
 }
 
 double ParameterTable::evaluate(const std::string& field, const std::string& text, AngleUnits units) const {
     const PreparedExpression source = prepare(field, text);
-    if (units == AngleUnits::Refused && source.unitPosition != 0)
-        throw InputError(field,
-                         "'" + source.unit + (source.unit == "deg" ? "'" : "' (U+00B0)") + " at position " +
-                             std::to_string(source.unitPosition) + " in " + source.quoted() +
-                             ": degrees are for angle fields; write this value in SI units",
-                         "angle fields are alpha, theta, the base's rpy, a revolute joint's initial q and spring rest, "
-                         "a torque's phase");
+    if (units == AngleUnits::Refused && source.unitPosition != 0) {
+        const std::string unit = "'" + source.unit + (source.unit == "deg" ? "'" : "' (U+00B0)");
+        throw InputError(field, message(MessageId::DegreesOutsideAngleField, unit, source.unitPosition, source.quoted()),
+                         MessageId::AngleFieldsAre);
+    }
     return toNumber(field, source, parse(field, source, {}, false));
 }
 
 namespace {
 
-std::string tooSmall(const PreparedExpression& source) {
-    return "a value in " + source.quoted() +
-           " is too close to zero for double precision (underflow, below 2.2e-308): write 0 for zero, else check the exponent";
-}
+Message tooSmall(const PreparedExpression& source) { return message(MessageId::ExpressionUnderflow, source.quoted()); }
 
 }  // namespace
 
 double ParameterTable::toNumber(const std::string& field, const PreparedExpression& source,
                                 const GiNaC::ex& expression) const {
+    using enum MessageId;
     // Parameter values enter as doubles, so CLN computes in doubles and signals
     // overflow, underflow and 1/0 with exceptions of its own.
     try {
         const GiNaC::ex result = expression.subs(values()).evalf();
         if (!GiNaC::is_a<GiNaC::numeric>(result))
-            throw InputError(field, source.quoted() + " does not evaluate to a number");
+            throw InputError(field, message(ExpressionNotANumber, source.quoted()));
         const GiNaC::numeric& number = GiNaC::ex_to<GiNaC::numeric>(result);
         if (!number.is_real()) {
             std::ostringstream shown;
             shown << result;
-            throw InputError(field, "value is not a real number (" + shown.str() + ") in " + source.quoted());
+            throw InputError(field, message(ExpressionNotReal, shown.str(), source.quoted()));
         }
         // Exact numbers beyond the double range would make to_double throw; floats give inf.
         if (GiNaC::abs(number) > GiNaC::numeric(std::numeric_limits<double>::max()))
-            throw InputError(field, std::string("value is not finite (") + (number.is_negative() ? "-inf" : "inf") +
-                                        ") in " + source.quoted());
+            throw InputError(field, message(ProblemInExpression, message(ValueNotFinite, number.is_negative() ? "-inf" : "inf"),
+                                            source.quoted()));
         const double value = number.to_double();
-        if (auto why = unusableNumber(value)) throw InputError(field, *why + " in " + source.quoted());
+        if (auto why = unusableNumber(value)) throw InputError(field, message(ProblemInExpression, *why, source.quoted()));
         // A typed number below the normal range is refused (CLN reads "1e-310" exactly, to_double
         // gives 0); a computed one underflows to 0 as in C++ ("tiny*tiny").
         if (value == 0.0 && !number.is_zero() && GiNaC::is_a<GiNaC::numeric>(expression))
@@ -549,14 +556,13 @@ double ParameterTable::toNumber(const std::string& field, const PreparedExpressi
     } catch (const GiNaC::pole_error& e) {
         throw InputError(field, describePole(source, e.what(), zeroDivisorPosition(source.text, withConstants(symbols_), values())));
     } catch (const cln::division_by_0_exception&) {
-        throw InputError(field, "division by zero in " + source.quoted() +
-                                    divisorNote(source, zeroDivisorPosition(source.text, withConstants(symbols_), values())));
+        throw InputError(field, divisionByZero(source, zeroDivisorPosition(source.text, withConstants(symbols_), values())));
     } catch (const cln::floating_point_overflow_exception&) {
-        throw InputError(field, "value is not finite (overflow) in " + source.quoted());
+        throw InputError(field, message(ExpressionOverflow, source.quoted()));
     } catch (const cln::floating_point_underflow_exception&) {
         throw InputError(field, tooSmall(source));
     } catch (const std::exception& e) {
-        throw InputError(field, "cannot evaluate " + source.quoted() + ": " + e.what());
+        throw InputError(field, message(ExpressionCannotEvaluate, source.quoted(), e.what()));
     }
 }
 

@@ -12,6 +12,7 @@
 #include <ginac/ginac.h>
 
 #include "core/symbolic/angle_units.hpp"
+#include "core/model/message.hpp"
 #include "core/model/scene.hpp"
 
 namespace ll {
@@ -55,7 +56,7 @@ public:
     // Why `name` cannot name a parameter, or nothing if it can. Reserved: pi, Pi, I,
     // Euler, Catalan, t, q<i>, qd<i>, qdd<i> (joint coordinates in derivations) and
     // the names of GiNaC's functions (sin, cos, sqrt, ...).
-    static std::optional<std::string> whyNotAName(const std::string& name);
+    static std::optional<Message> whyNotAName(const std::string& name);
 
 private:
     struct Parameter {

@@ -92,13 +92,11 @@ public:
           values_(exactValues(table_)) {
         const std::vector<Diagnostic> names = checkCoordinateNames(spec_.coordinates, table_);
         if (!names.empty()) throw InputError(names);
-        if (n_ == 0) throw InputError("lagrangian.coordinates", "a Lagrangian system needs at least one coordinate");
+        if (n_ == 0) throw InputError("lagrangian.coordinates", MessageId::LagrangianNeedsCoordinate);
         if (scene.effects.gravity || !scene.effects.springs.empty())
-            throw InputError(scene.effects.gravity ? "effects.gravity" : "effects.springs",
-                             "a Lagrangian system takes gravity and springs in its potential: write them in "
-                             "lagrangian.potential");
+            throw InputError(scene.effects.gravity ? "effects.gravity" : "effects.springs", MessageId::LagrangianGravityInPotential);
         if (!spec_.forces.empty() && static_cast<int>(spec_.forces.size()) != n_)
-            throw InputError("lagrangian.forces", "needs one entry per coordinate (" + std::to_string(n_) + ") or none");
+            throw InputError("lagrangian.forces", message(MessageId::ForcesOneEntryPerCoordinate, n_));
         s_ = lagrangianSymbols(spec_.coordinates);
     }
 
@@ -170,28 +168,23 @@ private:
         ex integrand = 0;
         for (int j : conservative) integrand -= forces(j, 0).subs(scaled) * s_.q[j];
         integrand = integrand.expand();
-        std::string potential;
+        Message potential;  // " (Q = -dV/dq with V = ...)", or nothing
         if (integrand.is_polynomial(s)) {
             ex V = 0;
             for (int k = integrand.ldegree(s); k <= integrand.degree(s); ++k)
                 V += integrand.coeff(s, k) / (k + 1);
-            potential = str(V.normal()).insert(0, 1, ' ');  // not " " + …: GCC 12's -Wrestrict misreads it
+            potential = message(MessageId::ConservativeForcePotential, str(V.normal()));
         }
         std::vector<Diagnostic> errors;
         for (int i : conservative)
-            errors.push_back(
-                {Severity::Error, lagrangianForceField(i),
-                 "Q_" + std::to_string(i + 1) + " = " + spec_.forces[i] +
-                     " depends on the coordinates only and dQ/dq is symmetric: it is the gradient of a potential" +
-                     (potential.empty() ? "" : " (Q = -dV/dq with V =" + potential + ")") +
-                     ", a conservative force. Write its potential in lagrangian.potential and remove it from the "
-                     "forces: Q holds only non-conservative forces (inputs, friction), otherwise a force is "
-                     "modelled twice"});
+            errors.push_back({Severity::Error, lagrangianForceField(i),
+                              message(MessageId::ConservativeForce, i + 1, spec_.forces[i], potential)});
         return errors;
     }
 
     // E_kin must be ½ q̇ᵀ B(q) q̇ exactly, with b_ij = ∂²E_kin/∂q̇_i∂q̇_j free of q̇.
     std::optional<Diagnostic> kineticEnergyError() const {
+        using enum MessageId;
         const ex& Ekin = written_.Ekin;
         ex quadratic = 0;
         for (int i = 0; i < n_; ++i)
@@ -200,21 +193,16 @@ private:
                 for (const GiNaC::symbol& v : s_.qd)
                     if (b.has(v))
                         return Diagnostic{Severity::Error, "lagrangian.kinetic",
-                                          "E_kin = " + spec_.kinetic + " is not quadratic in the velocities: d^2 E_kin/(d" +
-                                              s_.qd[i].get_name() + " d" + s_.qd[j].get_name() + ") still depends on " +
-                                              v.get_name() +
-                                              " (terms of degree 3 or more in the velocities, or a non-polynomial "
-                                              "function of them); E_kin must be 1/2 qd^T B(q) qd"};
+                                          message(KineticNotQuadratic, spec_.kinetic, s_.qd[i].get_name(), s_.qd[j].get_name(),
+                                                  v.get_name())};
                 quadratic += GiNaC::numeric(1, 2) * b * s_.qd[i] * s_.qd[j];
             }
         const ex rest = simplified(Ekin - quadratic).normal();
         if (rest.is_zero()) return std::nullopt;
         std::string left = str(rest);
         if (left.size() > 60) left = left.substr(0, 57) + "...";
-        return Diagnostic{Severity::Error, "lagrangian.kinetic",
-                          "E_kin is not a quadratic form 1/2 qd^T B(q) qd in the velocities: " + left + " is left over",
-                          "E_kin = " + spec_.kinetic + "; terms free of the velocities or linear in them are left over: "
-                          "E_kin must vanish at rest and grow as the square of the speed"};
+        return Diagnostic{Severity::Error, "lagrangian.kinetic", message(KineticNotQuadraticForm, left),
+                          message(KineticLeftOverHint, spec_.kinetic)};
     }
 
     void addStep(int number, std::string title, std::string text, std::string latex, std::vector<DerivationItem> items) {
@@ -260,6 +248,7 @@ private:
     // B(q0) must be positive definite: otherwise some motion of the coordinates moves no
     // mass, i.e. they are not independent (x and 2x) or not minimal.
     void checkPositiveDefinite() {
+        using enum MessageId;
         GiNaC::exmap at = values_;
         Eigen::VectorXd q0 = Eigen::VectorXd::Zero(n_);
         if (scene_.initial.q.size() == n_) q0 = scene_.initial.q;
@@ -274,17 +263,14 @@ private:
                 try {
                     value = d_.B(i, j).subs(at).evalf();
                 } catch (const std::exception& e) {
-                    throw InputError("lagrangian.kinetic", "the mass matrix B(q) = d^2 E_kin/dqd^2 cannot be evaluated "
-                                                           "at the initial state " + where + ": " + e.what());
+                    throw InputError("lagrangian.kinetic", message(InitialMassMatrixNotEvaluable, where, e.what()));
                 }
                 if (!GiNaC::is_a<GiNaC::numeric>(value) || !GiNaC::ex_to<GiNaC::numeric>(value).is_real())
-                    throw InputError("lagrangian.kinetic", "b" + std::to_string(i + 1) + std::to_string(j + 1) + " = " +
-                                                               str(d_.B(i, j)) + " is not a real number at the initial state " +
-                                                               where);
+                    throw InputError("lagrangian.kinetic", message(InitialMassEntryNotReal, i + 1, j + 1, str(d_.B(i, j)), where));
                 B0(i, j) = GiNaC::ex_to<GiNaC::numeric>(value).to_double();
             }
         if (!B0.allFinite())
-            throw InputError("lagrangian.kinetic", "the mass matrix B(q) is not finite at the initial state " + where);
+            throw InputError("lagrangian.kinetic", message(InitialMassMatrixNotFinite, where));
         const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(B0);
         const Eigen::VectorXd& lambda = eigen.eigenvalues();
         const double scale = lambda.cwiseAbs().maxCoeff();
@@ -303,14 +289,9 @@ private:
         velocities += ")";
         values += ")";
         const bool negative = lambda[0] < -1e-12 * scale;
-        throw InputError("lagrangian.coordinates",
-                         "the mass matrix B = d^2 E_kin/dqd^2 is not positive definite at the initial state " + where,
-                         "eigenvalues " + eigenvalues + ": " +
-                             (negative ? "the velocities " + velocities + " = " + values +
-                                             " * s give negative kinetic energy (a negative mass or inertia?)"
-                                       : "the coordinates are not independent or not minimal: the velocities " +
-                                             velocities + " = " + values + " * s move no mass (E_kin = 0). Choose "
-                                             "a minimal set of independent coordinates"));
+        throw InputError("lagrangian.coordinates", message(InitialMassMatrixNotPositiveDefinite, where),
+                         message(MassMatrixEigenvalues, eigenvalues,
+                                 message(negative ? VelocitiesGiveNegativeEnergy : VelocitiesMoveNoMass, velocities, values)));
     }
 
     void stepEquations() {
@@ -378,8 +359,7 @@ private:
             try {
                 atRest = forces_(i, 0).subs(rest);
             } catch (const GiNaC::pole_error&) {  // -0.1/theta1_dot: no force is infinite at rest
-                throw InputError(lagrangianForceField(i), "the force is infinite at rest (every velocity 0): '" + spec_.forces[i] +
-                                                              "'; a generalized force must be finite there");
+                throw InputError(lagrangianForceField(i), message(MessageId::ForceInfiniteAtRest, spec_.forces[i]));
             }
             if (!isZero(atRest)) d_.actuated.push_back(i);
         }

@@ -21,9 +21,10 @@ std::size_t wordPosition(const std::string& text, const std::string& name) {
     return 0;
 }
 
-std::string at(const std::string& text, const std::string& name) {
+// " at position N" of `name` in `text`, or an empty message.
+Message at(const std::string& text, const std::string& name) {
     const std::size_t position = wordPosition(text, name);
-    return position == 0 ? "" : " at position " + std::to_string(position);
+    return position == 0 ? Message() : message(MessageId::ExpressionAtPosition, position);
 }
 
 // The first of `symbols` that e depends on, or nullptr.
@@ -45,23 +46,20 @@ LagrangianSymbols lagrangianSymbols(const std::vector<std::string>& coordinates)
     return s;
 }
 
-std::optional<std::string> whyNotACoordinateName(const std::string& name, const std::vector<std::string>& taken) {
+std::optional<Message> whyNotACoordinateName(const std::string& name, const std::vector<std::string>& taken) {
+    using enum MessageId;
     static const std::regex identifier("[A-Za-z][A-Za-z0-9_]*");
     static const std::regex robotCoordinate("q[0-9]+");  // q1, q2 name coordinates here too
-    if (!std::regex_match(name, identifier))
-        return "'" + name + "' is not a name (a letter, then letters, digits or _)";
+    if (!std::regex_match(name, identifier)) return message(NotAName, name);
     const auto endsWith = [&](const std::string& suffix) {
         return name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
     };
-    if (endsWith("_dot") || endsWith("_ddot"))
-        return "'" + name + "' ends in _dot or _ddot, which mark velocities and accelerations";
+    if (endsWith("_dot") || endsWith("_ddot")) return message(CoordinateNameEndsInDot, name);
     if (!std::regex_match(name, robotCoordinate))
         if (auto why = ParameterTable::whyNotAName(name)) return why;
     const std::string velocity = name + "_dot";
-    if (std::find(taken.begin(), taken.end(), name) != taken.end())
-        return "'" + name + "' is already taken (by a parameter, or an earlier coordinate or its velocity)";
-    if (std::find(taken.begin(), taken.end(), velocity) != taken.end())
-        return "the velocity of '" + name + "' would be '" + velocity + "', which is already taken";
+    if (std::find(taken.begin(), taken.end(), name) != taken.end()) return message(CoordinateNameTaken, name);
+    if (std::find(taken.begin(), taken.end(), velocity) != taken.end()) return message(VelocityNameTaken, name, velocity);
     return std::nullopt;
 }
 
@@ -88,19 +86,13 @@ GiNaC::ex parseLagrangianField(const ParameterTable& parameters, const Lagrangia
     const bool velocities = kind == LagrangianField::Kinetic || kind == LagrangianField::Force;
     const bool time = kind == LagrangianField::Force || kind == LagrangianField::Pose;
     if (!velocities)
-        if (const GiNaC::symbol* v = firstUsed(e, symbols.qd)) {
-            if (kind == LagrangianField::Potential)
-                throw InputError(field, "the potential energy depends on the velocity '" + v->get_name() + "'" +
-                                            at(text, v->get_name()) + " in \"" + text +
-                                            "\": E_pot may depend on the coordinates only (velocity-dependent "
-                                            "forces such as friction go in \"forces\", kinetic terms in \"kinetic\")");
-            throw InputError(field, "a pose may depend on the coordinates and t only, not on the velocity '" +
-                                        v->get_name() + "'" + at(text, v->get_name()) + " in \"" + text + "\"");
-        }
+        if (const GiNaC::symbol* v = firstUsed(e, symbols.qd))
+            throw InputError(field, message(kind == LagrangianField::Potential ? MessageId::PotentialDependsOnVelocity
+                                                                               : MessageId::PoseDependsOnVelocity,
+                                            v->get_name(), at(text, v->get_name()), text));
     if (!time && e.has(symbols.t))
-        throw InputError(field, std::string(kind == LagrangianField::Kinetic ? "E_kin" : "E_pot") +
-                                    " may not depend on time: 't'" + at(text, "t") + " in \"" + text +
-                                    "\" (a time-dependent input goes in \"forces\" or effects.torques)");
+        throw InputError(field, message(MessageId::EnergyDependsOnTime, kind == LagrangianField::Kinetic ? "E_kin" : "E_pot",
+                                        at(text, "t"), text));
     return e;
 }
 

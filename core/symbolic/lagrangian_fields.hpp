@@ -37,7 +37,7 @@ enum class LagrangianField {
 
 // Why `name` cannot name a coordinate, or nothing. `taken` are the names already in
 // use (parameters, earlier coordinates and their velocities).
-std::optional<std::string> whyNotACoordinateName(const std::string& name, const std::vector<std::string>& taken);
+std::optional<Message> whyNotACoordinateName(const std::string& name, const std::vector<std::string>& taken);
 
 // Errors in the coordinate names (field "lagrangian.coordinates[i]"): not identifiers,
 // reserved, repeated, a parameter's name, or a velocity name <name>_dot that is taken.

@@ -131,9 +131,8 @@ void refuseShorthandParameterNames(const Scene& scene) {
         std::string angle;
         for (int k : trig->indices) angle += (angle.empty() ? "q" : " + q") + std::to_string(k);
         angle = trig->indices.size() > 1 ? "(" + angle + ")" : " " + angle;
-        throw InputError("parameters." + name, "'" + name + "' is the derivation's shorthand for " +
-                                                   (trig->kind == 'c' ? "cos" : "sin") + angle +
-                                                   "; rename the parameter");
+        throw InputError("parameters." + name,
+                         message(MessageId::ParameterIsTrigShorthand, name, (trig->kind == 'c' ? "cos" : "sin") + angle));
     }
 }
 

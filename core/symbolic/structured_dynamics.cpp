@@ -172,9 +172,7 @@ void refuseGeneratedNameClashes(const Scene& scene, const NamedDefinitions& tabl
     for (const auto& [name, value] : scene.parameters) parameters.insert(name);
     for (const NamedDefinition& d : table.entries())
         if (parameters.count(d.name))
-            throw InputError("parameters." + d.name,
-                             "'" + d.name + "' is also a name the structured form gives to a quantity it derives (" +
-                                 d.meaning + "); rename the parameter");
+            throw InputError("parameters." + d.name, message(MessageId::ParameterIsGeneratedName, d.name, d.meaning));
 }
 
 }  // namespace

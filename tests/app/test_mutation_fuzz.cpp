@@ -59,10 +59,10 @@ std::string badDiagnostics(const std::vector<Diagnostic>& diagnostics) {
         std::string line = text.substr(0, text.find('\n'));
         if (const std::size_t file = line.find(".json: "); file != std::string::npos) line = "error: " + line.substr(file + 7);
         if (d.field.empty()) return "a message names no field: " + text;
-        if (d.message.empty()) return "an empty message for " + d.field;
-        if (d.message.find('\n') != std::string::npos || d.hint.find('\n') != std::string::npos) return "a message of several lines: " + text;
+        if (d.message.english().empty()) return "an empty message for " + d.field;
+        if (d.message.english().find('\n') != std::string::npos || d.hint.english().find('\n') != std::string::npos) return "a message of several lines: " + text;
         if (line.size() > 200) return "a first line of " + std::to_string(line.size()) + " bytes: " + line;
-        if (d.hint.size() > 700) return "a hint of " + std::to_string(d.hint.size()) + " bytes: " + d.hint.substr(0, 200);
+        if (d.hint.english().size() > 700) return "a hint of " + std::to_string(d.hint.english().size()) + " bytes: " + d.hint.english().substr(0, 200);
         if (!isValidUtf8(text)) return "a message that is not UTF-8";
     }
     return "";

@@ -63,7 +63,7 @@ std::string errorOf(Call call) {
     try {
         call();
     } catch (const InputError& e) {
-        return e.diagnostics().front().field + ": " + e.diagnostics().front().message;
+        return e.diagnostics().front().field + ": " + e.diagnostics().front().message.english();
     }
     return "";
 }
@@ -110,17 +110,17 @@ private slots:
         QCOMPARE(loaded.scene.robot.joints[0].dh.alpha, 90.0);  // loaded as given
         std::string warning;
         for (const Diagnostic& d : loaded.warnings)
-            if (contains(d.field, "robot.joints[0].alpha")) warning = d.message;
+            if (contains(d.field, "robot.joints[0].alpha")) warning = d.message.english();
         QVERIFY2(contains(warning, "alpha 90 rad — did you mean 90°? write 90° or pi/2"), warning.c_str());
         // An expression, degrees or a small number do not warn; neither does the second
         // joint's initial angle of 0.5 rad.
         for (const Json& alpha : {Json("4*pi"), Json("90°"), Json(1.5708)}) {
             const LoadedScene quiet = loadJson(pumaWith(alpha, 0.5));
-            for (const Diagnostic& d : quiet.warnings) QVERIFY2(!contains(d.message, "did you mean"), d.toString().c_str());
+            for (const Diagnostic& d : quiet.warnings) QVERIFY2(!contains(d.message.english(), "did you mean"), d.toString().c_str());
         }
         const LoadedScene q = loadJson(pumaWith("pi/2", 45));
         bool warnedQ = false;
-        for (const Diagnostic& d : q.warnings) warnedQ |= contains(d.field, "initial.q[1]") && contains(d.message, "pi/4");
+        for (const Diagnostic& d : q.warnings) warnedQ |= contains(d.field, "initial.q[1]") && contains(d.message.english(), "pi/4");
         QVERIFY(warnedQ);
     }
 

@@ -24,7 +24,7 @@ std::string errorOf(Call call, bool& thrown, std::string& field) {
         thrown = true;
         if (e.diagnostics().size() != 1) return "expected one diagnostic";
         field = e.diagnostics().front().field;
-        return e.diagnostics().front().message;
+        return e.diagnostics().front().message.english();
     }
     return {};
 }

@@ -85,7 +85,7 @@ private slots:
             (void)ll::parseScene(text.str());
         } catch (const ll::InputError& e) {
             for (const ll::Diagnostic& d : e.diagnostics()) {
-                QVERIFY2(!d.field.empty(), d.message.c_str());
+                QVERIFY2(!d.field.empty(), d.message.english().c_str());
                 fields << QString::fromStdString(d.field);
             }
         }

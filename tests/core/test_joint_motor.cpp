@@ -53,7 +53,7 @@ std::string firstError(const std::string& json) {
     try {
         requireValidScene(parseScene(json));
     } catch (const InputError& e) {
-        return e.diagnostics().front().field + ": " + e.diagnostics().front().message;
+        return e.diagnostics().front().field + ": " + e.diagnostics().front().message.english();
     }
     return "";
 }

@@ -172,8 +172,8 @@ private slots:
         } catch (const InputError& e) {
             QCOMPARE(e.diagnostics().size(), std::size_t(1));
             QCOMPARE(QString::fromStdString(e.diagnostics()[0].field), "parameters." + to);
-            QVERIFY2(QString::fromStdString(e.diagnostics()[0].message).contains(meaning),
-                     e.diagnostics()[0].message.c_str());
+            QVERIFY2(QString::fromStdString(e.diagnostics()[0].message.english()).contains(meaning),
+                     e.diagnostics()[0].message.english().c_str());
         }
         // With numbers in place of the parameters there is no clash, and the model is
         // the numeric dynamics'.

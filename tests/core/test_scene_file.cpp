@@ -84,7 +84,7 @@ std::string findError(const std::optional<std::vector<Diagnostic>>& diagnostics,
     std::string seen;
     for (const Diagnostic& d : *diagnostics) {
         bool all = d.severity == Severity::Error && d.field == field;
-        for (const std::string& part : parts) all = all && contains(d.message, part);
+        for (const std::string& part : parts) all = all && contains(d.message.english(), part);
         if (all) return "";
         seen += "\n  " + d.toString();
     }
@@ -508,7 +508,7 @@ private slots:
         });
         QVERIFY(diagnostics && diagnostics->size() == 1);
         QCOMPARE(diagnostics->front().field, std::string("format"));
-        QVERIFY(contains(diagnostics->front().message, "expected \"lagrangelab-scene/1\", got a string \"lagrangelab-scene/2\""));
+        QVERIFY(contains(diagnostics->front().message.english(), "expected \"lagrangelab-scene/1\", got a string \"lagrangelab-scene/2\""));
     }
 
     void malformedJson() {

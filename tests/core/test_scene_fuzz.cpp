@@ -93,15 +93,15 @@ private slots:
                 try {
                     const Scene scene = parseScene(text);
                     for (const Diagnostic& d : requireValidScene(scene))
-                        QVERIFY2(isValidUtf8(d.field) && isValidUtf8(d.message), d.toString().c_str());
+                        QVERIFY2(isValidUtf8(d.field) && isValidUtf8(d.message.english()), d.toString().c_str());
                     ++loaded;
                 } catch (const InputError& e) {
                     ++refused;
                     QVERIFY(isValidUtf8(e.what()));
                     for (const Diagnostic& d : e.diagnostics()) {
-                        QVERIFY2(isValidUtf8(d.field) && isValidUtf8(d.message),
+                        QVERIFY2(isValidUtf8(d.field) && isValidUtf8(d.message.english()),
                                  qPrintable(QString::fromStdString(validUtf8(d.toString()))));
-                        namedCodePoint += d.message.find("(U+") != std::string::npos;
+                        namedCodePoint += d.message.english().find("(U+") != std::string::npos;
                     }
                 } catch (const std::exception& e) {
                     QFAIL(qPrintable(QString::fromStdString(file.filename().string() + ": not an InputError: " +

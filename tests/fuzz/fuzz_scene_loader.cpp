@@ -12,7 +12,7 @@ int ll::fuzz::sceneLoader(const std::uint8_t* data, std::size_t size) {
     try {
         const ll::Scene scene = ll::parseScene(text);
         for (const ll::Diagnostic& d : ll::checkScene(scene))
-            ll::fuzz::require(!d.field.empty() && ll::isValidUtf8(d.field + d.message), "a check names no field");
+            ll::fuzz::require(!d.field.empty() && ll::isValidUtf8(d.field + d.message.english()), "a check names no field");
     } catch (const ll::InputError& e) {
         ll::fuzz::checkRefusal(e);
     }

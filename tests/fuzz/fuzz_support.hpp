@@ -27,7 +27,7 @@ inline void checkRefusal(const InputError& e) {
     require(hasErrors(e.diagnostics()), "an InputError without an error");
     for (const Diagnostic& d : e.diagnostics()) {
         require(!d.field.empty(), "a diagnostic names no field");
-        require(isValidUtf8(d.field) && isValidUtf8(d.message), "a diagnostic is not UTF-8");
+        require(isValidUtf8(d.field) && isValidUtf8(d.message.english()), "a diagnostic is not UTF-8");
     }
 }
 

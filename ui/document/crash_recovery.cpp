@@ -16,6 +16,8 @@
 
 #include "core/io/atomic_file.hpp"
 #include "core/model/diagnostics.hpp"
+#include "core/present/message_text.hpp"
+#include "ui/document/app_language.hpp"
 
 namespace ll::ui {
 namespace {
@@ -57,8 +59,8 @@ void collectChanges(const SceneJson* before, const SceneJson* after, const std::
                            path + "[" + std::to_string(i) + "]", out);
         return;
     }
-    const Diagnostic place{Severity::Warning, path, ""};
-    out << QString::fromStdString(place.where()) + ": " + shown(before) + QString::fromUtf8(" → ") + shown(after);
+    const Diagnostic field{Severity::Warning, path, {}};
+    out << QString::fromStdString(present::messageText(field.place(), windowLanguage())) + ": " + shown(before) + QString::fromUtf8(" → ") + shown(after);
 }
 
 }  // namespace

@@ -12,6 +12,8 @@
 
 #include "core/io/atomic_file.hpp"
 #include "core/io/scene_file.hpp"
+#include "core/present/diagnostic_text.hpp"
+#include "ui/document/app_language.hpp"
 #include "core/pipeline/scene_check.hpp"
 
 namespace ll::ui {
@@ -47,7 +49,7 @@ std::vector<Diagnostic> diagnose(const std::string& text, Scene* scene) {
     } catch (const InputError& e) {
         return e.diagnostics();
     } catch (const std::exception& e) {
-        return {Diagnostic{Severity::Error, "scene", e.what()}};
+        return {Diagnostic{Severity::Error, "scene", literal(e.what())}};
     }
 }
 
@@ -165,8 +167,7 @@ QString SceneDocument::errorAt(const std::string& field) const {
     QStringList found;
     for (const Diagnostic& d : diagnostics_)
         if (d.field == field)
-            found << QString::fromStdString((d.severity == Severity::Error ? "error: " : "warning: ") + d.message +
-                                            (d.hint.empty() ? "" : "\nhint: " + d.hint));
+            found << QString::fromStdString(present::diagnosticText(d, windowLanguage(), present::Place::Omitted));
     return found.join('\n');
 }
 

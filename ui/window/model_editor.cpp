@@ -21,6 +21,7 @@
 #include <QVBoxLayout>
 
 #include "core/present/diagnostic_text.hpp"
+#include "core/present/message_text.hpp"
 #include "ui/document/field_list_model.hpp"
 #include "ui/document/joint_table_model.hpp"
 #include "ui/document/parameter_rename.hpp"
@@ -246,7 +247,7 @@ void ModelEditor::documentChanged(present::Language language) {
         if (d.severity == Severity::Error && !edited.empty() && d.field.ends_with("]") &&
             d.field.find("robot.joints[") != std::string::npos && edited.rfind("robot.joints[", 0) == 0)
             text += "\n" + tr("hint: it happened with your edit of %1")
-                               .arg(QString::fromStdString(Diagnostic{Severity::Error, edited, ""}.where()));
+                               .arg(QString::fromStdString(present::messageText(Diagnostic{Severity::Error, edited, {}}.place(), language)));
         auto* item = new QListWidgetItem(text, diagnostics_);
         item->setForeground(d.severity == Severity::Error ? QColor(180, 0, 0) : QColor(140, 100, 0));
     }

@@ -1,0 +1,37 @@
+#include "core/present/message_text.hpp"
+
+#include <array>
+#include <cstddef>
+
+namespace ll::present {
+namespace {
+
+using Catalogue = std::array<const char*, static_cast<std::size_t>(MessageId::Count)>;
+
+Catalogue danishCatalogue() {
+    Catalogue words{};
+    words[static_cast<std::size_t>(MessageId::Literal)] = "{1}";
+#define LL_DANISH(id, danish) words[static_cast<std::size_t>(MessageId::id)] = danish;
+#include "core/present/danish/all.def"
+#undef LL_DANISH
+    return words;
+}
+
+}  // namespace
+
+const char* danishWords(MessageId id) {
+    static const Catalogue catalogue = danishCatalogue();
+    const auto k = static_cast<std::size_t>(id);
+    return k < catalogue.size() ? catalogue[k] : nullptr;
+}
+
+std::string messageText(const Message& message, Language language) {
+    if (message.id == MessageId::Literal) return message.literal;
+    std::vector<std::string> args;
+    args.reserve(message.args.size());
+    for (const Message& a : message.args) args.push_back(messageText(a, language));
+    const char* words = language == Language::Danish ? danishWords(message.id) : nullptr;
+    return filledIn(words ? words : englishWords(message.id), args);
+}
+
+}  // namespace ll::present
