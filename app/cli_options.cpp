@@ -22,13 +22,14 @@ Options::Options(const std::vector<std::string>& args, const std::set<std::strin
         } else if (i + 1 < args.size()) {
             value = args[++i];
         } else if (allowed.count(name)) {
-            throw UsageError("option --" + name + " needs a value");
+            throw UsageError(UsageId::OptionNeedsValue, name);
         }
         if (!allowed.count(name) && !flags.count(name)) {
             std::string known;
             for (const std::string& a : allowed) known += (known.empty() ? "--" : ", --") + a;
             for (const std::string& f : flags) known += (known.empty() ? "--" : ", --") + f;
-            throw UsageError("unknown option --" + name + (known.empty() ? "" : " (known: " + known + ")"));
+            if (known.empty()) throw UsageError(UsageId::UnknownOption, name);
+            throw UsageError(UsageId::UnknownOptionAmong, name, known);
         }
         values_[name] = value;
     }
@@ -44,7 +45,7 @@ double parseNumber(const std::string& option, const std::string& text) {
     double value = 0;
     in >> value;
     if (in.fail() || !in.eof() || !std::isfinite(value))
-        throw UsageError("--" + option + ": expected a finite number, got '" + text + "'");
+        throw UsageError(UsageId::ExpectedFiniteNumber, option, text);
     return value;
 }
 
@@ -58,8 +59,7 @@ Eigen::VectorXd Options::vector(const std::string& name, int size) const {
     std::string item;
     while (std::getline(in, item, ',')) values.push_back(parseNumber(name, item));
     if (static_cast<int>(values.size()) != size)
-        throw UsageError("--" + name + ": expected " + std::to_string(size) + " comma-separated numbers (one per joint), got " +
-                         std::to_string(values.size()) + " in '" + text(name) + "'");
+        throw UsageError(UsageId::ExpectedNumberPerJoint, name, size, values.size(), text(name));
     return Eigen::Map<Eigen::VectorXd>(values.data(), size);
 }
 
@@ -78,7 +78,7 @@ void takePresentation(std::vector<std::string>& args, bool codegen) {
             ++k;
             continue;
         }
-        if (k + 1 >= args.size()) throw UsageError(args[k] + ": needs a value");
+        if (k + 1 >= args.size()) throw UsageError(UsageId::NeedsValue, args[k].substr(2));
         const std::string value = args[k + 1];
         if (lang) {
             const auto l = present::languageNamed(value);
@@ -87,13 +87,13 @@ void takePresentation(std::vector<std::string>& args, bool codegen) {
                     k += 2;
                     continue;
                 }
-                throw UsageError("--lang: expected da or en, got '" + value + "'");
+                throw UsageError(UsageId::ExpectedOneOf, "lang", "da", "en", value);
             }
             chosen().language = *l;
             givenLanguage = true;
         } else {
             const auto n = present::notationNamed(value);
-            if (!n) throw UsageError("--notation: expected notes, siciliano, spong or craig, got '" + value + "'");
+            if (!n) throw UsageError(UsageId::ExpectedOneOf, "notation", "notes, siciliano, spong", "craig", value);
             chosen().notation = *n;
             givenNotation = true;
         }

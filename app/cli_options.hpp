@@ -1,22 +1,17 @@
 #pragma once
 // Command-line options of the form `--name value` after a positional argument.
+// Bad input throws UsageError (app/usage_error.hpp).
 #include <map>
 #include <set>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "app/usage_error.hpp"
 #include "core/present/localized_document.hpp"
 
 namespace ll::cli {
-
-// Bad command-line input: exit code 2, one line.
-class UsageError : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
-};
 
 class Options {
 public:

@@ -27,7 +27,7 @@ std::vector<double> parseSettings(const std::string& option, const std::string& 
     std::vector<double> values;
     if (const size_t dots = text.find(".."); dots != std::string::npos) {
         const double a = parseNumber(option, text.substr(0, dots)), b = parseNumber(option, text.substr(dots + 2));
-        if (!(a > 0 && b > 0)) throw UsageError("--" + option + ": a range needs two numbers > 0, got '" + text + "'");
+        if (!(a > 0 && b > 0)) throw UsageError(UsageId::RangeNeedsPositive, option, text);
         const double la = std::log10(a), lb = std::log10(b);
         const int count = static_cast<int>(std::floor(std::abs(lb - la) + 1e-9));
         for (int k = 0; k <= count; ++k) values.push_back(a * std::pow(10.0, la <= lb ? k : -k));
@@ -37,9 +37,9 @@ std::vector<double> parseSettings(const std::string& option, const std::string& 
     std::string item;
     while (std::getline(in, item, ',')) {
         values.push_back(parseNumber(option, item));
-        if (!(values.back() > 0)) throw UsageError("--" + option + ": values must be > 0, got '" + item + "'");
+        if (!(values.back() > 0)) throw UsageError(UsageId::ValuesNotPositive, option, item);
     }
-    if (values.empty()) throw UsageError("--" + option + ": no values in '" + text + "'");
+    if (values.empty()) throw UsageError(UsageId::NoValues, option, text);
     return values;
 }
 
@@ -50,7 +50,7 @@ std::vector<std::string> parseNames(const std::string& text) {
     while (std::getline(in, item, ','))
         if (!item.empty()) {
             if (!findIntegrator(item))
-                throw UsageError("--integrators: unknown integrator '" + item + "' (known: " + integratorNames() + ")");
+                throw UsageError(UsageId::UnknownIntegrator, item, integratorNames());
             names.push_back(item);
         }
     return names;
@@ -117,11 +117,11 @@ int accuracyCommand(const Args& args) {
     settings.duration = options.number("duration", scene.simulation.duration);
     settings.repeats = static_cast<int>(options.number("repeats", settings.repeats));
     settings.referenceTolerance = options.number("reference-tol", 0.0);
-    if (!(settings.duration > 0)) throw UsageError("--duration: must be > 0");
-    if (settings.repeats < 1) throw UsageError("--repeats: must be at least 1");
+    if (!(settings.duration > 0)) throw UsageError(UsageId::MustBePositive, "duration");
+    if (settings.repeats < 1) throw UsageError(UsageId::MustBeAtLeast, "repeats", 1);
     const std::string plot = options.text("out");
     if (!plot.empty() && !plot.ends_with(".svg") && !plot.ends_with(".png"))
-        throw UsageError("--out: the plot is written as .svg or .png, got '" + plot + "'");
+        throw UsageError(UsageId::PlotFileType, plot);
     requireValidSceneFrom(scene, options.positional()[0]);
 
     const bool tty = ::isatty(STDERR_FILENO);

@@ -94,7 +94,7 @@ int checkCommand(const Args& args) {
     const Options options(args, {"duration", "format"});
     if (options.positional().size() != 1) throw UsageError(usageLine("check"));
     const std::string format = options.text("format", "text");
-    if (format != "text" && format != "json") throw UsageError("--format: expected text or json, got '" + format + "'");
+    if (format != "text" && format != "json") throw UsageError(UsageId::ExpectedOneOf, "format", "text", "json", format);
     Scene scene = loadSceneReportingWarnings(options.positional()[0]);
     scene.simulation.duration = options.number("duration", scene.simulation.duration);
     requireValidSceneFrom(scene, options.positional()[0]);

@@ -19,10 +19,10 @@ int codegenCommand(const Args& args) {
     const Options options(args, {"lang", "out"}, {"numeric"});
     if (options.positional().size() != 1) throw UsageError(usageLine("codegen"));
     const std::string lang = options.text("lang", "");
-    if (lang != "c" && lang != "python") throw UsageError("--lang: expected c or python, got '" + lang + "'");
+    if (lang != "c" && lang != "python") throw UsageError(UsageId::ExpectedOneOf, "lang", "c", "python", lang);
     const std::string path = options.positional()[0];
     const Scene scene = loadSceneReportingWarnings(path);
-    if (scene.lagrangian) throw UsageError("codegen: " + path + " is a hand-typed Lagrangian; codegen needs a robot (a DH table)");
+    if (scene.lagrangian) throw UsageError(UsageId::CodegenNeedsRobot, path);
     symbolic::DerivationOptions derivation;
     derivation.mode = options.has("numeric") ? symbolic::ParameterMode::Numeric : symbolic::ParameterMode::Parametric;
     const auto lock = symbolic::lockGinac();

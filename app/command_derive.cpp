@@ -36,10 +36,10 @@ StepRange parseSteps(const std::string& text) {
         range.first = std::stoi(text.substr(0, dash));
         range.last = dash == std::string::npos ? range.first : std::stoi(text.substr(dash + 1));
     } catch (const std::exception&) {
-        throw UsageError("--steps: expected a step or a range such as 0-8, got '" + text + "'");
+        throw UsageError(UsageId::StepsExpected, text);
     }
     if (range.first < 0 || range.last > 8 || range.first > range.last)
-        throw UsageError("--steps: steps are numbered 0 to 8, got '" + text + "'");
+        throw UsageError(UsageId::StepsOutOfRange, text);
     return range;
 }
 
@@ -66,20 +66,19 @@ int deriveCommand(const Args& args) {
     const std::string format = options.text("format", "text");
     const bool typeset = format == "pdf" || format == "svg" || format == "png";
     if (format != "text" && format != "latex" && format != "json" && !typeset)
-        throw UsageError("--format: expected text, latex, json, pdf, svg or png, got '" + format + "'");
-    if (typeset && !options.has("out")) throw UsageError("--out: --format " + format + " writes a file; give --out FILE");
+        throw UsageError(UsageId::ExpectedOneOf, "format", "text, latex, json, pdf, svg", "png", format);
+    if (typeset && !options.has("out")) throw UsageError(UsageId::FormatWritesFile, format);
     if (options.has("out")) {  // before the work: a file that cannot be written is known now
         std::error_code error;
         const std::filesystem::path dir = std::filesystem::absolute(options.text("out"), error).parent_path();
         const bool isDir = !error && std::filesystem::is_directory(dir, error);
         if (!isDir || ::access(dir.c_str(), W_OK) != 0)
-            throw UsageError("--out: cannot write '" + options.text("out") + "': " +
-                             (isDir ? "the folder is not writable" : "no such folder"));
+            throw UsageError(isDir ? UsageId::OutFolderNotWritable : UsageId::OutFolderMissing, options.text("out"));
     }
-    if (options.has("symbolic") && options.has("numeric")) throw UsageError("--symbolic and --numeric exclude each other");
+    if (options.has("symbolic") && options.has("numeric")) throw UsageError(UsageId::ExcludeEachOther, "symbolic", "numeric");
     const std::string form = options.text("form", "auto");
     if (form != "auto" && form != "structured" && form != "expanded")
-        throw UsageError("--form: expected auto, structured or expanded, got '" + form + "'");
+        throw UsageError(UsageId::ExpectedOneOf, "form", "auto, structured", "expanded", form);
     const Scene scene = loadSceneReportingWarnings(options.positional()[0]);
     const StepRange range = parseSteps(options.text("steps", "0-8"));
 
@@ -94,7 +93,7 @@ int deriveCommand(const Args& args) {
     const DerivationForm chosenForm =
         form == "structured" ? DerivationForm::Structured : form == "expanded" ? DerivationForm::Expanded : DerivationForm::Auto;
     if (typeset && (options.has("entry") || options.has("verify")))  // the typeset pages show the form auto (or --form) picks
-        throw UsageError("--format " + format + ": typesets whole derivations; --entry and --verify are for text, latex and json");
+        throw UsageError(UsageId::TypesetWholeDerivations, format);
     const bool timings = options.has("timings");
     if (typeset) {
         request.forPages = true;  // long sums built as the pages cut them
@@ -117,7 +116,7 @@ int deriveCommand(const Args& args) {
     const FormDocument result = inSceneFile(options.positional()[0], [&] {
         try {
             return deriveInForm(scene, formRequest);
-        } catch (const std::invalid_argument& e) {  // a bad --entry
+        } catch (const std::invalid_argument& e) {  // a bad --entry, in the core's English words
             throw UsageError(e.what());
         }
     });

@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include "app/cli_options.hpp"
+#include "app/command_usage.hpp"
 #include "app/commands.hpp"
 #include "app/offscreen_gui.hpp"
 #include "app/pixel_size.hpp"
@@ -43,49 +44,43 @@ void catchInterrupts() {
     sigaction(SIGHUP, &action, nullptr);
 }
 
-const char* kRenderUsage =
-    "usage: lagrangelab render SCENE --out FILE.mp4|.webm|.gif|.png|FOLDER [--duration T] [--fps F] [--size WxH] "
-    "[--camera front|side|top|iso|az,el[,dist]] [--speed X] [--overlay time,energy,name|none] [--trail on|off] "
-    "[--frames on|off] [--at T] [--msaa auto|edges|0|2|4|8] [--layout view|composite] [--step N]";
-
 ui::ExportSettings parseRenderOptions(const Options& options, const Scene& scene) {
-    if (!options.has("out")) throw UsageError(std::string("--out is required\n") + kRenderUsage);
+    if (!options.has("out")) throw UsageError(UsageId::OutRequired, synopsisLine("render"));
     ui::ExportSettings s;
     s.out = options.text("out");
     try {
         s.kind = ui::outputKindFor(s.out);
     } catch (const std::invalid_argument& e) {
-        throw UsageError("--out " + s.out + ": " + e.what());
+        throw UsageError(UsageId::OptionValueRefused, "out", s.out, e.what());  // ui's words
     }
     if (const std::string problem = ui::outputProblem(s.out, s.kind); !problem.empty())
-        throw UsageError("--out " + s.out + ": " + problem);
+        throw UsageError(UsageId::OptionValueRefused, "out", s.out, problem);  // ui's words
 
     const std::string size = options.text("size", "1280x720");
     const PixelSize pixels = parsePixelSize(size);
     s.width = pixels.width;
     s.height = pixels.height;
     if ((s.kind == ui::OutputKind::Mp4 || s.kind == ui::OutputKind::Webm) && (s.width % 2 || s.height % 2))
-        throw UsageError("--size " + size + ": " + (s.kind == ui::OutputKind::Mp4 ? "H.264" : "VP9") +
-                         " (yuv420p) needs an even width and height; try " + std::to_string(s.width + s.width % 2) + "x" +
-                         std::to_string(s.height + s.height % 2));
+        throw UsageError(UsageId::SizeNotEven, size, s.kind == ui::OutputKind::Mp4 ? "H.264" : "VP9",
+                         std::to_string(s.width + s.width % 2) + "x" + std::to_string(s.height + s.height % 2));
 
     s.fps = options.number("fps", 30);
-    if (s.fps <= 0 || s.fps > 240) throw UsageError("--fps " + options.text("fps") + ": expected 0 < fps <= 240");
+    if (s.fps <= 0 || s.fps > 240) throw UsageError(UsageId::FpsOutOfRange, options.text("fps"));
     if (s.kind == ui::OutputKind::Gif && s.fps > 50)
-        throw UsageError("--fps " + options.text("fps") + ": a GIF plays at most 50 frames per second (10, 20, 25 or 50 keep exact timing)");
+        throw UsageError(UsageId::GifFpsTooHigh, options.text("fps"));
     s.duration = options.number("duration", scene.simulation.duration);
-    if (s.duration <= 0) throw UsageError("--duration " + options.text("duration") + ": expected a duration > 0 s");
+    if (s.duration <= 0) throw UsageError(UsageId::DurationNotPositive, options.text("duration"));
     s.speed = options.number("speed", 1.0);
-    if (s.speed <= 0) throw UsageError("--speed " + options.text("speed") + ": expected a speed > 0 (0.25: four times slower)");
+    if (s.speed <= 0) throw UsageError(UsageId::SpeedNotPositive, options.text("speed"));
 
     try {
         s.camera = parseCameraSpec(options.text("camera", "auto"));
     } catch (const std::invalid_argument& e) {
-        throw UsageError("--camera " + options.text("camera") + ": " + e.what());
+        throw UsageError(UsageId::OptionValueRefused, "camera", options.text("camera"), e.what());  // the core's words
     }
     const auto onOff = [&](const char* name) {
         const std::string v = options.text(name, "on");
-        if (v != "on" && v != "off") throw UsageError(std::string("--") + name + " " + v + ": expected on or off");
+        if (v != "on" && v != "off") throw UsageError(UsageId::ValueExpectedOneOf, name, v, "on", "off");
         return v == "on";
     };
     s.trail = onOff("trail");
@@ -100,7 +95,7 @@ ui::ExportSettings parseRenderOptions(const Options& options, const Scene& scene
             if (item == "time") s.overlay.time = true;
             else if (item == "energy") s.overlay.energy = true;
             else if (item == "name") s.overlay.name = true;
-            else throw UsageError("--overlay " + overlay + ": unknown item '" + item + "' (time, energy, name, or none)");
+            else throw UsageError(UsageId::UnknownOverlayItem, overlay, item);
         }
     }
 
@@ -109,22 +104,20 @@ ui::ExportSettings parseRenderOptions(const Options& options, const Scene& scene
     else if (msaa == "edges") s.antialiasing = ui::kEdgeSmoothing;
     else if (msaa == "0" || msaa == "2" || msaa == "4" || msaa == "8") s.antialiasing = std::stoi(msaa);
     else
-        throw UsageError("--msaa " + msaa +
-                         ": expected auto (4x MSAA, or edge smoothing on software GL), edges, 0 (off), 2, 4 or 8 samples per pixel");
+        throw UsageError(UsageId::MsaaExpected, msaa);
     const std::string layout = options.text("layout", "view");
-    if (layout != "view" && layout != "composite") throw UsageError("--layout " + layout + ": expected view or composite");
+    if (layout != "view" && layout != "composite") throw UsageError(UsageId::ValueExpectedOneOf, "layout", layout, "view", "composite");
     s.composite = layout == "composite";
-    if (options.has("step") && !s.composite) throw UsageError("--step " + options.text("step") + ": only with --layout composite");
+    if (options.has("step") && !s.composite) throw UsageError(UsageId::ValueOnlyWith, "step", options.text("step"), "--layout composite");
     if (s.composite && options.has("overlay"))
-        throw UsageError("--overlay " + options.text("overlay") + ": --layout composite lays out the name, time and energy itself");
+        throw UsageError(UsageId::CompositeLaysOutOverlay, options.text("overlay"));
     if (s.composite && (s.width < 480 || s.height < 270))
-        throw UsageError("--size " + size + ": --layout composite needs at least 480x270 for its equation and plot");
+        throw UsageError(UsageId::CompositeTooSmall, size);
     if (options.has("at")) {
-        if (s.kind != ui::OutputKind::Still) throw UsageError("--at " + options.text("at") + ": a single still needs --out FILE.png");
+        if (s.kind != ui::OutputKind::Still) throw UsageError(UsageId::AtNeedsStill, options.text("at"));
         s.at = options.number("at", 0);
         if (s.at < 0 || s.at > s.duration)
-            throw UsageError("--at " + options.text("at") + ": expected a time within 0.." + std::to_string(s.duration) +
-                             " s (raise --duration to see later)");
+            throw UsageError(UsageId::AtOutsideDuration, options.text("at"), std::to_string(s.duration));
     }
     return s;
 }
@@ -134,7 +127,7 @@ ui::ExportSettings parseRenderOptions(const Options& options, const Scene& scene
 std::shared_ptr<const present::DisplayStep> keyEquationStep(const Scene& scene, const std::string& path, const Options& options) {
     const double number = options.number("step", 8);
     if (number < 0 || number > 8 || number != std::floor(number))
-        throw UsageError("--step " + options.text("step") + ": expected a derivation step 0..8");
+        throw UsageError(UsageId::StepNotDerivationStep, options.text("step"));
     DocumentRequest request;
     request.firstStep = request.lastStep = static_cast<int>(number);
     request.forPages = true;
@@ -142,8 +135,7 @@ std::shared_ptr<const present::DisplayStep> keyEquationStep(const Scene& scene, 
     const DerivedDocument derived = inSceneFile(path, [&] { return deriveDisplay(scene, request); });
     const auto document = present::localizedDocument(*derived.display, presentation());
     if (const present::DisplayStep* step = document->step(static_cast<int>(number))) return std::make_shared<const present::DisplayStep>(*step);
-    throw UsageError("--step " + options.text("step") + ": " + path + " has no step " + options.text("step") +
-                     " (a typed Lagrangian's steps are 0, 6, 7 and 8)");
+    throw UsageError(UsageId::SceneHasNoStep, options.text("step"), path);
 }
 
 }  // namespace
@@ -151,7 +143,7 @@ std::shared_ptr<const present::DisplayStep> keyEquationStep(const Scene& scene, 
 int renderCommand(const Args& args) {
     const Options options(args,
                           {"out", "duration", "fps", "size", "camera", "speed", "overlay", "trail", "frames", "at", "msaa", "layout", "step"});
-    if (options.positional().size() != 1) throw UsageError(kRenderUsage);
+    if (options.positional().size() != 1) throw UsageError(usageLine("render"));
     const std::string path = options.positional()[0];
     Scene scene = loadSceneReportingWarnings(path);
     ui::ExportSettings settings = parseRenderOptions(options, scene);

@@ -29,17 +29,17 @@ int reportCommand(const Args& args) {
         namespace fs = std::filesystem;
         std::error_code error;
         fs::create_directories(out, error);
-        if (!fs::is_directory(out)) throw UsageError("--out " + out + ": cannot make this folder (" + error.message() + ")");
+        if (!fs::is_directory(out)) throw UsageError(UsageId::CannotMakeFolder, out, error.message());
         const fs::path probe = fs::path(out) / ".lagrangelab-write-test";
         std::ofstream test(probe);
-        if (!test) throw UsageError("--out " + out + ": the folder is not writable");
+        if (!test) throw UsageError(UsageId::FolderNotWritable, out);
         test.close();
         fs::remove(probe, error);
     }
     Scene scene = loadSceneReportingWarnings(path);
     if (options.has("duration")) {
         const double duration = options.number("duration", 0);
-        if (!(duration > 0 && duration <= 600)) throw UsageError("--duration " + options.text("duration") + ": expected 0 < T <= 600 s");
+        if (!(duration > 0 && duration <= 600)) throw UsageError(UsageId::ReportDurationOutOfRange, options.text("duration"));
         scene.simulation.duration = duration;
     }
     requireValidSceneFrom(scene, path);

@@ -102,9 +102,11 @@ std::string commandUsage(const std::string& command) {
     return usage + synopsis(*c, static_cast<int>(usage.size())) + "\n\n" + indented(c->summary, "  ");
 }
 
-std::string usageLine(const std::string& command) {
+UsageMessage usageLine(const std::string& command) { return usageMessage(UsageId::Usage, synopsisLine(command)); }
+
+std::string synopsisLine(const std::string& command) {
     const CommandText* c = find(command);
-    return c ? "usage: lagrangelab " + synopsis(*c, -1) : "";
+    return c ? synopsis(*c, -1) : command;
 }
 
 std::string commandNames() {

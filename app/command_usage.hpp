@@ -4,6 +4,8 @@
 // all print from here, so they cannot drift apart.
 #include <string>
 
+#include "app/usage_message.hpp"
+
 namespace ll::cli {
 
 // The project version from CMake (project(... VERSION ...)), e.g. "0.1.0".
@@ -17,8 +19,11 @@ std::string overviewUsage();
 // empty for an unknown command.
 std::string commandUsage(const std::string& command);
 
-// The synopsis on one line, "usage: lagrangelab eval SCENE ...": what a usage error prints.
-std::string usageLine(const std::string& command);
+// The synopsis on one line, "usage: lagrangelab eval SCENE ...": what a usage error prints
+// ("brug: lagrangelab eval SCENE ..." in Danish; the synopsis itself as the help has it).
+UsageMessage usageLine(const std::string& command);
+// The synopsis on one line without "usage: lagrangelab ": "eval SCENE --q v1,... ...".
+std::string synopsisLine(const std::string& command);
 
 // "eval, simulate, ..., help".
 std::string commandNames();

@@ -32,7 +32,7 @@ int writeDerivationPages(const present::DisplayDocument& display, const std::str
     const bool ok = format == "pdf"   ? ui::writePdf(pages, out, error)
                     : format == "svg" ? ui::writeSvg(pages, out, error, &written)
                                       : ui::writePng(pages, out, error, &written);
-    if (!ok) throw UsageError("--out: " + error);
+    if (!ok) throw UsageError(UsageId::OptionRefused, "out", error);  // ui's words
     if (timings) {
         std::fprintf(stderr, "layout into pages: %.3f ms\n", 1e3 * layoutSeconds);
         std::fprintf(stderr, "writing %s: %.3f ms\n", format.c_str(), 1e3 * secondsSince(startWrite));

@@ -33,6 +33,15 @@ bool opensWindow(int argc, char** argv) {
            std::filesystem::is_regular_file(first);
 }
 
+// The language of a usage error found before a command reads its options (no display, an
+// unknown help topic): that of --lang when `args` give a good one, else the environment's.
+ll::present::Language languageOf(ll::cli::Args args) {
+    try {
+        ll::cli::takePresentation(args, false);
+    } catch (const ll::cli::UsageError&) {  // a bad --lang: the environment's language, for the error at hand
+    }
+    return ll::cli::presentation().language;
+}
 
 // f()'s exit code; its exceptions as one `error:` line each: bad input (exit 2) or a
 // failure (exit 1).
@@ -46,9 +55,9 @@ int reportingErrors(F&& f) {
             if (d.severity == ll::Severity::Error) std::cerr << ll::present::diagnosticText(d, presentation().language) << '\n';
         return 2;
     } catch (const UsageError& e) {
-        std::cerr << "error: " << e.what() << '\n';
+        std::cerr << usageErrorLine(e.message(), presentation().language) << '\n';
         return 2;
-    } catch (const std::invalid_argument& e) {
+    } catch (const std::invalid_argument& e) {  // the core's or a library's English words, so English around them
         std::cerr << "error: " << e.what() << '\n';
         return 2;
     } catch (const std::exception& e) {
@@ -64,8 +73,8 @@ int main(int argc, char** argv) {
     const auto processStart = std::chrono::steady_clock::now();
     if (opensWindow(argc, argv)) {
         if (!hasDisplay()) {
-            std::fputs(overviewUsage().c_str(), stderr);
-            std::fputs("error: no display: the window needs an X server (set DISPLAY, run under xvfb-run, or use `lagrangelab render`)\n", stderr);
+            std::cerr << overviewUsage()
+                      << usageErrorLine(usageMessage(UsageId::NoDisplay), languageOf(Args(argv + 1, argv + argc))) << '\n';
             return 2;
         }
         return reportingErrors([&] {
@@ -91,7 +100,8 @@ int main(int argc, char** argv) {
         const std::string topic = command != "help" || args.empty() ? "" : isHelp(args[0]) ? "help" : args[0];
         const std::string usage = topic.empty() ? overviewUsage() : commandUsage(topic);
         if (usage.empty()) {
-            std::fprintf(stderr, "error: help: unknown command '%s' (commands: %s)\n", topic.c_str(), commandNames().c_str());
+            const UsageMessage unknown = usageMessage(UsageId::HelpUnknownCommand, topic, commandNames());
+            std::cerr << usageErrorLine(unknown, languageOf(args)) << '\n';
             return 2;
         }
         std::fputs(usage.c_str(), stdout);
@@ -108,7 +118,8 @@ int main(int argc, char** argv) {
         if (command == "report") return reportCommand(args);
         if (command == "codegen") return codegenCommand(args);
         if (command == "check") return checkCommand(args);
-        std::fprintf(stderr, "error: unknown command '%s'\n\n%s", command.c_str(), overviewUsage().c_str());
+        std::cerr << usageErrorLine(usageMessage(UsageId::UnknownCommand, command), presentation().language) << "\n\n"
+                  << overviewUsage();
         return 2;
     });
 }

@@ -44,29 +44,28 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
                           {"screenshot", "play", "step", "teach", "size", "first-frame", "select", "pick-link", "at", "tab",
                            "joint", "derivation", "present", "dh-step", "dh-dimensions"},
                           {"first-frame", "present", "dh-dimensions"});
-    if (options.positional().size() > 1) throw UsageError("the window takes one SCENE, got " + std::to_string(options.positional().size()));
+    if (options.positional().size() > 1) throw UsageError(UsageId::WindowTakesOneScene, options.positional().size());
     const std::string scene = options.positional().empty() ? (examplesDirectory() / "double_pendulum.json").string() : options.positional()[0];
     const std::string screenshot = options.text("screenshot");
     if (!screenshot.empty() && QFileInfo(QString::fromStdString(screenshot)).suffix().toLower() != "png")
-        throw UsageError("--screenshot: '" + screenshot + "' is not a .png file");
+        throw UsageError(UsageId::ScreenshotNotPng, screenshot);
     const double play = options.number("play", 0);
-    if (play < 0 || play > 600) throw UsageError("--play: " + options.text("play") + " is not between 0 and 600 seconds");
+    if (play < 0 || play > 600) throw UsageError(UsageId::PlayOutOfRange, options.text("play"));
     const double step = options.number("step", -1);
     if (options.has("step") && (step < 0 || step > 9 || step != std::floor(step) || (step == 9 && !options.has("teach"))))
-        throw UsageError("--step: " + options.text("step") + " is not a step 0..8 (9, the results at the pose, with --teach)");
+        throw UsageError(UsageId::WindowStepOutOfRange, options.text("step"));
     const double at = options.number("at", 0);
-    if (at < 0) throw UsageError("--at: " + options.text("at") + " is not a time of the run (seconds from its start)");
+    if (at < 0) throw UsageError(UsageId::AtNegative, options.text("at"));
     const std::string tab = options.text("tab");
     static const char* const tabs[] = {"energy", "joints", "teach", "torques", "properties", "work-precision", "dh-steps"};
     if (options.has("tab") && std::find(std::begin(tabs), std::end(tabs), tab) == std::end(tabs))
-        throw UsageError("--tab: expected energy, joints, teach, torques, properties, work-precision or dh-steps, got '" + tab + "'");
+        throw UsageError(UsageId::ExpectedOneOf, "tab", "energy, joints, teach, torques, properties, work-precision", "dh-steps", tab);
     const std::string derivationView = options.text("derivation", "typeset");
     if (derivationView != "typeset" && derivationView != "text" && derivationView != "entries")
-        throw UsageError("--derivation: expected typeset, text or entries, got '" + derivationView + "'");
+        throw UsageError(UsageId::ExpectedOneOf, "derivation", "typeset, text", "entries", derivationView);
     // The window's size; it is never made smaller than its layout's minimum.
     const PixelSize size = parsePixelSize(options.text("size", "1280x800"));
-    if (!hasDisplay())
-        throw UsageError("no display: the window needs an X server (set DISPLAY, run under xvfb-run, or use `lagrangelab render`)");
+    if (!hasDisplay()) throw UsageError(UsageId::NoDisplay);
 
     static int argc = 1;
     static char name[] = "lagrangelab";
@@ -117,18 +116,17 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
     }
     const int n = window.document().validScene().dof();
     if (options.has("select") && !window.linking().selectEntry(QString::fromStdString(options.text("select"))))
-        throw UsageError("--select: the derivation of " + scene + " has no entry '" + options.text("select") +
-                         "' (names as the Entries tab lists them: b12, g2, beta23_4, p_c2)");
+        throw UsageError(UsageId::NoSuchEntry, scene, options.text("select"));
     if (options.has("pick-link")) {
         const double link = options.number("pick-link", 0);
         if (link < 1 || link > n || link != std::floor(link))
-            throw UsageError("--pick-link: " + options.text("pick-link") + " is not a link 1.." + std::to_string(n));
+            throw UsageError(UsageId::NotALink, options.text("pick-link"), n);
         window.linking().pickLink(static_cast<int>(link) - 1);
     }
     if (options.has("at")) {
         const double end = window.playback().endTime();
         if (at > end + 1e-9)
-            throw UsageError("--at: " + options.text("at") + " s is after the run's end (" + std::to_string(end) + " s)");
+            throw UsageError(UsageId::AtAfterEnd, options.text("at"), std::to_string(end));
         window.playback().pause();
         window.playback().setTime(at);
     }
@@ -136,7 +134,7 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
     if (options.has("joint")) {
         const double joint = options.number("joint", 1);
         if (joint < 1 || joint > n || joint != std::floor(joint))
-            throw UsageError("--joint: " + options.text("joint") + " is not a joint 1.." + std::to_string(n));
+            throw UsageError(UsageId::NotAJoint, options.text("joint"), n);
         window.torquePane().setJoint(static_cast<int>(joint) - 1);
     }
     window.showDerivationView(QString::fromStdString(derivationView));
@@ -163,13 +161,12 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
         char comma = 0, rest = 0;
         const bool parsed = std::sscanf(text.c_str(), "%d%c%d%c", &joint, &comma, &done, &rest) == 3 && comma == ',';
         if (!parsed || window.document().validScene().lagrangian || joint < 1 || joint > n || done < 0 || done > 4)
-            throw UsageError("--dh-step: '" + text + "' is not I,K with I a joint 1.." + std::to_string(n) +
-                             " of a DH robot and K the motions done, 0..4");
+            throw UsageError(UsageId::DhStepExpected, text, n);
         window.showPlotTab("dh-steps");
         window.dhStepPanel().setStep(joint - 1, done);
     }
     if (options.has("dh-dimensions")) {  // every DH parameter drawn on the robot
-        if (window.document().validScene().lagrangian) throw UsageError("--dh-dimensions: " + scene + " is a typed Lagrangian, not a DH robot");
+        if (window.document().validScene().lagrangian) throw UsageError(UsageId::DhDimensionsNeedRobot, scene);
         window.showPlotTab("dh-steps");
         window.dhStepPanel().setShowDimensions(true);
     }

@@ -25,4 +25,15 @@ inline ProcessRun runProcess(const QString& program, const QStringList& args, co
     return {normal ? p.exitCode() : -1, p.readAllStandardOutput(), p.readAllStandardError()};
 }
 
+// The environment of a fresh Debian (only the C.UTF-8 locale, no LANGUAGE) with `extra`
+// ("NAME=value") added: no language of the test's own environment leaks in.
+inline QProcessEnvironment freshLocaleEnvironment(const QStringList& extra = {}) {
+    QProcessEnvironment e = QProcessEnvironment::systemEnvironment();
+    for (const char* v : {"LANGUAGE", "LC_ALL", "LC_MESSAGES", "LANG"}) e.remove(v);
+    e.insert("LANG", "C.UTF-8");
+    e.insert("LC_ALL", "C.UTF-8");
+    for (const QString& kv : extra) e.insert(kv.section('=', 0, 0), kv.section('=', 1));
+    return e;
+}
+
 }  // namespace ll::test

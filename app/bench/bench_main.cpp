@@ -257,7 +257,7 @@ int main(int argc, char** argv) {
         for (const ll::Diagnostic& d : e.diagnostics())
             if (d.severity == ll::Severity::Error) std::fprintf(stderr, "%s\n", d.toString().c_str());
         return 2;
-    } catch (const ll::cli::UsageError& e) {
+    } catch (const ll::cli::UsageError& e) {  // in English, as the benchmark's usage and tables are: what()
         std::fprintf(stderr, "error: %s\n%s", e.what(), ll::bench::usage);
         return 2;
     } catch (const std::invalid_argument& e) {

@@ -11,6 +11,7 @@
 #include <QTemporaryDir>
 #include <filesystem>
 
+#include "process_run.hpp"
 #include "core/io/scene_file.hpp"
 #include "core/model/diagnostics.hpp"
 #include "core/pipeline/scene_derivation.hpp"
@@ -25,18 +26,10 @@ struct Run {
     QString out, err;
 };
 
-// The program with only the C.UTF-8 locale, as on a fresh Debian; `env` added.
+// The program as on a fresh Debian, with `env` added.
 Run run(const QStringList& args, const QStringList& env = {}, const QString& program = LL_CLI) {
-    QProcess p;
-    QProcessEnvironment e = QProcessEnvironment::systemEnvironment();
-    for (const char* v : {"LANGUAGE", "LC_ALL", "LC_MESSAGES", "LANG"}) e.remove(v);
-    e.insert("LANG", "C.UTF-8");
-    e.insert("LC_ALL", "C.UTF-8");
-    for (const QString& kv : env) e.insert(kv.section('=', 0, 0), kv.section('=', 1));
-    p.setProcessEnvironment(e);
-    p.start(program, args);
-    p.waitForFinished(300000);
-    return {p.exitCode(), QString::fromUtf8(p.readAllStandardOutput()), QString::fromUtf8(p.readAllStandardError())};
+    const test::ProcessRun r = test::runProcess(program, args, {}, test::freshLocaleEnvironment(env), 300000);
+    return {r.exitCode, QString::fromUtf8(r.out), QString::fromUtf8(r.err)};
 }
 
 QString example(const char* name) { return QString(LL_EXAMPLES_DIR) + "/" + name; }
