@@ -18,6 +18,7 @@
 #include <QTimer>
 
 #include "core/io/data_directory.hpp"
+#include "core/present/message_text.hpp"
 #include "app/cli_options.hpp"
 #include "app/command_usage.hpp"
 #include "app/commands.hpp"
@@ -80,7 +81,8 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
     window.language().set({language, notationGiven() ? presentation().notation : ui::rememberedNotation()});
     QStringList errors;
     if (!window.openFile(QString::fromStdString(scene), &errors, true)) {
-        for (const QString& e : errors) std::cerr << "error: " << e.toStdString() << '\n';
+        const std::string error = present::messageText(MessageId::ErrorLine, language);
+        for (const QString& e : errors) std::cerr << error << e.toStdString() << '\n';
         return 2;
     }
     window.resize(size.width, size.height);

@@ -4,14 +4,22 @@
 
 namespace ll::present {
 
-std::string diagnosticText(const Diagnostic& d, Language language, Place place) {
-    using enum MessageId;
-    const Message severity = d.severity == Severity::Error ? ErrorLine : WarningLine;
-    std::string text = messageText(severity, language) +
-                       (place == Place::Named ? messageText(d.place(), language) + ": " : std::string()) +
+namespace {
+
+std::string words(const Diagnostic& d, Language language, Place place) {
+    std::string text = (place == Place::Named ? messageText(d.place(), language) + ": " : std::string()) +
                        messageText(d.message, language);
-    if (!d.hint.empty()) text += "\n" + messageText(HintLine, language) + messageText(d.hint, language);
+    if (!d.hint.empty()) text += "\n" + messageText(MessageId::HintLine, language) + messageText(d.hint, language);
     return text;
 }
+
+}  // namespace
+
+std::string diagnosticText(const Diagnostic& d, Language language, Place place) {
+    const MessageId severity = d.severity == Severity::Error ? MessageId::ErrorLine : MessageId::WarningLine;
+    return messageText(severity, language) + words(d, language, place);
+}
+
+std::string diagnosticBody(const Diagnostic& d, Language language) { return words(d, language, Place::Named); }
 
 }  // namespace ll::present

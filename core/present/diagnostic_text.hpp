@@ -15,5 +15,8 @@ enum class Place { Named, Omitted };
 // Diagnostic::toString() in `language`: "error: robot.joints[0].mass (joint 1): ..."; with
 // Place::Omitted without the field (a tooltip on the field itself).
 std::string diagnosticText(const Diagnostic& diagnostic, Language language, Place place = Place::Named);
+// Diagnostic::text() in `language`: the same without "error: " / "warning: " (a list of
+// the errors of one file).
+std::string diagnosticBody(const Diagnostic& diagnostic, Language language);
 
 }  // namespace ll::present

@@ -67,7 +67,7 @@ bool SceneDocument::adopt(const std::string& text, const QString& path, std::vec
     if (ll::hasErrors(found)) {
         if (errors)
             for (const Diagnostic& d : found)
-                if (d.severity == Severity::Error) *errors << prefix + QString::fromStdString(d.text());
+                if (d.severity == Severity::Error) *errors << prefix + QString::fromStdString(present::diagnosticBody(d, windowLanguage()));
         return false;
     }
     SceneJson parsed;
