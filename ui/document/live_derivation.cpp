@@ -7,6 +7,8 @@
 
 #include "core/model/cancellation.hpp"
 #include "core/model/diagnostics.hpp"
+#include "core/present/diagnostic_text.hpp"
+#include "ui/document/app_language.hpp"
 #include "core/pipeline/display_derivation.hpp"
 #include "core/pipeline/scene_derivation.hpp"
 
@@ -37,7 +39,8 @@ void LiveDerivation::request(const Scene& scene) {
     stopped_ = false;
     ++runs_;
     emit started(request);
-    pool_.start([self = this, scene = scene_, request, cancel, delay = std::chrono::milliseconds(startDelayMs_)] {
+    pool_.start([self = this, scene = scene_, request, cancel, delay = std::chrono::milliseconds(startDelayMs_),
+                 language = windowLanguage()] {
         const auto begin = std::chrono::steady_clock::now();
         auto result = std::make_shared<DerivationResult>();
         result->request = request;
@@ -61,7 +64,7 @@ void LiveDerivation::request(const Scene& scene) {
         } catch (const Cancelled&) {
             result->stopped = true;
         } catch (const InputError& e) {
-            for (const Diagnostic& d : e.diagnostics()) result->error += QString::fromStdString(d.text() + "\n");
+            for (const Diagnostic& d : e.diagnostics()) result->error += QString::fromStdString(present::diagnosticBody(d, language) + "\n");
         } catch (const std::exception& e) {
             result->error = QString::fromStdString(e.what());
         }

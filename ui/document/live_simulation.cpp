@@ -4,6 +4,8 @@
 #include <optional>
 
 #include "core/model/diagnostics.hpp"
+#include "core/present/diagnostic_text.hpp"
+#include "ui/document/app_language.hpp"
 #include "core/pipeline/scene_simulation.hpp"
 
 namespace ll::ui {
@@ -47,7 +49,7 @@ void LiveSimulation::start() {
     pending_.reset();
     const int request = work_.newest();
     const SimulationSettings settings = override_.value_or(scene->simulation);
-    pool_.start([self = this, scene, settings, request, cancel, analysing = analysing_] {
+    pool_.start([self = this, scene, settings, request, cancel, analysing = analysing_, language = windowLanguage()] {
         const auto begin = std::chrono::steady_clock::now();
         auto result = std::make_shared<LiveResult>();
         result->request = request;
@@ -62,7 +64,7 @@ void LiveSimulation::start() {
             if (result->simulation.trajectory.size() > 0) result->visual->fitToMotion(result->simulation.trajectory);
             if (result->simulation.status == SimulationStatus::Failed) result->error = result->simulation.message;
         } catch (const InputError& e) {
-            for (const Diagnostic& d : e.diagnostics()) result->error += d.text() + "\n";
+            for (const Diagnostic& d : e.diagnostics()) result->error += present::diagnosticBody(d, language) + "\n";
         } catch (const std::exception& e) {
             result->error = e.what();
         }
