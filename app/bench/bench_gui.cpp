@@ -57,7 +57,6 @@ double processCpu() {
     return usage.ru_utime.tv_sec + usage.ru_stime.tv_sec + 1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
 }
 
-double ms(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); }
 
 // The first joint row with a non-zero numeric `a` (else d) to nudge.
 std::pair<int, int> editableCell(const ui::SceneDocument& doc) {

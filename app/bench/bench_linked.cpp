@@ -20,8 +20,8 @@ namespace {
 
 using cli::loadSceneReportingWarnings;
 using cli::median;
+using cli::ms;
 using Clock = std::chrono::steady_clock;
-double ms(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); }
 
 }  // namespace
 

@@ -18,6 +18,7 @@
 #include <unistd.h>
 
 #include "app/bench/bench.hpp"
+#include "app/bench/bench_timing.hpp"
 #include "app/bench/program_run.hpp"
 #include "app/commands.hpp"
 #include "app/offscreen_gui.hpp"
@@ -38,11 +39,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
 
 // Frames per second of `frames` frames of the trajectory (pose + draw [+ read-back]).
 double framesPerSecond(const Scene& scene, const Trajectory& trajectory, int antialiasing, bool readBack, int frames) {

@@ -57,6 +57,11 @@ inline double median(std::vector<double> v) {
     return v.empty() ? 0.0 : v[v.size() / 2];
 }
 
+// Milliseconds from a to b.
+inline double ms(std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b) {
+    return std::chrono::duration<double, std::milli>(b - a).count();
+}
+
 // Median over batches of the time per call [µs]; each batch cycles through the states.
 template <class F>
 double medianMicros(int batches, int statesCount, F&& call) {

@@ -1,5 +1,6 @@
 #include "core/present/structured_document.hpp"
 
+#include "core/model/one_based.hpp"
 #include <algorithm>
 #include <chrono>
 #include <map>
@@ -21,8 +22,6 @@ namespace {
 using symbolic::NamedDefinition;
 using symbolic::entryLabel;
 using symbolic::lockGinac;
-
-std::string idx(int i) { return std::to_string(i + 1); }
 
 // q1, q2, … (appended: GCC 12 warns falsely, -Wrestrict, on "q" + idx(i) inlined)
 std::string coordinateName(int i) {

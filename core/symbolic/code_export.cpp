@@ -1,13 +1,12 @@
 #include "core/symbolic/code_export.hpp"
 
+#include "core/model/one_based.hpp"
 #include <regex>
 #include <set>
 #include <sstream>
 
 namespace ll::symbolic {
 namespace {
-
-std::string idx(int i) { return std::to_string(i + 1); }
 
 class Writer {
 public:

@@ -1,5 +1,7 @@
 #include "core/symbolic/robot_derivation.hpp"
 
+#include "core/model/one_based.hpp"
+#include "core/symbolic/symbolic_vector.hpp"
 #include <array>
 #include <chrono>
 #include <functional>
@@ -19,7 +21,6 @@ namespace {
 
 using GiNaC::ex;
 using GiNaC::matrix;
-using Vec3 = std::array<ex, 3>;
 
 class Stopwatch {
 public:
@@ -34,15 +35,8 @@ private:
     std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
-std::string idx(int i) { return std::to_string(i + 1); }
-
 Vec3 column(const matrix& m, int c) { return {m(0, c), m(1, c), m(2, c)}; }
 Vec3 translation(const matrix& T) { return column(T, 3); }
-Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-Vec3 cross(const Vec3& a, const Vec3& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-ex dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 matrix toMatrix(const Vec3& v) { return matrix(3, 1, GiNaC::lst{v[0], v[1], v[2]}); }
 matrix rotation(const matrix& T) {
     matrix R(3, 3);

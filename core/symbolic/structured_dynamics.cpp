@@ -1,5 +1,7 @@
 #include "core/symbolic/structured_dynamics.hpp"
 
+#include "core/model/one_based.hpp"
+#include "core/symbolic/symbolic_vector.hpp"
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -19,17 +21,9 @@ namespace {
 
 using GiNaC::ex;
 using GiNaC::matrix;
-using Vec3 = std::array<ex, 3>;
 
 const char* const kAxis = "xyz";
 
-std::string idx(int i) { return std::to_string(i + 1); }
-
-Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-Vec3 cross(const Vec3& a, const Vec3& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-ex dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 Vec3 times(const matrix& M, const Vec3& v) {
     Vec3 r;
     for (int row = 0; row < 3; ++row) r[row] = M(row, 0) * v[0] + M(row, 1) * v[1] + M(row, 2) * v[2];

@@ -1,5 +1,6 @@
 #include "core/symbolic/structured_entries.hpp"
 
+#include "core/model/one_based.hpp"
 #include <algorithm>
 #include <cctype>
 #include <chrono>
@@ -13,8 +14,6 @@ namespace ll::symbolic {
 namespace {
 
 std::size_t termCount(const GiNaC::ex& e) { return e.is_zero() ? 0 : GiNaC::is_a<GiNaC::add>(e) ? e.nops() : 1; }
-
-std::string idx(int i) { return std::to_string(i + 1); }
 
 }  // namespace
 
