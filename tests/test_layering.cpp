@@ -5,7 +5,7 @@
 // core/symbolic on. Inside ui the same, in the order ui/CMakeLists.txt lists
 // (LL_UI_LAYERS: paint → document → window), and no Qt Widgets, Charts or OpenGL
 // widgets below window. The build enforces both with per-layer include folders.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -14,6 +14,9 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_layering {
 
 namespace fs = std::filesystem;
 
@@ -230,5 +233,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestLayering)
+LL_TEST_APPLESS_MAIN(TestLayering)
+
+}  // namespace test_layering
 #include "test_layering.moc"

@@ -1,7 +1,7 @@
 // `lagrangelab accuracy` as a user runs it (table, CSV, headless PNG/SVG plot), the plot
 // renderer in-process, `integrators` listing rosenbrock4, `bench --rhs`, and the cost
 // line of every `simulate`.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <QGuiApplication>
 #include <QImage>
@@ -12,6 +12,9 @@
 #include "core/pipeline/scene_simulation.hpp"
 #include "core/model/utf8_text.hpp"
 #include "ui/paint/work_precision_plot.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_accuracy_cli {
 
 class TestAccuracyCli : public QObject {
     Q_OBJECT
@@ -135,12 +138,14 @@ private slots:
     }
 };
 
-int main(int argc, char** argv) {
+static int runAccuracyCli(int argc, char** argv) {
     if (qEnvironmentVariableIsEmpty("DISPLAY") && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
     QGuiApplication app(argc, argv);
     TestAccuracyCli test;
     return QTest::qExec(&test, argc, argv);
 }
+LL_TEST_PROGRAM(runAccuracyCli)
 
+}  // namespace test_accuracy_cli
 #include "test_accuracy_cli.moc"

@@ -2,9 +2,12 @@
 // installed. Its tables have the rows they promise, its numbers are plausible (no
 // process is faster than zero, the budget column agrees with the medians), and bad
 // arguments get one line and exit code 2. Timings themselves are never asserted.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <QProcess>
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_bench {
 
 namespace {
 
@@ -89,5 +92,7 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestBench)
+LL_TEST_GUILESS_MAIN(TestBench)
+
+}  // namespace test_bench
 #include "test_bench.moc"

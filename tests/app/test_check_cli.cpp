@@ -3,7 +3,7 @@
 // B becomes nearly singular fails the condition check and says where, and B at that pose,
 // computed here by the numeric core, is as ill-conditioned as reported; bad input exits 2.
 // The CSV's torque columns (named, with units) sum to its Q columns row by row.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -16,6 +16,9 @@
 #include "core/io/scene_file.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
 #include "process_run.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_check_cli {
 
 using namespace ll;
 
@@ -152,5 +155,7 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestCheckCli)
+LL_TEST_GUILESS_MAIN(TestCheckCli)
+
+}  // namespace test_check_cli
 #include "test_check_cli.moc"

@@ -1,6 +1,6 @@
 // The command line, run as a user runs it: JSON from eval with the textbook values,
 // trajectories from simulate, one-line errors with exit code 2 for bad input.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -11,6 +11,9 @@
 #include <ginac/ginac.h>
 
 #include "core/model/utf8_text.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_cli {
 
 class TestCli : public QObject {
     Q_OBJECT
@@ -511,5 +514,7 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestCli)
+LL_TEST_GUILESS_MAIN(TestCli)
+
+}  // namespace test_cli
 #include "test_cli.moc"

@@ -1,6 +1,6 @@
 // The hard cases of examples/hard/: each scene states in its description the property
 // it must keep, and each test here checks that property on the scene file as shipped.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <QProcess>
 
@@ -17,6 +17,9 @@
 #include "core/simulation/integrators.hpp"
 #include "core/simulation/robot_ode.hpp"
 #include "core/pipeline/scene_simulation.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_hard_cases {
 
 using namespace ll;
 
@@ -361,5 +364,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestHardCases)
+LL_TEST_APPLESS_MAIN(TestHardCases)
+
+}  // namespace test_hard_cases
 #include "test_hard_cases.moc"

@@ -5,7 +5,7 @@
 // installed example, the program's own libraries (Debian's shared GiNaC), the man
 // page, the desktop entry and AppStream metainfo validated, and the scene MIME type
 // found for a .lagrange file through the installed MIME database.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <QDir>
 #include <QDirIterator>
@@ -20,6 +20,9 @@
 
 #include "core/io/scene_file.hpp"
 #include "process_run.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_install {
 
 using ll::test::ProcessRun;
 using ll::test::runProcess;
@@ -288,5 +291,7 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestInstall)
+LL_TEST_GUILESS_MAIN(TestInstall)
+
+}  // namespace test_install
 #include "test_install.moc"

@@ -3,7 +3,7 @@
 // on every example, with parameters and with numbers, every expression evaluated by GiNaC
 // here and by SymPy (tests/sympy_reader.py, skipped when python3-sympy is missing) at the
 // same values of its identifiers gives the same number; π is written pi.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <QProcess>
 #include <QTemporaryDir>
@@ -16,6 +16,9 @@
 #include <nlohmann/json.hpp>
 
 #include "process_run.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_json_expressions {
 
 namespace {
 
@@ -125,5 +128,7 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestJsonExpressions)
+LL_TEST_GUILESS_MAIN(TestJsonExpressions)
+
+}  // namespace test_json_expressions
 #include "test_json_expressions.moc"

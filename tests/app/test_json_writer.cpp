@@ -4,7 +4,7 @@
 // are the same bytes; invalid UTF-8 is refused by both; and the CLI's JSON of the 2R,
 // the expanded SCARA and the structured Panda (compact) reads back and dumps again to
 // exactly what the CLI wrote.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <cmath>
 #include <random>
@@ -13,6 +13,9 @@
 
 #include "core/present/json_writer.hpp"
 #include "process_run.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_json_writer {
 
 using ll::present::JsonWriter;
 using ordered = nlohmann::ordered_json;
@@ -182,5 +185,7 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestJsonWriter)
+LL_TEST_GUILESS_MAIN(TestJsonWriter)
+
+}  // namespace test_json_writer
 #include "test_json_writer.moc"

@@ -4,7 +4,7 @@
 // it LANGUAGE/LANG decide as Debian's tools read them; each notation profile's letters
 // in text, LaTeX and JSON for the 2R and the PUMA 560; every step title any example has
 // is in the Danish table; bad --lang and --notation values are refused with exit code 2.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <QProcess>
 #include <QFile>
@@ -16,6 +16,9 @@
 #include "core/model/diagnostics.hpp"
 #include "core/pipeline/scene_derivation.hpp"
 #include "core/present/language.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_language_cli {
 
 using namespace ll;
 
@@ -207,5 +210,7 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestLanguageCli)
+LL_TEST_GUILESS_MAIN(TestLanguageCli)
+
+}  // namespace test_language_cli
 #include "test_language_cli.moc"

@@ -8,7 +8,7 @@
 // naming a field, a simulation that cannot go on is exit 3, nothing else is thrown, no
 // non-finite number is ever a result, and an output file is whole or absent.
 // LL_FUZZ_CASES overrides the number of scenes (default 10000).
-#include <QtTest>
+#include "test_registry.hpp"
 #include <QDir>
 #include <QProcess>
 #include <QTemporaryDir>
@@ -26,6 +26,9 @@
 #include "core/pipeline/scene_simulation.hpp"
 #include "core/simulation/integrators.hpp"
 #include "scene_mutator.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_mutation_fuzz {
 
 using namespace ll;
 
@@ -377,5 +380,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestMutationFuzz)
+LL_TEST_APPLESS_MAIN(TestMutationFuzz)
+
+}  // namespace test_mutation_fuzz
 #include "test_mutation_fuzz.moc"

@@ -4,7 +4,7 @@
 // a finite value that overflows later (a spring's rest at 1e300) made eval print
 // "Epot": null with exit 0. Now the first is refused naming the field and the second
 // names the quantity; both exit 2 and print no result.
-#include <QtTest>
+#include "test_registry.hpp"
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -14,6 +14,9 @@
 #include "core/model/scene.hpp"
 #include "core/io/scene_file.hpp"
 #include "core/pipeline/scene_evaluation.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_number_range_cli {
 
 namespace {
 
@@ -160,5 +163,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestNumberRangeCli)
+LL_TEST_APPLESS_MAIN(TestNumberRangeCli)
+
+}  // namespace test_number_range_cli
 #include "test_number_range_cli.moc"

@@ -5,7 +5,7 @@
 // type through the system database, and `dpkg -r` leaving none of its files behind.
 // Skipped without dpkg-deb; the install part also when not root or when a lagrangelab
 // package is installed already (the test must not replace it).
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <QDir>
 #include <QStandardPaths>
@@ -14,6 +14,9 @@
 #include <unistd.h>
 
 #include "process_run.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_package {
 
 using ll::test::ProcessRun;
 using ll::test::runProcess;
@@ -141,5 +144,7 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestPackage)
+LL_TEST_GUILESS_MAIN(TestPackage)
+
+}  // namespace test_package
 #include "test_package.moc"

@@ -2,7 +2,7 @@
 // that change over time and show the robot, an MP4 checked with ffprobe, a GIF and a
 // still, the Lagrangian mass–spring pair's bodies, every bad option (exit 2, one line,
 // nothing written), and an interrupted render that leaves no file and no ffmpeg.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <QDir>
 #include <QImage>
@@ -12,6 +12,9 @@
 #include <csignal>
 
 #include "ui/paint/composite_frame.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_render_cli {
 
 class TestRenderCli : public QObject {
     Q_OBJECT
@@ -279,5 +282,7 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestRenderCli)
+LL_TEST_GUILESS_MAIN(TestRenderCli)
+
+}  // namespace test_render_cli
 #include "test_render_cli.moc"

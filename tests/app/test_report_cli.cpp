@@ -2,7 +2,7 @@
 // bundle names is there and reads back — the CSV's columns, units and values (E = E_kin +
 // E_pot in every row), the SVG plots (they render, with ink), the PDF, the scene's bytes
 // unchanged, the slide video's size and frame count (ffprobe) — and bad options exit 2.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <QDir>
 #include <QImage>
@@ -13,6 +13,9 @@
 
 #include "process_run.hpp"
 #include "ui/document/lab_report.hpp"  // the bundle's contents, as documented there
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_report_cli {
 
 class TestReportCli : public QObject {
     Q_OBJECT
@@ -121,5 +124,7 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestReportCli)
+LL_TEST_MAIN(TestReportCli)
+
+}  // namespace test_report_cli
 #include "test_report_cli.moc"

@@ -1,7 +1,7 @@
 // The structured form on the command line: `derive --form`, `--entry`, `--verify`,
 // `codegen --lang c|python` (the generated C compiled with cc, the Python run with
 // python3, both compared with `eval`), and one-line refusals with exit code 2.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -15,6 +15,9 @@
 
 #include "core/io/scene_file.hpp"
 #include "test_support.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_structured_cli {
 
 namespace {
 
@@ -385,5 +388,7 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestStructuredCli)
+LL_TEST_GUILESS_MAIN(TestStructuredCli)
+
+}  // namespace test_structured_cli
 #include "test_structured_cli.moc"

@@ -3,7 +3,7 @@
 // the same arguments, so an error added without its Danish line fails here, naming it; and
 // the program, given a bad option, prints the catalogue's line in Danish under --lang da or
 // LANGUAGE=da and its English line, unchanged, otherwise, with exit code 2.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <QProcess>
 #include <set>
@@ -13,6 +13,9 @@
 #include "process_run.hpp"
 #include "core/model/message.hpp"
 #include "core/present/message_text.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_usage_messages {
 
 using namespace ll;
 using cli::UsageId;
@@ -116,5 +119,7 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestUsageMessages)
+LL_TEST_GUILESS_MAIN(TestUsageMessages)
+
+}  // namespace test_usage_messages
 #include "test_usage_messages.moc"

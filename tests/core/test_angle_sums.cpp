@@ -1,6 +1,6 @@
 // angle_sums: the textbook examples, planar 3R and PUMA 560 kinematics, exactness at
 // random points, speed at PUMA size, and independence from symbol creation order.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <chrono>
 #include <random>
@@ -8,6 +8,9 @@
 
 #include "core/present/angle_sums.hpp"
 #include "core/present/expression_printer.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_angle_sums {
 
 using namespace ll::symbolic;
 using namespace ll::present;
@@ -257,5 +260,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestAngleSums)
+LL_TEST_APPLESS_MAIN(TestAngleSums)
+
+}  // namespace test_angle_sums
 #include "test_angle_sums.moc"

@@ -2,7 +2,7 @@
 // (the same B); a bare 90 in an angle field loads as radians with a warning naming the
 // field; degrees in a length are refused by field; look-alike characters and bytes that
 // are not UTF-8 are named by code point, and every message is valid UTF-8.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -20,6 +20,9 @@
 #include "core/symbolic/robot_derivation.hpp"
 #include "derivation_support.hpp"
 #include "test_support.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_angle_units {
 
 using namespace ll;
 using Json = nlohmann::ordered_json;
@@ -219,5 +222,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestAngleUnits)
+LL_TEST_APPLESS_MAIN(TestAngleUnits)
+
+}  // namespace test_angle_units
 #include "test_angle_units.moc"

@@ -1,7 +1,7 @@
 // Public core functions check argument sizes in every build: a worker fed a stale
 // state after a joint was deleted gets std::invalid_argument naming both sizes, not an
 // out-of-bounds write (the project builds Release, where asserts are off).
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <functional>
 #include <stdexcept>
@@ -21,6 +21,9 @@
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/lagrangian_derivation.hpp"
 #include "test_support.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_argument_checks {
 
 using namespace ll;
 
@@ -122,5 +125,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestArgumentChecks)
+LL_TEST_APPLESS_MAIN(TestArgumentChecks)
+
+}  // namespace test_argument_checks
 #include "test_argument_checks.moc"

@@ -1,7 +1,7 @@
 // The one atomic-save routine and its writers: the old file stays whole when writing
 // fails, no temporary file is left, permissions are kept, the .bak holds the previous
 // content when asked for; trajectories go through it too.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -10,6 +10,9 @@
 
 #include "core/io/atomic_file.hpp"
 #include "core/io/trajectory_file.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_atomic_file {
 
 using namespace ll;
 namespace fs = std::filesystem;
@@ -112,5 +115,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestAtomicFile)
+LL_TEST_APPLESS_MAIN(TestAtomicFile)
+
+}  // namespace test_atomic_file
 #include "test_atomic_file.moc"

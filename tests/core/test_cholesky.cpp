@@ -1,11 +1,14 @@
 // The small unblocked Cholesky against Eigen's LLT, its detection of matrices that
 // are not positive definite, and in-place solves with several right-hand sides.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <Eigen/Cholesky>
 
 #include "core/math/cholesky.hpp"
 #include "test_support.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_cholesky {
 
 using namespace ll;
 
@@ -67,5 +70,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestCholesky)
+LL_TEST_APPLESS_MAIN(TestCholesky)
+
+}  // namespace test_cholesky
 #include "test_cholesky.moc"

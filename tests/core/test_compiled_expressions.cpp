@@ -1,7 +1,7 @@
 // CompiledExpressions against GiNaC's own evalf on random expressions, the sharing of
 // common subexpressions and constant folding (counted instructions), the errors, and
 // the speed that is the point of it (measured, printed, and required to be large).
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -9,6 +9,9 @@
 #include <random>
 
 #include "core/symbolic/compiled_expressions.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_compiled_expressions {
 
 using namespace ll::symbolic;
 using GiNaC::ex;
@@ -195,5 +198,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestCompiledExpressions)
+LL_TEST_APPLESS_MAIN(TestCompiledExpressions)
+
+}  // namespace test_compiled_expressions
 #include "test_compiled_expressions.moc"

@@ -3,13 +3,16 @@
 // the independent RNEA:
 // since RNEA's bias h(v) = C(q, v) v is quadratic in v and the Christoffel C is
 // the symmetric bilinear form behind it, C(q, q̇) x = (h(q̇ + x) − h(q̇ − x)) / 4.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include "core/dynamics/coriolis.hpp"
 #include "core/dynamics/inverse_dynamics.hpp"
 #include "core/dynamics/mass_matrix.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
 #include "test_support.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_coriolis {
 
 using namespace ll;
 
@@ -155,5 +158,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestCoriolis)
+LL_TEST_APPLESS_MAIN(TestCoriolis)
+
+}  // namespace test_coriolis
 #include "test_coriolis.moc"

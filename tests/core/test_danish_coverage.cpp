@@ -4,7 +4,7 @@
 // added to the core without its Danish entry in core/present/language.cpp fails here,
 // naming it. (The window's strings are checked by tests/ui/test_danish_window against
 // the Qt catalogue.)
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <filesystem>
 #include <set>
@@ -14,6 +14,9 @@
 #include "core/pipeline/display_derivation.hpp"
 #include "core/present/language.hpp"
 #include "core/present/localized_document.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_danish_coverage {
 
 using namespace ll;
 namespace present = ll::present;
@@ -85,5 +88,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestDanishCoverage)
+LL_TEST_APPLESS_MAIN(TestDanishCoverage)
+
+}  // namespace test_danish_coverage
 #include "test_danish_coverage.moc"

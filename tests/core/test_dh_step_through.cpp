@@ -2,13 +2,16 @@
 // motion the frame is frame i−1 times the motions so far (rotations and translations
 // written here from their definitions), after all four it is frame i of forward
 // kinematics, for both conventions, revolute and prismatic joints, and the examples.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include "core/io/scene_file.hpp"
 #include "core/kinematics/dh_step_through.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
 #include "core/visual/dh_dimensions.hpp"
 #include "test_support.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_dh_step_through {
 
 using namespace ll;
 
@@ -150,5 +153,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestDhStepThrough)
+LL_TEST_APPLESS_MAIN(TestDhStepThrough)
+
+}  // namespace test_dh_step_through
 #include "test_dh_step_through.moc"

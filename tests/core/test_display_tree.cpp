@@ -2,7 +2,7 @@
 // 2R, the SCARA and the mass–spring Lagrangian come from one tree, so reading the
 // symbols and numbers back out of each string (independently: a Unicode reader and a
 // small LaTeX reader) gives the same sequence; the textbook's factored forms.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <QRegularExpression>
 #include <filesystem>
@@ -19,6 +19,9 @@
 #include "core/present/structured_display.hpp"
 #include "core/symbolic/structured_dynamics.hpp"
 #include "core/model/cancellation.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_display_tree {
 
 using namespace ll;
 using namespace ll::symbolic;
@@ -434,5 +437,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestDisplayTree)
+LL_TEST_APPLESS_MAIN(TestDisplayTree)
+
+}  // namespace test_display_tree
 #include "test_display_tree.moc"

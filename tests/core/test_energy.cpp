@@ -1,11 +1,14 @@
 // E_kin = ½ q̇ᵀ B q̇ against the sum over links ½(m v_cᵀ v_c + ωᵀ I ω) with
 // velocities from finite differences of the kinematics (no Jacobians, no B).
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include "core/dynamics/energy.hpp"
 #include "core/dynamics/mass_matrix.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
 #include "test_support.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_energy {
 
 using namespace ll;
 
@@ -40,5 +43,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestEnergy)
+LL_TEST_APPLESS_MAIN(TestEnergy)
+
+}  // namespace test_energy
 #include "test_energy.moc"

@@ -4,7 +4,7 @@
 // coordinates and velocities occur in them, and their values from the compiled tape
 // against the numeric dynamics (CRBA, Christoffel symbols, RNEA gravity: an independent
 // route) at states of a simulated run, in both forms.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <random>
 
@@ -17,6 +17,9 @@
 #include "core/pipeline/derivation_forms.hpp"
 #include "core/pipeline/display_derivation.hpp"
 #include "core/pipeline/scene_simulation.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_entry_catalogue {
 
 using namespace ll;
 
@@ -215,5 +218,7 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestEntryCatalogue)
+LL_TEST_GUILESS_MAIN(TestEntryCatalogue)
+
+}  // namespace test_entry_catalogue
 #include "test_entry_catalogue.moc"

@@ -1,5 +1,5 @@
 // ParameterTable: numeric fields written as expressions of named parameters.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <cmath>
 #include <limits>
@@ -9,6 +9,9 @@
 #include "core/symbolic/expression.hpp"
 #include "core/model/diagnostics.hpp"
 #include "test_support.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_expression {
 
 using namespace ll;
 
@@ -191,5 +194,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestExpression)
+LL_TEST_APPLESS_MAIN(TestExpression)
+
+}  // namespace test_expression
 #include "test_expression.moc"

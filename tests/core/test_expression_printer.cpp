@@ -1,7 +1,7 @@
 // expression_printer: golden strings for the planar 2R's B and C, every naming rule,
 // Plain output that GiNaC parses back to the same value, and an order that does not
 // depend on when GiNaC created the symbols.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <complex>
 #include <map>
@@ -11,6 +11,9 @@
 #include "core/present/angle_sums.hpp"
 #include "core/present/expression_printer.hpp"
 #include "core/present/textbook_form.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_expression_printer {
 
 using namespace ll::symbolic;
 using namespace ll::present;
@@ -418,5 +421,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestExpressionPrinter)
+LL_TEST_APPLESS_MAIN(TestExpressionPrinter)
+
+}  // namespace test_expression_printer
 #include "test_expression_printer.moc"

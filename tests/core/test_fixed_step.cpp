@@ -2,13 +2,16 @@
 // steps at t_k = k·dt, samples between steps by cubic Hermite interpolation, a last
 // shorter step only when the duration is not a multiple of dt, events still located
 // inside a step. Errors are measured against a tight dopri5 reference.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <boost/numeric/odeint.hpp>
 
 #include "core/io/scene_file.hpp"
 #include "core/simulation/robot_ode.hpp"
 #include "core/pipeline/scene_simulation.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_fixed_step {
 
 using namespace ll;
 
@@ -199,5 +202,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestFixedStep)
+LL_TEST_APPLESS_MAIN(TestFixedStep)
+
+}  // namespace test_fixed_step
 #include "test_fixed_step.moc"

@@ -1,6 +1,6 @@
 // Forward dynamics: the course notes' mass–spring pair, inverse(forward(τ)) = τ,
 // a singular B named by joint, and no heap allocation per evaluation.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <atomic>
 #include <cstdlib>
@@ -11,6 +11,8 @@
 #include "test_support.hpp"
 
 // Count every heap allocation in this process, to show that a dynamics evaluation makes none.
+// The replacement is the process's, so it counts for every test of tests/core's program;
+// it only counts, malloc and free do the work.
 static std::atomic<long> g_allocations{0};
 void* operator new(std::size_t size) {
     ++g_allocations;
@@ -19,6 +21,9 @@ void* operator new(std::size_t size) {
 }
 void operator delete(void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_forward_dynamics {
 
 using namespace ll;
 
@@ -103,5 +108,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestForwardDynamics)
+LL_TEST_APPLESS_MAIN(TestForwardDynamics)
+
+}  // namespace test_forward_dynamics
 #include "test_forward_dynamics.moc"

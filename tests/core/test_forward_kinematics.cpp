@@ -1,9 +1,12 @@
 // DH transforms against their definition as products of elementary motions, for
 // both conventions and both joint types.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include "core/kinematics/forward_kinematics.hpp"
 #include "test_support.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_forward_kinematics {
 
 using namespace ll;
 
@@ -79,5 +82,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestForwardKinematics)
+LL_TEST_APPLESS_MAIN(TestForwardKinematics)
+
+}  // namespace test_forward_kinematics
 #include "test_forward_kinematics.moc"

@@ -7,7 +7,7 @@
 // its computed cousins found by hand, "10^(10^10)", "((9^999)^999)^999" and
 // "factorial(10^8)" (hangs), an empty key and "tau*sin(I)" (each refused naming no
 // field).
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -18,6 +18,9 @@
 #include "core/symbolic/expression.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "fuzz/fuzz_support.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_fuzz_regressions {
 
 // The one line `text` is refused with in a DH cell (empty when it is accepted).
 QString refusal(const ll::ParameterTable& table, const char* text) {
@@ -233,5 +236,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestFuzzRegressions)
+LL_TEST_APPLESS_MAIN(TestFuzzRegressions)
+
+}  // namespace test_fuzz_regressions
 #include "test_fuzz_regressions.moc"

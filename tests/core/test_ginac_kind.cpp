@@ -2,7 +2,7 @@
 // GiNaC's own is_a on every kind of node the derivation and the display builder meet,
 // on the subclasses is_a also accepts (realsymbol, possymbol, fderivative), and on every
 // node of a derived model's expressions.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <ginac/ginac.h>
 
@@ -10,6 +10,9 @@
 #include "core/symbolic/ginac_kind.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/structured_dynamics.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_ginac_kind {
 
 using namespace ll::symbolic;
 using GiNaC::ex;
@@ -104,5 +107,7 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestGinacKind)
+LL_TEST_GUILESS_MAIN(TestGinacKind)
+
+}  // namespace test_ginac_kind
 #include "test_ginac_kind.moc"

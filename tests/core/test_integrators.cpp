@@ -1,11 +1,14 @@
 // Integrators: empirical convergence order of the fixed-step methods on a smooth
 // scene, adaptive methods meeting their tolerance, and bounded energy error of the
 // semi-implicit Euler on a long conservative run.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include "core/simulation/integrators.hpp"
 #include "core/simulation/robot_ode.hpp"
 #include "test_support.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_integrators {
 
 using namespace ll;
 
@@ -84,5 +87,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestIntegrators)
+LL_TEST_APPLESS_MAIN(TestIntegrators)
+
+}  // namespace test_integrators
 #include "test_integrators.moc"

@@ -1,5 +1,5 @@
 // RNEA against the Lagrangian form τ = B q̈ + C q̇ + g (two independent routes).
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include "core/dynamics/coriolis.hpp"
 #include "core/dynamics/potential_gradient.hpp"
@@ -7,6 +7,9 @@
 #include "core/dynamics/mass_matrix.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
 #include "test_support.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_inverse_dynamics {
 
 using namespace ll;
 
@@ -37,5 +40,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestInverseDynamics)
+LL_TEST_APPLESS_MAIN(TestInverseDynamics)
+
+}  // namespace test_inverse_dynamics
 #include "test_inverse_dynamics.moc"

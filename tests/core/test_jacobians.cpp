@@ -1,9 +1,12 @@
 // Geometric Jacobians against finite differences of the forward kinematics.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include "core/kinematics/forward_kinematics.hpp"
 #include "core/kinematics/jacobians.hpp"
 #include "test_support.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_jacobians {
 
 using namespace ll;
 
@@ -43,5 +46,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestJacobians)
+LL_TEST_APPLESS_MAIN(TestJacobians)
+
+}  // namespace test_jacobians
 #include "test_jacobians.moc"

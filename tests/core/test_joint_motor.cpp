@@ -2,7 +2,7 @@
 // The PUMA 560 with Corke's motors gives the Robotics Toolbox's inertia matrix; the
 // armature enters b_jj (CRBA and the Jacobian sum), RNEA, the energy and the symbolic
 // derivation exactly as the closed form b_jj + Jm G²; bad motor data is refused by field.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -22,6 +22,9 @@
 #include "core/symbolic/robot_derivation.hpp"
 #include "derivation_support.hpp"
 #include "test_support.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_joint_motor {
 
 using namespace ll;
 
@@ -223,5 +226,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestJointMotor)
+LL_TEST_APPLESS_MAIN(TestJointMotor)
+
+}  // namespace test_joint_motor
 #include "test_joint_motor.moc"

@@ -14,7 +14,7 @@
 //                                  wrist inertias of 1e-4 kg m² beside 3 kg m²), and
 //                                  KDL factors B by an unpivoted LDLᵀ, we by LLᵀ.
 // The test prints the largest error observed per quantity and robot.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -35,6 +35,9 @@
 #include "core/kinematics/forward_kinematics.hpp"
 #include "core/model/robot_data.hpp"
 #include "tests/oracle/kdl_chain.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_kdl_oracle {
 
 using namespace ll;
 
@@ -399,5 +402,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestKdlOracle)
+LL_TEST_APPLESS_MAIN(TestKdlOracle)
+
+}  // namespace test_kdl_oracle
 #include "test_kdl_oracle.moc"

@@ -2,7 +2,7 @@
 // hand-written planar 2R arm (relative and absolute angles) against the numeric
 // dynamics of core/dynamics, the Lagrange items against B q̈ + C q̇ + g, and every
 // input error with the field (and the position) it names.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <fstream>
 #include <sstream>
@@ -20,6 +20,9 @@
 #include "core/symbolic/derivation_evaluator.hpp"
 #include "core/symbolic/lagrangian_derivation.hpp"
 #include "test_support.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_lagrangian_derivation {
 
 using namespace ll;
 using namespace ll::symbolic;
@@ -424,5 +427,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestLagrangianDerivation)
+LL_TEST_APPLESS_MAIN(TestLagrangianDerivation)
+
+}  // namespace test_lagrangian_derivation
 #include "test_lagrangian_derivation.moc"

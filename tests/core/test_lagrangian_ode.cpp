@@ -3,7 +3,7 @@
 // the torque (energy conserved; E − E0 = W = τ Δθ2), against the same system as a robot
 // in relative angles, the elastic pendulum against its right-hand side written out,
 // and a clean stop where the chosen coordinates become dependent.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <chrono>
 #include <fstream>
@@ -19,6 +19,9 @@
 #include "core/symbolic/derivation_evaluator.hpp"
 #include "core/symbolic/lagrangian_derivation.hpp"
 #include "test_support.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_lagrangian_ode {
 
 using namespace ll;
 
@@ -183,5 +186,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestLagrangianOde)
+LL_TEST_APPLESS_MAIN(TestLagrangianOde)
+
+}  // namespace test_lagrangian_ode
 #include "test_lagrangian_ode.moc"

@@ -2,7 +2,7 @@
 // shares sum to the robot's own (with the motors' armature on b_jj and the springs left
 // to the joints), and link i's share of b_jk is the structured form's β_jk⁽ⁱ⁾, derived
 // symbolically and evaluated from its compiled tape (an independent route).
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <random>
 
@@ -15,6 +15,9 @@
 #include "core/kinematics/forward_kinematics.hpp"
 #include "core/pipeline/display_derivation.hpp"
 #include "test_support.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_link_contributions {
 
 using namespace ll;
 
@@ -105,5 +108,7 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestLinkContributions)
+LL_TEST_GUILESS_MAIN(TestLinkContributions)
+
+}  // namespace test_link_contributions
 #include "test_link_contributions.moc"

@@ -1,6 +1,6 @@
 // B(q): textbook closed form (planar 2R), CRBA against the independent Jacobian sum,
 // and its columns against Newton–Euler (symmetric and positive definite there).
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <Eigen/Eigenvalues>
 
@@ -8,6 +8,9 @@
 #include "core/dynamics/mass_matrix.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
 #include "test_support.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_mass_matrix {
 
 using namespace ll;
 
@@ -75,5 +78,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestMassMatrix)
+LL_TEST_APPLESS_MAIN(TestMassMatrix)
+
+}  // namespace test_mass_matrix
 #include "test_mass_matrix.moc"

@@ -2,7 +2,7 @@
 // words with the same arguments, so a message added to core/model/messages/*.def without
 // its line in core/present/danish/*.def fails here, naming it; and a message is turned
 // into words at the edge, each argument in the same language.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <set>
 #include <string>
@@ -11,6 +11,9 @@
 #include "core/model/message.hpp"
 #include "core/present/diagnostic_text.hpp"
 #include "core/present/message_text.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_message_catalogue {
 
 using namespace ll;
 namespace present = ll::present;
@@ -82,5 +85,7 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestMessageCatalogue)
+LL_TEST_GUILESS_MAIN(TestMessageCatalogue)
+
+}  // namespace test_message_catalogue
 #include "test_message_catalogue.moc"

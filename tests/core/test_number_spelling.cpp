@@ -4,7 +4,7 @@
 // machine integers (the independent implementation) on random rationals; and how one
 // number reads in each style (6 significant digits shown, 17 in Plain, exact rationals in
 // Plain, powers of ten apart).
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <numeric>
 #include <random>
@@ -13,6 +13,9 @@
 
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/present/number_spelling.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_number_spelling {
 
 using namespace ll::symbolic;
 using namespace ll::present;
@@ -148,5 +151,7 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestNumberSpelling)
+LL_TEST_GUILESS_MAIN(TestNumberSpelling)
+
+}  // namespace test_number_spelling
 #include "test_number_spelling.moc"

@@ -1,11 +1,14 @@
 // g(q) = ∂E_pot/∂q: planar 2R closed form, gradient of E_pot, springs, and only
 // declared effects.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include "core/dynamics/energy.hpp"
 #include "core/dynamics/potential_gradient.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
 #include "test_support.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_potential_gradient {
 
 using namespace ll;
 
@@ -80,5 +83,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestPotentialGradient)
+LL_TEST_APPLESS_MAIN(TestPotentialGradient)
+
+}  // namespace test_potential_gradient
 #include "test_potential_gradient.moc"

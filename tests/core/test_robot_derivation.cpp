@@ -1,7 +1,7 @@
 // The symbolic derivation against the numeric dynamics (an independent route: CRBA,
 // spatial Christoffel derivatives, RNEA) on every example, in every parameter mode,
 // and Ḃ − 2C skew-symmetric symbolically.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <filesystem>
 
@@ -18,6 +18,9 @@
 #include "core/symbolic/robot_derivation.hpp"
 #include "core/symbolic/trig_context.hpp"
 #include "test_support.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_robot_derivation {
 
 using namespace ll;
 using namespace ll::symbolic;
@@ -228,5 +231,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestRobotDerivation)
+LL_TEST_APPLESS_MAIN(TestRobotDerivation)
+
+}  // namespace test_robot_derivation
 #include "test_robot_derivation.moc"

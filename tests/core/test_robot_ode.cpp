@@ -2,7 +2,7 @@
 // evaluations, so "no gravity → g(q) is never computed, no friction → no friction code
 // runs" is checked by counting, not by looking at Q. The composed right-hand side must
 // still equal the reference pipeline forwardDynamics(Q from computeGeneralizedForces).
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include "core/dynamics/forward_dynamics.hpp"
 #include "core/io/scene_file.hpp"
@@ -10,6 +10,9 @@
 #include "core/simulation/integrators.hpp"
 #include "core/simulation/robot_ode.hpp"
 #include "test_support.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_robot_ode {
 
 using namespace ll;
 
@@ -117,5 +120,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestRobotOde)
+LL_TEST_APPLESS_MAIN(TestRobotOde)
+
+}  // namespace test_robot_ode
 #include "test_robot_ode.moc"

@@ -1,5 +1,5 @@
 // Scene files: parsing, error messages that name the field, round trips, atomic saving.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <unistd.h>
 
@@ -16,6 +16,9 @@
 #include "core/io/scene_file.hpp"
 #include "core/model/diagnostics.hpp"
 #include "test_support.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_scene_file {
 
 using namespace ll;
 namespace fs = std::filesystem;
@@ -721,5 +724,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestSceneFile)
+LL_TEST_APPLESS_MAIN(TestSceneFile)
+
+}  // namespace test_scene_file
 #include "test_scene_file.moc"

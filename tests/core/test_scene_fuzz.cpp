@@ -3,7 +3,7 @@
 // numbers replaced by strings with degree signs, look-alikes and broken UTF-8. Each
 // one either loads or is refused with InputError; nothing else is thrown, nothing
 // crashes, and every field and message is valid UTF-8.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -13,6 +13,9 @@
 #include "core/io/scene_file.hpp"
 #include "core/model/utf8_text.hpp"
 #include "core/simulation/scene_validation.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_scene_fuzz {
 
 using namespace ll;
 
@@ -116,5 +119,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestSceneFuzz)
+LL_TEST_APPLESS_MAIN(TestSceneFuzz)
+
+}  // namespace test_scene_fuzz
 #include "test_scene_fuzz.moc"

@@ -1,11 +1,14 @@
 // Simulation against physical laws: a conservative scene keeps E to the integrator's
 // tolerance; with friction and torques E(t) − E(0) equals the work of Q; friction
 // alone never increases E; cancellation and failures stop cleanly with partial data.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include "core/model/scene.hpp"
 #include "core/pipeline/scene_simulation.hpp"
 #include "test_support.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_simulate {
 
 using namespace ll;
 
@@ -123,5 +126,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestSimulate)
+LL_TEST_APPLESS_MAIN(TestSimulate)
+
+}  // namespace test_simulate
 #include "test_simulate.moc"

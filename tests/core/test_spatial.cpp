@@ -1,8 +1,11 @@
 // Spatial algebra identities the dynamics rely on, against their definitions.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include "core/math/spatial.hpp"
 #include "test_support.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_spatial {
 
 using namespace ll;
 
@@ -76,5 +79,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestSpatial)
+LL_TEST_APPLESS_MAIN(TestSpatial)
+
+}  // namespace test_spatial
 #include "test_spatial.moc"

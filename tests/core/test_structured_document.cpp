@@ -3,7 +3,7 @@
 // joints), and pdflatex compiles the PUMA 560's when it is installed; --steps selects
 // the names of those steps and the results they give; the JSON lists only the names
 // B, C, g need.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <QProcess>
 #include <QStandardPaths>
@@ -20,6 +20,9 @@
 #include "core/present/structured_document.hpp"
 #include "core/symbolic/structured_dynamics.hpp"
 #include "test_support.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_structured_document {
 
 using namespace ll;
 using namespace ll::symbolic;
@@ -358,5 +361,7 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestStructuredDocument)
+LL_TEST_GUILESS_MAIN(TestStructuredDocument)
+
+}  // namespace test_structured_document
 #include "test_structured_document.moc"

@@ -3,7 +3,7 @@
 // independent route) on every example, on examples with general DH twists (π/3, 0.3),
 // and on seeded random chains up to 10 joints; its ∂b_jk/∂q_l against finite
 // differences of the numeric B; Ḃ − 2C skew; cancellation.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <filesystem>
 
@@ -18,6 +18,9 @@
 #include "core/symbolic/robot_derivation.hpp"
 #include "core/symbolic/structured_dynamics.hpp"
 #include "test_support.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_structured_dynamics {
 
 using namespace ll;
 using namespace ll::symbolic;
@@ -388,5 +391,7 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestStructuredDynamics)
+LL_TEST_GUILESS_MAIN(TestStructuredDynamics)
+
+}  // namespace test_structured_dynamics
 #include "test_structured_dynamics.moc"

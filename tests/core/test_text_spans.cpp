@@ -2,7 +2,7 @@
 // text_document's spans, what the window's text view picks from a click): on the 2R,
 // the PUMA 560 and the Panda, every entry's span holds exactly that entry as the text
 // prints it — a block matrix's cell, or a listed entry's "b11 = …" line.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <sstream>
 
@@ -10,6 +10,9 @@
 #include "core/pipeline/display_derivation.hpp"
 #include "core/present/labels.hpp"
 #include "core/present/text_document.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_text_spans {
 
 using namespace ll;
 
@@ -78,5 +81,7 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestTextSpans)
+LL_TEST_GUILESS_MAIN(TestTextSpans)
+
+}  // namespace test_text_spans
 #include "test_text_spans.moc"

@@ -5,7 +5,7 @@
 //
 // Each concurrent result is compared with the same work done alone first, so a race
 // that corrupts an expression or a trajectory fails here even without the sanitizer.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <atomic>
 #include <chrono>
@@ -23,6 +23,9 @@
 #include "core/present/derivation_document.hpp"
 
 #include <nlohmann/json.hpp>
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_threads {
 
 using namespace ll;
 
@@ -230,5 +233,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestThreads)
+LL_TEST_APPLESS_MAIN(TestThreads)
+
+}  // namespace test_threads
 #include "test_threads.moc"

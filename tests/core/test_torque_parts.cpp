@@ -3,13 +3,16 @@
 // against the Christoffel C and the potential's gradient: ≤ 1e-9 of the largest part);
 // Q's parts are the declared effects' laws (viscous −b q̇, Coulomb against the motion);
 // the simple pendulum's parts are its closed forms m ℓ² q̈ and m g ℓ sin q.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <filesystem>
 
 #include "core/io/scene_file.hpp"
 #include "core/pipeline/scene_simulation.hpp"
 #include "core/simulation/torque_parts.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_torque_parts {
 
 using namespace ll;
 
@@ -102,5 +105,7 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestTorqueParts)
+LL_TEST_GUILESS_MAIN(TestTorqueParts)
+
+}  // namespace test_torque_parts
 #include "test_torque_parts.moc"

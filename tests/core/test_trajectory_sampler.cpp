@@ -1,12 +1,15 @@
 // Cubic Hermite sampling of a recorded trajectory: exact at the samples and for cubic
 // motions, fourth-order local error on a real simulation, frame times on the grid.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <cmath>
 
 #include "core/io/scene_file.hpp"
 #include "core/visual/trajectory_sampler.hpp"
 #include "core/pipeline/scene_simulation.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_trajectory_sampler {
 
 using namespace ll;
 
@@ -99,5 +102,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestTrajectorySampler)
+LL_TEST_APPLESS_MAIN(TestTrajectorySampler)
+
+}  // namespace test_trajectory_sampler
 #include "test_trajectory_sampler.moc"

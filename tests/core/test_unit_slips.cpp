@@ -3,7 +3,7 @@
 // factored says which kind it is: a joint that truly moves nothing (the published
 // UR5 table without inertias: add armature) or an ill-conditioned B (a COM typed
 // 1e6 too large: the slip is named, not "joint 4 moves no mass").
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -15,6 +15,9 @@
 #include "core/simulation/scene_validation.hpp"
 #include "core/pipeline/scene_simulation.hpp"
 #include "test_support.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_unit_slips {
 
 using namespace ll;
 using Json = nlohmann::ordered_json;
@@ -177,5 +180,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestUnitSlips)
+LL_TEST_APPLESS_MAIN(TestUnitSlips)
+
+}  // namespace test_unit_slips
 #include "test_unit_slips.moc"

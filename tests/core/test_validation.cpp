@@ -1,7 +1,7 @@
 // Physical validation on every example: each corrupted field gives an error that
 // names it; published parameter sets that break the triangle inequality warn and
 // still simulate; a joint that moves nothing is named.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <filesystem>
 
@@ -9,6 +9,9 @@
 #include "core/simulation/scene_validation.hpp"
 #include "core/pipeline/scene_simulation.hpp"
 #include "test_support.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_validation {
 
 using namespace ll;
 
@@ -104,5 +107,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestValidation)
+LL_TEST_APPLESS_MAIN(TestValidation)
+
+}  // namespace test_validation
 #include "test_validation.moc"

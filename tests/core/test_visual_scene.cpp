@@ -2,7 +2,7 @@
 // (frames, links, joints, COMs, end effector), prismatic bars follow q, sizes scale
 // with the reach, up is −gravity, Lagrangian bodies follow their expressions, the
 // bounds hold the motion and the camera sees all of them.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <cmath>
 
@@ -14,6 +14,9 @@
 #include "core/pipeline/scene_visual.hpp"
 #include "core/visual/visual_scene.hpp"
 #include "core/pipeline/scene_simulation.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_visual_scene {
 
 using namespace ll;
 
@@ -263,5 +266,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestVisualScene)
+LL_TEST_APPLESS_MAIN(TestVisualScene)
+
+}  // namespace test_visual_scene
 #include "test_visual_scene.moc"

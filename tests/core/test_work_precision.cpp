@@ -1,10 +1,13 @@
 // The work–precision analysis as a core API: plain-data results whose numbers obey the
 // theory (fixed-step errors fall as dt^order, adaptive ones meet their tolerance, cost
 // rises as the error falls), progress and cancellation, failures recorded per point.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include "core/io/scene_file.hpp"
 #include "core/pipeline/scene_simulation.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_work_precision {
 
 using namespace ll;
 
@@ -145,5 +148,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestWorkPrecision)
+LL_TEST_APPLESS_MAIN(TestWorkPrecision)
+
+}  // namespace test_work_precision
 #include "test_work_precision.moc"

@@ -6,7 +6,7 @@
 // another scene that was asked for; a warning when the file changed on disk since; two
 // windows on one scene with a copy each; copies cut short or empty set aside, never
 // half-loaded.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <QApplication>
 #include <QDir>
@@ -28,6 +28,9 @@
 #include "window_waits.hpp"
 #include "ui/window/autosave.hpp"
 #include "ui/window/model_editor.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_crash_recovery_window {
 
 using namespace ll::ui;
 
@@ -55,7 +58,8 @@ std::unique_ptr<QProcess> editedWindow(const QString& scene, const QString& reco
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
     env.insert("LAGRANGELAB_RECOVERY_DIR", recoveryDir);
     p->setProcessEnvironment(env);
-    p->start(QCoreApplication::applicationFilePath(), {"--recovery-child", scene});
+    // This test's program holds every ui test: the test's name comes first.
+    p->start(QCoreApplication::applicationFilePath(), {"test_crash_recovery_window", "--recovery-child", scene});
     return p;
 }
 
@@ -241,11 +245,13 @@ private slots:
     }
 };
 
-int main(int argc, char** argv) {
+static int runCrashRecoveryWindow(int argc, char** argv) {
     QApplication app(argc, argv);
     if (argc == 3 && QByteArray(argv[1]) == "--recovery-child") return recoveryChild(QString::fromLocal8Bit(argv[2]));
     TestCrashRecoveryWindow test;
     return QTest::qExec(&test, argc, argv);
 }
+LL_TEST_PROGRAM(runCrashRecoveryWindow)
 
+}  // namespace test_crash_recovery_window
 #include "test_crash_recovery_window.moc"

@@ -4,7 +4,7 @@
 // unfinished or obsolete entries and is up to date with the sources (lupdate finds
 // nothing new); switching language or notation relabels the derivation on screen without
 // deriving it again.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <QAbstractButton>
 #include <QApplication>
@@ -31,6 +31,9 @@
 #include "ui/window/main_window.hpp"
 #include "window_waits.hpp"
 #include "ui/window/language_menu.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_danish_window {
 
 using ll::ui::MainWindow;
 namespace present = ll::present;
@@ -250,5 +253,7 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestDanishWindow)
+LL_TEST_MAIN(TestDanishWindow)
+
+}  // namespace test_danish_window
 #include "test_danish_window.moc"

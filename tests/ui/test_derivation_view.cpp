@@ -1,13 +1,16 @@
 // DerivationView: derives in a worker thread (the newest scene wins), steps through 0–8
 // with Previous/Next and stepChanged, titles and copies an item as LaTeX, and paints
 // typeset math.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <QApplication>
 #include <QSignalSpy>
 
 #include "core/io/scene_file.hpp"
 #include "ui/window/derivation_view.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_derivation_view {
 
 using namespace ll;
 
@@ -81,10 +84,13 @@ private slots:
     }
 };
 
-int main(int argc, char** argv) {
+static int runDerivationView(int argc, char** argv) {
     if (qEnvironmentVariableIsEmpty("DISPLAY")) qputenv("QT_QPA_PLATFORM", "offscreen");
     QApplication app(argc, argv);
     TestDerivationView test;
     return QTest::qExec(&test, argc, argv);
 }
+LL_TEST_PROGRAM(runDerivationView)
+
+}  // namespace test_derivation_view
 #include "test_derivation_view.moc"

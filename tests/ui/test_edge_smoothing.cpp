@@ -3,7 +3,7 @@
 // half-planes are compared with their exact coverage (integrated here by 16x16
 // sub-samples, independently of the filter), and a real render with and without the
 // filter is compared with the same render at 4x MSAA.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <cmath>
 
@@ -16,6 +16,9 @@
 #include "ui/paint/edge_smoothing.hpp"
 #include "ui/paint/headless_renderer.hpp"
 #include "ui/paint/osg_scene.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_edge_smoothing {
 
 using namespace ll;
 
@@ -137,5 +140,7 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestEdgeSmoothing)
+LL_TEST_GUILESS_MAIN(TestEdgeSmoothing)
+
+}  // namespace test_edge_smoothing
 #include "test_edge_smoothing.moc"

@@ -8,7 +8,7 @@
 // every 25th valid state saved and opened again gives the same model; every 250 edits the
 // workers settle on the newest valid scene (never a stale one); at the end undoing every
 // edit gives the original JSON byte for byte.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <QApplication>
 #include <QDir>
@@ -24,6 +24,9 @@
 #include "ui/window/main_window.hpp"
 #include "window_waits.hpp"
 #include "ui/window/model_editor.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_edit_fuzz_window {
 
 using namespace ll;
 using namespace ll::ui;
@@ -202,5 +205,7 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestEditFuzzWindow)
+LL_TEST_MAIN(TestEditFuzzWindow)
+
+}  // namespace test_edit_fuzz_window
 #include "test_edit_fuzz_window.moc"

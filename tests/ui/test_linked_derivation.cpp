@@ -3,7 +3,7 @@
 // links that feed it in 3D and nothing else; its value at a time of the run is `eval`'s
 // (a separate process) at the trajectory's state then; a link clicked marks the entries it
 // feeds and selects its inertials row; the Torques and Properties tabs fill from the run.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <set>
 
@@ -29,6 +29,9 @@
 #include "ui/window/scene_view.hpp"
 #include "ui/window/torque_pane.hpp"
 #include "ui/window/trajectory_chart.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_linked_derivation {
 
 using ll::ui::MainWindow;
 
@@ -263,5 +266,7 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestLinkedDerivation)
+LL_TEST_MAIN(TestLinkedDerivation)
+
+}  // namespace test_linked_derivation
 #include "test_linked_derivation.moc"

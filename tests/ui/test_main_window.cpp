@@ -1,7 +1,7 @@
 // The desktop window under a real X server (ctest runs it under xvfb-run): edits go
 // through the editor's item model as a keystroke would, and the test reads back the
 // model, the derivation, the scene drawn in 3D, the plots and the pixels of the window.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <QApplication>
 #include <QFile>
@@ -54,6 +54,9 @@
 #include "ui/window/teach_panel.hpp"
 #include "ui/window/trajectory_chart.hpp"
 #include "ui/window/work_precision_pane.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_main_window {
 
 using ll::ui::JointTableModel;
 using ll::ui::MainWindow;
@@ -1514,5 +1517,7 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestMainWindow)
+LL_TEST_MAIN(TestMainWindow)
+
+}  // namespace test_main_window
 #include "test_main_window.moc"

@@ -5,7 +5,7 @@
 // renders non-blank (pdftoppm), SVG and PNG are non-blank, bad input exits 2 in one line;
 // long sums are cut at any depth; a PDF laid out on a second thread has every page, in
 // order, with one text object per font of a formula.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <QApplication>
 #include <QImage>
@@ -19,6 +19,9 @@
 #include "ui/paint/derivation_pages.hpp"
 #include "ui/paint/math_typesetter.hpp"
 #include "pdf_streams.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_math_typesetter {
 
 using namespace ll;
 using namespace ll::symbolic;
@@ -631,10 +634,13 @@ private slots:
     }
 };
 
-int main(int argc, char** argv) {
+static int runMathTypesetter(int argc, char** argv) {
     if (qEnvironmentVariableIsEmpty("DISPLAY")) qputenv("QT_QPA_PLATFORM", "offscreen");
     QApplication app(argc, argv);
     TestMathTypesetter test;
     return QTest::qExec(&test, argc, argv);
 }
+LL_TEST_PROGRAM(runMathTypesetter)
+
+}  // namespace test_math_typesetter
 #include "test_math_typesetter.moc"

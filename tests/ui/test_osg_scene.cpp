@@ -2,7 +2,7 @@
 // effector of the planar 2R arm drawn at time t sits where forward kinematics of the
 // trajectory sampled at t puts it — in the node's transform, and in the picture (its
 // red sphere at the projected pixel).
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include "core/io/scene_file.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
@@ -14,6 +14,9 @@
 #include "core/pipeline/scene_simulation.hpp"
 #include "ui/paint/headless_renderer.hpp"
 #include "ui/paint/osg_scene.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_osg_scene {
 
 using namespace ll;
 
@@ -172,5 +175,7 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestOsgScene)
+LL_TEST_GUILESS_MAIN(TestOsgScene)
+
+}  // namespace test_osg_scene
 #include "test_osg_scene.moc"

@@ -6,7 +6,7 @@
 // Every PDF is compared with the same document written alone first: its page count and
 // every stream inflated (each glyph's position, the font subsets), so a race that drops,
 // reorders or corrupts a page fails here even without the sanitizer.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <QGuiApplication>
 #include <QDir>
@@ -21,6 +21,9 @@
 #include "ui/paint/derivation_pages.hpp"
 #include "ui/paint/math_typesetter.hpp"
 #include "pdf_streams.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_pdf_threads {
 
 using namespace ll;
 
@@ -150,10 +153,13 @@ private slots:
     }
 };
 
-int main(int argc, char** argv) {
+static int runPdfThreads(int argc, char** argv) {
     qputenv("QT_QPA_PLATFORM", "offscreen");
     QGuiApplication app(argc, argv);
     TestPdfThreads test;
     return QTest::qExec(&test, argc, argv);
 }
+LL_TEST_PROGRAM(runPdfThreads)
+
+}  // namespace test_pdf_threads
 #include "test_pdf_threads.moc"

@@ -6,7 +6,7 @@
 // margin (memory +25 % + 40 MB; threads +2; files +4; graph objects +10 %), and the
 // workers never pile up (at most one request pending at a sample). The figures are
 // printed, and with LL_SOAK_REPORT=FILE written as CSV.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <QApplication>
 #include <QDir>
@@ -23,6 +23,9 @@
 #include "ui/window/model_editor.hpp"
 #include "ui/window/playback_bar.hpp"
 #include "ui/window/scene_view.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_soak_window {
 
 using namespace ll::ui;
 
@@ -151,5 +154,7 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestSoakWindow)
+LL_TEST_MAIN(TestSoakWindow)
+
+}  // namespace test_soak_window
 #include "test_soak_window.moc"

@@ -4,7 +4,7 @@
 // the same ink in the same places, for every page of the 2R and the SCARA. And the file's
 // structure: well-formed XML, each outline defined once, every <use> naming a defined
 // outline, one <use> per drawn glyph and one rectangle per rule.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <QGuiApplication>
 #include <QImage>
@@ -20,6 +20,9 @@
 #include "ui/paint/derivation_pages.hpp"
 #include "ui/paint/math_typesetter.hpp"
 #include "ui/paint/svg_page.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_svg_page {
 
 using namespace ll;
 
@@ -241,11 +244,13 @@ private slots:
     }
 };
 
-int main(int argc, char** argv) {
+static int runSvgPage(int argc, char** argv) {
     if (qEnvironmentVariableIsEmpty("DISPLAY")) qputenv("QT_QPA_PLATFORM", "offscreen");
     QGuiApplication app(argc, argv);
     TestSvgPage test;
     return QTest::qExec(&test, argc, argv);
 }
+LL_TEST_PROGRAM(runSvgPage)
 
+}  // namespace test_svg_page
 #include "test_svg_page.moc"

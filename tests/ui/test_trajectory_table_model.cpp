@@ -1,11 +1,14 @@
 // The Qt item model shows exactly the simulated samples, headed by the coordinates' names.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include "core/pipeline/scene_simulation.hpp"
 #include "core/io/scene_file.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "test_support.hpp"
 #include "ui/document/trajectory_table_model.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_trajectory_table_model {
 
 using namespace ll;
 
@@ -51,5 +54,7 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestTrajectoryTableModel)
+LL_TEST_APPLESS_MAIN(TestTrajectoryTableModel)
+
+}  // namespace test_trajectory_table_model
 #include "test_trajectory_table_model.moc"

@@ -3,13 +3,16 @@
 // labels overlap (every 2nd or 3rd decade is labelled when the decades are close), and
 // at the size of a saved plot every decade is labelled. The labels are the boxes the
 // painter reports for what it drew.
-#include <QtTest>
+#include "test_registry.hpp"
 
 #include <QApplication>
 #include <QImage>
 #include <QPainter>
 
 #include "ui/paint/work_precision_plot.hpp"
+
+// A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
+namespace test_work_precision_plot {
 
 using namespace ll;
 
@@ -76,5 +79,7 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestWorkPrecisionPlot)
+LL_TEST_MAIN(TestWorkPrecisionPlot)
+
+}  // namespace test_work_precision_plot
 #include "test_work_precision_plot.moc"
