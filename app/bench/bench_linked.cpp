@@ -45,7 +45,7 @@ int linked(const std::vector<std::string>& scenes, int runs) {
             plain.push_back(ms(t0, t1));
             withCatalogue.push_back(ms(t1, t2));
             catalogue = b.catalogue;
-            form = b.display->form;
+            form = b.display->form.english();
         }
         const SimulationInput input = prepareSimulation(scene);
         const SimulationResult run = ll::simulate(input, scene.simulation);

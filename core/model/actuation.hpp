@@ -7,13 +7,16 @@
 #include <string>
 #include <vector>
 
+#include "core/model/message.hpp"
+
 namespace ll {
 
-// The sentence's words; English unless a reader's language gives others
-// (core/present/localized_document.cpp).
+// The sentence's words: the English of their message ids (core/model/messages/document.def)
+// unless a reader's language gives others (core/present/localized_document.cpp).
 struct ActuationWords {
-    std::string noInputs = "no inputs", inputsOn = "inputs on", underactuated = "underactuated",
-                fullyActuated = "fully actuated";
+    std::string noInputs = englishWords(MessageId::ActuationNoInputs), inputsOn = englishWords(MessageId::ActuationInputsOn),
+                underactuated = englishWords(MessageId::ActuationUnderactuated),
+                fullyActuated = englishWords(MessageId::ActuationFullyActuated);
 };
 
 // actuated: 0-based coordinates with an input; coordinateNames: all n coordinates.

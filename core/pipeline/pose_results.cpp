@@ -114,7 +114,7 @@ present::DisplayStep teachMatrices(const Scene& scene, const Eigen::VectorXd& q)
     const auto revolute = [&](int j) { return scene.robot.joints[static_cast<std::size_t>(j)].dh.type == JointType::Revolute; };
     present::DisplayStep step;
     step.number = poseStepNumber;
-    step.title = "B(q), g(q) and E_pot at the pose";
+    step.title = MessageId::TitlePoseMatrices;
     step.items.push_back(item("E_pot", present::Quantity::PotentialEnergy, "E_{\\mathrm{pot}}",
                               withUnit(number(potentialEnergy(scene.robot, data, scene.effects, q)), "J"), ""));
     step.items.push_back(item("g", present::Quantity::GravityVector, "g(q)",
@@ -142,7 +142,7 @@ present::DisplayStep poseResults(const Scene& scene, const Eigen::VectorXd& q, c
 
     present::DisplayStep step;
     step.number = poseStepNumber;
-    step.title = "The results at the teach pose";
+    step.title = MessageId::TitlePoseResults;
     step.formulaText = "The mass matrix, the Coriolis matrix, the gravity vector and the energies of steps 6 to 8 "
                        "evaluated at the pose of the teach sliders, with the scene's initial joint velocities";
     step.formulaLatex = "B(q),\\ C(q,\\dot q),\\ g(q),\\ E_{\\mathrm{kin}},\\ E_{\\mathrm{pot}} \\text{ at this } q, \\dot q";

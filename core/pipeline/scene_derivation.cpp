@@ -48,7 +48,7 @@ DerivedDocument deriveDocument(const Scene& scene, const DocumentRequest& reques
     const auto printing = std::chrono::steady_clock::now();
     if (request.format == present::DocumentFormat::Display) {
         auto display = present::displayDocument(d, request.cancel, request.forPages);
-        display->form = request.form.form;
+        display->form = present::formName(request.form.form);
         display->formReason = request.form.reason;
         if (request.catalogue) out.catalogue = expandedCatalogue(scene, d, *display);
         out.display = std::move(display);
@@ -56,7 +56,7 @@ DerivedDocument deriveDocument(const Scene& scene, const DocumentRequest& reques
         out.document = present::derivationDocument(d, request.format, modeName(request.mode), request.form, request.presentation);
     }
     out.printSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - printing).count();
-    for (const symbolic::DerivationStep& step : d.steps) out.timings.push_back({step.number, step.title, step.seconds});
+    for (const symbolic::DerivationStep& step : d.steps) out.timings.push_back({step.number, step.title.english(), step.seconds});
     out.warnings = d.warnings;
     return out;
 }

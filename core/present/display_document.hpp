@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/model/message.hpp"
 #include "core/present/display_tree.hpp"
 #include "core/present/language.hpp"
 #include "core/present/notation.hpp"
@@ -32,7 +33,8 @@ struct DisplayItem {
 
 struct DisplayStep {
     int number = 0;
-    std::string title, formulaText, formulaLatex;
+    Message title;  // in words where it is shown, in the document's language (message_text.hpp)
+    std::string formulaText, formulaLatex;
     std::vector<DisplayItem> items;
     double seconds = 0.0;
     DisplayPtr formula;  // the general formula typeset (null: only formulaText)
@@ -50,7 +52,7 @@ struct DisplayDocument {
     }
     std::string actuation;   // "inputs on q1, q2 …", the coordinates as the results show them (θ2)
     std::string actuationLatex;  // the same with the coordinates as LaTeX ($\theta_{2}$)
-    std::string form;        // "expanded" or "structured" when a form was chosen (empty: not said)
+    Message form;            // FormExpanded or FormStructured when a form was chosen (empty: not said)
     std::string formReason;  // why that form
     // As localized_document.hpp wrote it: the language of its words, the notation of its
     // letters, and what that needs (which coordinates have inputs, a robot's coordinates
@@ -59,9 +61,10 @@ struct DisplayDocument {
     Notation notation = Notation::Notes;
     std::vector<int> actuated;
     bool actuationFromInputs = false;  // `actuation` is the sentence made from `actuated` (else a fixed text)
+    Message actuationNote;   // the fixed text when not from the inputs (the structured form's); localizedDocument words it into `actuation`
     bool robot = false;
     bool modifiedDH = false;
-    std::string remark;      // said once about the notation (Craig's goes with modified DH); may be empty
+    Message remark;          // said once about the notation (Craig's goes with modified DH); may be empty
 };
 
 }  // namespace ll::present

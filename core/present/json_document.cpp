@@ -2,6 +2,7 @@
 
 #include "core/present/json_writer.hpp"
 #include "core/present/latex_document.hpp"
+#include "core/present/message_text.hpp"
 #include "core/present/text_document.hpp"
 
 namespace ll::present {
@@ -32,7 +33,7 @@ std::string jsonDocument(const DisplayDocument& document, const ModelSummary& mo
     json.member("system", document.systemName);
     json.member("mode", model.mode);
     if (!document.form.empty()) {
-        json.member("form", document.form);
+        json.member("form", messageText(document.form, document.language));
         json.member("form_reason", document.formReason);
     }
     json.member("coordinates", document.coordinateNames);
@@ -41,7 +42,7 @@ std::string jsonDocument(const DisplayDocument& document, const ModelSummary& mo
     for (const DisplayStep& step : document.steps) {
         json.beginObject();
         json.member("number", step.number);
-        json.member("title", step.title);
+        json.member("title", messageText(step.title, document.language));
         json.key("formula");
         json.beginObject();
         json.member("text", step.formulaText);

@@ -2,74 +2,11 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <map>
 #include <utility>
 #include <vector>
 
 namespace ll::present {
 namespace {
-
-// English → Danish, the register of a Danish engineering course (docs/glossary-da.md).
-const std::map<std::string, std::string>& danish() {
-    static const std::map<std::string, std::string> table = {
-        // step titles (core/symbolic/robot_derivation.cpp, lagrangian_derivation.cpp, core/pipeline/pose_results.cpp)
-        {"DH parameters (standard convention)", "DH-parametre (standardkonvention)"},
-        {"DH parameters (modified convention)", "DH-parametre (modificeret konvention)"},
-        {"Kinematic model", "Kinematisk model"},
-        {"Centres of mass", "Massemidtpunkter"},
-        {"Angular velocities", "Vinkelhastigheder"},
-        {"Velocities of the centres of mass", "Massemidtpunkternes hastigheder"},
-        {"Link inertia tensors in the base frame", "Linkenes inertitensorer i basiskoordinatsystemet"},
-        {"Potential energy", "Potentiel energi"},
-        {"Kinetic energy and the mass matrix", "Kinetisk energi og massematricen"},
-        {"Equations of motion (Lagrange-d'Alembert)", "Bevægelsesligninger (Lagrange–d'Alembert)"},
-        {"Generalized coordinates", "Generaliserede koordinater"},
-        {"B(q), g(q) and E_pot at the pose", "B(q), g(q) og E_pot i stillingen"},
-        {"The results at the teach pose", "Resultaterne i teach-stillingen"},
-        // the structured form's sections (core/present/structured_display.cpp, structured_document.cpp)
-        {"Kinematic model: frames in each link's own frame", "Kinematisk model: koordinatsystemerne i hvert links eget koordinatsystem"},
-        {"Jacobian columns of the centres of mass", "Jacobi-søjler for massemidtpunkterne"},
-        {"Potential energy and g", "Potentiel energi og g"},
-        {"Kinetic energy: the mass matrix as sums", "Kinetisk energi: massematricen som summer"},
-        {"Equations of motion: C from the derivatives of B", "Bevægelsesligninger: C ud fra de afledte af B"},
-        {"Q holds the declared non-conservative forces (friction, torques).",
-         "Q indeholder de angivne ikke-konservative kræfter (friktion, momenter)."},
-        {"Kinematic model: the axes x_f, y_f, z_f and origin o_f of every frame f, in each link's own frame",
-         "Kinematisk model: akserne x_f, y_f, z_f og origo o_f for hvert koordinatsystem f, i hvert links eget koordinatsystem"},
-        {"Jacobian columns J_P,j^(i) of each centre of mass, in its link's frame (J_O,j^(i) = z of joint j's axis)",
-         "Jacobi-søjler J_P,j^(i) for hvert massemidtpunkt, i dets links koordinatsystem (J_O,j^(i) = z for led j's akse)"},
-        {"Potential energy: gamma_j^(i) = g0 . J_P,j^(i), so g_j = dE_pot/dq_j = -sum_{i>=j} m_i gamma_j^(i)",
-         "Potentiel energi: gamma_j^(i) = g0 . J_P,j^(i), så g_j = dE_pot/dq_j = -sum_{i>=j} m_i gamma_j^(i)"},
-        {"Mass matrix: beta_jk^(i) = m_i J_P,j^(i) . J_P,k^(i) + z_j^T I_i z_k, b_jk = sum_{i>=max(j,k)} beta_jk^(i)",
-         "Massematrix: beta_jk^(i) = m_i J_P,j^(i) . J_P,k^(i) + z_j^T I_i z_k, b_jk = sum_{i>=max(j,k)} beta_jk^(i)"},
-        {"Christoffel symbols: d b_jk / d q_l by the Jacobian identities (zero for l <= min(j,k))",
-         "Christoffel-symboler: d b_jk / d q_l ud fra Jacobi-identiteterne (nul for l <= min(j,k))"},
-        // document words (text_document, latex_document, ui/derivation_pages)
-        {"Step", "Trin"},
-        {"Actuation", "Aktuering"},
-        {"Form", "Form"},
-        {"Shorthand", "Notation"},
-        {"Euler–Lagrange model", "Euler–Lagrange-model"},
-        {"Euler–Lagrange derivation", "Euler–Lagrange-udledning"},
-        {"the joint velocities and accelerations", "ledhastighederne og -accelerationerne"},
-        {"the joint velocities", "ledhastighederne"},
-        {"entry by entry", "element for element"},
-        {"the zeros left out", "nullerne udeladt"},
-        {"expanded", "ekspanderet"},
-        {"structured", "struktureret"},
-        // the actuation sentence (core/model/actuation.cpp)
-        {"no inputs", "ingen input"},
-        {"inputs on", "input på"},
-        {"underactuated", "underaktueret"},
-        {"fully actuated", "fuldt aktueret"},
-        // the notation profile's remark
-        {"Craig's notation goes with modified DH parameters; this robot is given in the standard convention",
-         "Craigs notation hører til modificerede DH-parametre; denne robot er givet i standardkonventionen"},
-        {"this notation goes with standard DH parameters; this robot is given in the modified convention",
-         "denne notation hører til standard-DH-parametre; denne robot er givet i den modificerede konvention"},
-    };
-    return table;
-}
 
 // Phrases inside longer texts, longest first where one contains another.
 const std::vector<std::pair<std::string, std::string>>& danishPhrases() {
@@ -168,13 +105,6 @@ Language languageFromEnvironment() {
     for (const char* variable : {"LC_ALL", "LC_MESSAGES", "LANG"})
         if (const char* value = std::getenv(variable); value && *value) return languageNamed(value).value_or(Language::English);
     return Language::English;
-}
-
-std::string translated(const std::string& english, Language language) {
-    if (language == Language::English) return english;
-    const auto& table = danish();
-    const auto it = table.find(english);
-    return it != table.end() ? it->second : english;
 }
 
 std::string replacedInOrder(std::string text, const std::vector<std::pair<std::string, std::string>>& pairs) {

@@ -6,6 +6,7 @@
 #include "core/present/labels.hpp"
 #include "core/present/latex_formula.hpp"
 #include "core/present/latex_text.hpp"
+#include "core/present/message_text.hpp"
 #include "core/present/symbol_names.hpp"
 
 namespace ll::present {
@@ -98,11 +99,16 @@ std::string massMatrixSum(const NotationSymbols& n) {
            R"() = \sum_i \left(m_i\, J_{P,i}^T J_{P,i} + J_{O,i}^T R_i\, I_{li}\, R_i^T J_{O,i}\right))";
 }
 
+Message formName(const std::string& form) {
+    if (form == "expanded") return MessageId::FormExpanded;
+    if (form == "structured") return MessageId::FormStructured;
+    return literal(form);
+}
+
 std::string actuationSentence(const std::vector<int>& actuated, const std::vector<std::string>& coordinates, Language language) {
-    const ActuationWords english;
     return actuationText(actuated, coordinates,
-                         {translated(english.noInputs, language), translated(english.inputsOn, language),
-                          translated(english.underactuated, language), translated(english.fullyActuated, language)});
+                         {messageText(MessageId::ActuationNoInputs, language), messageText(MessageId::ActuationInputsOn, language),
+                          messageText(MessageId::ActuationUnderactuated, language), messageText(MessageId::ActuationFullyActuated, language)});
 }
 
 std::shared_ptr<DisplayDocument> localizedDocument(const DisplayDocument& document, const Presentation& p) {
@@ -112,7 +118,6 @@ std::shared_ptr<DisplayDocument> localizedDocument(const DisplayDocument& docume
     const NotationSymbols& n = notationSymbols(p.notation);
     const bool letters = p.notation != Notation::Notes, rename = document.robot && n.coordinate != "q";
     for (DisplayStep& step : out->steps) {
-        step.title = translated(step.title, p.language);
         const std::string latexBefore = step.formulaLatex;
         if (letters && (step.number == 7 || step.number == 8)) {
             step.formulaLatex = replacedInOrder(step.formulaLatex, latexLetters(n, document.robot));
@@ -136,15 +141,12 @@ std::shared_ptr<DisplayDocument> localizedDocument(const DisplayDocument& docume
             if (p.language != Language::English) item.note = translatedPhrases(item.note, p.language);
         }
     }
-    out->form = translated(document.form, p.language);
     out->formReason = translatedPhrases(document.formReason, p.language);
-    out->remark.clear();
+    out->remark = {};
     if (document.robot && letters && n.modifiedDH != document.modifiedDH)
-        out->remark = translated(n.modifiedDH ? "Craig's notation goes with modified DH parameters; this robot is given in the standard convention"
-                                              : "this notation goes with standard DH parameters; this robot is given in the modified convention",
-                                 p.language);
+        out->remark = n.modifiedDH ? MessageId::RemarkCraigNeedsModifiedDh : MessageId::RemarkNotationNeedsStandardDh;
     if (!document.actuationFromInputs) {  // a fixed text (the structured form's)
-        out->actuation = translated(document.actuation, p.language);
+        if (!document.actuationNote.empty()) out->actuation = messageText(document.actuationNote, p.language);
         out->actuationLatex.clear();
         return out;
     }

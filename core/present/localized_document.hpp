@@ -1,12 +1,14 @@
 #pragma once
 // A derivation as shown in one language and one textbook's notation (language.hpp,
 // notation.hpp), made from the document as derived (English, the notes' notation) by
-// relabelling: step titles translated, the mass matrix, gravity vector and generalized
-// forces named with the notation's letters (items and entries: D, d12; M(Θ), G, τ), a
-// robot's joint variables renamed in every tree (q̇1 → θ̇1 for Craig), the general
-// formulas of steps 7 and 8 written with those letters, the actuation sentence in the
-// language. Plain data in and out, no GiNaC: the window switches language or notation
-// without deriving again, and the text, LaTeX, JSON and typeset pages all read the result.
+// relabelling: the mass matrix, gravity vector and generalized forces named with the
+// notation's letters (items and entries: D, d12; M(Θ), G, τ), a robot's joint variables
+// renamed in every tree (q̇1 → θ̇1 for Craig), the general formulas of steps 7 and 8
+// written with those letters, the actuation sentence in the language. The step titles,
+// the form and the remark stay messages, put into words in the document's language where
+// they are shown (message_text.hpp). Plain data in and out, no GiNaC: the window switches
+// language or notation without deriving again, and the text, LaTeX, JSON and typeset
+// pages all read the result.
 #include <memory>
 
 #include "core/present/display_document.hpp"
@@ -24,6 +26,10 @@ std::shared_ptr<DisplayDocument> localizedDocument(const DisplayDocument& docume
 // The notes' sum for the mass matrix, as step 7's formula adds it for a robot, in the
 // notation's letters: ,\quad B(q) = \sum_i (m_i J_{P,i}^T J_{P,i} + …).
 std::string massMatrixSum(const NotationSymbols& n);
+
+// The form's name as the pipeline says it ("expanded", "structured": FormExpanded,
+// FormStructured); another as it is, nothing for "".
+Message formName(const std::string& form);
 
 // "inputs on θ2 (underactuated: m = 1 < n = 2)" in `language`, the coordinates as given.
 std::string actuationSentence(const std::vector<int>& actuated, const std::vector<std::string>& coordinates, Language language);

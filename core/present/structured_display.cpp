@@ -69,15 +69,15 @@ const NamePatterns& namePatterns() {
 }
 
 // Frames: the links' own frames, where J_P, o_f and the axes are written.
-std::string sectionTitle(int step) {
+Message sectionTitle(int step) {
     switch (step) {
-    case 1: return "Kinematic model: frames in each link's own frame";
-    case 4: return "Jacobian columns of the centres of mass";
-    case 6: return "Potential energy and g";
-    case 7: return "Kinetic energy: the mass matrix as sums";
-    case 8: return "Equations of motion: C from the derivatives of B";
+    case 1: return MessageId::TitleSectionFrames;
+    case 4: return MessageId::TitleSectionJacobians;
+    case 6: return MessageId::TitleSectionPotential;
+    case 7: return MessageId::TitleSectionMassMatrix;
+    case 8: return MessageId::TitleSectionCoriolis;
     }
-    return "";
+    return {};
 }
 
 std::string sectionFormula(int step, const StructuredDynamics& s) {
@@ -135,9 +135,10 @@ std::shared_ptr<const DisplayDocument> structuredDisplayDocument(const Structure
     auto doc = std::make_shared<DisplayDocument>();
     doc->systemName = s.systemName;
     for (int i = 0; i < s.n; ++i) doc->coordinateNames.push_back("q" + idx(i));
-    doc->form = "structured";
+    doc->form = MessageId::FormStructured;
     doc->formReason = formReason;
-    doc->actuation = "Q holds the declared non-conservative forces (friction, torques).";
+    doc->actuationNote = MessageId::ActuationDeclaredForces;
+    doc->actuation = doc->actuationNote.english();
 
     auto names = std::make_shared<std::map<std::string, DisplayPtr>>();
     for (const NamedDefinition& d : s.table->entries()) (*names)[d.name] = structuredNameNode(d.name);

@@ -13,6 +13,8 @@
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/present/json_writer.hpp"
 #include "core/present/latex_text.hpp"
+#include "core/present/localized_document.hpp"
+#include "core/present/message_text.hpp"
 #include "core/present/structured_notes.hpp"
 #include "core/symbolic/index_list.hpp"
 
@@ -70,15 +72,16 @@ const char* latexStepTitle(int step) {
 }
 
 
-const char* stepTitle(int step) {
+// Step headings in text (and in LaTeX in another language than English).
+Message stepTitle(int step) {
     switch (step) {
-        case 1: return "Kinematic model: the axes x_f, y_f, z_f and origin o_f of every frame f, in each link's own frame";
-        case 4: return "Jacobian columns J_P,j^(i) of each centre of mass, in its link's frame (J_O,j^(i) = z of joint j's axis)";
-        case 6: return "Potential energy: gamma_j^(i) = g0 . J_P,j^(i), so g_j = dE_pot/dq_j = -sum_{i>=j} m_i gamma_j^(i)";
-        case 7: return "Mass matrix: beta_jk^(i) = m_i J_P,j^(i) . J_P,k^(i) + z_j^T I_i z_k, b_jk = sum_{i>=max(j,k)} beta_jk^(i)";
-        case 8: return "Christoffel symbols: d b_jk / d q_l by the Jacobian identities (zero for l <= min(j,k))";
+        case 1: return MessageId::TitleNamesFrames;
+        case 4: return MessageId::TitleNamesJacobians;
+        case 6: return MessageId::TitleNamesPotential;
+        case 7: return MessageId::TitleNamesMassMatrix;
+        case 8: return MessageId::TitleNamesChristoffel;
     }
-    return "";
+    return {};
 }
 
 const GiNaC::ex& valueOf(const StructuredDynamics& s, const EntryRef& e) {
@@ -194,12 +197,12 @@ void writeText(const StructuredDynamics& s, const StructuredDocumentInfo& info, 
     const Selection sel = select(s, info);
     out << s.systemName << "\n" << std::string(s.systemName.size(), '=') << "\n";
     const Language l = info.language;
-    out << translated("Form", l) << ": " << translated(info.form, l) << " (" << translatedPhrases(info.formReason, l) << ")\n";
+    out << messageText(MessageId::DocumentForm, l) << ": " << messageText(formName(info.form), l) << " (" << translatedPhrases(info.formReason, l) << ")\n";
     out << "B, C and g are short sums over " << sel.needed
         << " named quantities, each a few operations on earlier names; every vector of link i is written in link i's "
            "own frame, where its centre of mass and inertia tensor are constant.\n";
     forEachDefinition(
-        s, sel, [&](int step) { out << "\n" << translated("Step", l) << " " << step << ". " << translated(stepTitle(step), l) << "\n"; },
+        s, sel, [&](int step) { out << "\n" << messageText(MessageId::DocumentStep, l) << " " << step << ". " << messageText(stepTitle(step), l) << "\n"; },
         [&](const NamedDefinition& d) {
             out << "    " << d.name << " = " << text(d.value) << "        ("
                 << translatedPhrases(d.meaning + "; depends on " + coordinateList(d.coordinates, s.n), l) << ")\n";
@@ -245,13 +248,13 @@ void writeLatex(const StructuredDynamics& s, const StructuredDocumentInfo& info,
            "\\title{Euler--Lagrange model (structured form): " << latexText(s.systemName) << "}\n"
            "\\author{LagrangeLab}\n\\date{}\n"
            "\\begin{document}\n\\maketitle\n"
-        << translated("Form", info.language) << ": " << translated(info.form, info.language) << " (" << latexText(translatedPhrases(info.formReason, info.language)) << "). $B$, $C$ and $g$ are short sums over " << sel.needed
+        << messageText(MessageId::DocumentForm, info.language) << ": " << messageText(formName(info.form), info.language) << " (" << latexText(translatedPhrases(info.formReason, info.language)) << "). $B$, $C$ and $g$ are short sums over " << sel.needed
         << " named quantities; every vector of link $i$ is written in its own frame. "
            "Shorthand: $c_{i} = \\cos q_i$, $s_{i} = \\sin q_i$.\n";
     forEachDefinition(
         s, sel, [&](int step) {
-            out << "\\section*{" << translated("Step", info.language) << " " << step << "}\n"
-                << (info.language == Language::English ? std::string(latexStepTitle(step)) : latexText(translated(stepTitle(step), info.language)))
+            out << "\\section*{" << messageText(MessageId::DocumentStep, info.language) << " " << step << "}\n"
+                << (info.language == Language::English ? std::string(latexStepTitle(step)) : latexText(messageText(stepTitle(step), info.language)))
                 << "\n\\medskip\n";
         },
         [&](const NamedDefinition& d) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/present/labels.hpp"
+#include "core/present/message_text.hpp"
 
 namespace ll::present {
 namespace {
@@ -105,7 +106,8 @@ std::string itemText(const DisplayItem& item, Language language) {
     const auto& rows = item.value->rows;
     const bool zeros = hasZeroEntry(*item.value);  // left out, and said so
     std::string out = item.name + " (" + std::to_string(rows.size()) + "×" + std::to_string(rows.empty() ? 0 : rows[0].size()) +
-                      "), " + translated("entry by entry", language) + (zeros ? ", " + translated("the zeros left out", language) + ":" : ":");
+                      "), " + messageText(MessageId::DocumentEntryByEntry, language) +
+                      (zeros ? ", " + messageText(MessageId::DocumentZerosLeftOut, language) + ":" : ":");
     for (std::size_t r = 0; r < rows.size(); ++r)
         for (std::size_t c = 0; c < rows[r].size(); ++c)
             if (!isZeroNumber(*rows[r][c])) out += "\n  " + entryName(item, r, c) + " = " + renderDisplay(*rows[r][c], DisplayStyle::Text);
@@ -115,12 +117,14 @@ std::string itemText(const DisplayItem& item, Language language) {
 std::string textDocument(const DisplayDocument& document, std::vector<TextSpan>* spans) {
     std::string out = document.systemName + "\n" + std::string(document.systemName.size(), '=') + "\n";
     const Language l = document.language;
-    if (!document.form.empty()) out += translated("Form", l) + ": " + document.form + " (" + document.formReason + ")\n";
-    if (!document.remark.empty()) out += document.remark + "\n";
+    if (!document.form.empty())
+        out += messageText(MessageId::DocumentForm, l) + ": " + messageText(document.form, l) + " (" + document.formReason + ")\n";
+    if (!document.remark.empty()) out += messageText(document.remark, l) + "\n";
     int line = lineCount(out) - 1;  // the line being written
     for (std::size_t s = 0; s < document.steps.size(); ++s) {
         const DisplayStep& step = document.steps[s];
-        const std::string heading = "\n" + translated("Step", l) + " " + std::to_string(step.number) + ". " + step.title + "\n    " + step.formulaText + "\n\n";
+        const std::string heading = "\n" + messageText(MessageId::DocumentStep, l) + " " + std::to_string(step.number) + ". " +
+                                    messageText(step.title, l) + "\n    " + step.formulaText + "\n\n";
         out += heading;
         line += lineCount(heading) - 1;
         for (std::size_t i = 0; i < step.items.size(); ++i) {
@@ -130,7 +134,7 @@ std::string textDocument(const DisplayDocument& document, std::vector<TextSpan>*
             line += lineCount(text) + 1;
         }
     }
-    return out + translated("Actuation", l) + ": " + document.actuation + "\n";
+    return out + messageText(MessageId::DocumentActuation, l) + ": " + document.actuation + "\n";
 }
 
 }  // namespace ll::present

@@ -20,6 +20,8 @@
 
 #include <ginac/ginac.h>
 
+#include "core/model/message.hpp"
+
 namespace ll::symbolic {
 
 // The quantities a derivation shows, in the notes' notation (i: the item's index).
@@ -71,7 +73,7 @@ struct DerivationItem {
 
 struct DerivationStep {
     int number = 0;            // 0..8 as in the course notes
-    std::string title;         // "Kinematic model"
+    Message title;             // MessageId::TitleKinematicModel: words only where it is shown
     std::string formulaText;   // the general formula of the step, plain text
     std::string formulaLatex;  // the same in LaTeX
     std::vector<DerivationItem> items;

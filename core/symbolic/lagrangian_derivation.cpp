@@ -205,7 +205,7 @@ private:
                           message(KineticLeftOverHint, spec_.kinetic)};
     }
 
-    void addStep(int number, std::string title, std::string text, std::string latex, std::vector<DerivationItem> items) {
+    void addStep(int number, Message title, std::string text, std::string latex, std::vector<DerivationItem> items) {
         const auto now = std::chrono::steady_clock::now();
         const double seconds = std::chrono::duration<double>(now - lap_).count();
         lap_ = now;
@@ -218,7 +218,7 @@ private:
             q(i, 0) = s_.q[i];
             qd(i, 0) = s_.qd[i];
         }
-        addStep(0, "Generalized coordinates",
+        addStep(0, MessageId::TitleGeneralizedCoordinates,
                 "q = (q_1, …, q_n): minimal, independent and complete; the velocity of x is ẋ = dx/dt",
                 R"(q = (q_1, \dots, q_n)\ \text{minimal, independent, complete},\quad \dot{q} = \frac{dq}{dt})",
                 {{"q", Quantity::Coordinates, -1, Grouping::Parameters, q}, {"qd", Quantity::Velocities, -1, Grouping::Parameters, qd}});
@@ -226,7 +226,7 @@ private:
 
     void stepPotential() {
         d_.Epot = Epot_;
-        addStep(6, "Potential energy", "E_pot(q) as given: gravity, springs and every other conservative force",
+        addStep(6, MessageId::TitlePotentialEnergy, "E_pot(q) as given: gravity, springs and every other conservative force",
                 R"(E_{\mathrm{pot}}(q))", {{"E_pot", Quantity::PotentialEnergy, -1, Grouping::Parameters, Epot_}});
     }
 
@@ -239,7 +239,7 @@ private:
                 d_.B(j, i) = d_.B(i, j);
             }
         d_.Ekin = Ekin_;
-        addStep(7, "Kinetic energy and the mass matrix",
+        addStep(7, MessageId::TitleKineticEnergy,
                 "E_kin(q, qd) as given = 1/2 qd^T B(q) qd,  b_ij = d^2 E_kin / (dqd_i dqd_j)",
                 R"(E_{\mathrm{kin}} = \tfrac{1}{2}\,\dot{q}^T B(q)\,\dot{q},\quad b_{ij} = \frac{\partial^2 E_{\mathrm{kin}}}{\partial \dot{q}_i\,\partial \dot{q}_j})",
                 {{"E_kin", Quantity::KineticEnergy, -1, Grouping::Velocities, Ekin_}, {"B", Quantity::MassMatrix, -1, Grouping::Parameters, d_.B}});
@@ -328,7 +328,7 @@ private:
             const std::string k = std::to_string(i + 1);
             items.push_back({"equation_" + k, Quantity::EquationOfMotion, i, Grouping::Parameters, lhs == d_.Q(i, 0)});
         }
-        addStep(8, "Equations of motion (Lagrange-d'Alembert)",
+        addStep(8, MessageId::TitleEquationsOfMotion,
                 "L = E_kin − E_pot;  d/dt ∂L/∂q̇_i − ∂L/∂q_i = Q_i;  written as B q̈ + C q̇ + g = Q with "
                 "g = ∂E_pot/∂q, c_ij = Σ_k ½ (∂b_ij/∂q_k + ∂b_ik/∂q_j − ∂b_jk/∂q_i) q̇_k, Q: non-conservative "
                 "forces only;  q̈ = B⁻¹ (Q − C q̇ − g)",

@@ -162,7 +162,7 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
         d.qdd.emplace_back("qdd" + idx(i));
     }
     Stopwatch clock;
-    const auto addStep = [&](int number, std::string title, std::string text, std::string latex,
+    const auto addStep = [&](int number, Message title, std::string text, std::string latex,
                              std::vector<DerivationItem> items) {
         const double seconds = clock.lap();
         currentStep = number + 1;
@@ -170,7 +170,6 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
         if (!shown(number)) return;
         d.steps.push_back({number, std::move(title), std::move(text), std::move(latex), std::move(items), seconds});
     };
-    const std::string convention = standard ? "standard" : "modified";
     d.modifiedDH = !standard;
 
     // 0. DH table, with the joint variables in place.
@@ -183,7 +182,7 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
             table(i, 2) = revolute[i] ? j.d : j.d + tc.q(i);
             table(i, 3) = revolute[i] ? j.theta + tc.q(i) : j.theta;
         }
-        addStep(0, "DH parameters (" + convention + " convention)",
+        addStep(0, standard ? MessageId::TitleDhStandard : MessageId::TitleDhModified,
                 standard ? "row i: a_i, alpha_i, d_i, theta_i; revolute q_i adds to theta_i, prismatic q_i to d_i"
                          : "row i: a_{i-1}, alpha_{i-1}, d_i, theta_i (Craig); revolute q_i adds to theta_i, prismatic q_i to d_i",
                 standard ? R"(\text{row } i:\ a_i,\ \alpha_i,\ d_i,\ \theta_i)"
@@ -202,7 +201,7 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
         step1.push_back({"A_" + idx(i), Quantity::LinkTransform, i, Grouping::Masses, A[i]});
     }
     for (int i = 0; i < n; ++i) step1.push_back({"T_" + idx(i) + "^0", Quantity::Transform, i, Grouping::Masses, T[i + 1]});
-    addStep(1, "Kinematic model",
+    addStep(1, MessageId::TitleKinematicModel,
             standard ? "A_i = Rot_z(theta_i) Trans_z(d_i) Trans_x(a_i) Rot_x(alpha_i),  T_i^0 = A_1 A_2 ... A_i"
                      : "A_i = Rot_x(alpha_{i-1}) Trans_x(a_{i-1}) Rot_z(theta_i) Trans_z(d_i),  T_i^0 = A_1 A_2 ... A_i",
             standard ? R"(A_i = \mathrm{Rot}_z(\theta_i)\,\mathrm{Trans}_z(d_i)\,\mathrm{Trans}_x(a_i)\,\mathrm{Rot}_x(\alpha_i),\quad T_i^0 = A_1 A_2 \cdots A_i)"
@@ -219,7 +218,7 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
             p[i][r] = tc.reduce(T[i + 1](r, 0) * com(0, 0) + T[i + 1](r, 1) * com(1, 0) + T[i + 1](r, 2) * com(2, 0) + T[i + 1](r, 3));
         step2.push_back({"p_c" + idx(i), Quantity::ComPosition, i, Grouping::Masses, toMatrix(p[i])});
     }
-    addStep(2, "Centres of mass", "p_ci^0 = T_i^0 [r_ci; 1]  (r_ci: COM of link i in frame i)",
+    addStep(2, MessageId::TitleCentresOfMass, "p_ci^0 = T_i^0 [r_ci; 1]  (r_ci: COM of link i in frame i)",
             R"(p_{ci}^0 = T_i^0 \begin{bmatrix} r_{ci} \\ 1 \end{bmatrix})", step2);
 
     // Joint axes in the base frame: z_{i-1} (standard) or z_i (modified).
@@ -240,7 +239,7 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
             items.push_back({"J_w" + idx(i), Quantity::AngularJacobian, i, Grouping::Masses, Jw});
             items.push_back({"w_" + idx(i), Quantity::AngularVelocity, i, Grouping::Velocities, tc.reduce(w)});
         }
-        addStep(3, "Angular velocities", "omega_i^0 = sum_{j<=i, revolute} z_j qd_j = J_w,i qd",
+        addStep(3, MessageId::TitleAngularVelocities, "omega_i^0 = sum_{j<=i, revolute} z_j qd_j = J_w,i qd",
                 R"(\omega_i^0 = \sum_{j \le i} z_{j} \dot{q}_j = J_{\omega,i}\,\dot{q})", items);
     }
 
@@ -259,7 +258,7 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
             items.push_back({"J_v_c" + idx(i), Quantity::ComJacobian, i, Grouping::Masses, Jv});
             items.push_back({"v_c" + idx(i), Quantity::ComVelocity, i, Grouping::Velocities, tc.reduce(v)});
         }
-        addStep(4, "Velocities of the centres of mass", "v_ci^0 = d/dt p_ci^0 = J_v,ci qd,  J_v,ci = dp_ci^0/dq",
+        addStep(4, MessageId::TitleComVelocities, "v_ci^0 = d/dt p_ci^0 = J_v,ci qd,  J_v,ci = dp_ci^0/dq",
                 R"(v_{ci}^0 = \dot{p}_{ci}^0 = J_{v,ci}\,\dot{q},\quad J_{v,ci} = \frac{\partial p_{ci}^0}{\partial q})", items);
     }
 
@@ -272,7 +271,7 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
                              reduceChecked(tc, R.mul(robot.joints[i].inertia).mul(R.transpose()), checkpoint,
                                             "I_l" + idx(i) + "^0")});
         }
-        addStep(5, "Link inertia tensors in the base frame", "I_li^0 = R_i^0 I_li (R_i^0)^T",
+        addStep(5, MessageId::TitleLinkInertias, "I_li^0 = R_i^0 I_li (R_i^0)^T",
                 R"(I_{li}^0 = R_i^0\, I_{li}\, (R_i^0)^T)", items);
     }
 
@@ -285,7 +284,7 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
     // A spring on a revolute joint is written in q_i itself, not in c_i, s_i.
     Epot = reduceChecked(tc, Epot, checkpoint, "E_pot");
     d.Epot = Epot;
-    addStep(6, "Potential energy",
+    addStep(6, MessageId::TitlePotentialEnergy,
             std::string(robot.hasGravity ? "E_pot = -sum_i m_i g0^T p_ci^0" : "E_pot = 0 (no gravity declared)") +
                 (robot.springs.empty() ? "" : " + sum_j 1/2 K_j (q_j - q_j,rest)^2"),
             std::string(robot.hasGravity ? R"(E_{\mathrm{pot}} = -\sum_{i} m_i\, g_0^T p_{ci}^0)" : R"(E_{\mathrm{pot}} = 0)") +
@@ -318,7 +317,7 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
     if (hasMotors) step7.push_back({"B_m", Quantity::MotorInertia, -1, Grouping::Masses, motors});
     step7.push_back({"B", Quantity::MassMatrix, -1, Grouping::Masses, d.B});
     step7.push_back({"E_kin", Quantity::KineticEnergy, -1, Grouping::Velocities, d.Ekin});
-    addStep(7, "Kinetic energy and the mass matrix",
+    addStep(7, MessageId::TitleKineticEnergy,
             std::string("E_kin = 1/2 sum_i (m_i v_ci^T v_ci + omega_i^T I_li^0 omega_i)") +
                 (hasMotors ? " + 1/2 sum_j Jm_j G_j^2 qd_j^2" : "") + " = 1/2 qd^T B(q) qd" +
                 (hasMotors ? ";  motors: rotor j (inertia Jm_j, gear ratio G_j) turns at G_j qd_j, so it adds its "
@@ -364,7 +363,7 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
         step8.push_back({"equation_" + idx(i), Quantity::EquationOfMotion, i, Grouping::Masses, lhs == d.Q(i, 0)});
     }
     const std::string actuation = actuationText(d.actuated, d.coordinateNames);
-    addStep(8, "Equations of motion (Lagrange-d'Alembert)",
+    addStep(8, MessageId::TitleEquationsOfMotion,
             "g = dE_pot/dq;  c_ij = sum_k 1/2 (db_ij/dq_k + db_ik/dq_j - db_jk/dq_i) qd_k;  "
             "Q: non-conservative forces only;  B qdd + C qd + g = Q;  qdd = B^-1 (Q - C qd - g);  " + actuation,
             R"(g = \frac{\partial E_{\mathrm{pot}}}{\partial q},\quad c_{ij} = \sum_k \tfrac{1}{2}\left(\frac{\partial b_{ij}}{\partial q_k} + \frac{\partial b_{ik}}{\partial q_j} - \frac{\partial b_{jk}}{\partial q_i}\right)\dot{q}_k,\quad B\ddot{q} + C\dot{q} + g = Q,\quad \ddot{q} = B^{-1}(Q - C\dot{q} - g))",

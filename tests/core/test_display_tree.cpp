@@ -124,7 +124,7 @@ private slots:
         DocumentRequest request;
         request.mode = static_cast<symbolic::ParameterMode>(mode);
         const auto doc = deriveDisplay(scene, request, DerivationForm::Structured).display;
-        QCOMPARE(QString::fromStdString(doc->form), QString("structured"));
+        QCOMPARE(QString::fromStdString(doc->form.english()), QString("structured"));
         int items = 0, sums = 0;
         std::set<std::string> names;
         for (const DisplayStep& step : doc->steps) {

@@ -76,7 +76,7 @@ private slots:
             QVERIFY2(shown == value || shown == listed, (item.name + ": '" + shown + "' is not '" + value + "'").c_str());
         }
         // the expanded form's B, C, g are matrices (cells); the structured form lists b_jk as items
-        if (display->form == "expanded") QVERIFY(cells >= 3);
+        if (display->form.id == MessageId::FormExpanded) QVERIFY(cells >= 3);
         QVERIFY(items > 0);
     }
 };

@@ -261,7 +261,7 @@ private slots:
         document.systemName = "pipeline";
         DisplayStep step;
         step.number = 4;
-        step.title = "Sums";
+        step.title = literal("Sums");
         step.formulaText = "b = sum";
         const int items = 300;
         for (int i = 0; i < items; ++i) {

@@ -4,7 +4,7 @@
 
 #include <QPainter>
 
-#include "core/present/language.hpp"
+#include "core/present/message_text.hpp"
 #include "ui/paint/math_typesetter.hpp"
 
 namespace ll::ui {
@@ -55,7 +55,8 @@ CompositeFrame::CompositeFrame(const Trajectory& trajectory, const QString& scen
         return true;
     };
     // In the document's own language, as its title is (the derivation view's heading).
-    const QString title = QString::fromStdString(present::translated("Step", language) + " " + std::to_string(step->number) + ". " + step->title);
+    const QString title = QString::fromStdString(present::messageText(MessageId::DocumentStep, language) + " " + std::to_string(step->number) +
+                                                 ". " + present::messageText(step->title, language));
     QFont titleFont = textbookFont(p.font());
     titleFont.setPixelSize(static_cast<int>(0.8 * em));
     titleFont.setBold(true);

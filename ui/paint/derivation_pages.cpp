@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "core/io/atomic_file.hpp"
+#include "core/present/message_text.hpp"
 #include "ui/paint/svg_page.hpp"
 
 namespace ll::ui {
@@ -108,17 +109,18 @@ void paginateFrom(const present::DisplayDocument& document, const PageFormat& fo
     Composer c(format, sink);
     const double em = mathUnitsPerEm;
     // The document's own language (core/present/language.hpp), not the window's.
-    const auto words = [&](const char* english) { return present::translated(english, document.language); };
-    c.block(wrapped(QString::fromStdString(words("Euler–Lagrange model") + ": " + document.systemName), 1.5, c.width(), true), 0, 0,
+    const auto words = [&](const Message& m) { return present::messageText(m, document.language); };
+    c.block(wrapped(QString::fromStdString(words(MessageId::DocumentModelTitle) + ": " + document.systemName), 1.5, c.width(), true), 0, 0,
             0.3 * em);
-    c.block(wrapped(QString::fromStdString(words("Shorthand") + ": c_i = cos q_i, s_i = sin q_i, c12 = cos(q1 + q2); q̇, q̈ " +
-                                           words("the joint velocities and accelerations") + "."),
+    c.block(wrapped(QString::fromStdString(words(MessageId::DocumentShorthand) + ": c_i = cos q_i, s_i = sin q_i, c12 = cos(q1 + q2); q̇, q̈ " +
+                                           words(MessageId::DocumentJointVelocitiesAndAccelerations) + "."),
                     0.85, c.width()),
             0, 0.4 * em, 0.2 * em);
     if (!document.form.empty())
-        c.block(wrapped(QString::fromStdString(words("Form") + ": " + document.form + " (" + document.formReason + ")"), 0.85, c.width()), 0,
-                0.2 * em, 0.2 * em);
-    if (!document.remark.empty()) c.block(wrapped(QString::fromStdString(document.remark), 0.85, c.width()), 0, 0.2 * em, 0.2 * em);
+        c.block(wrapped(QString::fromStdString(words(MessageId::DocumentForm) + ": " + words(document.form) + " (" + document.formReason + ")"),
+                        0.85, c.width()),
+                0, 0.2 * em, 0.2 * em);
+    if (!document.remark.empty()) c.block(wrapped(QString::fromStdString(words(document.remark)), 0.85, c.width()), 0, 0.2 * em, 0.2 * em);
     const auto indented = [&](const MathBox& l) {
         MathBox out;
         hcat(out, l, em);
@@ -126,7 +128,8 @@ void paginateFrom(const present::DisplayDocument& document, const PageFormat& fo
     };
     for (const present::DisplayStep& s : document.steps) {
         const present::DisplayStep* step = &s;
-        std::vector<MathBox> head = wrapped(QString::fromStdString(words("Step") + " " + std::to_string(step->number) + ". " + step->title),
+        std::vector<MathBox> head = wrapped(QString::fromStdString(words(MessageId::DocumentStep) + " " + std::to_string(step->number) + ". " +
+                                                                   words(step->title)),
                                             1.2, c.width(), true);
         if (step->formula)  // the notes' general formula, typeset
             for (const MathBox& l : layoutFormula(*step->formula, (c.width() - em) / 0.9, 0.9)) head.push_back(indented(l));
@@ -146,7 +149,7 @@ void paginateFrom(const present::DisplayDocument& document, const PageFormat& fo
             c.block(lines, em, (item->note.empty() ? 0.7 : 0.35) * em, 0.45 * em);
         }
     }
-    c.block(wrapped(QString::fromStdString(words("Actuation") + ": " + document.actuation), 0.9, c.width()), 0, 1.2 * em, 0.2 * em);
+    c.block(wrapped(QString::fromStdString(words(MessageId::DocumentActuation) + ": " + document.actuation), 0.9, c.width()), 0, 1.2 * em, 0.2 * em);
     c.finish();
 }
 
@@ -209,7 +212,7 @@ bool writePdf(const DerivationPages& pages, const QString& path, std::string& er
         pdf.setResolution(dpi);
         pdf.setPageSize(QPageSize(QSizeF(format.widthPt, format.heightPt), QPageSize::Point));
         pdf.setPageMargins(QMarginsF(0, 0, 0, 0));
-        pdf.setTitle(QString::fromStdString(present::translated("Euler–Lagrange derivation", pages.language)));
+        pdf.setTitle(QString::fromStdString(present::messageText(MessageId::DocumentDerivationTitle, pages.language)));
         pdf.setCreator("LagrangeLab");
         QPainter painter(&pdf);
         for (std::size_t i = 0; i < pages.pages.size(); ++i) {
@@ -228,7 +231,8 @@ bool writeSvg(const DerivationPages& pages, const QString& path, std::string& er
         MathMarks marks;
         for (const PlacedBox& b : pages.pages[i]) collectMarks(b.box, b.origin * scale, scale, marks);
         const QString file = pagePath(path, static_cast<int>(i));
-        if (!save(file, svgPage(marks, size, present::translated("Euler–Lagrange derivation", pages.language), glyphs), error)) return false;
+        if (!save(file, svgPage(marks, size, present::messageText(MessageId::DocumentDerivationTitle, pages.language), glyphs), error))
+            return false;
         if (written) written->push_back(file);
     }
     return true;

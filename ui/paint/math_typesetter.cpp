@@ -1,6 +1,7 @@
 #include "ui/paint/math_typesetter.hpp"
 
 #include "core/present/labels.hpp"
+#include "core/present/message_text.hpp"
 #include "core/visual/link_colors.hpp"
 
 #include <QCoreApplication>
@@ -724,9 +725,9 @@ std::vector<MathBox> layoutItem(const present::DisplayItem& item, double maxWidt
     MathBox head = layout(*shortened->children[0], 1.0);
     const std::size_t rows = rhs.rows.size(), cols = rows ? rhs.rows[0].size() : 0;
     const bool zeros = present::hasZeroEntry(rhs);  // zero entries are left out (B_m of the PUMA: 30 of 36), and said so
-    const auto words = [&](const char* english) { return QString::fromStdString(present::translated(english, language)); };
-    hcat(head, layoutText(QString(" (%1×%2), ").arg(rows).arg(cols) + words("entry by entry") +
-                          (zeros ? ", " + words("the zeros left out") + ":" : QString(":"))), 0.3 * e);
+    const auto words = [&](ll::MessageId id) { return QString::fromStdString(present::messageText(id, language)); };
+    hcat(head, layoutText(QString(" (%1×%2), ").arg(rows).arg(cols) + words(ll::MessageId::DocumentEntryByEntry) +
+                          (zeros ? ", " + words(ll::MessageId::DocumentZerosLeftOut) + ":" : QString(":"))), 0.3 * e);
     std::vector<MathBox> lines{head};
     for (std::size_t i = 0; i < rows; ++i)
         for (std::size_t j = 0; j < cols; ++j) {

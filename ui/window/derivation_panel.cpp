@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <QVBoxLayout>
 
+#include "core/present/message_text.hpp"
 #include "ui/document/live_derivation.hpp"
 
 namespace ll::ui {
@@ -131,7 +132,8 @@ void DerivationPanel::setDerivation(const DerivationResult& result) {
 // The steps the text has ("Step N." headings, in order): a robot's 0–8, a typed Lagrangian's own.
 void DerivationPanel::readHeadings(present::Language language) {
     // "Step N." in the document's language (Trin N. in Danish).
-    const QRegularExpression heading("^" + QRegularExpression::escape(QString::fromStdString(present::translated("Step", language))) + " (\\d+)\\.");
+    const QString stepWord = QString::fromStdString(present::messageText(MessageId::DocumentStep, language));
+    const QRegularExpression heading("^" + QRegularExpression::escape(stepWord) + " (\\d+)\\.");
     steps_.clear();
     headingBlocks_.clear();
     for (QTextBlock block = view_->document()->begin(); block.isValid(); block = block.next())

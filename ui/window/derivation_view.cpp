@@ -23,6 +23,7 @@
 
 #include "core/model/cancellation.hpp"
 #include "core/pipeline/display_derivation.hpp"
+#include "core/present/message_text.hpp"
 #include "ui/paint/math_typesetter.hpp"
 
 namespace ll::ui {
@@ -112,7 +113,8 @@ protected:
         const QFontMetricsF fm(headerFont);
         // The page's heading in the document's own language, as its title is.
         p.drawText(QPointF(margin, y + fm.ascent()),
-                   QString::fromStdString(present::translated("Step", language_) + " " + std::to_string(step_->number) + ". " + step_->title));
+                   QString::fromStdString(present::messageText(MessageId::DocumentStep, language_) + " " + std::to_string(step_->number) + ". " +
+                                          present::messageText(step_->title, language_)));
         y += fm.height() * 1.2;
         p.setPen(palette().color(QPalette::PlaceholderText));
         if (step_->formula) {  // the general formula typeset, smaller than the results
@@ -326,7 +328,8 @@ QStringList DerivationView::listedSteps() const {
 void DerivationView::relist() {
     std::vector<std::pair<int, QString>> rows;
     if (document_)
-        for (const present::DisplayStep& s : document_->steps) rows.emplace_back(s.number, QString::fromStdString(s.title));
+        for (const present::DisplayStep& s : document_->steps)
+            rows.emplace_back(s.number, QString::fromStdString(present::messageText(s.title, document_->language)));
     if (rows.empty()) rows.emplace_back(0, tr("DH parameters"));
     if (pose_) rows.emplace_back(9, tr("Results at the teach pose"));
     std::vector<int> numbers;
@@ -418,7 +421,7 @@ void DerivationView::showStatus() {
         status_->setText(QString::fromStdString(document_->systemName));
     else
         status_->setText(tr("%1 (%2 form)").arg(QString::fromStdString(document_->systemName),
-                                                document_->form == "structured" ? tr("structured") : tr("expanded")));
+                                                document_->form.id == MessageId::FormStructured ? tr("structured") : tr("expanded")));
 }
 
 void DerivationView::accept(std::shared_ptr<const present::DisplayDocument> document, QString error) {
