@@ -16,6 +16,8 @@
 #include "app/scene_loading.hpp"
 #include "core/simulation/scene_validation.hpp"
 #include "core/io/atomic_file.hpp"
+#include "core/model/utf8_text.hpp"
+#include "core/present/message_text.hpp"
 #include "core/simulation/integrators.hpp"
 #include "core/pipeline/scene_simulation.hpp"
 
@@ -43,6 +45,18 @@ std::vector<double> parseSettings(const std::string& option, const std::string& 
     return values;
 }
 
+// `text` cut or padded to `width` characters (a Danish letter is two bytes: never half of one).
+std::string fitted(const std::string& text, std::size_t width) {
+    std::string out;
+    std::size_t count = 0;
+    for (std::size_t at = 0; at < text.size() && count < width; ++count) {
+        const std::size_t bytes = decodeUtf8(text, at).bytes;
+        out.append(text, at, bytes);
+        at += bytes;
+    }
+    return out.append(width - count, ' ');
+}
+
 std::vector<std::string> parseNames(const std::string& text) {
     std::vector<std::string> names;
     std::stringstream in(text);
@@ -63,7 +77,7 @@ void writeCsv(const WorkPrecisionResult& r, std::ostream& out) {
     out << r.reference.integrator << ",1," << r.reference.tolerance << ",1," << r.reference.estimatedError << ",1,"
         << r.reference.maxRelEnergyDrift << "," << r.reference.cpuSeconds << ",,,,,,\"reference (error: its own estimate)\"\n";
     for (const WorkPrecisionPoint& p : r.points) {
-        std::string message = p.message;
+        std::string message = p.message.english();
         for (char& c : message)
             if (c == '"') c = '\'';
         out << p.integrator << "," << p.adaptive << "," << p.setting << "," << p.completed << ","
@@ -90,7 +104,8 @@ void printTable(const WorkPrecisionResult& r) {
         if (p.lastStep > 0) std::snprintf(last, sizeof last, "last step %.3g s; ", p.lastStep);
         std::string note = last;
         if (!p.completed) {
-            note += "stopped: " + p.message.substr(0, p.message.find(':'));
+            const std::string why = p.message.english();  // the table is in English
+            note += "stopped: " + why.substr(0, why.find(':'));
             std::printf("%-17s %-13s %10s %10s %10.2f %10ld %9ld %8ld %10s  %s\n", p.integrator.c_str(), setting, "-",
                         "-", 1e3 * p.cpuSeconds, p.rhsEvaluations, p.steps, p.rejectedSteps, step, note.c_str());
             continue;
@@ -125,13 +140,15 @@ int accuracyCommand(const Args& args) {
     requireValidSceneFrom(scene, options.positional()[0]);
 
     const bool tty = ::isatty(STDERR_FILENO);
-    const WorkPrecisionResult result = runWorkPrecision(scene, settings, [&](double f, const std::string& what) {
-        if (tty) std::fprintf(stderr, "\r%3d%% %-40.40s", static_cast<int>(100 * f), what.c_str());
+    const present::Language language = presentation().language;
+    const WorkPrecisionResult result = runWorkPrecision(scene, settings, [&](double f, const Message& what) {
+        if (tty) std::fprintf(stderr, "\r%3d%% %s", static_cast<int>(100 * f), fitted(present::messageText(what, language), 40).c_str());
     });
     if (tty) std::fprintf(stderr, "\r%*s\r", 50, "");
     printTable(result);
     if (result.status == SimulationStatus::Failed) {
-        std::fprintf(stderr, "error: %s\n", result.message.c_str());
+        std::fprintf(stderr, "%s%s\n", present::messageText(MessageId::ErrorLine, language).c_str(),
+                     present::messageText(result.message, language).c_str());
         return 3;
     }
     if (options.has("csv"))

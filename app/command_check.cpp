@@ -52,8 +52,8 @@ void printText(const Scene& scene, const SimulationResult& run, const ModelPrope
             std::printf(", worst at t = %.4g s, q = %s", c.time, vectorText(c.q).c_str());
         std::printf("\n        %s\n", c.explanation.c_str());
     }
-    if (run.status == SimulationStatus::Failed)
-        std::printf("the simulation stopped early: %s\n", run.message.c_str());
+    if (run.status == SimulationStatus::Failed)  // the report is in English, as its checks are
+        std::printf("the simulation stopped early: %s\n", run.message.english().c_str());
     std::printf("%s\n", properties.passed() ? "passed: every property holds" : "failed: a property does not hold");
 }
 
@@ -83,7 +83,7 @@ void printJson(const Scene& scene, const SimulationResult& run, const ModelPrope
         details.push_back(d);
     }
     j["passed"] = properties.passed();
-    if (run.status == SimulationStatus::Failed) j["simulation_stopped"] = run.message;
+    if (run.status == SimulationStatus::Failed) j["simulation_stopped"] = run.message.english();
     j["checks"] = details;
     std::cout << j.dump(1) << '\n';
 }
@@ -101,8 +101,8 @@ int checkCommand(const Args& args) {
     const SimulationInput input = prepareSimulation(scene);
     const SimulationResult run = ll::simulate(input, scene.simulation);
     if (run.trajectory.size() == 0) {
-        std::fprintf(stderr, "error: %s: the simulation produced no samples: %s\n", options.positional()[0].c_str(),
-                     run.message.c_str());
+        const UsageMessage none = usageMessage(UsageId::SimulationGaveNoSamples, options.positional()[0], run.message);
+        std::fprintf(stderr, "%s\n", usageErrorLine(none, presentation().language).c_str());
         return 1;
     }
     const ModelProperties properties = checkModelProperties(input, run.trajectory);

@@ -15,6 +15,7 @@
 #include "app/commands.hpp"
 #include "app/scene_loading.hpp"
 #include "core/io/atomic_file.hpp"
+#include "core/model/message_error.hpp"
 #include "core/pipeline/derivation_forms.hpp"
 #include "core/pipeline/display_derivation.hpp"
 #include "core/pipeline/scene_derivation.hpp"
@@ -116,8 +117,8 @@ int deriveCommand(const Args& args) {
     const FormDocument result = inSceneFile(options.positional()[0], [&] {
         try {
             return deriveInForm(scene, formRequest);
-        } catch (const std::invalid_argument& e) {  // a bad --entry, in the core's English words
-            throw UsageError(e.what());
+        } catch (const MessageError& e) {  // a bad --entry, in the core's words
+            throw UsageError(e.message());
         }
     });
     for (const std::string& line : result.verification) std::cerr << "verify: " << line << '\n';

@@ -20,6 +20,7 @@
 #include "app/pixel_size.hpp"
 #include "app/progress_bar.hpp"
 #include "app/scene_loading.hpp"
+#include "core/model/message_error.hpp"
 #include "core/pipeline/display_derivation.hpp"
 #include "core/pipeline/scene_simulation.hpp"
 #include "core/present/localized_document.hpp"
@@ -75,8 +76,8 @@ ui::ExportSettings parseRenderOptions(const Options& options, const Scene& scene
 
     try {
         s.camera = parseCameraSpec(options.text("camera", "auto"));
-    } catch (const std::invalid_argument& e) {
-        throw UsageError(UsageId::OptionValueRefused, "camera", options.text("camera"), e.what());  // the core's words
+    } catch (const MessageError& e) {
+        throw UsageError(UsageId::OptionValueRefused, "camera", options.text("camera"), e.message());  // the core's words
     }
     const auto onOff = [&](const char* name) {
         const std::string v = options.text(name, "on");
@@ -168,7 +169,8 @@ int renderCommand(const Args& args) {
         return 130;
     }
     if (result.status == SimulationStatus::Failed) {
-        std::fprintf(stderr, "error: simulation stopped, nothing rendered: %s\n", result.message.c_str());
+        const UsageMessage stopped = usageMessage(UsageId::SimulationStoppedNothingRendered, result.message);
+        std::fprintf(stderr, "%s\n", usageErrorLine(stopped, presentation().language).c_str());
         return 3;
     }
     const auto app = makeGuiApplication();

@@ -52,7 +52,8 @@ int reportCommand(const Args& args) {
     ProgressBar bar(tty);
     input.simulation = simulate(scene, scene.simulation, [&](double f) { bar(0.1 * f); });
     if (input.simulation.status == SimulationStatus::Failed) {
-        std::fprintf(stderr, "error: simulation stopped, no report written: %s\n", input.simulation.message.c_str());
+        const UsageMessage stopped = usageMessage(UsageId::SimulationStoppedNoReport, input.simulation.message);
+        std::fprintf(stderr, "%s\n", usageErrorLine(stopped, presentation().language).c_str());
         return 3;
     }
     DocumentRequest request;

@@ -13,6 +13,7 @@
 #include "app/progress_bar.hpp"
 #include "app/scene_loading.hpp"
 #include "core/io/trajectory_file.hpp"
+#include "core/present/message_text.hpp"
 #include "core/simulation/scene_validation.hpp"
 #include "core/pipeline/scene_simulation.hpp"
 #include "core/model/actuation.hpp"
@@ -96,11 +97,14 @@ int simulateCommand(const Args& args) {
         std::fprintf(stderr, "torques: largest |B qdd + C qd + g - Q| = %.3g (%.3g of the largest term, %.3g)\n",
                      torques->largestResidual, torques->scale > 0 ? torques->largestResidual / torques->scale : 0.0,
                      torques->scale);
+    const present::Language language = presentation().language;
     if (result.status == SimulationStatus::Failed) {
-        std::fprintf(stderr, "error: simulation stopped: %s\n", result.message.c_str());
+        std::fprintf(stderr, "%s\n", usageErrorLine(usageMessage(UsageId::SimulationStopped, result.message), language).c_str());
         return 3;
     }
-    if (!result.message.empty()) std::fprintf(stderr, "warning: %s\n", result.message.c_str());
+    if (!result.message.empty())
+        std::fprintf(stderr, "%s%s\n", present::messageText(MessageId::WarningLine, language).c_str(),
+                     present::messageText(result.message, language).c_str());
     return 0;
 }
 

@@ -14,6 +14,8 @@
 #include "app/commands.hpp"
 #include "app/offscreen_gui.hpp"
 #include "core/model/diagnostics.hpp"
+#include "core/model/message_error.hpp"
+#include "core/present/message_text.hpp"
 
 namespace {
 
@@ -57,6 +59,11 @@ int reportingErrors(F&& f) {
     } catch (const UsageError& e) {
         std::cerr << usageErrorLine(e.message(), presentation().language) << '\n';
         return 2;
+    } catch (const ll::MessageError& e) {  // ours (a file that cannot be saved): in the reader's language
+        const ll::present::Language language = presentation().language;
+        std::cerr << ll::present::messageText(ll::MessageId::ErrorLine, language) << ll::present::messageText(e.message(), language)
+                  << '\n';
+        return 1;
     } catch (const std::invalid_argument& e) {  // the core's or a library's English words, so English around them
         std::cerr << "error: " << e.what() << '\n';
         return 2;

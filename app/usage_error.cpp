@@ -10,6 +10,8 @@ UsageError::UsageError(UsageMessage message)
 
 UsageError::UsageError(const std::string& words) : UsageError(usageMessage(UsageId::Literal, words)) {}
 
+UsageError::UsageError(const Message& words) : UsageError(usageMessage(UsageId::Literal, words)) {}
+
 std::string usageErrorLine(const UsageMessage& message, present::Language language) {
     // The core's "error: "/"fejl: ", so a usage error begins as a scene's errors do.
     return present::messageText(MessageId::ErrorLine, language) + usageText(message, language);

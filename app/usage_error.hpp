@@ -17,9 +17,11 @@ public:
     // throw UsageError(UsageId::OptionNeedsValue, name): usageMessage's arguments.
     template <class... A>
     explicit UsageError(UsageId id, A&&... args) : UsageError(usageMessage(id, std::forward<A>(args)...)) {}
-    // Words not ours to translate (UsageId::Literal): the core's own English, and the
+    // Words not ours to translate (UsageId::Literal): a library's own English, and the
     // benchmark's messages (app/bench, a developer's tool in English only).
     explicit UsageError(const std::string& words);
+    // The core's message as it is, in the reader's language (a MessageError's).
+    explicit UsageError(const Message& words);
 
     const UsageMessage& message() const { return message_; }
 

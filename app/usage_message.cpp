@@ -4,6 +4,7 @@
 #include <cstddef>
 
 #include "core/model/message.hpp"
+#include "core/present/message_text.hpp"
 
 namespace ll::cli {
 namespace {
@@ -55,7 +56,10 @@ const char* usageIdName(UsageId id) {
 
 std::string usageText(const UsageMessage& message, present::Language language) {
     const char* danish = language == present::Language::Danish ? danishWords(message.id) : nullptr;
-    return ll::filledIn(danish ? danish : englishWords(message.id), message.args);
+    std::vector<std::string> args;
+    args.reserve(message.args.size());
+    for (const Message& a : message.args) args.push_back(present::messageText(a, language));
+    return ll::filledIn(danish ? danish : englishWords(message.id), args);
 }
 
 }  // namespace ll::cli

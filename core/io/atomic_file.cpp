@@ -11,15 +11,15 @@
 #include <unistd.h>
 
 #include "core/model/message.hpp"
+#include "core/model/message_error.hpp"
 
 namespace ll {
 namespace {
 
 // "PATH: cannot save: <what>: <system error>"; what() is in English.
-std::runtime_error saveError(const std::string& path, Message what, int error) {
-    const Message m = error ? message(MessageId::CannotSaveForReason, path, std::move(what), std::strerror(error))
-                            : message(MessageId::CannotSave, path, std::move(what));
-    return std::runtime_error(m.english());
+MessageError saveError(const std::string& path, Message what, int error) {
+    return MessageError(error ? message(MessageId::CannotSaveForReason, path, std::move(what), std::strerror(error))
+                              : message(MessageId::CannotSave, path, std::move(what)));
 }
 
 // fsync of a file or directory by name (a descriptor opened for reading may be synced).

@@ -18,8 +18,8 @@ enum class Backup {
 };
 
 // write(out) produces the content, streamed (a trajectory may be large). Throws
-// std::runtime_error "PATH: cannot save: <what>: <system error>"; PATH is then
-// untouched and no temporary file is left.
+// MessageError (a std::runtime_error, core/model/message_error.hpp) "PATH: cannot save:
+// <what>: <system error>"; PATH is then untouched and no temporary file is left.
 void saveFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write, Backup backup);
 void saveFileAtomically(const std::string& path, const std::string& content, Backup backup);
 

@@ -4,6 +4,7 @@
 #include <system_error>
 
 #include "core/model/message.hpp"
+#include "core/model/message_error.hpp"
 
 namespace ll {
 
@@ -12,7 +13,7 @@ namespace fs = std::filesystem;
 fs::path executableDirectory() {
     std::error_code error;
     const fs::path exe = fs::read_symlink("/proc/self/exe", error);
-    if (error) throw std::runtime_error(message(MessageId::ProgramLocationUnknown, error.message()).english());
+    if (error) throw MessageError(message(MessageId::ProgramLocationUnknown, error.message()));
     return exe.parent_path();
 }
 

@@ -11,7 +11,7 @@
 namespace ll {
 
 // The folder of the running executable (/proc/self/exe, links resolved).
-// Throws std::runtime_error when it cannot be read.
+// Throws MessageError (a std::runtime_error) when it cannot be read.
 std::filesystem::path executableDirectory();
 
 // executableDirectory()/../share/lagrangelab (../../share/lagrangelab for the benchmarks

@@ -7,6 +7,7 @@
 
 #include "core/io/atomic_file.hpp"
 #include "core/model/message.hpp"
+#include "core/model/message_error.hpp"
 #include "core/model/quantity_units.hpp"
 
 namespace ll {
@@ -139,14 +140,14 @@ void writeTrajectoryJson(const SimulationResult& result, std::ostream& out, cons
                                     {"interpolation", "cubic Hermite from q, qd, qdd at the step ends; energies at the interpolated state"}};
     j["status"] = result.status == SimulationStatus::Completed ? "completed"
                   : result.status == SimulationStatus::Cancelled ? "cancelled" : "failed";
-    if (!result.message.empty()) j["message"] = result.message;
+    if (!result.message.empty()) j["message"] = result.message.english();
     out << j.dump(1) << '\n';
 }
 
 void saveTrajectory(const SimulationResult& result, const std::string& path, const TorqueColumns& torques) {
     const bool json = path.size() >= 5 && path.compare(path.size() - 5, 5, ".json") == 0;
     const bool csv = path.size() >= 4 && path.compare(path.size() - 4, 4, ".csv") == 0;
-    if (!json && !csv) throw std::runtime_error(message(MessageId::TrajectoryFileExtension, path).english());
+    if (!json && !csv) throw MessageError(message(MessageId::TrajectoryFileExtension, path));
     saveFileAtomically(
         path,
         [&](std::ostream& out) {

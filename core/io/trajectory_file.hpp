@@ -35,7 +35,7 @@ void writeTrajectoryCsv(const Trajectory& trajectory, std::ostream& out, const T
 void writeTrajectoryJson(const SimulationResult& result, std::ostream& out, const TorqueColumns& torques = {});
 
 // Chooses the format by extension (.csv or .json) and writes atomically
-// (saveFileAtomically, no .bak). Throws std::runtime_error naming the path.
+// (saveFileAtomically, no .bak). Throws MessageError (a std::runtime_error) naming the path.
 void saveTrajectory(const SimulationResult& result, const std::string& path, const TorqueColumns& torques = {});
 
 }  // namespace ll

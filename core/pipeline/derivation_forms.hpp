@@ -36,7 +36,7 @@ struct FormDocument {
     int definitions = 0;  // named quantities of the structured form (0 when not derived)
 };
 
-// Throws std::invalid_argument naming --entry for a bad entry, InputError for the
+// Throws MessageError naming --entry for a bad entry, InputError for the
 // scene's input errors, Cancelled when cancelled.
 FormDocument deriveInForm(const Scene& scene, const FormRequest& request);
 

@@ -1,5 +1,6 @@
 #include "core/present/diagnostic_text.hpp"
 
+#include "core/model/message_error.hpp"
 #include "core/present/message_text.hpp"
 
 namespace ll::present {
@@ -21,5 +22,16 @@ std::string diagnosticText(const Diagnostic& d, Language language, Place place) 
 }
 
 std::string diagnosticBody(const Diagnostic& d, Language language) { return words(d, language, Place::Named); }
+
+std::string errorText(const std::exception& error, Language language) {
+    if (const auto* input = dynamic_cast<const InputError*>(&error)) {
+        std::string text;
+        for (const Diagnostic& d : input->diagnostics())
+            if (d.severity == Severity::Error) text += (text.empty() ? "" : "\n") + diagnosticBody(d, language);
+        return text;
+    }
+    if (const auto* ours = dynamic_cast<const MessageError*>(&error)) return messageText(ours->message(), language);
+    return error.what();
+}
 
 }  // namespace ll::present

@@ -188,7 +188,7 @@ std::shared_ptr<const DisplayDocument> structuredDisplayDocument(const Structure
             for (int k : byStep[step]) {
                 const NamedDefinition& d = s.table->entries()[k];
                 st.items.push_back(item(d.name, Quantity::NamedQuantity, -1, -1, names->at(d.name), d.value,
-                                        d.meaning + "; depends on " + coordinateList(d.coordinates, s.n)));
+                                        d.meaning.english() + "; depends on " + coordinateList(d.coordinates, s.n)));
             }
         if (step == 7)
             for (int j = 0; j < s.n; ++j)

@@ -205,7 +205,7 @@ void writeText(const StructuredDynamics& s, const StructuredDocumentInfo& info, 
         s, sel, [&](int step) { out << "\n" << messageText(MessageId::DocumentStep, l) << " " << step << ". " << messageText(stepTitle(step), l) << "\n"; },
         [&](const NamedDefinition& d) {
             out << "    " << d.name << " = " << text(d.value) << "        ("
-                << translatedPhrases(d.meaning + "; depends on " + coordinateList(d.coordinates, s.n), l) << ")\n";
+                << translatedPhrases(d.meaning.english() + "; depends on " + coordinateList(d.coordinates, s.n), l) << ")\n";
         });
     if (!sel.entries.empty()) out << "\nResults over the names\n";
     for (const EntryRef& e : sel.entries)
@@ -259,7 +259,7 @@ void writeLatex(const StructuredDynamics& s, const StructuredDocumentInfo& info,
         },
         [&](const NamedDefinition& d) {
             out << "\\lldefinition{$" << latex(d.symbol) << " = " << latex(d.value) << "$}{$" << d.latex
-                << "$: " << latexText(d.meaning) << "; depends on " << coordinateList(d.coordinates, s.n, notes::Style::Latex) << "}\n";
+                << "$: " << latexText(d.meaning.english()) << "; depends on " << coordinateList(d.coordinates, s.n, notes::Style::Latex) << "}\n";
         });
     if (!sel.entries.empty()) out << "\\section*{Results over the names}\n";
     for (const EntryRef& e : sel.entries)
@@ -308,7 +308,7 @@ void writeJson(const StructuredDynamics& s, const StructuredDocumentInfo& info, 
         j.member("expr", plain(d.value));
         j.member("latex", d.latex);
         j.member("step", d.step);
-        j.member("meaning", d.meaning);
+        j.member("meaning", d.meaning.english());
         j.key("depends_on");  // indices k of the q_k it depends on: [2, 3] (a tenth of the document as "q2", "q3")
         j.beginArray();
         for (int q = 0; q < s.n; ++q)

@@ -84,14 +84,10 @@ public:
         for (double m : modulus)
             if (m > 1e-9 * fastest) slowest = std::min(slowest, m);
         if (!(hMean * fastest >= 1.0 && fastest >= kRatio * slowest)) return;
-        throw IntegrationError(
-            t, state,
-            "the scene is stiff for " + settings_.integrator + ": at t = " + fmt(t) + " s its step size is pinned at " +
-                fmt(hMean) + " s by the stability limit of a fast mode (|λ| ≈ " + fmt(fastest) + " 1/s, period ≈ " +
-                fmt(2 * 3.14159265358979323846 / fastest) + " s), " + fmt(fastest / slowest) +
-                " times faster than the slowest motion (|λ| ≈ " + fmt(slowest) + " 1/s), so the run would take about " +
-                fmt(projected) + " steps. Use the implicit integrator rosenbrock4 (--integrator rosenbrock4, or "
-                "\"integrator\": \"rosenbrock4\" in the scene), or soften the stiff spring or friction");
+        throw IntegrationError(t, state,
+                               message(MessageId::SceneStiffFor, settings_.integrator, fmt(t), fmt(hMean), fmt(fastest),
+                                       fmt(2 * 3.14159265358979323846 / fastest), fmt(fastest / slowest), fmt(slowest),
+                                       fmt(projected)));
     }
 
 private:
@@ -117,22 +113,14 @@ struct Guard {
     void afterStep(double t, double dt, const V& x) const {
         if (!allFinite(x))
             throw IntegrationError(t, toState(x),
-                                   "state became non-finite at t = " + std::to_string(t) + " s (state " + describeState(x) +
-                                       ") with " + settings.integrator + (findIntegrator(settings.integrator)->adaptive
-                                                                              ? ": tighten the tolerances"
-                                                                              : ": the step is too large for this scene; reduce dt or use an adaptive integrator such as dopri5 (rosenbrock4 if the scene has a stiff spring)"));
+                                   message(MessageId::StateNotFinite, std::to_string(t), describeState(x), settings.integrator,
+                                           Message(findIntegrator(settings.integrator)->adaptive ? MessageId::TightenTolerances
+                                                                                                 : MessageId::StepTooLargeForScene)));
         if (dt < 1e-12 * std::max(1.0, std::abs(t)))
             throw IntegrationError(t, toState(x),
-                                   "step size collapsed to " + std::to_string(dt) + " s at t = " + std::to_string(t) +
-                                       " s (state " + describeState(x) +
-                                       "): the scene is stiff or discontinuous here; loosen the tolerances, soften "
-                                       "stiff springs or friction, or use the implicit integrator rosenbrock4");
+                                   message(MessageId::StepSizeCollapsed, std::to_string(dt), std::to_string(t), describeState(x)));
         if (++counts.steps > settings.maxSteps)
-            throw IntegrationError(t, toState(x),
-                                   "gave up after " + std::to_string(settings.maxSteps) + " steps at t = " +
-                                       std::to_string(t) + " s: the scene is probably stiff (a fast spring or "
-                                       "friction); use the implicit integrator rosenbrock4, loosen the tolerances, "
-                                       "shorten the run or soften the stiff effect");
+            throw IntegrationError(t, toState(x), message(MessageId::GaveUpAfterSteps, settings.maxSteps, std::to_string(t)));
         stiffness.onStep(t, dt, x);
     }
 };

@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 
 #include "core/model/integration_settings.hpp"
+#include "core/model/message.hpp"
 #include "core/simulation/ode_system.hpp"
 
 namespace ll {
@@ -43,11 +44,13 @@ void numericJacobian(OdeSystem& system, const OdeState& x, double t, Eigen::Matr
                      Eigen::VectorXd* dfdt = nullptr);
 
 // Thrown when integration cannot go on: non-finite state, step-size collapse,
-// step budget exhausted. what() says the time, the state and what to try.
+// step budget exhausted. message() says the time, the state and what to try; what() is
+// its English words.
 class IntegrationError : public std::runtime_error {
 public:
-    IntegrationError(double t, OdeState x, const std::string& message)
-        : std::runtime_error(message), t_(t), x_(std::move(x)) {}
+    IntegrationError(double t, OdeState x, Message message)
+        : std::runtime_error(message.english()), message_(std::move(message)), t_(t), x_(std::move(x)) {}
+    const Message& message() const { return message_; }
     double time() const { return t_; }
     const OdeState& state() const { return x_; }
     // The work done before it stopped (set by integrate()).
@@ -55,6 +58,7 @@ public:
     void setCounts(const IntegrationCounts& counts) { counts_ = counts; }
 
 private:
+    Message message_;
     double t_;
     OdeState x_;
     IntegrationCounts counts_;

@@ -34,11 +34,7 @@ void LagrangianOde::operator()(const OdeState& x, OdeState& dxdt, double t) {
     if (llt_.info() != Eigen::Success) {
         std::string q;
         for (int i = 0; i < n_; ++i) q += (i ? ", " : "") + std::to_string(x[i]);
-        throw IntegrationError(t, x,
-                               "the mass matrix B(q) is not positive definite at t = " + std::to_string(t) +
-                                   " s, q = [" + q + "]: the coordinates are not independent there (a singular "
-                                   "configuration of the chosen coordinates); choose coordinates that stay "
-                                   "independent along the motion");
+        throw IntegrationError(t, x, message(MessageId::CoordinatesDependentAt, std::to_string(t), q));
     }
     llt_.solveInPlace(rhs_);  // now q̈
     double power = 0.0;

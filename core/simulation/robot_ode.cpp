@@ -224,7 +224,8 @@ void RobotOde::operator()(const OdeState& x, OdeState& dxdt, double t) {
         evaluateForces(x, t);
         solveAccelerations();
     } catch (const SingularMassMatrix& e) {
-        throw IntegrationError(t, x, std::string(e.what()) + " at t = " + std::to_string(t) + " s");
+        throw IntegrationError(t, x, message(MessageId::AtTimeInSeconds, message(MessageId::MassMatrixSingularAtJoint, e.joint() + 1),
+                                             std::to_string(t)));  // e.what() in words
     }
     const int n = data_.n;
     for (int i = 0; i < n; ++i) {
@@ -265,7 +266,8 @@ bool RobotOde::afterStep(double t, OdeState& x) {
         evaluateForces(x, t);
         solveAccelerations();
     } catch (const SingularMassMatrix& e) {
-        throw IntegrationError(t, x, std::string(e.what()) + " at t = " + std::to_string(t) + " s");
+        throw IntegrationError(t, x, message(MessageId::AtTimeInSeconds, message(MessageId::MassMatrixSingularAtJoint, e.joint() + 1),
+                                             std::to_string(t)));  // e.what() in words
     }
     for (StickJoint& j : stick_) {
         if (!j.stuck || qdd_[j.joint] == 0.0) continue;

@@ -66,8 +66,8 @@ public:
             Epot = potentialEnergy(scene_.robot, data_, scene_.effects, q);
         }
         if (!std::isfinite(Ekin) || !std::isfinite(Epot)) {
-            problem_ = std::string(std::isfinite(Ekin) ? "E_pot" : "E_kin") + " became non-finite (" +
-                       std::to_string(std::isfinite(Ekin) ? Epot : Ekin) + ") at t = " + std::to_string(t) + " s";
+            problem_ = message(MessageId::EnergyBecameNonFinite, std::isfinite(Ekin) ? "E_pot" : "E_kin",
+                               std::to_string(std::isfinite(Ekin) ? Epot : Ekin), std::to_string(t));
             return false;
         }
         traj_.t.push_back(t);
@@ -79,14 +79,14 @@ public:
         traj_.work.push_back(x[2 * n]);
         return true;
     }
-    const std::string& problem() const { return problem_; }
+    const Message& problem() const { return problem_; }
 
 private:
     const Scene& scene_;
     Trajectory& traj_;
     const LagrangianOde* lagrangian_;
     RobotData data_;
-    std::string problem_;
+    Message problem_;
 };
 
 void energyBalance(const Trajectory& traj, SimulationStats& stats) {
@@ -135,16 +135,14 @@ SimulationResult simulate(SimulationInput input, const SimulationSettings& setti
         if (!recorder.record(t, state)) {
             result.status = SimulationStatus::Failed;
             const bool adaptive = findIntegrator(settings.integrator)->adaptive;
-            result.message = recorder.problem() + " with " + settings.integrator +
-                             ": the motion blew up (" +
-                             (adaptive ? "tighten the tolerances" : "the step is too large: reduce dt or use an adaptive integrator") +
-                             ") or a number in the scene is too large for double precision";
+            result.message = message(MessageId::MotionBlewUp, recorder.problem(), settings.integrator,
+                                     Message(adaptive ? MessageId::TightenTolerances : MessageId::StepTooLargeReduceDt));
             return false;
         }
         if (progress) progress(t / settings.duration);
         if (cancel && cancel->load(std::memory_order_relaxed)) {
             result.status = SimulationStatus::Cancelled;
-            result.message = "cancelled at t = " + std::to_string(t) + " s";
+            result.message = message(MessageId::CancelledAtTime, std::to_string(t));
             return false;
         }
         return true;
@@ -164,7 +162,7 @@ SimulationResult simulate(SimulationInput input, const SimulationSettings& setti
         book(integrate(ode, x, times, integration, observe));
     } catch (const IntegrationError& e) {
         result.status = SimulationStatus::Failed;
-        result.message = e.what();
+        result.message = e.message();
         book(e.counts());
     }
     result.stats.cpuSeconds = threadCpuSeconds() - cpuStart;
@@ -173,9 +171,7 @@ SimulationResult simulate(SimulationInput input, const SimulationSettings& setti
     energyBalance(result.trajectory, result.stats);
     // A run that completed but lost its energy balance is not silently right.
     if (result.status == SimulationStatus::Completed && !(result.stats.maxRelEnergyError <= 1e-2))
-        result.message = "the energy balance E - E0 - W is off by " + std::to_string(100 * result.stats.maxRelEnergyError) +
-                         " % of the energy scale: the trajectory is not accurate; use a smaller dt, an adaptive "
-                         "integrator or tighter tolerances (symplectic_euler keeps it bounded on conservative scenes)";
+        result.message = message(MessageId::EnergyBalanceOff, std::to_string(100 * result.stats.maxRelEnergyError));
     return result;
 }
 

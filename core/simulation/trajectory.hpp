@@ -6,6 +6,8 @@
 
 #include <Eigen/Core>
 
+#include "core/model/message.hpp"
+
 namespace ll {
 
 struct Trajectory {
@@ -56,8 +58,8 @@ struct SimulationResult {
     Trajectory trajectory;
     SimulationStats stats;
     SimulationStatus status = SimulationStatus::Completed;
-    std::string message;  // why it stopped early: time, state and what to try; for a completed
-                          // run, a warning when the energy balance is off by more than 1 %
+    Message message;  // why it stopped early: time, state and what to try; for a completed run,
+                      // a warning when the energy balance is off by more than 1 %; empty: none
 };
 
 }  // namespace ll

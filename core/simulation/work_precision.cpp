@@ -79,13 +79,13 @@ WorkPrecisionResult runWorkPrecision(const SimulationInput& input, const WorkPre
     for (const std::string& name : names)
         totalRuns += settings.repeats * static_cast<long>(findIntegrator(name)->adaptive ? settings.tolerances.size()
                                                                                           : settings.steps.size());
-    const auto report = [&](const std::string& what) {
+    const auto report = [&](const Message& what) {
         if (progress) progress(static_cast<double>(doneRuns) / static_cast<double>(totalRuns), what);
     };
     const auto cancelled = [&] { return cancel && cancel->load(std::memory_order_relaxed); };
     const auto stopCancelled = [&] {
         result.status = SimulationStatus::Cancelled;
-        result.message = "cancelled after " + std::to_string(result.points.size()) + " settings";
+        result.message = message(MessageId::CancelledAfterSettings, result.points.size());
         result.cpuSeconds = threadCpuSeconds() - cpuStart;
         return result;
     };
@@ -100,14 +100,14 @@ WorkPrecisionResult runWorkPrecision(const SimulationInput& input, const WorkPre
     refSettings.integrator = ref.integrator;
     refSettings.absTol = refSettings.relTol = ref.tolerance;
     refSettings.detectStiffness = false;  // however stiff the scene, the reference resolves it
-    report("reference " + describe(ref.integrator, true, ref.tolerance));
+    report(message(MessageId::SweepReference, describe(ref.integrator, true, ref.tolerance)));
     const SimulationResult reference = simulate(input, refSettings, {}, cancel);
     ++doneRuns;
     if (reference.status == SimulationStatus::Cancelled) return stopCancelled();
     if (reference.status != SimulationStatus::Completed) {
         result.status = SimulationStatus::Failed;
-        result.message = "the reference solution (" + describe(ref.integrator, true, ref.tolerance) +
-                         ") failed: " + reference.message;
+        result.message = message(MessageId::ReferenceSolutionFailed, describe(ref.integrator, true, ref.tolerance),
+                                 reference.message);
         result.cpuSeconds = threadCpuSeconds() - cpuStart;
         return result;
     }
@@ -116,7 +116,7 @@ WorkPrecisionResult runWorkPrecision(const SimulationInput& input, const WorkPre
     ref.cpuSeconds = reference.stats.cpuSeconds;
     SimulationSettings looser = refSettings;
     looser.absTol = looser.relTol = 10 * ref.tolerance;
-    report("reference error estimate " + describe(ref.integrator, true, looser.absTol));
+    report(message(MessageId::SweepReferenceErrorEstimate, describe(ref.integrator, true, looser.absTol)));
     const SimulationResult check = simulate(input, looser, {}, cancel);
     ++doneRuns;
     if (check.status == SimulationStatus::Cancelled) return stopCancelled();
@@ -142,7 +142,7 @@ WorkPrecisionResult runWorkPrecision(const SimulationInput& input, const WorkPre
             std::vector<double> cpu;
             for (int r = 0; r < settings.repeats; ++r) {
                 if (cancelled()) return stopCancelled();
-                report(describe(name, info.adaptive, setting));
+                report(literal(describe(name, info.adaptive, setting)));
                 const SimulationResult run = simulate(input, s, {}, cancel);
                 ++doneRuns;
                 if (run.status == SimulationStatus::Cancelled) return stopCancelled();
@@ -172,8 +172,8 @@ WorkPrecisionResult runWorkPrecision(const SimulationInput& input, const WorkPre
             result.points.push_back(point);
         }
     }
-    report("done");
-    if (progress) progress(1.0, "done");
+    report(MessageId::SweepDone);
+    if (progress) progress(1.0, MessageId::SweepDone);
     result.cpuSeconds = threadCpuSeconds() - cpuStart;
     return result;
 }

@@ -16,6 +16,7 @@
 
 #include <Eigen/Core>
 
+#include "core/model/message.hpp"
 #include "core/model/scene.hpp"
 #include "core/simulation/simulate.hpp"
 #include "core/simulation/trajectory.hpp"
@@ -38,7 +39,7 @@ struct WorkPrecisionPoint {
     bool adaptive = false;
     double setting = 0.0;        // tolerance (adaptive) or dt [s] (fixed step)
     bool completed = false;      // false: the run stopped (message says why)
-    std::string message;
+    Message message;
     double finalError = 0.0;     // see the header comment
     bool atReferenceFloor = false;  // finalError is not above the reference's own error estimate
     double maxRelEnergyDrift = 0.0;
@@ -69,12 +70,13 @@ struct WorkPrecisionResult {
     WorkPrecisionReference reference;
     std::vector<WorkPrecisionPoint> points;  // by integrator, then setting, as requested
     SimulationStatus status = SimulationStatus::Completed;  // Cancelled, or Failed (reference failed)
-    std::string message;
+    Message message;  // why it stopped; empty when it completed
     double cpuSeconds = 0.0;  // the whole analysis, this thread
 };
 
-// fraction 0..1 and what is being run ("dopri5 tol 1e-06"), from the worker thread.
-using WorkPrecisionProgress = std::function<void(double fraction, const std::string& what)>;
+// fraction 0..1 and what is being run ("dopri5 tol 1e-06", "reference fehlberg78 tol 1e-12"),
+// from the worker thread.
+using WorkPrecisionProgress = std::function<void(double fraction, const Message& what)>;
 
 // The scene must be valid (requireValidScene). Throws std::invalid_argument for an
 // unknown integrator name or an empty/non-positive setting list before anything runs.

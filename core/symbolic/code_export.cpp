@@ -50,7 +50,7 @@ public:
         }
         for (int k : cone) {
             const NamedDefinition& d = s_.table->entries()[k];
-            out << indent << (python_ ? "# " : "/* ") << d.meaning << (python_ ? "" : " */") << "\n";
+            out << indent << (python_ ? "# " : "/* ") << d.meaning.english() << (python_ ? "" : " */") << "\n";
             assign(d.name, expr(d.value));
         }
         return out.str();

@@ -39,7 +39,7 @@ NamedDefinitions::NamedDefinitions(const TrigContext& tc) : tc_(tc) {
 }
 
 GiNaC::ex NamedDefinitions::name(const GiNaC::ex& e, const std::string& plain, const std::string& latex,
-                                 const std::string& meaning, int step, int link, const std::string& unit) {
+                                 const Message& meaning, int step, int link, const std::string& unit) {
     throwIfCancelled(cancel_);
     const GiNaC::ex value = tc_.reduce(e);
     if (value.is_zero() || isAtomic(value)) return value;

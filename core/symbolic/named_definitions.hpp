@@ -20,6 +20,8 @@
 
 #include <ginac/ginac.h>
 
+#include "core/model/message.hpp"
+
 #include "core/symbolic/shared_symbol.hpp"
 #include "core/symbolic/trig_context.hpp"
 
@@ -30,7 +32,7 @@ struct NamedDefinition {
     std::string name;               // its plain name, a re-parsable identifier: "z2x_4"
     GiNaC::ex value;                // over q, c_i, s_i, parameters and earlier names
     std::string latex;              // "{}^{4}z_{2,x}"
-    std::string meaning;            // "x of axis z_2 (joint 3) in the frame of link 4"
+    Message meaning;                // "x of axis z_2 of frame 2 in the frame of link 4" (an id of symbolic.def)
     int step = 0;                   // the step of the course notes where it arises (1..8)
     int link = -1;                  // the link (0-based) whose quantity it is (β_jk⁽ⁱ⁾, J_P,j⁽ⁱ⁾, its frames); -1: none
     std::string unit;               // SI, "" when dimensionless: "m" for an origin, "kg·m²" for β between revolute joints
@@ -49,7 +51,7 @@ public:
     // e reduced; returned as it is when it is zero, a number, a symbol or number·symbol;
     // the entry's symbol (or its negative) when e (or −e) was named before; else a new
     // entry named `plain`, of `link` (−1: none), in `unit`.
-    GiNaC::ex name(const GiNaC::ex& e, const std::string& plain, const std::string& latex, const std::string& meaning,
+    GiNaC::ex name(const GiNaC::ex& e, const std::string& plain, const std::string& latex, const Message& meaning,
                    int step, int link = -1, const std::string& unit = "");
 
     const std::vector<NamedDefinition>& entries() const { return entries_; }

@@ -52,12 +52,11 @@ public:
                     if (c == 3)
                         named(r, c) = table_.name(product(r, c), "o" + comp + F + "_" + frame_,
                                                   "{}^{" + frame_ + "}o_{" + F + "," + comp + "}",
-                                                  comp + " of the origin of frame " + F + " in the frame of link " + frame_, 1, i_, "m");
+                                                  message(MessageId::MeaningOriginComponent, comp, F, frame_), 1, i_, "m");
                     else
                         named(r, c) = table_.name(product(r, c), std::string(1, kAxis[c]) + comp + F + "_" + frame_,
                                                   "{}^{" + frame_ + "}" + kAxis[c] + "_{" + F + "," + comp + "}",
-                                                  comp + " of axis " + kAxis[c] + "_" + F + " of frame " + F +
-                                                      " in the frame of link " + frame_,
+                                                  message(MessageId::MeaningAxisComponent, comp, std::string(1, kAxis[c]), F, frame_),
                                                   1, i_);
                 }
             named(3, 3) = 1;
@@ -79,9 +78,7 @@ public:
         baseOrigin = o[0];
         for (int j = 0; j <= link; ++j)
             JP[j] = vector(revolute[j] ? cross(Z[j], sub(com, O[j])) : Z[j], "J", idx(j), "J_{P," + idx(j) + ",@}^{(" + frame_ + ")}",
-                           "velocity of the centre of mass of link " + frame_ + " per unit qd" + idx(j) +
-                               " (J_P column), in its frame",
-                           4, "", revolute[j] ? "m" : "");
+                           MessageId::MeaningComVelocity, {literal(frame_), literal(idx(j))}, 4, "", revolute[j] ? "m" : "");
         if (robot.hasGravity) {
             Vec3 g0{robot.gravity(0, 0), robot.gravity(1, 0), robot.gravity(2, 0)};
             matrix baseR(3, 3), R(3, 3);
@@ -90,8 +87,8 @@ public:
                     baseR(r, c) = robot.base(c, r);  // world → frame 0
                     R(r, c) = P(r, c);               // frame 0 → link frame
                 }
-            gravity = vector(times(R, times(baseR, g0)), "g", "0", "g_{0,@}^{(" + frame_ + ")}",
-                             "gravity in the frame of link " + frame_, 6, "", "m/s²");
+            gravity = vector(times(R, times(baseR, g0)), "g", "0", "g_{0,@}^{(" + frame_ + ")}", MessageId::MeaningGravity,
+                             {literal(frame_)}, 6, "", "m/s²");
         }
         for (int c = 0; c < 3; ++c)
             for (int r = 0; r < 3; ++r) inertia(r, c) = joint.inertia(r, c);
@@ -101,14 +98,19 @@ public:
 
     // Components named "<letter><x|y|z><index>_<link><suffix>" (Jx2_4: x of J_P,2 of link 4),
     // which the printers set as J_{x2,4}; '@' in `latex` stands for the component (x, y, z).
+    // Each component means `meaning` with the component before `args`.
     Vec3 vector(const Vec3& v, const std::string& letter, const std::string& index, const std::string& latex,
-                const std::string& meaning, int step, const std::string& suffix = "", const std::string& unit = "") {
+                MessageId meaning, const std::vector<Message>& args, int step, const std::string& suffix = "",
+                const std::string& unit = "") {
         Vec3 r;
         for (int c = 0; c < 3; ++c) {
             const std::string comp(1, kAxis[c]);
             std::string l = latex;
             l.replace(l.find('@'), 1, comp);
-            r[c] = table_.name(v[c], letter + comp + index + "_" + frame_ + suffix, l, comp + " of the " + meaning, step, i_, unit);
+            std::vector<Message> componentArgs{literal(comp)};
+            componentArgs.insert(componentArgs.end(), args.begin(), args.end());
+            r[c] = table_.name(v[c], letter + comp + index + "_" + frame_ + suffix, l, Message(meaning, std::move(componentArgs)),
+                               step, i_, unit);
         }
         return r;
     }
@@ -129,7 +131,7 @@ public:
         else d = cross(Z[a], JP[l]);
         if (!isZero(d))
             d = vector(d, "D", idx(a), "\\partial J_{P," + idx(a) + ",@}^{(" + frame_ + ")}/\\partial q_{" + idx(l) + "}",
-                       "derivative of J_P column " + idx(a) + " of link " + frame_ + " by q" + idx(l), 8, "_" + idx(l),
+                       MessageId::MeaningJacobianDerivative, {literal(idx(a)), literal(frame_), literal(idx(l))}, 8, "_" + idx(l),
                        revolute_[a] ? (revolute_[l] ? "m" : "") : (revolute_[l] ? "" : "1/m"));
         dJPCache_.emplace(key, d);
         return d;
@@ -227,7 +229,7 @@ StructuredDynamics deriveStructured(const Scene& scene, const DerivationOptions&
                 if (revolute[j] && revolute[k]) beta += dot(link.Z[j], link.IZ[k]);
                 s.beta[j][k].push_back(table.name(beta, "beta" + idx(j) + "_" + idx(k) + "_" + L,
                                                   "\\beta_{" + indexList({j, k}) + "}^{(" + L + ")}",
-                                                  "contribution of link " + L + " to b" + indexList({j, k}), 7, i,
+                                                  message(MessageId::MeaningContribution, L, indexList({j, k})), 7, i,
                                                   massMatrixUnit(revolute[j], revolute[k])));
             }
         if (robot.hasGravity) {
@@ -239,9 +241,8 @@ StructuredDynamics deriveStructured(const Scene& scene, const DerivationOptions&
             for (int j = 0; j <= i; ++j)
                 s.g(j, 0) -= m * table.name(dot(link.gravity, link.JP[j]), "gamma" + idx(j) + "_" + L,
                                             "\\gamma_{" + idx(j) + "}^{(" + L + ")}",
-                                            "g0 . J_P column " + idx(j) + " of link " + L + " (its weight's lever on joint " +
-                                                idx(j) + " per unit mass)",
-                                            6, i, revolute[j] ? "m²/s²" : "m/s²");
+                                            message(MessageId::MeaningGravityLever, idx(j), L), 6, i,
+                                            revolute[j] ? "m²/s²" : "m/s²");
         }
         for (int j = 0; j <= i; ++j) {
             checkpoint(8, "dbeta_" + idx(j) + "k^(" + L + ")");  // a 12-joint link has ~400 of them: check often
@@ -250,7 +251,7 @@ StructuredDynamics deriveStructured(const Scene& scene, const DerivationOptions&
                     s.dB[l](j, k) += table.name(link.dBeta(j, k, l, m),
                                                 "delta" + idx(j) + "_" + idx(k) + "_" + L + "_" + idx(l),
                                                 "\\partial\\beta_{" + indexList({j, k}) + "}^{(" + L + ")}/\\partial q_{" + idx(l) + "}",
-                                                "derivative of beta" + idx(j) + "_" + idx(k) + "_" + L + " by q" + idx(l), 8, i,
+                                                message(MessageId::MeaningDerivative, "beta" + idx(j) + "_" + idx(k) + "_" + L, idx(l)), 8, i,
                                                 massMatrixUnit(revolute[j], revolute[k]) + (revolute[l] ? "" : "/m"));
         }
     }
@@ -303,7 +304,7 @@ StructuredDynamics deriveStructured(const Scene& scene, const DerivationOptions&
                 s.dB[l](j, k) = s.dB[l](k, j) =
                     table.name(s.dB[l](j, k), "Db" + idx(j) + "_" + idx(k) + "_" + idx(l),
                                "\\partial b_{" + indexList({j, k}) + "}/\\partial q_{" + idx(l) + "}",
-                               "derivative of b" + indexList({j, k}) + " by q" + idx(l), 8, -1,
+                               message(MessageId::MeaningDerivative, "b" + indexList({j, k}), idx(l)), 8, -1,
                                massMatrixUnit(revolute[j], revolute[k]) + (revolute[l] ? "" : "/m"));
             }
     checkpoint(8, "C");

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "core/model/cancellation.hpp"
+#include "core/model/message_error.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 
 namespace ll::symbolic {
@@ -27,11 +28,9 @@ std::string entryLabel(char m, int r, int c, int n) {
 }
 
 EntryRef parseEntry(const std::string& text, int n) {
-    const auto fail = [&](const std::string& why) {
-        throw std::invalid_argument("--entry: '" + text + "': " + why);
-    };
+    const auto fail = [&](Message why) { throw MessageError(message(MessageId::EntryRefused, text, std::move(why))); };
     if (text.size() < 2 || (text[0] != 'B' && text[0] != 'C' && text[0] != 'g' && text[0] != 'b' && text[0] != 'c'))
-        fail("expected B<j><k>, C<i><j> or g<j>, such as B11, C23, g4 (B1_10 with two-digit indices)");
+        fail(MessageId::EntryExpected);
     EntryRef e;
     e.matrix = static_cast<char>(text[0] == 'b' ? 'B' : text[0] == 'c' ? 'C' : text[0]);
     std::string rest = text.substr(1);
@@ -47,17 +46,18 @@ EntryRef parseEntry(const std::string& text, int n) {
             indices.push_back(std::stoi(rest));
         } else if (rest.size() == 2) {
             indices = {rest[0] - '0', rest[1] - '0'};
-        } else {
-            fail("write two-digit indices with '_' between them (B1_10)");
+        } else {  // B123: which digits go together is not said
+            fail(MessageId::EntryIndicesNotNumbers);
         }
     } catch (const std::logic_error&) {
-        fail("the indices are not numbers");
+        fail(MessageId::EntryIndicesNotNumbers);
     }
     for (char ch : rest)
-        if (!std::isdigit(static_cast<unsigned char>(ch)) && ch != '_' && ch != ',') fail("the indices are not numbers");
-    if (indices.size() != (e.matrix == 'g' ? 1u : 2u)) fail(e.matrix == 'g' ? "g has one index" : "B and C have two indices");
+        if (!std::isdigit(static_cast<unsigned char>(ch)) && ch != '_' && ch != ',') fail(MessageId::EntryIndicesNotNumbers);
+    if (indices.size() != (e.matrix == 'g' ? 1u : 2u))
+        fail(e.matrix == 'g' ? MessageId::EntryGHasOneIndex : MessageId::EntryBAndCHaveTwoIndices);
     for (int i : indices)
-        if (i < 1 || i > n) fail("indices run from 1 to " + std::to_string(n));
+        if (i < 1 || i > n) fail(message(MessageId::EntryIndicesRange, n));
     e.row = indices[0] - 1;
     e.col = indices.size() > 1 ? indices[1] - 1 : 0;
     e.label = entryLabel(e.matrix, e.row, e.col, n);

@@ -18,8 +18,8 @@ struct EntryRef {
     std::string label;  // as written
 };
 
-// Throws std::invalid_argument with a one-line reason for anything else or an index
-// outside 1..n.
+// Throws MessageError (core/model/message_error.hpp) with a one-line reason for anything
+// else or an index outside 1..n.
 EntryRef parseEntry(const std::string& text, int n);
 
 struct ExpandedEntry {

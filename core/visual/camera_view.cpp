@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "core/model/message_error.hpp"
+
 namespace ll {
 namespace {
 
@@ -55,9 +57,7 @@ CameraSpec parseCameraSpec(const std::string& text) {
         values.push_back(v);
     }
     ok = ok && (values.size() == 2 || values.size() == 3) && std::abs(values[1]) <= 90 && (values.size() == 2 || values[2] > 0);
-    if (!ok)
-        throw std::invalid_argument("unknown camera: expected front, side, top, iso, auto or azimuth,elevation[,distance] "
-                                    "(degrees, elevation within ±90, distance > 0 in metres)");
+    if (!ok) throw MessageError(MessageId::UnknownCamera);
     spec.preset = CameraSpec::Preset::Angles;
     spec.azimuth = values[0];
     spec.elevation = values[1];

@@ -29,7 +29,7 @@ struct CameraSpec {
 };
 
 // "auto", "front", "side", "top", "iso" or "azimuth,elevation[,distance]" (degrees,
-// metres). Throws std::invalid_argument saying what is accepted.
+// metres). Throws MessageError (core/model/message_error.hpp) saying what is accepted.
 CameraSpec parseCameraSpec(const std::string& text);
 
 struct CameraView {

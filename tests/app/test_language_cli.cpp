@@ -142,6 +142,37 @@ private slots:
                  qPrintable(warned.err));
     }
 
+    // A simulation that stops, a camera or an entry the command line refuses: the core's
+    // words and the program's frame around them in Danish, the English lines as ever.
+    void stoppedSimulationAndRefusedValuesInDanish() {
+        QTemporaryDir dir;
+        const QStringList stiff = {"simulate", example("hard/stiff_spring.json"), "--integrator", "dopri5", "--out", dir.filePath("t.csv")};
+        const Run en = run(stiff);
+        QCOMPARE(en.code, 3);
+        QVERIFY2(en.err.contains("\nerror: simulation stopped: the scene is stiff for dopri5: at t = "), qPrintable(en.err));
+        const Run da = run(stiff + QStringList{"--lang", "da"});
+        QCOMPARE(da.code, 3);
+        const QString stopped = da.err.split('\n', Qt::SkipEmptyParts).last();
+        QVERIFY2(stopped.startsWith(QString::fromUtf8("fejl: simuleringen stoppede: scenen er stiv for dopri5: ved t = ")) &&
+                     stopped.contains(QString::fromUtf8("Brug den implicitte integrator rosenbrock4")),
+                 qPrintable(stopped));
+        for (const char* english : {" the ", " stiff ", "error:"}) QVERIFY2(!stopped.contains(english), qPrintable(english + (": " + stopped)));
+
+        const QStringList camera = {"render", example("planar_2r.json"), "--out", dir.filePath("x.png"), "--camera", "diagonal"};
+        QCOMPARE(run(camera).err, QString::fromUtf8("error: --camera diagonal: unknown camera: expected front, side, top, iso, auto or "
+                                                    "azimuth,elevation[,distance] (degrees, elevation within ±90, distance > 0 in metres)\n"));
+        const Run cameraDa = run(camera + QStringList{"--lang", "da"});
+        QCOMPARE(cameraDa.code, 2);
+        QCOMPARE(cameraDa.err, QString::fromUtf8("fejl: --camera diagonal: ukendt kamera: forventede front, side, top, iso, auto eller "
+                                                 "azimuth,elevation[,distance] (grader, elevation inden for ±90, afstand > 0 i meter)\n"));
+
+        const QStringList entry = {"derive", example("planar_2r.json"), "--form", "expanded", "--entry", "B13"};
+        QCOMPARE(run(entry).err, QString("error: --entry: 'B13': indices run from 1 to 2\n"));
+        const Run entryDa = run(entry + QStringList{"--lang", "da"});
+        QCOMPARE(entryDa.code, 2);
+        QCOMPARE(entryDa.err, QString::fromUtf8("fejl: --entry: 'B13': indekserne går fra 1 til 2\n"));
+    }
+
     void notationProfiles_data() {
         QTest::addColumn<QString>("scene");
         QTest::addColumn<QString>("notation");

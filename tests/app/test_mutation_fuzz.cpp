@@ -154,7 +154,7 @@ std::string runInProcess(const std::string& text, int index, std::mt19937& rng, 
             if (!allFinite(r.trajectory)) return "simulate recorded a non-finite number";
             if (r.status == SimulationStatus::Failed) {
                 ++counts.simulationStopped;
-                if (r.message.empty() || r.message.find('\n') != std::string::npos) return "a stop without a one-line reason";
+                if (r.message.empty() || r.message.english().find('\n') != std::string::npos) return "a stop without a one-line reason";
             } else {
                 ++counts.simulated;
             }

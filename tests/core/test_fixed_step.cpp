@@ -194,7 +194,7 @@ private slots:
         const WorkPrecisionResult r = runWorkPrecision(scene, s);
         QCOMPARE(int(r.points.size()), 2);
         for (const WorkPrecisionPoint& p : r.points) {
-            QVERIFY2(p.completed, p.message.c_str());
+            QVERIFY2(p.completed, p.message.english().c_str());
             QCOMPARE(p.step, p.setting);
             QCOMPARE(p.steps, std::lround(2.0 / p.setting));
         }

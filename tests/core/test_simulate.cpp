@@ -96,6 +96,7 @@ private slots:
             if (f >= 0.3) cancel = true;
         }, &cancel);
         QCOMPARE(int(r.status), int(SimulationStatus::Cancelled));
+        QCOMPARE(int(r.message.id), int(MessageId::CancelledAtTime));
         QVERIFY(r.trajectory.t.back() >= 3.0 && r.trajectory.t.back() < 3.1);
         QVERIFY(lastFraction < 0.31);
     }
@@ -107,8 +108,8 @@ private slots:
         scene.simulation.dt = 1e-2;
         const SimulationResult r = simulate(scene);
         QCOMPARE(int(r.status), int(SimulationStatus::Failed));
-        QVERIFY2(r.message.find("non-finite") != std::string::npos, r.message.c_str());
-        QVERIFY(r.message.find("reduce dt") != std::string::npos);
+        QVERIFY2(r.message.english().find("non-finite") != std::string::npos, r.message.english().c_str());
+        QVERIFY(r.message.english().find("reduce dt") != std::string::npos);
         QVERIFY(r.trajectory.size() > 0);
     }
 

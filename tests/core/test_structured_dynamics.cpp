@@ -13,6 +13,7 @@
 #include "core/io/scene_file.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
 #include "core/model/diagnostics.hpp"
+#include "core/present/message_text.hpp"
 #include "core/symbolic/derivation_evaluator.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/robot_derivation.hpp"
@@ -354,10 +355,10 @@ private slots:
         NamedDefinitions table(tc);
         std::atomic<bool> cancel{false};
         table.setCancel(&cancel);
-        const GiNaC::ex a = table.name(tc.c(0) * tc.c(1) + 2, "a1", "a_{1}", "first", 1);
-        const GiNaC::ex b = table.name(a * a + tc.s(1), "b1", "b_{1}", "second", 1);
+        const GiNaC::ex a = table.name(tc.c(0) * tc.c(1) + 2, "a1", "a_{1}", literal("first"), 1);
+        const GiNaC::ex b = table.name(a * a + tc.s(1), "b1", "b_{1}", literal("second"), 1);
         cancel = true;
-        QVERIFY_THROWS_EXCEPTION(Cancelled, table.name(a * b + 1, "c1", "c_{1}", "third", 1));
+        QVERIFY_THROWS_EXCEPTION(Cancelled, table.name(a * b + 1, "c1", "c_{1}", literal("third"), 1));
         QCOMPARE(table.size(), 2);
         QVERIFY_THROWS_EXCEPTION(Cancelled, table.unfold(b * b));
         cancel = false;
@@ -385,6 +386,11 @@ private slots:
             const std::string what = e.what();
             QVERIFY2(what.find("parameters." + generated) != std::string::npos, e.what());
             QVERIFY2(what.find("rename the parameter") != std::string::npos, e.what());
+            // what the name means is a message too: the Danish sentence is Danish throughout
+            const std::string danish = present::messageText(e.diagnostics().front().message, present::Language::Danish);
+            QVERIFY2(danish.find("omdøb parameteren") != std::string::npos, danish.c_str());
+            for (const char* english : {" of ", "frame", "contribution", "derivative", "column", "velocity", "weight"})
+                QVERIFY2(danish.find(english) == std::string::npos, danish.c_str());
         }
         options.mode = ParameterMode::Numeric;
         (void)deriveStructured(scene, options);

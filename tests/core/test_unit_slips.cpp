@@ -175,7 +175,7 @@ private slots:
         Scene scene = parseScene(json.dump());
         scene.simulation.duration = 0.5;
         const SimulationResult r = simulate(scene, scene.simulation);
-        QVERIFY2(r.status == SimulationStatus::Completed, r.message.c_str());
+        QVERIFY2(r.status == SimulationStatus::Completed, r.message.english().c_str());
         QVERIFY(r.stats.maxRelEnergyError < 1e-6);
     }
 };

@@ -45,7 +45,7 @@ private slots:
             SimulationSettings s = loaded.scene.simulation;
             s.duration = 0.2;
             const SimulationResult r = simulate(loaded.scene, s);
-            QVERIFY2(r.status == SimulationStatus::Completed, qPrintable(QString::fromStdString(file + ": " + r.message)));
+            QVERIFY2(r.status == SimulationStatus::Completed, qPrintable(QString::fromStdString(file + ": " + r.message.english())));
             QVERIFY2(r.stats.maxRelEnergyError < 1e-4, qPrintable(QString::fromStdString(file)));
         }
     }

@@ -8,6 +8,7 @@
 
 #include "core/io/scene_file.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
+#include "core/model/message_error.hpp"
 #include "core/model/robot_data.hpp"
 #include "core/visual/camera_view.hpp"
 #include "core/visual/trajectory_sampler.hpp"
@@ -262,7 +263,7 @@ private slots:
         QCOMPARE(s.elevation, -10.0);
         QCOMPARE(s.distance, 4.5);
         for (const char* bad : {"", "diagonal", "30", "30,95", "1,2,3,4", "30,x", "30,10,-1", "nan,0"})
-            QVERIFY_THROWS_EXCEPTION(std::invalid_argument, parseCameraSpec(bad));
+            QVERIFY_THROWS_EXCEPTION(MessageError, parseCameraSpec(bad));
     }
 };
 

@@ -7,6 +7,8 @@
 #include <QSettings>
 #include <QTranslator>
 
+#include "core/present/diagnostic_text.hpp"
+
 namespace ll::ui {
 namespace {
 
@@ -81,5 +83,9 @@ bool installLanguage(present::Language language) {
 }
 
 present::Language windowLanguage() { return installed; }
+
+QString shownError(const std::exception& error, present::Language language) {
+    return QString::fromStdString(present::errorText(error, language));
+}
 
 }  // namespace ll::ui

@@ -5,6 +5,7 @@
 // starts: --lang, else what View → Language remembered, else the system locale (LANGUAGE,
 // LC_ALL, LC_MESSAGES, LANG). The derivation follows a change at once (the document is
 // relabelled, not derived again), and so do the menus and panels (ui/window/relabel.hpp).
+#include <exception>
 #include <optional>
 
 #include <QString>
@@ -32,5 +33,10 @@ bool installLanguage(present::Language language);
 
 // The language the window's strings are in now.
 present::Language windowLanguage();
+
+// What went wrong, for a message box or the status bar: our exceptions (InputError,
+// MessageError: a file that cannot be saved) in `language`, any other's what() as it is
+// (present::errorText). A worker passes the language it was given on the GUI thread.
+QString shownError(const std::exception& error, present::Language language);
 
 }  // namespace ll::ui

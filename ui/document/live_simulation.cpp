@@ -5,6 +5,7 @@
 
 #include "core/model/diagnostics.hpp"
 #include "core/present/diagnostic_text.hpp"
+#include "core/present/message_text.hpp"
 #include "ui/document/app_language.hpp"
 #include "core/pipeline/scene_simulation.hpp"
 
@@ -62,11 +63,12 @@ void LiveSimulation::start() {
             if (cancel->load()) return;
             result->visual = std::make_shared<VisualScene>(*scene, std::move(prepared.bodies));
             if (result->simulation.trajectory.size() > 0) result->visual->fitToMotion(result->simulation.trajectory);
-            if (result->simulation.status == SimulationStatus::Failed) result->error = result->simulation.message;
+            if (result->simulation.status == SimulationStatus::Failed)
+                result->error = present::messageText(result->simulation.message, language);
         } catch (const InputError& e) {
             for (const Diagnostic& d : e.diagnostics()) result->error += present::diagnosticBody(d, language) + "\n";
         } catch (const std::exception& e) {
-            result->error = e.what();
+            result->error = present::errorText(e, language);
         }
         if (cancel->load()) return;
         result->workerSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
@@ -83,7 +85,7 @@ void LiveSimulation::start() {
             analysis->properties =
                 std::make_shared<const ModelProperties>(checkModelProperties(*input, result->simulation.trajectory));
         } catch (const std::exception& e) {
-            analysis->error = e.what();
+            analysis->error = present::errorText(e, language);
         }
         if (cancel->load()) return;
         self->work_.deliver(self, request, [self, analysis] { emit self->analysed(analysis); });

@@ -11,6 +11,7 @@
 #include <QStatusBar>
 
 #include "core/io/atomic_file.hpp"
+#include "ui/document/app_language.hpp"
 
 namespace ll::ui {
 
@@ -29,7 +30,7 @@ void Autosave::write() {
     try {
         recovery_.write(original, originalHash_, doc_.json());
     } catch (const std::exception& e) {
-        window_.statusBar()->showMessage(tr("Autosave failed: %1").arg(QString::fromUtf8(e.what())), 8000);
+        window_.statusBar()->showMessage(tr("Autosave failed: %1").arg(shownError(e, windowLanguage())), 8000);
     }
 }
 
@@ -107,7 +108,7 @@ void Autosave::offer() {
                 try {
                     saveFileAtomically(scene.toStdString(), copy.scene.dump(2), Backup::None);
                 } catch (const std::exception& e) {
-                    QMessageBox::critical(&window_, tr("Restore unsaved work"), QString::fromUtf8(e.what()));
+                    QMessageBox::critical(&window_, tr("Restore unsaved work"), shownError(e, windowLanguage()));
                     continue;
                 }
                 CrashRecovery::remove(copy);

@@ -20,6 +20,7 @@
 #include "core/io/atomic_file.hpp"
 #include "ui/window/relabel.hpp"
 #include "ui/document/animation_export.hpp"
+#include "ui/document/app_language.hpp"
 #include "ui/document/lab_report.hpp"
 #include "ui/document/scene_document.hpp"
 #include "ui/paint/derivation_pages.hpp"
@@ -77,7 +78,7 @@ void ExportActions::askScreenshot() {
     try {
         saveFileAtomically(path.toStdString(), bytes.toStdString(), Backup::None);
     } catch (const std::exception& e) {
-        QMessageBox::critical(window, tr("Screenshot"), QString::fromUtf8(e.what()));
+        QMessageBox::critical(window, tr("Screenshot"), shownError(e, windowLanguage()));
     }
 }
 
@@ -125,7 +126,7 @@ bool ExportActions::plotTo(const QString& path, QString* error) {
         else
             chart->exportImage(path);
     } catch (const std::exception& e) {
-        if (error) *error = QString::fromUtf8(e.what());
+        if (error) *error = shownError(e, windowLanguage());
         return false;
     }
     parts_.window->statusBar()->showMessage(tr("Plot written to %1").arg(path), 8000);
@@ -158,7 +159,7 @@ bool ExportActions::derivationTo(const QString& path, QString* error) {
     // pdf|svg|png` (ui/paint/derivation_pages: SVG and PNG write page k beside FILE as
     // STEM-k.EXT), LaTeX and text rendered from the same display trees.
     auto display = shown_.derived->display;
-    QThreadPool::globalInstance()->start([display, path, suffix, self = QPointer<ExportActions>(this)] {
+    QThreadPool::globalInstance()->start([display, path, suffix, self = QPointer<ExportActions>(this), language = windowLanguage()] {
         QString failure, shown = path;  // shown: what the status bar names
         try {
             if (suffix == "pdf") {
@@ -184,7 +185,7 @@ bool ExportActions::derivationTo(const QString& path, QString* error) {
                 saveFileAtomically(path.toStdString(), present::renderDocument(*display, format), Backup::None);
             }
         } catch (const std::exception& e) {
-            failure = QString::fromUtf8(e.what());
+            failure = shownError(e, language);
         }
         QMetaObject::invokeMethod(qApp, [self, path, shown, failure] {
             if (!self) return;
@@ -270,7 +271,8 @@ void ExportActions::onWorker(const QString& target, const QString& label, bool w
         connect(dialog, &QProgressDialog::canceled, this, [cancel] { cancel->store(true); });
         dialog->show();
     }
-    QThreadPool::globalInstance()->start([self = QPointer<ExportActions>(this), dialog, cancel, work = std::move(work), target, withDialog] {
+    QThreadPool::globalInstance()->start([self = QPointer<ExportActions>(this), dialog, cancel, work = std::move(work), target, withDialog,
+                                          language = windowLanguage()] {
         QString failure;
         try {
             work([dialog](double f) {
@@ -279,7 +281,7 @@ void ExportActions::onWorker(const QString& target, const QString& label, bool w
                 }, Qt::QueuedConnection);
             }, cancel.get());
         } catch (const std::exception& e) {
-            failure = QString::fromUtf8(e.what());
+            failure = shownError(e, language);
         }
         QMetaObject::invokeMethod(qApp, [self, dialog, target, failure, withDialog] {
             if (dialog) dialog->close();

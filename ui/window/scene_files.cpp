@@ -11,6 +11,7 @@
 #include <QStatusBar>
 
 #include "ui/window/relabel.hpp"
+#include "ui/document/app_language.hpp"
 #include "ui/document/live_derivation.hpp"
 #include "ui/document/scene_document.hpp"
 #include "ui/window/example_gallery.hpp"
@@ -107,7 +108,7 @@ bool SceneFiles::saveTo(const QString& path, QString* error) {
     try {
         doc_.saveFile(path);
     } catch (const std::exception& e) {
-        if (error) *error = QString::fromUtf8(e.what());
+        if (error) *error = shownError(e, windowLanguage());
         return false;
     }
     addRecent(QFileInfo(path).absoluteFilePath());

@@ -12,6 +12,8 @@
 
 #include "core/model/cancellation.hpp"
 #include "core/pipeline/scene_simulation.hpp"
+#include "core/present/message_text.hpp"
+#include "ui/document/app_language.hpp"
 #include "ui/paint/work_precision_plot.hpp"
 
 namespace ll::ui {
@@ -100,19 +102,21 @@ void WorkPrecisionPane::run() {
     settings.tolerances = {1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10};
     settings.steps = {1e-2, 3e-3, 1e-3};
     settings.duration = std::min(scene_.simulation.duration, 5.0);
-    pool_.start([self = this, scene = scene_, settings, generation, stop] {
+    pool_.start([self = this, scene = scene_, settings, generation, stop, language = windowLanguage()] {
         std::optional<WorkPrecisionResult> result;
         QString error;
         try {
-            result = ll::runWorkPrecision(scene, settings, [self, generation](double fraction, const std::string& what) {
-                self->sweep_.deliver(self, generation, [self, fraction, text = QString::fromStdString(what)] {
+            result = ll::runWorkPrecision(scene, settings, [self, generation, language](double fraction, const Message& what) {
+                self->sweep_.deliver(self, generation, [self, fraction, text = QString::fromStdString(present::messageText(what, language))] {
                     self->progress_->setValue(static_cast<int>(fraction * 1000));
                     self->label_->setText(text);
                 });
             }, stop.get());
             if (stop->load()) result.reset(), error = tr("cancelled");
+            else if (result->status == SimulationStatus::Failed)  // the reference failed: no point to plot
+                error = QString::fromStdString(present::messageText(result->message, language)), result.reset();
         } catch (const std::exception& e) {
-            error = QString::fromStdString(e.what());
+            error = shownError(e, language);
         }
         self->sweep_.deliver(self, generation, [self, result = std::move(result), error] {
             self->run_->setEnabled(true);
