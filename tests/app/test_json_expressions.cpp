@@ -81,8 +81,11 @@ double ginacValue(const std::string& text) {
 
 class TestJsonExpressions : public QObject {
     Q_OBJECT
+    bool sympy_ = false;  // python3-sympy importable: asked once (an import takes over a second)
 
 private slots:
+    void initTestCase() { sympy_ = ll::test::runProcess("python3", {"-c", "import sympy"}).exitCode == 0; }
+
     void sympyAndGinacAgree_data() {
         QTest::addColumn<QString>("scene");
         QTest::addColumn<QString>("mode");
@@ -109,7 +112,7 @@ private slots:
         std::vector<double> ginac;
         for (const std::string& t : texts) ginac.push_back(ginacValue(t));
 
-        if (ll::test::runProcess("python3", {"-c", "import sympy"}).exitCode != 0) QSKIP("python3-sympy is not installed");
+        if (!sympy_) QSKIP("python3-sympy is not installed");
         QTemporaryDir dir;
         const QString path = dir.filePath("derived.json");
         QFile f(path);
