@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""Reads every `expr` of a `lagrangelab derive --format json` document with SymPy, as a
-Python reader would, and prints their values, one per line, in document order.
+"""Reads every `expr` of `lagrangelab derive --format json` documents with SymPy, as a
+Python reader would, and prints for each document given "file <path>" and then the values,
+one per line, in document order.
 
 The grammar (docs/user/derivation.md#expressions-in-json): numbers (integers, decimals,
 a/b), identifiers (symbols: q1, qd1, qdd1, t, parameters, structured names), pi, + - * /,
@@ -47,13 +48,17 @@ def evaluate(text):
     local = dict(FUNCTIONS)
     local.update({n: sympy.Symbol(n) for n in names})
     e = sympy.sympify(text, locals=local, convert_xor=True)
-    return float(e.subs({local[n]: value_of(n) for n in names}).evalf(30))
+    # xreplace with 30-digit numbers, then evalf: the value subs() gives, in a third of its time.
+    return float(e.xreplace({local[n]: sympy.Float(value_of(n), 30) for n in names}).evalf(30))
 
 
 def main():
-    document = json.load(open(sys.argv[1], encoding="utf-8"))
-    for text in expressions(document):
-        print(repr(evaluate(text)))
+    for path in sys.argv[1:]:
+        print("file " + path)
+        with open(path, encoding="utf-8") as f:
+            document = json.load(f)
+        for text in expressions(document):
+            print(repr(evaluate(text)))
 
 
 if __name__ == "__main__":

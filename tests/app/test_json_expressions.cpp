@@ -9,6 +9,7 @@
 #include <QTemporaryDir>
 
 #include <filesystem>
+#include <map>
 #include <regex>
 #include <set>
 
@@ -79,49 +80,76 @@ double ginacValue(const std::string& text) {
 
 }  // namespace
 
+// One scene in one mode: its row's name and the JSON document `derive` wrote.
+struct Derived {
+    QString row;
+    int exitCode = -1;
+    QByteArray json;
+    QString path;  // where it was written for SymPy
+};
+
 class TestJsonExpressions : public QObject {
     Q_OBJECT
-    bool sympy_ = false;  // python3-sympy importable: asked once (an import takes over a second)
+    QTemporaryDir dir_;
+    std::vector<Derived> derived_;
+    bool sympy_ = false;                        // python3-sympy importable
+    std::map<QString, QList<QByteArray>> read_;  // per written file, SymPy's values in document order
+    QByteArray sympyError_;
 
 private slots:
-    void initTestCase() { sympy_ = ll::test::runProcess("python3", {"-c", "import sympy"}).exitCode == 0; }
-
-    void sympyAndGinacAgree_data() {
-        QTest::addColumn<QString>("scene");
-        QTest::addColumn<QString>("mode");
+    // Every scene derived first; then one Python process reads every document (a process
+    // per document spent most of this test's time importing SymPy).
+    void initTestCase() {
+        QVERIFY(dir_.isValid());
         for (const char* folder : {"", "hard/"})
             for (const auto& entry : std::filesystem::directory_iterator(std::string(LL_EXAMPLES_DIR) + "/" + folder)) {
                 if (entry.path().extension() != ".json") continue;
                 const std::string name = entry.path().filename().string();
                 if (name == "massless_joint.json") continue;  // refused: its B is singular
-                for (const char* mode : {"parameters", "numeric"})
-                    QTest::newRow((name + " " + mode).c_str()) << QString::fromStdString(entry.path().string()) << QString(mode);
+                for (const char* mode : {"parameters", "numeric"}) {
+                    QStringList args{"derive", QString::fromStdString(entry.path().string()), "--format", "json"};
+                    if (std::string(mode) == "numeric") args << "--numeric";
+                    const auto run = ll::test::runProcess(LL_CLI, args);
+                    Derived d{QString::fromStdString(name + " " + mode), run.exitCode, run.out,
+                              dir_.filePath(QString("%1.json").arg(derived_.size()))};
+                    QFile f(d.path);
+                    QVERIFY(f.open(QIODevice::WriteOnly));
+                    f.write(d.json);
+                    derived_.push_back(std::move(d));
+                }
             }
+        QVERIFY(derived_.size() > 20);
+        sympy_ = ll::test::runProcess("python3", {"-c", "import sympy"}).exitCode == 0;
+        if (!sympy_) return;
+        QStringList args{QString(LL_SOURCE_DIR) + "/tests/sympy_reader.py"};
+        for (const Derived& d : derived_)
+            if (d.exitCode == 0) args << d.path;
+        const auto read = ll::test::runProcess("python3", args);
+        if (read.exitCode != 0) sympyError_ = read.err.isEmpty() ? QByteArray("sympy_reader.py failed") : read.err;
+        QList<QByteArray>* values = nullptr;
+        for (const QByteArray& line : read.out.split('\n'))
+            if (line.startsWith("file ")) values = &read_[QString::fromUtf8(line.mid(5))];
+            else if (values && !line.isEmpty()) values->push_back(line);
+    }
+
+    void sympyAndGinacAgree_data() {
+        QTest::addColumn<int>("index");
+        for (std::size_t k = 0; k < derived_.size(); ++k) QTest::newRow(derived_[k].row.toUtf8().constData()) << static_cast<int>(k);
     }
     void sympyAndGinacAgree() {
-        QFETCH(QString, scene);
-        QFETCH(QString, mode);
-        QStringList args{"derive", scene, "--format", "json"};
-        if (mode == "numeric") args << "--numeric";
-        const auto derived = ll::test::runProcess(LL_CLI, args);
+        QFETCH(int, index);
+        const Derived& derived = derived_[static_cast<std::size_t>(index)];
         QCOMPARE(derived.exitCode, 0);
-        QVERIFY2(!derived.out.contains("Pi"), "pi is written pi");
+        QVERIFY2(!derived.json.contains("Pi"), "pi is written pi");
         std::vector<std::string> texts;
-        expressions(nlohmann::ordered_json::parse(derived.out.toStdString()), texts);
+        expressions(nlohmann::ordered_json::parse(derived.json.toStdString()), texts);
         QVERIFY(!texts.empty());
         std::vector<double> ginac;
         for (const std::string& t : texts) ginac.push_back(ginacValue(t));
 
         if (!sympy_) QSKIP("python3-sympy is not installed");
-        QTemporaryDir dir;
-        const QString path = dir.filePath("derived.json");
-        QFile f(path);
-        QVERIFY(f.open(QIODevice::WriteOnly));
-        f.write(derived.out);
-        f.close();
-        const auto read = ll::test::runProcess("python3", {QString(LL_SOURCE_DIR) + "/tests/sympy_reader.py", path});
-        QVERIFY2(read.exitCode == 0, read.err.constData());
-        const QList<QByteArray> lines = read.out.trimmed().split('\n');
+        QVERIFY2(sympyError_.isEmpty(), sympyError_.constData());
+        const QList<QByteArray>& lines = read_[derived.path];
         QCOMPARE(static_cast<std::size_t>(lines.size()), ginac.size());
         for (std::size_t k = 0; k < ginac.size(); ++k) {
             const double s = lines[static_cast<qsizetype>(k)].toDouble();
