@@ -16,6 +16,7 @@
 #include "core/model/quantity_units.hpp"
 #include "core/model/robot_data.hpp"
 #include "core/present/labels.hpp"
+#include "core/present/step_formula_text.hpp"
 
 namespace ll {
 namespace {
@@ -143,9 +144,12 @@ present::DisplayStep poseResults(const Scene& scene, const Eigen::VectorXd& q, c
     present::DisplayStep step;
     step.number = poseStepNumber;
     step.title = MessageId::TitlePoseResults;
-    step.formulaText = "The mass matrix, the Coriolis matrix, the gravity vector and the energies of steps 6 to 8 "
-                       "evaluated at the pose of the teach sliders, with the scene's initial joint velocities";
-    step.formulaLatex = "B(q),\\ C(q,\\dot q),\\ g(q),\\ E_{\\mathrm{kin}},\\ E_{\\mathrm{pot}} \\text{ at this } q, \\dot q";
+    step.general = stepFormula("«1»", "«1»", {formulaWords(MessageId::FormulaPoseResults)},
+                               {formulaWords(MessageId::FormulaAtThisPose,
+                                             {"«B»(q),\\ C(q,\\dot q),\\ «g»(q),\\ E_{\\mathrm{kin}},\\ E_{\\mathrm{pot}}", "q, \\dot q"})});
+    // In English here; the window writes it in its language (a sentence, not typeset).
+    step.formulaText = present::formulaText(step.general, {});
+    step.formulaLatex = present::formulaLatex(step.general, {});
     step.items.push_back(item("q", present::Quantity::Coordinates, "q", matrix(shown), perJoint(scene, "°", "m")));
     step.items.push_back(item("qd", present::Quantity::Velocities, "\\dot{q}", matrix(qd), perJoint(scene, "rad/s", "m/s")));
     step.items.push_back(item("Ekin", present::Quantity::KineticEnergy, "E_{\\mathrm{kin}}", number(ekin), "J"));

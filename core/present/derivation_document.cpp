@@ -54,9 +54,12 @@ DisplayItem displayItem(const Derivation& d, const DerivationItem& item, Textboo
 // A step as displayed, without its items yet: the notes' general formula typeset; a
 // robot's step 7 also gives B as the notes sum it.
 DisplayStep stepHead(const Derivation& d, const DerivationStep& step) {
-    DisplayStep s{step.number, step.title, step.formulaText, step.formulaLatex, {}, step.seconds, {}};
-    const bool sumsB = d.system == symbolic::SystemKind::Robot && step.number == 7;
-    s.formula = formulaFromLatex(step.formulaLatex + (sumsB ? massMatrixSum(notationSymbols(Notation::Notes)) : ""), step.formulaText);
+    DisplayStep s;
+    s.number = step.number;
+    s.title = step.title;
+    s.general = step.formula;
+    s.seconds = step.seconds;
+    writeFormula(s, {Language::English, Notation::Notes, d.system == symbolic::SystemKind::Robot});
     return s;
 }
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/model/message.hpp"
+#include "core/model/step_formula.hpp"
 #include "core/present/display_tree.hpp"
 #include "core/present/language.hpp"
 #include "core/present/notation.hpp"
@@ -34,6 +35,7 @@ struct DisplayItem {
 struct DisplayStep {
     int number = 0;
     Message title;  // in words where it is shown, in the document's language (message_text.hpp)
+    StepFormula general;  // the general formula as data; the next three are it written (localized_document.hpp: writeFormula)
     std::string formulaText, formulaLatex;
     std::vector<DisplayItem> items;
     double seconds = 0.0;

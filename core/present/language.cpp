@@ -11,28 +11,6 @@ namespace {
 // Phrases inside longer texts, longest first where one contains another.
 const std::vector<std::pair<std::string, std::string>>& danishPhrases() {
     static const std::vector<std::pair<std::string, std::string>> table = {
-        // step formulas
-        {"revolute q_i adds to theta_i, prismatic q_i to d_i", "rotationsled: q_i lægges til theta_i, prismatisk led: q_i til d_i"},
-        {"row i:", "række i:"},
-        {"\\text{row }", "\\text{række }"},
-        {"(r_ci: COM of link i in frame i)", "(r_ci: massemidtpunktet for link i, udtrykt i koordinatsystem i)"},
-        {"j<=i, revolute", "j<=i, rotationsled"},
-        {"as given: gravity, springs and every other conservative force", "som angivet: tyngdekraft, fjedre og enhver anden konservativ kraft"},
-        {"as given", "som angivet"},
-        {"(no gravity declared)", "(ingen tyngdekraft angivet)"},
-        {"non-conservative forces only", "kun ikke-konservative kræfter"},
-        {"minimal, independent and complete; the velocity of x is", "minimale, uafhængige og fuldstændige; hastigheden af x er"},
-        {"minimal, independent, complete", "minimale, uafhængige, fuldstændige"},
-        {"written as", "skrevet som"},
-        {" with g = ", " med g = "},
-        {"motors: rotor j (inertia Jm_j, gear ratio G_j) turns at G_j qd_j, so it adds its armature Jm_j G_j^2 to b_jj",
-         "motorer: rotor j (inertimoment Jm_j, udvekslingsforhold G_j) drejer med G_j qd_j og lægger derfor sin rotorinerti Jm_j G_j^2 til b_jj"},
-        {"(Ja_j when given as armature)", "(Ja_j, når motoren er angivet ved sin rotorinerti)"},
-        // the actuation sentence at the end of step 8's formula
-        {"no inputs", "ingen input"},
-        {"inputs on", "input på"},
-        {"(underactuated:", "(underaktueret:"},
-        {"(fully actuated)", "(fuldt aktueret)"},
         // why a form was chosen (core/pipeline/derivation_forms.cpp)
         {"the expanded textbook form is cheap", "den ekspanderede lærebogsform er billig at udlede"},
         {"the expanded form grows exponentially (thousands of terms per entry), the structured form stays short",
@@ -67,14 +45,8 @@ const std::vector<std::pair<std::string, std::string>>& danishPhrases() {
         {" to b", " til b"},
         {" and the velocities", " og hastighederne"},
         // the structured form's section formulas
-        {"Every vector of link i is written in link i's own frame, where its centre of mass and inertia tensor are constant.",
-         "Hver vektor for link i skrives i link i's eget koordinatsystem, hvor dets massemidtpunkt og inertitensor er konstante."},
-        {"for a revolute joint j, z_j for a prismatic one.", "for et rotationsled j, z_j for et prismatisk led."},
-        {"for a spring", "for en fjeder"},
-        {"for a motor", "for en motor"},
         {"depends on", "afhænger af"},
         {" only.", " alene."},
-        {"derivatives ∂b_jk/∂q_l (j ≤ k) are non-zero.", "afledte ∂b_jk/∂q_l (j ≤ k) er forskellige fra nul."},
         {" of ", " af "},
         {" joints", " led"},
         {" with ", " med "},

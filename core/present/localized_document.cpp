@@ -7,53 +7,11 @@
 #include "core/present/latex_formula.hpp"
 #include "core/present/latex_text.hpp"
 #include "core/present/message_text.hpp"
+#include "core/present/step_formula_text.hpp"
 #include "core/present/symbol_names.hpp"
 
 namespace ll::present {
 namespace {
-
-using Replacements = std::vector<std::pair<std::string, std::string>>;
-
-// The general formulas of steps 7 and 8 (core/symbolic/*_derivation.cpp) in the
-// notation's letters: B(q) q̈ … = Q becomes M(Θ) Θ̈ … = τ.
-Replacements latexLetters(const NotationSymbols& n, bool robot) {
-    Replacements r;
-    if (robot) {
-        r = {{"\\partial q_", "\\partial " + n.coordinateLatex + "_"}, {"\\partial q}", "\\partial " + n.vectorLatex + "}"},
-             {"\\dot{q}_", "\\dot{" + n.coordinateLatex + "}_"},   {"\\ddot{q}", "\\ddot{" + n.vectorLatex + "}"},
-             {"\\dot{q}", "\\dot{" + n.vectorLatex + "}"},          {"B(q)", n.mass + "(" + n.vectorLatex + ")"}};
-    }
-    r.insert(r.end(), {{"B(q)", n.mass + "(q)"},
-                       {"B\\ddot", n.mass + "\\ddot"},
-                       {"B^{-1}", n.mass + "^{-1}"},
-                       {"b_{", n.massEntry + "_{"},
-                       {"g = \\frac", n.gravity + " = \\frac"},
-                       {"+ g = Q", "+ " + n.gravity + " = " + n.forceLatex},
-                       {"(Q - ", "(" + n.forceLatex + " - "},
-                       {"- g)", "- " + n.gravity + ")"}});
-    return r;
-}
-
-Replacements textLetters(const NotationSymbols& n, bool robot) {
-    const std::string q = robot && n.coordinate != "q" ? "theta" : "q", Q = robot && n.vectorLatex != "q" ? "Theta" : "q",
-                      tau = n.force == "τ" ? "tau" : n.force;
-    Replacements r;
-    if (robot)
-        r = {{"dE_pot/dq;", "dE_pot/d" + Q + ";"}, {"/dq_", "/d" + q + "_"}, {" qd_k", " " + q + "d_k"},
-             {"qd^T B(q) qd", Q + "d^T " + n.mass + "(" + Q + ") " + Q + "d"}, {"qdd = B^-1", Q + "dd = B^-1"},
-             {"B qdd + C qd", "B " + Q + "dd + C " + Q + "d"}, {"- C qd -", "- C " + Q + "d -"}};
-    r.insert(r.end(), {{"B(q)", n.mass + "(q)"},
-                       {"db_", "d" + n.massEntry + "_"},
-                       {"b_ij", n.massEntry + "_ij"},
-                       {"g = dE_pot", n.gravity + " = dE_pot"},
-                       {"Q: non-conservative", tau + ": non-conservative"},
-                       {"B ", n.mass + " "},
-                       {"B^-1", n.mass + "^-1"},
-                       {"+ g = Q", "+ " + n.gravity + " = " + tau},
-                       {"(Q - ", "(" + tau + " - "},
-                       {"- g)", "- " + n.gravity + ")"}});
-    return r;
-}
 
 // A robot's joint variables q_i, q̇_i, q̈_i with the notation's letter (Craig's θ_i) in
 // every tree; the nodes not touched are shared.
@@ -99,6 +57,15 @@ std::string massMatrixSum(const NotationSymbols& n) {
            R"() = \sum_i \left(m_i\, J_{P,i}^T J_{P,i} + J_{O,i}^T R_i\, I_{li}\, R_i^T J_{O,i}\right))";
 }
 
+void writeFormula(DisplayStep& step, const FormulaReader& reader) {
+    step.formulaText = formulaText(step.general, reader);
+    step.formulaLatex = formulaLatex(step.general, reader);
+    if (reader.notation == Notation::Craig && step.number == 8 && reader.robot)
+        step.formulaLatex += R"(,\quad V(\Theta, \dot{\Theta}) = C\,\dot{\Theta})";
+    const bool sumsB = step.number == 7 && reader.robot;
+    step.formula = formulaFromLatex(step.formulaLatex + (sumsB ? massMatrixSum(notationSymbols(reader.notation)) : ""), step.formulaText);
+}
+
 Message formName(const std::string& form) {
     if (form == "expanded") return MessageId::FormExpanded;
     if (form == "structured") return MessageId::FormStructured;
@@ -118,20 +85,7 @@ std::shared_ptr<DisplayDocument> localizedDocument(const DisplayDocument& docume
     const NotationSymbols& n = notationSymbols(p.notation);
     const bool letters = p.notation != Notation::Notes, rename = document.robot && n.coordinate != "q";
     for (DisplayStep& step : out->steps) {
-        const std::string latexBefore = step.formulaLatex;
-        if (letters && (step.number == 7 || step.number == 8)) {
-            step.formulaLatex = replacedInOrder(step.formulaLatex, latexLetters(n, document.robot));
-            step.formulaText = replacedInOrder(step.formulaText, textLetters(n, document.robot));
-            if (p.notation == Notation::Craig && step.number == 8 && document.robot)
-                step.formulaLatex += R"(,\quad V(\Theta, \dot{\Theta}) = C\,\dot{\Theta})";
-        }
-        if (p.language != Language::English) {
-            step.formulaText = translatedPhrases(step.formulaText, p.language);
-            step.formulaLatex = translatedPhrases(step.formulaLatex, p.language);
-        }
-        if (step.formulaLatex != latexBefore || (letters && step.number == 7 && document.robot))
-            step.formula = formulaFromLatex(step.formulaLatex + (step.number == 7 && document.robot ? massMatrixSum(n) : ""),
-                                            step.formulaText);
+        writeFormula(step, {p.language, p.notation, document.robot});
         for (DisplayItem& item : step.items) {
             if (rename) {
                 item.equation = renamed(item.equation, n);

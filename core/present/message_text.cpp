@@ -25,13 +25,17 @@ const char* danishWords(MessageId id) {
     return k < catalogue.size() ? catalogue[k] : nullptr;
 }
 
+const char* wordsOf(MessageId id, Language language) {
+    const char* words = language == Language::Danish ? danishWords(id) : nullptr;
+    return words ? words : englishWords(id);
+}
+
 std::string messageText(const Message& message, Language language) {
     if (message.id == MessageId::Literal) return message.literal;
     std::vector<std::string> args;
     args.reserve(message.args.size());
     for (const Message& a : message.args) args.push_back(messageText(a, language));
-    const char* words = language == Language::Danish ? danishWords(message.id) : nullptr;
-    return filledIn(words ? words : englishWords(message.id), args);
+    return filledIn(wordsOf(message.id, language), args);
 }
 
 }  // namespace ll::present

@@ -15,4 +15,8 @@ std::string messageText(const Message& message, Language language);
 // catalogue fails then; the reader meets the English words).
 const char* danishWords(MessageId id);
 
+// The words of an id in a language, {1}, {2}, … where its arguments go (the English
+// where the language has none).
+const char* wordsOf(MessageId id, Language language);
+
 }  // namespace ll::present

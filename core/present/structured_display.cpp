@@ -7,7 +7,7 @@
 #include "core/model/cancellation.hpp"
 #include "core/present/display_builder.hpp"
 #include "core/symbolic/ginac_lock.hpp"
-#include "core/present/latex_formula.hpp"
+#include "core/present/localized_document.hpp"
 #include "core/present/structured_notes.hpp"
 #include "core/present/symbol_names.hpp"
 #include "core/symbolic/index_list.hpp"
@@ -80,31 +80,40 @@ Message sectionTitle(int step) {
     return {};
 }
 
-std::string sectionFormula(int step, const StructuredDynamics& s) {
+// The section's general formula, as the notes write it.
+StepFormula sectionFormula(int step, const StructuredDynamics& s) {
     const int n = s.n;
+    StepFormula f;
     switch (step) {
-    case 1: return "Every vector of link i is written in link i's own frame, where its centre of mass and inertia tensor are constant.";
-    case 4: return "J_P,j^(i) = z_j × (p_ci − o_j) for a revolute joint j, z_j for a prismatic one.";
-    case 6: return "g_j = −Σ_{i≥j} m_i g0ᵀ J_P,j^(i) (+ K_j (q_j − q_j,rest) for a spring).";
-    case 7: return "b_jk = Σ_{i≥max(j,k)} β_jk^(i) (+ J_m G² on b_jj for a motor); b_jk depends on q_{min(j,k)+1..n} only.";
+    case 1:
+        f = stepFormula("«1»", R"(T_i^0 = A_1 A_2 \cdots A_i,\quad {}^{(i)}x_f,\ {}^{(i)}y_f,\ {}^{(i)}z_f,\ {}^{(i)}o_f:\ «1»)",
+                        {formulaWords(MessageId::FormulaSectionFrames)}, {formulaWords(MessageId::FormulaColumnsOf, {"(T_i^0)^{-1} T_f^0"})});
+        break;
+    case 4:
+        f = stepFormula("«1»", R"(J_{P,j}^{(i)} = z_j \times (p_{ci} - o_j)\ «1»,\quad J_{P,j}^{(i)} = z_j\ «2»,\quad J_{O,j}^{(i)} = z_j)",
+                        {formulaWords(MessageId::FormulaJacobianColumns, {"J_P,j^(i) = z_j × (p_ci − o_j)", "z_j"})},
+                        {formulaWords(MessageId::FormulaRevolute), formulaWords(MessageId::FormulaPrismatic)});
+        break;
+    case 6:
+        f = stepFormula("«g»_j = −Σ_{i≥j} m_i g0ᵀ J_P,j^(i) «1».",
+                        R"(\gamma_j^{(i)} = g_0^T J_{P,j}^{(i)},\quad «g»_j = \frac{\partial E_{\mathrm{pot}}}{\partial «q_»j} = -\sum_{i \ge j} m_i\, \gamma_j^{(i)})",
+                        {formulaWords(MessageId::FormulaForSpring, {"K_j («q_»j − «q_»j,rest)"})});
+        break;
+    case 7:
+        f = stepFormula("«b»_jk = Σ_{i≥max(j,k)} β_jk^(i) «1»; «2»",
+                        R"(\beta_{jk}^{(i)} = m_i\, J_{P,j}^{(i)T} J_{P,k}^{(i)} + z_j^T I_i\, z_k,\quad «b»_{jk} = \sum_{i \ge \max(j,k)} \beta_{jk}^{(i)})",
+                        {formulaWords(MessageId::FormulaForMotor, {"J_m G²", "«b»_jj"}),
+                         formulaWords(MessageId::FormulaDependsOnOnly, {"«b»_jk", "q_{min(j,k)+1..n}"})});
+        break;
     case 8:
-        return "c_ij = Σ_k ½ (∂b_ij/∂q_k + ∂b_ik/∂q_j − ∂b_jk/∂q_i) q̇_k;  B q̈ + C q̇ + g = Q.  " +
-               std::to_string(s.nonZeroMassDerivatives()) + " of " + std::to_string(n * n * (n + 1) / 2) +
-               " derivatives ∂b_jk/∂q_l (j ≤ k) are non-zero.";
+        f = stepFormula("c_ij = Σ_k ½ (∂«b»_ij/∂«q_»k + ∂«b»_ik/∂«q_»j − ∂«b»_jk/∂«q_»i) «q'_»k;  «B» q̈ + C q̇ + «g» = «Q».  «1»",
+                        R"(c_{ij} = \sum_k \tfrac{1}{2}\left(\frac{\partial «b»_{ij}}{\partial «q_»k} + \frac{\partial «b»_{ik}}{\partial «q_»j} - \frac{\partial «b»_{jk}}{\partial «q_»i}\right)«q'_»k,\quad «B»«q''» + C«q'» + «g» = «Q»)",
+                        {formulaWords(MessageId::FormulaNonZeroDerivatives, {std::to_string(s.nonZeroMassDerivatives()),
+                                                                             std::to_string(n * n * (n + 1) / 2), "∂«b»_jk/∂q_l (j ≤ k)"})});
+        break;
     }
-    return "";
-}
-
-// The same as the notes write it, typeset.
-std::string sectionLatex(int step) {
-    switch (step) {
-    case 1: return R"(T_i^0 = A_1 A_2 \cdots A_i,\quad {}^{(i)}x_f,\ {}^{(i)}y_f,\ {}^{(i)}z_f,\ {}^{(i)}o_f:\ \text{columns of } (T_i^0)^{-1} T_f^0)";
-    case 4: return R"(J_{P,j}^{(i)} = z_j \times (p_{ci} - o_j)\ \text{(revolute)},\quad J_{P,j}^{(i)} = z_j\ \text{(prismatic)},\quad J_{O,j}^{(i)} = z_j)";
-    case 6: return R"(\gamma_j^{(i)} = g_0^T J_{P,j}^{(i)},\quad g_j = \frac{\partial E_{\mathrm{pot}}}{\partial q_j} = -\sum_{i \ge j} m_i\, \gamma_j^{(i)})";
-    case 7: return R"(\beta_{jk}^{(i)} = m_i\, J_{P,j}^{(i)T} J_{P,k}^{(i)} + z_j^T I_i\, z_k,\quad b_{jk} = \sum_{i \ge \max(j,k)} \beta_{jk}^{(i)})";
-    case 8: return R"(c_{ij} = \sum_k \tfrac{1}{2}\left(\frac{\partial b_{ij}}{\partial q_k} + \frac{\partial b_{ik}}{\partial q_j} - \frac{\partial b_{jk}}{\partial q_i}\right)\dot{q}_k,\quad B\ddot{q} + C\dot{q} + g = Q)";
-    }
-    return "";
+    f.unicodeText = true;
+    return f;
 }
 
 using notes::coordinateList;
@@ -181,9 +190,8 @@ std::shared_ptr<const DisplayDocument> structuredDisplayDocument(const Structure
         DisplayStep st;
         st.number = step;
         st.title = sectionTitle(step);
-        st.formulaText = sectionFormula(step, s);
-        st.formulaLatex = sectionLatex(step);
-        st.formula = formulaFromLatex(st.formulaLatex, st.formulaText);
+        st.general = sectionFormula(step, s);
+        writeFormula(st, {});
         if (hasNames)
             for (int k : byStep[step]) {
                 const NamedDefinition& d = s.table->entries()[k];

@@ -21,6 +21,7 @@
 #include <ginac/ginac.h>
 
 #include "core/model/message.hpp"
+#include "core/model/step_formula.hpp"
 
 namespace ll::symbolic {
 
@@ -74,8 +75,7 @@ struct DerivationItem {
 struct DerivationStep {
     int number = 0;            // 0..8 as in the course notes
     Message title;             // MessageId::TitleKinematicModel: words only where it is shown
-    std::string formulaText;   // the general formula of the step, plain text
-    std::string formulaLatex;  // the same in LaTeX
+    StepFormula formula;       // the general formula of the step (written for a reader by core/present)
     std::vector<DerivationItem> items;
     double seconds = 0.0;      // time it took
 };

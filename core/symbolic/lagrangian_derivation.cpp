@@ -205,11 +205,17 @@ private:
                           message(KineticLeftOverHint, spec_.kinetic)};
     }
 
-    void addStep(int number, Message title, std::string text, std::string latex, std::vector<DerivationItem> items) {
+    // The typed Lagrangian's formulas write q̇, ∂ and τ as characters.
+    static StepFormula unicode(StepFormula f) {
+        f.unicodeText = true;
+        return f;
+    }
+
+    void addStep(int number, Message title, StepFormula formula, std::vector<DerivationItem> items) {
         const auto now = std::chrono::steady_clock::now();
         const double seconds = std::chrono::duration<double>(now - lap_).count();
         lap_ = now;
-        d_.steps.push_back({number, std::move(title), std::move(text), std::move(latex), std::move(items), seconds});
+        d_.steps.push_back({number, std::move(title), std::move(formula), std::move(items), seconds});
     }
 
     void stepCoordinates() {
@@ -219,15 +225,16 @@ private:
             qd(i, 0) = s_.qd[i];
         }
         addStep(0, MessageId::TitleGeneralizedCoordinates,
-                "q = (q_1, …, q_n): minimal, independent and complete; the velocity of x is ẋ = dx/dt",
-                R"(q = (q_1, \dots, q_n)\ \text{minimal, independent, complete},\quad \dot{q} = \frac{dq}{dt})",
+                unicode(stepFormula("q = (q_1, …, q_n): «1»", R"(q = (q_1, \dots, q_n)\ «1»,\quad \dot{q} = \frac{dq}{dt})",
+                                    {formulaWords(MessageId::FormulaCoordinatesChosen, {"ẋ = dx/dt"})},
+                                    {formulaWords(MessageId::FormulaCoordinatesChosenShort)})),
                 {{"q", Quantity::Coordinates, -1, Grouping::Parameters, q}, {"qd", Quantity::Velocities, -1, Grouping::Parameters, qd}});
     }
 
     void stepPotential() {
         d_.Epot = Epot_;
-        addStep(6, MessageId::TitlePotentialEnergy, "E_pot(q) as given: gravity, springs and every other conservative force",
-                R"(E_{\mathrm{pot}}(q))", {{"E_pot", Quantity::PotentialEnergy, -1, Grouping::Parameters, Epot_}});
+        addStep(6, MessageId::TitlePotentialEnergy,
+                stepFormula("E_pot(q) «1»", R"(E_{\mathrm{pot}}(q))", {formulaWords(MessageId::FormulaPotentialAsGiven)}), {{"E_pot", Quantity::PotentialEnergy, -1, Grouping::Parameters, Epot_}});
     }
 
     void stepKinetic() {
@@ -240,8 +247,9 @@ private:
             }
         d_.Ekin = Ekin_;
         addStep(7, MessageId::TitleKineticEnergy,
-                "E_kin(q, qd) as given = 1/2 qd^T B(q) qd,  b_ij = d^2 E_kin / (dqd_i dqd_j)",
-                R"(E_{\mathrm{kin}} = \tfrac{1}{2}\,\dot{q}^T B(q)\,\dot{q},\quad b_{ij} = \frac{\partial^2 E_{\mathrm{kin}}}{\partial \dot{q}_i\,\partial \dot{q}_j})",
+                stepFormula("E_kin(q, qd) «1» = 1/2 qd^T «B»(«q») qd,  «b»_ij = d^2 E_kin / (dqd_i dqd_j)",
+                            R"(E_{\mathrm{kin}} = \tfrac{1}{2}\,\dot{q}^T «B»(«q»)\,\dot{q},\quad «b»_{ij} = \frac{\partial^2 E_{\mathrm{kin}}}{\partial \dot{q}_i\,\partial \dot{q}_j})",
+                            {formulaWords(MessageId::FormulaAsGiven)}),
                 {{"E_kin", Quantity::KineticEnergy, -1, Grouping::Velocities, Ekin_}, {"B", Quantity::MassMatrix, -1, Grouping::Parameters, d_.B}});
     }
 
@@ -329,10 +337,13 @@ private:
             items.push_back({"equation_" + k, Quantity::EquationOfMotion, i, Grouping::Parameters, lhs == d_.Q(i, 0)});
         }
         addStep(8, MessageId::TitleEquationsOfMotion,
-                "L = E_kin − E_pot;  d/dt ∂L/∂q̇_i − ∂L/∂q_i = Q_i;  written as B q̈ + C q̇ + g = Q with "
-                "g = ∂E_pot/∂q, c_ij = Σ_k ½ (∂b_ij/∂q_k + ∂b_ik/∂q_j − ∂b_jk/∂q_i) q̇_k, Q: non-conservative "
-                "forces only;  q̈ = B⁻¹ (Q − C q̇ − g)",
-                R"(\mathcal{L} = E_{\mathrm{kin}} - E_{\mathrm{pot}},\quad \frac{d}{dt}\frac{\partial \mathcal{L}}{\partial \dot{q}_i} - \frac{\partial \mathcal{L}}{\partial q_i} = Q_i,\quad g = \frac{\partial E_{\mathrm{pot}}}{\partial q},\quad c_{ij} = \sum_k \tfrac{1}{2}\left(\frac{\partial b_{ij}}{\partial q_k} + \frac{\partial b_{ik}}{\partial q_j} - \frac{\partial b_{jk}}{\partial q_i}\right)\dot{q}_k,\quad B\ddot{q} + C\dot{q} + g = Q)",
+                unicode(stepFormula(
+                    "L = E_kin − E_pot;  d/dt ∂L/∂q̇_i − ∂L/∂q_i = «Q»_i;  «1»;  q̈ = «B»⁻¹ («Q» − C q̇ − «g»)",
+                    R"(\mathcal{L} = E_{\mathrm{kin}} - E_{\mathrm{pot}},\quad \frac{d}{dt}\frac{\partial \mathcal{L}}{\partial \dot{q}_i} - \frac{\partial \mathcal{L}}{\partial q_i} = «Q»_i,\quad «g» = \frac{\partial E_{\mathrm{pot}}}{\partial q},\quad c_{ij} = \sum_k \tfrac{1}{2}\left(\frac{\partial «b»_{ij}}{\partial q_k} + \frac{\partial «b»_{ik}}{\partial q_j} - \frac{\partial «b»_{jk}}{\partial q_i}\right)\dot{q}_k,\quad «B»\ddot{q} + C\dot{q} + «g» = «Q»)",
+                    {formulaWordsOf(MessageId::FormulaWrittenAs,
+                                    {formulaPieces("«B» q̈ + C q̇ + «g» = «Q»"),
+                                     formulaPieces("«g» = ∂E_pot/∂q, c_ij = Σ_k ½ (∂«b»_ij/∂q_k + ∂«b»_ik/∂q_j − ∂«b»_jk/∂q_i) q̇_k, «Q»: «1»",
+                                                   {formulaWords(MessageId::FormulaNonConservativeOnly)})})})),
                 items);
     }
 

@@ -10,7 +10,6 @@
 
 #include "core/dynamics/christoffel.hpp"
 #include "core/symbolic/ginac_lock.hpp"
-#include "core/model/actuation.hpp"
 #include "core/model/diagnostics.hpp"
 #include "core/symbolic/trig_names.hpp"
 #include "core/symbolic/link_transform.hpp"
@@ -162,13 +161,12 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
         d.qdd.emplace_back("qdd" + idx(i));
     }
     Stopwatch clock;
-    const auto addStep = [&](int number, Message title, std::string text, std::string latex,
-                             std::vector<DerivationItem> items) {
+    const auto addStep = [&](int number, Message title, StepFormula formula, std::vector<DerivationItem> items) {
         const double seconds = clock.lap();
         currentStep = number + 1;
         checkpoint("step " + std::to_string(currentStep));
         if (!shown(number)) return;
-        d.steps.push_back({number, std::move(title), std::move(text), std::move(latex), std::move(items), seconds});
+        d.steps.push_back({number, std::move(title), std::move(formula), std::move(items), seconds});
     };
     d.modifiedDH = !standard;
 
@@ -183,10 +181,10 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
             table(i, 3) = revolute[i] ? j.theta + tc.q(i) : j.theta;
         }
         addStep(0, standard ? MessageId::TitleDhStandard : MessageId::TitleDhModified,
-                standard ? "row i: a_i, alpha_i, d_i, theta_i; revolute q_i adds to theta_i, prismatic q_i to d_i"
-                         : "row i: a_{i-1}, alpha_{i-1}, d_i, theta_i (Craig); revolute q_i adds to theta_i, prismatic q_i to d_i",
-                standard ? R"(\text{row } i:\ a_i,\ \alpha_i,\ d_i,\ \theta_i)"
-                         : R"(\text{row } i:\ a_{i-1},\ \alpha_{i-1},\ d_i,\ \theta_i)",
+                stepFormula(standard ? "«1»: a_i, alpha_i, d_i, theta_i; «2»" : "«1»: a_{i-1}, alpha_{i-1}, d_i, theta_i (Craig); «2»",
+                            standard ? R"(«1»:\ a_i,\ \alpha_i,\ d_i,\ \theta_i)" : R"(«1»:\ a_{i-1},\ \alpha_{i-1},\ d_i,\ \theta_i)",
+                            {formulaWords(MessageId::FormulaDhRow, {"i"}), formulaWords(MessageId::FormulaDhJointVariable)},
+                            {formulaWords(MessageId::FormulaDhRow, {"i"})}),
                 {{"DH", Quantity::DhTable, -1, Grouping::Masses, table}});
     }
 
@@ -202,10 +200,10 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
     }
     for (int i = 0; i < n; ++i) step1.push_back({"T_" + idx(i) + "^0", Quantity::Transform, i, Grouping::Masses, T[i + 1]});
     addStep(1, MessageId::TitleKinematicModel,
-            standard ? "A_i = Rot_z(theta_i) Trans_z(d_i) Trans_x(a_i) Rot_x(alpha_i),  T_i^0 = A_1 A_2 ... A_i"
-                     : "A_i = Rot_x(alpha_{i-1}) Trans_x(a_{i-1}) Rot_z(theta_i) Trans_z(d_i),  T_i^0 = A_1 A_2 ... A_i",
-            standard ? R"(A_i = \mathrm{Rot}_z(\theta_i)\,\mathrm{Trans}_z(d_i)\,\mathrm{Trans}_x(a_i)\,\mathrm{Rot}_x(\alpha_i),\quad T_i^0 = A_1 A_2 \cdots A_i)"
-                     : R"(A_i = \mathrm{Rot}_x(\alpha_{i-1})\,\mathrm{Trans}_x(a_{i-1})\,\mathrm{Rot}_z(\theta_i)\,\mathrm{Trans}_z(d_i),\quad T_i^0 = A_1 A_2 \cdots A_i)",
+            stepFormula(standard ? "A_i = Rot_z(theta_i) Trans_z(d_i) Trans_x(a_i) Rot_x(alpha_i),  T_i^0 = A_1 A_2 ... A_i"
+                                 : "A_i = Rot_x(alpha_{i-1}) Trans_x(a_{i-1}) Rot_z(theta_i) Trans_z(d_i),  T_i^0 = A_1 A_2 ... A_i",
+                        standard ? R"(A_i = \mathrm{Rot}_z(\theta_i)\,\mathrm{Trans}_z(d_i)\,\mathrm{Trans}_x(a_i)\,\mathrm{Rot}_x(\alpha_i),\quad T_i^0 = A_1 A_2 \cdots A_i)"
+                                 : R"(A_i = \mathrm{Rot}_x(\alpha_{i-1})\,\mathrm{Trans}_x(a_{i-1})\,\mathrm{Rot}_z(\theta_i)\,\mathrm{Trans}_z(d_i),\quad T_i^0 = A_1 A_2 \cdots A_i)"),
             step1);
 
     // 2. Centres of mass in the base frame.
@@ -218,8 +216,10 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
             p[i][r] = tc.reduce(T[i + 1](r, 0) * com(0, 0) + T[i + 1](r, 1) * com(1, 0) + T[i + 1](r, 2) * com(2, 0) + T[i + 1](r, 3));
         step2.push_back({"p_c" + idx(i), Quantity::ComPosition, i, Grouping::Masses, toMatrix(p[i])});
     }
-    addStep(2, MessageId::TitleCentresOfMass, "p_ci^0 = T_i^0 [r_ci; 1]  (r_ci: COM of link i in frame i)",
-            R"(p_{ci}^0 = T_i^0 \begin{bmatrix} r_{ci} \\ 1 \end{bmatrix})", step2);
+    addStep(2, MessageId::TitleCentresOfMass,
+            stepFormula("p_ci^0 = T_i^0 [r_ci; 1]  (r_ci: «1»)", R"(p_{ci}^0 = T_i^0 \begin{bmatrix} r_{ci} \\ 1 \end{bmatrix})",
+                        {formulaWords(MessageId::FormulaComOfLink)}),
+            step2);
 
     // Joint axes in the base frame: z_{i-1} (standard) or z_i (modified).
     std::vector<Vec3> axis(n);
@@ -239,8 +239,10 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
             items.push_back({"J_w" + idx(i), Quantity::AngularJacobian, i, Grouping::Masses, Jw});
             items.push_back({"w_" + idx(i), Quantity::AngularVelocity, i, Grouping::Velocities, tc.reduce(w)});
         }
-        addStep(3, MessageId::TitleAngularVelocities, "omega_i^0 = sum_{j<=i, revolute} z_j qd_j = J_w,i qd",
-                R"(\omega_i^0 = \sum_{j \le i} z_{j} \dot{q}_j = J_{\omega,i}\,\dot{q})", items);
+        addStep(3, MessageId::TitleAngularVelocities,
+                stepFormula("omega_i^0 = sum_{j<=i, «1»} z_j «q'_»j = J_w,i «q'»", R"(\omega_i^0 = \sum_{j \le i} z_{j} «q'_»j = J_{\omega,i}\,«q'»)",
+                            {formulaWords(MessageId::FormulaRevoluteJoints)}),
+                items);
     }
 
     // 4. Velocities of the centres of mass: J_v,ci = ∂p_ci/∂q.
@@ -258,8 +260,10 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
             items.push_back({"J_v_c" + idx(i), Quantity::ComJacobian, i, Grouping::Masses, Jv});
             items.push_back({"v_c" + idx(i), Quantity::ComVelocity, i, Grouping::Velocities, tc.reduce(v)});
         }
-        addStep(4, MessageId::TitleComVelocities, "v_ci^0 = d/dt p_ci^0 = J_v,ci qd,  J_v,ci = dp_ci^0/dq",
-                R"(v_{ci}^0 = \dot{p}_{ci}^0 = J_{v,ci}\,\dot{q},\quad J_{v,ci} = \frac{\partial p_{ci}^0}{\partial q})", items);
+        addStep(4, MessageId::TitleComVelocities,
+                stepFormula("v_ci^0 = d/dt p_ci^0 = J_v,ci «q'»,  J_v,ci = dp_ci^0/d«q»",
+                            R"(v_{ci}^0 = \dot{p}_{ci}^0 = J_{v,ci}\,«q'»,\quad J_{v,ci} = \frac{\partial p_{ci}^0}{\partial «q»})"),
+                items);
     }
 
     // 5. Link inertia tensors in the base frame.
@@ -271,8 +275,7 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
                              reduceChecked(tc, R.mul(robot.joints[i].inertia).mul(R.transpose()), checkpoint,
                                             "I_l" + idx(i) + "^0")});
         }
-        addStep(5, MessageId::TitleLinkInertias, "I_li^0 = R_i^0 I_li (R_i^0)^T",
-                R"(I_{li}^0 = R_i^0\, I_{li}\, (R_i^0)^T)", items);
+        addStep(5, MessageId::TitleLinkInertias, stepFormula("I_li^0 = R_i^0 I_li (R_i^0)^T", R"(I_{li}^0 = R_i^0\, I_{li}\, (R_i^0)^T)"), items);
     }
 
     // 6. Potential energy: gravity and springs, if declared.
@@ -285,10 +288,11 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
     Epot = reduceChecked(tc, Epot, checkpoint, "E_pot");
     d.Epot = Epot;
     addStep(6, MessageId::TitlePotentialEnergy,
-            std::string(robot.hasGravity ? "E_pot = -sum_i m_i g0^T p_ci^0" : "E_pot = 0 (no gravity declared)") +
-                (robot.springs.empty() ? "" : " + sum_j 1/2 K_j (q_j - q_j,rest)^2"),
-            std::string(robot.hasGravity ? R"(E_{\mathrm{pot}} = -\sum_{i} m_i\, g_0^T p_{ci}^0)" : R"(E_{\mathrm{pot}} = 0)") +
-                (robot.springs.empty() ? "" : R"( + \sum_j \tfrac{1}{2} K_j (q_j - q_{j,\mathrm{rest}})^2)"),
+            stepFormula(std::string(robot.hasGravity ? "E_pot = -sum_i m_i g0^T p_ci^0" : "E_pot = 0 («1»)") +
+                            (robot.springs.empty() ? "" : " + sum_j 1/2 K_j («q_»j - «q_»j,rest)^2"),
+                        std::string(robot.hasGravity ? R"(E_{\mathrm{pot}} = -\sum_{i} m_i\, g_0^T p_{ci}^0)" : R"(E_{\mathrm{pot}} = 0)") +
+                            (robot.springs.empty() ? "" : R"( + \sum_j \tfrac{1}{2} K_j («q_»j - «q_»{j,\mathrm{rest}})^2)"),
+                        {formulaWords(MessageId::FormulaNoGravity)}),
             {{"E_pot", Quantity::PotentialEnergy, -1, Grouping::Masses, Epot}});
 
     // 7. Kinetic energy and B(q); the motors' rotors add their armature to b_jj.
@@ -317,17 +321,16 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
     if (hasMotors) step7.push_back({"B_m", Quantity::MotorInertia, -1, Grouping::Masses, motors});
     step7.push_back({"B", Quantity::MassMatrix, -1, Grouping::Masses, d.B});
     step7.push_back({"E_kin", Quantity::KineticEnergy, -1, Grouping::Velocities, d.Ekin});
-    addStep(7, MessageId::TitleKineticEnergy,
-            std::string("E_kin = 1/2 sum_i (m_i v_ci^T v_ci + omega_i^T I_li^0 omega_i)") +
-                (hasMotors ? " + 1/2 sum_j Jm_j G_j^2 qd_j^2" : "") + " = 1/2 qd^T B(q) qd" +
-                (hasMotors ? ";  motors: rotor j (inertia Jm_j, gear ratio G_j) turns at G_j qd_j, so it adds its "
-                             "armature Jm_j G_j^2 to b_jj: B = B_links + B_m, B_m = diag(Jm_j G_j^2) (Ja_j when "
-                             "given as armature)" + motorValues
-                           : ""),
-            std::string(R"(E_{\mathrm{kin}} = \tfrac{1}{2}\sum_i \left(m_i\, v_{ci}^T v_{ci} + \omega_i^T I_{li}^0\, \omega_i\right))") +
-                (hasMotors ? R"( + \tfrac{1}{2}\sum_j J_{m,j} G_j^2 \dot{q}_j^2)" : "") + R"( = \tfrac{1}{2}\,\dot{q}^T B(q)\,\dot{q})" +
-                (hasMotors ? R"(,\quad B = B_{\mathrm{links}} + B_m,\ B_m = \mathrm{diag}(J_{m,j} G_j^2)\ \text{(rotor } j \text{ turns at } G_j \dot{q}_j\text{)})" : ""),
-            step7);
+    StepFormula formula7 = stepFormula(
+        std::string("E_kin = 1/2 sum_i (m_i v_ci^T v_ci + omega_i^T I_li^0 omega_i)") + (hasMotors ? " + 1/2 sum_j Jm_j G_j^2 «q'_»j^2" : "") +
+            " = 1/2 «q'»^T «B»(«q») «q'»" + (hasMotors ? ";  «1»: «B» = «B»_links + «B»_m, «B»_m = diag(Jm_j G_j^2) («2»)" : ""),
+        std::string(R"(E_{\mathrm{kin}} = \tfrac{1}{2}\sum_i \left(m_i\, v_{ci}^T v_{ci} + \omega_i^T I_{li}^0\, \omega_i\right))") +
+            (hasMotors ? R"( + \tfrac{1}{2}\sum_j J_{m,j} G_j^2 «q'_»j^2)" : "") + R"( = \tfrac{1}{2}\,«q'»^T «B»(«q»)\,«q'»)" +
+            (hasMotors ? R"(,\quad «B» = «B»_{\mathrm{links}} + «B»_m,\ «B»_m = \mathrm{diag}(J_{m,j} G_j^2)\ «1»)" : ""),
+        {formulaWords(MessageId::FormulaMotorsArmature, {"G_j «q'_»j", "«b»_jj"}), formulaWords(MessageId::FormulaArmatureGiven)},
+        {formulaWords(MessageId::FormulaRotorTurnsAt, {"j", "G_j «q'_»j"})});
+    if (hasMotors) formula7.text.push_back(formulaMath(motorValues));
+    addStep(7, MessageId::TitleKineticEnergy, std::move(formula7), step7);
 
     // 8. Equations of motion (Lagrange–d'Alembert).
     d.g = matrix(n, 1);
@@ -362,11 +365,11 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
         for (int j = 0; j < n; ++j) lhs += d.B(i, j) * d.qdd[j] + d.C(i, j) * tc.qd(j);
         step8.push_back({"equation_" + idx(i), Quantity::EquationOfMotion, i, Grouping::Masses, lhs == d.Q(i, 0)});
     }
-    const std::string actuation = actuationText(d.actuated, d.coordinateNames);
     addStep(8, MessageId::TitleEquationsOfMotion,
-            "g = dE_pot/dq;  c_ij = sum_k 1/2 (db_ij/dq_k + db_ik/dq_j - db_jk/dq_i) qd_k;  "
-            "Q: non-conservative forces only;  B qdd + C qd + g = Q;  qdd = B^-1 (Q - C qd - g);  " + actuation,
-            R"(g = \frac{\partial E_{\mathrm{pot}}}{\partial q},\quad c_{ij} = \sum_k \tfrac{1}{2}\left(\frac{\partial b_{ij}}{\partial q_k} + \frac{\partial b_{ik}}{\partial q_j} - \frac{\partial b_{jk}}{\partial q_i}\right)\dot{q}_k,\quad B\ddot{q} + C\dot{q} + g = Q,\quad \ddot{q} = B^{-1}(Q - C\dot{q} - g))",
+            stepFormula("«g» = dE_pot/d«q»;  c_ij = sum_k 1/2 (d«b»_ij/d«q_»k + d«b»_ik/d«q_»j - d«b»_jk/d«q_»i) «q'_»k;  "
+                        "«Q»: «1»;  «B» «q''» + C «q'» + «g» = «Q»;  «q''» = «B»^-1 («Q» - C «q'» - «g»);  «2»",
+                        R"(«g» = \frac{\partial E_{\mathrm{pot}}}{\partial «q»},\quad c_{ij} = \sum_k \tfrac{1}{2}\left(\frac{\partial «b»_{ij}}{\partial «q_»k} + \frac{\partial «b»_{ik}}{\partial «q_»j} - \frac{\partial «b»_{jk}}{\partial «q_»i}\right)«q'_»k,\quad «B»«q''» + C«q'» + «g» = «Q»,\quad «q''» = «B»^{-1}(«Q» - C«q'» - «g»))",
+                        {formulaWords(MessageId::FormulaNonConservativeOnly), formulaActuation(d.actuated, d.coordinateNames)}),
             step8);
 
     d.trigToFunctions = tc.toFunctions();

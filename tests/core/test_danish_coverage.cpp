@@ -1,6 +1,7 @@
 // Every title and heading a derivation shows has its Danish (issue 46): the step titles,
-// the form's name, the structured form's sections and the fixed actuation sentence of
-// every example and hard scene, in both forms where a robot has both. Each is a message
+// the form's name, the structured form's sections, the words inside the general formulas
+// (core/model/messages/formula.def) and the fixed actuation sentence of every example and
+// hard scene, in both forms where a robot has both. Each is a message
 // id (core/model/messages/document.def) with Danish words (core/present/danish/document.def),
 // never finished English: a step or heading added to the core as a string, or with an id
 // whose Danish is missing, fails here, naming it; and the Danish documents show none of
@@ -20,6 +21,7 @@
 #include "core/present/latex_text.hpp"
 #include "core/present/localized_document.hpp"
 #include "core/present/message_text.hpp"
+#include "core/present/step_formula_text.hpp"
 
 // A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
 namespace test_danish_coverage {
@@ -65,6 +67,15 @@ std::vector<MessageId> titleIds() {
     return ids;
 }
 
+// The words inside a formula's pieces (a word's arguments included), each as a piece.
+void wordsIn(const FormulaPieces& pieces, std::vector<FormulaPiece>& out) {
+    for (const FormulaPiece& p : pieces)
+        if (p.kind == FormulaPiece::Kind::Words) {
+            out.push_back(p);
+            for (const FormulaPieces& a : p.args) wordsIn(a, out);
+        }
+}
+
 }  // namespace
 
 class TestDanishCoverage : public QObject {
@@ -105,6 +116,21 @@ private slots:
                     const std::string title = present::messageText(danish->steps[i].title, present::Language::Danish);
                     QVERIFY2(text.find(title) != std::string::npos, (path + ": " + title).c_str());
                 }
+                // the words inside every general formula: Danish words of their own, and
+                // not the English in the Danish formula
+                for (std::size_t i = 0; i < danish->steps.size(); ++i) {
+                    const present::DisplayStep& step = danish->steps[i];
+                    std::vector<FormulaPiece> words;
+                    wordsIn(step.general.text, words);
+                    wordsIn(step.general.latex, words);
+                    for (const FormulaPiece& w : words) {
+                        seen.insert(messageIdName(w.words));
+                        if (!hasDanish(Message(w.words))) missing.insert(messageIdName(w.words));
+                        const std::string english = present::formulaText({{w}, {}}, {present::Language::English, present::Notation::Notes, derived.display->robot});
+                        QVERIFY2(step.formulaText.find(english) == std::string::npos && step.formulaLatex.find(english) == std::string::npos,
+                                 (path + ": " + english).c_str());
+                    }
+                }
                 for (MessageId id : titleIds()) {
                     const std::string english = englishWords(id);
                     QVERIFY2(text.find(english) == std::string::npos, (path + ": " + english).c_str());
@@ -117,7 +143,7 @@ private slots:
             }
         }
         QVERIFY(documents >= 20);
-        QVERIFY(seen.size() >= 12);
+        QVERIFY(seen.size() >= 30);
         std::string list;
         for (const std::string& m : missing) list += "\n  " + m;
         QVERIFY2(missing.empty(), ("headings without Danish (core/present/danish/document.def):" + list).c_str());

@@ -16,6 +16,7 @@
 #include "core/dynamics/mass_matrix.hpp"
 #include "core/io/scene_file.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
+#include "core/present/step_formula_text.hpp"
 #include "core/simulation/scene_validation.hpp"
 #include "core/symbolic/derivation_evaluator.hpp"
 #include "core/symbolic/ginac_lock.hpp"
@@ -157,8 +158,10 @@ private slots:
         }
         bool explained = false;
         for (const symbolic::DerivationStep& step : withMotors.steps)
-            if (step.number == 7) explained = step.formulaText.find("Jm_j G_j^2 to b_jj") != std::string::npos &&
-                                              step.formulaText.find("Jm1 = 0.0002") != std::string::npos;
+            if (step.number == 7) {
+                const std::string text = present::formulaText(step.formula, {present::Language::English, present::Notation::Notes, true});
+                explained = text.find("Jm_j G_j^2 to b_jj") != std::string::npos && text.find("Jm1 = 0.0002") != std::string::npos;
+            }
         QVERIFY(explained);
         // Its value is the numeric core's, in every mode.
         for (symbolic::ParameterMode mode : {symbolic::ParameterMode::Parametric, symbolic::ParameterMode::Numeric,
