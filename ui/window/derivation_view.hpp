@@ -102,6 +102,7 @@ private:
     DerivationCanvas* canvas_ = nullptr;
     std::shared_ptr<const present::DisplayDocument> document_;
     std::shared_ptr<const present::DisplayStep> pose_;
+    present::DisplayStep poseWritten_;  // pose_ in the document's language, as shown
     int lastStep() const { return listed_.back(); }
     void relist();
     std::vector<int> listed_;  // the step numbers listed, ascending (9: the pose results)
