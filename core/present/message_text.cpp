@@ -3,6 +3,8 @@
 #include <array>
 #include <cstddef>
 
+#include "core/present/latex_text.hpp"
+
 namespace ll::present {
 namespace {
 
@@ -15,6 +17,12 @@ Catalogue danishCatalogue() {
 #include "core/present/danish/all.def"
 #undef LL_DANISH
     return words;
+}
+
+// The id's words in `language`, the English where the language has none.
+const char* wordsOf(MessageId id, Language language) {
+    const char* words = language == Language::Danish ? danishWords(id) : nullptr;
+    return words ? words : englishWords(id);
 }
 
 }  // namespace
@@ -30,8 +38,23 @@ std::string messageText(const Message& message, Language language) {
     std::vector<std::string> args;
     args.reserve(message.args.size());
     for (const Message& a : message.args) args.push_back(messageText(a, language));
-    const char* words = language == Language::Danish ? danishWords(message.id) : nullptr;
-    return filledIn(words ? words : englishWords(message.id), args);
+    return filledIn(wordsOf(message.id, language), args);
+}
+
+std::string latexMessageText(const Message& message, Language language) {
+    if (message.id == MessageId::Literal) return message.literal;
+    const std::string words = wordsOf(message.id, language);
+    std::string out;
+    std::size_t from = 0;  // the words between the placeholders escaped, each {k} filled in
+    for (std::size_t at = 0; at + 2 < words.size(); ++at)
+        if (words[at] == '{' && words[at + 1] >= '1' && words[at + 1] <= '9' && words[at + 2] == '}') {
+            out += latexText(words.substr(from, at - from));
+            if (const std::size_t k = static_cast<std::size_t>(words[at + 1] - '1'); k < message.args.size())
+                out += latexMessageText(message.args[k], language);
+            from = at + 3;
+            at += 2;
+        }
+    return out + latexText(words.substr(from));
 }
 
 }  // namespace ll::present
