@@ -99,12 +99,6 @@ std::string massMatrixSum(const NotationSymbols& n) {
            R"() = \sum_i \left(m_i\, J_{P,i}^T J_{P,i} + J_{O,i}^T R_i\, I_{li}\, R_i^T J_{O,i}\right))";
 }
 
-Message formName(const std::string& form) {
-    if (form == "expanded") return MessageId::FormExpanded;
-    if (form == "structured") return MessageId::FormStructured;
-    return literal(form);
-}
-
 std::string actuationSentence(const std::vector<int>& actuated, const std::vector<std::string>& coordinates, Language language) {
     return actuationText(actuated, coordinates,
                          {messageText(MessageId::ActuationNoInputs, language), messageText(MessageId::ActuationInputsOn, language),
@@ -138,10 +132,8 @@ std::shared_ptr<DisplayDocument> localizedDocument(const DisplayDocument& docume
                 item.value = renamed(item.value, n);
             }
             if (letters) relabel(item, n, document.robot);
-            if (p.language != Language::English) item.note = translatedPhrases(item.note, p.language);
         }
     }
-    out->formReason = translatedPhrases(document.formReason, p.language);
     out->remark = {};
     if (document.robot && letters && n.modifiedDH != document.modifiedDH)
         out->remark = n.modifiedDH ? MessageId::RemarkCraigNeedsModifiedDh : MessageId::RemarkNotationNeedsStandardDh;
