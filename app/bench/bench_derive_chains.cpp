@@ -98,7 +98,7 @@ bool benchOne(const Scene& scene, const std::string& label, int repeats, double 
             definitions = s.table->size();
             StructuredDocumentInfo info;
             info.modeName = "numeric";
-            info.formReason = "bench";
+            info.formReason = literal("bench");
             structuredKB = structuredDocument(s, DocumentFormat::Json, info).size() / 1024;
         }
     }

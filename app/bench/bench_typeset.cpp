@@ -63,7 +63,7 @@ DerivedDocument deriveAuto(const Scene& scene, symbolic::ParameterMode mode, pre
 
 // The derivation alone, in the form auto picks, with nothing printed.
 void deriveOnly(const Scene& scene, symbolic::ParameterMode mode) {
-    std::string reason;
+    Message reason;
     if (!scene.lagrangian && !expandedIsCheap(scene, reason)) {
         symbolic::DerivationOptions options;
         options.mode = mode;

@@ -48,7 +48,7 @@ std::string verificationLine(const std::string& what, double error, int states) 
 
 }  // namespace
 
-bool expandedIsCheap(const Scene& scene, std::string& reason) {
+bool expandedIsCheap(const Scene& scene, Message& reason) {
     const int n = scene.robot.dof();
     int general = 0, generalAngles = 0, offAxis = 0;
     for (const Joint& j : scene.robot.joints) {
@@ -56,21 +56,25 @@ bool expandedIsCheap(const Scene& scene, std::string& reason) {
         generalAngles += !multipleOfHalfPi(j.dh.alpha) + !multipleOfHalfPi(j.dh.theta);
         if (j.dh.a != 0.0 && j.dh.d != 0.0) ++offAxis;
     }
-    const std::string joints = std::to_string(n) + " joints";
     // Each constant angle that is not a multiple of π/2 multiplies the expanded terms: a
     // 3-joint arm with 6 of them took 40 s and 360 MB expanded (0.1 s structured).
     if (n <= 2 || (n <= 4 && generalAngles <= 3)) {
-        reason = joints + ": the expanded textbook form is cheap";
+        reason = message(MessageId::FormCheap, message(MessageId::FormJoints, n));
         return true;
     }
     if (n <= 6 && general == 0 && offAxis <= 1) {
-        reason = joints + " with twists and offsets multiples of pi/2 and at most one joint with both a and d non-zero: "
-                          "the expanded textbook form is cheap";
+        reason = message(MessageId::FormCheap, message(MessageId::FormJointsRightAngles, n));
         return true;
     }
-    reason = joints + (n > 6 ? "" : general > 0 ? " with " + std::to_string(generalAngles) + " general twists or offsets" : " with several joints offset along both x and z") +
-             ": the expanded form grows exponentially (thousands of terms per entry), the structured form stays short";
+    reason = message(MessageId::FormGrows, n > 6         ? message(MessageId::FormJoints, n)
+                                           : general > 0 ? message(MessageId::FormJointsGeneralAngles, n, generalAngles)
+                                                         : message(MessageId::FormJointsOffAxis, n));
     return false;
+}
+
+Message formName(DerivationForm form) {
+    if (form == DerivationForm::Auto) return {};
+    return form == DerivationForm::Expanded ? MessageId::FormExpanded : MessageId::FormStructured;
 }
 
 FormDocument deriveInForm(const Scene& scene, const FormRequest& request) {
@@ -78,17 +82,17 @@ FormDocument deriveInForm(const Scene& scene, const FormRequest& request) {
     using namespace present;
     FormDocument out;
     if (scene.lagrangian) {
-        out.form = "expanded";
-        out.reason = "a hand-typed Lagrangian is derived from its E_kin and E_pot";
+        out.form = DerivationForm::Expanded;
+        out.reason = MessageId::FormTypedLagrangian;
         DocumentRequest document = request.document;
-        document.form = {out.form, out.reason};
+        document.form = {formName(out.form), out.reason};
         out.derived = deriveDocument(scene, document);
         return out;
     }
-    std::string cheapReason;
+    Message cheapReason;
     const bool cheap = expandedIsCheap(scene, cheapReason);
     const bool expanded = request.form == DerivationForm::Expanded || (request.form == DerivationForm::Auto && cheap);
-    out.reason = request.form == DerivationForm::Auto ? "auto: " + cheapReason : "asked for with --form";
+    out.reason = request.form == DerivationForm::Auto ? message(MessageId::FormAuto, cheapReason) : Message(MessageId::FormAskedFor);
     const int n = scene.robot.dof();
     std::vector<EntryRef> entries;
     for (const std::string& e : request.entries) entries.push_back(parseEntry(e, n));
@@ -105,18 +109,18 @@ FormDocument deriveInForm(const Scene& scene, const FormRequest& request) {
         out.definitions = structured->table->size();
     }
     if (expanded && entries.empty()) {
-        out.form = "expanded";
+        out.form = DerivationForm::Expanded;
         DocumentRequest document = request.document;
-        document.form = {out.form, out.reason};
+        document.form = {formName(out.form), out.reason};
         out.derived = deriveDocument(scene, document);
     } else {
         // With --entry and the expanded form, the document is the entries expanded (and
         // the names of the structured form they come from): its form is "expanded".
-        out.form = expanded ? "expanded" : "structured";
+        out.form = expanded ? DerivationForm::Expanded : DerivationForm::Structured;
         StructuredDocumentInfo info;
         info.modeName = modeName(request.document.mode);
-        info.form = out.form;
-        info.formReason = expanded ? out.reason + "; only the entries asked for are expanded, from the structured form's names" : out.reason;
+        info.form = formName(out.form);
+        info.formReason = expanded ? message(MessageId::FormOnlyEntriesExpanded, out.reason) : out.reason;
         info.entries = entries;
         info.firstStep = request.document.firstStep;
         info.language = request.document.presentation.language;
@@ -137,7 +141,7 @@ FormDocument deriveInForm(const Scene& scene, const FormRequest& request) {
         const int states = 3;
         double structuredError = 0, expandedError = 0;
         std::optional<Derivation> full;
-        if (cheap || out.form == "expanded") {
+        if (cheap || out.form == DerivationForm::Expanded) {
             DerivationOptions options;
             options.mode = request.document.mode;
             options.cancel = request.document.cancel;
@@ -174,7 +178,7 @@ FormDocument deriveInForm(const Scene& scene, const FormRequest& request) {
         }
         out.verification.push_back(verificationLine("structured vs numeric core", structuredError, states));
         if (full) out.verification.push_back(verificationLine("expanded vs numeric core", expandedError, states));
-        else out.verification.push_back("expanded: not derived (" + cheapReason + ")");
+        else out.verification.push_back("expanded: not derived (" + cheapReason.english() + ")");
         if (structured) out.verification.push_back(std::string("Bdot - 2C skew-symmetric over the names: ") + (skewSymmetric(*structured) ? "yes" : "NO"));
     }
     return out;

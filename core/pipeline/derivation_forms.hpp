@@ -29,8 +29,8 @@ struct FormRequest {
 
 struct FormDocument {
     DerivedDocument derived;
-    std::string form;    // "expanded" or "structured"
-    std::string reason;  // why that form
+    DerivationForm form = DerivationForm::Expanded;  // Expanded or Structured: the form derived
+    Message reason;                                  // why that form (FormAuto, FormAskedFor, …)
     // With verify: one line per comparison ("structured vs numeric core: 3.1e-15 (relative, 3 random states)").
     std::vector<std::string> verification;
     int definitions = 0;  // named quantities of the structured form (0 when not derived)
@@ -41,6 +41,10 @@ struct FormDocument {
 FormDocument deriveInForm(const Scene& scene, const FormRequest& request);
 
 // The auto rule on its own: whether the expanded form is cheap for this robot, and why.
-bool expandedIsCheap(const Scene& scene, std::string& reason);
+bool expandedIsCheap(const Scene& scene, Message& reason);
+
+// The form's name for the documents (FormExpanded, FormStructured; nothing for Auto),
+// which JSON writes as "expanded", "structured" in English.
+Message formName(DerivationForm form);
 
 }  // namespace ll

@@ -8,14 +8,14 @@
 namespace ll {
 namespace {
 
-DerivedDocument deriveInForm(const Scene& scene, const DocumentRequest& request, bool expanded, const std::string& reason) {
+DerivedDocument deriveInForm(const Scene& scene, const DocumentRequest& request, bool expanded, const Message& reason) {
     using namespace symbolic;
     using namespace present;
     DerivedDocument out;
     if (expanded) {
         DocumentRequest display = request;
         display.format = DocumentFormat::Display;
-        display.form = {"expanded", reason};
+        display.form = {MessageId::FormExpanded, reason};
         return deriveDocument(scene, display);
     }
     const auto lock = lockGinac();
@@ -36,10 +36,10 @@ DerivedDocument deriveInForm(const Scene& scene, const DocumentRequest& request,
 }  // namespace
 
 DerivedDocument deriveDisplay(const Scene& scene, const DocumentRequest& request, DerivationForm form) {
-    std::string reason;
+    Message reason;
     const bool cheap = scene.lagrangian || expandedIsCheap(scene, reason);
-    if (scene.lagrangian) reason = "a hand-typed Lagrangian is derived from its E_kin and E_pot";
-    else reason = form == DerivationForm::Auto ? "auto: " + reason : "asked for with --form";
+    if (scene.lagrangian) reason = MessageId::FormTypedLagrangian;
+    else reason = form == DerivationForm::Auto ? message(MessageId::FormAuto, reason) : Message(MessageId::FormAskedFor);
     const bool expanded = scene.lagrangian || form == DerivationForm::Expanded || (form == DerivationForm::Auto && cheap);
     return deriveInForm(scene, request, expanded, reason);
 }

@@ -61,7 +61,7 @@ DisplayItem item(const std::string& name, present::Quantity quantity, const std:
     it.quantity = quantity;
     it.value = value;
     it.equation = present::displayEquation(present::displayLabel(name, latexName), value);
-    it.note = std::move(note);
+    it.note = literal(std::move(note));
     return it;
 }
 

@@ -48,7 +48,7 @@ DerivedDocument deriveDocument(const Scene& scene, const DocumentRequest& reques
     const auto printing = std::chrono::steady_clock::now();
     if (request.format == present::DocumentFormat::Display) {
         auto display = present::displayDocument(d, request.cancel, request.forPages);
-        display->form = present::formName(request.form.form);
+        display->form = request.form.form;
         display->formReason = request.form.reason;
         if (request.catalogue) out.catalogue = expandedCatalogue(scene, d, *display);
         out.display = std::move(display);

@@ -104,7 +104,7 @@ std::string derivationDocument(const Derivation& d, DocumentFormat format, const
     DisplayBuilder build(optionsFor(d, false));
     TextbookForm form(d);
     std::shared_ptr<DisplayDocument> doc = shapeDocument(d, form, build, nullptr);
-    doc->form = formName(note.form);
+    doc->form = note.form;
     doc->formReason = note.reason;
     doc = localizedDocument(*doc, presentation);
     if (format != DocumentFormat::Json) return renderDocument(*doc, format);

@@ -20,10 +20,10 @@ namespace ll::present {
 std::shared_ptr<DisplayDocument> displayDocument(const symbolic::Derivation& derivation, const std::atomic<bool>* cancel = nullptr,
                                                  bool forPages = false);
 
-// Which form was derived and why, said by the documents when given ("expanded", "auto: 2
-// joints: …"); empty: not said.
+// Which form was derived (FormExpanded, FormStructured) and why (FormAuto: "auto: 2
+// joints: …"), said by the documents when given; empty: not said.
 struct FormNote {
-    std::string form, reason;
+    Message form, reason;
 };
 
 // The derivation in Text, Latex or Json (Display gives ""), in the presentation's language

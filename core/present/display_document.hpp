@@ -28,7 +28,7 @@ struct DisplayItem {
     int row = -1, col = -1;  // 0-based: the item's link, joint or row (row), an entry's column (col)
     DisplayPtr equation;     // label = value (an equation of motion: B q̈ + C q̇ + g = Q)
     DisplayPtr value;        // the right side alone (for a matrix: the Matrix node)
-    std::string note;        // what it means, in words (the structured form's names); may be empty
+    Message note;            // what it means (the structured form's names), in words where it is shown; may be empty
     std::string entryLetter; // its entries' letter when a notation renames them (d of Spong's D); empty: the quantity's own
 };
 
@@ -55,7 +55,7 @@ struct DisplayDocument {
     std::string actuation;   // "inputs on q1, q2 …", the coordinates as the results show them (θ2)
     std::string actuationLatex;  // the same with the coordinates as LaTeX ($\theta_{2}$)
     Message form;            // FormExpanded or FormStructured when a form was chosen (empty: not said)
-    std::string formReason;  // why that form
+    Message formReason;      // why that form
     // As localized_document.hpp wrote it: the language of its words, the notation of its
     // letters, and what that needs (which coordinates have inputs, a robot's coordinates
     // are q_i and renamed with the notation, its DH convention).

@@ -34,7 +34,7 @@ std::string jsonDocument(const DisplayDocument& document, const ModelSummary& mo
     json.member("mode", model.mode);
     if (!document.form.empty()) {
         json.member("form", messageText(document.form, document.language));
-        json.member("form_reason", document.formReason);
+        json.member("form_reason", messageText(document.formReason, document.language));
     }
     json.member("coordinates", document.coordinateNames);
     json.key("steps");

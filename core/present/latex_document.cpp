@@ -28,7 +28,7 @@ std::string latexDocument(const DisplayDocument& document) {
         "\\begin{document}\n\\maketitle\n";
     const Language l = document.language;
     if (!document.form.empty())
-        out += messageText(MessageId::DocumentForm, l) + ": " + messageText(document.form, l) + " (" + latexText(document.formReason) + ").\n";
+        out += messageText(MessageId::DocumentForm, l) + ": " + messageText(document.form, l) + " (" + latexText(messageText(document.formReason, l)) + ").\n";
     if (!document.remark.empty()) out += latexText(messageText(document.remark, l)) + ".\n";
     out += messageText(MessageId::DocumentShorthand, l) + ": $c_{i} = \\cos q_i$, $s_{i} = \\sin q_i$, $c_{12} = \\cos(q_1 + q_2)$, $\\dot{q}_i$ " +
            messageText(MessageId::DocumentJointVelocities, l) + ".\n";

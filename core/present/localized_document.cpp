@@ -66,12 +66,6 @@ void writeFormula(DisplayStep& step, const FormulaReader& reader) {
     step.formula = formulaFromLatex(step.formulaLatex + (sumsB ? massMatrixSum(notationSymbols(reader.notation)) : ""), step.formulaText);
 }
 
-Message formName(const std::string& form) {
-    if (form == "expanded") return MessageId::FormExpanded;
-    if (form == "structured") return MessageId::FormStructured;
-    return literal(form);
-}
-
 std::string actuationSentence(const std::vector<int>& actuated, const std::vector<std::string>& coordinates, Language language) {
     return actuationText(actuated, coordinates,
                          {messageText(MessageId::ActuationNoInputs, language), messageText(MessageId::ActuationInputsOn, language),
@@ -92,10 +86,8 @@ std::shared_ptr<DisplayDocument> localizedDocument(const DisplayDocument& docume
                 item.value = renamed(item.value, n);
             }
             if (letters) relabel(item, n, document.robot);
-            if (p.language != Language::English) item.note = translatedPhrases(item.note, p.language);
         }
     }
-    out->formReason = translatedPhrases(document.formReason, p.language);
     out->remark = {};
     if (document.robot && letters && n.modifiedDH != document.modifiedDH)
         out->remark = n.modifiedDH ? MessageId::RemarkCraigNeedsModifiedDh : MessageId::RemarkNotationNeedsStandardDh;

@@ -32,10 +32,6 @@ void writeFormula(DisplayStep& step, const FormulaReader& reader);
 // notation's letters: ,\quad B(q) = \sum_i (m_i J_{P,i}^T J_{P,i} + …).
 std::string massMatrixSum(const NotationSymbols& n);
 
-// The form's name as the pipeline says it ("expanded", "structured": FormExpanded,
-// FormStructured); another as it is, nothing for "".
-Message formName(const std::string& form);
-
 // "inputs on θ2 (underactuated: m = 1 < n = 2)" in `language`, the coordinates as given.
 std::string actuationSentence(const std::vector<int>& actuated, const std::vector<std::string>& coordinates, Language language);
 

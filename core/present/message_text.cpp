@@ -3,6 +3,8 @@
 #include <array>
 #include <cstddef>
 
+#include "core/present/latex_text.hpp"
+
 namespace ll::present {
 namespace {
 
@@ -36,6 +38,22 @@ std::string messageText(const Message& message, Language language) {
     args.reserve(message.args.size());
     for (const Message& a : message.args) args.push_back(messageText(a, language));
     return filledIn(wordsOf(message.id, language), args);
+}
+
+std::string latexMessageText(const Message& message, Language language) {
+    if (message.id == MessageId::Literal) return message.literal;
+    const std::string words = wordsOf(message.id, language);
+    std::string out;
+    std::size_t from = 0;  // the words between the placeholders escaped, each {k} filled in
+    for (std::size_t at = 0; at + 2 < words.size(); ++at)
+        if (words[at] == '{' && words[at + 1] >= '1' && words[at + 1] <= '9' && words[at + 2] == '}') {
+            out += latexText(words.substr(from, at - from));
+            if (const std::size_t k = static_cast<std::size_t>(words[at + 1] - '1'); k < message.args.size())
+                out += latexMessageText(message.args[k], language);
+            from = at + 3;
+            at += 2;
+        }
+    return out + latexText(words.substr(from));
 }
 
 }  // namespace ll::present

@@ -11,6 +11,11 @@ namespace ll::present {
 
 std::string messageText(const Message& message, Language language);
 
+// The same in LaTeX's text mode: the id's words escaped as latex_text.hpp escapes them,
+// each literal argument put in as it is (LaTeX already: math such as "$q_{2}$", a range
+// "4--7", or words the caller escaped), each message argument worded the same way.
+std::string latexMessageText(const Message& message, Language language);
+
 // The Danish words of an id, nullptr when the catalogue has none (the test of the
 // catalogue fails then; the reader meets the English words).
 const char* danishWords(MessageId id);

@@ -138,7 +138,7 @@ DisplayPtr structuredNameNode(const std::string& name) {
     return displaySymbolName(name);
 }
 
-std::shared_ptr<const DisplayDocument> structuredDisplayDocument(const StructuredDynamics& s, const std::string& formReason,
+std::shared_ptr<const DisplayDocument> structuredDisplayDocument(const StructuredDynamics& s, const Message& formReason,
                                                                  int firstStep, int lastStep, const std::atomic<bool>* cancel) {
     const auto lock = lockGinac();
     auto doc = std::make_shared<DisplayDocument>();
@@ -163,7 +163,7 @@ std::shared_ptr<const DisplayDocument> structuredDisplayDocument(const Structure
     for (int k = 0; k < s.table->size(); ++k) byStep[s.table->entries()[k].step].push_back(k);
     const auto shown = [&](int step) { return step >= firstStep && step <= lastStep; };
     const auto item = [&](const std::string& name, Quantity quantity, int row, int col, const DisplayPtr& label, const GiNaC::ex& value,
-                          std::string note) {
+                          Message note) {
         throwIfCancelled(cancel);  // a newer edit need not wait for this document under the GiNaC lock
         DisplayItem it;
         it.name = name;
@@ -196,26 +196,26 @@ std::shared_ptr<const DisplayDocument> structuredDisplayDocument(const Structure
             for (int k : byStep[step]) {
                 const NamedDefinition& d = s.table->entries()[k];
                 st.items.push_back(item(d.name, Quantity::NamedQuantity, -1, -1, names->at(d.name), d.value,
-                                        d.meaning.english() + "; depends on " + coordinateList(d.coordinates, s.n)));
+                                        message(MessageId::NoteMeaningDependsOn, d.meaning, coordinateList(d.coordinates, s.n))));
             }
         if (step == 7)
             for (int j = 0; j < s.n; ++j)
                 for (int k = j; k < s.n; ++k)
                     st.items.push_back(item("b" + joined({idx(j), idx(k)}), Quantity::MassMatrixEntry, j, k, entryLabel("b", {idx(j), idx(k)}),
                                             s.B(j, k),
-                                            notes::linkRange(std::max(j, k), s.n - 1) + "; depends on " +
-                                                coordinateList(s.coordinatesOfB(j, k), s.n)));
+                                            message(MessageId::NoteMeaningDependsOn, notes::linkRange(std::max(j, k), s.n - 1),
+                                                    coordinateList(s.coordinatesOfB(j, k), s.n))));
         if (step == 8) {
             for (int j = 0; j < s.n; ++j)
                 st.items.push_back(item("g" + idx(j), Quantity::GravityEntry, j, -1, entryLabel("g", {idx(j)}), s.g(j, 0),
-                                        "depends on " + coordinateList(s.table->coordinatesOf(s.g(j, 0)), s.n)));
+                                        message(MessageId::NoteDependsOn, coordinateList(s.table->coordinatesOf(s.g(j, 0)), s.n))));
             for (int i = 0; i < s.n; ++i)
                 for (int j = 0; j < s.n; ++j)
                     st.items.push_back(
-                        item("c" + joined({idx(i), idx(j)}), Quantity::CoriolisEntry, i, j, entryLabel("c", {idx(i), idx(j)}), s.C(i, j), ""));
+                        item("c" + joined({idx(i), idx(j)}), Quantity::CoriolisEntry, i, j, entryLabel("c", {idx(i), idx(j)}), s.C(i, j), {}));
             for (int j = 0; j < s.n; ++j)
                 if (!s.Q(j, 0).is_zero())
-                    st.items.push_back(item("Q" + idx(j), Quantity::ForceEntry, j, -1, entryLabel("Q", {idx(j)}), s.Q(j, 0), ""));
+                    st.items.push_back(item("Q" + idx(j), Quantity::ForceEntry, j, -1, entryLabel("Q", {idx(j)}), s.Q(j, 0), {}));
         }
         doc->steps.push_back(std::move(st));
     }

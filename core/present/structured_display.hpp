@@ -22,7 +22,7 @@ using symbolic::StructuredDynamics;
 // Steps firstStep..lastStep of the structured form (names arise in steps 1, 4, 6, 7, 8;
 // B's sums come with step 7, g, C and the equations with step 8).
 // Throws Cancelled between items once `cancel` is set.
-std::shared_ptr<const DisplayDocument> structuredDisplayDocument(const StructuredDynamics& s, const std::string& formReason,
+std::shared_ptr<const DisplayDocument> structuredDisplayDocument(const StructuredDynamics& s, const Message& formReason,
                                                                  int firstStep = 0, int lastStep = 8,
                                                                  const std::atomic<bool>* cancel = nullptr);
 

@@ -13,7 +13,6 @@
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/present/json_writer.hpp"
 #include "core/present/latex_text.hpp"
-#include "core/present/localized_document.hpp"
 #include "core/present/message_text.hpp"
 #include "core/present/structured_notes.hpp"
 #include "core/symbolic/index_list.hpp"
@@ -59,20 +58,19 @@ private:
 using notes::coordinateList;
 
 
-// Step headings in LaTeX (text mode with math where the notes have it).
-const char* latexStepTitle(int step) {
+// Step headings in LaTeX: their words are LaTeX, with math where the notes have it.
+Message latexStepTitle(int step) {
     switch (step) {
-        case 1: return "Kinematic model: the axes $x_f, y_f, z_f$ and origin $o_f$ of every frame $f$, in each link's own frame";
-        case 4: return "Jacobian columns $J_{P,j}^{(i)}$ of each centre of mass, in its link's frame ($J_{O,j}^{(i)} = z$ of joint $j$'s axis)";
-        case 6: return "Potential energy: $\\gamma_j^{(i)} = g_0^T J_{P,j}^{(i)}$, so $g_j = \\partial E_{\\mathrm{pot}}/\\partial q_j = -\\sum_{i \\ge j} m_i \\gamma_j^{(i)}$";
-        case 7: return "Mass matrix: $\\beta_{jk}^{(i)} = m_i J_{P,j}^{(i)T} J_{P,k}^{(i)} + z_j^T I_i z_k$, $b_{jk} = \\sum_{i \\ge \\max(j,k)} \\beta_{jk}^{(i)}$";
-        case 8: return "Christoffel symbols: $\\partial b_{jk}/\\partial q_l$ by the Jacobian identities (zero for $l \\le \\min(j,k)$)";
+        case 1: return MessageId::TitleNamesFramesLatex;
+        case 4: return MessageId::TitleNamesJacobiansLatex;
+        case 6: return MessageId::TitleNamesPotentialLatex;
+        case 7: return MessageId::TitleNamesMassMatrixLatex;
+        case 8: return MessageId::TitleNamesChristoffelLatex;
     }
-    return "";
+    return {};
 }
 
-
-// Step headings in text (and in LaTeX in another language than English).
+// Step headings in text.
 Message stepTitle(int step) {
     switch (step) {
         case 1: return MessageId::TitleNamesFrames;
@@ -156,24 +154,19 @@ void forEachDefinition(const StructuredDynamics& s, const Selection& sel, Headin
     }
 }
 
-std::string entryMeaning(const StructuredDynamics& s, const EntryRef& e) {
-    const std::string deps = coordinateList(s.table->coordinatesOf(valueOf(s, e)), s.n);
-    if (e.matrix == 'B') return "sum of the contributions of " + notes::linkRange(std::max(e.row, e.col), s.n - 1) + "; depends on " + deps;
+// What an entry is: its sum and the coordinates it depends on (in LaTeX as math).
+Message entryMeaning(const StructuredDynamics& s, const EntryRef& e, notes::Style style) {
+    const Message deps = coordinateList(s.table->coordinatesOf(valueOf(s, e)), s.n, style);
+    if (e.matrix == 'B')
+        return message(MessageId::NoteContributionsDependsOn, notes::linkRange(std::max(e.row, e.col), s.n - 1, style), deps);
     if (e.matrix == 'C') {
         const std::string ij = symbolic::indexList({e.row, e.col});
-        return "sum_k c_" + ij + (ij.find(',') == std::string::npos ? "k" : ",k") + " qd_k; depends on " + deps + " and the velocities";
+        return message(MessageId::NoteDependsOnAndVelocities,
+                       style == notes::Style::Latex ? "$\\sum_k c_{" + idx(e.row) + "," + idx(e.col) + ",k}\\,\\dot q_k$"
+                                                    : "sum_k c_" + ij + (ij.find(',') == std::string::npos ? "k" : ",k") + " qd_k",
+                       deps);
     }
-    return "depends on " + deps;
-}
-
-// entryMeaning in LaTeX: the sum and the coordinates as math.
-std::string latexEntryMeaning(const StructuredDynamics& s, const EntryRef& e) {
-    const std::string deps = coordinateList(s.table->coordinatesOf(valueOf(s, e)), s.n, notes::Style::Latex);
-    if (e.matrix == 'B')
-        return "sum of the contributions of " + notes::linkRange(std::max(e.row, e.col), s.n - 1, notes::Style::Latex) + "; depends on " + deps;
-    if (e.matrix == 'C')
-        return "$\\sum_k c_{" + idx(e.row) + "," + idx(e.col) + ",k}\\,\\dot q_k$; depends on " + deps + " and the velocities";
-    return "depends on " + deps;
+    return message(MessageId::NoteDependsOn, deps);
 }
 
 // The zero pattern of ∂b_jk/∂q_l (j ≤ k): one row per (j, k), one column per l.
@@ -197,34 +190,30 @@ void writeText(const StructuredDynamics& s, const StructuredDocumentInfo& info, 
     const Selection sel = select(s, info);
     out << s.systemName << "\n" << std::string(s.systemName.size(), '=') << "\n";
     const Language l = info.language;
-    out << messageText(MessageId::DocumentForm, l) << ": " << messageText(formName(info.form), l) << " (" << translatedPhrases(info.formReason, l) << ")\n";
-    out << "B, C and g are short sums over " << sel.needed
-        << " named quantities, each a few operations on earlier names; every vector of link i is written in link i's "
-           "own frame, where its centre of mass and inertia tensor are constant.\n";
+    out << messageText(MessageId::DocumentForm, l) << ": " << messageText(info.form, l) << " (" << messageText(info.formReason, l) << ")\n";
+    out << messageText(message(MessageId::StructuredSummary, sel.needed), l) << "\n";
     forEachDefinition(
         s, sel, [&](int step) { out << "\n" << messageText(MessageId::DocumentStep, l) << " " << step << ". " << messageText(stepTitle(step), l) << "\n"; },
         [&](const NamedDefinition& d) {
             out << "    " << d.name << " = " << text(d.value) << "        ("
-                << translatedPhrases(d.meaning.english() + "; depends on " + coordinateList(d.coordinates, s.n), l) << ")\n";
+                << messageText(message(MessageId::NoteMeaningDependsOn, d.meaning, coordinateList(d.coordinates, s.n)), l) << ")\n";
         });
-    if (!sel.entries.empty()) out << "\nResults over the names\n";
+    if (!sel.entries.empty()) out << "\n" << messageText(MessageId::StructuredResults, l) << "\n";
     for (const EntryRef& e : sel.entries)
         out << "    " << (e.matrix == 'B' ? "b" : e.matrix == 'C' ? "c" : "g") << e.label.substr(1) << " = "
-            << text(valueOf(s, e)) << "        (" << translatedPhrases(entryMeaning(s, e), l) << ")\n";
+            << text(valueOf(s, e)) << "        (" << messageText(entryMeaning(s, e, notes::Style::Text), l) << ")\n";
     if (sel.checks)
-        out << "    E_kin = 1/2 qd^T B qd        (" << translatedPhrases("the kinetic energy; in JSON written out over the b_jk", l) << ")\n"
-            << "    E_pot = " << text(s.Epot) << "        ("
-            << translatedPhrases("the potential energy: each link's weight over its gravity and frame-0 names, and the springs", l) << ")\n";
+        out << "    E_kin = 1/2 qd^T B qd        (" << messageText(MessageId::NoteKineticEnergyInJson, l) << ")\n"
+            << "    E_pot = " << text(s.Epot) << "        (" << messageText(MessageId::NotePotentialEnergy, l) << ")\n";
     if (sel.checks) {
         const int n = s.n, total = n * n * (n + 1) / 2;
-        out << "\nZero pattern of d b_jk / d q_l (j <= k; x: non-zero): " << s.nonZeroMassDerivatives() << " of " << total
-            << " are non-zero\n";
+        out << "\n" << messageText(message(MessageId::StructuredZeroPattern, s.nonZeroMassDerivatives(), total), l) << "\n";
         for (const std::string& row : zeroPattern(s)) out << row << "\n";
-        out << "\nSkew symmetry: Bdot - 2C with Bdot = sum_l dB/dq_l qd_l over the same names is "
-            << (skewSymmetric(s) ? "skew-symmetric (checked)" : "NOT skew-symmetric") << "\n";
+        out << "\n" << messageText(skewSymmetric(s) ? MessageId::StructuredSkewSymmetric : MessageId::StructuredNotSkewSymmetric, l) << "\n";
     }
     for (const ExpandedEntry& e : info.expanded)
-        out << "\nExpanded " << e.ref.label << " (" << e.terms << " terms, " << e.seconds << " s):\n    " << text(e.value) << "\n";
+        out << "\n" << messageText(message(MessageId::StructuredExpanded, e.ref.label), l) << " ("
+            << messageText(message(MessageId::StructuredTerms, e.terms), l) << ", " << e.seconds << " s):\n    " << text(e.value) << "\n";
 }
 
 // Each definition is a paragraph of inline math, which TeX breaks after a + or − when
@@ -233,6 +222,7 @@ void writeText(const StructuredDynamics& s, const StructuredDocumentInfo& info, 
 void writeLatex(const StructuredDynamics& s, const StructuredDocumentInfo& info, std::ostream& out) {
     Printer latex(s, Style::Latex);
     const Selection sel = select(s, info);
+    const Language l = info.language;
     const auto entryName = [&](const EntryRef& e) {
         std::string sub = e.label.substr(1);
         std::replace(sub.begin(), sub.end(), '_', ',');
@@ -245,39 +235,40 @@ void writeLatex(const StructuredDynamics& s, const StructuredDocumentInfo& info,
            "\\setlength{\\parindent}{0pt}\n"
            "\\raggedright\n"
            "\\newcommand{\\lldefinition}[2]{\\par\\hangindent=2em\\hangafter=1 #1\\\\{\\small #2}\\par\\smallskip}\n"
-           "\\title{Euler--Lagrange model (structured form): " << latexText(s.systemName) << "}\n"
+           "\\title{" << messageText(message(MessageId::LatexStructuredTitle, latexText(s.systemName)), l) << "}\n"
            "\\author{LagrangeLab}\n\\date{}\n"
            "\\begin{document}\n\\maketitle\n"
-        << messageText(MessageId::DocumentForm, info.language) << ": " << messageText(formName(info.form), info.language) << " (" << latexText(translatedPhrases(info.formReason, info.language)) << "). $B$, $C$ and $g$ are short sums over " << sel.needed
-        << " named quantities; every vector of link $i$ is written in its own frame. "
-           "Shorthand: $c_{i} = \\cos q_i$, $s_{i} = \\sin q_i$.\n";
+        << messageText(MessageId::DocumentForm, l) << ": " << messageText(info.form, l) << " (" << latexText(messageText(info.formReason, l))
+        << "). " << messageText(message(MessageId::LatexStructuredSummary, sel.needed), l) << " "
+        << latexMessageText(MessageId::DocumentShorthand, l) << ": $c_{i} = \\cos q_i$, $s_{i} = \\sin q_i$.\n";
     forEachDefinition(
         s, sel, [&](int step) {
-            out << "\\section*{" << messageText(MessageId::DocumentStep, info.language) << " " << step << "}\n"
-                << (info.language == Language::English ? std::string(latexStepTitle(step)) : latexText(messageText(stepTitle(step), info.language)))
-                << "\n\\medskip\n";
+            out << "\\section*{" << messageText(MessageId::DocumentStep, l) << " " << step << "}\n"
+                << messageText(latexStepTitle(step), l) << "\n\\medskip\n";
         },
         [&](const NamedDefinition& d) {
             out << "\\lldefinition{$" << latex(d.symbol) << " = " << latex(d.value) << "$}{$" << d.latex
-                << "$: " << latexText(d.meaning.english()) << "; depends on " << coordinateList(d.coordinates, s.n, notes::Style::Latex) << "}\n";
+                << "$: "
+                << latexMessageText(message(MessageId::NoteMeaningDependsOn, latexText(messageText(d.meaning, l)),
+                                            coordinateList(d.coordinates, s.n, notes::Style::Latex)), l)
+                << "}\n";
         });
-    if (!sel.entries.empty()) out << "\\section*{Results over the names}\n";
+    if (!sel.entries.empty()) out << "\\section*{" << latexMessageText(MessageId::StructuredResults, l) << "}\n";
     for (const EntryRef& e : sel.entries)
         out << "\\lldefinition{$" << entryName(e) << " = " << latex(valueOf(s, e)) << "$}{"
-            << latexEntryMeaning(s, e) << "}\n";
+            << latexMessageText(entryMeaning(s, e, notes::Style::Latex), l) << "}\n";
     if (sel.checks)
-        out << "\\lldefinition{$E_{\\mathrm{kin}} = \\tfrac{1}{2}\\,\\dot q^{T} B\\,\\dot q$}{the kinetic energy}\n"
-            << "\\lldefinition{$E_{\\mathrm{pot}} = " << latex(s.Epot)
-            << "$}{the potential energy: each link's weight over its gravity and frame-0 names, and the springs}\n";
+        out << "\\lldefinition{$E_{\\mathrm{kin}} = \\tfrac{1}{2}\\,\\dot q^{T} B\\,\\dot q$}{" << latexMessageText(MessageId::NoteKineticEnergy, l) << "}\n"
+            << "\\lldefinition{$E_{\\mathrm{pot}} = " << latex(s.Epot) << "$}{" << latexMessageText(MessageId::NotePotentialEnergy, l) << "}\n";
     if (sel.checks) {
         const int n = s.n;
-        out << "\\paragraph{Zero pattern} " << s.nonZeroMassDerivatives() << " of " << n * n * (n + 1) / 2
-            << " derivatives $\\partial b_{jk}/\\partial q_l$ ($j \\le k$) are non-zero. "
-            << "$\\dot B - 2C$ is " << (skewSymmetric(s) ? "skew-symmetric (checked over the names)" : "not skew-symmetric") << ".\n";
+        out << "\\paragraph{" << latexMessageText(MessageId::StructuredZeroPatternHeading, l) << "} "
+            << messageText(message(MessageId::LatexNonZeroDerivatives, s.nonZeroMassDerivatives(), n * n * (n + 1) / 2), l) << " "
+            << messageText(skewSymmetric(s) ? MessageId::LatexSkewSymmetric : MessageId::LatexNotSkewSymmetric, l) << "\n";
     }
     for (const ExpandedEntry& e : info.expanded)
-        out << "\\paragraph{Expanded $" << entryName(e.ref) << "$} (" << e.terms << " terms)\n\n$" << latex(e.value)
-            << "$\n";
+        out << "\\paragraph{" << latexMessageText(message(MessageId::StructuredExpanded, "$" + entryName(e.ref) + "$"), l) << "} ("
+            << latexMessageText(message(MessageId::StructuredTerms, e.terms), l) << ")\n\n$" << latex(e.value) << "$\n";
     out << "\\end{document}\n";
 }
 
@@ -292,8 +283,8 @@ void writeJson(const StructuredDynamics& s, const StructuredDocumentInfo& info, 
     j.beginObject();
     j.member("system", s.systemName);
     j.member("mode", info.modeName);
-    j.member("form", info.form);
-    j.member("form_reason", info.formReason);
+    j.member("form", messageText(info.form, info.language));
+    j.member("form_reason", messageText(info.formReason, info.language));
     std::vector<std::string> coordinates;
     for (int i = 0; i < s.n; ++i) coordinates.push_back(coordinateName(i));
     j.member("coordinates", coordinates);
@@ -308,7 +299,7 @@ void writeJson(const StructuredDynamics& s, const StructuredDocumentInfo& info, 
         j.member("expr", plain(d.value));
         j.member("latex", d.latex);
         j.member("step", d.step);
-        j.member("meaning", d.meaning.english());
+        j.member("meaning", messageText(d.meaning, info.language));
         j.key("depends_on");  // indices k of the q_k it depends on: [2, 3] (a tenth of the document as "q2", "q3")
         j.beginArray();
         for (int q = 0; q < s.n; ++q)

@@ -21,17 +21,18 @@ using symbolic::StructuredDynamics;
 
 struct StructuredDocumentInfo {
     std::string modeName;                 // parameters, numeric, symbolic
-    std::string formReason;               // why this form ("7 joints: ...")
+    Message formReason;                   // why this form ("auto: 7 joints: ...")
     std::vector<EntryRef> entries;        // only these of B, C, g (empty: all)
     std::vector<ExpandedEntry> expanded;  // expanded entries to show
-    // "structured", or "expanded" when the entries asked for are shown expanded (the
+    // FormStructured, or FormExpanded when the entries asked for are shown expanded (the
     // names they need are listed too): what the document says its form is.
-    std::string form = "structured";
+    Message form = MessageId::FormStructured;
     // --steps: only the names of these steps of the course notes (1 frames, 4 Jacobian
     // columns, 6 gamma, 7 beta, 8 derivatives); B needs step 7, C, g and the checks step 8.
     int firstStep = 0, lastStep = 8;
-    // the language of its headings, titles and form line (language.hpp); the names and
-    // sums are the same in every language
+    // the language of its words (language.hpp): headings, titles, the form and why, the
+    // notes and checks, and JSON's form, form_reason and meaning; the names and sums are
+    // the same in every language
     Language language = Language::English;
 };
 

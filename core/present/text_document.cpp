@@ -118,7 +118,7 @@ std::string textDocument(const DisplayDocument& document, std::vector<TextSpan>*
     std::string out = document.systemName + "\n" + std::string(document.systemName.size(), '=') + "\n";
     const Language l = document.language;
     if (!document.form.empty())
-        out += messageText(MessageId::DocumentForm, l) + ": " + messageText(document.form, l) + " (" + document.formReason + ")\n";
+        out += messageText(MessageId::DocumentForm, l) + ": " + messageText(document.form, l) + " (" + messageText(document.formReason, l) + ")\n";
     if (!document.remark.empty()) out += messageText(document.remark, l) + "\n";
     int line = lineCount(out) - 1;  // the line being written
     for (std::size_t s = 0; s < document.steps.size(); ++s) {

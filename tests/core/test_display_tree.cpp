@@ -338,10 +338,10 @@ private slots:
         std::atomic<bool> stop{true};
         QVERIFY_THROWS_EXCEPTION(Cancelled, present::displayDocument(d, &stop));
         const symbolic::StructuredDynamics s = symbolic::deriveStructured(scene, options);
-        QVERIFY_THROWS_EXCEPTION(Cancelled, present::structuredDisplayDocument(s, "test", 0, 8, &stop));
+        QVERIFY_THROWS_EXCEPTION(Cancelled, present::structuredDisplayDocument(s, literal("test"), 0, 8, &stop));
         stop = false;
         QVERIFY(!present::displayDocument(d, &stop)->steps.empty());
-        QVERIFY(!present::structuredDisplayDocument(s, "test", 0, 8, &stop)->steps.empty());
+        QVERIFY(!present::structuredDisplayDocument(s, literal("test"), 0, 8, &stop)->steps.empty());
     }
 
     // A matrix too wide for a line is listed entry by entry without its zeros: the PUMA

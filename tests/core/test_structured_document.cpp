@@ -136,7 +136,7 @@ std::string latexProblem(const std::string& doc) {
 }
 
 std::string document(const StructuredDynamics& s, DocumentFormat format, StructuredDocumentInfo info = {}) {
-    if (info.formReason.empty()) info.formReason = "asked for with --form";
+    if (info.formReason.empty()) info.formReason = MessageId::FormAskedFor;
     info.modeName = "parameters";
     return structuredDocument(s, format, info);
 }
@@ -224,7 +224,7 @@ private slots:
         request.document.format = DocumentFormat::Latex;
         request.form = DerivationForm(form);
         const FormDocument out = deriveInForm(sc, request);
-        QCOMPARE(QString::fromStdString(out.form), QString("expanded"));
+        QCOMPARE(int(out.form), int(DerivationForm::Expanded));
         const std::string& latex = out.derived.document;
         const std::string problem = latexProblem(latex);
         QVERIFY2(problem.empty(), problem.c_str());

@@ -269,7 +269,7 @@ private slots:
             item.name = "b" + std::to_string(i);
             item.equation = displayEquation(symbolNode("b", std::to_string(i)), sumOf(12, i));
             item.value = item.equation->children[1];
-            item.note = "item " + std::to_string(i + 1) + " of " + std::to_string(items);
+            item.note = literal("item " + std::to_string(i + 1) + " of " + std::to_string(items));
             step.items.push_back(item);
         }
         document.steps.push_back(step);

@@ -117,7 +117,7 @@ void paginateFrom(const present::DisplayDocument& document, const PageFormat& fo
                     0.85, c.width()),
             0, 0.4 * em, 0.2 * em);
     if (!document.form.empty())
-        c.block(wrapped(QString::fromStdString(words(MessageId::DocumentForm) + ": " + words(document.form) + " (" + document.formReason + ")"),
+        c.block(wrapped(QString::fromStdString(words(MessageId::DocumentForm) + ": " + words(document.form) + " (" + words(document.formReason) + ")"),
                         0.85, c.width()),
                 0, 0.2 * em, 0.2 * em);
     if (!document.remark.empty()) c.block(wrapped(QString::fromStdString(words(document.remark)), 0.85, c.width()), 0, 0.2 * em, 0.2 * em);
@@ -140,11 +140,12 @@ void paginateFrom(const present::DisplayDocument& document, const PageFormat& fo
             const present::DisplayItem* item = &it;
             std::vector<MathBox> lines = layoutItem(*item, c.width() - em, document.language);
             if (!item->note.empty()) {  // what a name means, beside it when it fits, else under it
-                const MathBox note = layoutProse(QString::fromStdString(item->note), 0.75);
+                const QString meaning = QString::fromStdString(words(item->note));
+                const MathBox note = layoutProse(meaning, 0.75);
                 if (lines.size() == 1 && lines[0].width + 2 * em + note.width <= c.width() - em)
                     hcat(lines[0], note, 2 * em);
                 else
-                    for (const MathBox& l : wrapped(QString::fromStdString(item->note), 0.75, c.width() - 3 * em)) lines.push_back(indented(l));
+                    for (const MathBox& l : wrapped(meaning, 0.75, c.width() - 3 * em)) lines.push_back(indented(l));
             }
             c.block(lines, em, (item->note.empty() ? 0.7 : 0.35) * em, 0.45 * em);
         }

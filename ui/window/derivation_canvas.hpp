@@ -138,7 +138,7 @@ protected:
                 const double x = margin + fm.horizontalAdvance(head + "  ");
                 p.setPen(palette().color(QPalette::PlaceholderText));
                 p.drawText(QPointF(x, y + fm.ascent()),
-                           fm.elidedText(QString::fromStdString(item.note), Qt::ElideRight, std::max(0.0, width() - margin - x)));
+                           fm.elidedText(QString::fromStdString(present::messageText(item.note, language_)), Qt::ElideRight, std::max(0.0, width() - margin - x)));
             }
             y += fm.height() * 1.1;
             if (e.collapsed) continue;
