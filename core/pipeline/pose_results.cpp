@@ -54,23 +54,23 @@ DisplayPtr matrix(const Eigen::MatrixXd& m) {
     return node;
 }
 
-DisplayItem item(const std::string& name, present::Quantity quantity, const std::string& latexName, DisplayPtr value, std::string note) {
+DisplayItem item(const std::string& name, present::Quantity quantity, const std::string& latexName, DisplayPtr value, Message note) {
     DisplayItem it;
     it.name = name;
     it.latexName = latexName;
     it.quantity = quantity;
     it.value = value;
     it.equation = present::displayEquation(present::displayLabel(name, latexName), value);
-    it.note = literal(std::move(note));
+    it.note = std::move(note);
     return it;
 }
 
 // The unit of a joint coordinate's generalized force, velocity… by joint type.
-std::string perJoint(const Scene& scene, const char* revolute, const char* prismatic) {
+Message perJoint(const Scene& scene, const char* revolute, const char* prismatic) {
     bool anyRevolute = false, anyPrismatic = false;
     for (const auto& j : scene.robot.joints) (j.dh.type == JointType::Revolute ? anyRevolute : anyPrismatic) = true;
-    if (anyRevolute && anyPrismatic) return std::string(revolute) + " (revolute), " + prismatic + " (prismatic)";
-    return anyPrismatic ? prismatic : revolute;
+    if (anyRevolute && anyPrismatic) return message(MessageId::PoseUnitsByJointType, revolute, prismatic);
+    return literal(anyPrismatic ? prismatic : revolute);
 }
 
 // value, a thin space, the unit: a row the typesetter sets side by side.
@@ -117,11 +117,11 @@ present::DisplayStep teachMatrices(const Scene& scene, const Eigen::VectorXd& q)
     step.number = poseStepNumber;
     step.title = MessageId::TitlePoseMatrices;
     step.items.push_back(item("E_pot", present::Quantity::PotentialEnergy, "E_{\\mathrm{pot}}",
-                              withUnit(number(potentialEnergy(scene.robot, data, scene.effects, q)), "J"), ""));
+                              withUnit(number(potentialEnergy(scene.robot, data, scene.effects, q)), "J"), {}));
     step.items.push_back(item("g", present::Quantity::GravityVector, "g(q)",
-                              matrixWithUnits(data.g, [&](int i, int) { return forceUnit(revolute(i)); }), ""));
+                              matrixWithUnits(data.g, [&](int i, int) { return forceUnit(revolute(i)); }), {}));
     step.items.push_back(item("B", present::Quantity::MassMatrix, "B(q)",
-                              matrixWithUnits(data.B, [&](int i, int j) { return massMatrixUnit(revolute(i), revolute(j)); }), ""));
+                              matrixWithUnits(data.B, [&](int i, int j) { return massMatrixUnit(revolute(i), revolute(j)); }), {}));
     return step;
 }
 
@@ -152,11 +152,11 @@ present::DisplayStep poseResults(const Scene& scene, const Eigen::VectorXd& q, c
     step.formulaLatex = present::formulaLatex(step.general, {});
     step.items.push_back(item("q", present::Quantity::Coordinates, "q", matrix(shown), perJoint(scene, "°", "m")));
     step.items.push_back(item("qd", present::Quantity::Velocities, "\\dot{q}", matrix(qd), perJoint(scene, "rad/s", "m/s")));
-    step.items.push_back(item("Ekin", present::Quantity::KineticEnergy, "E_{\\mathrm{kin}}", number(ekin), "J"));
-    step.items.push_back(item("Epot", present::Quantity::PotentialEnergy, "E_{\\mathrm{pot}}", number(epot), "J"));
+    step.items.push_back(item("Ekin", present::Quantity::KineticEnergy, "E_{\\mathrm{kin}}", number(ekin), literal("J")));
+    step.items.push_back(item("Epot", present::Quantity::PotentialEnergy, "E_{\\mathrm{pot}}", number(epot), literal("J")));
     bool mixed = false;
     for (const auto& j : scene.robot.joints) mixed |= j.dh.type != scene.robot.joints[0].dh.type;
-    step.items.push_back(item("B", present::Quantity::MassMatrix, "B(q)", matrix(data.B), perJoint(scene, "kg·m²", "kg") + (mixed ? "; kg·m where they meet" : "")));
+    step.items.push_back(item("B", present::Quantity::MassMatrix, "B(q)", matrix(data.B), mixed ? message(MessageId::PoseUnitsWhereTheyMeet, perJoint(scene, "kg·m²", "kg"), "kg·m") : perJoint(scene, "kg·m²", "kg")));
     step.items.push_back(item("C", present::Quantity::CoriolisMatrix, "C(q,\\dot{q})", matrix(data.C), perJoint(scene, "kg·m²/s", "kg/s")));
     step.items.push_back(item("g", present::Quantity::GravityVector, "g(q)", matrix(data.g), perJoint(scene, "N·m", "N")));
     return step;
