@@ -5,8 +5,7 @@
 
 namespace ll::cli {
 
-Options::Options(const std::vector<std::string>& args, const std::set<std::string>& allowed,
-                 const std::set<std::string>& flags) {
+Options::Options(const std::vector<std::string>& args, const std::set<std::string>& allowed, const std::set<std::string>& flags) {
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& arg = args[i];
         if (arg.rfind("--", 0) != 0) {
@@ -44,22 +43,18 @@ double parseNumber(const std::string& option, const std::string& text) {
     std::istringstream in(text);
     double value = 0;
     in >> value;
-    if (in.fail() || !in.eof() || !std::isfinite(value))
-        throw UsageError(UsageId::ExpectedFiniteNumber, option, text);
+    if (in.fail() || !in.eof() || !std::isfinite(value)) throw UsageError(UsageId::ExpectedFiniteNumber, option, text);
     return value;
 }
 
-double Options::number(const std::string& name, double fallback) const {
-    return has(name) ? parseNumber(name, text(name)) : fallback;
-}
+double Options::number(const std::string& name, double fallback) const { return has(name) ? parseNumber(name, text(name)) : fallback; }
 
 Eigen::VectorXd Options::vector(const std::string& name, int size) const {
     std::vector<double> values;
     std::stringstream in(text(name));
     std::string item;
     while (std::getline(in, item, ',')) values.push_back(parseNumber(name, item));
-    if (static_cast<int>(values.size()) != size)
-        throw UsageError(UsageId::ExpectedNumberPerJoint, name, size, values.size(), text(name));
+    if (static_cast<int>(values.size()) != size) throw UsageError(UsageId::ExpectedNumberPerJoint, name, size, values.size(), text(name));
     return Eigen::Map<Eigen::VectorXd>(values.data(), size);
 }
 

@@ -17,8 +17,7 @@ class Options {
 public:
     // args: everything after the command name. `allowed`: option names without "--".
     // `flags`: options that take no value.
-    Options(const std::vector<std::string>& args, const std::set<std::string>& allowed,
-            const std::set<std::string>& flags = {});
+    Options(const std::vector<std::string>& args, const std::set<std::string>& allowed, const std::set<std::string>& flags = {});
 
     const std::vector<std::string>& positional() const { return positional_; }
     bool has(const std::string& name) const { return values_.count(name) > 0; }

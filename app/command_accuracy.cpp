@@ -63,8 +63,7 @@ std::vector<std::string> parseNames(const std::string& text) {
     std::string item;
     while (std::getline(in, item, ','))
         if (!item.empty()) {
-            if (!findIntegrator(item))
-                throw UsageError(UsageId::UnknownIntegrator, item, integratorNames());
+            if (!findIntegrator(item)) throw UsageError(UsageId::UnknownIntegrator, item, integratorNames());
             names.push_back(item);
         }
     return names;
@@ -80,11 +79,9 @@ void writeCsv(const WorkPrecisionResult& r, std::ostream& out) {
         std::string message = p.message.english();
         for (char& c : message)
             if (c == '"') c = '\'';
-        out << p.integrator << "," << p.adaptive << "," << p.setting << "," << p.completed << ","
-            << (p.completed ? p.finalError : NAN) << "," << p.atReferenceFloor << "," << p.maxRelEnergyDrift << ","
-            << p.cpuSeconds << "," << p.rhsEvaluations << "," << p.steps << "," << p.rejectedSteps << "," << p.step << ","
-            << p.lastStep << ",\"" << message
-            << "\"\n";
+        out << p.integrator << "," << p.adaptive << "," << p.setting << "," << p.completed << "," << (p.completed ? p.finalError : NAN)
+            << "," << p.atReferenceFloor << "," << p.maxRelEnergyDrift << "," << p.cpuSeconds << "," << p.rhsEvaluations << "," << p.steps
+            << "," << p.rejectedSteps << "," << p.step << "," << p.lastStep << ",\"" << message << "\"\n";
     }
 }
 
@@ -92,10 +89,10 @@ void printTable(const WorkPrecisionResult& r) {
     std::printf("work-precision of %s over %g s\n%s\n\n", r.scene.c_str(), r.duration, workPrecisionDefinitions());
     if (r.status == SimulationStatus::Failed) return;  // the reference failed: main() says why
     std::printf("reference: %s at tol %.1e, its own error estimate %.2e, energy drift %.2e, CPU %.1f ms\n\n",
-                r.reference.integrator.c_str(), r.reference.tolerance, r.reference.estimatedError,
-                r.reference.maxRelEnergyDrift, 1e3 * r.reference.cpuSeconds);
-    std::printf("%-17s %-13s %10s %10s %10s %10s %9s %8s %10s  %s\n", "integrator", "setting", "error", "drift",
-                "CPU [ms]", "rhs evals", "steps", "rejected", "dt [s]", "note");
+                r.reference.integrator.c_str(), r.reference.tolerance, r.reference.estimatedError, r.reference.maxRelEnergyDrift,
+                1e3 * r.reference.cpuSeconds);
+    std::printf("%-17s %-13s %10s %10s %10s %10s %9s %8s %10s  %s\n", "integrator", "setting", "error", "drift", "CPU [ms]", "rhs evals",
+                "steps", "rejected", "dt [s]", "note");
     for (const WorkPrecisionPoint& p : r.points) {
         char setting[32], step[32], last[48] = "";
         std::snprintf(setting, sizeof setting, "%s %.0e", p.adaptive ? "tol" : "dt ", p.setting);
@@ -106,14 +103,13 @@ void printTable(const WorkPrecisionResult& r) {
         if (!p.completed) {
             const std::string why = p.message.english();  // the table is in English
             note += "stopped: " + why.substr(0, why.find(':'));
-            std::printf("%-17s %-13s %10s %10s %10.2f %10ld %9ld %8ld %10s  %s\n", p.integrator.c_str(), setting, "-",
-                        "-", 1e3 * p.cpuSeconds, p.rhsEvaluations, p.steps, p.rejectedSteps, step, note.c_str());
+            std::printf("%-17s %-13s %10s %10s %10.2f %10ld %9ld %8ld %10s  %s\n", p.integrator.c_str(), setting, "-", "-",
+                        1e3 * p.cpuSeconds, p.rhsEvaluations, p.steps, p.rejectedSteps, step, note.c_str());
             continue;
         }
         if (p.atReferenceFloor) note += "at the reference's accuracy";
-        std::printf("%-17s %-13s %10.2e %10.2e %10.2f %10ld %9ld %8ld %10s  %s\n", p.integrator.c_str(), setting,
-                    p.finalError, p.maxRelEnergyDrift, 1e3 * p.cpuSeconds, p.rhsEvaluations, p.steps, p.rejectedSteps,
-                    step, note.c_str());
+        std::printf("%-17s %-13s %10.2e %10.2e %10.2f %10ld %9ld %8ld %10s  %s\n", p.integrator.c_str(), setting, p.finalError,
+                    p.maxRelEnergyDrift, 1e3 * p.cpuSeconds, p.rhsEvaluations, p.steps, p.rejectedSteps, step, note.c_str());
     }
     std::printf("\nwhole analysis: %.2f s CPU\n", r.cpuSeconds);
 }
@@ -122,8 +118,7 @@ void printTable(const WorkPrecisionResult& r) {
 
 int accuracyCommand(const Args& args) {
     const Options options(args, {"integrators", "tolerances", "steps", "duration", "repeats", "reference-tol", "out", "csv"});
-    if (options.positional().size() != 1)
-        throw UsageError(usageLine("accuracy"));
+    if (options.positional().size() != 1) throw UsageError(usageLine("accuracy"));
     Scene scene = loadSceneReportingWarnings(options.positional()[0]);
     WorkPrecisionSettings settings;
     if (options.has("integrators")) settings.integrators = parseNames(options.text("integrators"));
@@ -135,8 +130,7 @@ int accuracyCommand(const Args& args) {
     if (!(settings.duration > 0)) throw UsageError(UsageId::MustBePositive, "duration");
     if (settings.repeats < 1) throw UsageError(UsageId::MustBeAtLeast, "repeats", 1);
     const std::string plot = options.text("out");
-    if (!plot.empty() && !plot.ends_with(".svg") && !plot.ends_with(".png"))
-        throw UsageError(UsageId::PlotFileType, plot);
+    if (!plot.empty() && !plot.ends_with(".svg") && !plot.ends_with(".png")) throw UsageError(UsageId::PlotFileType, plot);
     requireValidSceneFrom(scene, options.positional()[0]);
 
     const bool tty = ::isatty(STDERR_FILENO);
@@ -152,7 +146,8 @@ int accuracyCommand(const Args& args) {
         return 3;
     }
     if (options.has("csv"))
-        saveFileAtomically(options.text("csv"), [&](std::ostream& out) { writeCsv(result, out); }, Backup::None);
+        saveFileAtomically(
+            options.text("csv"), [&](std::ostream& out) { writeCsv(result, out); }, Backup::None);
     if (!plot.empty()) {
         saveAccuracyPlot(result, plot);
         std::fprintf(stderr, "plot written to %s\n", plot.c_str());

@@ -48,8 +48,7 @@ void printText(const Scene& scene, const SimulationResult& run, const ModelPrope
         std::printf("  %s  %s\n        %s = %s (%s %s)", c.passed ? "PASS" : "FAIL", c.title.c_str(), c.key.c_str(),
                     numberText(c.value, c.unit).c_str(), c.atLeast ? "must be above" : "tolerance",
                     numberText(c.tolerance, c.unit).c_str());
-        if (c.q.size() > 0)
-            std::printf(", worst at t = %.4g s, q = %s", c.time, vectorText(c.q).c_str());
+        if (c.q.size() > 0) std::printf(", worst at t = %.4g s, q = %s", c.time, vectorText(c.q).c_str());
         std::printf("\n        %s\n", c.explanation.c_str());
     }
     if (run.status == SimulationStatus::Failed)  // the report is in English, as its checks are
@@ -106,10 +105,8 @@ int checkCommand(const Args& args) {
         return 1;
     }
     const ModelProperties properties = checkModelProperties(input, run.trajectory);
-    if (format == "json")
-        printJson(scene, run, properties);
-    else
-        printText(scene, run, properties);
+    if (format == "json") printJson(scene, run, properties);
+    else printText(scene, run, properties);
     return properties.passed() && run.status != SimulationStatus::Failed ? 0 : 1;
 }
 

@@ -30,8 +30,7 @@ int codegenCommand(const Args& args) {
     const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
     char date[32];
     std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
-    const std::string code =
-        symbolic::exportCode(s, scene, lang == "c" ? symbolic::CodeLanguage::C : symbolic::CodeLanguage::Python, date);
+    const std::string code = symbolic::exportCode(s, scene, lang == "c" ? symbolic::CodeLanguage::C : symbolic::CodeLanguage::Python, date);
     if (options.has("out")) saveFileAtomically(options.text("out"), code, Backup::None);
     else std::cout << code;
     return 0;

@@ -39,8 +39,7 @@ StepRange parseSteps(const std::string& text) {
     } catch (const std::exception&) {
         throw UsageError(UsageId::StepsExpected, text);
     }
-    if (range.first < 0 || range.last > 8 || range.first > range.last)
-        throw UsageError(UsageId::StepsOutOfRange, text);
+    if (range.first < 0 || range.last > 8 || range.first > range.last) throw UsageError(UsageId::StepsOutOfRange, text);
     return range;
 }
 
@@ -62,8 +61,7 @@ void report(const DerivedDocument& derived, bool timings) {
 
 int deriveCommand(const Args& args) {
     const Options options(args, {"format", "steps", "out", "form", "entry"}, {"symbolic", "numeric", "timings", "verify"});
-    if (options.positional().size() != 1)
-        throw UsageError(usageLine("derive"));
+    if (options.positional().size() != 1) throw UsageError(usageLine("derive"));
     const std::string format = options.text("format", "text");
     const bool typeset = format == "pdf" || format == "svg" || format == "png";
     if (format != "text" && format != "latex" && format != "json" && !typeset)
@@ -84,15 +82,16 @@ int deriveCommand(const Args& args) {
     const StepRange range = parseSteps(options.text("steps", "0-8"));
 
     DocumentRequest request;
-    request.mode = options.has("symbolic") ? ParameterMode::Textbook
+    request.mode = options.has("symbolic")  ? ParameterMode::Textbook
                    : options.has("numeric") ? ParameterMode::Numeric
                                             : ParameterMode::Parametric;
     request.firstStep = range.first;
     request.presentation = presentation();
     request.lastStep = range.last;
     request.format = format == "text" ? DocumentFormat::Text : format == "latex" ? DocumentFormat::Latex : DocumentFormat::Json;
-    const DerivationForm chosenForm =
-        form == "structured" ? DerivationForm::Structured : form == "expanded" ? DerivationForm::Expanded : DerivationForm::Auto;
+    const DerivationForm chosenForm = form == "structured" ? DerivationForm::Structured
+                                      : form == "expanded" ? DerivationForm::Expanded
+                                                           : DerivationForm::Auto;
     if (typeset && (options.has("entry") || options.has("verify")))  // the typeset pages show the form auto (or --form) picks
         throw UsageError(UsageId::TypesetWholeDerivations, format);
     const bool timings = options.has("timings");
@@ -125,8 +124,7 @@ int deriveCommand(const Args& args) {
     report(result.derived, timings);
     if (options.has("out"))  // written whole or not at all, as every file the program writes
         saveFileAtomically(options.text("out"), result.derived.document, Backup::None);
-    else
-        std::cout << result.derived.document;
+    else std::cout << result.derived.document;
     return 0;
 }
 

@@ -67,8 +67,7 @@ ui::ExportSettings parseRenderOptions(const Options& options, const Scene& scene
 
     s.fps = options.number("fps", 30);
     if (s.fps <= 0 || s.fps > 240) throw UsageError(UsageId::FpsOutOfRange, options.text("fps"));
-    if (s.kind == ui::OutputKind::Gif && s.fps > 50)
-        throw UsageError(UsageId::GifFpsTooHigh, options.text("fps"));
+    if (s.kind == ui::OutputKind::Gif && s.fps > 50) throw UsageError(UsageId::GifFpsTooHigh, options.text("fps"));
     s.duration = options.number("duration", scene.simulation.duration);
     if (s.duration <= 0) throw UsageError(UsageId::DurationNotPositive, options.text("duration"));
     s.speed = options.number("speed", 1.0);
@@ -104,21 +103,17 @@ ui::ExportSettings parseRenderOptions(const Options& options, const Scene& scene
     if (msaa == "auto") s.antialiasing = ui::kAutoAntialiasing;
     else if (msaa == "edges") s.antialiasing = ui::kEdgeSmoothing;
     else if (msaa == "0" || msaa == "2" || msaa == "4" || msaa == "8") s.antialiasing = std::stoi(msaa);
-    else
-        throw UsageError(UsageId::MsaaExpected, msaa);
+    else throw UsageError(UsageId::MsaaExpected, msaa);
     const std::string layout = options.text("layout", "view");
     if (layout != "view" && layout != "composite") throw UsageError(UsageId::ValueExpectedOneOf, "layout", layout, "view", "composite");
     s.composite = layout == "composite";
     if (options.has("step") && !s.composite) throw UsageError(UsageId::ValueOnlyWith, "step", options.text("step"), "--layout composite");
-    if (s.composite && options.has("overlay"))
-        throw UsageError(UsageId::CompositeLaysOutOverlay, options.text("overlay"));
-    if (s.composite && (s.width < 480 || s.height < 270))
-        throw UsageError(UsageId::CompositeTooSmall, size);
+    if (s.composite && options.has("overlay")) throw UsageError(UsageId::CompositeLaysOutOverlay, options.text("overlay"));
+    if (s.composite && (s.width < 480 || s.height < 270)) throw UsageError(UsageId::CompositeTooSmall, size);
     if (options.has("at")) {
         if (s.kind != ui::OutputKind::Still) throw UsageError(UsageId::AtNeedsStill, options.text("at"));
         s.at = options.number("at", 0);
-        if (s.at < 0 || s.at > s.duration)
-            throw UsageError(UsageId::AtOutsideDuration, options.text("at"), std::to_string(s.duration));
+        if (s.at < 0 || s.at > s.duration) throw UsageError(UsageId::AtOutsideDuration, options.text("at"), std::to_string(s.duration));
     }
     return s;
 }
@@ -127,29 +122,30 @@ ui::ExportSettings parseRenderOptions(const Options& options, const Scene& scene
 // motion), derived as `derive --format pdf` derives it, in the --lang/--notation asked.
 std::shared_ptr<const present::DisplayStep> keyEquationStep(const Scene& scene, const std::string& path, const Options& options) {
     const double number = options.number("step", 8);
-    if (number < 0 || number > 8 || number != std::floor(number))
-        throw UsageError(UsageId::StepNotDerivationStep, options.text("step"));
+    if (number < 0 || number > 8 || number != std::floor(number)) throw UsageError(UsageId::StepNotDerivationStep, options.text("step"));
     DocumentRequest request;
     request.firstStep = request.lastStep = static_cast<int>(number);
     request.forPages = true;
     request.presentation = presentation();
     const DerivedDocument derived = inSceneFile(path, [&] { return deriveDisplay(scene, request); });
     const auto document = present::localizedDocument(*derived.display, presentation());
-    if (const present::DisplayStep* step = document->step(static_cast<int>(number))) return std::make_shared<const present::DisplayStep>(*step);
+    if (const present::DisplayStep* step = document->step(static_cast<int>(number)))
+        return std::make_shared<const present::DisplayStep>(*step);
     throw UsageError(UsageId::SceneHasNoStep, options.text("step"), path);
 }
 
 }  // namespace
 
 int renderCommand(const Args& args) {
-    const Options options(args,
-                          {"out", "duration", "fps", "size", "camera", "speed", "overlay", "trail", "frames", "at", "msaa", "layout", "step"});
+    const Options options(args, {"out", "duration", "fps", "size", "camera", "speed", "overlay", "trail", "frames", "at", "msaa", "layout",
+                                 "step"});
     if (options.positional().size() != 1) throw UsageError(usageLine("render"));
     const std::string path = options.positional()[0];
     Scene scene = loadSceneReportingWarnings(path);
     ui::ExportSettings settings = parseRenderOptions(options, scene);
     if (settings.kind != ui::OutputKind::Still && settings.kind != ui::OutputKind::Folder && !ui::FfmpegEncoder::available())
-        throw std::runtime_error("ffmpeg not found on PATH: install it (Debian: apt-get install ffmpeg), or write PNG frames with --out FOLDER");
+        throw std::runtime_error(
+            "ffmpeg not found on PATH: install it (Debian: apt-get install ffmpeg), or write PNG frames with --out FOLDER");
     scene.simulation.duration = settings.duration;
     requireValidSceneFrom(scene, path);
     if (settings.composite) {
@@ -162,7 +158,8 @@ int renderCommand(const Args& args) {
     SimulationResult result;
     {
         ProgressBar bar(tty);
-        result = simulate(scene, scene.simulation, [&](double f) { bar(0.2 * f); }, &interrupted);
+        result = simulate(
+            scene, scene.simulation, [&](double f) { bar(0.2 * f); }, &interrupted);
     }
     if (interrupted.load()) {
         std::fprintf(stderr, "interrupted: nothing written\n");
@@ -177,14 +174,15 @@ int renderCommand(const Args& args) {
     ui::ExportTimings timings;
     try {
         ProgressBar bar(tty);
-        timings = ui::exportAnimation(scene, result.trajectory, settings, [&](double f) { bar(0.2 + 0.8 * f); }, &interrupted);
+        timings = ui::exportAnimation(
+            scene, result.trajectory, settings, [&](double f) { bar(0.2 + 0.8 * f); }, &interrupted);
     } catch (const ui::ExportCancelled&) {
         std::fprintf(stderr, "interrupted: nothing written\n");
         return 130;
     }
     std::fprintf(stderr, "%ld frame%s of %dx%d in %.2f s (%.1f frames/s; %s, %s)\n", timings.frames, timings.frames == 1 ? "" : "s",
-                 settings.width, settings.height, timings.total, timings.frames / std::max(timings.total, 1e-9),
-                 timings.renderer.c_str(), timings.antialiasing.c_str());
+                 settings.width, settings.height, timings.total, timings.frames / std::max(timings.total, 1e-9), timings.renderer.c_str(),
+                 timings.antialiasing.c_str());
     rusage self{}, children{};
     getrusage(RUSAGE_SELF, &self);
     getrusage(RUSAGE_CHILDREN, &children);

@@ -26,30 +26,31 @@ namespace {
 void printSummary(const Scene& scene, const SimulationSettings& settings, const SimulationResult& r) {
     const SimulationStats& s = r.stats;
     if (s.dt > 0)
-        std::fprintf(stderr, "%s: %.6g s simulated with %s (fixed step dt %.6g s)\n", scene.name.c_str(),
-                     s.simulatedSeconds, s.integrator.c_str(), s.dt);
+        std::fprintf(stderr, "%s: %.6g s simulated with %s (fixed step dt %.6g s)\n", scene.name.c_str(), s.simulatedSeconds,
+                     s.integrator.c_str(), s.dt);
     else
-        std::fprintf(stderr, "%s: %.6g s simulated with %s (abs_tol %.3g, rel_tol %.3g, first step %.3g s)\n",
-                     scene.name.c_str(), s.simulatedSeconds, s.integrator.c_str(), settings.absTol, settings.relTol,
-                     settings.dt);
+        std::fprintf(stderr, "%s: %.6g s simulated with %s (abs_tol %.3g, rel_tol %.3g, first step %.3g s)\n", scene.name.c_str(),
+                     s.simulatedSeconds, s.integrator.c_str(), settings.absTol, settings.relTol, settings.dt);
     const double perSecond = s.simulatedSeconds > 0 ? s.cpuSeconds / s.simulatedSeconds : 0;
-    std::fprintf(stderr, "cost: %ld steps (%ld rejected), %ld right-hand-side evaluations, CPU %.3f ms (%.3f ms per simulated second, %.0fx real time)\n",
-                 s.steps, s.rejectedSteps, s.rhsEvaluations, 1e3 * s.cpuSeconds, 1e3 * perSecond,
-                 perSecond > 0 ? 1.0 / perSecond : 0.0);
+    std::fprintf(
+        stderr,
+        "cost: %ld steps (%ld rejected), %ld right-hand-side evaluations, CPU %.3f ms (%.3f ms per simulated second, %.0fx real time)\n",
+        s.steps, s.rejectedSteps, s.rhsEvaluations, 1e3 * s.cpuSeconds, 1e3 * perSecond, perSecond > 0 ? 1.0 / perSecond : 0.0);
     if (s.dt > 0) {
         std::fprintf(stderr, "steps: at t_k = k dt");
         if (s.lastStep > 0)
-            std::fprintf(stderr, ", then a last shorter step of %.6g s to reach %.6g s (the duration is not a multiple of dt)",
-                         s.lastStep, settings.duration);
+            std::fprintf(stderr, ", then a last shorter step of %.6g s to reach %.6g s (the duration is not a multiple of dt)", s.lastStep,
+                         settings.duration);
         if (s.eventSteps > 0) std::fprintf(stderr, "; %ld of them ended early at located stick-slip events", s.eventSteps);
         std::fprintf(stderr, "\n");
         if (s.interpolatedSamples > 0)
-            std::fprintf(stderr, "output: %ld of %zu samples lie between step ends: q, qd and W by cubic Hermite "
-                                 "interpolation from q, qd, qdd at the step ends, energies at the interpolated state\n",
+            std::fprintf(stderr,
+                         "output: %ld of %zu samples lie between step ends: q, qd and W by cubic Hermite "
+                         "interpolation from q, qd, qdd at the step ends, energies at the interpolated state\n",
                          s.interpolatedSamples, r.trajectory.size());
     }
-    std::fprintf(stderr, "energy: max |E - E0 - W| = %.3g J, max |dE|/E = %.3g (W: work of friction and torques)\n",
-                 s.maxEnergyError, s.maxRelEnergyError);
+    std::fprintf(stderr, "energy: max |E - E0 - W| = %.3g J, max |dE|/E = %.3g (W: work of friction and torques)\n", s.maxEnergyError,
+                 s.maxRelEnergyError);
     if (scene.lagrangian) return;  // its inputs include `forces`: `eval` and `derive` report them
     const int n = scene.robot.dof();
     const std::vector<int> inputs = actuatedJoints(scene.effects, n);
@@ -64,8 +65,7 @@ void printSummary(const Scene& scene, const SimulationSettings& settings, const 
 
 int simulateCommand(const Args& args) {
     const Options options(args, {"duration", "integrator", "abs-tol", "rel-tol", "dt", "output-rate", "out"});
-    if (options.positional().size() != 1)
-        throw UsageError(usageLine("simulate"));
+    if (options.positional().size() != 1) throw UsageError(usageLine("simulate"));
     Scene scene = loadSceneReportingWarnings(options.positional()[0]);
     SimulationSettings& settings = scene.simulation;
     settings.duration = options.number("duration", settings.duration);
@@ -88,15 +88,12 @@ int simulateCommand(const Args& args) {
     } catch (const SingularMassMatrix&) {
     }
     const TorqueColumns columns = torques ? torqueColumns(scene, *torques) : TorqueColumns{};
-    if (options.has("out"))
-        saveTrajectory(result, options.text("out"), columns);
-    else
-        writeTrajectoryCsv(result.trajectory, std::cout, columns);
+    if (options.has("out")) saveTrajectory(result, options.text("out"), columns);
+    else writeTrajectoryCsv(result.trajectory, std::cout, columns);
     printSummary(scene, settings, result);
     if (torques)
-        std::fprintf(stderr, "torques: largest |B qdd + C qd + g - Q| = %.3g (%.3g of the largest term, %.3g)\n",
-                     torques->largestResidual, torques->scale > 0 ? torques->largestResidual / torques->scale : 0.0,
-                     torques->scale);
+        std::fprintf(stderr, "torques: largest |B qdd + C qd + g - Q| = %.3g (%.3g of the largest term, %.3g)\n", torques->largestResidual,
+                     torques->scale > 0 ? torques->largestResidual / torques->scale : 0.0, torques->scale);
     const present::Language language = presentation().language;
     if (result.status == SimulationStatus::Failed) {
         std::fprintf(stderr, "%s\n", usageErrorLine(usageMessage(UsageId::SimulationStopped, result.message), language).c_str());

@@ -12,8 +12,7 @@ struct CommandText {
 };
 
 constexpr std::array<CommandText, 11> commands{{
-    {"eval", "SCENE --q v1,... --qd v1,... [--t T] [--tau v1,...]",
-     "B, C, g, Q, q̈, E_kin, E_pot at one state, as JSON"},
+    {"eval", "SCENE --q v1,... --qd v1,... [--t T] [--tau v1,...]", "B, C, g, Q, q̈, E_kin, E_pot at one state, as JSON"},
     {"simulate",
      "SCENE [--duration T] [--integrator NAME] [--abs-tol X] [--rel-tol X] [--dt X]\n"
      "[--output-rate HZ] [--out FILE.csv|FILE.json]",
@@ -80,17 +79,16 @@ std::string indented(const std::string& text, const std::string& indent) {
 const char* projectVersion() { return LL_VERSION; }
 
 std::string overviewUsage() {
-    std::string s =
-        "usage: lagrangelab <command> [arguments]\n       lagrangelab --version\n"
-        "       lagrangelab [SCENE] [--screenshot FILE.png [--play SECONDS] [--step N] [--teach q1,q2,...]] [--size WxH]\n"
-        "           the window (default scene: examples/double_pendulum.json; 1280x800 unless --size);\n"
-        "           with --screenshot it plays, shows a derivation step or poses the robot, saves the\n"
-        "           whole window and exits; [--select ENTRY] [--pick-link I] [--at T] [--tab NAME]\n"
-        "           [--joint J] [--derivation typeset|text|entries] picture a picked entry or link, a time,\n"
-        "           the Torques or Properties tab; --present starts in presentation mode (full screen, or\n"
-        "           --size with --screenshot); --dh-step I,K the DH step-through at joint I after K of its\n"
-        "           four elementary motions, --dh-dimensions every DH parameter drawn on the robot\n"
-        "\ncommands:\n";
+    std::string s = "usage: lagrangelab <command> [arguments]\n       lagrangelab --version\n"
+                    "       lagrangelab [SCENE] [--screenshot FILE.png [--play SECONDS] [--step N] [--teach q1,q2,...]] [--size WxH]\n"
+                    "           the window (default scene: examples/double_pendulum.json; 1280x800 unless --size);\n"
+                    "           with --screenshot it plays, shows a derivation step or poses the robot, saves the\n"
+                    "           whole window and exits; [--select ENTRY] [--pick-link I] [--at T] [--tab NAME]\n"
+                    "           [--joint J] [--derivation typeset|text|entries] picture a picked entry or link, a time,\n"
+                    "           the Torques or Properties tab; --present starts in presentation mode (full screen, or\n"
+                    "           --size with --screenshot); --dh-step I,K the DH step-through at joint I after K of its\n"
+                    "           four elementary motions, --dh-dimensions every DH parameter drawn on the robot\n"
+                    "\ncommands:\n";
     for (const CommandText& c : commands) s += "  " + synopsis(c, 2) + "\n" + indented(c.summary, "      ");
     return s + "\nexit codes: 0 success, 2 bad input, 3 simulation stopped early\n";
 }

@@ -27,8 +27,7 @@ int codegenCommand(const Args& args);
 int checkCommand(const Args& args);
 // The painting parts: each starts Qt (offscreen without a display) for its own work.
 // derive --format pdf|svg|png: the typeset pages of a display document (app/derive_pages.cpp).
-int writeDerivationPages(const present::DisplayDocument& display, const std::string& format, const std::string& outPath,
-                         bool timings);
+int writeDerivationPages(const present::DisplayDocument& display, const std::string& format, const std::string& outPath, bool timings);
 // accuracy --out: the work–precision plot, .svg or .png (app/accuracy_plot.cpp).
 void saveAccuracyPlot(const WorkPrecisionResult& result, const std::string& path);
 // The desktop window: `lagrangelab [SCENE] [--screenshot FILE.png …]` (app/window_command.cpp).

@@ -16,8 +16,7 @@ double secondsSince(Clock::time_point since) { return std::chrono::duration<doub
 
 }  // namespace
 
-int writeDerivationPages(const present::DisplayDocument& display, const std::string& format, const std::string& outPath,
-                         bool timings) {
+int writeDerivationPages(const present::DisplayDocument& display, const std::string& format, const std::string& outPath, bool timings) {
     const Clock::time_point startGui = Clock::now();
     const auto app = makeGuiApplication();
     if (!ui::mathFontsAvailable()) throw std::runtime_error("the Latin Modern fonts are missing: install fonts-lmodern");

@@ -21,7 +21,8 @@ namespace {
 
 bool isHelp(const std::string& arg) { return arg == "--help" || arg == "-h"; }
 
-const char* const kCommands[] = {"eval", "simulate", "integrators", "accuracy", "derive", "render", "report", "codegen", "check", "help", "version", "--version"};
+const char* const kCommands[] = {"eval",   "simulate", "integrators", "accuracy", "derive",  "render",
+                                 "report", "codegen",  "check",       "help",     "version", "--version"};
 
 // `lagrangelab`, `lagrangelab SCENE …` and `lagrangelab --screenshot …` open the window:
 // no arguments, or a first argument that is no command but a scene file or an option.
@@ -31,8 +32,7 @@ bool opensWindow(int argc, char** argv) {
     if (isHelp(first)) return false;
     for (const char* c : kCommands)
         if (first == c) return false;
-    return first.rfind("--", 0) == 0 || first.ends_with(".json") || first.ends_with(".lagrange") ||
-           std::filesystem::is_regular_file(first);
+    return first.rfind("--", 0) == 0 || first.ends_with(".json") || first.ends_with(".lagrange") || std::filesystem::is_regular_file(first);
 }
 
 // The language of a usage error found before a command reads its options (no display, an
@@ -80,8 +80,8 @@ int main(int argc, char** argv) {
     const auto processStart = std::chrono::steady_clock::now();
     if (opensWindow(argc, argv)) {
         if (!hasDisplay()) {
-            std::cerr << overviewUsage()
-                      << usageErrorLine(usageMessage(UsageId::NoDisplay), languageOf(Args(argv + 1, argv + argc))) << '\n';
+            std::cerr << overviewUsage() << usageErrorLine(usageMessage(UsageId::NoDisplay), languageOf(Args(argv + 1, argv + argc)))
+                      << '\n';
             return 2;
         }
         return reportingErrors([&] {
@@ -125,8 +125,7 @@ int main(int argc, char** argv) {
         if (command == "report") return reportCommand(args);
         if (command == "codegen") return codegenCommand(args);
         if (command == "check") return checkCommand(args);
-        std::cerr << usageErrorLine(usageMessage(UsageId::UnknownCommand, command), presentation().language) << "\n\n"
-                  << overviewUsage();
+        std::cerr << usageErrorLine(usageMessage(UsageId::UnknownCommand, command), presentation().language) << "\n\n" << overviewUsage();
         return 2;
     });
 }

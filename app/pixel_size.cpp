@@ -12,8 +12,7 @@ PixelSize parsePixelSize(const std::string& text) {
     if (!std::regex_match(text, m, pattern)) throw UsageError(UsageId::SizeExpected, text);
     const PixelSize size{std::stoi(m[1]), std::stoi(m[2])};
     if (size.width == 0 || size.height == 0) throw UsageError(UsageId::SizeZero, text);
-    if (size.width > kMaxPixelSide || size.height > kMaxPixelSide)
-        throw UsageError(UsageId::SizeTooLarge, text, kMaxPixelSide);
+    if (size.width > kMaxPixelSide || size.height > kMaxPixelSide) throw UsageError(UsageId::SizeTooLarge, text, kMaxPixelSide);
     return size;
 }
 

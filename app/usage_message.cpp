@@ -28,7 +28,8 @@ const char* englishWords(UsageId id) {
     switch (id) {
         case UsageId::Literal: return "{1}";
 #define LL_USAGE(id, english) \
-    case UsageId::id: return english;
+    case UsageId::id:         \
+        return english;
 #include "app/usage_messages.def"
 #undef LL_USAGE
         case UsageId::Count: break;
@@ -46,7 +47,8 @@ const char* usageIdName(UsageId id) {
     switch (id) {
         case UsageId::Literal: return "Literal";
 #define LL_USAGE(id, english) \
-    case UsageId::id: return #id;
+    case UsageId::id:         \
+        return #id;
 #include "app/usage_messages.def"
 #undef LL_USAGE
         case UsageId::Count: break;

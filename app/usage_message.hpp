@@ -17,7 +17,7 @@
 namespace ll::cli {
 
 enum class UsageId : unsigned short {
-    Literal,  // words that are not ours to translate: the core's own English, the benchmark's
+    Literal,       // words that are not ours to translate: the core's own English, the benchmark's
 #ifndef Q_MOC_RUN  // Qt's moc, which reads the headers a test includes, cannot parse the list
 #define LL_USAGE(id, english) id,
 #include "app/usage_messages.def"
@@ -37,7 +37,9 @@ namespace detail {
 inline Message usageArg(std::string text) { return literal(std::move(text)); }
 inline Message usageArg(Message message) { return message; }
 template <std::integral T>
-Message usageArg(T count) { return literal(std::to_string(count)); }
+Message usageArg(T count) {
+    return literal(std::to_string(count));
+}
 }  // namespace detail
 
 // usageMessage(UsageId::OptionNeedsValue, "out"): the id with its arguments in order, a

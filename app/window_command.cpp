@@ -42,11 +42,12 @@ namespace ll::cli {
 
 int windowCommand(const Args& args, const std::chrono::steady_clock::time_point& processStart) {
     const Options options(args,
-                          {"screenshot", "play", "step", "teach", "size", "first-frame", "select", "pick-link", "at", "tab",
-                           "joint", "derivation", "present", "dh-step", "dh-dimensions"},
+                          {"screenshot", "play", "step", "teach", "size", "first-frame", "select", "pick-link", "at", "tab", "joint",
+                           "derivation", "present", "dh-step", "dh-dimensions"},
                           {"first-frame", "present", "dh-dimensions"});
     if (options.positional().size() > 1) throw UsageError(UsageId::WindowTakesOneScene, options.positional().size());
-    const std::string scene = options.positional().empty() ? (examplesDirectory() / "double_pendulum.json").string() : options.positional()[0];
+    const std::string scene =
+        options.positional().empty() ? (examplesDirectory() / "double_pendulum.json").string() : options.positional()[0];
     const std::string screenshot = options.text("screenshot");
     if (!screenshot.empty() && QFileInfo(QString::fromStdString(screenshot)).suffix().toLower() != "png")
         throw UsageError(UsageId::ScreenshotNotPng, screenshot);
@@ -74,8 +75,7 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
     providePrivateRuntimeDirectory();  // no "XDG_RUNTIME_DIR not set" line from Qt
     QApplication app(argc, argv);
     QApplication::setApplicationName("LagrangeLab");
-    const present::Language language =
-        ui::startLanguage(languageGiven() ? std::optional(presentation().language) : std::nullopt);
+    const present::Language language = ui::startLanguage(languageGiven() ? std::optional(presentation().language) : std::nullopt);
     if (!ui::installLanguage(language)) std::cerr << "warning: the Danish catalogue could not be loaded; the window stays English\n";
     ui::MainWindow window;
     window.language().set({language, notationGiven() ? presentation().notation : ui::rememberedNotation()});
@@ -121,22 +121,19 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
         throw UsageError(UsageId::NoSuchEntry, scene, options.text("select"));
     if (options.has("pick-link")) {
         const double link = options.number("pick-link", 0);
-        if (link < 1 || link > n || link != std::floor(link))
-            throw UsageError(UsageId::NotALink, options.text("pick-link"), n);
+        if (link < 1 || link > n || link != std::floor(link)) throw UsageError(UsageId::NotALink, options.text("pick-link"), n);
         window.linking().pickLink(static_cast<int>(link) - 1);
     }
     if (options.has("at")) {
         const double end = window.playback().endTime();
-        if (at > end + 1e-9)
-            throw UsageError(UsageId::AtAfterEnd, options.text("at"), std::to_string(end));
+        if (at > end + 1e-9) throw UsageError(UsageId::AtAfterEnd, options.text("at"), std::to_string(end));
         window.playback().pause();
         window.playback().setTime(at);
     }
     if (options.has("tab")) window.showPlotTab(QString::fromStdString(tab));
     if (options.has("joint")) {
         const double joint = options.number("joint", 1);
-        if (joint < 1 || joint > n || joint != std::floor(joint))
-            throw UsageError(UsageId::NotAJoint, options.text("joint"), n);
+        if (joint < 1 || joint > n || joint != std::floor(joint)) throw UsageError(UsageId::NotAJoint, options.text("joint"), n);
         window.torquePane().setJoint(static_cast<int>(joint) - 1);
     }
     window.showDerivationView(QString::fromStdString(derivationView));

@@ -95,7 +95,8 @@ int main(int argc, char** argv) {
                 first = false;
             }
         }
-        man << ".SH EXIT STATUS\n" << roff(trimmed(exitCodes)) << ".\n"
+        man << ".SH EXIT STATUS\n"
+            << roff(trimmed(exitCodes)) << ".\n"
             << ".SH FILES\n.TP\n.I PREFIX/share/lagrangelab/examples/\n"
                "Example scenes, found relative to the executable (PREFIX/bin/lagrangelab).\n"
             << ".SH SEE ALSO\nThe README of LagrangeLab; \\fBlagrangelab help\\fR \\fIcommand\\fR.\n";

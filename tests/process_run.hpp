@@ -13,8 +13,7 @@ struct ProcessRun {
 };
 
 inline ProcessRun runProcess(const QString& program, const QStringList& args, const QString& workingDirectory = {},
-                             const QProcessEnvironment& env = QProcessEnvironment::systemEnvironment(),
-                             int timeoutMs = 600000) {
+                             const QProcessEnvironment& env = QProcessEnvironment::systemEnvironment(), int timeoutMs = 600000) {
     QProcess p;
     p.setProcessEnvironment(env);
     if (!workingDirectory.isEmpty()) p.setWorkingDirectory(workingDirectory);

@@ -32,10 +32,8 @@ public:
         if (rng_() % 25 == 0) {  // broken JSON text: a character dropped or inserted
             static const char kPunctuation[] = "{}[],:\"0e-";
             const std::size_t at = rng_() % out.size();
-            if (rng_() % 2)
-                out.erase(at, 1);
-            else
-                out.insert(at, 1, kPunctuation[rng_() % (sizeof kPunctuation - 1)]);
+            if (rng_() % 2) out.erase(at, 1);
+            else out.insert(at, 1, kPunctuation[rng_() % (sizeof kPunctuation - 1)]);
             what += "; JSON text broken at byte " + std::to_string(at);
         }
         return out;
@@ -81,26 +79,44 @@ private:
         const std::string where = slot.parent->is_object() ? slot.key : "[" + std::to_string(slot.index) + "]";
         switch (rng_() % 8) {
             case 0: {  // a wrong type
-                static const std::vector<Json> kWrong = {Json("abc"), Json(true), Json(nullptr), Json::array(),
-                                                         Json::object(), Json::array({1, 2}), Json(""), Json(42)};
+                static const std::vector<Json> kWrong = {Json("abc"),    Json(true),          Json(nullptr), Json::array(),
+                                                         Json::object(), Json::array({1, 2}), Json(""),      Json(42)};
                 value = pick(kWrong);
                 return where + " := " + value.dump();
             }
             case 1:
             case 2: {  // a number at the ends of double precision, or NaN/inf as text
-                static const std::vector<Json> kNumbers = {
-                    Json(1e-310), Json(-4e-320), Json(1e308), Json(-1e308), Json(1e300), Json(1e150), Json(1e-300),
-                    Json(0), Json(-1), Json(-0.0), Json(1e20), Json(123456789), Json(2.2250738585072014e-308),
-                    Json("nan"), Json("inf"), Json("-inf"), Json("1e400"), Json("1e-400"), Json("1e-310"), Json("NaN"),
-                    Json("1/0"), Json("0/0"), Json("1e308*10"), Json("1e200*1e200"), Json("10^400")};
+                static const std::vector<Json> kNumbers = {Json(1e-310),
+                                                           Json(-4e-320),
+                                                           Json(1e308),
+                                                           Json(-1e308),
+                                                           Json(1e300),
+                                                           Json(1e150),
+                                                           Json(1e-300),
+                                                           Json(0),
+                                                           Json(-1),
+                                                           Json(-0.0),
+                                                           Json(1e20),
+                                                           Json(123456789),
+                                                           Json(2.2250738585072014e-308),
+                                                           Json("nan"),
+                                                           Json("inf"),
+                                                           Json("-inf"),
+                                                           Json("1e400"),
+                                                           Json("1e-400"),
+                                                           Json("1e-310"),
+                                                           Json("NaN"),
+                                                           Json("1/0"),
+                                                           Json("0/0"),
+                                                           Json("1e308*10"),
+                                                           Json("1e200*1e200"),
+                                                           Json("10^400")};
                 value = pick(kNumbers);
                 return where + " := " + value.dump();
             }
             case 3: {  // a deletion
-                if (slot.parent->is_object())
-                    slot.parent->erase(slot.key);
-                else if (slot.index < slot.parent->size())
-                    slot.parent->erase(slot.index);
+                if (slot.parent->is_object()) slot.parent->erase(slot.key);
+                else if (slot.index < slot.parent->size()) slot.parent->erase(slot.index);
                 return "deleted " + where;
             }
             case 4: {  // a typo in a key
@@ -108,7 +124,9 @@ private:
                 std::string key = slot.key;
                 const std::size_t at = rng_() % key.size();
                 switch (rng_() % 4) {
-                    case 0: if (at + 1 < key.size()) std::swap(key[at], key[at + 1]); break;
+                    case 0:
+                        if (at + 1 < key.size()) std::swap(key[at], key[at + 1]);
+                        break;
                     case 1: key.erase(at, 1); break;
                     case 2: key.insert(at, 1, key[at]); break;
                     default: key[at] = static_cast<char>(std::toupper(static_cast<unsigned char>(key[at]))); break;
@@ -120,15 +138,14 @@ private:
                 return "key " + slot.key + " -> " + key;
             }
             case 5: {  // a broken or extreme expression
-                static const std::vector<std::string> kExpressions = {
-                    "*", "(", "sin(", "a1*", "q1", "t", "x^", "pi/", "2 deg", "90\xC2\xB0", "1e-310*1", "m1/(a1-a1)",
-                    "sqrt(-1)", "log(0)", "exp(1000)", "cosh(800)", "0.5*", "1/(1-1)", "((1)", "1e308*1e308", "-",
-                    "0.5*m1", "2^0.5", "abs(-3)", "1e-200*1e-200"};
+                static const std::vector<std::string> kExpressions = {"*",         "(",          "sin(",     "a1*",     "q1",
+                                                                      "t",         "x^",         "pi/",      "2 deg",   "90\xC2\xB0",
+                                                                      "1e-310*1",  "m1/(a1-a1)", "sqrt(-1)", "log(0)",  "exp(1000)",
+                                                                      "cosh(800)", "0.5*",       "1/(1-1)",  "((1)",    "1e308*1e308",
+                                                                      "-",         "0.5*m1",     "2^0.5",    "abs(-3)", "1e-200*1e-200"};
                 const std::string expression = pick(kExpressions);
-                if (value.is_string() && rng_() % 2 && expression.size() <= 2)
-                    value = value.get<std::string>() + expression;
-                else
-                    value = expression;
+                if (value.is_string() && rng_() % 2 && expression.size() <= 2) value = value.get<std::string>() + expression;
+                else value = expression;
                 return where + " := " + value.dump();
             }
             case 6: {  // a number scaled by a large power of ten

@@ -40,7 +40,8 @@ class TestLayering : public QObject {
             std::string line;
             for (int n = 1; std::getline(in, line); ++n)
                 if (std::regex_search(line, forbidden))
-                    found << QString("%1:%2: %3").arg(QString::fromStdString(entry.path().string())).arg(n).arg(QString::fromStdString(line));
+                    found
+                        << QString("%1:%2: %3").arg(QString::fromStdString(entry.path().string())).arg(n).arg(QString::fromStdString(line));
         }
         if (files == 0) qFatal("no sources under %s", folder);
         return found;
@@ -68,8 +69,8 @@ class TestLayering : public QObject {
 
     // "file:line: text" for each include of a higher core layer (or of GiNaC below
     // symbolic) in the sources of core/<folder>.
-    static QStringList layerViolations(const std::vector<std::string>& layers, const std::string& folder,
-                                       const std::string& file, const std::string& text) {
+    static QStringList layerViolations(const std::vector<std::string>& layers, const std::string& folder, const std::string& file,
+                                       const std::string& text) {
         QStringList found;
         const int own = rank(layers, folder), ginacFrom = rank(layers, "symbolic");
         const std::regex coreInclude("^\\s*#\\s*include\\s*\"core/([a-z_]+)/"), ginac("^\\s*#\\s*include\\s*<ginac/");
@@ -86,12 +87,12 @@ class TestLayering : public QObject {
 
     // "file:line: text" for each include of a higher ui layer in the sources of ui/<folder>,
     // and, below `widgetsFrom`, of a header of `widgetHeaders` (Qt Widgets, Charts, OpenGL widgets).
-    static QStringList uiLayerViolations(const std::vector<std::string>& layers, const std::string& folder,
-                                         const std::string& file, const std::string& text,
-                                         const std::set<std::string>& widgetHeaders) {
+    static QStringList uiLayerViolations(const std::vector<std::string>& layers, const std::string& folder, const std::string& file,
+                                         const std::string& text, const std::set<std::string>& widgetHeaders) {
         QStringList found;
         const int own = rank(layers, folder), widgetsFrom = rank(layers, "window");
-        const std::regex uiInclude("^\\s*#\\s*include\\s*\"ui/([a-z_]+)/"), qtInclude("^\\s*#\\s*include\\s*<(?:Qt[A-Za-z]+/)?(Q[A-Za-z]+)>");
+        const std::regex uiInclude("^\\s*#\\s*include\\s*\"ui/([a-z_]+)/"),
+            qtInclude("^\\s*#\\s*include\\s*<(?:Qt[A-Za-z]+/)?(Q[A-Za-z]+)>");
         std::istringstream lines(text);
         std::string line;
         for (int n = 1; std::getline(lines, line); ++n) {
@@ -108,7 +109,8 @@ class TestLayering : public QObject {
         std::set<std::string> names;
         for (const char* folder : {LL_QT_WIDGETS_INCLUDE, LL_QT_CHARTS_INCLUDE, LL_QT_OPENGLWIDGETS_INCLUDE})
             for (const auto& entry : fs::directory_iterator(folder))
-                if (const std::string name = entry.path().filename().string(); name.size() > 1 && name[0] == 'Q' && entry.path().extension().empty())
+                if (const std::string name = entry.path().filename().string();
+                    name.size() > 1 && name[0] == 'Q' && entry.path().extension().empty())
                     names.insert(name);
         if (!names.count("QWidget") || !names.count("QChartView")) qFatal("Qt's widget headers not found");
         return names;
@@ -160,7 +162,8 @@ private slots:
         int files = 0;
         for (const auto& dir : fs::directory_iterator(fs::path(LL_SOURCE_DIR) / "ui")) {
             if (!dir.is_directory()) {
-                QVERIFY2(dir.path().filename() == "CMakeLists.txt", qPrintable(QString::fromStdString(dir.path().string() + " is outside the layers")));
+                QVERIFY2(dir.path().filename() == "CMakeLists.txt",
+                         qPrintable(QString::fromStdString(dir.path().string() + " is outside the layers")));
                 continue;
             }
             const std::string folder = dir.path().filename().string();

@@ -19,18 +19,17 @@ bool registerTest(const char* file, TestProgram program);
 
 }  // namespace ll::test
 
-#define LL_TEST_REGISTER(TestObject, ...)                                             \
-    static int llRun##TestObject(int argc, char* argv[]) {                          \
-        QT_PREPEND_NAMESPACE(QTest::Internal::callInitMain)<TestObject>();          \
-        __VA_ARGS__                                                                 \
-        TestObject tc;                                                              \
-        QTEST_SET_MAIN_SOURCE_PATH                                                  \
-        return QTest::qExec(&tc, argc, argv);                                       \
-    }                                                                               \
+#define LL_TEST_REGISTER(TestObject, ...)                                  \
+    static int llRun##TestObject(int argc, char* argv[]) {                 \
+        QT_PREPEND_NAMESPACE(QTest::Internal::callInitMain)<TestObject>(); \
+        __VA_ARGS__                                                        \
+        TestObject tc;                                                     \
+        QTEST_SET_MAIN_SOURCE_PATH                                         \
+        return QTest::qExec(&tc, argc, argv);                              \
+    }                                                                      \
     [[maybe_unused]] static const bool llRegistered##TestObject = ll::test::registerTest(__FILE__, &llRun##TestObject);
 
 #define LL_TEST_MAIN(TestObject) LL_TEST_REGISTER(TestObject, QTEST_MAIN_SETUP())
 #define LL_TEST_GUILESS_MAIN(TestObject) LL_TEST_REGISTER(TestObject, QTEST_QAPP_SETUP(QCoreApplication))
 #define LL_TEST_APPLESS_MAIN(TestObject) LL_TEST_REGISTER(TestObject)
-#define LL_TEST_PROGRAM(function) \
-    [[maybe_unused]] static const bool llRegistered##function = ll::test::registerTest(__FILE__, &function);
+#define LL_TEST_PROGRAM(function) [[maybe_unused]] static const bool llRegistered##function = ll::test::registerTest(__FILE__, &function);

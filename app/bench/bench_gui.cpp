@@ -57,7 +57,6 @@ double processCpu() {
     return usage.ru_utime.tv_sec + usage.ru_stime.tv_sec + 1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
 }
 
-
 // The first joint row with a non-zero numeric `a` (else d) to nudge.
 std::pair<int, int> editableCell(const ui::SceneDocument& doc) {
     const auto joints = doc.value("/robot/joints");
@@ -129,8 +128,9 @@ void latency(const std::string& path, int runs) {
                 "validation %.1f ms, worker (simulate + scene) %.1f ms, result on screen at %.1f ms, then the frame; "
                 "process CPU %.1f ms; derivation shown after %.1f ms\n",
                 path.c_str(), row + 1, column == ui::JointTableModel::A ? "a" : "d", median(view), view.size(),
-                view.empty() ? 0 : *std::min_element(view.begin(), view.end()), view.empty() ? 0 : *std::max_element(view.begin(), view.end()),
-                median(validate), median(worker), median(shownAt), median(cpu), median(derive));
+                view.empty() ? 0 : *std::min_element(view.begin(), view.end()),
+                view.empty() ? 0 : *std::max_element(view.begin(), view.end()), median(validate), median(worker), median(shownAt),
+                median(cpu), median(derive));
 }
 
 // A large robot opened in a fresh window until its derivation is on screen: from the
@@ -253,7 +253,8 @@ void firstFrame(int runs) {
         outside.push_back(ms);
     }
     std::printf("start to first drawn frame (default scene, simulated): %.0f ms median of %d (from main(); %.0f ms "
-                "from spawning lagrangelab to exit)\n", median(inside), runs, median(outside));
+                "from spawning lagrangelab to exit)\n",
+                median(inside), runs, median(outside));
 }
 
 }  // namespace

@@ -26,8 +26,8 @@ using Clock = std::chrono::steady_clock;
 }  // namespace
 
 int linked(const std::vector<std::string>& scenes, int runs) {
-    std::printf("%-44s %-10s %8s %8s %8s %7s %7s %9s %9s %9s\n", "scene", "form", "derive", "+catalog", "entries", "outputs",
-                "instr", "eval [us]", "torques", "checks");
+    std::printf("%-44s %-10s %8s %8s %8s %7s %7s %9s %9s %9s\n", "scene", "form", "derive", "+catalog", "entries", "outputs", "instr",
+                "eval [us]", "torques", "checks");
     std::printf("%-44s %-10s %8s %8s %8s %7s %7s %9s %9s %9s\n", "", "", "[ms]", "[ms]", "", "", "", "all", "[ms]", "[ms]");
     for (const std::string& path : scenes) {
         const Scene scene = loadSceneReportingWarnings(path);

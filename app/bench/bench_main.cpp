@@ -40,7 +40,8 @@ std::string example(const char* name) { return (examplesDirectory() / (std::stri
 // effects) with no effects, gravity only, and every effect, on the same states.
 int benchRhs(const std::vector<std::string>& scenes, int batches) {
     std::printf("median time of one right-hand-side evaluation f(x, t) [µs] over %d batches of random states;\n"
-                "the right-hand side is composed from the declared effects only\n\n", batches);
+                "the right-hand side is composed from the declared effects only\n\n",
+                batches);
     std::printf("%-24s %2s | %10s %12s %12s\n", "robot", "n", "no effects", "gravity only", "all effects");
     for (const std::string& path : scenes) {
         const Scene scene = loadSceneReportingWarnings(path);
@@ -138,8 +139,8 @@ int benchCancel(const std::vector<std::string>& scenes) {
             latency.push_back(std::max(0.0, std::chrono::duration<double, std::milli>(stopped - set).count()));
         }
         std::sort(latency.begin(), latency.end());
-        std::printf("%-30.30s %2d | %12.1f | %8.2f %8.2f\n", scene.name.c_str(), scene.dof(), full,
-                    latency[latency.size() / 2], latency.back());
+        std::printf("%-30.30s %2d | %12.1f | %8.2f %8.2f\n", scene.name.c_str(), scene.dof(), full, latency[latency.size() / 2],
+                    latency.back());
     }
     return 0;
 }
@@ -147,11 +148,11 @@ int benchCancel(const std::vector<std::string>& scenes) {
 // The default table: B, C, g, forward and inverse dynamics, one simulated second.
 int dynamics(std::vector<std::string> scenes, int batches) {
     if (scenes.empty())
-        for (const char* name : {"puma560", "stanford_arm", "ur5", "panda", "planar_2r"})
-            scenes.push_back(example(name));
+        for (const char* name : {"puma560", "stanford_arm", "ur5", "panda", "planar_2r"}) scenes.push_back(example(name));
 
     std::printf("median time per call [µs] over %d batches of random states; 'sim 1 s' is CPU time [ms] for one\n"
-                "simulated second with the scene's integrator and tolerances (median of 5)\n\n", batches);
+                "simulated second with the scene's integrator and tolerances (median of 5)\n\n",
+                batches);
     std::printf("%-24s %2s | %7s %7s %7s %7s %7s %9s", "robot", "n", "B", "C", "g", "FD", "RNEA", "sim 1 s");
     std::printf("\n");
     for (const std::string& path : scenes) {
@@ -197,7 +198,8 @@ const char* const usage =
     "Built in the tree, not installed; docs/benchmarks.md records what it measured.\n";
 
 int run(const std::vector<std::string>& args) {
-    const Options options(args, {"batches", "chains", "cap", "form"}, {"rhs", "derive", "cancel", "render", "typeset", "gui", "process", "linked", "entries"});
+    const Options options(args, {"batches", "chains", "cap", "form"},
+                          {"rhs", "derive", "cancel", "render", "typeset", "gui", "process", "linked", "entries"});
     // --batches N, or each mode's default: a whole number from 1 to 1000 (0 batches have
     // no median).
     const auto batchesOr = [&](int fallback) { return checkedBatches(options.number("batches", fallback), options.text("batches")); };
@@ -230,8 +232,7 @@ int run(const std::vector<std::string>& args) {
     }
     if (options.has("cancel")) {
         if (scenes.empty())
-            for (const char* name : {"puma560", "stanford_arm", "panda"})
-                scenes.push_back(example(name));
+            for (const char* name : {"puma560", "stanford_arm", "panda"}) scenes.push_back(example(name));
         return benchCancel(scenes);
     }
     if (options.has("rhs")) {

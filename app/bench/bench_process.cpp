@@ -88,7 +88,8 @@ int process(const std::vector<std::string>& scenesGiven, int runs, const std::st
     std::error_code ignored;
     fs::remove_all(dir, ignored);
     std::printf("\nbudgets: 0.5 s for every scene and format, 0.3 s for the PUMA 560's JSON; '!' marks a median over\n"
-                "its budget (%d here); %d format%s failed.\n", over, failed, failed == 1 ? "" : "s");
+                "its budget (%d here); %d format%s failed.\n",
+                over, failed, failed == 1 ? "" : "s");
     return failed ? 1 : 0;
 }
 

@@ -109,8 +109,8 @@ int typeset(const std::vector<std::string>& scenes, int runs) {
         if (box.width <= 0) return 1;
     }
     std::sort(each.begin(), each.end());
-    std::printf("typeset b11 of the 2R (layout, cached glyph metrics): %.1f µs median, first %.1f µs\n\n",
-                each[each.size() / 2], each.back());
+    std::printf("typeset b11 of the 2R (layout, cached glyph metrics): %.1f µs median, first %.1f µs\n\n", each[each.size() / 2],
+                each.back());
 
     std::printf("%-32s %-10s | %18s | %18s\n", "system", "mode", "derive [ms] wall/cpu", "to PDF [ms] wall/cpu");
     const std::vector<std::string> pdfScenes = {examples + "/planar_2r.json", examples + "/puma560.json"};
@@ -119,15 +119,14 @@ int typeset(const std::vector<std::string>& scenes, int runs) {
         const auto mode = symbolic::ParameterMode::Parametric;
         const Cost d = measure(runs, [&] { deriveOnly(scene, mode); });
         const Cost p = measure(runs, [&] { toPdf(scene, mode, dir.filePath("bench.pdf")); });
-        std::printf("%-32s %-10s | %8.1f / %7.1f | %8.1f / %7.1f\n", file.substr(file.rfind('/') + 1).c_str(), modeName(mode),
-                    1e3 * d.wall, 1e3 * d.cpu, 1e3 * p.wall, 1e3 * p.cpu);
+        std::printf("%-32s %-10s | %8.1f / %7.1f | %8.1f / %7.1f\n", file.substr(file.rfind('/') + 1).c_str(), modeName(mode), 1e3 * d.wall,
+                    1e3 * d.cpu, 1e3 * p.wall, 1e3 * p.cpu);
     }
 
     std::vector<std::string> big = scenes;
     if (big.empty()) big.push_back(examples + "/panda.json");
     std::printf("\nthe default form (auto): derivation alone (no document) beside derive + print, CPU [s] (medians)\n");
-    std::printf("%-24s %-10s | %7s | %7s %7s %7s %7s | %6s\n", "system", "mode", "derive", "text", "json", "latex", "pdf",
-                "worst");
+    std::printf("%-24s %-10s | %7s | %7s %7s %7s %7s | %6s\n", "system", "mode", "derive", "text", "json", "latex", "pdf", "worst");
     for (const std::string& file : big) {
         const Scene scene = loadSceneReportingWarnings(file);
         for (auto mode : {symbolic::ParameterMode::Parametric, symbolic::ParameterMode::Numeric, symbolic::ParameterMode::Textbook}) {

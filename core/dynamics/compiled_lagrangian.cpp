@@ -13,8 +13,7 @@ CompiledLagrangian::CompiledLagrangian(int n, ExpressionTape dynamics, Expressio
     : n_(n), dynamics_(std::move(dynamics)), energies_(std::move(energies)), terms_(std::move(terms)) {
     const int inputs = 2 * n + 1;
     if (n < 0 || dynamics_.inputCount() != inputs || energies_.inputCount() != inputs || terms_.inputCount() != inputs ||
-        dynamics_.outputCount() != n * (n + 1) / 2 + 2 * n || energies_.outputCount() != 2 ||
-        terms_.outputCount() != 2 * n * n + 2 * n + 2)
+        dynamics_.outputCount() != n * (n + 1) / 2 + 2 * n || energies_.outputCount() != 2 || terms_.outputCount() != 2 * n * n + 2 * n + 2)
         throw std::invalid_argument("CompiledLagrangian: tapes do not fit " + std::to_string(n) + " coordinates");
     input_.assign(inputs, 0.0);
     output_.assign(std::max(dynamics_.outputCount(), terms_.outputCount()), 0.0);
@@ -46,8 +45,7 @@ ModelTerms CompiledLagrangian::terms(const Eigen::VectorXd& q, const Eigen::Vect
     return m;
 }
 
-void CompiledLagrangian::dynamics(const double* x, double t, Eigen::MatrixXd& B, Eigen::VectorXd& rhs,
-                                  Eigen::VectorXd& Q) const {
+void CompiledLagrangian::dynamics(const double* x, double t, Eigen::MatrixXd& B, Eigen::VectorXd& rhs, Eigen::VectorXd& Q) const {
     std::copy(x, x + 2 * n_, input_.begin());
     input_[2 * n_] = t;
     dynamics_.evaluate(input_.data(), output_.data());

@@ -21,8 +21,6 @@ void computeCoriolisMatrix(const RobotModel& model, RobotData& data, const Eigen
 
 // Christoffel symbol of the first kind Γ_ijk = ½(∂b_ij/∂q_k + ∂b_ik/∂q_j − ∂b_jk/∂q_i),
 // from data.dB_dq.
-inline double christoffel(const RobotData& data, int i, int j, int k) {
-    return christoffelSymbol<double>(data.dB_dq, i, j, k);
-}
+inline double christoffel(const RobotData& data, int i, int j, int k) { return christoffelSymbol<double>(data.dB_dq, i, j, k); }
 
 }  // namespace ll

@@ -9,8 +9,7 @@ double kineticEnergy(const RobotData& data, const Eigen::VectorXd& qd) {
     return 0.5 * qd.dot(data.B.selfadjointView<Eigen::Upper>() * qd);
 }
 
-double potentialEnergy(const RobotModel& model, const RobotData& data, const Effects& effects,
-                       const Eigen::VectorXd& q) {
+double potentialEnergy(const RobotModel& model, const RobotData& data, const Effects& effects, const Eigen::VectorXd& q) {
     requireDataFor("potentialEnergy", model, data);
     requireSize("potentialEnergy", "q", q.size(), data.n);
     requireEffectsFit("potentialEnergy", effects, data.n);

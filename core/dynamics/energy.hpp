@@ -14,7 +14,6 @@ namespace ll {
 double kineticEnergy(const RobotData& data, const Eigen::VectorXd& qd);
 
 // Requires forwardKinematics. Only declared effects contribute.
-double potentialEnergy(const RobotModel& model, const RobotData& data, const Effects& effects,
-                       const Eigen::VectorXd& q);
+double potentialEnergy(const RobotModel& model, const RobotData& data, const Effects& effects, const Eigen::VectorXd& q);
 
 }  // namespace ll

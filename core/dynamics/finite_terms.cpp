@@ -45,8 +45,7 @@ std::optional<Diagnostic> nonFiniteTerm(const ModelTerms& terms, const Eigen::Ve
         std::optional<Message> bad = firstNonFinite(quantity.value, quantity.name, quantity.vector);
         if (!bad) continue;
         if (quantity.value.size() == 1 && quantity.vector) bad = literal(formatValue(quantity.value(0, 0)));
-        return Diagnostic{Severity::Error, quantity.name,
-                          message(TooLargeForDoublePrecision, message(quantity.notFinite, *bad, where)),
+        return Diagnostic{Severity::Error, quantity.name, message(TooLargeForDoublePrecision, message(quantity.notFinite, *bad, where)),
                           message(NonFiniteTermHint, vectorText(q), vectorText(qd))};
     }
     return std::nullopt;

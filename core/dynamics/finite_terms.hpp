@@ -17,7 +17,7 @@ namespace ll {
 // the names `eval` prints) and whose message gives the first non-finite entry, the
 // state and `where` (MessageId::WhereInitialState, "at the initial state (t = 0)", or
 // WhereAtTime, "at t = 0.5"); nothing when all are finite. An empty qdd is not checked.
-std::optional<Diagnostic> nonFiniteTerm(const ModelTerms& terms, const Eigen::VectorXd& qdd,
-                                        const Eigen::VectorXd& q, const Eigen::VectorXd& qd, const Message& where);
+std::optional<Diagnostic> nonFiniteTerm(const ModelTerms& terms, const Eigen::VectorXd& qdd, const Eigen::VectorXd& q,
+                                        const Eigen::VectorXd& qd, const Message& where);
 
 }  // namespace ll

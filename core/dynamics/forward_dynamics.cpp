@@ -37,9 +37,8 @@ void factorMassMatrix(RobotData& data) {
     throw SingularMassMatrix(joint, message(MessageId::MassMatrixSingularAtJoint, joint + 1).english());
 }
 
-const Eigen::VectorXd& forwardDynamics(const RobotModel& model, RobotData& data, const Effects& effects,
-                                       const Eigen::VectorXd& q, const Eigen::VectorXd& qd,
-                                       const Eigen::VectorXd& Q) {
+const Eigen::VectorXd& forwardDynamics(const RobotModel& model, RobotData& data, const Effects& effects, const Eigen::VectorXd& q,
+                                       const Eigen::VectorXd& qd, const Eigen::VectorXd& Q) {
     requireSize("forwardDynamics", "qd", qd.size(), model.dof());
     requireSize("forwardDynamics", "Q", Q.size(), model.dof());
     forwardKinematics(model, data, q);

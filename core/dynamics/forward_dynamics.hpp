@@ -30,9 +30,8 @@ void factorMassMatrix(RobotData& data);
 
 // Q: (n) non-conservative generalized forces. Fills data.B, data.h, data.rhs, data.qdd;
 // returns data.qdd. Throws SingularMassMatrix. Allocates nothing.
-const Eigen::VectorXd& forwardDynamics(const RobotModel& model, RobotData& data, const Effects& effects,
-                                       const Eigen::VectorXd& q, const Eigen::VectorXd& qd,
-                                       const Eigen::VectorXd& Q);
+const Eigen::VectorXd& forwardDynamics(const RobotModel& model, RobotData& data, const Effects& effects, const Eigen::VectorXd& q,
+                                       const Eigen::VectorXd& qd, const Eigen::VectorXd& Q);
 
 // The first joint whose pivot in an unpivoted LDLᵀ of B is below relTol · max b_jj
 // (its motion adds no inertia to the joints before it), or −1 if B is positive definite.

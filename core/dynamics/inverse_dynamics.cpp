@@ -5,8 +5,8 @@
 
 namespace ll {
 
-const Eigen::VectorXd& rnea(const RobotModel& model, RobotData& data, const Effects& effects,
-                            const Eigen::VectorXd& q, const Eigen::VectorXd& qd, const Eigen::VectorXd& qdd) {
+const Eigen::VectorXd& rnea(const RobotModel& model, RobotData& data, const Effects& effects, const Eigen::VectorXd& q,
+                            const Eigen::VectorXd& qd, const Eigen::VectorXd& qdd) {
     requireDataFor("rnea", model, data);
     requireSize("rnea", "q", q.size(), data.n);
     requireSize("rnea", "qd", qd.size(), data.n);
@@ -32,14 +32,12 @@ const Eigen::VectorXd& rnea(const RobotModel& model, RobotData& data, const Effe
         data.tau[i] = data.S[i].dot(data.F[i]) + model.joints[i].motor.armature() * qdd[i];
         if (i > 0) data.F[i - 1] += data.F[i];
     }
-    for (const JointSpring& spring : effects.springs)
-        data.tau[spring.joint] += spring.stiffness * (q[spring.joint] - spring.rest);
+    for (const JointSpring& spring : effects.springs) data.tau[spring.joint] += spring.stiffness * (q[spring.joint] - spring.rest);
     return data.tau;
 }
 
-const Eigen::VectorXd& inverseDynamics(const RobotModel& model, RobotData& data, const Effects& effects,
-                                       const Eigen::VectorXd& q, const Eigen::VectorXd& qd,
-                                       const Eigen::VectorXd& qdd) {
+const Eigen::VectorXd& inverseDynamics(const RobotModel& model, RobotData& data, const Effects& effects, const Eigen::VectorXd& q,
+                                       const Eigen::VectorXd& qd, const Eigen::VectorXd& qdd) {
     forwardKinematics(model, data, q);
     return rnea(model, data, effects, q, qd, qdd);
 }

@@ -30,9 +30,7 @@ Diagnostic singularMassMatrixError(const RobotModel& model, const MassMatrixDefe
         return {Severity::Error, jointField(j, ""), message(JointMovesNothingOfItsOwn, joint), hint};
     }
     const Message error = message(MassMatrixIllConditioned, defect.condition, joint);
-    const auto hint = [&](Message cause) {
-        return message(IllConditionedHint, joint, defect.diagonal, defect.largest, std::move(cause));
-    };
+    const auto hint = [&](Message cause) { return message(IllConditionedHint, joint, defect.diagonal, defect.largest, std::move(cause)); };
     if (unitSlips.empty()) return {Severity::Error, jointField(j, ""), error, hint(message(LikelyLightLinks, armatureAdvice))};
     const Diagnostic& slip = unitSlips.front();
     const Message cause = unitSlips.size() > 1
@@ -67,10 +65,8 @@ std::vector<Diagnostic> checkMassMatrixRegular(const RobotModel& model, const Ei
         }
     }
     for (int j = 0; j < model.dof(); ++j)
-        if (singularCount[j] == trials)
-            out.push_back(singularMassMatrixError(model, defects[j], unitSlips));
+        if (singularCount[j] == trials) out.push_back(singularMassMatrixError(model, defects[j], unitSlips));
     return out;
 }
-
 
 }  // namespace ll

@@ -40,12 +40,10 @@ MassMatrixDefect diagnoseMassMatrix(const RobotData& data, double relTol) {
         defect.pivot -= coupling.dot(Cholesky(j).compute(B.topLeftCorner(j, j)).solve(coupling));
     }
     const Eigen::VectorXd eigenvalues = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(B, Eigen::EigenvaluesOnly).eigenvalues();
-    defect.condition = eigenvalues[0] > 0 ? eigenvalues[eigenvalues.size() - 1] / eigenvalues[0]
-                                          : std::numeric_limits<double>::infinity();
+    defect.condition = eigenvalues[0] > 0 ? eigenvalues[eigenvalues.size() - 1] / eigenvalues[0] : std::numeric_limits<double>::infinity();
     const bool nothingOfItsOwn = !(defect.diagonal > kNothing * carriedInertia(data, j));
     const bool nothingNew = !(defect.pivot > kNothing * defect.diagonal);
-    defect.kind = nothingOfItsOwn || nothingNew ? MassMatrixDefect::Kind::MovesNothing
-                                                : MassMatrixDefect::Kind::IllConditioned;
+    defect.kind = nothingOfItsOwn || nothingNew ? MassMatrixDefect::Kind::MovesNothing : MassMatrixDefect::Kind::IllConditioned;
     return defect;
 }
 

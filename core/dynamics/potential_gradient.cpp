@@ -26,8 +26,7 @@ void addSpringTorques(const std::vector<JointSpring>& springs, const Eigen::Vect
     }
 }
 
-void computePotentialGradient(const RobotModel& model, RobotData& data, const Effects& effects,
-                    const Eigen::VectorXd& q) {
+void computePotentialGradient(const RobotModel& model, RobotData& data, const Effects& effects, const Eigen::VectorXd& q) {
     requireSize("computePotentialGradient", "q", q.size(), data.n);
     data.g.setZero();
     if (effects.gravity) addGravityTorques(model, data, *effects.gravity, data.g);

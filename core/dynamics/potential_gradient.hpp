@@ -12,8 +12,7 @@ namespace ll {
 // g_j = −Σ_{i>=j} m_i g0ᵀ J_v,ci col j + K_j (q_j − rest_j): the gravity wrench on
 // links j..n projected on joint j's motion, summed tip to base (O(n)).
 // Requires forwardKinematics. Fills data.g.
-void computePotentialGradient(const RobotModel& model, RobotData& data, const Effects& effects,
-                    const Eigen::VectorXd& q);
+void computePotentialGradient(const RobotModel& model, RobotData& data, const Effects& effects, const Eigen::VectorXd& q);
 
 // The two parts of g(q) on their own, added into `out` (size n), so a right-hand side
 // composed from the declared effects computes only the terms it has.

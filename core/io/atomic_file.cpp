@@ -55,8 +55,7 @@ void replaceDurably(const std::string& path, const std::function<void(std::ostre
     struct stat old {};
     if (::stat(path.c_str(), &old) == 0) ::chmod(temporary.c_str(), old.st_mode & 07777);
     if (!syncPath(temporary, 0)) throw abandon(message(MessageId::CannotFlushTemporary, temporary), errno);
-    if (::rename(temporary.c_str(), path.c_str()) != 0)
-        throw abandon(message(MessageId::CannotRenameTemporary, temporary), errno);
+    if (::rename(temporary.c_str(), path.c_str()) != 0) throw abandon(message(MessageId::CannotRenameTemporary, temporary), errno);
     // The rename itself lives in the directory; sync it too (best effort).
     std::string directory = std::filesystem::path(path).parent_path().string();
     syncPath(directory.empty() ? "." : directory, O_DIRECTORY);
@@ -79,7 +78,8 @@ void saveFileAtomically(const std::string& path, const std::function<void(std::o
 }
 
 void saveFileAtomically(const std::string& path, const std::string& content, Backup backup) {
-    saveFileAtomically(path, [&](std::ostream& out) { out.write(content.data(), static_cast<std::streamsize>(content.size())); }, backup);
+    saveFileAtomically(
+        path, [&](std::ostream& out) { out.write(content.data(), static_cast<std::streamsize>(content.size())); }, backup);
 }
 
 }  // namespace ll

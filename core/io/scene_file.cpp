@@ -74,8 +74,6 @@ std::string serializeScene(const Scene& scene) {
     return text + "\n";
 }
 
-void saveScene(const Scene& scene, const std::string& path) {
-    saveFileAtomically(path, serializeScene(scene), Backup::Keep);
-}
+void saveScene(const Scene& scene, const std::string& path) { saveFileAtomically(path, serializeScene(scene), Backup::Keep); }
 
 }  // namespace ll

@@ -23,9 +23,7 @@ public:
                 levels_.push_back({event == Json::parse_event_t::object_start, enterElement(), {}, {}, 0});
                 break;
             case Json::parse_event_t::object_end:
-            case Json::parse_event_t::array_end:
-                levels_.pop_back();
-                break;
+            case Json::parse_event_t::array_end: levels_.pop_back(); break;
             case Json::parse_event_t::key: {
                 Level& level = levels_.back();
                 level.key = parsed.get<std::string>();
@@ -33,9 +31,7 @@ public:
                     out_.push_back({Severity::Error, child(level.path, level.key), MessageId::KeyGivenTwice});
                 break;
             }
-            case Json::parse_event_t::value:
-                enterElement();
-                break;
+            case Json::parse_event_t::value: enterElement(); break;
         }
         return true;
     }
@@ -78,8 +74,7 @@ Message at(const std::string& text, std::size_t offset) {
 Json parseJson(const std::string& text, std::vector<Diagnostic>& duplicates) {
     for (std::size_t i = 0; i < text.size();) {
         const Utf8Char c = decodeUtf8(text, i);
-        if (!c.valid)
-            throw InputError(kDocument, message(MessageId::FileNotUtf8, describeCharacter(c, text, i), at(text, i)));
+        if (!c.valid) throw InputError(kDocument, message(MessageId::FileNotUtf8, describeCharacter(c, text, i), at(text, i)));
         i += c.bytes;
     }
     Json root;
@@ -117,8 +112,7 @@ Json parseJson(const std::string& text, std::vector<Diagnostic>& duplicates) {
         throw InputError(kDocument, message(MessageId::JsonError, e.what()));
     }
     if (!root.is_object())
-        throw InputError(kDocument,
-                         message(MessageId::JsonExpectedGot, Message(MessageId::WantedTopLevelObject), describe(root)));
+        throw InputError(kDocument, message(MessageId::JsonExpectedGot, Message(MessageId::WantedTopLevelObject), describe(root)));
     return root;
 }
 

@@ -24,9 +24,7 @@ inline constexpr const char* kDocument = "scene";
 
 inline std::string child(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
 
-inline std::string item(const std::string& path, std::size_t index0) {
-    return path + "[" + std::to_string(index0) + "]";
-}
+inline std::string item(const std::string& path, std::size_t index0) { return path + "[" + std::to_string(index0) + "]"; }
 
 inline std::string joined(const Keys& keys) {
     std::string text;

@@ -45,9 +45,7 @@ Message alternatives(const Keys& choices) {
 }
 
 // "expected <what>, got <the value>".
-Message expectedGot(MessageId what, const Json& value) {
-    return message(MessageId::JsonExpectedGot, Message(what), describe(value));
-}
+Message expectedGot(MessageId what, const Json& value) { return message(MessageId::JsonExpectedGot, Message(what), describe(value)); }
 
 class SceneReader {
 public:
@@ -59,29 +57,23 @@ public:
     Scene read(const Json& root) {
         readFormat(root);
         checkKeys(root, "",
-                  {"format", "name", "description", "source", "parameters", "robot", "lagrangian", "effects", "initial",
-                   "simulation"});
+                  {"format", "name", "description", "source", "parameters", "robot", "lagrangian", "effects", "initial", "simulation"});
         const std::size_t errorsBefore = errors_.size();
         if (const Json* parameters = member(root, "parameters")) readParameters(*parameters);
         // Every later field may use the parameters: a broken one would echo everywhere.
         if (errors_.size() > errorsBefore) throwIfErrors();
 
         if (const Json* name = required(root, "", "name", MessageId::SceneTitleField)) readText(*name, "name", scene_.name);
-        if (const Json* description = member(root, "description"))
-            readText(*description, "description", scene_.description);
+        if (const Json* description = member(root, "description")) readText(*description, "description", scene_.description);
         if (const Json* source = member(root, "source")) readText(*source, "source", scene_.source);
         scene_.robot.name = scene_.name;
         // Exactly one of a robot (DH table) and a Lagrangian typed by hand.
         const Json* robot = member(root, "robot");
         const Json* lagrangian = member(root, "lagrangian");
-        if (robot && lagrangian)
-            error("lagrangian", MessageId::RobotAndLagrangianKeysBoth);
-        else if (robot)
-            readRobot(*robot);
-        else if (lagrangian)
-            readLagrangian(*lagrangian);
-        else
-            error("robot", message(MessageId::RequiredFieldMissing, Message(MessageId::RobotOrLagrangianField)));
+        if (robot && lagrangian) error("lagrangian", MessageId::RobotAndLagrangianKeysBoth);
+        else if (robot) readRobot(*robot);
+        else if (lagrangian) readLagrangian(*lagrangian);
+        else error("robot", message(MessageId::RequiredFieldMissing, Message(MessageId::RobotOrLagrangianField)));
         if (const Json* effects = member(root, "effects")) readEffects(*effects);
         readInitial(member(root, "initial"));
         if (const Json* simulation = member(root, "simulation")) readSimulation(*simulation);
@@ -90,9 +82,7 @@ public:
     }
 
 private:
-    void error(const std::string& field, Message message) {
-        errors_.push_back({Severity::Error, field, std::move(message)});
-    }
+    void error(const std::string& field, Message message) { errors_.push_back({Severity::Error, field, std::move(message)}); }
 
     [[noreturn]] void fail(const std::string& field, Message message) {
         error(field, std::move(message));
@@ -128,9 +118,8 @@ private:
     void checkKeys(const Json& object, const std::string& path, const Keys& allowed, const Message& owner = {}) {
         for (const auto& [key, value] : object.items())
             if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())  // "" is named as typed: ""
-                error(child(path, key.empty() ? "\"\"" : key),
-                      owner.empty() ? message(MessageId::UnknownKey, joined(allowed))
-                                    : message(MessageId::UnknownKeyFor, owner, joined(allowed)));
+                error(child(path, key.empty() ? "\"\"" : key), owner.empty() ? message(MessageId::UnknownKey, joined(allowed))
+                                                                             : message(MessageId::UnknownKeyFor, owner, joined(allowed)));
     }
 
     std::optional<double> number(const Json& value, const std::string& path, Angle angle = Angle::No) {
@@ -146,8 +135,7 @@ private:
         if (value.is_string()) {
             const std::string text = value.get<std::string>();
             try {
-                const double number =
-                    parameters_.evaluate(path, text, angle == Angle::No ? AngleUnits::Refused : AngleUnits::Allowed);
+                const double number = parameters_.evaluate(path, text, angle == Angle::No ? AngleUnits::Refused : AngleUnits::Allowed);
                 scene_.expressions[path] = text;
                 if (angle == Angle::Yes && isPlainNumber(text)) warnIfDegrees(path, number);
                 return number;
@@ -175,8 +163,8 @@ private:
         std::ostringstream number;
         number.precision(10);
         number << value;
-        warnings_.push_back({Severity::Warning, path,
-                             message(MessageId::DegreesTypedAsRadians, name, number.str(), reading.degrees, reading.radians)});
+        warnings_.push_back(
+            {Severity::Warning, path, message(MessageId::DegreesTypedAsRadians, name, number.str(), reading.degrees, reading.radians)});
     }
 
     // Degrees are for a revolute joint's angles; a prismatic joint's q is a length. A
@@ -187,17 +175,14 @@ private:
         return scene_.robot.joints[static_cast<std::size_t>(joint)].dh.type == JointType::Revolute ? Angle::Yes : Angle::No;
     }
 
-    void readNumber(const Json& object, const std::string& path, const std::string& key, double& target,
-                    Angle angle = Angle::No) {
+    void readNumber(const Json& object, const std::string& path, const std::string& key, double& target, Angle angle = Angle::No) {
         if (const Json* value = member(object, key))
             if (auto n = number(*value, child(path, key), angle)) target = *n;
     }
 
     void readText(const Json& value, const std::string& path, std::string& target) {
-        if (value.is_string())
-            target = value.get<std::string>();
-        else
-            error(path, expectedGot(MessageId::WantedString, value));
+        if (value.is_string()) target = value.get<std::string>();
+        else error(path, expectedGot(MessageId::WantedString, value));
     }
 
     // A string that must be one of `choices`; the index of the match.
@@ -287,10 +272,8 @@ private:
             else
                 for (std::size_t i = 0; i < coordinates->size(); ++i) {
                     const Json& name = (*coordinates)[i];
-                    if (name.is_string())
-                        spec.coordinates.push_back(name.get<std::string>());
-                    else
-                        error(item("lagrangian.coordinates", i), expectedGot(MessageId::WantedName, name));
+                    if (name.is_string()) spec.coordinates.push_back(name.get<std::string>());
+                    else error(item("lagrangian.coordinates", i), expectedGot(MessageId::WantedName, name));
                 }
         }
         const std::size_t errorsBefore = errors_.size();
@@ -316,15 +299,13 @@ private:
         if (const Json* potential = member(value, "potential"))
             spec.potential = expression(*potential, "lagrangian.potential", LagrangianField::Potential);
         if (const Json* forces = member(value, "forces")) {
-            if (!forces->is_array())
-                error("lagrangian.forces", expectedGot(MessageId::WantedForceArray, *forces));
+            if (!forces->is_array()) error("lagrangian.forces", expectedGot(MessageId::WantedForceArray, *forces));
             else
                 for (std::size_t i = 0; i < forces->size(); ++i)
                     spec.forces.push_back(expression((*forces)[i], item("lagrangian.forces", i), LagrangianField::Force));
         }
         if (const Json* bodies = member(value, "bodies")) {
-            if (!bodies->is_array())
-                error("lagrangian.bodies", expectedGot(MessageId::WantedObjectArray, *bodies));
+            if (!bodies->is_array()) error("lagrangian.bodies", expectedGot(MessageId::WantedObjectArray, *bodies));
             else
                 for (std::size_t i = 0; i < bodies->size(); ++i) {
                     VisualBody body;
@@ -381,8 +362,7 @@ private:
         };
         point("position", target.position);
         if (rod) point("end", target.end);
-        if (const Json* angle = member(body, "angle"))
-            target.angle = expression(*angle, child(path, "angle"), LagrangianField::Pose);
+        if (const Json* angle = member(body, "angle")) target.angle = expression(*angle, child(path, "angle"), LagrangianField::Pose);
         readVector3(body, path, "axis", target.axis);
     }
 
@@ -397,8 +377,7 @@ private:
     }
 
     void readJoint(const Json& joint, const std::string& path, Joint& target) {
-        if (!checkObject(joint, path, {"type", "a", "alpha", "d", "theta", "mass", "com", "inertia", "armature", "motor"}))
-            return;
+        if (!checkObject(joint, path, {"type", "a", "alpha", "d", "theta", "mass", "com", "inertia", "armature", "motor"})) return;
         if (const Json* type = member(joint, "type"))
             if (auto choice = readChoice(*type, child(path, "type"), {"revolute", "prismatic"}))
                 target.dh.type = *choice == 0 ? JointType::Revolute : JointType::Prismatic;
@@ -407,8 +386,7 @@ private:
         readNumber(joint, path, "d", target.dh.d);
         // θ is the revolute joint's offset angle; a prismatic joint's θ is a constant angle too.
         readNumber(joint, path, "theta", target.dh.theta, Angle::Yes);
-        if (required(joint, path, "mass", MessageId::LinkMassField))
-            readNumber(joint, path, "mass", target.link.mass);
+        if (required(joint, path, "mass", MessageId::LinkMassField)) readNumber(joint, path, "mass", target.link.mass);
         readVector3(joint, path, "com", target.link.com);
         if (const Json* inertia = member(joint, "inertia")) readInertia(*inertia, child(path, "inertia"), target.link);
         readMotor(joint, path, target.motor);
@@ -427,16 +405,14 @@ private:
         const std::string field = child(path, "motor");
         if (!checkObject(*rotor, field, {"inertia", "gear_ratio"})) return;
         motor.fromMotor = true;
-        if (required(*rotor, field, "inertia", MessageId::RotorInertiaField))
-            readNumber(*rotor, field, "inertia", motor.inertia);
-        if (required(*rotor, field, "gear_ratio", MessageId::GearRatioField))
-            readNumber(*rotor, field, "gear_ratio", motor.gearRatio);
+        if (required(*rotor, field, "inertia", MessageId::RotorInertiaField)) readNumber(*rotor, field, "inertia", motor.inertia);
+        if (required(*rotor, field, "gear_ratio", MessageId::GearRatioField)) readNumber(*rotor, field, "gear_ratio", motor.gearRatio);
     }
 
     void readInertia(const Json& inertia, const std::string& path, LinkInertia& link) {
         if (!checkObject(inertia, path, {"xx", "yy", "zz", "xy", "xz", "yz"})) return;
-        const std::pair<const char*, std::pair<int, int>> entries[] = {
-            {"xx", {0, 0}}, {"yy", {1, 1}}, {"zz", {2, 2}}, {"xy", {0, 1}}, {"xz", {0, 2}}, {"yz", {1, 2}}};
+        const std::pair<const char*, std::pair<int, int>> entries[] = {{"xx", {0, 0}}, {"yy", {1, 1}}, {"zz", {2, 2}},
+                                                                       {"xy", {0, 1}}, {"xz", {0, 2}}, {"yz", {1, 2}}};
         for (const auto& [key, index] : entries) {
             double value = 0.0;
             readNumber(inertia, path, key, value);
@@ -499,20 +475,17 @@ private:
             readNumber(j, p, "stiffness", s.stiffness);
             readNumber(j, p, "rest", s.rest, jointAngle(s.joint));
         });
-        readList<ViscousFriction>(effects, "viscous", e.viscous,
-                                  [this](const Json& j, const std::string& p, ViscousFriction& v) {
-                                      checkKeys(j, p, {"joint", "coefficient"});
-                                      readNumber(j, p, "coefficient", v.coefficient);
-                                  });
-        readList<CoulombFriction>(effects, "coulomb", e.coulomb,
-                                  [this](const Json& j, const std::string& p, CoulombFriction& c) {
-                                      checkKeys(j, p, {"joint", "force", "smoothing", "model"});
-                                      readNumber(j, p, "force", c.force);
-                                      readNumber(j, p, "smoothing", c.smoothing);
-                                      if (const Json* model = member(j, "model"))
-                                          if (auto choice = readChoice(*model, child(p, "model"), {"tanh", "stick"}))
-                                              c.model = static_cast<CoulombModel>(*choice);
-                                  });
+        readList<ViscousFriction>(effects, "viscous", e.viscous, [this](const Json& j, const std::string& p, ViscousFriction& v) {
+            checkKeys(j, p, {"joint", "coefficient"});
+            readNumber(j, p, "coefficient", v.coefficient);
+        });
+        readList<CoulombFriction>(effects, "coulomb", e.coulomb, [this](const Json& j, const std::string& p, CoulombFriction& c) {
+            checkKeys(j, p, {"joint", "force", "smoothing", "model"});
+            readNumber(j, p, "force", c.force);
+            readNumber(j, p, "smoothing", c.smoothing);
+            if (const Json* model = member(j, "model"))
+                if (auto choice = readChoice(*model, child(p, "model"), {"tanh", "stick"})) c.model = static_cast<CoulombModel>(*choice);
+        });
         readList<JointTorque>(effects, "torques", e.torques,
                               [this](const Json& j, const std::string& p, JointTorque& t) { readTorque(j, p, t); });
     }
@@ -565,13 +538,10 @@ private:
     }
 
     void readSimulation(const Json& simulation) {
-        if (!checkObject(simulation, "simulation",
-                         {"duration", "integrator", "abs_tol", "rel_tol", "dt", "output_rate"}))
-            return;
+        if (!checkObject(simulation, "simulation", {"duration", "integrator", "abs_tol", "rel_tol", "dt", "output_rate"})) return;
         SimulationSettings& s = scene_.simulation;
         readNumber(simulation, "simulation", "duration", s.duration);
-        if (const Json* integrator = member(simulation, "integrator"))
-            readText(*integrator, "simulation.integrator", s.integrator);
+        if (const Json* integrator = member(simulation, "integrator")) readText(*integrator, "simulation.integrator", s.integrator);
         readNumber(simulation, "simulation", "abs_tol", s.absTol);
         readNumber(simulation, "simulation", "rel_tol", s.relTol);
         readNumber(simulation, "simulation", "dt", s.dt);

@@ -31,7 +31,6 @@ namespace {
 
 using namespace scene_json;
 
-
 class SceneWriter {
 public:
     explicit SceneWriter(const Scene& scene) : scene_(scene) {}
@@ -46,10 +45,8 @@ public:
             Json& parameters = root["parameters"] = Json::object();
             for (const auto& [name, value] : scene_.parameters) parameters[name] = number("parameters." + name, value);
         }
-        if (scene_.lagrangian)
-            root["lagrangian"] = lagrangian(*scene_.lagrangian);
-        else
-            root["robot"] = robot();
+        if (scene_.lagrangian) root["lagrangian"] = lagrangian(*scene_.lagrangian);
+        else root["robot"] = robot();
         if (Json e = effects(); !e.empty()) root["effects"] = std::move(e);
         Json& initial = root["initial"] = Json::object();
         if (scene_.initial.q.size() > 0) initial["q"] = vector("initial.q", scene_.initial.q);
@@ -69,16 +66,14 @@ private:
     // The expression text if the field came from one; integers without ".0".
     Json number(const std::string& path, double value) const {
         if (const auto text = scene_.expressions.find(path); text != scene_.expressions.end()) return text->second;
-        if (std::isfinite(value) && std::floor(value) == value && std::abs(value) < 9.0e15)
-            return static_cast<std::int64_t>(value);
+        if (std::isfinite(value) && std::floor(value) == value && std::abs(value) < 9.0e15) return static_cast<std::int64_t>(value);
         return value;
     }
 
     template <class Vector>
     Json vector(const std::string& path, const Vector& values) const {
         Json array = Json::array();
-        for (Eigen::Index i = 0; i < values.size(); ++i)
-            array.push_back(number(item(path, static_cast<std::size_t>(i)), values[i]));
+        for (Eigen::Index i = 0; i < values.size(); ++i) array.push_back(number(item(path, static_cast<std::size_t>(i)), values[i]));
         return array;
     }
 
@@ -148,8 +143,8 @@ private:
             Json entry;
             if (!body.name.empty()) entry["name"] = body.name;
             entry["shape"] = toString(body.shape);
-            entry["size"] = vector(child(path, "size"), Eigen::Map<const Eigen::VectorXd>(
-                                                            body.size.data(), static_cast<Eigen::Index>(body.size.size())));
+            entry["size"] = vector(child(path, "size"),
+                                   Eigen::Map<const Eigen::VectorXd>(body.size.data(), static_cast<Eigen::Index>(body.size.size())));
             entry["position"] = expressions(body.position);
             if (body.shape == BodyShape::Rod) {
                 entry["end"] = expressions(body.end);
@@ -211,9 +206,7 @@ private:
             const std::string path = item("effects." + key, i);
             Json entry;
             entry["joint"] = entries[i].joint + 1;
-            fields(entry, entries[i], [&](const std::string& name, double value) {
-                entry[name] = number(child(path, name), value);
-            });
+            fields(entry, entries[i], [&](const std::string& name, double value) { entry[name] = number(child(path, name), value); });
             array.push_back(std::move(entry));
         }
     }
@@ -226,8 +219,7 @@ private:
             put("stiffness", s.stiffness);
             put("rest", s.rest);
         });
-        list(out, "viscous", e.viscous,
-             [](Json&, const ViscousFriction& v, auto put) { put("coefficient", v.coefficient); });
+        list(out, "viscous", e.viscous, [](Json&, const ViscousFriction& v, auto put) { put("coefficient", v.coefficient); });
         list(out, "coulomb", e.coulomb, [](Json& entry, const CoulombFriction& c, auto put) {
             put("force", c.force);
             put("smoothing", c.smoothing);

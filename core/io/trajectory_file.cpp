@@ -42,9 +42,7 @@ const TorquePart kTorqueParts[] = {
     {"Q_coulomb_", [](const TorqueParts& p) { return p.coulomb; }},
 };
 
-std::string withUnit(const std::string& name, const std::string& unit) {
-    return unit.empty() ? name : name + " [" + unit + "]";
-}
+std::string withUnit(const std::string& name, const std::string& unit) { return unit.empty() ? name : name + " [" + unit + "]"; }
 
 }  // namespace
 
@@ -52,8 +50,7 @@ TorqueColumns torqueColumns(const Scene& scene, const TorqueHistory& history) {
     TorqueColumns columns;
     columns.history = &history;
     for (int j = 0; j < scene.dof(); ++j)
-        columns.units.push_back(scene.lagrangian ? ""
-                                                 : forceUnit(scene.robot.joints[j].dh.type == JointType::Revolute));
+        columns.units.push_back(scene.lagrangian ? "" : forceUnit(scene.robot.joints[j].dh.type == JointType::Revolute));
     return columns;
 }
 
@@ -61,12 +58,15 @@ std::vector<std::string> coordinateUnits(const Scene& scene) {
     std::vector<std::string> units(static_cast<std::size_t>(scene.dof()));
     if (!scene.lagrangian)
         for (int i = 0; i < scene.dof(); ++i)
-            units[static_cast<std::size_t>(i)] = coordinateUnit(scene.robot.joints[static_cast<std::size_t>(i)].dh.type == JointType::Revolute);
+            units[static_cast<std::size_t>(i)] =
+                coordinateUnit(scene.robot.joints[static_cast<std::size_t>(i)].dh.type == JointType::Revolute);
     return units;
 }
 
 void writeTrajectoryCsv(const Trajectory& tr, std::ostream& out, const TorqueColumns& torques, const std::vector<std::string>* units) {
-    const auto unitOf = [&](int i) { return units && i < static_cast<int>(units->size()) ? (*units)[static_cast<std::size_t>(i)] : std::string(); };
+    const auto unitOf = [&](int i) {
+        return units && i < static_cast<int>(units->size()) ? (*units)[static_cast<std::size_t>(i)] : std::string();
+    };
     out << (units ? "t [s]" : "t");
     for (int i = 0; i < tr.n; ++i) out << ',' << withUnit(tr.coordinateName(i), unitOf(i));
     for (int i = 0; i < tr.n; ++i) out << ',' << withUnit(velocityName(tr, i), unitOf(i).empty() ? "" : unitOf(i) + "/s");
@@ -128,18 +128,20 @@ void writeTrajectoryJson(const SimulationResult& result, std::ostream& out, cons
         j["largest_residual"] = torques.history->largestResidual;
     }
     const SimulationStats& s = result.stats;
-    j["stats"] = {{"integrator", s.integrator},         {"steps", s.steps},
-                  {"rejected_steps", s.rejectedSteps},  {"rhs_evaluations", s.rhsEvaluations},
-                  {"cpu_seconds", s.cpuSeconds},        {"simulated_seconds", s.simulatedSeconds},
+    j["stats"] = {{"integrator", s.integrator},           {"steps", s.steps},
+                  {"rejected_steps", s.rejectedSteps},    {"rhs_evaluations", s.rhsEvaluations},
+                  {"cpu_seconds", s.cpuSeconds},          {"simulated_seconds", s.simulatedSeconds},
                   {"max_energy_error", s.maxEnergyError}, {"max_rel_energy_error", s.maxRelEnergyError}};
     if (s.dt > 0)  // a fixed-step method: its grid, and which samples lie between step ends
         j["stats"]["fixed_step"] = {{"dt", s.dt},
                                     {"last_step", s.lastStep},
                                     {"event_steps", s.eventSteps},
                                     {"interpolated_samples", s.interpolatedSamples},
-                                    {"interpolation", "cubic Hermite from q, qd, qdd at the step ends; energies at the interpolated state"}};
-    j["status"] = result.status == SimulationStatus::Completed ? "completed"
-                  : result.status == SimulationStatus::Cancelled ? "cancelled" : "failed";
+                                    {"interpolation",
+                                     "cubic Hermite from q, qd, qdd at the step ends; energies at the interpolated state"}};
+    j["status"] = result.status == SimulationStatus::Completed   ? "completed"
+                  : result.status == SimulationStatus::Cancelled ? "cancelled"
+                                                                 : "failed";
     if (!result.message.empty()) j["message"] = result.message.english();
     out << j.dump(1) << '\n';
 }
@@ -151,10 +153,8 @@ void saveTrajectory(const SimulationResult& result, const std::string& path, con
     saveFileAtomically(
         path,
         [&](std::ostream& out) {
-            if (json)
-                writeTrajectoryJson(result, out, torques);
-            else
-                writeTrajectoryCsv(result.trajectory, out, torques);
+            if (json) writeTrajectoryJson(result, out, torques);
+            else writeTrajectoryCsv(result.trajectory, out, torques);
         },
         Backup::None);
 }

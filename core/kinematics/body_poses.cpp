@@ -9,10 +9,8 @@ namespace ll {
 BodyPoses::BodyPoses(std::vector<BodyShape> shapes, std::vector<Eigen::Vector3d> axes, ExpressionTape expressions)
     : shapes_(std::move(shapes)), axes_(std::move(axes)), expressions_(std::move(expressions)) {
     const int bodies = static_cast<int>(shapes_.size());
-    if (static_cast<int>(axes_.size()) != bodies || expressions_.outputCount() != 7 * bodies ||
-        expressions_.inputCount() < 1)
-        throw std::invalid_argument("BodyPoses: " + std::to_string(bodies) + " shapes, " +
-                                    std::to_string(axes_.size()) + " axes and " +
+    if (static_cast<int>(axes_.size()) != bodies || expressions_.outputCount() != 7 * bodies || expressions_.inputCount() < 1)
+        throw std::invalid_argument("BodyPoses: " + std::to_string(bodies) + " shapes, " + std::to_string(axes_.size()) + " axes and " +
                                     std::to_string(expressions_.outputCount()) + " pose expressions do not fit");
     input_.assign(expressions_.inputCount(), 0.0);
     output_.assign(expressions_.outputCount(), 0.0);
@@ -21,8 +19,7 @@ BodyPoses::BodyPoses(std::vector<BodyShape> shapes, std::vector<Eigen::Vector3d>
 void BodyPoses::evaluate(const Eigen::VectorXd& q, double t, std::vector<BodyPose>& out) const {
     const int n = coordinates();
     if (q.size() != n)
-        throw std::invalid_argument("q has " + std::to_string(q.size()) + " entries; the system has " +
-                                    std::to_string(n) + " coordinates");
+        throw std::invalid_argument("q has " + std::to_string(q.size()) + " entries; the system has " + std::to_string(n) + " coordinates");
     for (int i = 0; i < n; ++i) input_[i] = q[i];
     input_[n] = t;
     expressions_.evaluate(input_.data(), output_.data());

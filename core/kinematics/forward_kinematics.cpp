@@ -14,8 +14,7 @@ Eigen::Isometry3d linkTransform(const RobotModel& model, int i, double q_i) {
     const double theta = row.theta + (revolute ? q_i : 0.0);
     const double d = row.d + (revolute ? 0.0 : q_i);
     Eigen::Isometry3d A;
-    dhTransform(model.convention, row.a, d, std::cos(theta), std::sin(theta), std::cos(row.alpha),
-                std::sin(row.alpha), A.matrix());
+    dhTransform(model.convention, row.a, d, std::cos(theta), std::sin(theta), std::cos(row.alpha), std::sin(row.alpha), A.matrix());
     return A;
 }
 
@@ -30,8 +29,7 @@ void forwardKinematics(const RobotModel& model, RobotData& data, const Eigen::Ve
         const bool revolute = joint.dh.type == JointType::Revolute;
         const double theta = joint.dh.theta + (revolute ? q[i] : 0.0);
         const double d = joint.dh.d + (revolute ? 0.0 : q[i]);
-        dhTransform(model.convention, joint.dh.a, d, std::cos(theta), std::sin(theta), data.cosAlpha[i],
-                    data.sinAlpha[i], A.matrix());
+        dhTransform(model.convention, joint.dh.a, d, std::cos(theta), std::sin(theta), data.cosAlpha[i], data.sinAlpha[i], A.matrix());
         Eigen::Isometry3d& T = data.T_0i[i + 1];
         T = data.T_0i[i] * A;
 

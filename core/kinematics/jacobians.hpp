@@ -18,8 +18,6 @@ using Jacobian = Eigen::Matrix<double, 6, Eigen::Dynamic>;  // rows: [J_v (3); J
 void pointJacobian(const RobotData& data, int link, const Eigen::Vector3d& p, Jacobian& J);
 
 // J_v,ci and J_ω,i of link i: the Jacobian of its centre of mass.
-inline void comJacobian(const RobotData& data, int link, Jacobian& J) {
-    pointJacobian(data, link, data.p_ci[link], J);
-}
+inline void comJacobian(const RobotData& data, int link, Jacobian& J) { pointJacobian(data, link, data.p_ci[link], J); }
 
 }  // namespace ll

@@ -8,17 +8,14 @@
 
 namespace ll {
 
-ExpressionTape::ExpressionTape(int inputCount, std::vector<Instruction> tape, std::vector<int> outputs,
-                               std::vector<double> registers)
+ExpressionTape::ExpressionTape(int inputCount, std::vector<Instruction> tape, std::vector<int> outputs, std::vector<double> registers)
     : inputs_(inputCount), tape_(std::move(tape)), outputs_(std::move(outputs)), registers_(std::move(registers)) {
     const int size = static_cast<int>(registers_.size());
     const auto valid = [&](int r) { return r >= 0 && r < size; };
     bool ok = inputs_ >= 0 && inputs_ <= size;
     for (const Instruction& in : tape_) ok = ok && valid(in.result) && valid(in.a) && valid(in.b);
     for (int r : outputs_) ok = ok && valid(r);
-    if (!ok)
-        throw std::invalid_argument("ExpressionTape: a register index outside the " + std::to_string(size) +
-                                    " registers");
+    if (!ok) throw std::invalid_argument("ExpressionTape: a register index outside the " + std::to_string(size) + " registers");
 }
 
 double ExpressionTape::apply(Op op, double a, double b, double c) {

@@ -16,8 +16,31 @@ namespace ll {
 class ExpressionTape {
 public:
     enum class Op : std::uint8_t {
-        Add, Sub, Mul, Div, Neg, Recip, Square, PowConst, Pow, Sqrt,
-        Sin, Cos, Tan, Exp, Log, Tanh, Sinh, Cosh, Asin, Acos, Atan, Atan2, Abs, Step, Sign
+        Add,
+        Sub,
+        Mul,
+        Div,
+        Neg,
+        Recip,
+        Square,
+        PowConst,
+        Pow,
+        Sqrt,
+        Sin,
+        Cos,
+        Tan,
+        Exp,
+        Log,
+        Tanh,
+        Sinh,
+        Cosh,
+        Asin,
+        Acos,
+        Atan,
+        Atan2,
+        Abs,
+        Step,
+        Sign
     };
     struct Instruction {
         Op op;
@@ -28,8 +51,7 @@ public:
     ExpressionTape() = default;
     // `registers` holds inputCount inputs (any value), the constants in place, and room
     // for every result; `outputs` names the register of each output.
-    ExpressionTape(int inputCount, std::vector<Instruction> tape, std::vector<int> outputs,
-                   std::vector<double> registers);
+    ExpressionTape(int inputCount, std::vector<Instruction> tape, std::vector<int> outputs, std::vector<double> registers);
 
     int inputCount() const { return inputs_; }
     int outputCount() const { return static_cast<int>(outputs_.size()); }

@@ -53,8 +53,7 @@ struct SpatialInertia {
 };
 
 // Inertia of a body with mass m, COM p_c (world) and COM inertia Ic_world (world axes).
-inline SpatialInertia spatialInertiaAtOrigin(double m, const Eigen::Vector3d& p_c,
-                                             const Eigen::Matrix3d& Ic_world) {
+inline SpatialInertia spatialInertiaAtOrigin(double m, const Eigen::Vector3d& p_c, const Eigen::Matrix3d& Ic_world) {
     SpatialInertia I;
     I.m = m;
     I.h = m * p_c;

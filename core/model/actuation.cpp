@@ -2,8 +2,7 @@
 
 namespace ll {
 
-std::string actuationText(const std::vector<int>& actuated, const std::vector<std::string>& coordinateNames,
-                          const ActuationWords& words) {
+std::string actuationText(const std::vector<int>& actuated, const std::vector<std::string>& coordinateNames, const ActuationWords& words) {
     std::string inputs;
     for (int j : actuated) inputs += (inputs.empty() ? "" : ", ") + coordinateNames.at(j);
     const std::size_t m = actuated.size(), n = coordinateNames.size();

@@ -5,11 +5,10 @@
 
 namespace ll {
 
-void throwSizeMismatch(const char* function, const char* what, Eigen::Index size, Eigen::Index expected,
-                       const char* owner, const char* unit) {
+void throwSizeMismatch(const char* function, const char* what, Eigen::Index size, Eigen::Index expected, const char* owner,
+                       const char* unit) {
     throw std::invalid_argument(std::string(function) + ": " + what + " has " + std::to_string(size) +
-                                (size == 1 ? " entry, " : " entries, ") + owner + " has " + std::to_string(expected) +
-                                " " + unit);
+                                (size == 1 ? " entry, " : " entries, ") + owner + " has " + std::to_string(expected) + " " + unit);
 }
 
 void throwDataMismatch(const char* function, int dataJoints, int modelJoints) {

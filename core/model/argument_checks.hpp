@@ -12,15 +12,15 @@
 namespace ll {
 
 // Throw std::invalid_argument with the messages of the checks below.
-[[noreturn]] void throwSizeMismatch(const char* function, const char* what, Eigen::Index size, Eigen::Index expected,
-                                    const char* owner, const char* unit);
+[[noreturn]] void throwSizeMismatch(const char* function, const char* what, Eigen::Index size, Eigen::Index expected, const char* owner,
+                                    const char* unit);
 [[noreturn]] void throwDataMismatch(const char* function, int dataJoints, int modelJoints);
 [[noreturn]] void throwJointIndex(const char* function, const char* what, int index, Eigen::Index joints);
 
 // "<function>: <what> has <size> entries, <owner> has <expected> <unit>", e.g.
 // "forwardKinematics: q has 5 entries, the robot has 6 joints".
-inline void requireSize(const char* function, const char* what, Eigen::Index size, Eigen::Index expected,
-                        const char* owner = "the robot", const char* unit = "joints") {
+inline void requireSize(const char* function, const char* what, Eigen::Index size, Eigen::Index expected, const char* owner = "the robot",
+                        const char* unit = "joints") {
     if (size != expected) [[unlikely]]
         throwSizeMismatch(function, what, size, expected, owner, unit);
 }

@@ -28,8 +28,7 @@ std::string Diagnostic::toString() const {
 }
 
 bool hasErrors(const std::vector<Diagnostic>& diagnostics) {
-    return std::any_of(diagnostics.begin(), diagnostics.end(),
-                       [](const Diagnostic& d) { return d.severity == Severity::Error; });
+    return std::any_of(diagnostics.begin(), diagnostics.end(), [](const Diagnostic& d) { return d.severity == Severity::Error; });
 }
 
 static std::string joinErrors(const std::vector<Diagnostic>& diagnostics) {

@@ -12,8 +12,8 @@ enum class Severity { Warning, Error };
 
 struct Diagnostic {
     Severity severity = Severity::Error;
-    std::string field;    // a path as JSON counts it: "robot.joints[0].mass" is the first joint's
-    Message message;  // says the value and what is wrong with it: one short line
+    std::string field;  // a path as JSON counts it: "robot.joints[0].mass" is the first joint's
+    Message message;    // says the value and what is wrong with it: one short line
     Message hint = {};  // why, and what to do about it (printed on a following `hint:` line)
 
     // The field with its joint in words, as the table names it: "robot.joints[0].mass (joint 1)".

@@ -11,7 +11,7 @@ struct IntegrationSettings {
     std::string integrator = "dopri5";
     double absTol = 1e-8;
     double relTol = 1e-8;
-    double dt = 1e-3;       // fixed step, or the first trial step of adaptive methods [s]
+    double dt = 1e-3;  // fixed step, or the first trial step of adaptive methods [s]
     long maxSteps = 20'000'000;
     // Explicit adaptive methods stop with an IntegrationError recommending rosenbrock4
     // when their step size is pinned at the stability limit of a mode far faster than

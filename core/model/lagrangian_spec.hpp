@@ -40,12 +40,12 @@ enum class BodyShape { Box, Sphere, Cylinder, Rod };
 struct VisualBody {
     std::string name;
     BodyShape shape = BodyShape::Sphere;
-    std::vector<double> size;                                // as the shape says
-    std::array<std::string, 3> position{"0", "0", "0"};      // expressions of q, t
-    std::array<std::string, 3> end{"0", "0", "0"};           // rod only
-    std::string angle = "0";                                 // expression of q, t
+    std::vector<double> size;                            // as the shape says
+    std::array<std::string, 3> position{"0", "0", "0"};  // expressions of q, t
+    std::array<std::string, 3> end{"0", "0", "0"};       // rod only
+    std::string angle = "0";                             // expression of q, t
     Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();
-    std::string color;                                       // "#rrggbb", empty: the view's default
+    std::string color;  // "#rrggbb", empty: the view's default
 };
 
 struct LagrangianSpec {

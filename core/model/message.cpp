@@ -16,7 +16,8 @@ const char* englishWords(MessageId id) {
     switch (id) {
         case MessageId::Literal: return "{1}";
 #define LL_MESSAGE(id, english) \
-    case MessageId::id: return english;
+    case MessageId::id:         \
+        return english;
 #include "core/model/messages/all.def"
 #undef LL_MESSAGE
         case MessageId::Count: break;
@@ -28,7 +29,8 @@ const char* messageIdName(MessageId id) {
     switch (id) {
         case MessageId::Literal: return "Literal";
 #define LL_MESSAGE(id, english) \
-    case MessageId::id: return #id;
+    case MessageId::id:         \
+        return #id;
 #include "core/model/messages/all.def"
 #undef LL_MESSAGE
         case MessageId::Count: break;

@@ -13,7 +13,7 @@
 namespace ll {
 
 enum class MessageId : unsigned short {
-    Literal,  // no words of ours: the text as it came (a number, a name, a system's or parser's own words)
+    Literal,       // no words of ours: the text as it came (a number, a name, a system's or parser's own words)
 #ifndef Q_MOC_RUN  // Qt's moc, which reads headers including this one, cannot parse the list
 #define LL_MESSAGE(id, english) id,
 #include "core/model/messages/all.def"

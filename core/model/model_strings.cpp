@@ -7,13 +7,9 @@
 
 namespace ll {
 
-const char* toString(DhConvention convention) {
-    return convention == DhConvention::Standard ? "standard" : "modified";
-}
+const char* toString(DhConvention convention) { return convention == DhConvention::Standard ? "standard" : "modified"; }
 
-const char* toString(JointType type) {
-    return type == JointType::Revolute ? "revolute" : "prismatic";
-}
+const char* toString(JointType type) { return type == JointType::Revolute ? "revolute" : "prismatic"; }
 
 const char* toString(TorqueKind kind) {
     switch (kind) {

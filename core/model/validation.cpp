@@ -45,9 +45,9 @@ bool inRange(std::vector<Diagnostic>& out, const std::string& field, double valu
     const double a = std::abs(value);
     if (!std::isfinite(value) || a == 0.0 || (a >= r.smallest && a <= r.largest)) return true;
     const bool large = a > r.largest;
-    out.push_back({Severity::Error, field, message(large ? AbsurdlyLarge : AbsurdlySmall, r.quantity, value, r.unit),
-                   large ? message(NoPhysicalAbove, r.quantity, r.largest, r.unit)
-                         : message(NoPhysicalBelow, r.quantity, r.smallest, r.unit)});
+    out.push_back(
+        {Severity::Error, field, message(large ? AbsurdlyLarge : AbsurdlySmall, r.quantity, value, r.unit),
+         large ? message(NoPhysicalAbove, r.quantity, r.largest, r.unit) : message(NoPhysicalBelow, r.quantity, r.smallest, r.unit)});
     return false;
 }
 
@@ -66,8 +66,7 @@ void validateInertia(std::vector<Diagnostic>& out, int j, const Eigen::Matrix3d&
     }
     const double tol = 1e-9 * scale;
     const double a = moments[0], b = moments[1], c = moments[2];
-    if (a + b < c - tol)
-        warning(out, field, message(TriangleInequalityViolated, a, b, c), NoPhysicalBodyHasThisInertia);
+    if (a + b < c - tol) warning(out, field, message(TriangleInequalityViolated, a, b, c), NoPhysicalBodyHasThisInertia);
 }
 
 // A motor's armature adds Jm G² to b_jj: it must be a finite number >= 0.
@@ -80,10 +79,8 @@ void validateMotor(std::vector<Diagnostic>& out, int j, const JointMotor& motor)
     }
     requireFinite(out, jointField(j, "motor.inertia"), motor.inertia);
     requireFinite(out, jointField(j, "motor.gear_ratio"), motor.gearRatio);
-    if (motor.inertia < 0)
-        error(out, jointField(j, "motor.inertia"), message(RotorInertiaNegative, motor.inertia));
-    if (motor.gearRatio == 0)
-        error(out, jointField(j, "motor.gear_ratio"), GearRatioZero);
+    if (motor.inertia < 0) error(out, jointField(j, "motor.inertia"), message(RotorInertiaNegative, motor.inertia));
+    if (motor.gearRatio == 0) error(out, jointField(j, "motor.gear_ratio"), GearRatioZero);
 }
 
 // The structure of a hand-typed Lagrangian; its expressions are checked when they are
@@ -103,8 +100,7 @@ void validateLagrangian(std::vector<Diagnostic>& out, const Scene& scene) {
         for (size_t k = 0; k < body.size.size(); ++k)
             if (!(std::isfinite(body.size[k]) && body.size[k] > 0))
                 error(out, f + ".size[" + std::to_string(k) + "]", message(MustBeFinitePositive, body.size[k]));
-        if (!body.axis.allFinite() || body.axis.norm() == 0.0)
-            error(out, f + ".axis", MustBeFiniteDirection);
+        if (!body.axis.allFinite() || body.axis.norm() == 0.0) error(out, f + ".axis", MustBeFiniteDirection);
     }
 }
 
@@ -124,12 +120,12 @@ std::vector<Diagnostic> validateRobotFields(const RobotModel& model) {
         requireFinite(out, jointField(j, "d"), joint.dh.d);
         requireFinite(out, jointField(j, "theta"), joint.dh.theta);
         requireFinite(out, jointField(j, "mass"), joint.link.mass);
-        for (int k = 0; k < 3; ++k)
-            requireFinite(out, jointField(j, "com[" + std::to_string(k) + "]"), joint.link.com[k]);
+        for (int k = 0; k < 3; ++k) requireFinite(out, jointField(j, "com[" + std::to_string(k) + "]"), joint.link.com[k]);
         bool sane = inRange(out, jointField(j, "a"), joint.dh.a, kLength);
         sane = inRange(out, jointField(j, "d"), joint.dh.d, kLength) && sane;
         sane = inRange(out, jointField(j, "mass"), joint.link.mass, kMass) && sane;
-        for (int k = 0; k < 3; ++k) sane = inRange(out, jointField(j, "com[" + std::to_string(k) + "]"), joint.link.com[k], kLength) && sane;
+        for (int k = 0; k < 3; ++k)
+            sane = inRange(out, jointField(j, "com[" + std::to_string(k) + "]"), joint.link.com[k], kLength) && sane;
         static const char* const diagonal[3] = {"xx", "yy", "zz"};
         for (int k = 0; k < 3; ++k)
             sane = inRange(out, jointField(j, std::string("inertia.") + diagonal[k]), joint.link.inertia(k, k), kInertia) && sane;
@@ -148,10 +144,8 @@ std::vector<Diagnostic> validateRobotFields(const RobotModel& model) {
 std::vector<Diagnostic> validateSceneFields(const Scene& scene) {
     using enum MessageId;
     std::vector<Diagnostic> out;
-    if (scene.lagrangian)
-        validateLagrangian(out, scene);
-    else
-        out = validateRobotFields(scene.robot);
+    if (scene.lagrangian) validateLagrangian(out, scene);
+    else out = validateRobotFields(scene.robot);
     const int n = scene.dof();
     // A Lagrangian system's effects name its coordinates by number.
     const auto checkJoint = [&](const std::string& field, int joint) {
@@ -186,8 +180,7 @@ std::vector<Diagnostic> validateSceneFields(const Scene& scene) {
         checkNonNegative(f + ".force", e.coulomb[s].force);
         requireFinite(out, f + ".smoothing", e.coulomb[s].smoothing);
         if (!(e.coulomb[s].smoothing > 0)) error(out, f + ".smoothing", message(MustBePositive, e.coulomb[s].smoothing));
-        if (scene.lagrangian && e.coulomb[s].model == CoulombModel::Stick)
-            error(out, f + ".model", StickModelRobotsOnly);
+        if (scene.lagrangian && e.coulomb[s].model == CoulombModel::Stick) error(out, f + ".model", StickModelRobotsOnly);
     }
     for (size_t s = 0; s < e.torques.size(); ++s) {
         const std::string f = "effects.torques[" + std::to_string(s) + "]";

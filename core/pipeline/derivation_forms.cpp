@@ -7,7 +7,6 @@
 #include <random>
 #include <stdexcept>
 
-
 #include "core/dynamics/coriolis.hpp"
 #include "core/dynamics/potential_gradient.hpp"
 #include "core/dynamics/mass_matrix.hpp"
@@ -35,14 +34,11 @@ double relative(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
     return (a - b).cwiseAbs().maxCoeff() / std::max(1.0, b.cwiseAbs().maxCoeff());
 }
 
-double largest(const Triple& a, const Triple& b) {
-    return std::max({relative(a.B, b.B), relative(a.C, b.C), relative(a.g, b.g)});
-}
+double largest(const Triple& a, const Triple& b) { return std::max({relative(a.B, b.B), relative(a.C, b.C), relative(a.g, b.g)}); }
 
 std::string verificationLine(const std::string& what, double error, int states) {
     char buffer[160];
-    std::snprintf(buffer, sizeof buffer, "%s: largest relative difference %.2e in B, C, g (%d random states)", what.c_str(), error,
-                  states);
+    std::snprintf(buffer, sizeof buffer, "%s: largest relative difference %.2e in B, C, g (%d random states)", what.c_str(), error, states);
     return buffer;
 }
 
@@ -179,7 +175,9 @@ FormDocument deriveInForm(const Scene& scene, const FormRequest& request) {
         out.verification.push_back(verificationLine("structured vs numeric core", structuredError, states));
         if (full) out.verification.push_back(verificationLine("expanded vs numeric core", expandedError, states));
         else out.verification.push_back("expanded: not derived (" + cheapReason.english() + ")");
-        if (structured) out.verification.push_back(std::string("Bdot - 2C skew-symmetric over the names: ") + (skewSymmetric(*structured) ? "yes" : "NO"));
+        if (structured)
+            out.verification.push_back(std::string("Bdot - 2C skew-symmetric over the names: ") +
+                                       (skewSymmetric(*structured) ? "yes" : "NO"));
     }
     return out;
 }

@@ -27,9 +27,7 @@ std::string folded(const std::string& id) {
     return out;
 }
 
-bool revolute(const Scene& scene, int joint) {
-    return !scene.lagrangian && scene.robot.joints.at(joint).dh.type == JointType::Revolute;
-}
+bool revolute(const Scene& scene, int joint) { return !scene.lagrangian && scene.robot.joints.at(joint).dh.type == JointType::Revolute; }
 
 // One unit for a whole item whose joints are all alike, else "" (mixed).
 std::string uniform(const Scene& scene, std::string (*unit)(bool)) {
@@ -131,15 +129,12 @@ bool isPerLink(const Scene& scene, Quantity q) {
 
 // The matrices listed entry by entry in the catalogue (their entries are what is picked).
 bool byEntries(Quantity q) {
-    return q == Quantity::MassMatrix || q == Quantity::CoriolisMatrix || q == Quantity::GravityVector ||
-           q == Quantity::GeneralizedForces;
+    return q == Quantity::MassMatrix || q == Quantity::CoriolisMatrix || q == Quantity::GravityVector || q == Quantity::GeneralizedForces;
 }
 
 // What a derivation item cannot be picked as: the DH table, an equation of motion, and
 // d/dt ∂L/∂q̇_i (it holds q̈, which no state gives).
-bool pickable(Quantity q) {
-    return q != Quantity::DhTable && q != Quantity::EquationOfMotion && q != Quantity::MomentumRate;
-}
+bool pickable(Quantity q) { return q != Quantity::DhTable && q != Quantity::EquationOfMotion && q != Quantity::MomentumRate; }
 
 std::string labelOf(const present::DisplayItem& item) {
     if (item.equation && item.equation->kind == present::DisplayKind::Equation)
@@ -200,8 +195,8 @@ private:
 };
 
 // The entry of `item` (the step's index-th), or its cell (row, col) when cell is set.
-CatalogueEntry entryOf(const Scene& scene, const present::DisplayItem& item, int step, int index, bool cell = false,
-                       int row = -1, int col = -1) {
+CatalogueEntry entryOf(const Scene& scene, const present::DisplayItem& item, int step, int index, bool cell = false, int row = -1,
+                       int col = -1) {
     CatalogueEntry e;
     e.quantity = item.quantity;
     e.step = step;

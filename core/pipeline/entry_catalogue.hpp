@@ -22,22 +22,22 @@
 namespace ll {
 
 struct CatalogueEntry {
-    std::string id;             // what `--select` names: b12, c21, g2, E_kin, beta2_3_4, p_c2, dL/dtheta1
-    std::string label;          // as text shows it: b12, β23(4), p_c2, dL/dtheta1
+    std::string id;     // what `--select` names: b12, c21, g2, E_kin, beta2_3_4, p_c2, dL/dtheta1
+    std::string label;  // as text shows it: b12, β23(4), p_c2, dL/dtheta1
     present::Quantity quantity = present::Quantity::NamedQuantity;
-    int step = 0, item = 0;     // indices of its step and item in the display document
-    bool cell = false;          // one entry (row, col) of its item's matrix (the expanded B);
-                                // false: the item itself (the structured form's b_jk, p_c2)
-    int row = -1, col = -1;     // its indices in B, C, g or Q (b_jk: j−1, k−1; g_j: j−1, 0); −1: none
-    int first = 0;              // its values: the tape's outputs first … first + rows·cols − 1,
-    int rows = 1, cols = 1;     // row by row
-    int link = -1;              // the link (0-based) it is a quantity of (p_ci, β_jk⁽ⁱ⁾); −1: none
-    std::vector<int> links;     // the links whose inertial parameters occur in it, ascending
-    bool perLink = false;       // a sum over the links (b, c, g, E_kin, E_pot): its shares by link
-                                // come from core/dynamics/link_contributions
+    int step = 0, item = 0;         // indices of its step and item in the display document
+    bool cell = false;              // one entry (row, col) of its item's matrix (the expanded B);
+                                    // false: the item itself (the structured form's b_jk, p_c2)
+    int row = -1, col = -1;         // its indices in B, C, g or Q (b_jk: j−1, k−1; g_j: j−1, 0); −1: none
+    int first = 0;                  // its values: the tape's outputs first … first + rows·cols − 1,
+    int rows = 1, cols = 1;         // row by row
+    int link = -1;                  // the link (0-based) it is a quantity of (p_ci, β_jk⁽ⁱ⁾); −1: none
+    std::vector<int> links;         // the links whose inertial parameters occur in it, ascending
+    bool perLink = false;           // a sum over the links (b, c, g, E_kin, E_pot): its shares by link
+                                    // come from core/dynamics/link_contributions
     std::uint64_t coordinates = 0;  // bit k: it depends on q_{k+1}
     std::uint64_t velocities = 0;   // bit k: q̇_{k+1} occurs in it (the velocities that multiply a c_ij)
-    std::string unit;           // SI; "" when dimensionless, mixed or not known (a typed Lagrangian's)
+    std::string unit;               // SI; "" when dimensionless, mixed or not known (a typed Lagrangian's)
 
     bool dependsOn(int coordinate) const { return (coordinates >> coordinate) & 1u; }
     bool hasVelocity(int coordinate) const { return (velocities >> coordinate) & 1u; }
@@ -45,9 +45,9 @@ struct CatalogueEntry {
 
 class EntryCatalogue {
 public:
-    int n = 0;                           // coordinates
+    int n = 0;  // coordinates
     std::vector<CatalogueEntry> entries;
-    ExpressionTape values;               // inputs [q; q̇; t] (2n + 1); every entry's values
+    ExpressionTape values;  // inputs [q; q̇; t] (2n + 1); every entry's values
 
     // By id as typed: exactly, else ignoring '_' and case (beta23_4 for beta2_3_4); null
     // when there is none or it is ambiguous.

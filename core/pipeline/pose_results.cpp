@@ -144,9 +144,10 @@ present::DisplayStep poseResults(const Scene& scene, const Eigen::VectorXd& q, c
     present::DisplayStep step;
     step.number = poseStepNumber;
     step.title = MessageId::TitlePoseResults;
-    step.general = stepFormula("«1»", "«1»", {formulaWords(MessageId::FormulaPoseResults)},
-                               {formulaWords(MessageId::FormulaAtThisPose,
-                                             {"«B»(q),\\ C(q,\\dot q),\\ «g»(q),\\ E_{\\mathrm{kin}},\\ E_{\\mathrm{pot}}", "q, \\dot q"})});
+    step.general =
+        stepFormula("«1»", "«1»", {formulaWords(MessageId::FormulaPoseResults)},
+                    {formulaWords(MessageId::FormulaAtThisPose,
+                                  {"«B»(q),\\ C(q,\\dot q),\\ «g»(q),\\ E_{\\mathrm{kin}},\\ E_{\\mathrm{pot}}", "q, \\dot q"})});
     // In English here; the window writes it in its language (a sentence, not typeset).
     step.formulaText = present::formulaText(step.general, {});
     step.formulaLatex = present::formulaLatex(step.general, {});
@@ -156,7 +157,9 @@ present::DisplayStep poseResults(const Scene& scene, const Eigen::VectorXd& q, c
     step.items.push_back(item("Epot", present::Quantity::PotentialEnergy, "E_{\\mathrm{pot}}", number(epot), literal("J")));
     bool mixed = false;
     for (const auto& j : scene.robot.joints) mixed |= j.dh.type != scene.robot.joints[0].dh.type;
-    step.items.push_back(item("B", present::Quantity::MassMatrix, "B(q)", matrix(data.B), mixed ? message(MessageId::PoseUnitsWhereTheyMeet, perJoint(scene, "kg·m²", "kg"), "kg·m") : perJoint(scene, "kg·m²", "kg")));
+    step.items.push_back(
+        item("B", present::Quantity::MassMatrix, "B(q)", matrix(data.B),
+             mixed ? message(MessageId::PoseUnitsWhereTheyMeet, perJoint(scene, "kg·m²", "kg"), "kg·m") : perJoint(scene, "kg·m²", "kg")));
     step.items.push_back(item("C", present::Quantity::CoriolisMatrix, "C(q,\\dot{q})", matrix(data.C), perJoint(scene, "kg·m²/s", "kg/s")));
     step.items.push_back(item("g", present::Quantity::GravityVector, "g(q)", matrix(data.g), perJoint(scene, "N·m", "N")));
     return step;

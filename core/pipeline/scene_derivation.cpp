@@ -40,9 +40,7 @@ DerivedDocument deriveDocument(const Scene& scene, const DocumentRequest& reques
     } else {
         d = symbolic::deriveRobot(scene, options);
     }
-    std::erase_if(d.steps, [&](const symbolic::DerivationStep& s) {
-        return s.number < request.firstStep || s.number > request.lastStep;
-    });
+    std::erase_if(d.steps, [&](const symbolic::DerivationStep& s) { return s.number < request.firstStep || s.number > request.lastStep; });
     throwIfCancelled(request.cancel);
     DerivedDocument out;
     const auto printing = std::chrono::steady_clock::now();

@@ -22,7 +22,7 @@ struct DocumentRequest {
     int firstStep = 0, lastStep = 8;  // the steps shown; B, C, g, Q are always derived
     present::DocumentFormat format = present::DocumentFormat::Text;
     std::function<void(int step, const std::string& what)> progress;  // optional, on the deriving thread
-    const std::atomic<bool>* cancel = nullptr;                          // optional: throws Cancelled
+    const std::atomic<bool>* cancel = nullptr;                        // optional: throws Cancelled
     // for format Display: the trees are for pages only (the CLI's pdf, svg, png), so sums
     // longer than pages show are built already cut (present::DisplayOptions::cutLongSums)
     bool forPages = false;
@@ -43,10 +43,10 @@ struct StepTiming {
 };
 
 struct DerivedDocument {
-    std::string document;             // in the requested format (empty for Display)
+    std::string document;                                     // in the requested format (empty for Display)
     std::shared_ptr<const present::DisplayDocument> display;  // for format Display: the trees
-    std::vector<StepTiming> timings;  // of the shown steps
-    double printSeconds = 0.0;        // shaping and rendering the document
+    std::vector<StepTiming> timings;                          // of the shown steps
+    double printSeconds = 0.0;                                // shaping and rendering the document
     std::vector<std::string> warnings;
     std::shared_ptr<const EntryCatalogue> catalogue;  // when asked for (request.catalogue)
 };

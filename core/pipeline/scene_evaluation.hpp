@@ -14,9 +14,9 @@
 namespace ll {
 
 struct SceneEvaluation {
-    ModelTerms terms;                      // B, C, g, Q, E_kin, E_pot
-    Eigen::VectorXd qdd;                   // B⁻¹(Q − C q̇ − g)
-    std::vector<int> actuated;             // 0-based coordinates with an input (without tau)
+    ModelTerms terms;           // B, C, g, Q, E_kin, E_pot
+    Eigen::VectorXd qdd;        // B⁻¹(Q − C q̇ − g)
+    std::vector<int> actuated;  // 0-based coordinates with an input (without tau)
     bool underactuated = false;
     std::vector<std::string> coordinates;  // a Lagrangian's names; empty for a robot
 };

@@ -33,8 +33,8 @@ SimulationResult simulate(const Scene& scene, const SimulationSettings& settings
     return simulate(prepareSimulation(scene), settings, progress, cancel);
 }
 
-WorkPrecisionResult runWorkPrecision(const Scene& scene, const WorkPrecisionSettings& settings,
-                                     const WorkPrecisionProgress& progress, const std::atomic<bool>* cancel) {
+WorkPrecisionResult runWorkPrecision(const Scene& scene, const WorkPrecisionSettings& settings, const WorkPrecisionProgress& progress,
+                                     const std::atomic<bool>* cancel) {
     return runWorkPrecision(prepareSimulation(scene), settings, progress, cancel);
 }
 

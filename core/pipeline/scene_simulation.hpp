@@ -29,13 +29,12 @@ PreparedScene prepareScene(const Scene& scene);
 SimulationInput prepareSimulation(const Scene& scene);
 
 // prepareSimulation, then simulate() (core/simulation/simulate.hpp).
-SimulationResult simulate(const Scene& scene, const SimulationSettings& settings,
-                          const ProgressCallback& progress = {}, const std::atomic<bool>* cancel = nullptr);
+SimulationResult simulate(const Scene& scene, const SimulationSettings& settings, const ProgressCallback& progress = {},
+                          const std::atomic<bool>* cancel = nullptr);
 inline SimulationResult simulate(const Scene& scene) { return simulate(scene, scene.simulation); }
 
 // prepareSimulation, then runWorkPrecision() (core/simulation/work_precision.hpp).
-WorkPrecisionResult runWorkPrecision(const Scene& scene, const WorkPrecisionSettings& settings,
-                                     const WorkPrecisionProgress& progress = {},
+WorkPrecisionResult runWorkPrecision(const Scene& scene, const WorkPrecisionSettings& settings, const WorkPrecisionProgress& progress = {},
                                      const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace ll

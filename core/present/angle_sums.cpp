@@ -19,7 +19,6 @@ using GiNaC::is_a;
 using GiNaC::numeric;
 using Mask = std::uint64_t;  // bit i-1 for q_i: robots have far fewer than 64 joints
 
-
 std::vector<int> indicesOf(Mask m) {
     std::vector<int> out;
     for (int i = 0; m; ++i, m >>= 1)
@@ -63,14 +62,10 @@ std::vector<Trig> changed(std::vector<Trig> trig, std::initializer_list<std::pai
         const char kind = a.first;
         const Mask mask = a.second;
         auto it = std::find_if(trig.begin(), trig.end(), [&](const Trig& t) { return t.kind == kind && t.mask == mask; });
-        if (it != trig.end())
-            ++it->exp;
-        else
-            trig.push_back({kind, mask, 1});
+        if (it != trig.end()) ++it->exp;
+        else trig.push_back({kind, mask, 1});
     }
-    std::sort(trig.begin(), trig.end(), [](const Trig& a, const Trig& b) {
-        return std::pair(a.mask, a.kind) < std::pair(b.mask, b.kind);
-    });
+    std::sort(trig.begin(), trig.end(), [](const Trig& a, const Trig& b) { return std::pair(a.mask, a.kind) < std::pair(b.mask, b.kind); });
     return trig;
 }
 
@@ -174,8 +169,7 @@ AngleSumCombiner::AngleSumCombiner(std::vector<GiNaC::symbol> q) : q_(std::move(
 
 const GiNaC::symbol& AngleSumCombiner::symbolFor(const TrigName& trig) {
     auto it = symbols_.find(trig);
-    if (it == symbols_.end())
-        it = symbols_.emplace(trig, GiNaC::symbol(trigSymbolName(trig, static_cast<int>(q_.size())))).first;
+    if (it == symbols_.end()) it = symbols_.emplace(trig, GiNaC::symbol(trigSymbolName(trig, static_cast<int>(q_.size())))).first;
     return it->second;
 }
 

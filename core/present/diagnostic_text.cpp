@@ -8,8 +8,7 @@ namespace ll::present {
 namespace {
 
 std::string words(const Diagnostic& d, Language language, Place place) {
-    std::string text = (place == Place::Named ? messageText(d.place(), language) + ": " : std::string()) +
-                       messageText(d.message, language);
+    std::string text = (place == Place::Named ? messageText(d.place(), language) + ": " : std::string()) + messageText(d.message, language);
     if (!d.hint.empty()) text += "\n" + messageText(MessageId::HintLine, language) + messageText(d.hint, language);
     return text;
 }

@@ -102,7 +102,6 @@ struct DisplayBuilder::Factor {
     mutable std::optional<FactorKey> key = std::nullopt;  // not a symbol's: made when first compared
 };
 
-
 struct DisplayBuilder::Product {
     numeric coef = 1;
     std::vector<Factor> num, den;  // in display order
@@ -114,8 +113,7 @@ struct DisplayBuilder::Term {
     bool more = false;  // "⋯ (N more terms)" of a cut sum
 };
 
-DisplayBuilder::DisplayBuilder(DisplayOptions options)
-    : options_(std::move(options)), numbers_(options_.typedDecimals) {}
+DisplayBuilder::DisplayBuilder(DisplayOptions options) : options_(std::move(options)), numbers_(options_.typedDecimals) {}
 DisplayBuilder::~DisplayBuilder() = default;
 
 DisplayPtr DisplayBuilder::number(const numeric& n, bool standalone) const {
@@ -212,10 +210,10 @@ DisplayPtr DisplayBuilder::atom(const ex& e) {
         return n;
     }
     if (is_a<GiNaC::function>(e)) {
-        static const std::map<std::string, std::string> known = {
-            {"sin", "\\sin"},     {"cos", "\\cos"},     {"tan", "\\tan"},   {"exp", "\\exp"},
-            {"log", "\\ln"},      {"sinh", "\\sinh"},   {"cosh", "\\cosh"}, {"tanh", "\\tanh"},
-            {"asin", "\\arcsin"}, {"acos", "\\arccos"}, {"atan", "\\arctan"}};
+        static const std::map<std::string, std::string> known = {{"sin", "\\sin"},     {"cos", "\\cos"},    {"tan", "\\tan"},
+                                                                 {"exp", "\\exp"},     {"log", "\\ln"},     {"sinh", "\\sinh"},
+                                                                 {"cosh", "\\cosh"},   {"tanh", "\\tanh"},  {"asin", "\\arcsin"},
+                                                                 {"acos", "\\arccos"}, {"atan", "\\arctan"}};
         auto n = std::make_shared<DisplayNode>();
         n->kind = DisplayKind::Function;
         n->text = n->plain = n->name = ex_to<GiNaC::function>(e).get_name();
@@ -322,17 +320,14 @@ DisplayBuilder::Product DisplayBuilder::product(const ex& e) {
         }
     };
     const auto one = [&](const ex& x) {
-        if (is_a<numeric>(x))
-            p.coef *= ex_to<numeric>(x);
+        if (is_a<numeric>(x)) p.coef *= ex_to<numeric>(x);
         else if (is_a<GiNaC::power>(x) && is_a<numeric>(x.op(1)) && ex_to<numeric>(x.op(1)).is_real())
             factor(x.op(0), ex_to<numeric>(x.op(1)));
-        else
-            factor(x, 1);
+        else factor(x, 1);
     };
     if (is_a<GiNaC::mul>(e))
         for (const ex& x : e) one(x);  // its factors, then its coefficient
-    else
-        one(e);
+    else one(e);
     // GiNaC keeps a sum's numeric content in front (q̇2 (2a + 4b) is 2 q̇2 (a + 2b)); a
     // coefficient that is not a formula's (a decimal, 5·10⁻¹⁰) goes back into the sum,
     // and so does a formula's when fewer numbers show then: the textbook's
@@ -362,7 +357,7 @@ FactorKey DisplayBuilder::factorKey(const Factor& f) {
     if (!f.key) {
         const int rank = is_a<numeric>(f.base) || is_a<GiNaC::constant>(f.base) ? numberRank
                          : is_a<GiNaC::function>(f.base)                        ? functionRank
-                                                                                 : sumRank;
+                                                                                : sumRank;
         const DisplayPtr spelled = is_a<GiNaC::add>(f.base) ? sum(f.base, f.negated) : atom(f.base);
         f.key = FactorKey{rank, {}, keyText(*spelled)};
     }

@@ -11,12 +11,9 @@ namespace {
 void appendSuperscript(std::string_view digits, std::string& out) {
     static constexpr std::string_view sup[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
     for (char c : digits) {
-        if (c == '-')
-            out += "⁻";
-        else if (c >= '0' && c <= '9')
-            out += sup[c - '0'];
-        else
-            out += c;
+        if (c == '-') out += "⁻";
+        else if (c >= '0' && c <= '9') out += sup[c - '0'];
+        else out += c;
     }
 }
 
@@ -85,32 +82,32 @@ public:
 
     std::string operator()(const DisplayNode& n) const {
         switch (n.kind) {
-        case DisplayKind::Symbol:
-        case DisplayKind::Number:
-        case DisplayKind::Sum:
-        case DisplayKind::Product:
-        case DisplayKind::Power:
-        case DisplayKind::Fence: {
-            std::string s;
-            append(n, s);
-            return s;
-        }
-        case DisplayKind::Fraction: return fraction(n);
-        case DisplayKind::Root: {
-            const std::string c = (*this)(*n.children[0]);
-            if (style_ == DisplayStyle::Latex) return "\\sqrt{" + c + "}";
-            if (style_ == DisplayStyle::Plain) return "sqrt(" + c + ")";
-            return "√" + (displayPrecedence(*n.children[0]) < 3 ? "(" + c + ")" : c);
-        }
-        case DisplayKind::Function: return function(n, "");
-        case DisplayKind::Matrix: return matrix(n);
-        case DisplayKind::Equation: return equation(n);
-        case DisplayKind::List: {
-            std::string items;
-            for (const DisplayPtr& c : n.children) items += (items.empty() ? "" : (plain() ? "," : ", ")) + (*this)(*c);
-            return style_ == DisplayStyle::Latex ? "\\left\\{" + items + "\\right\\}" : "{" + items + "}";
-        }
-        case DisplayKind::Raw: return style_ == DisplayStyle::Latex ? n.latex : plain() ? n.plain : n.text;
+            case DisplayKind::Symbol:
+            case DisplayKind::Number:
+            case DisplayKind::Sum:
+            case DisplayKind::Product:
+            case DisplayKind::Power:
+            case DisplayKind::Fence: {
+                std::string s;
+                append(n, s);
+                return s;
+            }
+            case DisplayKind::Fraction: return fraction(n);
+            case DisplayKind::Root: {
+                const std::string c = (*this)(*n.children[0]);
+                if (style_ == DisplayStyle::Latex) return "\\sqrt{" + c + "}";
+                if (style_ == DisplayStyle::Plain) return "sqrt(" + c + ")";
+                return "√" + (displayPrecedence(*n.children[0]) < 3 ? "(" + c + ")" : c);
+            }
+            case DisplayKind::Function: return function(n, "");
+            case DisplayKind::Matrix: return matrix(n);
+            case DisplayKind::Equation: return equation(n);
+            case DisplayKind::List: {
+                std::string items;
+                for (const DisplayPtr& c : n.children) items += (items.empty() ? "" : (plain() ? "," : ", ")) + (*this)(*c);
+                return style_ == DisplayStyle::Latex ? "\\left\\{" + items + "\\right\\}" : "{" + items + "}";
+            }
+            case DisplayKind::Raw: return style_ == DisplayStyle::Latex ? n.latex : plain() ? n.plain : n.text;
         }
         return {};
     }
@@ -119,17 +116,17 @@ public:
     // into one buffer: returning a string per node copied each term's text once per level.
     void append(const DisplayNode& n, std::string& out) const {
         switch (n.kind) {
-        case DisplayKind::Symbol: return symbol(n, out);
-        case DisplayKind::Number: return number(n, out);
-        case DisplayKind::Sum: return sum(n, out);
-        case DisplayKind::Product: return product(n, out);
-        case DisplayKind::Power: return power(n, out);
-        case DisplayKind::Fence:
-            out += style_ == DisplayStyle::Latex ? "\\left(" : "(";
-            append(*n.children[0], out);
-            out += style_ == DisplayStyle::Latex ? "\\right)" : ")";
-            return;
-        default: out += (*this)(n);
+            case DisplayKind::Symbol: return symbol(n, out);
+            case DisplayKind::Number: return number(n, out);
+            case DisplayKind::Sum: return sum(n, out);
+            case DisplayKind::Product: return product(n, out);
+            case DisplayKind::Power: return power(n, out);
+            case DisplayKind::Fence:
+                out += style_ == DisplayStyle::Latex ? "\\left(" : "(";
+                append(*n.children[0], out);
+                out += style_ == DisplayStyle::Latex ? "\\right)" : ")";
+                return;
+            default: out += (*this)(n);
         }
     }
 
@@ -206,12 +203,9 @@ private:
                 continue;
             }
             std::string_view separator;
-            if (plain())
-                separator = "*";
-            else if (style_ == DisplayStyle::Text)
-                separator = " ";
-            else
-                separator = isWord(*n.children[i]) || isWord(*n.children[i - 1]) ? "\\, " : " ";
+            if (plain()) separator = "*";
+            else if (style_ == DisplayStyle::Text) separator = " ";
+            else separator = isWord(*n.children[i]) || isWord(*n.children[i - 1]) ? "\\, " : " ";
             const std::size_t at = out.size();
             out += separator;
             const std::size_t first = out.size();
@@ -225,9 +219,7 @@ private:
         const DisplayNode &num = *n.children[0], &den = *n.children[1];
         if (style_ == DisplayStyle::Latex) {
             // A lone sum needs no parentheses inside \frac.
-            auto side = [&](const DisplayNode& x) {
-                return x.kind == DisplayKind::Fence ? (*this)(*x.children[0]) : (*this)(x);
-            };
+            auto side = [&](const DisplayNode& x) { return x.kind == DisplayKind::Fence ? (*this)(*x.children[0]) : (*this)(x); };
             return "\\frac{" + side(num) + "}{" + side(den) + "}";
         }
         const std::string bottom = (*this)(den);
@@ -276,8 +268,7 @@ private:
     std::string function(const DisplayNode& n, const std::string& power) const {
         std::string args;
         for (const DisplayPtr& a : n.children) args += (args.empty() ? "" : (plain() ? "," : ", ")) + (*this)(*a);
-        if (n.plain == "abs" && !plain())
-            return (style_ == DisplayStyle::Latex ? "\\left|" + args + "\\right|" : "|" + args + "|") + power;
+        if (n.plain == "abs" && !plain()) return (style_ == DisplayStyle::Latex ? "\\left|" + args + "\\right|" : "|" + args + "|") + power;
         const std::string& name = style_ == DisplayStyle::Latex ? n.latex : plain() ? n.plain : n.text;
         return name + power + "(" + args + ")";
     }
@@ -312,8 +303,7 @@ private:
         for (std::size_t i = 0; i < rows; ++i) {
             const bool top = i == 0, bottom = i + 1 == rows;
             s += rows == 1 ? "[ " : top ? "⎡ " : bottom ? "⎣ " : "⎢ ";
-            for (std::size_t j = 0; j < cols; ++j)
-                s += (j ? "  " : "") + cell[i][j] + std::string(width[j] - columns(cell[i][j]), ' ');
+            for (std::size_t j = 0; j < cols; ++j) s += (j ? "  " : "") + cell[i][j] + std::string(width[j] - columns(cell[i][j]), ' ');
             s += rows == 1 ? " ]" : top ? " ⎤" : bottom ? " ⎦" : " ⎥";
             if (!bottom) s += "\n";
         }
@@ -349,22 +339,18 @@ private:
 
 int displayPrecedence(const DisplayNode& n) {
     switch (n.kind) {
-    case DisplayKind::Sum:
-    case DisplayKind::Equation: return 0;
-    case DisplayKind::Product:
-    case DisplayKind::Fraction: return 1;
-    case DisplayKind::Power:
-        return n.children[0]->kind == DisplayKind::Function && n.children[0]->plain != "abs" &&
-                       isIntegerExponent(*n.children[1])
-                   ? 3
-                   : 2;
-    default: return 3;
+        case DisplayKind::Sum:
+        case DisplayKind::Equation: return 0;
+        case DisplayKind::Product:
+        case DisplayKind::Fraction: return 1;
+        case DisplayKind::Power:
+            return n.children[0]->kind == DisplayKind::Function && n.children[0]->plain != "abs" && isIntegerExponent(*n.children[1]) ? 3
+                                                                                                                                      : 2;
+        default: return 3;
     }
 }
 
-std::string renderDisplay(const DisplayNode& node, DisplayStyle style, bool keyNames) {
-    return Renderer(style, keyNames)(node);
-}
+std::string renderDisplay(const DisplayNode& node, DisplayStyle style, bool keyNames) { return Renderer(style, keyNames)(node); }
 
 DisplayPtr displayNumber(std::string text, std::string latex, std::string plain, std::string exponent) {
     auto n = std::make_shared<DisplayNode>();
@@ -413,22 +399,20 @@ DisplayPtr displayEquation(DisplayPtr lhs, DisplayPtr rhs) {
 
 void displayLeaves(const DisplayNode& node, std::vector<std::string>& out) {
     switch (node.kind) {
-    case DisplayKind::Symbol:
-    case DisplayKind::Number:
-    case DisplayKind::Raw: out.push_back(renderDisplay(node, DisplayStyle::Text)); return;
-    case DisplayKind::Function: out.push_back(node.text); break;
-    case DisplayKind::Matrix:
-        for (const auto& row : node.rows)
-            for (const DisplayPtr& c : row) displayLeaves(*c, out);
-        return;
-    default: break;
+        case DisplayKind::Symbol:
+        case DisplayKind::Number:
+        case DisplayKind::Raw: out.push_back(renderDisplay(node, DisplayStyle::Text)); return;
+        case DisplayKind::Function: out.push_back(node.text); break;
+        case DisplayKind::Matrix:
+            for (const auto& row : node.rows)
+                for (const DisplayPtr& c : row) displayLeaves(*c, out);
+            return;
+        default: break;
     }
     for (const DisplayPtr& c : node.children) displayLeaves(*c, out);
 }
 
-bool isZeroNumber(const DisplayNode& node) {
-    return node.kind == DisplayKind::Number && node.text == "0" && node.exponent.empty();
-}
+bool isZeroNumber(const DisplayNode& node) { return node.kind == DisplayKind::Number && node.text == "0" && node.exponent.empty(); }
 
 bool hasZeroEntry(const DisplayNode& matrix) {
     for (const auto& row : matrix.rows)

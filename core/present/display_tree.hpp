@@ -50,13 +50,13 @@ struct DisplayNode {
     // Symbol scripts: subscript as Text prints it (c2, xx1), as LaTeX (c2, xx,1,
     // \mathrm{cart}) and as the typesetter draws it (c2, xx,1, cart).
     std::string subText, subLatex, subShown, supText, supLatex;
-    std::string exponent;      // Number: mantissa·10^exponent when not empty
-    bool upright = false;      // Symbol: a multi-letter word (\mathrm); Function: always
-    bool subUpright = false;   // Symbol: the subscript is a word (m_cart)
-    int dots = 0;              // Symbol: 1 velocity, 2 acceleration
-    std::vector<bool> negative;                  // Sum: the sign of each term
-    std::vector<DisplayPtr> children;            // see the kinds
-    std::vector<std::vector<DisplayPtr>> rows;   // Matrix
+    std::string exponent;                       // Number: mantissa·10^exponent when not empty
+    bool upright = false;                       // Symbol: a multi-letter word (\mathrm); Function: always
+    bool subUpright = false;                    // Symbol: the subscript is a word (m_cart)
+    int dots = 0;                               // Symbol: 1 velocity, 2 acceleration
+    std::vector<bool> negative;                 // Sum: the sign of each term
+    std::vector<DisplayPtr> children;           // see the kinds
+    std::vector<std::vector<DisplayPtr>> rows;  // Matrix
 };
 
 enum class DisplayStyle { Plain, Text, Latex };

@@ -59,16 +59,15 @@ std::string jsonDocument(const DisplayDocument& document, const ModelSummary& mo
             json.key("expr");
             if (item.quantity == Quantity::EquationOfMotion)  // an equation: both sides
                 json.value(renderDisplay(*item.equation, DisplayStyle::Plain));
-            else
-                writePlain(json, *item.value);
+            else writePlain(json, *item.value);
             json.endObject();
         }
         json.endArray();
         json.endObject();
     }
     json.endArray();
-    for (const auto& [name, value] : {std::pair{"B", &model.B}, {"C", &model.C}, {"g", &model.g}, {"Q", &model.Q},
-                                      {"Ekin", &model.Ekin}, {"Epot", &model.Epot}}) {
+    for (const auto& [name, value] :
+         {std::pair{"B", &model.B}, {"C", &model.C}, {"g", &model.g}, {"Q", &model.Q}, {"Ekin", &model.Ekin}, {"Epot", &model.Epot}}) {
         json.key(name);
         writePlain(json, **value);
     }

@@ -95,26 +95,26 @@ void JsonWriter::quote(std::string_view s, std::string& out) {
             if (n == 0) {
                 char hex[8];
                 std::snprintf(hex, sizeof hex, "%02X", c);
-                throw std::invalid_argument("JSON output: invalid UTF-8 byte 0x" + std::string(hex) + " at byte " +
-                                            std::to_string(i) + " of a string");
+                throw std::invalid_argument("JSON output: invalid UTF-8 byte 0x" + std::string(hex) + " at byte " + std::to_string(i) +
+                                            " of a string");
             }
             i += n;
             continue;
         }
         out.append(s.data() + run, i - run);
         switch (c) {
-        case '"': out += "\\\""; break;
-        case '\\': out += "\\\\"; break;
-        case '\b': out += "\\b"; break;
-        case '\t': out += "\\t"; break;
-        case '\n': out += "\\n"; break;
-        case '\f': out += "\\f"; break;
-        case '\r': out += "\\r"; break;
-        default: {
-            char escaped[8];
-            std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
-            out += escaped;
-        }
+            case '"': out += "\\\""; break;
+            case '\\': out += "\\\\"; break;
+            case '\b': out += "\\b"; break;
+            case '\t': out += "\\t"; break;
+            case '\n': out += "\\n"; break;
+            case '\f': out += "\\f"; break;
+            case '\r': out += "\\r"; break;
+            default: {
+                char escaped[8];
+                std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
+                out += escaped;
+            }
         }
         run = ++i;
     }

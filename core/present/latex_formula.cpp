@@ -9,11 +9,10 @@ namespace ll::present {
 namespace {
 
 const std::map<std::string, std::string>& letters() {
-    static const std::map<std::string, std::string> m = {
-        {"alpha", "α"}, {"beta", "β"},   {"gamma", "γ"},  {"delta", "δ"},  {"epsilon", "ε"}, {"theta", "θ"},
-        {"lambda", "λ"}, {"mu", "μ"},    {"pi", "π"},     {"rho", "ρ"},    {"sigma", "σ"},   {"tau", "τ"},
-        {"phi", "φ"},   {"omega", "ω"},  {"Omega", "Ω"},  {"Gamma", "Γ"},  {"Delta", "Δ"},   {"ell", "ℓ"},
-        {"partial", "∂"}};
+    static const std::map<std::string, std::string> m = {{"alpha", "α"}, {"beta", "β"},   {"gamma", "γ"}, {"delta", "δ"},  {"epsilon", "ε"},
+                                                         {"theta", "θ"}, {"lambda", "λ"}, {"mu", "μ"},    {"pi", "π"},     {"rho", "ρ"},
+                                                         {"sigma", "σ"}, {"tau", "τ"},    {"phi", "φ"},   {"omega", "ω"},  {"Omega", "Ω"},
+                                                         {"Gamma", "Γ"}, {"Delta", "Δ"},  {"ell", "ℓ"},   {"partial", "∂"}};
     return m;
 }
 
@@ -159,14 +158,14 @@ private:
         }
         ++at_;
         switch (c) {
-        case '=': return displayRaw(" = ", "=", "=");
-        case '+': return displayRaw(" + ", "+", "+");
-        case '-': return displayRaw(" − ", "-", "-");
-        case ',': return displayRaw(", ", ",", ",");
-        case ';': return displayRaw("; ", ";", ";");
-        case ':': return displayRaw(": ", ":", ":");
-        case '\\': break;
-        default: return displayRaw(std::string(1, c), std::string(1, c), std::string(1, c));
+            case '=': return displayRaw(" = ", "=", "=");
+            case '+': return displayRaw(" + ", "+", "+");
+            case '-': return displayRaw(" − ", "-", "-");
+            case ',': return displayRaw(", ", ",", ",");
+            case ';': return displayRaw("; ", ";", ";");
+            case ':': return displayRaw(": ", ":", ":");
+            case '\\': break;
+            default: return displayRaw(std::string(1, c), std::string(1, c), std::string(1, c));
         }
         std::size_t j = at_;
         while (j < s_.size() && std::isalpha(static_cast<unsigned char>(s_[j]))) ++j;

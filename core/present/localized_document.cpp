@@ -42,9 +42,21 @@ DisplayPtr renamed(const DisplayPtr& node, const NotationSymbols& n) {
 void relabel(DisplayItem& item, const NotationSymbols& n, bool robot) {
     const std::string of = "(" + (robot ? n.vectorLatex : std::string("q")) + ")";
     switch (item.quantity) {
-        case Quantity::MassMatrix: item.name = n.mass; item.latexName = n.mass + of; item.entryLetter = n.massEntry; break;
-        case Quantity::GravityVector: item.name = n.gravity; item.latexName = n.gravity + of; item.entryLetter = n.gravity; break;
-        case Quantity::GeneralizedForces: item.name = n.force; item.latexName = n.forceLatex; item.entryLetter = n.force; break;
+        case Quantity::MassMatrix:
+            item.name = n.mass;
+            item.latexName = n.mass + of;
+            item.entryLetter = n.massEntry;
+            break;
+        case Quantity::GravityVector:
+            item.name = n.gravity;
+            item.latexName = n.gravity + of;
+            item.entryLetter = n.gravity;
+            break;
+        case Quantity::GeneralizedForces:
+            item.name = n.force;
+            item.latexName = n.forceLatex;
+            item.entryLetter = n.force;
+            break;
         default: return;
     }
     item.equation = displayEquation(displayLabel(item.name, item.latexName), item.value);
@@ -69,7 +81,8 @@ void writeFormula(DisplayStep& step, const FormulaReader& reader) {
 std::string actuationSentence(const std::vector<int>& actuated, const std::vector<std::string>& coordinates, Language language) {
     return actuationText(actuated, coordinates,
                          {messageText(MessageId::ActuationNoInputs, language), messageText(MessageId::ActuationInputsOn, language),
-                          messageText(MessageId::ActuationUnderactuated, language), messageText(MessageId::ActuationFullyActuated, language)});
+                          messageText(MessageId::ActuationUnderactuated, language),
+                          messageText(MessageId::ActuationFullyActuated, language)});
 }
 
 std::shared_ptr<DisplayDocument> localizedDocument(const DisplayDocument& document, const Presentation& p) {
@@ -100,8 +113,8 @@ std::shared_ptr<DisplayDocument> localizedDocument(const DisplayDocument& docume
     const NameRules rules{document.coordinateNames, document.robot, {}};
     std::vector<std::string> shown, latex, marks;
     for (const std::string& name : document.coordinateNames) {
-        const DisplayPtr symbol = rename ? renamed(symbolNode(name, symbolMeaning(name, rules), rules), n)
-                                         : symbolNode(name, symbolMeaning(name, rules), rules);
+        const DisplayPtr symbol =
+            rename ? renamed(symbolNode(name, symbolMeaning(name, rules), rules), n) : symbolNode(name, symbolMeaning(name, rules), rules);
         shown.push_back(renderDisplay(*symbol, DisplayStyle::Text));
         latex.push_back("$" + renderDisplay(*symbol, DisplayStyle::Latex) + "$");
         marks.push_back("@" + std::to_string(marks.size()) + "@");

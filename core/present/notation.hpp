@@ -17,15 +17,15 @@ std::optional<Notation> notationNamed(std::string_view name);
 const char* notationName(Notation notation);
 
 struct NotationSymbols {
-    std::string mass;          // B, D, M: the mass matrix's letter …
-    std::string massEntry;     // b, d, m: … and its entries'
-    std::string gravity;       // g, G
-    std::string force;         // Q, τ: the generalized forces (text)
-    std::string forceLatex;    // Q, \tau
-    std::string coordinate;    // q, θ: a joint variable's letter (text)
+    std::string mass;             // B, D, M: the mass matrix's letter …
+    std::string massEntry;        // b, d, m: … and its entries'
+    std::string gravity;          // g, G
+    std::string force;            // Q, τ: the generalized forces (text)
+    std::string forceLatex;       // Q, \tau
+    std::string coordinate;       // q, θ: a joint variable's letter (text)
     std::string coordinateLatex;  // q, \theta
-    std::string vectorLatex;   // q, \Theta: the vector of joint variables (B(q), M(Θ))
-    bool modifiedDH = false;   // the DH convention the textbook uses
+    std::string vectorLatex;      // q, \Theta: the vector of joint variables (B(q), M(Θ))
+    bool modifiedDH = false;      // the DH convention the textbook uses
 };
 
 const NotationSymbols& notationSymbols(Notation notation);

@@ -23,12 +23,19 @@ struct Writer {
             case FormulaLetter::MassMatrix: return n.mass;
             case FormulaLetter::MassEntry: return n.massEntry;
             case FormulaLetter::Gravity: return n.gravity;
-            case FormulaLetter::Force: return style == Spelling::Latex ? n.forceLatex : style == Spelling::Unicode || n.force == "Q" ? n.force : "tau";
+            case FormulaLetter::Force:
+                return style == Spelling::Latex ? n.forceLatex : style == Spelling::Unicode || n.force == "Q" ? n.force : "tau";
             case FormulaLetter::JointVector:
-                base = style == Spelling::Latex ? (reader.robot ? n.vectorLatex : "q") : !renamed ? "q" : style == Spelling::Unicode ? "Θ" : "Theta";
+                base = style == Spelling::Latex     ? (reader.robot ? n.vectorLatex : "q")
+                       : !renamed                   ? "q"
+                       : style == Spelling::Unicode ? "Θ"
+                                                    : "Theta";
                 break;
             case FormulaLetter::JointVariable:
-                base = style == Spelling::Latex ? (reader.robot ? n.coordinateLatex : "q") : !renamed ? "q" : style == Spelling::Unicode ? n.coordinate : "theta";
+                base = style == Spelling::Latex     ? (reader.robot ? n.coordinateLatex : "q")
+                       : !renamed                   ? "q"
+                       : style == Spelling::Unicode ? n.coordinate
+                                                    : "theta";
                 break;
         }
         if (style == Spelling::Latex && p.dots > 0) base = (p.dots == 1 ? "\\dot{" : "\\ddot{") + base + "}";
@@ -51,7 +58,8 @@ struct Writer {
         std::vector<std::size_t> between;      // … and which argument stands after segments[k]
         for (std::size_t at = 0; at < source.size(); ++at) {
             const std::size_t k = at + 2 < source.size() && source[at] == '{' && source[at + 2] == '}'
-                                      ? static_cast<std::size_t>(source[at + 1] - '1') : p.args.size();
+                                      ? static_cast<std::size_t>(source[at + 1] - '1')
+                                      : p.args.size();
             if (k >= p.args.size()) {
                 segments.back() += source[at];
                 continue;
@@ -76,11 +84,11 @@ struct Writer {
                 case FormulaPiece::Kind::Letter: out += letter(p); break;
                 case FormulaPiece::Kind::Words: out += words(p); break;
                 case FormulaPiece::Kind::Actuation: {
-                    const std::string sentence =
-                        actuationText(p.actuated, p.coordinates,
-                                      {messageText(MessageId::ActuationNoInputs, reader.language), messageText(MessageId::ActuationInputsOn, reader.language),
-                                       messageText(MessageId::ActuationUnderactuated, reader.language),
-                                       messageText(MessageId::ActuationFullyActuated, reader.language)});
+                    const std::string sentence = actuationText(p.actuated, p.coordinates,
+                                                               {messageText(MessageId::ActuationNoInputs, reader.language),
+                                                                messageText(MessageId::ActuationInputsOn, reader.language),
+                                                                messageText(MessageId::ActuationUnderactuated, reader.language),
+                                                                messageText(MessageId::ActuationFullyActuated, reader.language)});
                     out += style == Spelling::Latex ? "\\text{" + latexText(sentence) + "}" : sentence;
                     break;
                 }

@@ -22,8 +22,8 @@ using symbolic::lockGinac;
 using symbolic::NamedDefinition;
 
 // base_{sub}^{(link)}: Text "base" + "sub" + "(link)", LaTeX base_{sub}^{(link)}.
-std::shared_ptr<DisplayNode> scripted(const std::string& text, const std::string& latex, const std::string& sub,
-                                      const std::string& link, const std::string& plain) {
+std::shared_ptr<DisplayNode> scripted(const std::string& text, const std::string& latex, const std::string& sub, const std::string& link,
+                                      const std::string& plain) {
     auto n = std::make_shared<DisplayNode>();
     n->kind = DisplayKind::Symbol;
     n->name = n->plain = plain;
@@ -58,9 +58,8 @@ DisplayPtr derivative(const std::shared_ptr<DisplayNode>& of, const std::string&
 // when the program starts: at namespace scope they were a tenth of every command's start
 // (`lagrangelab --version` included).
 struct NamePatterns {
-    const std::regex frameName{R"(([oxyz])([xyz])(\d+)_(\d+))"}, jacobianName{R"(J([xyz])(\d+)_(\d+))"},
-        gravityName{R"(g([xyz])0_(\d+))"}, dJacobianName{R"(D([xyz])(\d+)_(\d+)_(\d+))"},
-        betaName{R"(beta(\d+)_(\d+)_(\d+))"}, gammaName{R"(gamma(\d+)_(\d+))"},
+    const std::regex frameName{R"(([oxyz])([xyz])(\d+)_(\d+))"}, jacobianName{R"(J([xyz])(\d+)_(\d+))"}, gravityName{R"(g([xyz])0_(\d+))"},
+        dJacobianName{R"(D([xyz])(\d+)_(\d+)_(\d+))"}, betaName{R"(beta(\d+)_(\d+)_(\d+))"}, gammaName{R"(gamma(\d+)_(\d+))"},
         deltaName{R"(delta(\d+)_(\d+)_(\d+)_(\d+))"}, dbName{R"(Db(\d+)_(\d+)_(\d+))"};
 };
 const NamePatterns& namePatterns() {
@@ -71,11 +70,11 @@ const NamePatterns& namePatterns() {
 // Frames: the links' own frames, where J_P, o_f and the axes are written.
 Message sectionTitle(int step) {
     switch (step) {
-    case 1: return MessageId::TitleSectionFrames;
-    case 4: return MessageId::TitleSectionJacobians;
-    case 6: return MessageId::TitleSectionPotential;
-    case 7: return MessageId::TitleSectionMassMatrix;
-    case 8: return MessageId::TitleSectionCoriolis;
+        case 1: return MessageId::TitleSectionFrames;
+        case 4: return MessageId::TitleSectionJacobians;
+        case 6: return MessageId::TitleSectionPotential;
+        case 7: return MessageId::TitleSectionMassMatrix;
+        case 8: return MessageId::TitleSectionCoriolis;
     }
     return {};
 }
@@ -85,32 +84,37 @@ StepFormula sectionFormula(int step, const StructuredDynamics& s) {
     const int n = s.n;
     StepFormula f;
     switch (step) {
-    case 1:
-        f = stepFormula("«1»", R"(T_i^0 = A_1 A_2 \cdots A_i,\quad {}^{(i)}x_f,\ {}^{(i)}y_f,\ {}^{(i)}z_f,\ {}^{(i)}o_f:\ «1»)",
-                        {formulaWords(MessageId::FormulaSectionFrames)}, {formulaWords(MessageId::FormulaColumnsOf, {"(T_i^0)^{-1} T_f^0"})});
-        break;
-    case 4:
-        f = stepFormula("«1»", R"(J_{P,j}^{(i)} = z_j \times (p_{ci} - o_j)\ «1»,\quad J_{P,j}^{(i)} = z_j\ «2»,\quad J_{O,j}^{(i)} = z_j)",
-                        {formulaWords(MessageId::FormulaJacobianColumns, {"J_P,j^(i) = z_j × (p_ci − o_j)", "z_j"})},
-                        {formulaWords(MessageId::FormulaRevolute), formulaWords(MessageId::FormulaPrismatic)});
-        break;
-    case 6:
-        f = stepFormula("«g»_j = −Σ_{i≥j} m_i g0ᵀ J_P,j^(i) «1».",
-                        R"(\gamma_j^{(i)} = g_0^T J_{P,j}^{(i)},\quad «g»_j = \frac{\partial E_{\mathrm{pot}}}{\partial «q_»j} = -\sum_{i \ge j} m_i\, \gamma_j^{(i)})",
-                        {formulaWords(MessageId::FormulaForSpring, {"K_j («q_»j − «q_»j,rest)"})});
-        break;
-    case 7:
-        f = stepFormula("«b»_jk = Σ_{i≥max(j,k)} β_jk^(i) «1»; «2»",
-                        R"(\beta_{jk}^{(i)} = m_i\, J_{P,j}^{(i)T} J_{P,k}^{(i)} + z_j^T I_i\, z_k,\quad «b»_{jk} = \sum_{i \ge \max(j,k)} \beta_{jk}^{(i)})",
-                        {formulaWords(MessageId::FormulaForMotor, {"J_m G²", "«b»_jj"}),
-                         formulaWords(MessageId::FormulaDependsOnOnly, {"«b»_jk", "q_{min(j,k)+1..n}"})});
-        break;
-    case 8:
-        f = stepFormula("c_ij = Σ_k ½ (∂«b»_ij/∂«q_»k + ∂«b»_ik/∂«q_»j − ∂«b»_jk/∂«q_»i) «q'_»k;  «B» q̈ + C q̇ + «g» = «Q».  «1»",
-                        R"(c_{ij} = \sum_k \tfrac{1}{2}\left(\frac{\partial «b»_{ij}}{\partial «q_»k} + \frac{\partial «b»_{ik}}{\partial «q_»j} - \frac{\partial «b»_{jk}}{\partial «q_»i}\right)«q'_»k,\quad «B»«q''» + C«q'» + «g» = «Q»)",
-                        {formulaWords(MessageId::FormulaNonZeroDerivatives, {std::to_string(s.nonZeroMassDerivatives()),
-                                                                             std::to_string(n * n * (n + 1) / 2), "∂«b»_jk/∂q_l (j ≤ k)"})});
-        break;
+        case 1:
+            f = stepFormula("«1»", R"(T_i^0 = A_1 A_2 \cdots A_i,\quad {}^{(i)}x_f,\ {}^{(i)}y_f,\ {}^{(i)}z_f,\ {}^{(i)}o_f:\ «1»)",
+                            {formulaWords(MessageId::FormulaSectionFrames)},
+                            {formulaWords(MessageId::FormulaColumnsOf, {"(T_i^0)^{-1} T_f^0"})});
+            break;
+        case 4:
+            f = stepFormula("«1»",
+                            R"(J_{P,j}^{(i)} = z_j \times (p_{ci} - o_j)\ «1»,\quad J_{P,j}^{(i)} = z_j\ «2»,\quad J_{O,j}^{(i)} = z_j)",
+                            {formulaWords(MessageId::FormulaJacobianColumns, {"J_P,j^(i) = z_j × (p_ci − o_j)", "z_j"})},
+                            {formulaWords(MessageId::FormulaRevolute), formulaWords(MessageId::FormulaPrismatic)});
+            break;
+        case 6:
+            f = stepFormula(
+                "«g»_j = −Σ_{i≥j} m_i g0ᵀ J_P,j^(i) «1».",
+                R"(\gamma_j^{(i)} = g_0^T J_{P,j}^{(i)},\quad «g»_j = \frac{\partial E_{\mathrm{pot}}}{\partial «q_»j} = -\sum_{i \ge j} m_i\, \gamma_j^{(i)})",
+                {formulaWords(MessageId::FormulaForSpring, {"K_j («q_»j − «q_»j,rest)"})});
+            break;
+        case 7:
+            f = stepFormula(
+                "«b»_jk = Σ_{i≥max(j,k)} β_jk^(i) «1»; «2»",
+                R"(\beta_{jk}^{(i)} = m_i\, J_{P,j}^{(i)T} J_{P,k}^{(i)} + z_j^T I_i\, z_k,\quad «b»_{jk} = \sum_{i \ge \max(j,k)} \beta_{jk}^{(i)})",
+                {formulaWords(MessageId::FormulaForMotor, {"J_m G²", "«b»_jj"}),
+                 formulaWords(MessageId::FormulaDependsOnOnly, {"«b»_jk", "q_{min(j,k)+1..n}"})});
+            break;
+        case 8:
+            f = stepFormula(
+                "c_ij = Σ_k ½ (∂«b»_ij/∂«q_»k + ∂«b»_ik/∂«q_»j − ∂«b»_jk/∂«q_»i) «q'_»k;  «B» q̈ + C q̇ + «g» = «Q».  «1»",
+                R"(c_{ij} = \sum_k \tfrac{1}{2}\left(\frac{\partial «b»_{ij}}{\partial «q_»k} + \frac{\partial «b»_{ik}}{\partial «q_»j} - \frac{\partial «b»_{jk}}{\partial «q_»i}\right)«q'_»k,\quad «B»«q''» + C«q'» + «g» = «Q»)",
+                {formulaWords(MessageId::FormulaNonZeroDerivatives,
+                              {std::to_string(s.nonZeroMassDerivatives()), std::to_string(n * n * (n + 1) / 2), "∂«b»_jk/∂q_l (j ≤ k)"})});
+            break;
     }
     f.unicodeText = true;
     return f;
@@ -123,23 +127,20 @@ using notes::coordinateList;
 DisplayPtr structuredNameNode(const std::string& name) {
     const NamePatterns& p = namePatterns();
     std::smatch m;
-    if (std::regex_match(name, m, p.frameName))
-        return scripted(m[1], m[1], m[3].str() + "," + m[2].str(), m[4], name);
-    if (std::regex_match(name, m, p.jacobianName))
-        return scripted("J", "J", "P" + m[2].str() + "," + m[1].str(), m[3], name);
+    if (std::regex_match(name, m, p.frameName)) return scripted(m[1], m[1], m[3].str() + "," + m[2].str(), m[4], name);
+    if (std::regex_match(name, m, p.jacobianName)) return scripted("J", "J", "P" + m[2].str() + "," + m[1].str(), m[3], name);
     if (std::regex_match(name, m, p.gravityName)) return scripted("g", "g", "0," + m[1].str(), m[2], name);
     if (std::regex_match(name, m, p.betaName)) return scripted("β", "\\beta", joined({m[1], m[2]}), m[3], name);
     if (std::regex_match(name, m, p.gammaName)) return scripted("γ", "\\gamma", m[1], m[2], name);
     if (std::regex_match(name, m, p.dJacobianName))
         return derivative(scripted("J", "J", "P" + m[2].str() + "," + m[1].str(), m[3], name), m[4], name);
-    if (std::regex_match(name, m, p.deltaName))
-        return derivative(scripted("β", "\\beta", joined({m[1], m[2]}), m[3], name), m[4], name);
+    if (std::regex_match(name, m, p.deltaName)) return derivative(scripted("β", "\\beta", joined({m[1], m[2]}), m[3], name), m[4], name);
     if (std::regex_match(name, m, p.dbName)) return derivative(scripted("b", "b", joined({m[1], m[2]}), "", name), m[3], name);
     return displaySymbolName(name);
 }
 
-std::shared_ptr<const DisplayDocument> structuredDisplayDocument(const StructuredDynamics& s, const Message& formReason,
-                                                                 int firstStep, int lastStep, const std::atomic<bool>* cancel) {
+std::shared_ptr<const DisplayDocument> structuredDisplayDocument(const StructuredDynamics& s, const Message& formReason, int firstStep,
+                                                                 int lastStep, const std::atomic<bool>* cancel) {
     const auto lock = lockGinac();
     auto doc = std::make_shared<DisplayDocument>();
     doc->systemName = s.systemName;
@@ -201,8 +202,8 @@ std::shared_ptr<const DisplayDocument> structuredDisplayDocument(const Structure
         if (step == 7)
             for (int j = 0; j < s.n; ++j)
                 for (int k = j; k < s.n; ++k)
-                    st.items.push_back(item("b" + joined({idx(j), idx(k)}), Quantity::MassMatrixEntry, j, k, entryLabel("b", {idx(j), idx(k)}),
-                                            s.B(j, k),
+                    st.items.push_back(item("b" + joined({idx(j), idx(k)}), Quantity::MassMatrixEntry, j, k,
+                                            entryLabel("b", {idx(j), idx(k)}), s.B(j, k),
                                             message(MessageId::NoteMeaningDependsOn, notes::linkRange(std::max(j, k), s.n - 1),
                                                     coordinateList(s.coordinatesOfB(j, k), s.n))));
         if (step == 8) {
@@ -211,8 +212,8 @@ std::shared_ptr<const DisplayDocument> structuredDisplayDocument(const Structure
                                         message(MessageId::NoteDependsOn, coordinateList(s.table->coordinatesOf(s.g(j, 0)), s.n))));
             for (int i = 0; i < s.n; ++i)
                 for (int j = 0; j < s.n; ++j)
-                    st.items.push_back(
-                        item("c" + joined({idx(i), idx(j)}), Quantity::CoriolisEntry, i, j, entryLabel("c", {idx(i), idx(j)}), s.C(i, j), {}));
+                    st.items.push_back(item("c" + joined({idx(i), idx(j)}), Quantity::CoriolisEntry, i, j,
+                                            entryLabel("c", {idx(i), idx(j)}), s.C(i, j), {}));
             for (int j = 0; j < s.n; ++j)
                 if (!s.Q(j, 0).is_zero())
                     st.items.push_back(item("Q" + idx(j), Quantity::ForceEntry, j, -1, entryLabel("Q", {idx(j)}), s.Q(j, 0), {}));

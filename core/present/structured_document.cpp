@@ -20,9 +20,9 @@
 namespace ll::present {
 namespace {
 
-using symbolic::NamedDefinition;
 using symbolic::entryLabel;
 using symbolic::lockGinac;
+using symbolic::NamedDefinition;
 
 // q1, q2, … (appended: GCC 12 warns falsely, -Wrestrict, on "q" + idx(i) inlined)
 std::string coordinateName(int i) {
@@ -56,7 +56,6 @@ private:
 };
 
 using notes::coordinateList;
-
 
 // Step headings in LaTeX: their words are LaTeX, with math where the notes have it.
 Message latexStepTitle(int step) {
@@ -139,8 +138,7 @@ std::vector<int> byStep(const StructuredDynamics& s, const Selection& sel) {
     std::vector<int> order;
     for (int k = 0; k < s.table->size(); ++k)
         if (sel.definitions[k]) order.push_back(k);
-    std::stable_sort(order.begin(), order.end(),
-                     [&](int a, int b) { return s.table->entries()[a].step < s.table->entries()[b].step; });
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return s.table->entries()[a].step < s.table->entries()[b].step; });
     return order;
 }
 
@@ -193,15 +191,22 @@ void writeText(const StructuredDynamics& s, const StructuredDocumentInfo& info, 
     out << messageText(MessageId::DocumentForm, l) << ": " << messageText(info.form, l) << " (" << messageText(info.formReason, l) << ")\n";
     out << messageText(message(MessageId::StructuredSummary, sel.needed), l) << "\n";
     forEachDefinition(
-        s, sel, [&](int step) { out << "\n" << messageText(MessageId::DocumentStep, l) << " " << step << ". " << messageText(stepTitle(step), l) << "\n"; },
+        s, sel,
+        [&](int step) {
+            out << "\n" << messageText(MessageId::DocumentStep, l) << " " << step << ". " << messageText(stepTitle(step), l) << "\n";
+        },
         [&](const NamedDefinition& d) {
             out << "    " << d.name << " = " << text(d.value) << "        ("
                 << messageText(message(MessageId::NoteMeaningDependsOn, d.meaning, coordinateList(d.coordinates, s.n)), l) << ")\n";
         });
     if (!sel.entries.empty()) out << "\n" << messageText(MessageId::StructuredResults, l) << "\n";
     for (const EntryRef& e : sel.entries)
-        out << "    " << (e.matrix == 'B' ? "b" : e.matrix == 'C' ? "c" : "g") << e.label.substr(1) << " = "
-            << text(valueOf(s, e)) << "        (" << messageText(entryMeaning(s, e, notes::Style::Text), l) << ")\n";
+        out << "    "
+            << (e.matrix == 'B'   ? "b"
+                : e.matrix == 'C' ? "c"
+                                  : "g")
+            << e.label.substr(1) << " = " << text(valueOf(s, e)) << "        (" << messageText(entryMeaning(s, e, notes::Style::Text), l)
+            << ")\n";
     if (sel.checks)
         out << "    E_kin = 1/2 qd^T B qd        (" << messageText(MessageId::NoteKineticEnergyInJson, l) << ")\n"
             << "    E_pot = " << text(s.Epot) << "        (" << messageText(MessageId::NotePotentialEnergy, l) << ")\n";
@@ -209,10 +214,12 @@ void writeText(const StructuredDynamics& s, const StructuredDocumentInfo& info, 
         const int n = s.n, total = n * n * (n + 1) / 2;
         out << "\n" << messageText(message(MessageId::StructuredZeroPattern, s.nonZeroMassDerivatives(), total), l) << "\n";
         for (const std::string& row : zeroPattern(s)) out << row << "\n";
-        out << "\n" << messageText(skewSymmetric(s) ? MessageId::StructuredSkewSymmetric : MessageId::StructuredNotSkewSymmetric, l) << "\n";
+        out << "\n"
+            << messageText(skewSymmetric(s) ? MessageId::StructuredSkewSymmetric : MessageId::StructuredNotSkewSymmetric, l) << "\n";
     }
     for (const ExpandedEntry& e : info.expanded)
-        out << "\n" << messageText(message(MessageId::StructuredExpanded, e.ref.label), l) << " ("
+        out << "\n"
+            << messageText(message(MessageId::StructuredExpanded, e.ref.label), l) << " ("
             << messageText(message(MessageId::StructuredTerms, e.terms), l) << ", " << e.seconds << " s):\n    " << text(e.value) << "\n";
 }
 
@@ -235,22 +242,25 @@ void writeLatex(const StructuredDynamics& s, const StructuredDocumentInfo& info,
            "\\setlength{\\parindent}{0pt}\n"
            "\\raggedright\n"
            "\\newcommand{\\lldefinition}[2]{\\par\\hangindent=2em\\hangafter=1 #1\\\\{\\small #2}\\par\\smallskip}\n"
-           "\\title{" << messageText(message(MessageId::LatexStructuredTitle, latexText(s.systemName)), l) << "}\n"
+           "\\title{"
+        << messageText(message(MessageId::LatexStructuredTitle, latexText(s.systemName)), l)
+        << "}\n"
            "\\author{LagrangeLab}\n\\date{}\n"
            "\\begin{document}\n\\maketitle\n"
-        << messageText(MessageId::DocumentForm, l) << ": " << messageText(info.form, l) << " (" << latexText(messageText(info.formReason, l))
-        << "). " << messageText(message(MessageId::LatexStructuredSummary, sel.needed), l) << " "
-        << latexMessageText(MessageId::DocumentShorthand, l) << ": $c_{i} = \\cos q_i$, $s_{i} = \\sin q_i$.\n";
+        << messageText(MessageId::DocumentForm, l) << ": " << messageText(info.form, l) << " ("
+        << latexText(messageText(info.formReason, l)) << "). " << messageText(message(MessageId::LatexStructuredSummary, sel.needed), l)
+        << " " << latexMessageText(MessageId::DocumentShorthand, l) << ": $c_{i} = \\cos q_i$, $s_{i} = \\sin q_i$.\n";
     forEachDefinition(
-        s, sel, [&](int step) {
+        s, sel,
+        [&](int step) {
             out << "\\section*{" << messageText(MessageId::DocumentStep, l) << " " << step << "}\n"
                 << messageText(latexStepTitle(step), l) << "\n\\medskip\n";
         },
         [&](const NamedDefinition& d) {
-            out << "\\lldefinition{$" << latex(d.symbol) << " = " << latex(d.value) << "$}{$" << d.latex
-                << "$: "
+            out << "\\lldefinition{$" << latex(d.symbol) << " = " << latex(d.value) << "$}{$" << d.latex << "$: "
                 << latexMessageText(message(MessageId::NoteMeaningDependsOn, latexText(messageText(d.meaning, l)),
-                                            coordinateList(d.coordinates, s.n, notes::Style::Latex)), l)
+                                            coordinateList(d.coordinates, s.n, notes::Style::Latex)),
+                                    l)
                 << "}\n";
         });
     if (!sel.entries.empty()) out << "\\section*{" << latexMessageText(MessageId::StructuredResults, l) << "}\n";
@@ -258,8 +268,10 @@ void writeLatex(const StructuredDynamics& s, const StructuredDocumentInfo& info,
         out << "\\lldefinition{$" << entryName(e) << " = " << latex(valueOf(s, e)) << "$}{"
             << latexMessageText(entryMeaning(s, e, notes::Style::Latex), l) << "}\n";
     if (sel.checks)
-        out << "\\lldefinition{$E_{\\mathrm{kin}} = \\tfrac{1}{2}\\,\\dot q^{T} B\\,\\dot q$}{" << latexMessageText(MessageId::NoteKineticEnergy, l) << "}\n"
-            << "\\lldefinition{$E_{\\mathrm{pot}} = " << latex(s.Epot) << "$}{" << latexMessageText(MessageId::NotePotentialEnergy, l) << "}\n";
+        out << "\\lldefinition{$E_{\\mathrm{kin}} = \\tfrac{1}{2}\\,\\dot q^{T} B\\,\\dot q$}{"
+            << latexMessageText(MessageId::NoteKineticEnergy, l) << "}\n"
+            << "\\lldefinition{$E_{\\mathrm{pot}} = " << latex(s.Epot) << "$}{" << latexMessageText(MessageId::NotePotentialEnergy, l)
+            << "}\n";
     if (sel.checks) {
         const int n = s.n;
         out << "\\paragraph{" << latexMessageText(MessageId::StructuredZeroPatternHeading, l) << "} "

@@ -20,18 +20,24 @@ struct Greek {
     const char* latex;
 };
 constexpr Greek greekLetters[] = {
-    {"alpha", "α", "\\alpha"},     {"beta", "β", "\\beta"},       {"gamma", "γ", "\\gamma"},
-    {"delta", "δ", "\\delta"},     {"epsilon", "ε", "\\epsilon"}, {"varepsilon", "ε", "\\varepsilon"},
-    {"zeta", "ζ", "\\zeta"},       {"eta", "η", "\\eta"},         {"theta", "θ", "\\theta"},
-    {"vartheta", "ϑ", "\\vartheta"}, {"iota", "ι", "\\iota"},     {"kappa", "κ", "\\kappa"},
-    {"lambda", "λ", "\\lambda"},   {"mu", "μ", "\\mu"},           {"nu", "ν", "\\nu"},
-    {"xi", "ξ", "\\xi"},           {"pi", "π", "\\pi"},           {"rho", "ρ", "\\rho"},
-    {"sigma", "σ", "\\sigma"},     {"tau", "τ", "\\tau"},         {"upsilon", "υ", "\\upsilon"},
-    {"phi", "φ", "\\phi"},         {"varphi", "φ", "\\varphi"},   {"chi", "χ", "\\chi"},
-    {"psi", "ψ", "\\psi"},         {"omega", "ω", "\\omega"},     {"Gamma", "Γ", "\\Gamma"},
-    {"Delta", "Δ", "\\Delta"},     {"Theta", "Θ", "\\Theta"},     {"Lambda", "Λ", "\\Lambda"},
-    {"Xi", "Ξ", "\\Xi"},           {"Pi", "Π", "\\Pi"},           {"Sigma", "Σ", "\\Sigma"},
-    {"Upsilon", "Υ", "\\Upsilon"}, {"Phi", "Φ", "\\Phi"},         {"Psi", "Ψ", "\\Psi"},
+    {"alpha", "α", "\\alpha"},     {"beta", "β", "\\beta"},
+    {"gamma", "γ", "\\gamma"},     {"delta", "δ", "\\delta"},
+    {"epsilon", "ε", "\\epsilon"}, {"varepsilon", "ε", "\\varepsilon"},
+    {"zeta", "ζ", "\\zeta"},       {"eta", "η", "\\eta"},
+    {"theta", "θ", "\\theta"},     {"vartheta", "ϑ", "\\vartheta"},
+    {"iota", "ι", "\\iota"},       {"kappa", "κ", "\\kappa"},
+    {"lambda", "λ", "\\lambda"},   {"mu", "μ", "\\mu"},
+    {"nu", "ν", "\\nu"},           {"xi", "ξ", "\\xi"},
+    {"pi", "π", "\\pi"},           {"rho", "ρ", "\\rho"},
+    {"sigma", "σ", "\\sigma"},     {"tau", "τ", "\\tau"},
+    {"upsilon", "υ", "\\upsilon"}, {"phi", "φ", "\\phi"},
+    {"varphi", "φ", "\\varphi"},   {"chi", "χ", "\\chi"},
+    {"psi", "ψ", "\\psi"},         {"omega", "ω", "\\omega"},
+    {"Gamma", "Γ", "\\Gamma"},     {"Delta", "Δ", "\\Delta"},
+    {"Theta", "Θ", "\\Theta"},     {"Lambda", "Λ", "\\Lambda"},
+    {"Xi", "Ξ", "\\Xi"},           {"Pi", "Π", "\\Pi"},
+    {"Sigma", "Σ", "\\Sigma"},     {"Upsilon", "Υ", "\\Upsilon"},
+    {"Phi", "Φ", "\\Phi"},         {"Psi", "Ψ", "\\Psi"},
     {"Omega", "Ω", "\\Omega"},
 };
 
@@ -62,7 +68,8 @@ struct LatexName {
 // theta1 → \theta_{1}, lc2 → \ell_{c2}, Ixx1 → I_{xx,1}, xc1 → x_{c1}, m_cart → m_{\mathrm{cart}}.
 LatexName latexName(std::string_view name) {
     for (std::string_view p : {"Ixx", "Iyy", "Izz", "Ixy", "Ixz", "Iyz"})
-        if (name.starts_with(p) && allDigits(name.substr(3))) return {"I", std::string(name.substr(1, 2)) + "," + std::string(name.substr(3))};
+        if (name.starts_with(p) && allDigits(name.substr(3)))
+            return {"I", std::string(name.substr(1, 2)) + "," + std::string(name.substr(3))};
     if (name.starts_with("lc") && allDigits(name.substr(2))) return {"\\ell", std::string(name.substr(1))};
     if (const auto underscore = name.find('_'); underscore != std::string_view::npos && underscore > 0) {
         LatexName base = latexName(name.substr(0, underscore));

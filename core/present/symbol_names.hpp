@@ -19,8 +19,8 @@ struct SymbolMeaning {
     // A c/s symbol's angle indices (c12: 1, 2); a coordinate's or velocity's position
     // among the coordinates (1-based); else the name's trailing number (m2: 2); empty: none.
     std::vector<int> indices;
-    std::string base;   // a velocity's coordinate (theta1 for theta1_dot, q1 for qd1)
-    char trigKind = 0;  // 'c' or 's' for a Trig symbol
+    std::string base;     // a velocity's coordinate (theta1 for theta1_dot, q1 for qd1)
+    char trigKind = 0;    // 'c' or 's' for a Trig symbol
     bool second = false;  // an acceleration (qdd1, theta1_ddot)
 };
 

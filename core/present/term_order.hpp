@@ -26,7 +26,7 @@ struct TermKey {
     int maxIndex = -1;            // of every other symbol
     bool trig = false;
     GiNaC::numeric degree = 0;
-    std::string text;             // Plain, without the coefficient
+    std::string text;  // Plain, without the coefficient
     // What a symbol adds (its power given): its velocity indices or its largest index,
     // and whether it is a c/s.
     void add(const SymbolMeaning& symbol, int power);

@@ -58,7 +58,8 @@ void itemSpans(const DisplayItem& item, const std::string& text, int first, int 
             for (std::size_t r = 0; r < rows; ++r)
                 for (std::size_t c = 0; c < cols; ++c)
                     if (!isZeroNumber(*value.rows[r][c])) {
-                        const std::string entry = "  " + entryName(item, r, c) + " = " + renderDisplay(*value.rows[r][c], DisplayStyle::Text);
+                        const std::string entry =
+                            "  " + entryName(item, r, c) + " = " + renderDisplay(*value.rows[r][c], DisplayStyle::Text);
                         out.push_back({line, 0, columnsOf(entry), step, index, static_cast<int>(r), static_cast<int>(c)});
                         line += lineCount(entry);
                     }
@@ -73,12 +74,12 @@ void itemSpans(const DisplayItem& item, const std::string& text, int first, int 
                     cell[r][c] = renderDisplay(*value.rows[r][c], DisplayStyle::Text);
                     width[c] = std::max(width[c], columnsOf(cell[r][c]));
                 }
-            const int left = columnsOf(renderDisplay(*item.equation->children[0], DisplayStyle::Text)) +
-                             columnsOf(item.equation->text) + 2;
+            const int left = columnsOf(renderDisplay(*item.equation->children[0], DisplayStyle::Text)) + columnsOf(item.equation->text) + 2;
             for (std::size_t r = 0; r < rows; ++r) {
                 int from = left;
                 for (std::size_t c = 0; c < cols; ++c) {
-                    out.push_back({first + static_cast<int>(r), from, from + width[c], step, index, static_cast<int>(r), static_cast<int>(c)});
+                    out.push_back(
+                        {first + static_cast<int>(r), from, from + width[c], step, index, static_cast<int>(r), static_cast<int>(c)});
                     from += width[c] + 2;
                 }
             }
@@ -96,8 +97,7 @@ std::string itemText(const DisplayItem& item, Language language) {
     bool tooWide = false;
     if (item.value->kind == DisplayKind::Matrix)
         for (const auto& row : item.value->rows)
-            for (const DisplayPtr& cell : row)
-                tooWide = tooWide || textColumnsAtLeast(*cell, maxTextMatrixRow + 1) > maxTextMatrixRow;
+            for (const DisplayPtr& cell : row) tooWide = tooWide || textColumnsAtLeast(*cell, maxTextMatrixRow + 1) > maxTextMatrixRow;
     if (!tooWide) {
         std::string whole = renderDisplay(*item.equation, DisplayStyle::Text);
         if (item.value->kind != DisplayKind::Matrix || widestLine(whole) <= maxTextMatrixRow) return whole;
@@ -105,8 +105,8 @@ std::string itemText(const DisplayItem& item, Language language) {
     // Too wide to read as a block: the entries one by one, under the matrix's name.
     const auto& rows = item.value->rows;
     const bool zeros = hasZeroEntry(*item.value);  // left out, and said so
-    std::string out = item.name + " (" + std::to_string(rows.size()) + "×" + std::to_string(rows.empty() ? 0 : rows[0].size()) +
-                      "), " + messageText(MessageId::DocumentEntryByEntry, language) +
+    std::string out = item.name + " (" + std::to_string(rows.size()) + "×" + std::to_string(rows.empty() ? 0 : rows[0].size()) + "), " +
+                      messageText(MessageId::DocumentEntryByEntry, language) +
                       (zeros ? ", " + messageText(MessageId::DocumentZerosLeftOut, language) + ":" : ":");
     for (std::size_t r = 0; r < rows.size(); ++r)
         for (std::size_t c = 0; c < rows[r].size(); ++c)
@@ -118,7 +118,8 @@ std::string textDocument(const DisplayDocument& document, std::vector<TextSpan>*
     std::string out = document.systemName + "\n" + std::string(document.systemName.size(), '=') + "\n";
     const Language l = document.language;
     if (!document.form.empty())
-        out += messageText(MessageId::DocumentForm, l) + ": " + messageText(document.form, l) + " (" + messageText(document.formReason, l) + ")\n";
+        out += messageText(MessageId::DocumentForm, l) + ": " + messageText(document.form, l) + " (" + messageText(document.formReason, l) +
+               ")\n";
     if (!document.remark.empty()) out += messageText(document.remark, l) + "\n";
     int line = lineCount(out) - 1;  // the line being written
     for (std::size_t s = 0; s < document.steps.size(); ++s) {

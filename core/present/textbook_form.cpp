@@ -32,8 +32,8 @@ std::size_t size(const ex& e) {
 // m, m1, m_cart: a mass, by the naming rules of derivation.hpp.
 bool isMassName(const std::string& name, std::string& digits) {
     digits = name.substr(std::min<std::size_t>(1, name.size()));
-    const bool numbered = !digits.empty() && digits.size() < 9 &&
-                          std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
+    const bool numbered =
+        !digits.empty() && digits.size() < 9 && std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
     if (!numbered) digits.clear();
     return name == "m" || (name[0] == 'm' && (name[1] == '_' || numbered));
 }
@@ -54,8 +54,7 @@ GiNaC::ex commonFactor(const GiNaC::ex& e, const std::vector<GiNaC::symbol>& vel
                 coef = GiNaC::ex_to<GiNaC::numeric>(f);
             } else if (GiNaC::is_a<GiNaC::symbol>(f)) {
                 here[f] = 1;
-            } else if (GiNaC::is_a<GiNaC::power>(f) && GiNaC::is_a<GiNaC::symbol>(f.op(0)) &&
-                       f.op(1).info(GiNaC::info_flags::posint)) {
+            } else if (GiNaC::is_a<GiNaC::power>(f) && GiNaC::is_a<GiNaC::symbol>(f.op(0)) && f.op(1).info(GiNaC::info_flags::posint)) {
                 here[f.op(0)] = GiNaC::ex_to<GiNaC::numeric>(f.op(1)).to_int();
             }
         }
@@ -95,8 +94,7 @@ GiNaC::ex commonFactor(const GiNaC::ex& e, const std::vector<GiNaC::symbol>& vel
 
 }  // namespace
 
-TextbookForm::TextbookForm(const symbolic::Derivation& d)
-    : d_(d), robot_(d.system == symbolic::SystemKind::Robot), combiner_(d.q) {}
+TextbookForm::TextbookForm(const symbolic::Derivation& d) : d_(d), robot_(d.system == symbolic::SystemKind::Robot), combiner_(d.q) {}
 
 Grouping TextbookForm::plainGrouping() const { return robot_ ? Grouping::Masses : Grouping::Parameters; }
 
@@ -204,15 +202,12 @@ GiNaC::ex collectForDisplay(const ex& e, const std::vector<GiNaC::symbol>& group
             }
             if (key[g]) cofactor = cofactor * GiNaC::pow(s, -key[g]);
         }
-        if (std::all_of(key.begin(), key.end(), [](int k) { return k == 0; }))
-            single += term;
-        else
-            groups[key].push_back(cofactor);
+        if (std::all_of(key.begin(), key.end(), [](int k) { return k == 0; })) single += term;
+        else groups[key].push_back(cofactor);
     };
     if (is_a<GiNaC::add>(x))
         for (const ex& t : x) addTerm(t);
-    else
-        addTerm(x);
+    else addTerm(x);
     ex result = single;
     for (const auto& [key, cofactors] : groups) {
         ex monomial = 1;

@@ -56,8 +56,7 @@ inline std::string fmt(double v) {
 // slowest non-zero mode, which is what the step could follow otherwise.
 class StiffnessMonitor {
 public:
-    StiffnessMonitor(OdeSystem& system, const IntegrationSettings& settings, double t0, double t1,
-                     IntegrationCounts& counts)
+    StiffnessMonitor(OdeSystem& system, const IntegrationSettings& settings, double t0, double t1, IntegrationCounts& counts)
         : system_(system), settings_(settings), t0_(t0), t1_(t1), counts_(counts) {
         const IntegratorInfo* info = findIntegrator(settings.integrator);
         enabled_ = settings.detectStiffness && info->adaptive && settings.integrator != "rosenbrock4";
@@ -86,8 +85,7 @@ public:
         if (!(hMean * fastest >= 1.0 && fastest >= kRatio * slowest)) return;
         throw IntegrationError(t, state,
                                message(MessageId::SceneStiffFor, settings_.integrator, fmt(t), fmt(hMean), fmt(fastest),
-                                       fmt(2 * 3.14159265358979323846 / fastest), fmt(fastest / slowest), fmt(slowest),
-                                       fmt(projected)));
+                                       fmt(2 * 3.14159265358979323846 / fastest), fmt(fastest / slowest), fmt(slowest), fmt(projected)));
     }
 
 private:
@@ -209,8 +207,7 @@ void runDense(DenseStepper stepper, System rhs, OdeSystem& system, State& x, con
 
 template <class ControlledStepper, class System, class V>
 void runControlled(ControlledStepper stepper, System rhs, OdeSystem& system, State& x, const std::vector<double>& times,
-                   const IntegrationSettings& settings, const OutputObserver& observe, const Guard& guard,
-                   IntegrationCounts& counts) {
+                   const IntegrationSettings& settings, const OutputObserver& observe, const Guard& guard, IntegrationCounts& counts) {
     double t = times.front(), dt = settings.dt;
     event(system, t, x);
     if (!observe(t, x)) return;
@@ -282,8 +279,7 @@ struct FixedStepGrid {
 // the cubic with both ends' values and slopes: q from q and q̇, q̇ from q̇ and q̈, W from W
 // and Qᵀq̇. Its error is O(h⁴), so it keeps rk4's order; a component at rest (Δ = 0,
 // f0 = f1 = 0, e.g. a stuck joint) stays exactly constant.
-inline void hermite(const State& x0, const State& f0, const State& x1, const State& f1, double h, double theta,
-                    State& out) {
+inline void hermite(const State& x0, const State& f0, const State& x1, const State& f1, double h, double theta, State& out) {
     for (size_t i = 0; i < out.size(); ++i) {
         const double d = x1[i] - x0[i];
         out[i] = x0[i] + theta * d + theta * (theta - 1) * ((1 - 2 * theta) * d + (theta - 1) * h * f0[i] + theta * h * f1[i]);
@@ -298,8 +294,8 @@ inline void hermite(const State& x0, const State& f0, const State& x1, const Sta
 // shorter to end just past the crossing (OdeSystem::eventFraction); after the event the
 // next step goes on to the same grid point, so the grid never shifts.
 template <class Stepper>
-void runFixed(Stepper stepper, OdeSystem& system, State& x, const std::vector<double>& times,
-              const IntegrationSettings& settings, const OutputObserver& observe, const Guard& guard) {
+void runFixed(Stepper stepper, OdeSystem& system, State& x, const std::vector<double>& times, const IntegrationSettings& settings,
+              const OutputObserver& observe, const Guard& guard) {
     double t = times.front();
     event(system, t, x);
     if (!observe(t, x) || times.size() < 2) return;

@@ -16,11 +16,9 @@ namespace odeint = boost::numeric::odeint;
 
 const std::vector<IntegratorInfo>& integratorCatalogue() {
     static const std::vector<IntegratorInfo> catalogue = {
-        {"euler", 1, false, "explicit Euler, fixed step",
-         "teaching only: shows first-order error and energy growth; needs tiny steps"},
+        {"euler", 1, false, "explicit Euler, fixed step", "teaching only: shows first-order error and energy growth; needs tiny steps"},
         {"midpoint", 2, false, "explicit midpoint (RK2), fixed step", "cheap smooth demos; error falls with dt²"},
-        {"rk4", 4, false, "classical Runge–Kutta, fixed step",
-         "smooth problems at a known step size, e.g. fixed-rate animation"},
+        {"rk4", 4, false, "classical Runge–Kutta, fixed step", "smooth problems at a known step size, e.g. fixed-rate animation"},
         {"symplectic_euler", 1, false, "semi-implicit Euler, fixed step (q̇ first, then q with the new q̇)",
          "game/robot-simulator style; energy error stays bounded over long runs on conservative scenes"},
         {"cash_karp54", 5, true, "embedded Runge–Kutta 5(4), error controlled", "general purpose, non-stiff"},
@@ -29,8 +27,7 @@ const std::vector<IntegratorInfo>& integratorCatalogue() {
         {"fehlberg78", 8, true, "Runge–Kutta–Fehlberg 7(8), error controlled", "tight tolerances on smooth scenes"},
         {"bulirsch_stoer", 0, true, "Bulirsch–Stoer extrapolation (variable order), error controlled",
          "very tight tolerances on smooth scenes"},
-        {"rosenbrock4", 4, true,
-         "linearly implicit Rosenbrock 4(3), error controlled; Jacobian by central differences",
+        {"rosenbrock4", 4, true, "linearly implicit Rosenbrock 4(3), error controlled; Jacobian by central differences",
          "stiff scenes (a stiff joint spring on a slow arm) where explicit methods crawl at their stability limit"},
     };
     return catalogue;
@@ -111,8 +108,8 @@ void numericJacobian(OdeSystem& system, const OdeState& x, double t, Eigen::Matr
 
 using namespace detail;
 
-IntegrationCounts integrate(OdeSystem& system, OdeState& x, const std::vector<double>& times,
-                            const IntegrationSettings& settings, const OutputObserver& observe) {
+IntegrationCounts integrate(OdeSystem& system, OdeState& x, const std::vector<double>& times, const IntegrationSettings& settings,
+                            const OutputObserver& observe) {
     if (!findIntegrator(settings.integrator))
         throw std::invalid_argument("unknown integrator '" + settings.integrator + "' (known: " + integratorNames() + ")");
     if (times.empty()) return {};
@@ -123,32 +120,26 @@ IntegrationCounts integrate(OdeSystem& system, OdeState& x, const std::vector<do
     const double abs = settings.absTol, rel = settings.relTol;
     const auto rhs = std::ref(system);
     try {
-        if (name == "euler")
-            runFixed(odeint::euler<State>(), system, x, times, settings, observe, guard);
-        else if (name == "midpoint")
-            runFixed(Midpoint(), system, x, times, settings, observe, guard);
-        else if (name == "rk4")
-            runFixed(odeint::runge_kutta4<State>(), system, x, times, settings, observe, guard);
-        else if (name == "symplectic_euler")
-            runFixed(SymplecticEuler(system.coordinates()), system, x, times, settings, observe, guard);
+        if (name == "euler") runFixed(odeint::euler<State>(), system, x, times, settings, observe, guard);
+        else if (name == "midpoint") runFixed(Midpoint(), system, x, times, settings, observe, guard);
+        else if (name == "rk4") runFixed(odeint::runge_kutta4<State>(), system, x, times, settings, observe, guard);
+        else if (name == "symplectic_euler") runFixed(SymplecticEuler(system.coordinates()), system, x, times, settings, observe, guard);
         else if (name == "cash_karp54")
             runControlled<decltype(odeint::make_controlled(abs, rel, odeint::runge_kutta_cash_karp54<State>())), decltype(rhs), State>(
-                odeint::make_controlled(abs, rel, odeint::runge_kutta_cash_karp54<State>()), rhs, system, x, times, settings,
-                observe, guard, counts);
+                odeint::make_controlled(abs, rel, odeint::runge_kutta_cash_karp54<State>()), rhs, system, x, times, settings, observe,
+                guard, counts);
         else if (name == "dopri5")
             runDense<decltype(odeint::make_dense_output(abs, rel, odeint::runge_kutta_dopri5<State>())), decltype(rhs), State>(
-                odeint::make_dense_output(abs, rel, odeint::runge_kutta_dopri5<State>()), rhs, system, x, times, settings,
-                observe, guard);
+                odeint::make_dense_output(abs, rel, odeint::runge_kutta_dopri5<State>()), rhs, system, x, times, settings, observe, guard);
         else if (name == "fehlberg78")
             runControlled<decltype(odeint::make_controlled(abs, rel, odeint::runge_kutta_fehlberg78<State>())), decltype(rhs), State>(
-                odeint::make_controlled(abs, rel, odeint::runge_kutta_fehlberg78<State>()), rhs, system, x, times, settings,
-                observe, guard, counts);
+                odeint::make_controlled(abs, rel, odeint::runge_kutta_fehlberg78<State>()), rhs, system, x, times, settings, observe, guard,
+                counts);
         else if (name == "bulirsch_stoer")
             // Stepped to each output time: its dense output misses the tolerance by up to 50x.
-            runControlled<odeint::bulirsch_stoer<State>, decltype(rhs), State>(odeint::bulirsch_stoer<State>(abs, rel), rhs,
-                                                                                system, x, times, settings, observe, guard, counts);
-        else if (name == "rosenbrock4")
-            detail::runRosenbrock4(system, x, times, settings, observe, guard, counts);
+            runControlled<odeint::bulirsch_stoer<State>, decltype(rhs), State>(odeint::bulirsch_stoer<State>(abs, rel), rhs, system, x,
+                                                                               times, settings, observe, guard, counts);
+        else if (name == "rosenbrock4") detail::runRosenbrock4(system, x, times, settings, observe, guard, counts);
     } catch (IntegrationError& e) {
         e.setCounts(counts);
         throw;

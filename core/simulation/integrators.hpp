@@ -25,8 +25,7 @@ struct IntegratorInfo {
 
 const std::vector<IntegratorInfo>& integratorCatalogue();
 const IntegratorInfo* findIntegrator(const std::string& name);  // nullptr if unknown
-std::string integratorNames();                                   // "euler, midpoint, ..."
-
+std::string integratorNames();                                  // "euler, midpoint, ..."
 
 struct IntegrationCounts {
     long steps = 0;
@@ -40,8 +39,7 @@ struct IntegrationCounts {
 
 // ∂f/∂x by central differences, step h_j = ε^(1/3) max(|x_j|, 1) per component (exact
 // [0 I 0] for the rows q' = q̇), and ∂f/∂t (if dfdt is given) the same way.
-void numericJacobian(OdeSystem& system, const OdeState& x, double t, Eigen::MatrixXd& J,
-                     Eigen::VectorXd* dfdt = nullptr);
+void numericJacobian(OdeSystem& system, const OdeState& x, double t, Eigen::MatrixXd& J, Eigen::VectorXd* dfdt = nullptr);
 
 // Thrown when integration cannot go on: non-finite state, step-size collapse,
 // step budget exhausted. message() says the time, the state and what to try; what() is
@@ -72,7 +70,7 @@ using OutputObserver = std::function<bool(double t, const OdeState& x)>;
 
 // Integrates x from times.front() through every time in `times` (increasing).
 // Throws IntegrationError, std::invalid_argument for an unknown integrator name.
-IntegrationCounts integrate(OdeSystem& system, OdeState& x, const std::vector<double>& times,
-                            const IntegrationSettings& settings, const OutputObserver& observe);
+IntegrationCounts integrate(OdeSystem& system, OdeState& x, const std::vector<double>& times, const IntegrationSettings& settings,
+                            const OutputObserver& observe);
 
 }  // namespace ll

@@ -208,8 +208,7 @@ ModelProperties checkModelProperties(const SimulationInput& input, const Traject
 
     ModelProperties out;
     for (PropertyCheck* c : {&eigen, &condition, &skew, &power, &newton, &energy}) {
-        if (c->applies)
-            c->passed = std::isfinite(c->value) && (c->atLeast ? c->value > c->tolerance : c->value <= c->tolerance);
+        if (c->applies) c->passed = std::isfinite(c->value) && (c->atLeast ? c->value > c->tolerance : c->value <= c->tolerance);
         out.checks.push_back(*c);
     }
     return out;

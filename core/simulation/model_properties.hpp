@@ -28,10 +28,10 @@ struct PropertyCheck {
     bool applies = true;      // false: not for this kind of scene (Newton–Euler for a typed Lagrangian)
     double value = 0.0;       // the worst over the run
     double tolerance = 0.0;
-    bool atLeast = false;     // passes when value ≥ tolerance (an eigenvalue), else when value ≤ tolerance
+    bool atLeast = false;  // passes when value ≥ tolerance (an eigenvalue), else when value ≤ tolerance
     bool passed = true;
-    std::string unit;         // of value and tolerance ("" for relative ones)
-    double time = 0.0;        // where the worst value occurs
+    std::string unit;   // of value and tolerance ("" for relative ones)
+    double time = 0.0;  // where the worst value occurs
     Eigen::VectorXd q;
 };
 

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-
 #include "core/math/cholesky.hpp"
 #include "core/dynamics/forward_dynamics.hpp"
 #include "core/dynamics/potential_gradient.hpp"
@@ -120,7 +119,7 @@ double RobotOde::eventFraction(const OdeState& x0, const OdeState& x1) const {
         if (s.stuck) continue;
         const double v0 = x0[n + s.joint], v1 = x1[n + s.joint];
         const double dir = s.sign != 0 ? s.sign : signOf(v0);
-        if (!(v1 * dir < 0) || !(v0 * dir > kRestSpeed)) continue;  // (from rest: afterStep's business)
+        if (!(v1 * dir < 0) || !(v0 * dir > kRestSpeed)) continue;          // (from rest: afterStep's business)
         if (std::abs(v1) <= 1e-10 * std::max(1.0, std::abs(v0))) continue;  // located closely enough
         theta = std::min(theta, v0 / (v0 - v1));
     }
@@ -213,7 +212,7 @@ void RobotOde::solveAccelerations() {
         held.erase(held.begin() + worst);
         if (held.empty()) {
             qdd_ = rhs_;
-        data_.B_llt.solveInPlace(qdd_);
+            data_.B_llt.solveInPlace(qdd_);
             return;
         }
     }
@@ -224,8 +223,9 @@ void RobotOde::operator()(const OdeState& x, OdeState& dxdt, double t) {
         evaluateForces(x, t);
         solveAccelerations();
     } catch (const SingularMassMatrix& e) {
-        throw IntegrationError(t, x, message(MessageId::AtTimeInSeconds, message(MessageId::MassMatrixSingularAtJoint, e.joint() + 1),
-                                             std::to_string(t)));  // e.what() in words
+        throw IntegrationError(t, x,
+                               message(MessageId::AtTimeInSeconds, message(MessageId::MassMatrixSingularAtJoint, e.joint() + 1),
+                                       std::to_string(t)));  // e.what() in words
     }
     const int n = data_.n;
     for (int i = 0; i < n; ++i) {
@@ -266,8 +266,9 @@ bool RobotOde::afterStep(double t, OdeState& x) {
         evaluateForces(x, t);
         solveAccelerations();
     } catch (const SingularMassMatrix& e) {
-        throw IntegrationError(t, x, message(MessageId::AtTimeInSeconds, message(MessageId::MassMatrixSingularAtJoint, e.joint() + 1),
-                                             std::to_string(t)));  // e.what() in words
+        throw IntegrationError(t, x,
+                               message(MessageId::AtTimeInSeconds, message(MessageId::MassMatrixSingularAtJoint, e.joint() + 1),
+                                       std::to_string(t)));  // e.what() in words
     }
     for (StickJoint& j : stick_) {
         if (!j.stuck || qdd_[j.joint] == 0.0) continue;

@@ -57,11 +57,11 @@ private:
         int joint = 0;
         double force = 0.0;  // F_c, summed over the joint's Stick entries
         bool stuck = false;
-        double sign = 0.0;   // direction of sliding at the last step
+        double sign = 0.0;  // direction of sliding at the last step
     };
 
     void evaluateForces(const OdeState& x, double t);  // q_, qd_, data_.B, rhs_, Q_
-    void solveAccelerations();                          // qdd_ (and the holding forces)
+    void solveAccelerations();                         // qdd_ (and the holding forces)
     void addGravity(double t);
     void addSprings(double t);
     void addViscous(double t);

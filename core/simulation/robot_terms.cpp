@@ -19,10 +19,8 @@ RobotEvaluation evaluateRobot(const Scene& scene, const Eigen::VectorXd& q, cons
     RobotEvaluation out;
     ModelTerms& m = out.terms;
     m.Q.resize(n);
-    if (tau)
-        m.Q = *tau;
-    else
-        computeExternalTorques(scene.effects, t, m.Q);
+    if (tau) m.Q = *tau;
+    else computeExternalTorques(scene.effects, t, m.Q);
     addFrictionForces(scene.effects, qd, m.Q);
 
     RobotData data(robot);
@@ -35,8 +33,8 @@ RobotEvaluation evaluateRobot(const Scene& scene, const Eigen::VectorXd& q, cons
     m.g = data.g;
     m.Ekin = kineticEnergy(data, qd);
     m.Epot = potentialEnergy(robot, data, scene.effects, q);
-    const bool finite = m.B.allFinite() && m.C.allFinite() && m.g.allFinite() && m.Q.allFinite() &&
-                        std::isfinite(m.Ekin) && std::isfinite(m.Epot);
+    const bool finite =
+        m.B.allFinite() && m.C.allFinite() && m.g.allFinite() && m.Q.allFinite() && std::isfinite(m.Ekin) && std::isfinite(m.Epot);
     if (finite) out.qdd = forwardDynamics(robot, data, scene.effects, q, qd, m.Q);
     return out;
 }

@@ -11,8 +11,8 @@
 namespace ll {
 
 struct RobotEvaluation {
-    ModelTerms terms;      // B, C, g, Q, E_kin, E_pot
-    Eigen::VectorXd qdd;   // B⁻¹(Q − C q̇ − g); empty when a term is not finite
+    ModelTerms terms;     // B, C, g, Q, E_kin, E_pot
+    Eigen::VectorXd qdd;  // B⁻¹(Q − C q̇ − g); empty when a term is not finite
 };
 
 // Q is the scene's torques at t (or `tau` in their place) plus friction at q̇. Throws

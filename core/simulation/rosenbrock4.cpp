@@ -47,8 +47,8 @@ void runRosenbrock4(OdeSystem& system, State& x, const std::vector<double>& time
     const auto pair = std::make_pair(UblasSystem{&system, &xs, &dxs}, UblasJacobian{&system, &counts});
     using Controller = odeint::rosenbrock4_controller<odeint::rosenbrock4<double>>;
     // Stepped to each output time, like Bulirsch–Stoer: its dense output is only third order.
-    runControlled<Controller, decltype(pair), UVector>(Controller(settings.absTol, settings.relTol), pair, system, x,
-                                                        times, settings, observe, guard, counts);
+    runControlled<Controller, decltype(pair), UVector>(Controller(settings.absTol, settings.relTol), pair, system, x, times, settings,
+                                                       observe, guard, counts);
 }
 
 }  // namespace ll::detail

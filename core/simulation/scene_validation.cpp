@@ -20,8 +20,7 @@ void checkFiniteAtInitialState(const Scene& scene, std::vector<Diagnostic>& out)
     if (scene.initial.q.size() != n || scene.initial.qd.size() != n) return;  // the field checks name it
     try {
         const RobotEvaluation e = evaluateRobot(scene, scene.initial.q, scene.initial.qd, 0.0);
-        if (auto bad = nonFiniteTerm(e.terms, e.qdd, scene.initial.q, scene.initial.qd, MessageId::WhereInitialState))
-            out.push_back(*bad);
+        if (auto bad = nonFiniteTerm(e.terms, e.qdd, scene.initial.q, scene.initial.qd, MessageId::WhereInitialState)) out.push_back(*bad);
     } catch (const SingularMassMatrix&) {
         // B singular at the initial state but not at q = 0: simulate() reports it there.
     }
@@ -32,8 +31,7 @@ void checkFiniteAtInitialState(const Scene& scene, std::vector<Diagnostic>& out)
 std::vector<Diagnostic> validateRobot(const RobotModel& model) {
     std::vector<Diagnostic> out = validateRobotFields(model);
     if (!hasErrors(out) && model.dof() > 0) {
-        const std::vector<Diagnostic> singular =
-            checkMassMatrixRegular(model, Eigen::VectorXd::Zero(model.dof()), unitSlipWarnings(model));
+        const std::vector<Diagnostic> singular = checkMassMatrixRegular(model, Eigen::VectorXd::Zero(model.dof()), unitSlipWarnings(model));
         out.insert(out.end(), singular.begin(), singular.end());
     }
     return out;

@@ -126,8 +126,8 @@ SimulationResult simulate(SimulationInput input, const SimulationSettings& setti
         robot.emplace(scene.robot, scene.effects);
     }
     OdeSystem& ode = lagrangian ? static_cast<OdeSystem&>(*lagrangian) : *robot;
-    OdeState x = lagrangian ? lagrangian->initialState(scene.initial.q, scene.initial.qd)
-                            : robot->initialState(scene.initial.q, scene.initial.qd);
+    OdeState x =
+        lagrangian ? lagrangian->initialState(scene.initial.q, scene.initial.qd) : robot->initialState(scene.initial.q, scene.initial.qd);
     const std::vector<double> times = outputTimes(settings.duration, settings.outputRate);
     Recorder recorder(scene, result.trajectory, lagrangian ? &*lagrangian : nullptr);
 

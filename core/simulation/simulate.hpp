@@ -30,8 +30,8 @@ using ProgressCallback = std::function<void(double fraction)>;  // 0..1, from th
 // std::invalid_argument before anything runs for an unknown integrator, a Lagrangian
 // scene without its compiled system, or an initial state of the wrong size. The input
 // is taken by value: the caller may change or destroy its own copy meanwhile.
-SimulationResult simulate(SimulationInput input, const SimulationSettings& settings,
-                          const ProgressCallback& progress = {}, const std::atomic<bool>* cancel = nullptr);
+SimulationResult simulate(SimulationInput input, const SimulationSettings& settings, const ProgressCallback& progress = {},
+                          const std::atomic<bool>* cancel = nullptr);
 
 // Output times 0, 1/rate, ..., duration (the last one exactly duration).
 std::vector<double> outputTimes(double duration, double rate);

@@ -5,7 +5,6 @@
 #include <string>
 #include <stdexcept>
 
-
 #include "core/math/cholesky.hpp"
 #include "core/dynamics/coriolis.hpp"
 #include "core/dynamics/forward_dynamics.hpp"
@@ -21,22 +20,22 @@ void complete(TorqueParts& p, const Eigen::MatrixXd& B, const Eigen::VectorXd& C
     p.coriolis = Cqd;
     p.potential = g;
     Cholesky llt(static_cast<int>(B.rows()));
-    if (llt.compute(B).info() != Eigen::Success) throw SingularMassMatrix(firstSingularJoint(B), "torqueHistory: B(q) is not positive definite");
+    if (llt.compute(B).info() != Eigen::Success)
+        throw SingularMassMatrix(firstSingularJoint(B), "torqueHistory: B(q) is not positive definite");
     p.qdd = llt.solve(p.Q() - Cqd - g);
     p.inertial = B * p.qdd;
 }
 
 }  // namespace
 
-double TorqueParts::residual() const {
-    return (inertial + coriolis + potential - Q()).cwiseAbs().maxCoeff();
-}
+double TorqueParts::residual() const { return (inertial + coriolis + potential - Q()).cwiseAbs().maxCoeff(); }
 
 TorqueHistory torqueHistory(const SimulationInput& input, const Trajectory& trajectory) {
     const Scene& scene = input.scene;
     const int n = scene.dof();
-    if (trajectory.n != n) throw std::invalid_argument("torqueHistory: the trajectory has " + std::to_string(trajectory.n) +
-                                                       " coordinates, the scene " + std::to_string(n));
+    if (trajectory.n != n)
+        throw std::invalid_argument("torqueHistory: the trajectory has " + std::to_string(trajectory.n) + " coordinates, the scene " +
+                                    std::to_string(n));
     if (scene.lagrangian && !input.lagrangian) throw std::invalid_argument("torqueHistory: a Lagrangian scene needs its compiled system");
     TorqueHistory history;
     history.t = trajectory.t;
@@ -61,8 +60,8 @@ TorqueHistory torqueHistory(const SimulationInput& input, const Trajectory& traj
             for (const ViscousFriction& f : effects.viscous) p.viscous[f.joint] += viscousFrictionForce(f.coefficient, qd[f.joint]);
             for (const CoulombFriction& f : effects.coulomb) {
                 const double v = qd[f.joint];
-                p.coulomb[f.joint] += f.model == CoulombModel::Tanh ? tanhCoulombForce(f.force, v, f.smoothing)
-                                                                    : -f.force * ((v > 0) - (v < 0));
+                p.coulomb[f.joint] +=
+                    f.model == CoulombModel::Tanh ? tanhCoulombForce(f.force, v, f.smoothing) : -f.force * ((v > 0) - (v < 0));
             }
             // q̈ as the simulation computes it (C q̇ + g by recursive Newton–Euler), the
             // parts from the Lagrangian route (Christoffel symbols, the potential's gradient):

@@ -31,10 +31,10 @@ struct Trajectory {
 
 struct SimulationStats {
     std::string integrator;
-    long steps = 0;             // accepted steps
-    long rejectedSteps = 0;     // adaptive methods only
-    long rhsEvaluations = 0;    // forward-dynamics evaluations
-    double cpuSeconds = 0.0;    // CPU time of this thread spent integrating
+    long steps = 0;           // accepted steps
+    long rejectedSteps = 0;   // adaptive methods only
+    long rhsEvaluations = 0;  // forward-dynamics evaluations
+    double cpuSeconds = 0.0;  // CPU time of this thread spent integrating
     // Fixed-step methods (0 for adaptive ones): the step dt [s] they took on the grid
     // t_k = t0 + k·dt, a last shorter step when the duration is not a multiple of dt,
     // steps that ended early at a located event (included in steps), and the samples

@@ -41,8 +41,7 @@ std::string describe(const std::string& integrator, bool adaptive, double settin
 
 void requirePositive(const std::vector<double>& values, const char* what) {
     for (double v : values)
-        if (!(std::isfinite(v) && v > 0))
-            throw std::invalid_argument(std::string(what) + " must be finite numbers > 0");
+        if (!(std::isfinite(v) && v > 0)) throw std::invalid_argument(std::string(what) + " must be finite numbers > 0");
 }
 
 }  // namespace
@@ -54,11 +53,9 @@ WorkPrecisionResult runWorkPrecision(const SimulationInput& input, const WorkPre
     if (names.empty())
         for (const IntegratorInfo& info : integratorCatalogue()) names.push_back(info.name);
     for (const std::string& name : names)
-        if (!findIntegrator(name))
-            throw std::invalid_argument("unknown integrator '" + name + "' (known: " + integratorNames() + ")");
+        if (!findIntegrator(name)) throw std::invalid_argument("unknown integrator '" + name + "' (known: " + integratorNames() + ")");
     if (!findIntegrator(settings.referenceIntegrator) || !findIntegrator(settings.referenceIntegrator)->adaptive)
-        throw std::invalid_argument("the reference integrator must be an adaptive one, got '" +
-                                    settings.referenceIntegrator + "'");
+        throw std::invalid_argument("the reference integrator must be an adaptive one, got '" + settings.referenceIntegrator + "'");
     requirePositive(settings.tolerances, "tolerances");
     requirePositive(settings.steps, "steps");
     if (settings.tolerances.empty() || settings.steps.empty())
@@ -77,8 +74,8 @@ WorkPrecisionResult runWorkPrecision(const SimulationInput& input, const WorkPre
     // Work plan: the reference (2 runs), then every point × repeats.
     long totalRuns = 2, doneRuns = 0;
     for (const std::string& name : names)
-        totalRuns += settings.repeats * static_cast<long>(findIntegrator(name)->adaptive ? settings.tolerances.size()
-                                                                                          : settings.steps.size());
+        totalRuns +=
+            settings.repeats * static_cast<long>(findIntegrator(name)->adaptive ? settings.tolerances.size() : settings.steps.size());
     const auto report = [&](const Message& what) {
         if (progress) progress(static_cast<double>(doneRuns) / static_cast<double>(totalRuns), what);
     };
@@ -106,8 +103,7 @@ WorkPrecisionResult runWorkPrecision(const SimulationInput& input, const WorkPre
     if (reference.status == SimulationStatus::Cancelled) return stopCancelled();
     if (reference.status != SimulationStatus::Completed) {
         result.status = SimulationStatus::Failed;
-        result.message = message(MessageId::ReferenceSolutionFailed, describe(ref.integrator, true, ref.tolerance),
-                                 reference.message);
+        result.message = message(MessageId::ReferenceSolutionFailed, describe(ref.integrator, true, ref.tolerance), reference.message);
         result.cpuSeconds = threadCpuSeconds() - cpuStart;
         return result;
     }
@@ -120,9 +116,8 @@ WorkPrecisionResult runWorkPrecision(const SimulationInput& input, const WorkPre
     const SimulationResult check = simulate(input, looser, {}, cancel);
     ++doneRuns;
     if (check.status == SimulationStatus::Cancelled) return stopCancelled();
-    ref.estimatedError = check.status == SimulationStatus::Completed
-                             ? finalStateError(finalState(check.trajectory), ref.finalState)
-                             : std::numeric_limits<double>::infinity();
+    ref.estimatedError = check.status == SimulationStatus::Completed ? finalStateError(finalState(check.trajectory), ref.finalState)
+                                                                     : std::numeric_limits<double>::infinity();
 
     for (const std::string& name : names) {
         const IntegratorInfo& info = *findIntegrator(name);
@@ -154,8 +149,7 @@ WorkPrecisionResult runWorkPrecision(const SimulationInput& input, const WorkPre
                     point.rhsEvaluations = run.stats.rhsEvaluations;
                     point.steps = run.stats.steps;
                     point.rejectedSteps = run.stats.rejectedSteps;
-                    point.step = info.adaptive ? (run.stats.steps > 0 ? run.stats.simulatedSeconds / run.stats.steps : 0.0)
-                                               : run.stats.dt;
+                    point.step = info.adaptive ? (run.stats.steps > 0 ? run.stats.simulatedSeconds / run.stats.steps : 0.0) : run.stats.dt;
                     point.lastStep = run.stats.lastStep;
                     if (point.completed) {
                         point.finalError = finalStateError(finalState(run.trajectory), ref.finalState);

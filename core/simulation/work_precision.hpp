@@ -27,23 +27,23 @@ struct WorkPrecisionSettings {
     std::vector<std::string> integrators;  // empty: every integrator of the catalogue
     std::vector<double> tolerances = {1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12};
     std::vector<double> steps = {1e-2, 3e-3, 1e-3, 3e-4, 1e-4};  // fixed-step methods' dt [s]
-    double duration = 0.0;                  // [s]; 0: the scene's
-    int repeats = 3;                        // CPU time is the median over repeats
-    double outputRate = 10.0;               // energy is sampled at this rate [Hz]
+    double duration = 0.0;                                       // [s]; 0: the scene's
+    int repeats = 3;                                             // CPU time is the median over repeats
+    double outputRate = 10.0;                                    // energy is sampled at this rate [Hz]
     std::string referenceIntegrator = "fehlberg78";
-    double referenceTolerance = 0.0;        // 0: min(tolerances) / 100, at least 1e-14
+    double referenceTolerance = 0.0;  // 0: min(tolerances) / 100, at least 1e-14
 };
 
 struct WorkPrecisionPoint {
     std::string integrator;
     bool adaptive = false;
-    double setting = 0.0;        // tolerance (adaptive) or dt [s] (fixed step)
-    bool completed = false;      // false: the run stopped (message says why)
+    double setting = 0.0;    // tolerance (adaptive) or dt [s] (fixed step)
+    bool completed = false;  // false: the run stopped (message says why)
     Message message;
-    double finalError = 0.0;     // see the header comment
+    double finalError = 0.0;        // see the header comment
     bool atReferenceFloor = false;  // finalError is not above the reference's own error estimate
     double maxRelEnergyDrift = 0.0;
-    double cpuSeconds = 0.0;     // median over repeats
+    double cpuSeconds = 0.0;  // median over repeats
     long rhsEvaluations = 0;
     long steps = 0;
     long rejectedSteps = 0;
@@ -68,10 +68,10 @@ struct WorkPrecisionResult {
     std::string scene;
     double duration = 0.0;
     WorkPrecisionReference reference;
-    std::vector<WorkPrecisionPoint> points;  // by integrator, then setting, as requested
+    std::vector<WorkPrecisionPoint> points;                 // by integrator, then setting, as requested
     SimulationStatus status = SimulationStatus::Completed;  // Cancelled, or Failed (reference failed)
-    Message message;  // why it stopped; empty when it completed
-    double cpuSeconds = 0.0;  // the whole analysis, this thread
+    Message message;                                        // why it stopped; empty when it completed
+    double cpuSeconds = 0.0;                                // the whole analysis, this thread
 };
 
 // fraction 0..1 and what is being run ("dopri5 tol 1e-06", "reference fehlberg78 tol 1e-12"),
@@ -81,8 +81,7 @@ using WorkPrecisionProgress = std::function<void(double fraction, const Message&
 // The scene must be valid (requireValidScene). Throws std::invalid_argument for an
 // unknown integrator name or an empty/non-positive setting list before anything runs.
 WorkPrecisionResult runWorkPrecision(const SimulationInput& input, const WorkPrecisionSettings& settings,
-                                     const WorkPrecisionProgress& progress = {},
-                                     const std::atomic<bool>* cancel = nullptr);
+                                     const WorkPrecisionProgress& progress = {}, const std::atomic<bool>* cancel = nullptr);
 
 // The error measure above, between the final states of two trajectories ([q; q̇]).
 double finalStateError(const Eigen::VectorXd& x, const Eigen::VectorXd& reference);

@@ -19,16 +19,27 @@ const char* const kDegreeProduct = "*deg_unit_ ";
 Message lookAlikeHint(char32_t c) {
     using enum MessageId;
     switch (c) {
-        case 0x2212: case 0x2013: case 0x2014: return WriteAsciiMinus;
-        case 0x00D7: case 0x00B7: case 0x22C5: case 0x2219: return WriteStarForProduct;
-        case 0x00F7: case 0x2215: return WriteSlashForQuotient;
+        case 0x2212:
+        case 0x2013:
+        case 0x2014: return WriteAsciiMinus;
+        case 0x00D7:
+        case 0x00B7:
+        case 0x22C5:
+        case 0x2219: return WriteStarForProduct;
+        case 0x00F7:
+        case 0x2215: return WriteSlashForQuotient;
         case 0x03C0: return WritePi;
         case 0x00B2: return WriteSquare;
         case 0x00B3: return WriteCube;
-        case 0x00BA: case 0x02DA: case 0x2218: return NotTheDegreeSign;
-        case 0x00A0: case 0x2009: case 0x202F: return WritePlainSpace;
+        case 0x00BA:
+        case 0x02DA:
+        case 0x2218: return NotTheDegreeSign;
+        case 0x00A0:
+        case 0x2009:
+        case 0x202F: return WritePlainSpace;
         case 0x2032: return NoMinutesOfArc;
-        case 0x00B5: case 0x03BC: return WriteSiUnits;
+        case 0x00B5:
+        case 0x03BC: return WriteSiUnits;
         default: return ExpressionsAreAscii;
     }
 }
@@ -94,8 +105,7 @@ PreparedExpression prepareExpression(const std::string& field, const std::string
         } else {
             const std::string shown = describeCharacter(c, text, i);
             if (!c.valid) throw InputError(field, message(MessageId::ExpressionNotUtf8, shown, character, p.quoted()));
-            throw InputError(field,
-                             message(MessageId::UnexpectedCharacter, shown, character, p.quoted(), lookAlikeHint(c.codePoint)));
+            throw InputError(field, message(MessageId::UnexpectedCharacter, shown, character, p.quoted(), lookAlikeHint(c.codePoint)));
         }
         i += c.bytes;
     }
@@ -155,7 +165,7 @@ PreparedExpression prepareExpression(const std::string& field, const std::string
         std::size_t nameStart = start;
         while (nameStart > 0 && isNameChar(p.text[nameStart - 1])) --nameStart;
         while (nameStart < start && !isNameStart(p.text[nameStart])) ++nameStart;  // "2sin()": the name is "sin"
-        if (nameStart == start) continue;  // "()" alone: GiNaC reports it
+        if (nameStart == start) continue;                                          // "()" alone: GiNaC reports it
         const std::string name = p.text.substr(nameStart, start - nameStart);
         throw InputError(field, message(MessageId::CallWithoutArgument, name, p.atPosition(nameStart + 1), p.quoted()));
     }

@@ -97,7 +97,8 @@ std::string cCode(const StructuredDynamics& s, const Scene& scene, const std::st
     const Writer w(s, CodeLanguage::C);
     const std::string N = std::to_string(s.n);
     std::ostringstream out;
-    out << "/*\n" << headerLines(s, scene, date, " * ") << " * C99, only <math.h>. Matrices are row-major n*n arrays.\n */\n"
+    out << "/*\n"
+        << headerLines(s, scene, date, " * ") << " * C99, only <math.h>. Matrices are row-major n*n arrays.\n */\n"
         << "#include <math.h>\n\n#define LL_DOF " << N << "\n\n";
     const auto function = [&](const std::string& signature, const GiNaC::matrix& m, const std::string& target, bool velocities) {
         out << signature << " {\n" << w.body(entries(m), velocities, "    ");

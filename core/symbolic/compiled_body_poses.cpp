@@ -20,8 +20,7 @@ BodyPoses compileBodyPoses(const Scene& scene) {
         const auto add = [&](const std::string& field, const std::string& text) {
             outputs.push_back(parseLagrangianField(table, s, field, text, LagrangianField::Pose).subs(values));
         };
-        for (int k = 0; k < 3; ++k)
-            add(lagrangianBodyField(b, "position[" + std::to_string(k) + "]"), body.position[k]);
+        for (int k = 0; k < 3; ++k) add(lagrangianBodyField(b, "position[" + std::to_string(k) + "]"), body.position[k]);
         for (int k = 0; k < 3; ++k) add(lagrangianBodyField(b, "end[" + std::to_string(k) + "]"), body.end[k]);
         add(lagrangianBodyField(b, "angle"), body.angle);
         shapes.push_back(body.shape);

@@ -8,9 +8,7 @@ namespace ll::symbolic {
 namespace {
 
 // Only q, q̇ and t are left once the shorthand and the parameters are substituted.
-GiNaC::ex numbersOnly(const Derivation& d, const GiNaC::ex& e) {
-    return e.subs(d.trigToFunctions).subs(d.parameterValues);
-}
+GiNaC::ex numbersOnly(const Derivation& d, const GiNaC::ex& e) { return e.subs(d.trigToFunctions).subs(d.parameterValues); }
 
 }  // namespace
 

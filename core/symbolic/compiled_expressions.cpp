@@ -21,11 +21,10 @@ bool binary(Op op) { return ExpressionTape::binary(op); }
 bool commutative(Op op) { return op == Op::Add || op == Op::Mul; }
 
 const std::map<std::string, Op>& functions() {
-    static const std::map<std::string, Op> table = {
-        {"sin", Op::Sin},   {"cos", Op::Cos},   {"tan", Op::Tan},   {"exp", Op::Exp},   {"log", Op::Log},
-        {"tanh", Op::Tanh}, {"sinh", Op::Sinh}, {"cosh", Op::Cosh}, {"asin", Op::Asin}, {"acos", Op::Acos},
-        {"atan", Op::Atan}, {"atan2", Op::Atan2}, {"abs", Op::Abs}, {"step", Op::Step}, {"sqrt", Op::Sqrt},
-        {"csgn", Op::Sign}};
+    static const std::map<std::string, Op> table = {{"sin", Op::Sin},   {"cos", Op::Cos},   {"tan", Op::Tan},   {"exp", Op::Exp},
+                                                    {"log", Op::Log},   {"tanh", Op::Tanh}, {"sinh", Op::Sinh}, {"cosh", Op::Cosh},
+                                                    {"asin", Op::Asin}, {"acos", Op::Acos}, {"atan", Op::Atan}, {"atan2", Op::Atan2},
+                                                    {"abs", Op::Abs},   {"step", Op::Step}, {"sqrt", Op::Sqrt}, {"csgn", Op::Sign}};
     return table;
 }
 
@@ -52,9 +51,7 @@ public:
     }
 
     // Constants in place; inputs and results are overwritten per call.
-    ExpressionTape finish(std::vector<int> outputs) {
-        return ExpressionTape(inputs_, std::move(tape_), std::move(outputs), values_);
-    }
+    ExpressionTape finish(std::vector<int> outputs) { return ExpressionTape(inputs_, std::move(tape_), std::move(outputs), values_); }
 
 private:
     int newRegister(bool isConstant, double value) {
@@ -144,10 +141,8 @@ private:
                 continue;
             }
             const int scaled = std::abs(c) == 1.0 ? t : emit(Op::Mul, t, constant(std::abs(c)));
-            if (acc < 0)
-                acc = c < 0 ? emit(Op::Neg, scaled) : scaled;
-            else
-                acc = emit(c < 0 ? Op::Sub : Op::Add, acc, scaled);
+            if (acc < 0) acc = c < 0 ? emit(Op::Neg, scaled) : scaled;
+            else acc = emit(c < 0 ? Op::Sub : Op::Add, acc, scaled);
         }
         if (acc < 0) return constant(constantPart);
         return constantPart < 0 ? emit(Op::Sub, acc, constant(-constantPart)) : emit(Op::Add, acc, constant(constantPart));
@@ -156,9 +151,7 @@ private:
     // Constant factors first (folded into one), then the others by register, so that
     // a*b is shared by a*b*c and a*b*d.
     int product(std::vector<int> factors) {
-        std::sort(factors.begin(), factors.end(), [&](int a, int b) {
-            return constant_[a] != constant_[b] ? bool(constant_[a]) : a < b;
-        });
+        std::sort(factors.begin(), factors.end(), [&](int a, int b) { return constant_[a] != constant_[b] ? bool(constant_[a]) : a < b; });
         int acc = factors.front();
         for (std::size_t i = 1; i < factors.size(); ++i) acc = emit(Op::Mul, acc, factors[i]);
         return acc;
@@ -180,8 +173,7 @@ private:
             }
         }
         int r = numerators.empty() ? constant(coefficient) : product(numerators);
-        if (!numerators.empty() && coefficient != 1.0)
-            r = coefficient == -1.0 ? emit(Op::Neg, r) : emit(Op::Mul, r, constant(coefficient));
+        if (!numerators.empty() && coefficient != 1.0) r = coefficient == -1.0 ? emit(Op::Neg, r) : emit(Op::Mul, r, constant(coefficient));
         if (denominators.empty()) return r;
         const int d = product(denominators);
         return isConstant(r, 1.0) ? emit(Op::Recip, d) : emit(Op::Div, r, d);
@@ -201,8 +193,7 @@ private:
 
     int build(const GiNaC::ex& e) {
         if (GiNaC::is_a<GiNaC::numeric>(e) || GiNaC::is_a<GiNaC::constant>(e)) return constant(number(e));
-        if (GiNaC::is_a<GiNaC::symbol>(e))
-            throw std::invalid_argument("cannot compile " + text(e) + ": it is not one of the inputs");
+        if (GiNaC::is_a<GiNaC::symbol>(e)) throw std::invalid_argument("cannot compile " + text(e) + ": it is not one of the inputs");
         if (GiNaC::is_a<GiNaC::add>(e)) return sum(e);
         if (GiNaC::is_a<GiNaC::mul>(e)) return quotient(e);
         if (GiNaC::is_a<GiNaC::power>(e)) return power(e);

@@ -52,11 +52,11 @@ enum class Quantity {
     CoordinatePartial,  // ∂L/∂q_i
     // The structured form (core/symbolic/structured_dynamics.hpp): a named quantity of
     // its table, and single entries over the names.
-    NamedQuantity,      // β_jk^(i), J_P,j^(i), γ_j^(i), ∂b_jk/∂q_l, …
-    MassMatrixEntry,    // b_jk
-    CoriolisEntry,      // c_ij
-    GravityEntry,       // g_j
-    ForceEntry,         // Q_j
+    NamedQuantity,    // β_jk^(i), J_P,j^(i), γ_j^(i), ∂b_jk/∂q_l, …
+    MassMatrixEntry,  // b_jk
+    CoriolisEntry,    // c_ij
+    GravityEntry,     // g_j
+    ForceEntry,       // Q_j
 };
 
 // How the terms of an item group when shown: by the masses (a robot's b11 = I1 + m1 ℓc1²
@@ -65,19 +65,19 @@ enum class Quantity {
 enum class Grouping { Masses, Velocities, Parameters };
 
 struct DerivationItem {
-    std::string name;   // an identifier, also JSON's "name": "T_2^0", "p_c1", "E_kin", "equation_1"
+    std::string name;  // an identifier, also JSON's "name": "T_2^0", "p_c1", "E_kin", "equation_1"
     Quantity quantity;
-    int index = -1;     // 0-based: the link, joint, coordinate or row it is of; -1 for none
+    int index = -1;  // 0-based: the link, joint, coordinate or row it is of; -1 for none
     Grouping grouping;
-    GiNaC::ex value;    // a scalar, a GiNaC::matrix, or (EquationOfMotion) an equation
+    GiNaC::ex value;  // a scalar, a GiNaC::matrix, or (EquationOfMotion) an equation
 };
 
 struct DerivationStep {
-    int number = 0;            // 0..8 as in the course notes
-    Message title;             // MessageId::TitleKinematicModel: words only where it is shown
-    StepFormula formula;       // the general formula of the step (written for a reader by core/present)
+    int number = 0;       // 0..8 as in the course notes
+    Message title;        // MessageId::TitleKinematicModel: words only where it is shown
+    StepFormula formula;  // the general formula of the step (written for a reader by core/present)
     std::vector<DerivationItem> items;
-    double seconds = 0.0;      // time it took
+    double seconds = 0.0;  // time it took
 };
 
 // What was derived: a serial robot from its DH table, or a system typed as a Lagrangian.
@@ -86,15 +86,15 @@ enum class SystemKind { Robot, Lagrangian };
 struct Derivation {
     SystemKind system = SystemKind::Robot;
     std::string systemName;
-    std::vector<GiNaC::symbol> q, qd, qdd;  // coordinates, velocities, accelerations
-    GiNaC::symbol t{"t"};                    // time, in external torques
+    std::vector<GiNaC::symbol> q, qd, qdd;     // coordinates, velocities, accelerations
+    GiNaC::symbol t{"t"};                      // time, in external torques
     std::vector<std::string> coordinateNames;  // as the user wrote them (q1.. for robots)
     std::vector<DerivationStep> steps;
-    GiNaC::matrix B, C;                // n×n
-    GiNaC::matrix g, Q;                // n×1
+    GiNaC::matrix B, C;  // n×n
+    GiNaC::matrix g, Q;  // n×1
     GiNaC::ex Ekin, Epot;
-    bool modifiedDH = false;           // a robot's DH table is in the modified (Craig) convention
-    std::vector<int> actuated;         // 0-based coordinates with an input
+    bool modifiedDH = false;    // a robot's DH table is in the modified (Craig) convention
+    std::vector<int> actuated;  // 0-based coordinates with an input
     bool underactuated = false;
     // Substitutions that turn a result into an expression of q, q̇ and the parameter
     // values only: c_i → cos(q_i), s_i → sin(q_i), c12 → cos(q1+q2) ..., and each

@@ -28,8 +28,7 @@ double DerivationEvaluator::value(const GiNaC::ex& e, const Eigen::VectorXd& q, 
     return GiNaC::ex_to<GiNaC::numeric>(v).to_double();
 }
 
-Eigen::MatrixXd DerivationEvaluator::value(const GiNaC::matrix& m, const Eigen::VectorXd& q, const Eigen::VectorXd& qd,
-                                           double t) const {
+Eigen::MatrixXd DerivationEvaluator::value(const GiNaC::matrix& m, const Eigen::VectorXd& q, const Eigen::VectorXd& qd, double t) const {
     Eigen::MatrixXd out(m.rows(), m.cols());
     for (unsigned r = 0; r < m.rows(); ++r)
         for (unsigned c = 0; c < m.cols(); ++c) out(r, c) = value(m(r, c), q, qd, t);

@@ -21,8 +21,7 @@ GiNaC::ex exactNumber(double value) {
         mantissa.erase(dot, 1);
     }
     const GiNaC::numeric digits(mantissa.c_str());
-    return exponent >= 0 ? digits * GiNaC::pow(GiNaC::numeric(10), exponent)
-                         : digits / GiNaC::pow(GiNaC::numeric(10), -exponent);
+    return exponent >= 0 ? digits * GiNaC::pow(GiNaC::numeric(10), exponent) : digits / GiNaC::pow(GiNaC::numeric(10), -exponent);
 }
 
 GiNaC::ex exactAngle(double value) {

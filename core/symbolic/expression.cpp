@@ -102,8 +102,7 @@ Message describeParseError(const PreparedExpression& source, const std::string& 
                    parseErrorDetail(reason));
 }
 
-Message describeUnknownSymbol(const PreparedExpression& source, const std::string& what,
-                              const std::vector<std::string>& known) {
+Message describeUnknownSymbol(const PreparedExpression& source, const std::string& what, const std::vector<std::string>& known) {
     using enum MessageId;
     // find_or_insert_symbol: symbol "l3" not found
     const std::size_t open = what.find('"');
@@ -115,8 +114,7 @@ Message describeUnknownSymbol(const PreparedExpression& source, const std::strin
     for (std::size_t i = 0; i < shown; ++i) knownList += known[i] + ", ";
     if (shown < known.size()) knownList += "..., ";
     knownList += "pi";
-    return message(ExpressionUnknownSymbol, name, source.atPosition(identifierPosition(source.text, name)), source.quoted(),
-                   knownList);
+    return message(ExpressionUnknownSymbol, name, source.atPosition(identifierPosition(source.text, name)), source.quoted(), knownList);
 }
 
 // Index just past the ')' that closes the '(' at `open`, or npos.
@@ -220,8 +218,7 @@ constexpr double kLargestExponent = 1000;
 constexpr double kLargestDigits = 10000;
 constexpr std::size_t kLargestOperands = 100000;
 
-void checkPowers(const std::string& field, const PreparedExpression& source, const GiNaC::symtab& symbols,
-                 const GiNaC::lst& values) {
+void checkPowers(const std::string& field, const PreparedExpression& source, const GiNaC::symtab& symbols, const GiNaC::lst& values) {
     using enum MessageId;
     const std::string& text = source.text;
     struct Power {
@@ -256,8 +253,7 @@ void checkPowers(const std::string& field, const PreparedExpression& source, con
     // in all the expression is refused rather than checked for seconds.
     std::size_t operands = 0;
     for (const Power& x : powers) operands += (x.end - x.begin) + (x.baseEnd - x.baseBegin);
-    if (operands > kLargestOperands)
-        throw InputError(field, message(PowersNestedTooDeeply, source.quoted(), operands, kLargestOperands));
+    if (operands > kLargestOperands) throw InputError(field, message(PowersNestedTooDeeply, source.quoted(), operands, kLargestOperands));
     // The value of a piece of the text alone, or nothing when it does not read alone (the
     // whole parse reports that) or is not a real number.
     const auto valueOf = [&](std::size_t begin, std::size_t end, bool exact) -> std::optional<GiNaC::numeric> {
@@ -281,15 +277,13 @@ void checkPowers(const std::string& field, const PreparedExpression& source, con
         const std::optional<GiNaC::numeric> exponent = valueOf(x.begin, x.end, false);
         if (!exponent) continue;
         const double e = exponent->to_double();  // inf when beyond a double
-        const Message where = message(text[x.at] == '^' ? PowerAfterCaret : PowerOfPowCall, source.atPosition(x.at + 1),
-                                      source.quoted());
+        const Message where = message(text[x.at] == '^' ? PowerAfterCaret : PowerOfPowCall, source.atPosition(x.at + 1), source.quoted());
         if (!(std::abs(e) <= kLargestExponent)) throw InputError(field, message(PowerExponentTooLarge, shown(e), where));
         const std::optional<GiNaC::numeric> base = valueOf(x.baseBegin, x.baseEnd, true);
         if (!base || !base->is_rational()) continue;  // a float (a parameter's value) is raised in floating point
         const double bits = std::max(base->numer().int_length(), base->denom().int_length());
         const double digits = std::abs(e) * bits * std::log10(2.0);
-        if (digits > kLargestDigits)
-            throw InputError(field, message(PowerTooManyDigits, where, shown(digits)));
+        if (digits > kLargestDigits) throw InputError(field, message(PowerTooManyDigits, where, shown(digits)));
     }
 }
 
@@ -353,7 +347,7 @@ void checkExpansion(const std::string& field, const PreparedExpression& source, 
 // them compute exactly and without end on a large argument (factorial(10^8),
 // tgamma(10^8), binomial, zeta), so they are refused before GiNaC reads the text.
 const std::set<std::string>& availableFunctions() {
-    static const std::set<std::string> names{"sin",  "cos",  "tan",  "exp",  "log",   "sqrt", "sinh", "cosh", "tanh",
+    static const std::set<std::string> names{"sin",  "cos",  "tan",  "exp",   "log", "sqrt", "sinh", "cosh", "tanh",
                                              "asin", "acos", "atan", "atan2", "abs", "step", "csgn", "pow",  "power"};
     return names;
 }
@@ -381,8 +375,7 @@ void checkFunctions(const std::string& field, const PreparedExpression& source) 
         const std::string name = text.substr(i, end - i);
         const std::size_t next = text.find_first_not_of(" \t\n", end);
         if (next != std::string::npos && text[next] == '(' && known.count(name) && !availableFunctions().count(name))
-            throw InputError(field,
-                             message(MessageId::ExpressionFunctionNotAvailable, name, source.atPosition(i + 1), source.quoted()));
+            throw InputError(field, message(MessageId::ExpressionFunctionNotAvailable, name, source.atPosition(i + 1), source.quoted()));
         i = end;
     }
 }
@@ -461,13 +454,12 @@ GiNaC::ex ParameterTable::parse(const std::string& field, const std::string& tex
     return parse(field, prepare(field, text), {}, false);
 }
 
-GiNaC::ex ParameterTable::parse(const std::string& field, const std::string& text,
-                                const std::vector<GiNaC::symbol>& extra) const {
+GiNaC::ex ParameterTable::parse(const std::string& field, const std::string& text, const std::vector<GiNaC::symbol>& extra) const {
     return parse(field, prepare(field, text), extra, true);
 }
 
-GiNaC::ex ParameterTable::parse(const std::string& field, const PreparedExpression& source,
-                                const std::vector<GiNaC::symbol>& extra, bool checkValues) const {
+GiNaC::ex ParameterTable::parse(const std::string& field, const PreparedExpression& source, const std::vector<GiNaC::symbol>& extra,
+                                bool checkValues) const {
     using enum MessageId;
     if (source.text.find_first_not_of(" \t\n") == std::string::npos) throw InputError(field, ExpressionEmpty);
     GiNaC::symtab symbols = symbols_;
@@ -525,15 +517,13 @@ Message tooSmall(const PreparedExpression& source) { return message(MessageId::E
 
 }  // namespace
 
-double ParameterTable::toNumber(const std::string& field, const PreparedExpression& source,
-                                const GiNaC::ex& expression) const {
+double ParameterTable::toNumber(const std::string& field, const PreparedExpression& source, const GiNaC::ex& expression) const {
     using enum MessageId;
     // Parameter values enter as doubles, so CLN computes in doubles and signals
     // overflow, underflow and 1/0 with exceptions of its own.
     try {
         const GiNaC::ex result = expression.subs(values()).evalf();
-        if (!GiNaC::is_a<GiNaC::numeric>(result))
-            throw InputError(field, message(ExpressionNotANumber, source.quoted()));
+        if (!GiNaC::is_a<GiNaC::numeric>(result)) throw InputError(field, message(ExpressionNotANumber, source.quoted()));
         const GiNaC::numeric& number = GiNaC::ex_to<GiNaC::numeric>(result);
         if (!number.is_real()) {
             std::ostringstream shown;
@@ -542,14 +532,13 @@ double ParameterTable::toNumber(const std::string& field, const PreparedExpressi
         }
         // Exact numbers beyond the double range would make to_double throw; floats give inf.
         if (GiNaC::abs(number) > GiNaC::numeric(std::numeric_limits<double>::max()))
-            throw InputError(field, message(ProblemInExpression, message(ValueNotFinite, number.is_negative() ? "-inf" : "inf"),
-                                            source.quoted()));
+            throw InputError(field,
+                             message(ProblemInExpression, message(ValueNotFinite, number.is_negative() ? "-inf" : "inf"), source.quoted()));
         const double value = number.to_double();
         if (auto why = unusableNumber(value)) throw InputError(field, message(ProblemInExpression, *why, source.quoted()));
         // A typed number below the normal range is refused (CLN reads "1e-310" exactly, to_double
         // gives 0); a computed one underflows to 0 as in C++ ("tiny*tiny").
-        if (value == 0.0 && !number.is_zero() && GiNaC::is_a<GiNaC::numeric>(expression))
-            throw InputError(field, tooSmall(source));
+        if (value == 0.0 && !number.is_zero() && GiNaC::is_a<GiNaC::numeric>(expression)) throw InputError(field, tooSmall(source));
         return value;
     } catch (const InputError&) {
         throw;
@@ -591,10 +580,8 @@ ParameterTable parameterTable(const Scene& scene) {
     for (const auto& [name, value] : scene.parameters) {
         const std::string field = "parameters." + name;
         const auto text = scene.expressions.find(field);
-        if (text != scene.expressions.end())
-            table.define(field, name, text->second);
-        else
-            table.define(field, name, value);
+        if (text != scene.expressions.end()) table.define(field, name, text->second);
+        else table.define(field, name, value);
     }
     return table;
 }

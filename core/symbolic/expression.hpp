@@ -49,7 +49,7 @@ public:
     double value(const std::string& name) const;                      // throws std::out_of_range
     // What the parameter was defined as: an expression of earlier parameters' symbols,
     // or its number.
-    const GiNaC::ex& definition(const std::string& name) const;        // throws std::out_of_range
+    const GiNaC::ex& definition(const std::string& name) const;  // throws std::out_of_range
     // symbol == value for every parameter, for GiNaC::ex::subs.
     GiNaC::lst values() const;
 

@@ -18,8 +18,6 @@ inline std::recursive_mutex& ginacMutex() {
     return mutex;
 }
 
-[[nodiscard]] inline std::unique_lock<std::recursive_mutex> lockGinac() {
-    return std::unique_lock<std::recursive_mutex>(ginacMutex());
-}
+[[nodiscard]] inline std::unique_lock<std::recursive_mutex> lockGinac() { return std::unique_lock<std::recursive_mutex>(ginacMutex()); }
 
 }  // namespace ll::symbolic

@@ -42,8 +42,7 @@ bool isZero(const ex& e) { return e.expand().normal().is_zero(); }
 // of hand-typed kinetic energies lose their sin² + cos² (a cart-pole's m (sin² + cos²)).
 struct ReduceSinSquares : GiNaC::map_function {
     ex operator()(const ex& e) override {
-        if (GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_the_function<GiNaC::sin_SERIAL>(e.op(0)) &&
-            e.op(1).info(GiNaC::info_flags::posint)) {
+        if (GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_the_function<GiNaC::sin_SERIAL>(e.op(0)) && e.op(1).info(GiNaC::info_flags::posint)) {
             const long n = GiNaC::ex_to<GiNaC::numeric>(e.op(1)).to_long();
             if (n >= 2) {
                 const ex u = e.op(0).op(0);
@@ -68,8 +67,7 @@ GiNaC::exmap exactValues(const ParameterTable& table) {
         ex value;
         if (GiNaC::is_a<GiNaC::numeric>(definition))
             value = GiNaC::ex_to<GiNaC::numeric>(definition).is_rational() ? definition : exactNumber(table.value(name));
-        else
-            value = definition.subs(values);
+        else value = definition.subs(values);
         values[table.symbol(name)] = value;
     }
     return values;
@@ -141,8 +139,7 @@ private:
             parse("lagrangian.potential", spec_.potential.empty() ? "0" : spec_.potential, LagrangianField::Potential);
         forces_ = written_.forces = matrix(n_, 1);
         for (int i = 0; i < static_cast<int>(spec_.forces.size()); ++i)
-            std::tie(written_.forces(i, 0), forces_(i, 0)) =
-                parse(lagrangianForceField(i), spec_.forces[i], LagrangianField::Force);
+            std::tie(written_.forces(i, 0), forces_(i, 0)) = parse(lagrangianForceField(i), spec_.forces[i], LagrangianField::Force);
     }
 
     // A component that depends on q alone, with ∂Q_i/∂q_j = ∂Q_j/∂q_i for every j, is
@@ -156,8 +153,7 @@ private:
             const bool onVelocities = std::any_of(s_.qd.begin(), s_.qd.end(), [&](const auto& v) { return F.has(v); });
             if (!onCoordinates || onVelocities || F.has(s_.t)) continue;
             bool symmetric = true;
-            for (int j = 0; j < n_ && symmetric; ++j)
-                symmetric = j == i || isZero(F.diff(s_.q[j]) - forces(j, 0).diff(s_.q[i]));
+            for (int j = 0; j < n_ && symmetric; ++j) symmetric = j == i || isZero(F.diff(s_.q[j]) - forces(j, 0).diff(s_.q[i]));
             if (symmetric) conservative.push_back(i);
         }
         if (conservative.empty()) return {};
@@ -171,14 +167,13 @@ private:
         Message potential;  // " (Q = -dV/dq with V = ...)", or nothing
         if (integrand.is_polynomial(s)) {
             ex V = 0;
-            for (int k = integrand.ldegree(s); k <= integrand.degree(s); ++k)
-                V += integrand.coeff(s, k) / (k + 1);
+            for (int k = integrand.ldegree(s); k <= integrand.degree(s); ++k) V += integrand.coeff(s, k) / (k + 1);
             potential = message(MessageId::ConservativeForcePotential, str(V.normal()));
         }
         std::vector<Diagnostic> errors;
         for (int i : conservative)
-            errors.push_back({Severity::Error, lagrangianForceField(i),
-                              message(MessageId::ConservativeForce, i + 1, spec_.forces[i], potential)});
+            errors.push_back(
+                {Severity::Error, lagrangianForceField(i), message(MessageId::ConservativeForce, i + 1, spec_.forces[i], potential)});
         return errors;
     }
 
@@ -234,7 +229,8 @@ private:
     void stepPotential() {
         d_.Epot = Epot_;
         addStep(6, MessageId::TitlePotentialEnergy,
-                stepFormula("E_pot(q) «1»", R"(E_{\mathrm{pot}}(q))", {formulaWords(MessageId::FormulaPotentialAsGiven)}), {{"E_pot", Quantity::PotentialEnergy, -1, Grouping::Parameters, Epot_}});
+                stepFormula("E_pot(q) «1»", R"(E_{\mathrm{pot}}(q))", {formulaWords(MessageId::FormulaPotentialAsGiven)}),
+                {{"E_pot", Quantity::PotentialEnergy, -1, Grouping::Parameters, Epot_}});
     }
 
     void stepKinetic() {
@@ -246,11 +242,14 @@ private:
                 d_.B(j, i) = d_.B(i, j);
             }
         d_.Ekin = Ekin_;
-        addStep(7, MessageId::TitleKineticEnergy,
-                stepFormula("E_kin(q, qd) «1» = 1/2 qd^T «B»(«q») qd,  «b»_ij = d^2 E_kin / (dqd_i dqd_j)",
-                            R"(E_{\mathrm{kin}} = \tfrac{1}{2}\,\dot{q}^T «B»(«q»)\,\dot{q},\quad «b»_{ij} = \frac{\partial^2 E_{\mathrm{kin}}}{\partial \dot{q}_i\,\partial \dot{q}_j})",
-                            {formulaWords(MessageId::FormulaAsGiven)}),
-                {{"E_kin", Quantity::KineticEnergy, -1, Grouping::Velocities, Ekin_}, {"B", Quantity::MassMatrix, -1, Grouping::Parameters, d_.B}});
+        addStep(
+            7, MessageId::TitleKineticEnergy,
+            stepFormula(
+                "E_kin(q, qd) «1» = 1/2 qd^T «B»(«q») qd,  «b»_ij = d^2 E_kin / (dqd_i dqd_j)",
+                R"(E_{\mathrm{kin}} = \tfrac{1}{2}\,\dot{q}^T «B»(«q»)\,\dot{q},\quad «b»_{ij} = \frac{\partial^2 E_{\mathrm{kin}}}{\partial \dot{q}_i\,\partial \dot{q}_j})",
+                {formulaWords(MessageId::FormulaAsGiven)}),
+            {{"E_kin", Quantity::KineticEnergy, -1, Grouping::Velocities, Ekin_},
+             {"B", Quantity::MassMatrix, -1, Grouping::Parameters, d_.B}});
     }
 
     // B(q0) must be positive definite: otherwise some motion of the coordinates moves no
@@ -277,8 +276,7 @@ private:
                     throw InputError("lagrangian.kinetic", message(InitialMassEntryNotReal, i + 1, j + 1, str(d_.B(i, j)), where));
                 B0(i, j) = GiNaC::ex_to<GiNaC::numeric>(value).to_double();
             }
-        if (!B0.allFinite())
-            throw InputError("lagrangian.kinetic", message(InitialMassMatrixNotFinite, where));
+        if (!B0.allFinite()) throw InputError("lagrangian.kinetic", message(InitialMassMatrixNotFinite, where));
         const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(B0);
         const Eigen::VectorXd& lambda = eigen.eigenvalues();
         const double scale = lambda.cwiseAbs().maxCoeff();
@@ -310,8 +308,7 @@ private:
             const std::string q = s_.q[i].get_name(), qd = s_.qd[i].get_name();
             const ex momentum = L.diff(s_.qd[i]);
             ex rate = 0;  // d/dt by the chain rule (E_kin and E_pot do not depend on t)
-            for (int j = 0; j < n_; ++j)
-                rate += momentum.diff(s_.q[j]) * s_.qd[j] + momentum.diff(s_.qd[j]) * s_.qdd[j];
+            for (int j = 0; j < n_; ++j) rate += momentum.diff(s_.q[j]) * s_.qd[j] + momentum.diff(s_.qd[j]) * s_.qdd[j];
             items.push_back({"dL/d" + qd, Quantity::MomentumPartial, i, Grouping::Parameters, momentum});
             items.push_back({"d/dt dL/d" + qd, Quantity::MomentumRate, i, Grouping::Parameters, rate.expand()});
             items.push_back({"dL/d" + q, Quantity::CoordinatePartial, i, Grouping::Parameters, L.diff(s_.q[i])});
@@ -336,23 +333,23 @@ private:
             const std::string k = std::to_string(i + 1);
             items.push_back({"equation_" + k, Quantity::EquationOfMotion, i, Grouping::Parameters, lhs == d_.Q(i, 0)});
         }
-        addStep(8, MessageId::TitleEquationsOfMotion,
-                unicode(stepFormula(
-                    "L = E_kin − E_pot;  d/dt ∂L/∂q̇_i − ∂L/∂q_i = «Q»_i;  «1»;  q̈ = «B»⁻¹ («Q» − C q̇ − «g»)",
-                    R"(\mathcal{L} = E_{\mathrm{kin}} - E_{\mathrm{pot}},\quad \frac{d}{dt}\frac{\partial \mathcal{L}}{\partial \dot{q}_i} - \frac{\partial \mathcal{L}}{\partial q_i} = «Q»_i,\quad «g» = \frac{\partial E_{\mathrm{pot}}}{\partial q},\quad c_{ij} = \sum_k \tfrac{1}{2}\left(\frac{\partial «b»_{ij}}{\partial q_k} + \frac{\partial «b»_{ik}}{\partial q_j} - \frac{\partial «b»_{jk}}{\partial q_i}\right)\dot{q}_k,\quad «B»\ddot{q} + C\dot{q} + «g» = «Q»)",
-                    {formulaWordsOf(MessageId::FormulaWrittenAs,
-                                    {formulaPieces("«B» q̈ + C q̇ + «g» = «Q»"),
-                                     formulaPieces("«g» = ∂E_pot/∂q, c_ij = Σ_k ½ (∂«b»_ij/∂q_k + ∂«b»_ik/∂q_j − ∂«b»_jk/∂q_i) q̇_k, «Q»: «1»",
-                                                   {formulaWords(MessageId::FormulaNonConservativeOnly)})})})),
-                items);
+        addStep(
+            8, MessageId::TitleEquationsOfMotion,
+            unicode(stepFormula(
+                "L = E_kin − E_pot;  d/dt ∂L/∂q̇_i − ∂L/∂q_i = «Q»_i;  «1»;  q̈ = «B»⁻¹ («Q» − C q̇ − «g»)",
+                R"(\mathcal{L} = E_{\mathrm{kin}} - E_{\mathrm{pot}},\quad \frac{d}{dt}\frac{\partial \mathcal{L}}{\partial \dot{q}_i} - \frac{\partial \mathcal{L}}{\partial q_i} = «Q»_i,\quad «g» = \frac{\partial E_{\mathrm{pot}}}{\partial q},\quad c_{ij} = \sum_k \tfrac{1}{2}\left(\frac{\partial «b»_{ij}}{\partial q_k} + \frac{\partial «b»_{ik}}{\partial q_j} - \frac{\partial «b»_{jk}}{\partial q_i}\right)\dot{q}_k,\quad «B»\ddot{q} + C\dot{q} + «g» = «Q»)",
+                {formulaWordsOf(MessageId::FormulaWrittenAs,
+                                {formulaPieces("«B» q̈ + C q̇ + «g» = «Q»"),
+                                 formulaPieces("«g» = ∂E_pot/∂q, c_ij = Σ_k ½ (∂«b»_ij/∂q_k + ∂«b»_ik/∂q_j − ∂«b»_jk/∂q_i) q̇_k, «Q»: «1»",
+                                               {formulaWords(MessageId::FormulaNonConservativeOnly)})})})),
+            items);
     }
 
     // Q = the `forces` plus the declared torques and friction (by coordinate). The
     // effects are read as for a robot, then their parameter symbols are made ours.
     void generalizedForces() {
         d_.Q = forces_;
-        const SymbolicRobot effects =
-            symbolicRobot(scene_, numeric_ ? ParameterMode::Numeric : ParameterMode::Parametric, s_.t);
+        const SymbolicRobot effects = symbolicRobot(scene_, numeric_ ? ParameterMode::Numeric : ParameterMode::Parametric, s_.t);
         GiNaC::exmap ours;
         for (const ex& relation : effects.parameterValues) {
             const ex& theirs = relation.lhs();

@@ -15,8 +15,7 @@ bool isIdentifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c
 std::size_t wordPosition(const std::string& text, const std::string& name) {
     for (std::size_t at = text.find(name); at != std::string::npos; at = text.find(name, at + 1)) {
         const std::size_t end = at + name.size();
-        if ((at == 0 || !isIdentifierChar(text[at - 1])) && (end == text.size() || !isIdentifierChar(text[end])))
-            return at + 1;
+        if ((at == 0 || !isIdentifierChar(text[at - 1])) && (end == text.size() || !isIdentifierChar(text[end]))) return at + 1;
     }
     return 0;
 }
@@ -63,8 +62,7 @@ std::optional<Message> whyNotACoordinateName(const std::string& name, const std:
     return std::nullopt;
 }
 
-std::vector<Diagnostic> checkCoordinateNames(const std::vector<std::string>& coordinates,
-                                             const ParameterTable& parameters) {
+std::vector<Diagnostic> checkCoordinateNames(const std::vector<std::string>& coordinates, const ParameterTable& parameters) {
     std::vector<Diagnostic> out;
     std::vector<std::string> taken = parameters.names();
     for (std::size_t i = 0; i < coordinates.size(); ++i) {
@@ -76,8 +74,8 @@ std::vector<Diagnostic> checkCoordinateNames(const std::vector<std::string>& coo
     return out;
 }
 
-GiNaC::ex parseLagrangianField(const ParameterTable& parameters, const LagrangianSymbols& symbols,
-                               const std::string& field, const std::string& text, LagrangianField kind) {
+GiNaC::ex parseLagrangianField(const ParameterTable& parameters, const LagrangianSymbols& symbols, const std::string& field,
+                               const std::string& text, LagrangianField kind) {
     // Every symbol is known to the parser, so that a misplaced one gets its own message.
     std::vector<GiNaC::symbol> extra = symbols.q;
     extra.insert(extra.end(), symbols.qd.begin(), symbols.qd.end());
@@ -91,8 +89,8 @@ GiNaC::ex parseLagrangianField(const ParameterTable& parameters, const Lagrangia
                                                                                : MessageId::PoseDependsOnVelocity,
                                             v->get_name(), at(text, v->get_name()), text));
     if (!time && e.has(symbols.t))
-        throw InputError(field, message(MessageId::EnergyDependsOnTime, kind == LagrangianField::Kinetic ? "E_kin" : "E_pot",
-                                        at(text, "t"), text));
+        throw InputError(field, message(MessageId::EnergyDependsOnTime, kind == LagrangianField::Kinetic ? "E_kin" : "E_pot", at(text, "t"),
+                                        text));
     return e;
 }
 

@@ -41,14 +41,13 @@ std::optional<Message> whyNotACoordinateName(const std::string& name, const std:
 
 // Errors in the coordinate names (field "lagrangian.coordinates[i]"): not identifiers,
 // reserved, repeated, a parameter's name, or a velocity name <name>_dot that is taken.
-std::vector<Diagnostic> checkCoordinateNames(const std::vector<std::string>& coordinates,
-                                             const ParameterTable& parameters);
+std::vector<Diagnostic> checkCoordinateNames(const std::vector<std::string>& coordinates, const ParameterTable& parameters);
 
 // The expression with the parameter symbols kept. Throws InputError naming `field` for
 // a syntax error, an unknown symbol (or one the field may not use: a velocity in the
 // potential, t in the kinetic energy), or a division by zero, with the position.
-GiNaC::ex parseLagrangianField(const ParameterTable& parameters, const LagrangianSymbols& symbols,
-                               const std::string& field, const std::string& text, LagrangianField kind);
+GiNaC::ex parseLagrangianField(const ParameterTable& parameters, const LagrangianSymbols& symbols, const std::string& field,
+                               const std::string& text, LagrangianField kind);
 
 // Field paths: "lagrangian.kinetic", "lagrangian.forces[2]", "lagrangian.bodies[1].position[3]".
 std::string lagrangianForceField(int coordinate0);

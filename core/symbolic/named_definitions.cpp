@@ -14,8 +14,7 @@ namespace {
 // Never named (SYMORO's rule): numbers, symbols and number·symbol.
 bool isAtomic(const GiNaC::ex& e) {
     if (GiNaC::is_a<GiNaC::numeric>(e) || GiNaC::is_a<GiNaC::symbol>(e) || GiNaC::is_a<GiNaC::constant>(e)) return true;
-    return GiNaC::is_a<GiNaC::mul>(e) && e.nops() == 2 && GiNaC::is_a<GiNaC::numeric>(e.op(1)) &&
-           GiNaC::is_a<GiNaC::symbol>(e.op(0));
+    return GiNaC::is_a<GiNaC::mul>(e) && e.nops() == 2 && GiNaC::is_a<GiNaC::numeric>(e.op(1)) && GiNaC::is_a<GiNaC::symbol>(e.op(0));
 }
 
 // Every symbol occurrence in e (through its pairs: ginac_pairs.hpp).
@@ -38,8 +37,8 @@ NamedDefinitions::NamedDefinitions(const TrigContext& tc) : tc_(tc) {
     }
 }
 
-GiNaC::ex NamedDefinitions::name(const GiNaC::ex& e, const std::string& plain, const std::string& latex,
-                                 const Message& meaning, int step, int link, const std::string& unit) {
+GiNaC::ex NamedDefinitions::name(const GiNaC::ex& e, const std::string& plain, const std::string& latex, const Message& meaning, int step,
+                                 int link, const std::string& unit) {
     throwIfCancelled(cancel_);
     const GiNaC::ex value = tc_.reduce(e);
     if (value.is_zero() || isAtomic(value)) return value;

@@ -51,8 +51,8 @@ public:
     // e reduced; returned as it is when it is zero, a number, a symbol or number·symbol;
     // the entry's symbol (or its negative) when e (or −e) was named before; else a new
     // entry named `plain`, of `link` (−1: none), in `unit`.
-    GiNaC::ex name(const GiNaC::ex& e, const std::string& plain, const std::string& latex, const Message& meaning,
-                   int step, int link = -1, const std::string& unit = "");
+    GiNaC::ex name(const GiNaC::ex& e, const std::string& plain, const std::string& latex, const Message& meaning, int step, int link = -1,
+                   const std::string& unit = "");
 
     const std::vector<NamedDefinition>& entries() const { return entries_; }
     int size() const { return static_cast<int>(entries_.size()); }
@@ -81,7 +81,7 @@ private:
     // symbols through GiNaC's compare, type check first, at every step of every lookup.
     std::unordered_map<GiNaC::ex, int, std::hash<GiNaC::ex>, GiNaC::ex_is_equal> bySymbol_;
     std::unordered_map<GiNaC::ex, int, std::hash<GiNaC::ex>, GiNaC::ex_is_equal> coordinateOf_;  // q_k, c_k, s_k → k
-    std::vector<GiNaC::ex> unfolded_;                            // memo of unfold, per entry
+    std::vector<GiNaC::ex> unfolded_;                                                            // memo of unfold, per entry
     std::vector<bool> isUnfolded_;
 };
 

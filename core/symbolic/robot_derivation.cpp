@@ -48,14 +48,13 @@ matrix rotation(const matrix& T) {
 // (Cutting an entry into pieces to see a cancel sooner was measured: pieces small
 // enough to matter made the Panda's derivation 2.5× slower. The named-quantity
 // derivation keeps every entry small instead.)
-ex reduceChecked(const TrigContext& tc, const ex& e, const std::function<void(const std::string&)>& checkpoint,
-                  const std::string& what) {
+ex reduceChecked(const TrigContext& tc, const ex& e, const std::function<void(const std::string&)>& checkpoint, const std::string& what) {
     checkpoint(what);
     return tc.reduce(e);
 }
 
 matrix reduceChecked(const TrigContext& tc, const matrix& m, const std::function<void(const std::string&)>& checkpoint,
-                      const std::string& what) {
+                     const std::string& what) {
     matrix r(m.rows(), m.cols());
     for (unsigned i = 0; i < m.rows(); ++i)
         for (unsigned j = 0; j < m.cols(); ++j) r(i, j) = reduceChecked(tc, m(i, j), checkpoint, what);
@@ -199,12 +198,15 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
         step1.push_back({"A_" + idx(i), Quantity::LinkTransform, i, Grouping::Masses, A[i]});
     }
     for (int i = 0; i < n; ++i) step1.push_back({"T_" + idx(i) + "^0", Quantity::Transform, i, Grouping::Masses, T[i + 1]});
-    addStep(1, MessageId::TitleKinematicModel,
-            stepFormula(standard ? "A_i = Rot_z(theta_i) Trans_z(d_i) Trans_x(a_i) Rot_x(alpha_i),  T_i^0 = A_1 A_2 ... A_i"
-                                 : "A_i = Rot_x(alpha_{i-1}) Trans_x(a_{i-1}) Rot_z(theta_i) Trans_z(d_i),  T_i^0 = A_1 A_2 ... A_i",
-                        standard ? R"(A_i = \mathrm{Rot}_z(\theta_i)\,\mathrm{Trans}_z(d_i)\,\mathrm{Trans}_x(a_i)\,\mathrm{Rot}_x(\alpha_i),\quad T_i^0 = A_1 A_2 \cdots A_i)"
-                                 : R"(A_i = \mathrm{Rot}_x(\alpha_{i-1})\,\mathrm{Trans}_x(a_{i-1})\,\mathrm{Rot}_z(\theta_i)\,\mathrm{Trans}_z(d_i),\quad T_i^0 = A_1 A_2 \cdots A_i)"),
-            step1);
+    addStep(
+        1, MessageId::TitleKinematicModel,
+        stepFormula(
+            standard ? "A_i = Rot_z(theta_i) Trans_z(d_i) Trans_x(a_i) Rot_x(alpha_i),  T_i^0 = A_1 A_2 ... A_i"
+                     : "A_i = Rot_x(alpha_{i-1}) Trans_x(a_{i-1}) Rot_z(theta_i) Trans_z(d_i),  T_i^0 = A_1 A_2 ... A_i",
+            standard
+                ? R"(A_i = \mathrm{Rot}_z(\theta_i)\,\mathrm{Trans}_z(d_i)\,\mathrm{Trans}_x(a_i)\,\mathrm{Rot}_x(\alpha_i),\quad T_i^0 = A_1 A_2 \cdots A_i)"
+                : R"(A_i = \mathrm{Rot}_x(\alpha_{i-1})\,\mathrm{Trans}_x(a_{i-1})\,\mathrm{Rot}_z(\theta_i)\,\mathrm{Trans}_z(d_i),\quad T_i^0 = A_1 A_2 \cdots A_i)"),
+        step1);
 
     // 2. Centres of mass in the base frame.
     std::vector<Vec3> p(n);
@@ -240,7 +242,8 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
             items.push_back({"w_" + idx(i), Quantity::AngularVelocity, i, Grouping::Velocities, tc.reduce(w)});
         }
         addStep(3, MessageId::TitleAngularVelocities,
-                stepFormula("omega_i^0 = sum_{j<=i, «1»} z_j «q'_»j = J_w,i «q'»", R"(\omega_i^0 = \sum_{j \le i} z_{j} «q'_»j = J_{\omega,i}\,«q'»)",
+                stepFormula("omega_i^0 = sum_{j<=i, «1»} z_j «q'_»j = J_w,i «q'»",
+                            R"(\omega_i^0 = \sum_{j \le i} z_{j} «q'_»j = J_{\omega,i}\,«q'»)",
                             {formulaWords(MessageId::FormulaRevoluteJoints)}),
                 items);
     }
@@ -272,10 +275,10 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
         for (int i = 0; i < n; ++i) {
             const matrix R = rotation(T[i + 1]);
             items.push_back({"I_l" + idx(i) + "^0", Quantity::LinkInertia, i, Grouping::Masses,
-                             reduceChecked(tc, R.mul(robot.joints[i].inertia).mul(R.transpose()), checkpoint,
-                                            "I_l" + idx(i) + "^0")});
+                             reduceChecked(tc, R.mul(robot.joints[i].inertia).mul(R.transpose()), checkpoint, "I_l" + idx(i) + "^0")});
         }
-        addStep(5, MessageId::TitleLinkInertias, stepFormula("I_li^0 = R_i^0 I_li (R_i^0)^T", R"(I_{li}^0 = R_i^0\, I_{li}\, (R_i^0)^T)"), items);
+        addStep(5, MessageId::TitleLinkInertias, stepFormula("I_li^0 = R_i^0 I_li (R_i^0)^T", R"(I_{li}^0 = R_i^0\, I_{li}\, (R_i^0)^T)"),
+                items);
     }
 
     // 6. Potential energy: gravity and springs, if declared.
@@ -321,14 +324,17 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
     if (hasMotors) step7.push_back({"B_m", Quantity::MotorInertia, -1, Grouping::Masses, motors});
     step7.push_back({"B", Quantity::MassMatrix, -1, Grouping::Masses, d.B});
     step7.push_back({"E_kin", Quantity::KineticEnergy, -1, Grouping::Velocities, d.Ekin});
-    StepFormula formula7 = stepFormula(
-        std::string("E_kin = 1/2 sum_i (m_i v_ci^T v_ci + omega_i^T I_li^0 omega_i)") + (hasMotors ? " + 1/2 sum_j Jm_j G_j^2 «q'_»j^2" : "") +
-            " = 1/2 «q'»^T «B»(«q») «q'»" + (hasMotors ? ";  «1»: «B» = «B»_links + «B»_m, «B»_m = diag(Jm_j G_j^2) («2»)" : ""),
-        std::string(R"(E_{\mathrm{kin}} = \tfrac{1}{2}\sum_i \left(m_i\, v_{ci}^T v_{ci} + \omega_i^T I_{li}^0\, \omega_i\right))") +
-            (hasMotors ? R"( + \tfrac{1}{2}\sum_j J_{m,j} G_j^2 «q'_»j^2)" : "") + R"( = \tfrac{1}{2}\,«q'»^T «B»(«q»)\,«q'»)" +
-            (hasMotors ? R"(,\quad «B» = «B»_{\mathrm{links}} + «B»_m,\ «B»_m = \mathrm{diag}(J_{m,j} G_j^2)\ «1»)" : ""),
-        {formulaWords(MessageId::FormulaMotorsArmature, {"G_j «q'_»j", "«b»_jj"}), formulaWords(MessageId::FormulaArmatureGiven)},
-        {formulaWords(MessageId::FormulaRotorTurnsAt, {"j", "G_j «q'_»j"})});
+    StepFormula formula7 =
+        stepFormula(std::string("E_kin = 1/2 sum_i (m_i v_ci^T v_ci + omega_i^T I_li^0 omega_i)") +
+                        (hasMotors ? " + 1/2 sum_j Jm_j G_j^2 «q'_»j^2" : "") + " = 1/2 «q'»^T «B»(«q») «q'»" +
+                        (hasMotors ? ";  «1»: «B» = «B»_links + «B»_m, «B»_m = diag(Jm_j G_j^2) («2»)" : ""),
+                    std::string(
+                        R"(E_{\mathrm{kin}} = \tfrac{1}{2}\sum_i \left(m_i\, v_{ci}^T v_{ci} + \omega_i^T I_{li}^0\, \omega_i\right))") +
+                        (hasMotors ? R"( + \tfrac{1}{2}\sum_j J_{m,j} G_j^2 «q'_»j^2)" : "") + R"( = \tfrac{1}{2}\,«q'»^T «B»(«q»)\,«q'»)" +
+                        (hasMotors ? R"(,\quad «B» = «B»_{\mathrm{links}} + «B»_m,\ «B»_m = \mathrm{diag}(J_{m,j} G_j^2)\ «1»)" : ""),
+                    {formulaWords(MessageId::FormulaMotorsArmature, {"G_j «q'_»j", "«b»_jj"}),
+                     formulaWords(MessageId::FormulaArmatureGiven)},
+                    {formulaWords(MessageId::FormulaRotorTurnsAt, {"j", "G_j «q'_»j"})});
     if (hasMotors) formula7.text.push_back(formulaMath(motorValues));
     addStep(7, MessageId::TitleKineticEnergy, std::move(formula7), step7);
 
@@ -358,19 +364,21 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
     d.underactuated = static_cast<int>(d.actuated.size()) < n;
 
     std::vector<DerivationItem> step8{{"g", Quantity::GravityVector, -1, Grouping::Masses, d.g},
-                                     {"C", Quantity::CoriolisMatrix, -1, Grouping::Velocities, d.C},
-                                     {"Q", Quantity::GeneralizedForces, -1, Grouping::Masses, d.Q}};
+                                      {"C", Quantity::CoriolisMatrix, -1, Grouping::Velocities, d.C},
+                                      {"Q", Quantity::GeneralizedForces, -1, Grouping::Masses, d.Q}};
     for (int i = 0; i < n; ++i) {
         ex lhs = d.g(i, 0);
         for (int j = 0; j < n; ++j) lhs += d.B(i, j) * d.qdd[j] + d.C(i, j) * tc.qd(j);
         step8.push_back({"equation_" + idx(i), Quantity::EquationOfMotion, i, Grouping::Masses, lhs == d.Q(i, 0)});
     }
-    addStep(8, MessageId::TitleEquationsOfMotion,
-            stepFormula("«g» = dE_pot/d«q»;  c_ij = sum_k 1/2 (d«b»_ij/d«q_»k + d«b»_ik/d«q_»j - d«b»_jk/d«q_»i) «q'_»k;  "
-                        "«Q»: «1»;  «B» «q''» + C «q'» + «g» = «Q»;  «q''» = «B»^-1 («Q» - C «q'» - «g»);  «2»",
-                        R"(«g» = \frac{\partial E_{\mathrm{pot}}}{\partial «q»},\quad c_{ij} = \sum_k \tfrac{1}{2}\left(\frac{\partial «b»_{ij}}{\partial «q_»k} + \frac{\partial «b»_{ik}}{\partial «q_»j} - \frac{\partial «b»_{jk}}{\partial «q_»i}\right)«q'_»k,\quad «B»«q''» + C«q'» + «g» = «Q»,\quad «q''» = «B»^{-1}(«Q» - C«q'» - «g»))",
-                        {formulaWords(MessageId::FormulaNonConservativeOnly), formulaActuation(d.actuated, d.coordinateNames)}),
-            step8);
+    addStep(
+        8, MessageId::TitleEquationsOfMotion,
+        stepFormula(
+            "«g» = dE_pot/d«q»;  c_ij = sum_k 1/2 (d«b»_ij/d«q_»k + d«b»_ik/d«q_»j - d«b»_jk/d«q_»i) «q'_»k;  "
+            "«Q»: «1»;  «B» «q''» + C «q'» + «g» = «Q»;  «q''» = «B»^-1 («Q» - C «q'» - «g»);  «2»",
+            R"(«g» = \frac{\partial E_{\mathrm{pot}}}{\partial «q»},\quad c_{ij} = \sum_k \tfrac{1}{2}\left(\frac{\partial «b»_{ij}}{\partial «q_»k} + \frac{\partial «b»_{ik}}{\partial «q_»j} - \frac{\partial «b»_{jk}}{\partial «q_»i}\right)«q'_»k,\quad «B»«q''» + C«q'» + «g» = «Q»,\quad «q''» = «B»^{-1}(«Q» - C«q'» - «g»))",
+            {formulaWords(MessageId::FormulaNonConservativeOnly), formulaActuation(d.actuated, d.coordinateNames)}),
+        step8);
 
     d.trigToFunctions = tc.toFunctions();
     d.parameterValues = robot.parameterValues;

@@ -50,14 +50,14 @@ public:
                 for (int r = 0; r < 3; ++r) {
                     const std::string comp(1, kAxis[r]);
                     if (c == 3)
-                        named(r, c) = table_.name(product(r, c), "o" + comp + F + "_" + frame_,
-                                                  "{}^{" + frame_ + "}o_{" + F + "," + comp + "}",
-                                                  message(MessageId::MeaningOriginComponent, comp, F, frame_), 1, i_, "m");
+                        named(r, c) =
+                            table_.name(product(r, c), "o" + comp + F + "_" + frame_, "{}^{" + frame_ + "}o_{" + F + "," + comp + "}",
+                                        message(MessageId::MeaningOriginComponent, comp, F, frame_), 1, i_, "m");
                     else
-                        named(r, c) = table_.name(product(r, c), std::string(1, kAxis[c]) + comp + F + "_" + frame_,
-                                                  "{}^{" + frame_ + "}" + kAxis[c] + "_{" + F + "," + comp + "}",
-                                                  message(MessageId::MeaningAxisComponent, comp, std::string(1, kAxis[c]), F, frame_),
-                                                  1, i_);
+                        named(r, c) =
+                            table_.name(product(r, c), std::string(1, kAxis[c]) + comp + F + "_" + frame_,
+                                        "{}^{" + frame_ + "}" + kAxis[c] + "_{" + F + "," + comp + "}",
+                                        message(MessageId::MeaningAxisComponent, comp, std::string(1, kAxis[c]), F, frame_), 1, i_);
                 }
             named(3, 3) = 1;
             P = named;
@@ -99,9 +99,8 @@ public:
     // Components named "<letter><x|y|z><index>_<link><suffix>" (Jx2_4: x of J_P,2 of link 4),
     // which the printers set as J_{x2,4}; '@' in `latex` stands for the component (x, y, z).
     // Each component means `meaning` with the component before `args`.
-    Vec3 vector(const Vec3& v, const std::string& letter, const std::string& index, const std::string& latex,
-                MessageId meaning, const std::vector<Message>& args, int step, const std::string& suffix = "",
-                const std::string& unit = "") {
+    Vec3 vector(const Vec3& v, const std::string& letter, const std::string& index, const std::string& latex, MessageId meaning,
+                const std::vector<Message>& args, int step, const std::string& suffix = "", const std::string& unit = "") {
         Vec3 r;
         for (int c = 0; c < 3; ++c) {
             const std::string comp(1, kAxis[c]);
@@ -109,8 +108,8 @@ public:
             l.replace(l.find('@'), 1, comp);
             std::vector<Message> componentArgs{literal(comp)};
             componentArgs.insert(componentArgs.end(), args.begin(), args.end());
-            r[c] = table_.name(v[c], letter + comp + index + "_" + frame_ + suffix, l, Message(meaning, std::move(componentArgs)),
-                               step, i_, unit);
+            r[c] = table_.name(v[c], letter + comp + index + "_" + frame_ + suffix, l, Message(meaning, std::move(componentArgs)), step, i_,
+                               unit);
         }
         return r;
     }
@@ -239,20 +238,18 @@ StructuredDynamics deriveStructured(const Scene& scene, const DerivationOptions&
             for (int r = 0; r < 3; ++r) offset += robot.gravity(r, 0) * robot.base(r, 3);
             s.Epot -= m * (dot(link.gravity, sub(link.com, link.baseOrigin)) + offset);
             for (int j = 0; j <= i; ++j)
-                s.g(j, 0) -= m * table.name(dot(link.gravity, link.JP[j]), "gamma" + idx(j) + "_" + L,
-                                            "\\gamma_{" + idx(j) + "}^{(" + L + ")}",
-                                            message(MessageId::MeaningGravityLever, idx(j), L), 6, i,
-                                            revolute[j] ? "m²/s²" : "m/s²");
+                s.g(j, 0) -=
+                    m * table.name(dot(link.gravity, link.JP[j]), "gamma" + idx(j) + "_" + L, "\\gamma_{" + idx(j) + "}^{(" + L + ")}",
+                                   message(MessageId::MeaningGravityLever, idx(j), L), 6, i, revolute[j] ? "m²/s²" : "m/s²");
         }
         for (int j = 0; j <= i; ++j) {
             checkpoint(8, "dbeta_" + idx(j) + "k^(" + L + ")");  // a 12-joint link has ~400 of them: check often
             for (int k = j; k <= i; ++k)
                 for (int l = j + 1; l <= i; ++l)  // ∂β_jk/∂q_l = 0 for l ≤ min(j, k) = j
-                    s.dB[l](j, k) += table.name(link.dBeta(j, k, l, m),
-                                                "delta" + idx(j) + "_" + idx(k) + "_" + L + "_" + idx(l),
+                    s.dB[l](j, k) += table.name(link.dBeta(j, k, l, m), "delta" + idx(j) + "_" + idx(k) + "_" + L + "_" + idx(l),
                                                 "\\partial\\beta_{" + indexList({j, k}) + "}^{(" + L + ")}/\\partial q_{" + idx(l) + "}",
-                                                message(MessageId::MeaningDerivative, "beta" + idx(j) + "_" + idx(k) + "_" + L, idx(l)), 8, i,
-                                                massMatrixUnit(revolute[j], revolute[k]) + (revolute[l] ? "" : "/m"));
+                                                message(MessageId::MeaningDerivative, "beta" + idx(j) + "_" + idx(k) + "_" + L, idx(l)), 8,
+                                                i, massMatrixUnit(revolute[j], revolute[k]) + (revolute[l] ? "" : "/m"));
         }
     }
     s.armature.assign(n, ex(0));
@@ -282,7 +279,7 @@ StructuredDynamics deriveStructured(const Scene& scene, const DerivationOptions&
             for (double& x : q) x = u(rng);
             s.trigToFunctions = tc.toFunctions();
             s.parameterValues = robot.parameterValues;
-    s.symbolLinks = linkSymbols(robot);
+            s.symbolLinks = linkSymbols(robot);
             states.emplace_back(table, structuredInputs(s, q, qd), options.cancel);
         }
         for (int l = 0; l < n; ++l) {
@@ -301,11 +298,10 @@ StructuredDynamics deriveStructured(const Scene& scene, const DerivationOptions&
         for (int j = 0; j < n; ++j)
             for (int k = j; k < n; ++k) {
                 if (s.dB[l](j, k).is_zero()) continue;
-                s.dB[l](j, k) = s.dB[l](k, j) =
-                    table.name(s.dB[l](j, k), "Db" + idx(j) + "_" + idx(k) + "_" + idx(l),
-                               "\\partial b_{" + indexList({j, k}) + "}/\\partial q_{" + idx(l) + "}",
-                               message(MessageId::MeaningDerivative, "b" + indexList({j, k}), idx(l)), 8, -1,
-                               massMatrixUnit(revolute[j], revolute[k]) + (revolute[l] ? "" : "/m"));
+                s.dB[l](j, k) = s.dB[l](k, j) = table.name(s.dB[l](j, k), "Db" + idx(j) + "_" + idx(k) + "_" + idx(l),
+                                                           "\\partial b_{" + indexList({j, k}) + "}/\\partial q_{" + idx(l) + "}",
+                                                           message(MessageId::MeaningDerivative, "b" + indexList({j, k}), idx(l)), 8, -1,
+                                                           massMatrixUnit(revolute[j], revolute[k]) + (revolute[l] ? "" : "/m"));
             }
     checkpoint(8, "C");
     s.C = matrix(n, n);
@@ -313,8 +309,7 @@ StructuredDynamics deriveStructured(const Scene& scene, const DerivationOptions&
         for (int j = 0; j < n; ++j) {
             throwIfCancelled(options.cancel);
             ex c = 0;
-            for (int k = 0; k < n; ++k)
-                c += GiNaC::numeric(1, 2) * (s.dB[k](i, j) + s.dB[j](i, k) - s.dB[i](j, k)) * tc.qd(k);
+            for (int k = 0; k < n; ++k) c += GiNaC::numeric(1, 2) * (s.dB[k](i, j) + s.dB[j](i, k) - s.dB[i](j, k)) * tc.qd(k);
             s.C(i, j) = c.expand();
         }
     for (const SymbolicTerm& spring : robot.springs) {

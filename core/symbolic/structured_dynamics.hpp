@@ -37,9 +37,9 @@ struct StructuredDynamics {
     std::string systemName;
     DhConvention convention = DhConvention::Standard;
     int n = 0;
-    std::shared_ptr<TrigContext> trig;          // the q_i, q̇_i, c_i, s_i symbols
-    std::shared_ptr<NamedDefinitions> table;    // the names, in dependency order
-    GiNaC::matrix B, C, g, Q;                   // over the names (Q: declared non-conservative forces)
+    std::shared_ptr<TrigContext> trig;        // the q_i, q̇_i, c_i, s_i symbols
+    std::shared_ptr<NamedDefinitions> table;  // the names, in dependency order
+    GiNaC::matrix B, C, g, Q;                 // over the names (Q: declared non-conservative forces)
     // The energies over the names: E_kin = ½ q̇ᵀ B q̇ (B's entries as their sums of β),
     // E_pot = −Σ_i m_i g0ᵀ p_ci + the springs' ½ k (q − q₀)², each link's g0ᵀ p_ci written in
     // its own frame as g0^(i) · (p_ci − o_0) (the gravity and frame-0 origin names).
@@ -51,9 +51,9 @@ struct StructuredDynamics {
     // dB[l](j, k) = ∂b_jk/∂q_l over the names (symmetric; zero where it vanishes).
     std::vector<GiNaC::matrix> dB;
     std::vector<GiNaC::symbol> qdd;
-    GiNaC::lst parameterValues;  // parameter symbol == value
-    GiNaC::lst trigToFunctions;  // c_i == cos(q_i), s_i == sin(q_i)
-    double seconds = 0.0;        // time of the derivation
+    GiNaC::lst parameterValues;              // parameter symbol == value
+    GiNaC::lst trigToFunctions;              // c_i == cos(q_i), s_i == sin(q_i)
+    double seconds = 0.0;                    // time of the derivation
     std::map<std::string, int> symbolLinks;  // one link's inertial parameters: name → link
     // Which coordinates b_jk depends on (bit l: q_{l+1}), as the names say.
     std::uint64_t coordinatesOfB(int j, int k) const { return table->coordinatesOf(B(j, k)); }

@@ -24,7 +24,7 @@ EntryRef parseEntry(const std::string& text, int n);
 
 struct ExpandedEntry {
     EntryRef ref;
-    GiNaC::ex value;     // in c_i, s_i, q_i, q̇_i and parameters
+    GiNaC::ex value;  // in c_i, s_i, q_i, q̇_i and parameters
     std::size_t terms = 0;
     double seconds = 0;
 };

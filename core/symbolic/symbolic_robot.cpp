@@ -60,7 +60,8 @@ private:
         if (mode_ == ParameterMode::Parametric && it != scene_.expressions.end()) {
             const GiNaC::ex parsed = table_.parse(field, it->second);
             for (auto f = parsed.preorder_begin(); f != parsed.preorder_end(); ++f)  // "0.5*m1": 0.5 was typed
-                if (GiNaC::is_a<GiNaC::numeric>(*f) && !GiNaC::ex_to<GiNaC::numeric>(*f).is_rational()) typed(exactNumber(GiNaC::ex_to<GiNaC::numeric>(*f).to_double()));
+                if (GiNaC::is_a<GiNaC::numeric>(*f) && !GiNaC::ex_to<GiNaC::numeric>(*f).is_rational())
+                    typed(exactNumber(GiNaC::ex_to<GiNaC::numeric>(*f).to_double()));
             return exactFloats(parsed);
         }
         if (it != scene_.expressions.end() && isAngle) {
@@ -120,8 +121,7 @@ SymbolicRobot symbolicRobot(const Scene& scene, ParameterMode mode, const GiNaC:
         sj.theta = reader.dhAngle(field("theta"), joint.dh.theta, "theta" + k);
         sj.mass = reader.value(field("mass"), joint.link.mass, "m" + k);
         for (int c = 0; c < 3; ++c)
-            sj.com(c, 0) = reader.value(field("com[" + std::to_string(c) + "]"), joint.link.com[c],
-                                        std::string(1, axes[c]) + "c" + k);
+            sj.com(c, 0) = reader.value(field("com[" + std::to_string(c) + "]"), joint.link.com[c], std::string(1, axes[c]) + "c" + k);
         for (int r = 0; r < 3; ++r)
             for (int c = r; c < 3; ++c) {
                 const std::string key = inertiaKeys[r][c];

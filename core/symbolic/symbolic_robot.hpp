@@ -36,8 +36,8 @@ struct SymbolicJoint {
 
 struct SymbolicTerm {  // one coefficient on one joint (spring, friction, torque)
     int joint = 0;
-    GiNaC::ex value;   // K, b, F_c, or τ(t)
-    GiNaC::ex extra;   // spring rest position, Coulomb smoothing speed
+    GiNaC::ex value;  // K, b, F_c, or τ(t)
+    GiNaC::ex extra;  // spring rest position, Coulomb smoothing speed
 };
 
 struct SymbolicRobot {
@@ -50,7 +50,7 @@ struct SymbolicRobot {
     // The motor symbols introduced (Jm1, G1, Ja2, ...) with their values, for the
     // derivation to say what they stand for.
     std::vector<std::pair<std::string, double>> motorSymbols;
-    GiNaC::lst parameterValues;              // symbol == value for every symbol introduced
+    GiNaC::lst parameterValues;  // symbol == value for every symbol introduced
     // The numbers the scene typed as decimals, made exact (1.375 → 11/8, 9.8 → 49/5): shown
     // as typed wherever they appear (number_spelling.hpp's NumberSpelling).
     std::vector<GiNaC::numeric> typedDecimals;

@@ -12,8 +12,7 @@ bool digitsOnly(const std::string& s) {
 }  // namespace
 
 std::string trigSymbolName(const TrigName& trig, int coordinateCount) {
-    const bool joined = coordinateCount >= 10 ||
-                        std::any_of(trig.indices.begin(), trig.indices.end(), [](int i) { return i >= 10; });
+    const bool joined = coordinateCount >= 10 || std::any_of(trig.indices.begin(), trig.indices.end(), [](int i) { return i >= 10; });
     std::string name(1, trig.kind);
     for (std::size_t k = 0; k < trig.indices.size(); ++k) {
         if (k > 0 && joined) name += '_';
@@ -36,8 +35,7 @@ std::optional<TrigName> parseTrigName(const std::string& name, int coordinateCou
         }
     } else {
         if (!digitsOnly(rest) || rest[0] == '0') return std::nullopt;
-        if (rest.size() == 1 || coordinateCount >= 10)
-            t.indices = {std::stoi(rest)};
+        if (rest.size() == 1 || coordinateCount >= 10) t.indices = {std::stoi(rest)};
         else
             for (char d : rest) {
                 if (d == '0') return std::nullopt;

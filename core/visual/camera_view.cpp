@@ -111,8 +111,8 @@ double distanceToHold(const CameraView& view, const std::vector<Eigen::Vector4d>
     for (const Eigen::Vector4d& s : spheres) {
         const Eigen::Vector3d v = s.head<3>() - view.centre;
         const double towardEye = v.dot(toEye) + s[3];
-        distance = std::max({distance, towardEye + (std::abs(v.dot(axes.right)) + s[3]) / tanX,
-                             towardEye + (std::abs(v.dot(axes.up)) + s[3]) / tanY});
+        distance = std::max(
+            {distance, towardEye + (std::abs(v.dot(axes.right)) + s[3]) / tanX, towardEye + (std::abs(v.dot(axes.up)) + s[3]) / tanY});
     }
     return distance;
 }

@@ -42,8 +42,7 @@ struct CameraView {
 
 // The view of `scene` (its `bounds`) for a picture of width/height `aspect`; it holds the
 // scene's keepInView spheres, or `hold` when given (the robot at one pose).
-CameraView cameraView(const VisualScene& scene, const CameraSpec& spec, double aspect,
-                      const std::vector<Eigen::Vector4d>* hold = nullptr);
+CameraView cameraView(const VisualScene& scene, const CameraSpec& spec, double aspect, const std::vector<Eigen::Vector4d>* hold = nullptr);
 
 // How far from `view.centre`, looking along the view's direction, the eye must stand for
 // every sphere (centre x, y, z, radius [m]) to lie inside the picture with 5 % to spare.

@@ -18,13 +18,13 @@
 namespace ll {
 
 struct DhDimension {
-    int joint = 0;                         // 0-based: row joint+1
+    int joint = 0;  // 0-based: row joint+1
     DhParameter parameter = DhParameter::D;
     bool angle = false;
-    double value = 0.0;                    // [m] or [rad], the joint variable included
-    std::vector<Eigen::Vector3d> points;   // the arrow (2 points) or the arc (a polyline), world frame
+    double value = 0.0;                   // [m] or [rad], the joint variable included
+    std::vector<Eigen::Vector3d> points;  // the arrow (2 points) or the arc (a polyline), world frame
     Eigen::Vector3d labelAt = Eigen::Vector3d::Zero();
-    std::string label;                     // "d1 = 0.672 m", "θ2 = 45.0°" (modified: a0, α0 for row 1)
+    std::string label;  // "d1 = 0.672 m", "θ2 = 45.0°" (modified: a0, α0 for row 1)
 };
 
 // Every row's dimensions at the pose in `data` (forward kinematics at q); arcs of radius

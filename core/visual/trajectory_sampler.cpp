@@ -6,9 +6,7 @@
 
 namespace ll {
 
-TrajectorySampler::TrajectorySampler(const Trajectory& trajectory) : trajectory_(trajectory) {
-    assert(trajectory.size() > 0);
-}
+TrajectorySampler::TrajectorySampler(const Trajectory& trajectory) : trajectory_(trajectory) { assert(trajectory.size() > 0); }
 
 double TrajectorySampler::startTime() const { return trajectory_.t.front(); }
 double TrajectorySampler::endTime() const { return trajectory_.t.back(); }

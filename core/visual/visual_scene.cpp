@@ -42,8 +42,7 @@ void placeAlong(VisualPart& part, const Eigen::Vector3d& a, const Eigen::Vector3
     part.length = along.norm();
     part.pose.setIdentity();
     part.pose.translation() = (a + b) / 2;
-    if (part.length > 0)
-        part.pose.linear() = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), along).toRotationMatrix();
+    if (part.length > 0) part.pose.linear() = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), along).toRotationMatrix();
 }
 
 // 1, 2 or 5 times a power of ten, the nearest at or above x.
@@ -69,8 +68,8 @@ struct VisualScene::Rig {
     enum class Rule { Fixed, JointMarker, Sleeve, FirstSegment, SecondSegment, Com, EndEffector, Body };
     struct PartRule {
         Rule rule = Rule::Fixed;
-        int index = 0;       // joint (robot) or body (Lagrangian)
-        bool bar = false;    // a segment drawn as the prismatic joint's bar
+        int index = 0;     // joint (robot) or body (Lagrangian)
+        bool bar = false;  // a segment drawn as the prismatic joint's bar
     };
 
     RobotModel robot;
@@ -79,7 +78,7 @@ struct VisualScene::Rig {
     std::vector<BodyPose> bodyPoses;
     std::vector<PartRule> rules;  // one per part
     int n = 0;
-    Eigen::VectorXd q;            // the current pose (robot)
+    Eigen::VectorXd q;  // the current pose (robot)
 
     // The point where link i turns from its first segment to its second: standard
     // o_{i-1} + d_i z_{i-1} = o_i − a_i x_i; modified o_{i-1} + a_{i-1} x_{i-1}.
@@ -186,7 +185,8 @@ VisualScene::VisualScene(const Scene& scene, std::optional<BodyPoses> compiledBo
             pedestal.length = kPedestalThickness * R;
             pedestal.color = kPedestalColor;
             pedestal.pose = rig.jointFrame(0);
-            const double behind = (rig.robot.joints[0].dh.type == JointType::Revolute ? kJointLength : kSleeveLength) / 2 + kPedestalThickness / 2;
+            const double behind =
+                (rig.robot.joints[0].dh.type == JointType::Revolute ? kJointLength : kSleeveLength) / 2 + kPedestalThickness / 2;
             // Under the start of link 1 on the joint's axis: o_0 (standard), o_0 + a_0 x_0
             // (modified, where d_1 runs from there up to o_1: the Panda's base column).
             const Eigen::Vector3d start = standard ? rig.data->axisPoint[0] : rig.elbow(0);
@@ -256,7 +256,8 @@ VisualScene::VisualScene(const Scene& scene, std::optional<BodyPoses> compiledBo
         pose(scene.initial.q, 0.0);
     }
     bounds = currentBounds();
-    forEachExtent([this](const Eigen::Vector3d& point, double radius) { keepInView.emplace_back(point.x(), point.y(), point.z(), radius); });
+    forEachExtent(
+        [this](const Eigen::Vector3d& point, double radius) { keepInView.emplace_back(point.x(), point.y(), point.z(), radius); });
     if (!scene.lagrangian && !parts.empty() && parts.front().role == PartRole::Pedestal) {  // the floor the pedestal stands on
         const VisualPart& pedestal = parts.front();
         const Eigen::Vector3d axis = pedestal.pose.linear().col(2);
@@ -373,7 +374,8 @@ void VisualScene::forEachExtent(Add add) const {
                         0.0);
                 break;
             default: {
-                const double across = part.shape == PartShape::Bar || part.shape == PartShape::Sleeve ? std::sqrt(2.0) * part.radius : part.radius;
+                const double across =
+                    part.shape == PartShape::Bar || part.shape == PartShape::Sleeve ? std::sqrt(2.0) * part.radius : part.radius;
                 add(c - z * part.length / 2, across);
                 add(c + z * part.length / 2, across);
             }
@@ -390,9 +392,8 @@ VisualBounds VisualScene::currentBounds() const {
 
 void VisualScene::currentExtent(std::vector<Eigen::Vector4d>& spheres) const {
     spheres.clear();
-    forEachExtent([&spheres](const Eigen::Vector3d& point, double radius) {
-        spheres.emplace_back(point.x(), point.y(), point.z(), radius);
-    });
+    forEachExtent(
+        [&spheres](const Eigen::Vector3d& point, double radius) { spheres.emplace_back(point.x(), point.y(), point.z(), radius); });
 }
 
 bool VisualScene::steppedFrame(int joint, int done, double fraction, Eigen::Isometry3d& frame) const {

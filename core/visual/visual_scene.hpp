@@ -56,32 +56,32 @@ enum class PartRole { Link, Joint, CentreOfMass, EndEffector, Pedestal, Body };
 bool stretches(PartShape shape);
 
 struct VisualPart {
-    std::string name;                 // "link 2", "joint 3", "COM 1", or a body's name
+    std::string name;  // "link 2", "joint 3", "COM 1", or a body's name
     PartShape shape = PartShape::Sphere;
     PartRole role = PartRole::Body;
-    double radius = 0.0;              // [m]
-    double length = 0.0;              // [m] along the part's z
+    double radius = 0.0;                            // [m]
+    double length = 0.0;                            // [m] along the part's z
     Eigen::Vector3d box = Eigen::Vector3d::Zero();  // [m] box edges
     Rgba color;
-    int coordinate = -1;              // the joint or coordinate (0-based) whose motion moves it
-                                      // last along the chain; -1: fixed in the world
+    int coordinate = -1;  // the joint or coordinate (0-based) whose motion moves it
+                          // last along the chain; -1: fixed in the world
     // --- pose(q, t) ---
     Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  // part frame in the world
 };
 
 // A coordinate frame drawn as an x/y/z triad (red/green/blue).
 struct VisualFrame {
-    std::string label;                // "0".."n" for the DH frames ("4,5,6" on the first of frames
-                                      // whose origins always coincide, empty on the others), "world"
-    double axisLength = 0.0;          // [m]
+    std::string label;                                       // "0".."n" for the DH frames ("4,5,6" on the first of frames
+                                                             // whose origins always coincide, empty on the others), "world"
+    double axisLength = 0.0;                                 // [m]
     Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  // filled by pose(q, t)
 };
 
 // The ground: a grid on the plane through `centre` perpendicular to `up`.
 struct VisualGround {
     Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-    double halfSize = 1.0;            // [m] the grid spans ±halfSize along its two axes
-    double spacing = 0.1;             // [m] between grid lines
+    double halfSize = 1.0;  // [m] the grid spans ±halfSize along its two axes
+    double spacing = 0.1;   // [m] between grid lines
 };
 
 // An axis-aligned box in the world frame holding every part and triad.
@@ -106,18 +106,18 @@ public:
     VisualScene(VisualScene&&) noexcept;
     VisualScene& operator=(VisualScene&&) noexcept;
 
-    std::string name;                  // the scene's name
+    std::string name;                               // the scene's name
     Eigen::Vector3d up = Eigen::Vector3d::UnitZ();  // unit, world frame
-    double scale = 1.0;                // characteristic length [m]: the reach of a robot
+    double scale = 1.0;                             // characteristic length [m]: the reach of a robot
     std::vector<VisualPart> parts;
-    std::vector<VisualFrame> frames;   // DH frames 0..n, or the world frame
-    int endEffector = -1;              // the part whose path the trail draws; -1: none
+    std::vector<VisualFrame> frames;  // DH frames 0..n, or the world frame
+    int endEffector = -1;             // the part whose path the trail draws; -1: none
     VisualGround ground;
     // Depth cues: a drop line from each centre of mass straight down (along −up) to the
     // ground, its foot where the mass stands over the ground. One pair (centre, foot) per
     // COM part, in `parts` order; updated by pose().
     std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> dropLines;
-    VisualBounds bounds;               // of the initial pose, then of the motion (fitToMotion)
+    VisualBounds bounds;  // of the initial pose, then of the motion (fitToMotion)
     // Spheres (centre x, y, z, radius [m]) that hold every part and triad at the initial
     // pose, then at every pose fitToMotion sampled: what a camera must keep in view.
     // Tighter than the corners of `bounds`, so a fitted camera frames the robot, not its box.

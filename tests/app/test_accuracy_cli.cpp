@@ -51,9 +51,8 @@ private slots:
     void accuracyWritesTableCsvAndPlot() {
         QTemporaryDir dir;
         const QString png = dir.filePath("wp.png"), csv = dir.filePath("wp.csv");
-        const Run r = run({"accuracy", example("simple_pendulum.json"), "--integrators", "rk4,dopri5,rosenbrock4",
-                           "--tolerances", "1e-4..1e-7", "--steps", "1e-2,5e-3", "--duration", "2", "--repeats", "1",
-                           "--out", png, "--csv", csv});
+        const Run r = run({"accuracy", example("simple_pendulum.json"), "--integrators", "rk4,dopri5,rosenbrock4", "--tolerances",
+                           "1e-4..1e-7", "--steps", "1e-2,5e-3", "--duration", "2", "--repeats", "1", "--out", png, "--csv", csv});
         QVERIFY2(r.exitCode == 0, r.err.constData());
         QVERIFY(r.out.contains("1 + |x_ref,i|"));  // says what "error" means
         QVERIFY(r.out.contains("reference: fehlberg78"));
@@ -66,8 +65,8 @@ private slots:
         const QList<QByteArray> row = lines[2].split(',');  // rk4 dt 1e-2
         QCOMPARE(row[0], QByteArray("rk4"));
         QVERIFY(row[4].toDouble() > 0 && row[4].toDouble() < 1e-3);
-        QCOMPARE(row[9].toLong(), 200L);         // steps: 2 s / 1e-2
-        QCOMPARE(row[11].toDouble(), 1e-2);      // step_seconds: the dt taken, beside the cost
+        QCOMPARE(row[9].toLong(), 200L);     // steps: 2 s / 1e-2
+        QCOMPARE(row[11].toDouble(), 1e-2);  // step_seconds: the dt taken, beside the cost
         QVERIFY(r.out.contains("dt [s]"));
         const QImage image(png);
         QVERIFY(!image.isNull());
@@ -122,8 +121,8 @@ private slots:
         QVERIFY(r.err.contains("per simulated second"));
         QVERIFY(r.err.contains("max |dE|/E"));
         // a fixed step that does not divide the duration: the summary says it
-        const Run f = run({"simulate", example("simple_pendulum.json"), "--duration", "1", "--integrator", "rk4", "--dt",
-                           "0.003", "--out", QTemporaryDir().filePath("x.csv")});
+        const Run f = run({"simulate", example("simple_pendulum.json"), "--duration", "1", "--integrator", "rk4", "--dt", "0.003", "--out",
+                           QTemporaryDir().filePath("x.csv")});
         QCOMPARE(f.exitCode, 0);
         QVERIFY2(f.err.contains("cost: 334 steps"), f.err.constData());
         QVERIFY2(f.err.contains("last shorter step of 0.001 s"), f.err.constData());
@@ -131,16 +130,15 @@ private slots:
     }
 
     void stiffSceneStopsWithRecommendation() {
-        const Run r = run({"simulate", example("hard/stiff_spring.json"), "--integrator", "dopri5", "--out",
-                           QTemporaryDir().filePath("x.csv")});
+        const Run r =
+            run({"simulate", example("hard/stiff_spring.json"), "--integrator", "dopri5", "--out", QTemporaryDir().filePath("x.csv")});
         QCOMPARE(r.exitCode, 3);
         QVERIFY2(r.err.contains("stiff") && r.err.contains("rosenbrock4"), r.err.constData());
     }
 };
 
 static int runAccuracyCli(int argc, char** argv) {
-    if (qEnvironmentVariableIsEmpty("DISPLAY") && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
-        qputenv("QT_QPA_PLATFORM", "offscreen");
+    if (qEnvironmentVariableIsEmpty("DISPLAY") && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
     QGuiApplication app(argc, argv);
     TestAccuracyCli test;
     return QTest::qExec(&test, argc, argv);

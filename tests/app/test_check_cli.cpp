@@ -27,8 +27,8 @@ namespace {
 test::ProcessRun cli(const QStringList& args) { return test::runProcess(LL_CLI, args); }
 QString example(const char* name) { return QString(LL_EXAMPLES_DIR) + "/" + name; }
 
-const char* const kKeys[] = {"min_eigenvalue_B", "max_condition_B", "skew_residual", "power_balance_residual",
-                             "newton_euler_residual", "energy_error"};
+const char* const kKeys[] = {"min_eigenvalue_B",       "max_condition_B",       "skew_residual",
+                             "power_balance_residual", "newton_euler_residual", "energy_error"};
 
 }  // namespace
 
@@ -135,9 +135,8 @@ private slots:
         };
         QCOMPARE(header.mid(0, 5).join(','), QByteArray("t,q1,qd1,Ekin,Epot"));
         const int inertial = column("tau_inertial_1 [N·m]"), coriolis = column("tau_coriolis_1 [N·m]"),
-                  potential = column("tau_potential_1 [N·m]"), Q = column("Q_1 [N·m]"),
-                  actuation = column("Q_actuation_1 [N·m]"), viscous = column("Q_viscous_1 [N·m]"),
-                  coulomb = column("Q_coulomb_1 [N·m]");
+                  potential = column("tau_potential_1 [N·m]"), Q = column("Q_1 [N·m]"), actuation = column("Q_actuation_1 [N·m]"),
+                  viscous = column("Q_viscous_1 [N·m]"), coulomb = column("Q_coulomb_1 [N·m]");
         double worst = 0, scale = 0, viscousSeen = 0;
         for (int k = 1; k < lines.size(); ++k) {
             const QList<QByteArray> v = lines[k].split(',');

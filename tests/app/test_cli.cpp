@@ -79,16 +79,36 @@ private slots:
         QTest::addColumn<QString>("field");
         QTest::addColumn<QString>("value");
         QTest::addColumn<QString>("expected");
-        QTest::newRow("negative mass of the first joint") << "mass" << "-2" << "robot.joints[0].mass (joint 1): mass is negative";
-        QTest::newRow("a 1e300 length") << "d" << "1e300" << "robot.joints[0].d (joint 1): absurdly large length 1e+300 m";
-        QTest::newRow("a 1e5 m length") << "a" << "1e5" << "robot.joints[0].a (joint 1): absurdly large length 100000 m";
-        QTest::newRow("a 1e-12 m length") << "a" << "1e-12" << "robot.joints[0].a (joint 1): absurdly small length 1e-12 m";
-        QTest::newRow("a 1e10 kg mass") << "mass" << "1e10" << "robot.joints[0].mass (joint 1): absurdly large mass 1e+10 kg";
-        QTest::newRow("a 1e-12 kg mass") << "mass" << "1e-12" << "robot.joints[0].mass (joint 1): absurdly small mass 1e-12 kg";
-        QTest::newRow("a 1e10 inertia") << "inertia.zz" << "1e10" << "robot.joints[0].inertia.zz (joint 1): absurdly large inertia 1e+10 kg m²";
-        QTest::newRow("a 1e-20 inertia") << "inertia.zz" << "1e-20" << "robot.joints[0].inertia.zz (joint 1): absurdly small inertia 1e-20 kg m²";
-        QTest::newRow("a 1e4 m/s² gravity") << "gravity" << "-1e4" << "effects.gravity: absurdly large gravity 10000 m/s²";
-        QTest::newRow("a 1e-9 m/s² gravity") << "gravity" << "-1e-9" << "effects.gravity: absurdly small gravity 1e-09 m/s²";
+        QTest::newRow("negative mass of the first joint") << "mass"
+                                                          << "-2"
+                                                          << "robot.joints[0].mass (joint 1): mass is negative";
+        QTest::newRow("a 1e300 length") << "d"
+                                        << "1e300"
+                                        << "robot.joints[0].d (joint 1): absurdly large length 1e+300 m";
+        QTest::newRow("a 1e5 m length") << "a"
+                                        << "1e5"
+                                        << "robot.joints[0].a (joint 1): absurdly large length 100000 m";
+        QTest::newRow("a 1e-12 m length") << "a"
+                                          << "1e-12"
+                                          << "robot.joints[0].a (joint 1): absurdly small length 1e-12 m";
+        QTest::newRow("a 1e10 kg mass") << "mass"
+                                        << "1e10"
+                                        << "robot.joints[0].mass (joint 1): absurdly large mass 1e+10 kg";
+        QTest::newRow("a 1e-12 kg mass") << "mass"
+                                         << "1e-12"
+                                         << "robot.joints[0].mass (joint 1): absurdly small mass 1e-12 kg";
+        QTest::newRow("a 1e10 inertia") << "inertia.zz"
+                                        << "1e10"
+                                        << "robot.joints[0].inertia.zz (joint 1): absurdly large inertia 1e+10 kg m²";
+        QTest::newRow("a 1e-20 inertia") << "inertia.zz"
+                                         << "1e-20"
+                                         << "robot.joints[0].inertia.zz (joint 1): absurdly small inertia 1e-20 kg m²";
+        QTest::newRow("a 1e4 m/s² gravity") << "gravity"
+                                            << "-1e4"
+                                            << "effects.gravity: absurdly large gravity 10000 m/s²";
+        QTest::newRow("a 1e-9 m/s² gravity") << "gravity"
+                                             << "-1e-9"
+                                             << "effects.gravity: absurdly small gravity 1e-09 m/s²";
     }
     void fieldPathsAndAbsurdMagnitudes() {
         QFETCH(QString, field);
@@ -157,8 +177,8 @@ private slots:
     // With its motors, examples/puma560.json gives the Robotics Toolbox's inertia at
     // qn = (0, π/4, π, 0, π/4, 0).
     void evalPuma560WithMotorsAtNominal() {
-        const Run r = run({"eval", example("puma560.json"), "--q", "0,0.7853981633974483,3.141592653589793,0,0.7853981633974483,0",
-                           "--qd", "0,0,0,0,0,0"});
+        const Run r = run({"eval", example("puma560.json"), "--q", "0,0.7853981633974483,3.141592653589793,0,0.7853981633974483,0", "--qd",
+                           "0,0,0,0,0,0"});
         QCOMPARE(r.exitCode, 0);
         const QJsonArray B = QJsonDocument::fromJson(r.out).object()["B"].toArray();
         const double toolbox[] = {3.6594, 4.4137, 0.9378, 0.1925, 0.1713, 0.1941};
@@ -171,9 +191,13 @@ private slots:
         QTest::addColumn<QByteArray>("json");
         QTest::addColumn<QString>("expected");
         const QByteArray head = R"({"format":"lagrangelab-scene/1","name":"x","robot":{"convention":"standard","joints":[)";
-        QTest::newRow("degree sign in a length") << head + R"({"type":"revolute","a":"1°","mass":2}]}})" << QString::fromUtf8("robot.joints[0].a (joint 1): '°' (U+00B0) at position 2");
-        QTest::newRow("minus sign in alpha") << head + R"({"type":"revolute","a":1,"alpha":"−pi/2","mass":2}]}})" << QString::fromUtf8("robot.joints[0].alpha (joint 1): unexpected character '−' (U+2212) at position 1");
-        QTest::newRow("ordinal for degree") << head + R"({"type":"revolute","a":1,"alpha":"90º","mass":2}]}})" << QString::fromUtf8("'º' (U+00BA) at position 3");
+        QTest::newRow("degree sign in a length") << head + R"({"type":"revolute","a":"1°","mass":2}]}})"
+                                                 << QString::fromUtf8("robot.joints[0].a (joint 1): '°' (U+00B0) at position 2");
+        QTest::newRow("minus sign in alpha") << head + R"({"type":"revolute","a":1,"alpha":"−pi/2","mass":2}]}})"
+                                             << QString::fromUtf8(
+                                                    "robot.joints[0].alpha (joint 1): unexpected character '−' (U+2212) at position 1");
+        QTest::newRow("ordinal for degree") << head + R"({"type":"revolute","a":1,"alpha":"90º","mass":2}]}})"
+                                            << QString::fromUtf8("'º' (U+00BA) at position 3");
         QTest::newRow("cut character") << head + QByteArray("{\"type\":\"revolute\",\"a\":1,\"alpha\":\"90\xC2\",\"mass\":2}]}}")
                                        << QString("the file is not UTF-8: byte 0xC2 at line 1, column");
     }
@@ -204,7 +228,8 @@ private slots:
         });
         const Run r = run({"eval", path, "--q", "0,0", "--qd", "0,0"});
         QCOMPARE(r.exitCode, 0);
-        QVERIFY2(QString::fromUtf8(r.err).contains(QString::fromUtf8("robot.joints[0].alpha (joint 1): alpha 90 rad — did you mean 90°? write 90° or pi/2")),
+        QVERIFY2(QString::fromUtf8(r.err).contains(
+                     QString::fromUtf8("robot.joints[0].alpha (joint 1): alpha 90 rad — did you mean 90°? write 90° or pi/2")),
                  r.err.constData());
     }
 
@@ -254,11 +279,16 @@ private slots:
         QTest::addColumn<QString>("json");
         QTest::addColumn<QString>("expected");
         const QString head = R"({"format":"lagrangelab-scene/1","name":"x","robot":{"convention":"standard","joints":[)";
-        QTest::newRow("negative mass") << head + R"({"type":"revolute","a":1,"mass":-2,"inertia":{"zz":1}}]}})" << "robot.joints[0].mass";
-        QTest::newRow("non-PSD inertia") << head + R"({"type":"revolute","a":1,"mass":2,"inertia":{"xx":1,"yy":1,"zz":1,"xy":5}}]}})" << "robot.joints[0].inertia";
-        QTest::newRow("massless joint") << head + R"({"type":"revolute","a":1,"mass":0}]}})" << "robot.joints[0]";
-        QTest::newRow("malformed JSON") << head + R"({"type":"revolute",,]}})" << "JSON syntax error";
-        QTest::newRow("unknown integrator") << head + R"({"type":"revolute","a":1,"mass":2}]},"simulation":{"integrator":"rk45"}})" << "simulation.integrator";
+        QTest::newRow("negative mass") << head + R"({"type":"revolute","a":1,"mass":-2,"inertia":{"zz":1}}]}})"
+                                       << "robot.joints[0].mass";
+        QTest::newRow("non-PSD inertia") << head + R"({"type":"revolute","a":1,"mass":2,"inertia":{"xx":1,"yy":1,"zz":1,"xy":5}}]}})"
+                                         << "robot.joints[0].inertia";
+        QTest::newRow("massless joint") << head + R"({"type":"revolute","a":1,"mass":0}]}})"
+                                        << "robot.joints[0]";
+        QTest::newRow("malformed JSON") << head + R"({"type":"revolute",,]}})"
+                                        << "JSON syntax error";
+        QTest::newRow("unknown integrator") << head + R"({"type":"revolute","a":1,"mass":2}]},"simulation":{"integrator":"rk45"}})"
+                                            << "simulation.integrator";
     }
     void badInputGivesOneLineAndExitCode2() {
         QFETCH(QString, json);
@@ -279,10 +309,14 @@ private slots:
     void deriveJsonAgreesWithEval_data() {
         QTest::addColumn<QString>("scene");
         QTest::addColumn<QString>("mode");
-        QTest::newRow("planar 2R, parameters") << "planar_2r.json" << "";
-        QTest::newRow("SCARA, numeric") << "scara.json" << "--numeric";
-        QTest::newRow("cart-pole, symbolic") << "cart_pole.json" << "--symbolic";
-        QTest::newRow("Stanford, parameters") << "stanford_arm.json" << "";
+        QTest::newRow("planar 2R, parameters") << "planar_2r.json"
+                                               << "";
+        QTest::newRow("SCARA, numeric") << "scara.json"
+                                        << "--numeric";
+        QTest::newRow("cart-pole, symbolic") << "cart_pole.json"
+                                             << "--symbolic";
+        QTest::newRow("Stanford, parameters") << "stanford_arm.json"
+                                              << "";
     }
     void deriveJsonAgreesWithEval() {
         QFETCH(QString, scene);
@@ -329,7 +363,8 @@ private slots:
         }
         for (int i = 0; i < n; ++i) {
             const double g = value(d["g"].toArray()[i]);
-            QVERIFY2(std::abs(g - e["g"].toArray()[i].toDouble()) < 1e-9 * std::max(1.0, std::abs(g)), qPrintable(QString("g%1").arg(i + 1)));
+            QVERIFY2(std::abs(g - e["g"].toArray()[i].toDouble()) < 1e-9 * std::max(1.0, std::abs(g)),
+                     qPrintable(QString("g%1").arg(i + 1)));
             for (int j = 0; j < n; ++j) {
                 const double b = value(d["B"].toArray()[i].toArray()[j]), c = value(d["C"].toArray()[i].toArray()[j]);
                 QVERIFY(std::abs(b - e["B"].toArray()[i].toArray()[j].toDouble()) < 1e-9 * std::max(1.0, std::abs(b)));
@@ -473,8 +508,8 @@ private slots:
             QCOMPARE(r.exitCode, 0);
             QVERIFY(r.out.startsWith("usage: lagrangelab <command>"));
             QCOMPARE(r.out, bare.err);
-            for (const char* command : {"eval SCENE", "simulate SCENE", "derive SCENE", "integrators", "accuracy SCENE",
-                                        "render SCENE", "codegen SCENE", "help [COMMAND]", "version"})
+            for (const char* command : {"eval SCENE", "simulate SCENE", "derive SCENE", "integrators", "accuracy SCENE", "render SCENE",
+                                        "codegen SCENE", "help [COMMAND]", "version"})
                 QVERIFY2(r.out.contains(QByteArray("\n  ") + command), command);
         }
     }
@@ -484,13 +519,20 @@ private slots:
     void commandHelpPrintsItsUsage_data() {
         QTest::addColumn<QString>("command");
         QTest::addColumn<QString>("synopsis");
-        QTest::newRow("eval") << "eval" << "SCENE --q v1,... --qd v1,... [--t T] [--tau v1,...]";
-        QTest::newRow("simulate") << "simulate" << "SCENE [--duration T] [--integrator NAME]";
-        QTest::newRow("derive") << "derive" << "SCENE [--format text|latex|json|pdf|svg|png] [--out FILE] [--steps 0-8]";
-        QTest::newRow("integrators") << "integrators" << "";
-        QTest::newRow("accuracy") << "accuracy" << "SCENE [--integrators a,b,...]";
-        QTest::newRow("help") << "help" << "[COMMAND]";
-        QTest::newRow("version") << "version" << "";
+        QTest::newRow("eval") << "eval"
+                              << "SCENE --q v1,... --qd v1,... [--t T] [--tau v1,...]";
+        QTest::newRow("simulate") << "simulate"
+                                  << "SCENE [--duration T] [--integrator NAME]";
+        QTest::newRow("derive") << "derive"
+                                << "SCENE [--format text|latex|json|pdf|svg|png] [--out FILE] [--steps 0-8]";
+        QTest::newRow("integrators") << "integrators"
+                                     << "";
+        QTest::newRow("accuracy") << "accuracy"
+                                  << "SCENE [--integrators a,b,...]";
+        QTest::newRow("help") << "help"
+                              << "[COMMAND]";
+        QTest::newRow("version") << "version"
+                                 << "";
     }
     void commandHelpPrintsItsUsage() {
         QFETCH(QString, command);

@@ -219,7 +219,7 @@ private slots:
         for (size_t k = rest; k < tr.size(); ++k) QCOMPARE(tr.q[k][0], tr.q[rest][0]);  // stuck, no creep
         const double m = 1.0, g = 9.81, l = 1.0, Fc = scene.effects.coulomb[0].force;
         QVERIFY(std::abs(tr.q.back()[0]) <= std::asin(Fc / (m * g * l)) + 1e-9);  // friction can hold it there
-        QVERIFY(std::abs(tr.q.back()[0]) > 1e-3);                                  // and it did not slide to the bottom
+        QVERIFY(std::abs(tr.q.back()[0]) > 1e-3);                                 // and it did not slide to the bottom
         for (size_t k = 1; k < tr.size(); ++k)
             QVERIFY2(tr.E[k] <= tr.E[k - 1] + 1e-9 * std::abs(tr.E[0]), qPrintable(QString("E rose at t = %1").arg(tr.t[k])));
         QVERIFY(tr.work.back() < -1.0);  // friction did the dissipating
@@ -287,7 +287,8 @@ private slots:
             parseScene(bad);
         } catch (const InputError& e) {
             for (const Diagnostic& d : e.diagnostics())
-                named = named || (d.field == "effects.coulomb[0].model" && d.message.english().find("\"tanh\" or \"stick\"") != std::string::npos);
+                named = named ||
+                        (d.field == "effects.coulomb[0].model" && d.message.english().find("\"tanh\" or \"stick\"") != std::string::npos);
         }
         QVERIFY(named);
     }

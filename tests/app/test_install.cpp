@@ -53,8 +53,7 @@ double differingShare(const QImage& a, const QImage& b) {
     for (int y = 0; y < a.height(); ++y)
         for (int x = 0; x < a.width(); ++x) {
             const QRgb p = a.pixel(x, y), q = b.pixel(x, y);
-            if (std::abs(qRed(p) - qRed(q)) > 24 || std::abs(qGreen(p) - qGreen(q)) > 24 || std::abs(qBlue(p) - qBlue(q)) > 24)
-                ++differing;
+            if (std::abs(qRed(p) - qRed(q)) > 24 || std::abs(qGreen(p) - qGreen(q)) > 24 || std::abs(qBlue(p) - qBlue(q)) > 24) ++differing;
         }
     return static_cast<double>(differing) / (a.width() * a.height());
 }
@@ -77,8 +76,8 @@ class TestInstall : public QObject {
         // mount namespace of the child's own: the program cannot read either.
         const QString script = "for d in \"$1\" \"$2\"; do if [ -d \"$d\" ]; then mount -t tmpfs none \"$d\" || exit 97; fi; done; "
                                "shift 2; exec \"$@\"";
-        return runProcess("unshare", QStringList{"--mount", "--", "sh", "-c", script, "sh", LL_SOURCE_DIR, LL_BUILD_DIR, exe} + args,
-                          work_, headless());
+        return runProcess("unshare", QStringList{"--mount", "--", "sh", "-c", script, "sh", LL_SOURCE_DIR, LL_BUILD_DIR, exe} + args, work_,
+                          headless());
     }
     QString example(const QString& name) const { return prefix_ + "/share/lagrangelab/examples/" + name; }
 
@@ -104,7 +103,8 @@ private slots:
         else qInfo("runs in a mount namespace with tmpfs over %s and %s", LL_SOURCE_DIR, LL_BUILD_DIR);
         if (hidden_) {
             // The namespace does hide the trees.
-            const ProcessRun ls = runProcess("unshare", {"--mount", "--", "sh", "-c", "mount -t tmpfs none \"$1\" && ls -A \"$1\"", "sh", LL_SOURCE_DIR});
+            const ProcessRun ls =
+                runProcess("unshare", {"--mount", "--", "sh", "-c", "mount -t tmpfs none \"$1\" && ls -A \"$1\"", "sh", LL_SOURCE_DIR});
             QCOMPARE(ls.exitCode, 0);
             QCOMPARE(ls.out, QByteArray());
         }
@@ -227,7 +227,8 @@ private slots:
         QCOMPARE(entry["Exec"], QString("lagrangelab %f"));
         QCOMPARE(entry["Icon"], kAppId);
         QCOMPARE(entry["MimeType"], kSceneType + ";");
-        if (QStandardPaths::findExecutable("desktop-file-validate").isEmpty()) QSKIP("desktop-file-validate is not installed (desktop-file-utils)");
+        if (QStandardPaths::findExecutable("desktop-file-validate").isEmpty())
+            QSKIP("desktop-file-validate is not installed (desktop-file-utils)");
         const ProcessRun r = runProcess("desktop-file-validate", {desktop});
         QVERIFY2(r.exitCode == 0, (r.out + r.err).constData());
         QVERIFY2(!r.out.contains("error"), r.out.constData());
@@ -246,7 +247,8 @@ private slots:
     // scene by its header, with only the installed MIME database.
     void mimeType() {
         for (const char* tool : {"update-mime-database", "xdg-mime"})
-            if (QStandardPaths::findExecutable(tool).isEmpty()) QSKIP(qPrintable(QString(tool) + " is not installed (shared-mime-info, xdg-utils)"));
+            if (QStandardPaths::findExecutable(tool).isEmpty())
+                QSKIP(qPrintable(QString(tool) + " is not installed (shared-mime-info, xdg-utils)"));
         const ProcessRun update = runProcess("update-mime-database", {prefix_ + "/share/mime"});
         QVERIFY2(update.exitCode == 0, update.err.constData());
         QVERIFY(QFile::copy(example("simple_pendulum.json"), work_ + "/pendulum.lagrange"));

@@ -51,8 +51,7 @@ void expressions(const nlohmann::ordered_json& node, std::vector<std::string>& o
             const std::string& key = it.key();
             if (key == "expr" || key == "B" || key == "C" || key == "g" || key == "Q" || key == "Ekin" || key == "Epot")
                 strings(it.value(), out);
-            else if (it.value().is_structured())
-                expressions(it.value(), out);
+            else if (it.value().is_structured()) expressions(it.value(), out);
         }
     } else if (node.is_array()) {
         for (const auto& item : node) expressions(item, out);
@@ -92,7 +91,7 @@ class TestJsonExpressions : public QObject {
     Q_OBJECT
     QTemporaryDir dir_;
     std::vector<Derived> derived_;
-    bool sympy_ = false;                        // python3-sympy importable
+    bool sympy_ = false;                         // python3-sympy importable
     std::map<QString, QList<QByteArray>> read_;  // per written file, SymPy's values in document order
     QByteArray sympyError_;
 

@@ -25,25 +25,25 @@ namespace {
 // The same value written by JsonWriter, as nlohmann's dump(2) lays it out.
 void write(JsonWriter& w, const ordered& j) {
     switch (j.type()) {
-    case ordered::value_t::object:
-        w.beginObject();
-        for (const auto& [key, value] : j.items()) {
-            w.key(key);
-            write(w, value);
-        }
-        w.endObject();
-        return;
-    case ordered::value_t::array:
-        w.beginArray();
-        for (const ordered& value : j) write(w, value);
-        w.endArray();
-        return;
-    case ordered::value_t::string: return w.value(j.get<std::string>());
-    case ordered::value_t::boolean: return w.value(j.get<bool>());
-    case ordered::value_t::number_integer:
-    case ordered::value_t::number_unsigned: return w.value(j.get<long long>());
-    case ordered::value_t::number_float: return w.value(j.get<double>());
-    default: QFAIL("a value type the derivation's JSON does not have");
+        case ordered::value_t::object:
+            w.beginObject();
+            for (const auto& [key, value] : j.items()) {
+                w.key(key);
+                write(w, value);
+            }
+            w.endObject();
+            return;
+        case ordered::value_t::array:
+            w.beginArray();
+            for (const ordered& value : j) write(w, value);
+            w.endArray();
+            return;
+        case ordered::value_t::string: return w.value(j.get<std::string>());
+        case ordered::value_t::boolean: return w.value(j.get<bool>());
+        case ordered::value_t::number_integer:
+        case ordered::value_t::number_unsigned: return w.value(j.get<long long>());
+        case ordered::value_t::number_float: return w.value(j.get<double>());
+        default: QFAIL("a value type the derivation's JSON does not have");
     }
 }
 
@@ -64,10 +64,8 @@ std::string randomString(std::mt19937& rng) {
     std::uniform_int_distribution<int> piece(0, static_cast<int>(std::size(pieces)) - 1);
     std::string s;
     for (int i = length(rng); i > 0; --i)
-        if (kind(rng) < 3)
-            s += static_cast<char>(ascii(rng));
-        else
-            s += pieces[piece(rng)];
+        if (kind(rng) < 3) s += static_cast<char>(ascii(rng));
+        else s += pieces[piece(rng)];
     return s;
 }
 
@@ -75,26 +73,26 @@ ordered randomValue(std::mt19937& rng, int depth) {
     std::uniform_int_distribution<int> kind(0, depth > 3 ? 4 : 7), size(0, 4);
     std::uniform_real_distribution<double> real(-1e3, 1e3);
     switch (kind(rng)) {
-    case 0: return randomString(rng);
-    case 1: return std::uniform_int_distribution<long long>(-1000000, 1000000)(rng);
-    case 2: {
-        const double x = real(rng);
-        const int scale = std::uniform_int_distribution<int>(-12, 12)(rng);
-        return std::ldexp(x, scale * 4);  // 1e-05-like and 2.0-like forms both come up
-    }
-    case 3: return std::uniform_int_distribution<int>(0, 1)(rng) == 1;
-    case 4: return static_cast<double>(std::uniform_int_distribution<int>(-5, 5)(rng));  // 2.0, -0.0
-    case 5:
-    case 6: {
-        ordered a = ordered::array();
-        for (int i = size(rng); i > 0; --i) a.push_back(randomValue(rng, depth + 1));
-        return a;
-    }
-    default: {
-        ordered o = ordered::object();
-        for (int i = size(rng); i > 0; --i) o[randomString(rng) + std::to_string(i)] = randomValue(rng, depth + 1);
-        return o;
-    }
+        case 0: return randomString(rng);
+        case 1: return std::uniform_int_distribution<long long>(-1000000, 1000000)(rng);
+        case 2: {
+            const double x = real(rng);
+            const int scale = std::uniform_int_distribution<int>(-12, 12)(rng);
+            return std::ldexp(x, scale * 4);  // 1e-05-like and 2.0-like forms both come up
+        }
+        case 3: return std::uniform_int_distribution<int>(0, 1)(rng) == 1;
+        case 4: return static_cast<double>(std::uniform_int_distribution<int>(-5, 5)(rng));  // 2.0, -0.0
+        case 5:
+        case 6: {
+            ordered a = ordered::array();
+            for (int i = size(rng); i > 0; --i) a.push_back(randomValue(rng, depth + 1));
+            return a;
+        }
+        default: {
+            ordered o = ordered::object();
+            for (int i = size(rng); i > 0; --i) o[randomString(rng) + std::to_string(i)] = randomValue(rng, depth + 1);
+            return o;
+        }
     }
 }
 
@@ -124,17 +122,22 @@ private slots:
         for (int k = 0; k < 300; ++k) {
             const ordered j = randomValue(rng, 0);
             const std::string expected = j.dump(2), got = written(j);
-            if (got != expected) QFAIL(qPrintable(QString("document %1 differs:\n%2\n---\n%3").arg(k).arg(QString::fromStdString(expected), QString::fromStdString(got))));
+            if (got != expected)
+                QFAIL(qPrintable(QString("document %1 differs:\n%2\n---\n%3")
+                                     .arg(k)
+                                     .arg(QString::fromStdString(expected), QString::fromStdString(got))));
             const std::string expectedCompact = j.dump(), gotCompact = compact(j);
             if (gotCompact != expectedCompact)
-                QFAIL(qPrintable(QString("document %1 differs (compact):\n%2\n---\n%3").arg(k).arg(QString::fromStdString(expectedCompact), QString::fromStdString(gotCompact))));
+                QFAIL(qPrintable(QString("document %1 differs (compact):\n%2\n---\n%3")
+                                     .arg(k)
+                                     .arg(QString::fromStdString(expectedCompact), QString::fromStdString(gotCompact))));
         }
     }
 
     void invalidUtf8RefusedAsByNlohmann() {
-        for (const std::string bad : {std::string("a\xC3"), std::string("\xC0\x80"), std::string("\xED\xA0\x80"),
-                                      std::string("\xF4\x90\x80\x80"), std::string("\x80"), std::string("\xE2\x82"),
-                                      std::string("ok \xFF")}) {
+        for (const std::string bad :
+             {std::string("a\xC3"), std::string("\xC0\x80"), std::string("\xED\xA0\x80"), std::string("\xF4\x90\x80\x80"),
+              std::string("\x80"), std::string("\xE2\x82"), std::string("ok \xFF")}) {
             QVERIFY_THROWS_EXCEPTION(nlohmann::json::exception, (void)ordered(bad).dump(2));
             std::string out;
             JsonWriter w(out);
@@ -163,8 +166,9 @@ private slots:
     // The CLI's derivation JSON, read back and dumped by nlohmann, is the same bytes.
     void derivationJsonReadsBackUnchanged() {
         const QString examples = LL_EXAMPLES_DIR;
-        for (const QStringList& args : {QStringList{"derive", examples + "/planar_2r.json", "--format", "json"},
-                                        QStringList{"derive", examples + "/scara.json", "--format", "json", "--form", "expanded", "--symbolic"}}) {
+        for (const QStringList& args :
+             {QStringList{"derive", examples + "/planar_2r.json", "--format", "json"},
+              QStringList{"derive", examples + "/scara.json", "--format", "json", "--form", "expanded", "--symbolic"}}) {
             const auto run = ll::test::runProcess(LL_CLI, args);
             QCOMPARE(run.exitCode, 0);
             const std::string document = run.out.toStdString();

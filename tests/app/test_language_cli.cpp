@@ -114,10 +114,12 @@ private slots:
         f.close();
         const Run da = run({"derive", bad, "--lang", "da"});
         QCOMPARE(da.code, 2);
-        QVERIFY2(da.err.contains(QString::fromUtf8("fejl: ") + bad + QString::fromUtf8(": robot.joints[0].mass (led 1): massen er negativ (-1 kg); den skal være >= 0")),
+        QVERIFY2(da.err.contains(QString::fromUtf8("fejl: ") + bad +
+                                 QString::fromUtf8(": robot.joints[0].mass (led 1): massen er negativ (-1 kg); den skal være >= 0")),
                  qPrintable(da.err));
         const Run en = run({"derive", bad});
-        QVERIFY2(en.err.contains("error: " + bad + ": robot.joints[0].mass (joint 1): mass is negative (-1 kg); it must be >= 0"), qPrintable(en.err));
+        QVERIFY2(en.err.contains("error: " + bad + ": robot.joints[0].mass (joint 1): mass is negative (-1 kg); it must be >= 0"),
+                 qPrintable(en.err));
         // Other kinds of message read as whole Danish sentences, no English clause left.
         const char* broken[] = {
             R"json({"format": "lagrangelab-scene/1", "name": "k", "robot": {"convention": "standard", "joints": [{"type": "revolute", "a": 1, "alpha": 0, "d": 0, "theta": 0, "mass": 1, "com": [0,0,0], "inertia": {"xx": 0.1, "yy": 0.1, "zz": 0.1}, "colour": 3}]}})json",
@@ -137,8 +139,10 @@ private slots:
                 QVERIFY2(!r.err.contains(english), qPrintable(QString(english) + " in " + r.err));
         }
         const Run warned = run({"derive", example("stanford_arm.json"), "--lang", "da", "--steps", "0"});
-        QVERIFY2(warned.err.contains(QString::fromUtf8("advarsel: ")) && warned.err.contains(QString::fromUtf8("overholder ikke trekantsuligheden")) &&
-                     warned.err.contains(QString::fromUtf8("tip: intet fysisk legeme har denne inerti")) && !warned.err.contains("warning:"),
+        QVERIFY2(warned.err.contains(QString::fromUtf8("advarsel: ")) &&
+                     warned.err.contains(QString::fromUtf8("overholder ikke trekantsuligheden")) &&
+                     warned.err.contains(QString::fromUtf8("tip: intet fysisk legeme har denne inerti")) &&
+                     !warned.err.contains("warning:"),
                  qPrintable(warned.err));
     }
 
@@ -156,11 +160,13 @@ private slots:
         QVERIFY2(stopped.startsWith(QString::fromUtf8("fejl: simuleringen stoppede: scenen er stiv for dopri5: ved t = ")) &&
                      stopped.contains(QString::fromUtf8("Brug den implicitte integrator rosenbrock4")),
                  qPrintable(stopped));
-        for (const char* english : {" the ", " stiff ", "error:"}) QVERIFY2(!stopped.contains(english), qPrintable(english + (": " + stopped)));
+        for (const char* english : {" the ", " stiff ", "error:"})
+            QVERIFY2(!stopped.contains(english), qPrintable(english + (": " + stopped)));
 
         const QStringList camera = {"render", example("planar_2r.json"), "--out", dir.filePath("x.png"), "--camera", "diagonal"};
-        QCOMPARE(run(camera).err, QString::fromUtf8("error: --camera diagonal: unknown camera: expected front, side, top, iso, auto or "
-                                                    "azimuth,elevation[,distance] (degrees, elevation within ±90, distance > 0 in metres)\n"));
+        QCOMPARE(run(camera).err,
+                 QString::fromUtf8("error: --camera diagonal: unknown camera: expected front, side, top, iso, auto or "
+                                   "azimuth,elevation[,distance] (degrees, elevation within ±90, distance > 0 in metres)\n"));
         const Run cameraDa = run(camera + QStringList{"--lang", "da"});
         QCOMPARE(cameraDa.code, 2);
         QCOMPARE(cameraDa.err, QString::fromUtf8("fejl: --camera diagonal: ukendt kamera: forventede front, side, top, iso, auto eller "
@@ -191,8 +197,10 @@ private slots:
                                              << QStringList{"D(q) = ", "d_{ij}", "D\\ddot{q} + C\\dot{q} + g = \\tau"}
                                              << QStringList{"D", "g", "τ"} << QStringList{"B = ", "b11 = "};
             QTest::addRow("%s craig", scene) << scene << "craig"
-                                             << QStringList{puma ? "m11 = " : "M = ", "G = ", "τ = ", "θ̈1", "Craig's notation goes with modified DH"}
-                                             << QStringList{"M(\\Theta) = ", "G(\\Theta) = ", "\\ddot{\\theta}_{1}", "V(\\Theta, \\dot{\\Theta})"}
+                                             << QStringList{puma ? "m11 = " : "M = ", "G = ", "τ = ", "θ̈1",
+                                                            "Craig's notation goes with modified DH"}
+                                             << QStringList{"M(\\Theta) = ", "G(\\Theta) = ", "\\ddot{\\theta}_{1}",
+                                                            "V(\\Theta, \\dot{\\Theta})"}
                                              << QStringList{"M", "G", "τ"} << QStringList{"q̈1", "B = ", "g = "};
         }
     }
@@ -240,7 +248,8 @@ private slots:
             } catch (const InputError&) {  // refused by design (massless_joint)
             }
         }
-        QVERIFY2(titles.size() >= 11, qPrintable(QString::number(titles.size())));  // 9 robot steps, two conventions, the Lagrangian's step 0
+        QVERIFY2(titles.size() >= 11,
+                 qPrintable(QString::number(titles.size())));  // 9 robot steps, two conventions, the Lagrangian's step 0
         for (MessageId t : titles) {
             const char* danish = present::danishWords(t);
             QVERIFY2(danish && *danish && std::string(danish) != englishWords(t), messageIdName(t));

@@ -63,17 +63,19 @@ std::string badDiagnostics(const std::vector<Diagnostic>& diagnostics) {
         if (const std::size_t file = line.find(".json: "); file != std::string::npos) line = "error: " + line.substr(file + 7);
         if (d.field.empty()) return "a message names no field: " + text;
         if (d.message.english().empty()) return "an empty message for " + d.field;
-        if (d.message.english().find('\n') != std::string::npos || d.hint.english().find('\n') != std::string::npos) return "a message of several lines: " + text;
+        if (d.message.english().find('\n') != std::string::npos || d.hint.english().find('\n') != std::string::npos)
+            return "a message of several lines: " + text;
         if (line.size() > 200) return "a first line of " + std::to_string(line.size()) + " bytes: " + line;
-        if (d.hint.english().size() > 700) return "a hint of " + std::to_string(d.hint.english().size()) + " bytes: " + d.hint.english().substr(0, 200);
+        if (d.hint.english().size() > 700)
+            return "a hint of " + std::to_string(d.hint.english().size()) + " bytes: " + d.hint.english().substr(0, 200);
         if (!isValidUtf8(text)) return "a message that is not UTF-8";
     }
     return "";
 }
 
 bool allFinite(const SceneEvaluation& e) {
-    return e.terms.B.allFinite() && e.terms.C.allFinite() && e.terms.g.allFinite() && e.terms.Q.allFinite() &&
-           e.qdd.allFinite() && std::isfinite(e.terms.Ekin) && std::isfinite(e.terms.Epot);
+    return e.terms.B.allFinite() && e.terms.C.allFinite() && e.terms.g.allFinite() && e.terms.Q.allFinite() && e.qdd.allFinite() &&
+           std::isfinite(e.terms.Ekin) && std::isfinite(e.terms.Epot);
 }
 
 bool allFinite(const Trajectory& t) {
@@ -85,8 +87,8 @@ bool allFinite(const Trajectory& t) {
 }
 
 struct Counts {
-    int cases = 0, refused = 0, loaded = 0, evaluated = 0, evalRefused = 0, derived = 0, deriveRefused = 0,
-        simulated = 0, simulationStopped = 0, simulateRefused = 0;
+    int cases = 0, refused = 0, loaded = 0, evaluated = 0, evalRefused = 0, derived = 0, deriveRefused = 0, simulated = 0,
+        simulationStopped = 0, simulateRefused = 0;
 };
 
 // One mutated scene through load, check, eval (initial and a random state), derive on
@@ -202,8 +204,8 @@ std::string badCliRun(const Run& r, bool resultOnStdout) {
     if (r.exitCode == 2) {
         bool named = false;
         for (const QString& line : err.split('\n', Qt::SkipEmptyParts)) {
-            if (!line.startsWith("error: ") && !line.startsWith("warning: ") && !line.startsWith("hint: ") &&
-                !line.startsWith("usage:") && !line.startsWith(' ') && !line.startsWith("QStandardPaths"))
+            if (!line.startsWith("error: ") && !line.startsWith("warning: ") && !line.startsWith("hint: ") && !line.startsWith("usage:") &&
+                !line.startsWith(' ') && !line.startsWith("QStandardPaths"))
                 return "an unexpected stderr line: " + line.left(200).toStdString();
             if (line.size() > 800) return "an error line of " + std::to_string(line.size()) + " characters";
             if (line.startsWith("error: ") && line.count(": ") >= 2) named = true;
@@ -310,8 +312,8 @@ private slots:
         }
         qInfo("mutation fuzz: %d mutated scenes in-process (%d refused, %d loaded; eval %d answered, %d refused; "
               "derive %d, %d refused; simulate %d completed, %d stopped (exit 3), %d refused), %d through the CLI",
-              counts.cases, counts.refused, counts.loaded, counts.evaluated, counts.evalRefused, counts.derived,
-              counts.deriveRefused, counts.simulated, counts.simulationStopped, counts.simulateRefused, cliRuns);
+              counts.cases, counts.refused, counts.loaded, counts.evaluated, counts.evalRefused, counts.derived, counts.deriveRefused,
+              counts.simulated, counts.simulationStopped, counts.simulateRefused, cliRuns);
         QVERIFY2(failures.lines.isEmpty(), qPrintable(failures.lines.join('\n')));
         // The run explores both sides of every check.
         QVERIFY(counts.refused > cases / 10);
@@ -330,8 +332,7 @@ private slots:
         const std::vector<QString> cameras = {"front", "iso", "0,90", "10,20,1e300", "nan,0", "spin", "1,2,3,4", ""};
         const std::vector<QString> overlays = {"none", "time,energy,name", "time,time", "energy,", "all", ""};
         const std::vector<QString> extensions = {"png", "gif", "mp4", "webm", "txt", "", "PNG"};
-        const std::vector<QString> scenes = {"simple_pendulum.json", "planar_2r.json", "mass_spring_pair_lagrangian.json",
-                                             "missing.json"};
+        const std::vector<QString> scenes = {"simple_pendulum.json", "planar_2r.json", "mass_spring_pair_lagrangian.json", "missing.json"};
         QTemporaryDir dir;
         int exits[4] = {0, 0, 0, 0};
         QStringList problems;
@@ -341,8 +342,8 @@ private slots:
             const QString extension = pick(extensions);
             const QString out = folder + "/out" + (extension.isEmpty() ? "" : "." + extension);
             // Start from a cheap valid still and mutate one to three options.
-            QMap<QString, QString> options{{"--out", out}, {"--size", "32x24"}, {"--duration", "0.1"},
-                                           {"--at", "0.05"}, {"--msaa", "0"}, {"--fps", "10"}};
+            QMap<QString, QString> options{{"--out", out},   {"--size", "32x24"}, {"--duration", "0.1"},
+                                           {"--at", "0.05"}, {"--msaa", "0"},     {"--fps", "10"}};
             const int mutations = 1 + static_cast<int>(rng() % 3);
             for (int m = 0; m < mutations; ++m) {
                 switch (rng() % 10) {
@@ -371,8 +372,7 @@ private slots:
             if (r.exitCode != 0 && QFileInfo(out).isFile()) problem = "a failed render left " + out.toStdString();
             if (r.exitCode == 0 && QFileInfo(out).isFile() && QFileInfo(out).size() == 0) problem = "an empty output";
             if (r.exitCode >= 0 && r.exitCode <= 3) ++exits[r.exitCode];
-            if (!problem.empty() && problems.size() < 20)
-                problems << args.mid(1).join(' ') + ": " + QString::fromStdString(problem);
+            if (!problem.empty() && problems.size() < 20) problems << args.mid(1).join(' ') + ": " + QString::fromStdString(problem);
         }
         qInfo("render option mutations: %d runs (exit 0: %d, 2: %d, 3: %d)", runs, exits[0], exits[2], exits[3]);
         QVERIFY2(problems.isEmpty(), qPrintable(problems.join('\n')));

@@ -54,7 +54,8 @@ void expectRefused(const Run& r, const QString& field, const QString& words) {
     const QStringList errors = r.err.split('\n', Qt::SkipEmptyParts).filter(QRegularExpression("^error: "));
     QCOMPARE(errors.size(), 1);
     // the field as JSON counts it, then its joint in words when it is a joint's
-    QVERIFY2(errors[0].contains(QRegularExpression(": " + QRegularExpression::escape(field) + "( \\(joint \\d+\\))?: ")) && errors[0].contains(words),
+    QVERIFY2(errors[0].contains(QRegularExpression(": " + QRegularExpression::escape(field) + "( \\(joint \\d+\\))?: ")) &&
+                 errors[0].contains(words),
              qPrintable(errors[0]));
     QVERIFY2(!r.err.contains("underflow."), qPrintable(r.err));
 }
@@ -87,8 +88,8 @@ private slots:
 
     void overflowingSpringIsAnErrorNamingTheQuantity() {
         QTemporaryDir dir;
-        const QString rest = edited(dir, "mass_spring_pair.json", "\"stiffness\": \"K1\", \"rest\": 0",
-                                    "\"stiffness\": \"K1\", \"rest\": 1e300");
+        const QString rest =
+            edited(dir, "mass_spring_pair.json", "\"stiffness\": \"K1\", \"rest\": 0", "\"stiffness\": \"K1\", \"rest\": 1e300");
         // ½ K1 (q1 − 1e300)² overflows in E_pot at the initial state.
         const Run eval = run({"eval", rest});
         expectRefused(eval, "Epot", "not finite");

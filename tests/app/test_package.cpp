@@ -48,9 +48,7 @@ class TestPackage : public QObject {
     QString deb_;
     QStringList files_;  // the package's regular files, absolute (/usr/…)
 
-    QByteArray field(const char* name) const {
-        return runProcess("dpkg-deb", {"--field", deb_, name}).out.trimmed();
-    }
+    QByteArray field(const char* name) const { return runProcess("dpkg-deb", {"--field", deb_, name}).out.trimmed(); }
 
 private slots:
     void initTestCase() {
@@ -85,15 +83,12 @@ private slots:
         QVERIFY2(r.exitCode == 0, r.err.constData());
         for (const QByteArray& line : r.out.split('\n'))
             if (line.startsWith('-')) files_ << QString::fromUtf8(line.mid(line.indexOf("./") + 1));
-        for (const QString& file : {QString("/usr/bin/lagrangelab"),
-                                    QString("/usr/share/lagrangelab/examples/planar_2r.json"),
-                                    QString("/usr/share/lagrangelab/examples/hard/stiff_spring.json"),
-                                    "/usr/share/applications/" + kAppId + ".desktop",
-                                    "/usr/share/icons/hicolor/scalable/apps/" + kAppId + ".svg",
-                                    "/usr/share/icons/hicolor/48x48/apps/" + kAppId + ".png",
-                                    "/usr/share/icons/hicolor/256x256/apps/" + kAppId + ".png",
-                                    "/usr/share/mime/packages/" + kAppId + ".xml", "/usr/share/metainfo/" + kAppId + ".metainfo.xml",
-                                    QString("/usr/share/man/man1/lagrangelab.1.gz")})
+        for (const QString& file :
+             {QString("/usr/bin/lagrangelab"), QString("/usr/share/lagrangelab/examples/planar_2r.json"),
+              QString("/usr/share/lagrangelab/examples/hard/stiff_spring.json"), "/usr/share/applications/" + kAppId + ".desktop",
+              "/usr/share/icons/hicolor/scalable/apps/" + kAppId + ".svg", "/usr/share/icons/hicolor/48x48/apps/" + kAppId + ".png",
+              "/usr/share/icons/hicolor/256x256/apps/" + kAppId + ".png", "/usr/share/mime/packages/" + kAppId + ".xml",
+              "/usr/share/metainfo/" + kAppId + ".metainfo.xml", QString("/usr/share/man/man1/lagrangelab.1.gz")})
             QVERIFY2(files_.contains(file), qPrintable(file));
         // Nothing outside /usr, nothing of the build or source trees, no benchmarks.
         QVERIFY(!files_.contains("/usr/bin/lagrangelab-bench"));
@@ -109,11 +104,12 @@ private slots:
         QVERIFY(packageInstalled());
         QTemporaryDir work;
         const ProcessRun version = runProcess("/usr/bin/lagrangelab", {"--version"}, work.path());
-        const ProcessRun derive = runProcess("/usr/bin/lagrangelab", {"derive", "/usr/share/lagrangelab/examples/simple_pendulum.json"}, work.path());
+        const ProcessRun derive =
+            runProcess("/usr/bin/lagrangelab", {"derive", "/usr/share/lagrangelab/examples/simple_pendulum.json"}, work.path());
         // Typeset pages: Qt on its offscreen platform.
         const ProcessRun pages = runProcess("/usr/bin/lagrangelab",
-                                            {"derive", "/usr/share/lagrangelab/examples/simple_pendulum.json", "--steps", "7", "--format", "svg",
-                                             "--out", work.path() + "/b.svg"},
+                                            {"derive", "/usr/share/lagrangelab/examples/simple_pendulum.json", "--steps", "7", "--format",
+                                             "svg", "--out", work.path() + "/b.svg"},
                                             work.path());
         const qint64 svgSize = QFileInfo(work.path() + "/b.svg").size();
         // The dpkg trigger of shared-mime-info updated the system database.

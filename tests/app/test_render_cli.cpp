@@ -59,7 +59,9 @@ class TestRenderCli : public QObject {
         for (int y = 0; y < image.height(); ++y)
             for (int x = 0; x < image.width(); ++x) {
                 const QRgb c = image.pixel(x, y);
-                if (std::abs(qRed(c) - qRed(background)) + std::abs(qGreen(c) - qGreen(background)) + std::abs(qBlue(c) - qBlue(background)) > 40)
+                if (std::abs(qRed(c) - qRed(background)) + std::abs(qGreen(c) - qGreen(background)) +
+                        std::abs(qBlue(c) - qBlue(background)) >
+                    40)
                     ++differ;
             }
         return double(differ) / (image.width() * image.height());
@@ -82,8 +84,8 @@ private slots:
     void pngFramesOfTheDoublePendulum() {
         QTemporaryDir dir;
         const QString out = dir.filePath("frames");
-        const Run r = run({"render", example("double_pendulum.json"), "--duration", "1", "--fps", "10", "--size", "320x240",
-                           "--overlay", "none", "--out", out});
+        const Run r = run({"render", example("double_pendulum.json"), "--duration", "1", "--fps", "10", "--size", "320x240", "--overlay",
+                           "none", "--out", out});
         QVERIFY2(r.exitCode == 0, r.err.constData());
         const QStringList files = QDir(out).entryList({"frame_*.png"}, QDir::Files, QDir::Name);
         QCOMPARE(files.size(), 10);
@@ -158,8 +160,8 @@ private slots:
     void slowMotionGifAndWebm() {
         QTemporaryDir dir;
         const QString gif = dir.filePath("pendulum.gif");
-        Run r = run({"render", example("double_pendulum.json"), "--duration", "0.5", "--speed", "0.25", "--fps", "10", "--size",
-                     "200x150", "--out", gif});
+        Run r = run({"render", example("double_pendulum.json"), "--duration", "0.5", "--speed", "0.25", "--fps", "10", "--size", "200x150",
+                     "--out", gif});
         QVERIFY2(r.exitCode == 0, r.err.constData());
         auto v = probe(gif);
         QCOMPARE(v["codec_name"], QString("gif"));
@@ -235,7 +237,8 @@ private slots:
         QTest::newRow("layout") << QStringList{"--layout", "poster", "--out", out} << "--layout poster";
         QTest::newRow("step without composite") << QStringList{"--step", "8", "--out", out} << "--step 8";
         QTest::newRow("step beyond 8") << QStringList{"--layout", "composite", "--step", "9", "--out", out} << "--step 9";
-        QTest::newRow("overlay with composite") << QStringList{"--layout", "composite", "--overlay", "time", "--out", out} << "--overlay time";
+        QTest::newRow("overlay with composite")
+            << QStringList{"--layout", "composite", "--overlay", "time", "--out", out} << "--overlay time";
     }
     void badOptions() {
         QFETCH(QStringList, args);

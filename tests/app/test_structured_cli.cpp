@@ -122,30 +122,32 @@ private slots:
             const QString main = dir.filePath("main.c");
             QFile m(main);
             QVERIFY(m.open(QIODevice::WriteOnly));
-            m.write(QString(
-                "#include <stdio.h>\n"
-                "void ll_mass_matrix(const double*, double*);\n"
-                "void ll_coriolis_matrix(const double*, const double*, double*);\n"
-                "void ll_gravity(const double*, double*);\n"
-                "int ll_forward_dynamics(const double*, const double*, const double*, double*);\n"
-                "int main(void) {\n"
-                "    const double q[6] = {%1}, qd[6] = {%2}, tau[6] = {%3};\n"
-                "    double B[36], C[36], g[6], qdd[6];\n"
-                "    int i, j;\n"
-                "    ll_mass_matrix(q, B); ll_coriolis_matrix(q, qd, C); ll_gravity(q, g);\n"
-                "    if (ll_forward_dynamics(q, qd, tau, qdd) != 0) return 1;\n"
-                "    printf(\"{\\\"B\\\": [\");\n"
-                "    for (i = 0; i < 6; ++i) { printf(\"%s[\", i ? \",\" : \"\"); for (j = 0; j < 6; ++j) printf(\"%s%.17g\", j ? \",\" : \"\", B[i * 6 + j]); printf(\"]\"); }\n"
-                "    printf(\"], \\\"C\\\": [\");\n"
-                "    for (i = 0; i < 6; ++i) { printf(\"%s[\", i ? \",\" : \"\"); for (j = 0; j < 6; ++j) printf(\"%s%.17g\", j ? \",\" : \"\", C[i * 6 + j]); printf(\"]\"); }\n"
-                "    printf(\"], \\\"g\\\": [\");\n"
-                "    for (i = 0; i < 6; ++i) printf(\"%s%.17g\", i ? \",\" : \"\", g[i]);\n"
-                "    printf(\"], \\\"qdd\\\": [\");\n"
-                "    for (i = 0; i < 6; ++i) printf(\"%s%.17g\", i ? \",\" : \"\", qdd[i]);\n"
-                "    printf(\"]}\\n\");\n"
-                "    return 0;\n"
-                "}\n")
-                        .arg(kQ, kQd, tau.join(",")).toUtf8());
+            m.write(
+                QString(
+                    "#include <stdio.h>\n"
+                    "void ll_mass_matrix(const double*, double*);\n"
+                    "void ll_coriolis_matrix(const double*, const double*, double*);\n"
+                    "void ll_gravity(const double*, double*);\n"
+                    "int ll_forward_dynamics(const double*, const double*, const double*, double*);\n"
+                    "int main(void) {\n"
+                    "    const double q[6] = {%1}, qd[6] = {%2}, tau[6] = {%3};\n"
+                    "    double B[36], C[36], g[6], qdd[6];\n"
+                    "    int i, j;\n"
+                    "    ll_mass_matrix(q, B); ll_coriolis_matrix(q, qd, C); ll_gravity(q, g);\n"
+                    "    if (ll_forward_dynamics(q, qd, tau, qdd) != 0) return 1;\n"
+                    "    printf(\"{\\\"B\\\": [\");\n"
+                    "    for (i = 0; i < 6; ++i) { printf(\"%s[\", i ? \",\" : \"\"); for (j = 0; j < 6; ++j) printf(\"%s%.17g\", j ? \",\" : \"\", B[i * 6 + j]); printf(\"]\"); }\n"
+                    "    printf(\"], \\\"C\\\": [\");\n"
+                    "    for (i = 0; i < 6; ++i) { printf(\"%s[\", i ? \",\" : \"\"); for (j = 0; j < 6; ++j) printf(\"%s%.17g\", j ? \",\" : \"\", C[i * 6 + j]); printf(\"]\"); }\n"
+                    "    printf(\"], \\\"g\\\": [\");\n"
+                    "    for (i = 0; i < 6; ++i) printf(\"%s%.17g\", i ? \",\" : \"\", g[i]);\n"
+                    "    printf(\"], \\\"qdd\\\": [\");\n"
+                    "    for (i = 0; i < 6; ++i) printf(\"%s%.17g\", i ? \",\" : \"\", qdd[i]);\n"
+                    "    printf(\"]}\\n\");\n"
+                    "    return 0;\n"
+                    "}\n")
+                    .arg(kQ, kQd, tau.join(","))
+                    .toUtf8());
             m.close();
             const Run cc = run("cc", {"-std=c99", "-pedantic", "-Wall", "-O1", "-o", dir.filePath("model"), file, main, "-lm"});
             QVERIFY2(cc.exitCode == 0, cc.err.constData());

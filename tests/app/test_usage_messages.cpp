@@ -97,7 +97,7 @@ private slots:
             QCOMPARE(en.code, 2);
             QCOMPARE(en.err, QString(bad.english));
             QCOMPARE(en.err, expectedLine(bad.message, Language::English));  // the catalogue's English is that line
-            QCOMPARE(run(bad.args).err, QString(bad.english));  // English without a language asked for
+            QCOMPARE(run(bad.args).err, QString(bad.english));               // English without a language asked for
         }
     }
 

@@ -142,8 +142,7 @@ private slots:
         COMPARE_STR(print(defs.op(0).lhs(), {Style::Plain, {}, false}), "c12");
         QVERIFY(defs.op(0).rhs().is_equal(GiNaC::cos(j.q[0] + j.q[1])));
         QVERIFY(defs.op(0).lhs().is_equal(combiner.combine(c1 * c2 - s1 * s2)));
-        COMPARE_STR(print(defs, {Style::Plain, {}, false}),
-                    "{c12==cos(q1+q2),c123==cos(q1+q2+q3),s12==sin(q1+q2)}");
+        COMPARE_STR(print(defs, {Style::Plain, {}, false}), "{c12==cos(q1+q2),c123==cos(q1+q2+q3),s12==sin(q1+q2)}");
         COMPARE_STR(print(defs.op(0), {Style::Latex, {}, false}), "c_{12} = \\cos(q_{1} + q_{2})");
     }
 
@@ -229,8 +228,7 @@ private slots:
             for (int k = 0; k < 3; ++k) {
                 std::mt19937 same = rng;
                 const double x = valueAt(e, {}, j, rng), y = valueAt(r.value, r.definitions, j, same);
-                QVERIFY2(std::abs(x - y) <= 1e-9 * std::max(1.0, std::abs(x)),
-                         (text(e, 4) + "  →  " + text(r.value, 4)).c_str());
+                QVERIFY2(std::abs(x - y) <= 1e-9 * std::max(1.0, std::abs(x)), (text(e, 4) + "  →  " + text(r.value, 4)).c_str());
             }
         }
         qInfo("random sums: %zu terms → %zu", termsBefore, termsAfter);

@@ -71,7 +71,6 @@ std::string errorOf(Call call) {
     return "";
 }
 
-
 }  // namespace
 
 class TestAngleUnits : public QObject {
@@ -102,10 +101,10 @@ private slots:
         const symbolic::Derivation b = symbolic::deriveRobot(parseScene(radians.dump()));
         for (unsigned i = 0; i < 3; ++i)
             for (unsigned j = 0; j < 3; ++j)
-                QVERIFY((test::inSymbolsOf(a, b, a.B(i, j)).subs(a.parameterValues) -
-                         b.B(i, j).subs(b.trigToFunctions).subs(b.parameterValues))
-                            .expand()
-                            .is_zero());
+                QVERIFY(
+                    (test::inSymbolsOf(a, b, a.B(i, j)).subs(a.parameterValues) - b.B(i, j).subs(b.trigToFunctions).subs(b.parameterValues))
+                        .expand()
+                        .is_zero());
     }
 
     void bareNumberOverTwoPiWarnsNamingTheField() {
@@ -128,9 +127,8 @@ private slots:
     }
 
     void readingAsDegrees() {
-        const std::pair<double, const char*> cases[] = {{90, "pi/2"},   {-90, "-pi/2"}, {180, "pi"},      {270, "3*pi/2"},
-                                                        {45, "pi/4"},   {360, "2*pi"},  {30, "pi/6"},     {37, "37*pi/180"},
-                                                        {-135, "-3*pi/4"}};
+        const std::pair<double, const char*> cases[] = {{90, "pi/2"},  {-90, "-pi/2"}, {180, "pi"},       {270, "3*pi/2"},  {45, "pi/4"},
+                                                        {360, "2*pi"}, {30, "pi/6"},   {37, "37*pi/180"}, {-135, "-3*pi/4"}};
         for (const auto& [value, radians] : cases) QCOMPARE(readAsDegrees(value).radians, std::string(radians));
         QCOMPARE(readAsDegrees(37.5).degrees, std::string("37.5°"));
     }
@@ -167,11 +165,17 @@ private slots:
     void unexpectedCharactersAreNamedByCodePoint_data() {
         QTest::addColumn<QString>("text");
         QTest::addColumn<QString>("says");
-        QTest::newRow("ordinal, not degree") << QString::fromUtf8("90º") << QString::fromUtf8("'º' (U+00BA) at position 3") + " in \"" + QString::fromUtf8("90º") + "\": it is not the degree sign";
+        QTest::newRow("ordinal, not degree") << QString::fromUtf8("90º")
+                                             << QString::fromUtf8("'º' (U+00BA) at position 3") + " in \"" + QString::fromUtf8("90º") +
+                                                    "\": it is not the degree sign";
         QTest::newRow("ring above") << QString::fromUtf8("90˚") << QString::fromUtf8("'˚' (U+02DA) at position 3");
-        QTest::newRow("minus sign") << QString::fromUtf8("−pi/2") << QString::fromUtf8("'−' (U+2212) at position 1") + " in \"" + QString::fromUtf8("−pi/2") + "\": write - (the ASCII minus)";
+        QTest::newRow("minus sign") << QString::fromUtf8("−pi/2")
+                                    << QString::fromUtf8("'−' (U+2212) at position 1") + " in \"" + QString::fromUtf8("−pi/2") +
+                                           "\": write - (the ASCII minus)";
         QTest::newRow("times") << QString::fromUtf8("2×pi") << QString::fromUtf8("'×' (U+00D7) at position 2");
-        QTest::newRow("pi letter") << QString::fromUtf8("π/2") << QString::fromUtf8("'π' (U+03C0) at position 1") + " in \"" + QString::fromUtf8("π/2") + "\": write pi";
+        QTest::newRow("pi letter") << QString::fromUtf8("π/2")
+                                   << QString::fromUtf8("'π' (U+03C0) at position 1") + " in \"" + QString::fromUtf8("π/2") +
+                                          "\": write pi";
         QTest::newRow("no-break space") << QString::fromUtf8("90\u00a0deg") << "(U+00A0) at position 3";
         QTest::newRow("emoji") << QString::fromUtf8("1 + \U0001F600") << QString::fromUtf8("'\U0001F600' (U+1F600) at position 5");
         // Positions after a degree sign count characters, as the user sees them.

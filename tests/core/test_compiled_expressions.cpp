@@ -38,9 +38,11 @@ public:
         switch (pick(rng_)) {
             case 0: return symbols_[std::uniform_int_distribution<std::size_t>(0, symbols_.size() - 1)(rng_)];
             case 1: return number();
-            case 2: case 3: return make(depth - 1) + make(depth - 1);
+            case 2:
+            case 3: return make(depth - 1) + make(depth - 1);
             case 4: return make(depth - 1) - number() * make(depth - 1);
-            case 5: case 6: return make(depth - 1) * make(depth - 1);
+            case 5:
+            case 6: return make(depth - 1) * make(depth - 1);
             case 7: return GiNaC::pow(make(depth - 1), std::uniform_int_distribution<int>(-3, 5)(rng_)) + 0;
             case 8: return make(depth - 1) / (GiNaC::pow(make(depth - 1), 2) + GiNaC::numeric(1, 2));
             case 9: return GiNaC::sin(make(depth - 1));
@@ -99,8 +101,7 @@ private slots:
                     // Ill-conditioned here (cos of 1e16): a relative nudge of 1e-14 to the
                     // inputs changes the value, so no double evaluation can agree.
                     const std::vector<double> nudged{at[0] * (1 + 1e-14), at[1] * (1 - 1e-14), at[2] * (1 + 1e-14)};
-                    if (std::abs(ginacValue(outputs[j], inputs, nudged) - expected) > 1e-11 * std::max(1.0, std::abs(expected)))
-                        continue;
+                    if (std::abs(ginacValue(outputs[j], inputs, nudged) - expected) > 1e-11 * std::max(1.0, std::abs(expected))) continue;
                     ++compared;
                     const double error = std::abs(out[j] - expected) / std::max(1.0, std::abs(expected));
                     QVERIFY2(error < 1e-10, qPrintable(QString("%1 at (%2, %3, %4): compiled %5, GiNaC %6")
@@ -109,8 +110,11 @@ private slots:
                                                                s << outputs[j];
                                                                return s.str();
                                                            }()))
-                                                           .arg(at[0]).arg(at[1]).arg(at[2])
-                                                           .arg(out[j], 0, 'g', 17).arg(expected, 0, 'g', 17)));
+                                                           .arg(at[0])
+                                                           .arg(at[1])
+                                                           .arg(at[2])
+                                                           .arg(out[j], 0, 'g', 17)
+                                                           .arg(expected, 0, 'g', 17)));
                 }
             }
         }
@@ -172,8 +176,8 @@ private slots:
     void fasterThanGinacByOrdersOfMagnitude() {
         const GiNaC::symbol a("a"), b("b"), ad("ad"), bd("bd");
         const ex c = GiNaC::cos(a - b), s = GiNaC::sin(a - b);
-        const std::vector<ex> outputs{3 + 2 * c, 1 + c, 2, -s * bd * (2 * ad + bd), s * ad * ad,
-                                      20 * GiNaC::sin(a) + 10 * GiNaC::sin(b), 10 * GiNaC::sin(b)};
+        const std::vector<ex>
+            outputs{3 + 2 * c, 1 + c, 2, -s * bd * (2 * ad + bd), s * ad * ad, 20 * GiNaC::sin(a) + 10 * GiNaC::sin(b), 10 * GiNaC::sin(b)};
         const std::vector<GiNaC::symbol> inputs{a, b, ad, bd};
         const ExpressionTape compiled = compileExpressions(outputs, inputs);
         std::vector<double> in{0.3, -0.2, 1.0, 0.5}, out(outputs.size());
@@ -183,17 +187,21 @@ private slots:
             return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / times;
         };
         double sink = 0;
-        const double tape = seconds([&](int i) {
-            in[0] = 1e-6 * i;
-            compiled.evaluate(in.data(), out.data());
-            sink += out[0];
-        }, 200000);
-        const double ginac = seconds([&](int i) {
-            in[0] = 1e-6 * i;
-            for (const ex& e : outputs) sink += ginacValue(e, inputs, in);
-        }, 300);
-        qInfo("%d outputs, %d instructions: compiled %.3g us, GiNaC subs+evalf %.3g us per evaluation (%.0fx) [%g]",
-              int(outputs.size()), compiled.instructionCount(), 1e6 * tape, 1e6 * ginac, ginac / tape, sink * 0);
+        const double tape = seconds(
+            [&](int i) {
+                in[0] = 1e-6 * i;
+                compiled.evaluate(in.data(), out.data());
+                sink += out[0];
+            },
+            200000);
+        const double ginac = seconds(
+            [&](int i) {
+                in[0] = 1e-6 * i;
+                for (const ex& e : outputs) sink += ginacValue(e, inputs, in);
+            },
+            300);
+        qInfo("%d outputs, %d instructions: compiled %.3g us, GiNaC subs+evalf %.3g us per evaluation (%.0fx) [%g]", int(outputs.size()),
+              compiled.instructionCount(), 1e6 * tape, 1e6 * ginac, ginac / tape, sink * 0);
         QVERIFY(ginac > 100 * tape);
     }
 };

@@ -31,8 +31,7 @@ Eigen::MatrixXd massMatrixAt(const RobotModel& robot, RobotData& fd, const Eigen
 }
 
 // ∂B/∂q_k for every k by central differences of the CRBA's B (no exact derivatives).
-std::vector<Eigen::MatrixXd> massMatrixDifferences(const RobotModel& robot, RobotData& fd, const Eigen::VectorXd& q,
-                                                   double step) {
+std::vector<Eigen::MatrixXd> massMatrixDifferences(const RobotModel& robot, RobotData& fd, const Eigen::VectorXd& q, double step) {
     std::vector<Eigen::MatrixXd> dB;
     for (int k = 0; k < q.size(); ++k) {
         const Eigen::VectorXd e = step * Eigen::VectorXd::Unit(q.size(), k);

@@ -126,8 +126,10 @@ private slots:
                     for (const FormulaPiece& w : words) {
                         seen.insert(messageIdName(w.words));
                         if (!hasDanish(Message(w.words))) missing.insert(messageIdName(w.words));
-                        const std::string english = present::formulaText({{w}, {}}, {present::Language::English, present::Notation::Notes, derived.display->robot});
-                        QVERIFY2(step.formulaText.find(english) == std::string::npos && step.formulaLatex.find(english) == std::string::npos,
+                        const std::string english =
+                            present::formulaText({{w}, {}}, {present::Language::English, present::Notation::Notes, derived.display->robot});
+                        QVERIFY2(step.formulaText.find(english) == std::string::npos &&
+                                     step.formulaLatex.find(english) == std::string::npos,
                                  (path + ": " + english).c_str());
                     }
                 }
@@ -137,7 +139,8 @@ private slots:
                     QVERIFY2(latex.find(present::latexText(english)) == std::string::npos, (path + ": " + english).c_str());
                 }
                 if (!derived.display->form.empty())
-                    QVERIFY(text.find(": " + present::messageText(derived.display->form, present::Language::Danish) + " (") != std::string::npos);
+                    QVERIFY(text.find(": " + present::messageText(derived.display->form, present::Language::Danish) + " (") !=
+                            std::string::npos);
                 if (!derived.display->actuationFromInputs)
                     QCOMPARE(danish->actuation, present::messageText(derived.display->actuationNote, present::Language::Danish));
             }

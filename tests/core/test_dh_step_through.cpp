@@ -131,7 +131,8 @@ private slots:
                 if (standard && d.parameter == DhParameter::Alpha) QVERIFY((centre - next.translation()).norm() < 1e-12);
                 if (!standard && d.parameter == DhParameter::Alpha) QVERIFY((centre - data.T_0i[d.joint].translation()).norm() < 1e-12);
             }
-            const std::string index = std::to_string(d.joint + (standard || d.parameter == DhParameter::D || d.parameter == DhParameter::Theta ? 1 : 0));
+            const std::string index =
+                std::to_string(d.joint + (standard || d.parameter == DhParameter::D || d.parameter == DhParameter::Theta ? 1 : 0));
             QVERIFY2(d.label.find(index + " = ") != std::string::npos, d.label.c_str());
         }
     }

@@ -29,9 +29,9 @@ using namespace ll::present;
 
 namespace {
 
-const char* greekNames[][2] = {{"alpha", "α"}, {"beta", "β"}, {"gamma", "γ"}, {"delta", "δ"}, {"theta", "θ"},
-                               {"lambda", "λ"}, {"mu", "μ"}, {"pi", "π"}, {"rho", "ρ"}, {"sigma", "σ"},
-                               {"tau", "τ"}, {"phi", "φ"}, {"omega", "ω"}, {"ell", "ℓ"}, {"Omega", "Ω"}};
+const char* greekNames[][2] = {{"alpha", "α"},  {"beta", "β"}, {"gamma", "γ"}, {"delta", "δ"}, {"theta", "θ"},
+                               {"lambda", "λ"}, {"mu", "μ"},   {"pi", "π"},    {"rho", "ρ"},   {"sigma", "σ"},
+                               {"tau", "τ"},    {"phi", "φ"},  {"omega", "ω"}, {"ell", "ℓ"},   {"Omega", "Ω"}};
 
 // The identifiers and digits of a Text rendering, in reading order: dots as ', powers
 // as digits, every operator, bracket, space and separator dropped.
@@ -83,8 +83,7 @@ private slots:
         QTest::addColumn<QString>("example");
         QTest::addColumn<int>("mode");
         for (const char* e : {"planar_2r.json", "scara.json", "mass_spring_pair_lagrangian.json"})
-            for (int mode : {0, 1, 2})
-                QTest::newRow((std::string(e) + " mode " + std::to_string(mode)).c_str()) << QString(e) << mode;
+            for (int mode : {0, 1, 2}) QTest::newRow((std::string(e) + " mode " + std::to_string(mode)).c_str()) << QString(e) << mode;
     }
     void textAndLatexShowTheSameLeaves() {
         QFETCH(QString, example);
@@ -98,9 +97,9 @@ private slots:
                 const std::string latex = renderDisplay(*item.value, DisplayStyle::Latex);
                 const QString a = textLeaves(text), b = latexLeaves(latex);
                 QVERIFY2(!a.isEmpty(), item.name.c_str());
-                QVERIFY2(a == b, (item.name + "\n text:  " + text + "\n latex: " + latex + "\n " + a.toStdString() +
-                                  "\n " + b.toStdString())
-                                     .c_str());
+                QVERIFY2(a == b,
+                         (item.name + "\n text:  " + text + "\n latex: " + latex + "\n " + a.toStdString() + "\n " + b.toStdString())
+                             .c_str());
                 ++items;
             }
         QVERIFY(items >= 5);
@@ -114,8 +113,7 @@ private slots:
         QTest::addColumn<QString>("example");
         QTest::addColumn<int>("mode");
         for (const char* e : {"puma560.json", "panda.json"})
-            for (int mode : {0, 1, 2})
-                QTest::newRow((std::string(e) + " mode " + std::to_string(mode)).c_str()) << QString(e) << mode;
+            for (int mode : {0, 1, 2}) QTest::newRow((std::string(e) + " mode " + std::to_string(mode)).c_str()) << QString(e) << mode;
     }
     void structuredTextAndLatexShowTheSameLeaves() {
         QFETCH(QString, example);
@@ -140,7 +138,7 @@ private slots:
             }
         }
         const int n = scene.robot.dof();
-        QVERIFY(items > n * n);                // names, then b_jk, g_j, c_ij
+        QVERIFY(items > n * n);  // names, then b_jk, g_j, c_ij
         QVERIFY(names.count("b11") && names.count("g2") && names.count("c23"));
         QVERIFY2(sums >= 3, std::to_string(sums).c_str());  // b11 = Σ_i β11^(i) (+ armature), not expanded
     }
@@ -205,8 +203,7 @@ private slots:
         const DisplayItem b = item("simple_pendulum.json", "B"), eq = item("simple_pendulum.json", "equation_1");
         QVERIFY(b.value && b.value->kind == DisplayKind::Matrix);
         QCOMPARE(QString::fromStdString(renderDisplay(*b.value->rows[0][0], DisplayStyle::Text)), QString("m (l² + 2/5 r²)"));
-        QCOMPARE(QString::fromStdString(renderDisplay(*eq.equation, DisplayStyle::Text)),
-                 QString("m (l² + 2/5 r²) q̈1 + 9.81 m l s1 = 0"));
+        QCOMPARE(QString::fromStdString(renderDisplay(*eq.equation, DisplayStyle::Text)), QString("m (l² + 2/5 r²) q̈1 + 9.81 m l s1 = 0"));
     }
 
     // One style per matrix (issue 40): a 3-joint arm typed in decimals shows each value
@@ -246,7 +243,8 @@ private slots:
                     if (item.name == name) walk(*item.value);
             QVERIFY2(numbers > 3, name);
             for (const auto& [value, styles] : spellings)
-                QVERIFY2(styles == std::set<std::string>{"decimal"}, qPrintable(QString("%1: %2 reads as a fraction").arg(name, value.c_str())));
+                QVERIFY2(styles == std::set<std::string>{"decimal"},
+                         qPrintable(QString("%1: %2 reads as a fraction").arg(name, value.c_str())));
         }
     }
 
@@ -274,7 +272,8 @@ private slots:
                     for (const DisplayItem& item : step.items) {
                         const QString text = QString::fromStdString(renderDisplay(*item.equation, DisplayStyle::Text));
                         const QString where = QString::fromStdString(entry.path().filename().string() + " " + item.name + ": ");
-                        QVERIFY2(!pulled.match(text).hasMatch(), qPrintable(where + pulled.match(text).captured(0) + " in " + text.left(300)));
+                        QVERIFY2(!pulled.match(text).hasMatch(),
+                                 qPrintable(where + pulled.match(text).captured(0) + " in " + text.left(300)));
                         QVERIFY2(!longInteger.match(text).hasMatch(), qPrintable(where + longInteger.match(text).captured(0)));
                     }
             }
@@ -368,7 +367,8 @@ private slots:
         int lines = 0;
         for (char c : listing) lines += c == '\n';
         QCOMPARE(lines, 6);  // one line per diagonal entry under the heading
-        QVERIFY2(listing.find("= 0\n") == std::string::npos && listing.find("= 0", listing.size() - 3) == std::string::npos, listing.c_str());
+        QVERIFY2(listing.find("= 0\n") == std::string::npos && listing.find("= 0", listing.size() - 3) == std::string::npos,
+                 listing.c_str());
     }
 
     // itemText decides block or listing without writing the block when an entry alone
@@ -412,8 +412,9 @@ private slots:
                     QCOMPARE(QString::fromStdString(text), QString::fromStdString(block));
                     ++blocks;
                 } else {
-                    const std::string expected = "B (2×2), entry by entry, the zeros left out:\n  b11 = " +
-                                                 renderDisplay(*entry, DisplayStyle::Text) + "\n  b22 = x";
+                    const std::string expected =
+                        "B (2×2), entry by entry, the zeros left out:\n  b11 = " + renderDisplay(*entry, DisplayStyle::Text) +
+                        "\n  b22 = x";
                     QCOMPARE(QString::fromStdString(text), QString::fromStdString(expected));
                     ++listings;
                 }

@@ -31,8 +31,8 @@ private slots:
                 double E = 0;
                 for (int i = 0; i < n; ++i) {
                     const Eigen::Vector3d v = (plus.p_ci[i] - minus.p_ci[i]) / (2 * dt);
-                    const Eigen::Matrix3d W = (plus.T_0i[i + 1].linear() - minus.T_0i[i + 1].linear()) / (2 * dt) *
-                                              data.T_0i[i + 1].linear().transpose();
+                    const Eigen::Matrix3d W =
+                        (plus.T_0i[i + 1].linear() - minus.T_0i[i + 1].linear()) / (2 * dt) * data.T_0i[i + 1].linear().transpose();
                     const Eigen::Vector3d w(W(2, 1), W(0, 2), W(1, 0));
                     E += 0.5 * (robot.joints[i].link.mass * v.squaredNorm() + w.dot(data.I_li0[i] * w));
                 }

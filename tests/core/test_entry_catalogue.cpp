@@ -166,11 +166,10 @@ private slots:
     void valuesMatchTheDynamics_data() {
         QTest::addColumn<QString>("example");
         QTest::addColumn<int>("form");
-        for (const char* name : {"planar_2r.json", "scara.json", "stanford_arm.json", "puma560.json",
-                                 "puma560_modified.json", "ur5.json"}) {
+        for (const char* name :
+             {"planar_2r.json", "scara.json", "stanford_arm.json", "puma560.json", "puma560_modified.json", "ur5.json"}) {
             QTest::newRow((std::string(name) + " auto").c_str()) << QString(name) << static_cast<int>(DerivationForm::Auto);
-            QTest::newRow((std::string(name) + " structured").c_str())
-                << QString(name) << static_cast<int>(DerivationForm::Structured);
+            QTest::newRow((std::string(name) + " structured").c_str()) << QString(name) << static_cast<int>(DerivationForm::Structured);
         }
         QTest::newRow("panda.json auto") << QString("panda.json") << static_cast<int>(DerivationForm::Auto);
     }

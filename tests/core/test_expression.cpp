@@ -36,15 +36,14 @@ bool contains(const std::string& text, const std::string& part) { return text.fi
 
 }  // namespace
 
-#define EXPECT_INPUT_ERROR(call, expectedField, ...)                                                 \
-    do {                                                                                             \
-        bool thrown_ = false;                                                                        \
-        std::string field_;                                                                          \
-        const std::string message_ = errorOf([&] { (void)(call); }, thrown_, field_);                \
-        QVERIFY2(thrown_, "no InputError");                                                          \
-        QCOMPARE(field_, std::string(expectedField));                                                \
-        for (const char* part : {__VA_ARGS__})                                                       \
-            QVERIFY2(contains(message_, part), (message_ + "  -- lacks: " + part).c_str());          \
+#define EXPECT_INPUT_ERROR(call, expectedField, ...)                                                                           \
+    do {                                                                                                                       \
+        bool thrown_ = false;                                                                                                  \
+        std::string field_;                                                                                                    \
+        const std::string message_ = errorOf([&] { (void)(call); }, thrown_, field_);                                          \
+        QVERIFY2(thrown_, "no InputError");                                                                                    \
+        QCOMPARE(field_, std::string(expectedField));                                                                          \
+        for (const char* part : {__VA_ARGS__}) QVERIFY2(contains(message_, part), (message_ + "  -- lacks: " + part).c_str()); \
     } while (false)
 
 class TestExpression : public QObject {
@@ -87,8 +86,7 @@ private slots:
         QVERIFY(definition.has(table.symbol("l1")));
         QVERIFY((definition - table.symbol("l1") / 2).is_zero());
         // Only earlier parameters are visible.
-        EXPECT_INPUT_ERROR(table.define("parameters.x", "x", std::string("y + 1")), "parameters.x",
-                           "unknown symbol 'y'");
+        EXPECT_INPUT_ERROR(table.define("parameters.x", "x", std::string("y + 1")), "parameters.x", "unknown symbol 'y'");
     }
 
     void symbolsAreKept() {
@@ -114,10 +112,9 @@ private slots:
     void unknownSymbol() {
         ParameterTable table;
         table.define("parameters.l1", "l1", 1.0);
-        EXPECT_INPUT_ERROR(table.evaluate("robot.joints[1].a", "l3/2"), "robot.joints[1].a", "unknown symbol 'l3'",
-                           "at position 1", "\"l3/2\"", "l1");
-        EXPECT_INPUT_ERROR(table.evaluate("robot.joints[1].a", "l1 + 2*l3"), "robot.joints[1].a",
-                           "unknown symbol 'l3'", "at position 8");
+        EXPECT_INPUT_ERROR(table.evaluate("robot.joints[1].a", "l3/2"), "robot.joints[1].a", "unknown symbol 'l3'", "at position 1",
+                           "\"l3/2\"", "l1");
+        EXPECT_INPUT_ERROR(table.evaluate("robot.joints[1].a", "l1 + 2*l3"), "robot.joints[1].a", "unknown symbol 'l3'", "at position 8");
         // A known name inside an unknown one is not mistaken for it.
         EXPECT_INPUT_ERROR(table.evaluate("f", "l1*xl1"), "f", "unknown symbol 'xl1'", "at position 4");
         EXPECT_INPUT_ERROR(table.evaluate("f", "foo(2)"), "f", "unknown function 'foo'", "at position 1");
@@ -126,8 +123,7 @@ private slots:
     void syntaxError() {
         ParameterTable table;
         table.define("parameters.l1", "l1", 1.0);
-        EXPECT_INPUT_ERROR(table.evaluate("robot.joints[0].d", "l1*/2"), "robot.joints[0].d", "syntax error",
-                           "at position 4", "\"l1*/2\"");
+        EXPECT_INPUT_ERROR(table.evaluate("robot.joints[0].d", "l1*/2"), "robot.joints[0].d", "syntax error", "at position 4", "\"l1*/2\"");
         EXPECT_INPUT_ERROR(table.evaluate("f", "2**3"), "f", "syntax error", "at position 3");
         EXPECT_INPUT_ERROR(table.evaluate("f", "l1 l1"), "f", "syntax error", "at position 4");
         EXPECT_INPUT_ERROR(table.evaluate("f", "(l1 + 1"), "f", "syntax error at the end", "expected ')'");
@@ -141,8 +137,8 @@ private slots:
         table.define("parameters.l1", "l1", 1.0);
         table.define("parameters.l2", "l2", 1.0);
         // Zero symbolically (GiNaC simplifies while parsing) ...
-        EXPECT_INPUT_ERROR(table.evaluate("robot.joints[0].mass", "1/(l1-l1)"), "robot.joints[0].mass",
-                           "division by zero", "\"1/(l1-l1)\"");
+        EXPECT_INPUT_ERROR(table.evaluate("robot.joints[0].mass", "1/(l1-l1)"), "robot.joints[0].mass", "division by zero",
+                           "\"1/(l1-l1)\"");
         // ... and only numerically.
         EXPECT_INPUT_ERROR(table.evaluate("f", "1/(l1-l2)"), "f", "division by zero", "\"1/(l1-l2)\"");
         EXPECT_INPUT_ERROR(table.evaluate("f", "log(0)"), "f", "\"log(0)\"");
@@ -150,12 +146,10 @@ private slots:
 
     void nonFiniteOrComplex() {
         ParameterTable table;
-        EXPECT_INPUT_ERROR(table.evaluate("simulation.dt", "1e400"), "simulation.dt", "value is not finite (inf)",
-                           "\"1e400\"");
+        EXPECT_INPUT_ERROR(table.evaluate("simulation.dt", "1e400"), "simulation.dt", "value is not finite (inf)", "\"1e400\"");
         EXPECT_INPUT_ERROR(table.evaluate("f", "-10^400"), "f", "value is not finite (-inf)");
         EXPECT_INPUT_ERROR(table.evaluate("f", "sqrt(-1)"), "f", "not a real number");
-        EXPECT_INPUT_ERROR(table.define("parameters.big", "big", std::numeric_limits<double>::infinity()),
-                           "parameters.big", "not finite");
+        EXPECT_INPUT_ERROR(table.define("parameters.big", "big", std::numeric_limits<double>::infinity()), "parameters.big", "not finite");
         // With double-valued parameters CLN computes in doubles: overflow is an error,
         // underflow gives 0 as in C++.
         table.define("parameters.huge", "huge", 1e300);
@@ -170,8 +164,7 @@ private slots:
         table.define("parameters.l1", "l1", 1.0);
         EXPECT_INPUT_ERROR(table.define("parameters.l1", "l1", 2.0), "parameters.l1", "defined twice");
         for (const char* name : {"pi", "Pi", "I", "t", "q1", "qd2", "qdd10", "sin", "cos", "sqrt", "exp"})
-            EXPECT_INPUT_ERROR(table.define(std::string("parameters.") + name, name, 1.0),
-                               std::string("parameters.") + name, "reserved");
+            EXPECT_INPUT_ERROR(table.define(std::string("parameters.") + name, name, 1.0), std::string("parameters.") + name, "reserved");
         EXPECT_INPUT_ERROR(table.define("parameters.2x", "2x", 1.0), "parameters.2x", "not a name");
         EXPECT_INPUT_ERROR(table.define("parameters.a b", "a b", 1.0), "parameters.a b", "not a name");
         // Names that merely look like reserved ones are fine.

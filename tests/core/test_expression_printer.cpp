@@ -46,9 +46,8 @@ struct Planar2R {
     ex b11, b12, b22, c11, c12, c21, c22, g1;
     std::vector<symbol> masses, velocities;
     explicit Planar2R(Symbols& s) {
-        const ex I1 = s("I1"), I2 = s("I2"), m1 = s("m1"), m2 = s("m2"), a1 = s("a1"), lc1 = s("lc1"),
-                 lc2 = s("lc2"), c1 = s("c1"), c2 = s("c2"), s1 = s("s1"), s2 = s("s2"), qd1 = s("qd1"),
-                 qd2 = s("qd2"), g = s("g");
+        const ex I1 = s("I1"), I2 = s("I2"), m1 = s("m1"), m2 = s("m2"), a1 = s("a1"), lc1 = s("lc1"), lc2 = s("lc2"), c1 = s("c1"),
+                 c2 = s("c2"), s1 = s("s1"), s2 = s("s2"), qd1 = s("qd1"), qd2 = s("qd2"), g = s("g");
         b11 = (I1 + m1 * pow(lc1, 2) + I2 + m2 * (pow(a1, 2) + pow(lc2, 2) + 2 * a1 * lc2 * c2)).expand();
         b12 = (I2 + m2 * (pow(lc2, 2) + a1 * lc2 * c2)).expand();
         b22 = (I2 + m2 * pow(lc2, 2)).expand();
@@ -88,33 +87,32 @@ public:
     ex next(int depth = 3) {
         std::uniform_int_distribution<int> pick(0, depth <= 0 ? 1 : 8);
         switch (pick(rng_)) {
-        case 0: return leafSymbol();
-        case 1: return number();
-        case 2:
-        case 3: {
-            ex sum = 0;
-            for (int k = uniform(2, 4); k > 0; --k) sum += next(depth - 1);
-            return sum;
-        }
-        case 4:
-        case 5: {
-            ex product = 1;
-            for (int k = uniform(2, 3); k > 0; --k) product *= next(depth - 1);
-            return product;
-        }
-        case 6: {
-            static const int powers[] = {-2, -1, 2, 3};
-            const ex base = next(depth - 1);
-            const int k = powers[uniform(0, 3)];
-            return base.is_zero() ? base : pow(base, k);  // GiNaC throws on 0^-k
-        }
-        case 7: {  // a moderate argument: cos(1e15/x) would test the arithmetic, not us
-            const ex arg = leafSymbol() + GiNaC::numeric(uniform(-9, 9), uniform(1, 4)) * leafSymbol();
-            return uniform(0, 1) ? GiNaC::sin(arg) : GiNaC::cos(arg);
-        }
-        default:  // roots of something positive
-            return uniform(0, 1) ? pow(pow(next(depth - 1), 2) + 1, GiNaC::numeric(1, 2))
-                                 : pow(s_("m2"), GiNaC::numeric(1, 3));
+            case 0: return leafSymbol();
+            case 1: return number();
+            case 2:
+            case 3: {
+                ex sum = 0;
+                for (int k = uniform(2, 4); k > 0; --k) sum += next(depth - 1);
+                return sum;
+            }
+            case 4:
+            case 5: {
+                ex product = 1;
+                for (int k = uniform(2, 3); k > 0; --k) product *= next(depth - 1);
+                return product;
+            }
+            case 6: {
+                static const int powers[] = {-2, -1, 2, 3};
+                const ex base = next(depth - 1);
+                const int k = powers[uniform(0, 3)];
+                return base.is_zero() ? base : pow(base, k);  // GiNaC throws on 0^-k
+            }
+            case 7: {  // a moderate argument: cos(1e15/x) would test the arithmetic, not us
+                const ex arg = leafSymbol() + GiNaC::numeric(uniform(-9, 9), uniform(1, 4)) * leafSymbol();
+                return uniform(0, 1) ? GiNaC::sin(arg) : GiNaC::cos(arg);
+            }
+            default:  // roots of something positive
+                return uniform(0, 1) ? pow(pow(next(depth - 1), 2) + 1, GiNaC::numeric(1, 2)) : pow(s_("m2"), GiNaC::numeric(1, 3));
         }
     }
 
@@ -125,16 +123,16 @@ private:
     std::mt19937 rng_;
 
     ex leafSymbol() {
-        static const char* names[] = {"a1", "lc2", "m1", "m2", "Ixx1", "theta1", "theta1_dot", "q1",
-                                      "q2", "qd1", "qd2", "c1", "s2", "c12", "s123", "g", "tau"};
+        static const char* names[] = {"a1",  "lc2", "m1", "m2", "Ixx1", "theta1", "theta1_dot", "q1", "q2",
+                                      "qd1", "qd2", "c1", "s2", "c12",  "s123",   "g",          "tau"};
         return s_(names[uniform(0, 16)]);
     }
     ex number() {
         switch (uniform(0, 3)) {
-        case 0: return uniform(-5, 5);
-        case 1: return GiNaC::numeric(uniform(-7, 7), uniform(1, 6));
-        case 2: return GiNaC::numeric(std::uniform_real_distribution<double>(-3, 3)(rng_));
-        default: return GiNaC::numeric(std::uniform_real_distribution<double>(-1, 1)(rng_) * 1e-7);
+            case 0: return uniform(-5, 5);
+            case 1: return GiNaC::numeric(uniform(-7, 7), uniform(1, 6));
+            case 2: return GiNaC::numeric(std::uniform_real_distribution<double>(-3, 3)(rng_));
+            default: return GiNaC::numeric(std::uniform_real_distribution<double>(-1, 1)(rng_) * 1e-7);
         }
     }
 };
@@ -142,8 +140,8 @@ private:
 // c/s symbols as the functions they stand for.
 GiNaC::lst trigFunctions(Symbols& s) {
     const ex q1 = s("q1"), q2 = s("q2"), q3 = s("q3");
-    return {s("c1") == GiNaC::cos(q1), s("s2") == GiNaC::sin(q2), s("c12") == GiNaC::cos(q1 + q2),
-            s("s123") == GiNaC::sin(q1 + q2 + q3), s("c2") == GiNaC::cos(q2), s("s1") == GiNaC::sin(q1)};
+    return {s("c1") == GiNaC::cos(q1), s("s2") == GiNaC::sin(q2), s("c12") == GiNaC::cos(q1 + q2), s("s123") == GiNaC::sin(q1 + q2 + q3),
+            s("c2") == GiNaC::cos(q2), s("s1") == GiNaC::sin(q1)};
 }
 
 std::complex<double> value(const ex& e, const GiNaC::lst& at) {
@@ -193,8 +191,7 @@ private slots:
         AngleSumCombiner combiner({s("q1"), s("q2")});
         const ex g1 = collectForDisplay(combiner.combine(r.g1), r.masses);
         COMPARE_STR(print(g1, style(Style::Text)), "m1 ℓc1 g c1 + m2 (a1 g c1 + ℓc2 g c12)");
-        COMPARE_STR(print(g1, style(Style::Latex)),
-                    "m_{1} \\ell_{c1} g c_{1} + m_{2} \\left(a_{1} g c_{1} + \\ell_{c2} g c_{12}\\right)");
+        COMPARE_STR(print(g1, style(Style::Latex)), "m_{1} \\ell_{c1} g c_{1} + m_{2} \\left(a_{1} g c_{1} + \\ell_{c2} g c_{12}\\right)");
         COMPARE_STR(print(g1, style(Style::Plain)), "m1*lc1*g*cos(q1)+m2*(a1*g*cos(q1)+lc2*g*cos(q1+q2))");
     }
 
@@ -288,7 +285,7 @@ private slots:
         COMPARE_STR(print(GiNaC::sqrt(m1 + m2), latex), "\\sqrt{m_{1} + m_{2}}");
         COMPARE_STR(print(pow(m1 + m2, 2), text), "(m1 + m2)²");
         COMPARE_STR(print(pow(m1 + m2, 2), latex), "{\\left(m_{1} + m_{2}\\right)}^{2}");
-        COMPARE_STR(print(x - m1, text), "x − m1");  // no index before index 1
+        COMPARE_STR(print(x - m1, text), "x − m1");     // no index before index 1
         COMPARE_STR(print(m2 - m1, text), "−m1 + m2");  // the order is the key's; the sign follows
         COMPARE_STR(print(ex(0), latex), "0");
     }
@@ -303,9 +300,8 @@ private slots:
         PrintOptions o{Style::Text, {"theta1", "theta2"}, false};
         COMPARE_STR(print(L, o), "−1/2 K1 θ1² − 1/2 K2 (θ1 − θ2)² + 1/2 I1 θ̇1² + 1/2 I2 θ̇2²");
         o.style = Style::Latex;
-        COMPARE_STR(print(L, o),
-                    "-\\frac{1}{2} K_{1} \\theta_{1}^{2} - \\frac{1}{2} K_{2} {\\left(\\theta_{1} - \\theta_{2}\\right)}^{2} "
-                    "+ \\frac{1}{2} I_{1} \\dot{\\theta}_{1}^{2} + \\frac{1}{2} I_{2} \\dot{\\theta}_{2}^{2}");
+        COMPARE_STR(print(L, o), "-\\frac{1}{2} K_{1} \\theta_{1}^{2} - \\frac{1}{2} K_{2} {\\left(\\theta_{1} - \\theta_{2}\\right)}^{2} "
+                                 "+ \\frac{1}{2} I_{1} \\dot{\\theta}_{1}^{2} + \\frac{1}{2} I_{2} \\dot{\\theta}_{2}^{2}");
     }
 
     void grouping() {
@@ -313,8 +309,7 @@ private slots:
         const ex m1 = s("m1"), qd1 = s("qd1"), qd2 = s("qd2"), lc1 = s("lc1"), I1 = s("I1");
         // A common rational factor of a group goes in front.
         const ex ekin = (GiNaC::numeric(1, 2) * (m1 * pow(lc1, 2) + I1) * pow(qd1, 2) + m1 * qd1 * qd2).expand();
-        COMPARE_STR(print(collectForDisplay(ekin, {s("qd1"), s("qd2")}), style(Style::Text)),
-                    "1/2 (I1 + m1 ℓc1²) q̇1² + m1 q̇1 q̇2");
+        COMPARE_STR(print(collectForDisplay(ekin, {s("qd1"), s("qd2")}), style(Style::Text)), "1/2 (I1 + m1 ℓc1²) q̇1² + m1 q̇1 q̇2");
         const ex negative = (-m1 * (lc1 + I1) * qd1).expand();
         COMPARE_STR(print(collectForDisplay(negative, {s("m1")}), style(Style::Text)), "−m1 (I1 q̇1 + ℓc1 q̇1)");
         QVERIFY(collectForDisplay(ex(0), {s("m1")}).is_zero());
@@ -332,9 +327,8 @@ private slots:
         const Planar2R r(s);
         GiNaC::matrix B = {{r.b11, r.b12}, {r.b12, r.b22}};
         const ex Bd = collectForDisplay(B, r.masses);
-        COMPARE_STR(print(Bd, style(Style::Plain)),
-                    "[[I1+m1*lc1^2+I2+m2*(a1^2+lc2^2+2*a1*lc2*cos(q2)),I2+m2*(lc2^2+a1*lc2*cos(q2))],"
-                    "[I2+m2*(lc2^2+a1*lc2*cos(q2)),I2+m2*lc2^2]]");
+        COMPARE_STR(print(Bd, style(Style::Plain)), "[[I1+m1*lc1^2+I2+m2*(a1^2+lc2^2+2*a1*lc2*cos(q2)),I2+m2*(lc2^2+a1*lc2*cos(q2))],"
+                                                    "[I2+m2*(lc2^2+a1*lc2*cos(q2)),I2+m2*lc2^2]]");
         const std::string latex = print(Bd, style(Style::Latex));
         QVERIFY(latex.starts_with("\\begin{bmatrix} I_{1} + m_{1}"));
         QVERIFY(latex.find(" & I_{2} + m_{2} \\left(") != std::string::npos);
@@ -343,9 +337,8 @@ private slots:
         QVERIFY(balancedBraces(latex));
         const GiNaC::matrix C = {{r.c11, r.c12}, {r.c21, r.c22}};
         const std::string text = print(collectForDisplay(C, r.velocities), style(Style::Text));
-        COMPARE_STR(text,
-                    "⎡ −m2 a1 ℓc2 s2 q̇2  −m2 a1 ℓc2 s2 q̇1 − m2 a1 ℓc2 s2 q̇2 ⎤\n"
-                    "⎣ m2 a1 ℓc2 s2 q̇1   0                                  ⎦");
+        COMPARE_STR(text, "⎡ −m2 a1 ℓc2 s2 q̇2  −m2 a1 ℓc2 s2 q̇1 − m2 a1 ℓc2 s2 q̇2 ⎤\n"
+                          "⎣ m2 a1 ℓc2 s2 q̇1   0                                  ⎦");
         const GiNaC::matrix g = {{s("x")}, {s("y")}, {s("z")}};
         COMPARE_STR(printEquation("g", g, style(Style::Text)), "    ⎡ x ⎤\ng = ⎢ y ⎥\n    ⎣ z ⎦");
         COMPARE_STR(printEquation("b_{11}", r.b22, style(Style::Latex)), "b_{11} = I_{2} + m_{2} \\ell_{c2}^{2}");
@@ -399,8 +392,8 @@ private slots:
             std::vector<symbol> padding;
             if (pass == 1) {  // other serial numbers, reverse creation order
                 for (int k = 0; k < 37; ++k) padding.emplace_back("pad");
-                for (const char* n : {"tau", "g", "s123", "c12", "s2", "c1", "qd2", "qd1", "q2", "q1", "theta1_dot",
-                                      "theta1", "Ixx1", "m2", "m1", "lc2", "a1", "s1", "c2", "lc1", "I2", "I1"})
+                for (const char* n : {"tau",    "g",    "s123", "c12", "s2",  "c1", "qd2", "qd1", "q2",  "q1", "theta1_dot",
+                                      "theta1", "Ixx1", "m2",   "m1",  "lc2", "a1", "s1",  "c2",  "lc1", "I2", "I1"})
                     s(n);
             }
             const Planar2R r(s);

@@ -94,13 +94,12 @@ private slots:
         for (const std::vector<double>* errors : {&finalErrors, &sampleErrors})
             for (size_t i = 0; i + 1 < errors->size(); ++i) {
                 const double ratio = (*errors)[i] / (*errors)[i + 1];
-                QVERIFY2(std::abs(ratio / expected - 1) <= 0.3,
-                         qPrintable(QString("%1 %2 error ratio %3 (expected %4): errors %5, %6")
-                                        .arg(name, errors == &finalErrors ? "final" : "max sample")
-                                        .arg(ratio)
-                                        .arg(expected)
-                                        .arg((*errors)[i])
-                                        .arg((*errors)[i + 1])));
+                QVERIFY2(std::abs(ratio / expected - 1) <= 0.3, qPrintable(QString("%1 %2 error ratio %3 (expected %4): errors %5, %6")
+                                                                               .arg(name, errors == &finalErrors ? "final" : "max sample")
+                                                                               .arg(ratio)
+                                                                               .arg(expected)
+                                                                               .arg((*errors)[i])
+                                                                               .arg((*errors)[i + 1])));
             }
     }
 

@@ -38,9 +38,8 @@ private slots:
                 const DhRow& r = robot.joints[i].dh;
                 const bool rev = r.type == JointType::Revolute;
                 const double theta = r.theta + (rev ? q[i] : 0), d = r.d + (rev ? 0 : q[i]);
-                T = T * (DhConvention(convention) == DhConvention::Standard
-                             ? rotZ(theta) * transZ(d) * transX(r.a) * rotX(r.alpha)
-                             : rotX(r.alpha) * transX(r.a) * rotZ(theta) * transZ(d));
+                T = T * (DhConvention(convention) == DhConvention::Standard ? rotZ(theta) * transZ(d) * transX(r.a) * rotX(r.alpha)
+                                                                            : rotX(r.alpha) * transX(r.a) * rotZ(theta) * transZ(d));
                 QVERIFY2((T.matrix() - data.T_0i[i + 1].matrix()).norm() < 1e-12, qPrintable(QString("frame %1").arg(i + 1)));
                 QVERIFY((data.p_ci[i] - T * robot.joints[i].link.com).norm() < 1e-12);
             }
@@ -60,8 +59,8 @@ private slots:
                 Eigen::VectorXd q2 = q;
                 q2[j] += 0.3;
                 forwardKinematics(robot, b, q2);
-                const Eigen::Isometry3d rot = Eigen::Translation3d(a.axisPoint[j]) * Eigen::AngleAxisd(0.3, a.axis[j]) *
-                                              Eigen::Translation3d(-a.axisPoint[j]);
+                const Eigen::Isometry3d rot =
+                    Eigen::Translation3d(a.axisPoint[j]) * Eigen::AngleAxisd(0.3, a.axis[j]) * Eigen::Translation3d(-a.axisPoint[j]);
                 const Eigen::Isometry3d expected = rot * a.T_0i[5];
                 QVERIFY((expected.matrix() - b.T_0i[5].matrix()).norm() < 1e-12);
             }

@@ -34,8 +34,8 @@ private slots:
                         forwardKinematics(robot, minus, qm);
                         const Eigen::Vector3d v = (plus.p_ci[i] - minus.p_ci[i]) / (2 * h);
                         // ω from Ṙ Rᵀ = [ω]×
-                        const Eigen::Matrix3d W = (plus.T_0i[i + 1].linear() - minus.T_0i[i + 1].linear()) / (2 * h) *
-                                                  data.T_0i[i + 1].linear().transpose();
+                        const Eigen::Matrix3d W =
+                            (plus.T_0i[i + 1].linear() - minus.T_0i[i + 1].linear()) / (2 * h) * data.T_0i[i + 1].linear().transpose();
                         const Eigen::Vector3d w(W(2, 1), W(0, 2), W(1, 0));
                         QVERIFY2((J.block<3, 1>(0, k) - v).norm() < 1e-7, qPrintable(QString("J_v link %1 col %2").arg(i).arg(k)));
                         QVERIFY2((J.block<3, 1>(3, k) - w).norm() < 1e-7, qPrintable(QString("J_w link %1 col %2").arg(i).arg(k)));

@@ -71,7 +71,6 @@ std::string pendulumWith(const std::string& motor) {
     return text;
 }
 
-
 }  // namespace
 
 class TestJointMotor : public QObject {
@@ -164,8 +163,8 @@ private slots:
             }
         QVERIFY(explained);
         // Its value is the numeric core's, in every mode.
-        for (symbolic::ParameterMode mode : {symbolic::ParameterMode::Parametric, symbolic::ParameterMode::Numeric,
-                                             symbolic::ParameterMode::Textbook}) {
+        for (symbolic::ParameterMode mode :
+             {symbolic::ParameterMode::Parametric, symbolic::ParameterMode::Numeric, symbolic::ParameterMode::Textbook}) {
             symbolic::DerivationOptions options;
             options.mode = mode;
             const symbolic::Derivation d = symbolic::deriveRobot(scene, options);
@@ -190,21 +189,34 @@ private slots:
         QTest::addColumn<QString>("motor");
         QTest::addColumn<QString>("field");
         QTest::addColumn<QString>("says");
-        QTest::newRow("negative armature") << R"("armature": -0.1)" << "robot.joints[0].armature" << "negative";
-        QTest::newRow("negative rotor") << R"("motor": {"inertia": -1e-4, "gear_ratio": 50})" << "robot.joints[0].motor.inertia" << "negative";
-        QTest::newRow("zero gear") << R"("motor": {"inertia": 1e-4, "gear_ratio": 0})" << "robot.joints[0].motor.gear_ratio" << "gear ratio is 0";
-        QTest::newRow("both") << R"("armature": 0.1, "motor": {"inertia": 1e-4, "gear_ratio": 50})" << "robot.joints[0].motor" << "not both";
-        QTest::newRow("no gear") << R"("motor": {"inertia": 1e-4})" << "robot.joints[0].motor.gear_ratio" << "required";
-        QTest::newRow("unknown key") << R"("motor": {"inertia": 1e-4, "gear": 50})" << "robot.joints[0].motor.gear" << "unknown key";
-        QTest::newRow("armature in degrees") << R"("armature": "2°")" << "robot.joints[0].armature" << "U+00B0";
+        QTest::newRow("negative armature") << R"("armature": -0.1)"
+                                           << "robot.joints[0].armature"
+                                           << "negative";
+        QTest::newRow("negative rotor") << R"("motor": {"inertia": -1e-4, "gear_ratio": 50})"
+                                        << "robot.joints[0].motor.inertia"
+                                        << "negative";
+        QTest::newRow("zero gear") << R"("motor": {"inertia": 1e-4, "gear_ratio": 0})"
+                                   << "robot.joints[0].motor.gear_ratio"
+                                   << "gear ratio is 0";
+        QTest::newRow("both") << R"("armature": 0.1, "motor": {"inertia": 1e-4, "gear_ratio": 50})"
+                              << "robot.joints[0].motor"
+                              << "not both";
+        QTest::newRow("no gear") << R"("motor": {"inertia": 1e-4})"
+                                 << "robot.joints[0].motor.gear_ratio"
+                                 << "required";
+        QTest::newRow("unknown key") << R"("motor": {"inertia": 1e-4, "gear": 50})"
+                                     << "robot.joints[0].motor.gear"
+                                     << "unknown key";
+        QTest::newRow("armature in degrees") << R"("armature": "2°")"
+                                             << "robot.joints[0].armature"
+                                             << "U+00B0";
     }
     void badMotorDataIsRefusedByField() {
         QFETCH(QString, motor);
         QFETCH(QString, field);
         QFETCH(QString, says);
         const std::string error = firstError(pendulumWith(motor.toStdString()));
-        QVERIFY2(error.rfind(field.toStdString() + ": ", 0) == 0 && error.find(says.toStdString()) != std::string::npos,
-                 error.c_str());
+        QVERIFY2(error.rfind(field.toStdString() + ": ", 0) == 0 && error.find(says.toStdString()) != std::string::npos, error.c_str());
     }
 
     // Saving keeps what was typed: the motor as a motor, an armature expression as text.

@@ -99,13 +99,9 @@ RobotModel stanfordArm() {
     return r;
 }
 
-double uniform(std::mt19937_64& rng, double lo, double hi) {
-    return std::uniform_real_distribution<double>(lo, hi)(rng);
-}
+double uniform(std::mt19937_64& rng, double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
 // A nonzero number with |x| in [lo, hi] and a random sign.
-double signedUniform(std::mt19937_64& rng, double lo, double hi) {
-    return (uniform(rng, 0, 1) < 0.5 ? -1.0 : 1.0) * uniform(rng, lo, hi);
-}
+double signedUniform(std::mt19937_64& rng, double lo, double hi) { return (uniform(rng, 0, 1) < 0.5 ? -1.0 : 1.0) * uniform(rng, lo, hi); }
 
 Eigen::Matrix3d randomRotation(std::mt19937_64& rng) {
     Eigen::Quaterniond quat(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
@@ -142,8 +138,7 @@ RobotModel randomRobot(std::uint64_t seed, const std::string& pattern, DhConvent
         j.dh.d = signedUniform(rng, 0.05, 0.5);
         j.dh.theta = signedUniform(rng, 0.1, 3.0);
         j.link.mass = uniform(rng, 0.5, 5.0);
-        j.link.com = Eigen::Vector3d(signedUniform(rng, 0.02, 0.3), signedUniform(rng, 0.02, 0.3),
-                                     signedUniform(rng, 0.02, 0.3));
+        j.link.com = Eigen::Vector3d(signedUniform(rng, 0.02, 0.3), signedUniform(rng, 0.02, 0.3), signedUniform(rng, 0.02, 0.3));
         j.link.inertia = randomInertia(rng);
         r.joints.push_back(j);
     }
@@ -203,11 +198,10 @@ Case makeCase(const QString& name) {
     return {};
 }
 
-const QStringList kRobots = {"puma560",        "stanford",       "puma560.json",   "puma560_modified.json",
-                             "stanford_arm.json", "random7 std", "random7 mod",    "random6 std",
-                             "random6 mod",    "revolute6 std",  "revolute6 mod",  "prismatic1 std",
-                             "prismatic1 mod", "revolute1 std",  "revolute1 mod",  "nobase7 std",
-                             "nobase7 mod",    "springs7 std",   "springs7 mod"};
+const QStringList kRobots = {"puma560",       "stanford",       "puma560.json",   "puma560_modified.json", "stanford_arm.json",
+                             "random7 std",   "random7 mod",    "random6 std",    "random6 mod",           "revolute6 std",
+                             "revolute6 mod", "prismatic1 std", "prismatic1 mod", "revolute1 std",         "revolute1 mod",
+                             "nobase7 std",   "nobase7 mod",    "springs7 std",   "springs7 mod"};
 
 struct State {
     Eigen::VectorXd q, qd, qdd;
@@ -227,8 +221,7 @@ State randomState(std::mt19937_64& rng, const RobotModel& model) {
 
 double maxFrameError(const RobotData& data, const std::vector<Eigen::Isometry3d>& kdl) {
     double worst = 0;
-    for (std::size_t i = 0; i < kdl.size(); ++i)
-        worst = std::max(worst, scaledError(data.T_0i[i].matrix(), kdl[i].matrix()));
+    for (std::size_t i = 0; i < kdl.size(); ++i) worst = std::max(worst, scaledError(data.T_0i[i].matrix(), kdl[i].matrix()));
     return worst;
 }
 
@@ -254,12 +247,11 @@ private slots:
         for (int r = 0; r < 3; ++r)
             for (int c = 0; c < 3; ++c) Io(r, c) = Ik.data[3 * r + c];
         const Eigen::Vector3d& c = link.com;
-        const Eigen::Matrix3d expected =
-            link.inertia + link.mass * (c.squaredNorm() * Eigen::Matrix3d::Identity() - c * c.transpose());
+        const Eigen::Matrix3d expected = link.inertia + link.mass * (c.squaredNorm() * Eigen::Matrix3d::Identity() - c * c.transpose());
         QVERIFY2(scaledError(Io, expected) < 1e-14, qPrintable(QString::number(scaledError(Io, expected))));
         // Ic·ω through KDL equals the tensor times ω (so the off-diagonal signs agree).
-        const KDL::RotationalInertia Ic(link.inertia(0, 0), link.inertia(1, 1), link.inertia(2, 2),
-                                        link.inertia(0, 1), link.inertia(0, 2), link.inertia(1, 2));
+        const KDL::RotationalInertia Ic(link.inertia(0, 0), link.inertia(1, 1), link.inertia(2, 2), link.inertia(0, 1), link.inertia(0, 2),
+                                        link.inertia(1, 2));
         const Eigen::Vector3d w(0.3, -1.1, 0.7);
         QVERIFY(scaledError(toEigen(Ic * toKdl(w)), Eigen::Vector3d(link.inertia * w)) < 1e-15);
     }
@@ -321,9 +313,9 @@ private slots:
             Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(data.B, Eigen::EigenvaluesOnly);
             maxCond = std::max(maxCond, eig.eigenvalues().maxCoeff() / eig.eigenvalues().minCoeff());
         }
-        qInfo("%-24s %-7s n=%d segs=%u  max err: T %.1e  B %.1e  Cqd %.1e  g %.1e  tau %.1e  qdd %.1e  (cond B <= %.1e)",
-              qPrintable(robot), layout == int(KdlChainLayout::Exact) ? "exact" : "compact", n,
-              kdl.chain().getNrOfSegments(), eT, eB, eC, eG, eTau, eFd, maxCond);
+        qInfo("%-24s %-7s n=%d segs=%u  max err: T %.1e  B %.1e  Cqd %.1e  g %.1e  tau %.1e  qdd %.1e  (cond B <= %.1e)", qPrintable(robot),
+              layout == int(KdlChainLayout::Exact) ? "exact" : "compact", n, kdl.chain().getNrOfSegments(), eT, eB, eC, eG, eTau, eFd,
+              maxCond);
         QVERIFY2(eT <= kTol, qPrintable(QString("T_0i error %1").arg(eT)));
         QVERIFY2(eB <= kTol, qPrintable(QString("B error %1").arg(eB)));
         QVERIFY2(eC <= kTol, qPrintable(QString("C qd error %1").arg(eC)));

@@ -68,12 +68,11 @@ std::string firstError(Call call) {
     return {};
 }
 
-#define EXPECT_ERROR(call, ...)                                                                   \
-    do {                                                                                          \
-        const std::string error_ = firstError([&] { (void)(call); });                            \
-        QVERIFY2(!error_.empty(), "no InputError");                                               \
-        for (const char* part : {__VA_ARGS__})                                                    \
-            QVERIFY2(contains(error_, part), (error_ + "  -- lacks: " + part).c_str());           \
+#define EXPECT_ERROR(call, ...)                                                                                            \
+    do {                                                                                                                   \
+        const std::string error_ = firstError([&] { (void)(call); });                                                      \
+        QVERIFY2(!error_.empty(), "no InputError");                                                                        \
+        for (const char* part : {__VA_ARGS__}) QVERIFY2(contains(error_, part), (error_ + "  -- lacks: " + part).c_str()); \
     } while (false)
 
 const GiNaC::symbol& parameter(const Derivation& d, const std::string& name) {
@@ -93,21 +92,18 @@ bool equal(const ex& a, const ex& b) { return (a - b).expand().normal().is_zero(
 
 // The planar 2R arm of test_support.hpp written by hand: relative angles q1, q2 (the
 // DH coordinates) or absolute angles th1, th2 = q1 + q2. COM i at l_i from joint i.
-const Json kArmParameters = {{"a1", 1.0}, {"a2", 0.8}, {"l1", 0.45}, {"l2", 0.35}, {"m1", 2.0},
+const Json kArmParameters = {{"a1", 1.0}, {"a2", 0.8},  {"l1", 0.45}, {"l2", 0.35}, {"m1", 2.0},
                              {"m2", 1.5}, {"I1", 0.17}, {"I2", 0.08}, {"g", 9.81}};
-const Json kArmRelative = {
-    {"coordinates", {"q1", "q2"}},
-    {"kinetic",
-     "m1*l1^2*q1_dot^2/2 + I1*q1_dot^2/2 + I2*(q1_dot + q2_dot)^2/2"
-     " + m2*((a1*sin(q1)*q1_dot + l2*sin(q1 + q2)*(q1_dot + q2_dot))^2"
-     " + (a1*cos(q1)*q1_dot + l2*cos(q1 + q2)*(q1_dot + q2_dot))^2)/2"},
-    {"potential", "m1*g*l1*sin(q1) + m2*g*(a1*sin(q1) + l2*sin(q1 + q2))"}};
-const Json kArmAbsolute = {
-    {"coordinates", {"th1", "th2"}},
-    {"kinetic",
-     "(m1*l1^2 + I1)*th1_dot^2/2 + I2*th2_dot^2/2"
-     " + m2*((a1*sin(th1)*th1_dot + l2*sin(th2)*th2_dot)^2 + (a1*cos(th1)*th1_dot + l2*cos(th2)*th2_dot)^2)/2"},
-    {"potential", "m1*g*l1*sin(th1) + m2*g*(a1*sin(th1) + l2*sin(th2))"}};
+const Json kArmRelative = {{"coordinates", {"q1", "q2"}},
+                           {"kinetic", "m1*l1^2*q1_dot^2/2 + I1*q1_dot^2/2 + I2*(q1_dot + q2_dot)^2/2"
+                                       " + m2*((a1*sin(q1)*q1_dot + l2*sin(q1 + q2)*(q1_dot + q2_dot))^2"
+                                       " + (a1*cos(q1)*q1_dot + l2*cos(q1 + q2)*(q1_dot + q2_dot))^2)/2"},
+                           {"potential", "m1*g*l1*sin(q1) + m2*g*(a1*sin(q1) + l2*sin(q1 + q2))"}};
+const Json kArmAbsolute = {{"coordinates", {"th1", "th2"}},
+                           {"kinetic",
+                            "(m1*l1^2 + I1)*th1_dot^2/2 + I2*th2_dot^2/2"
+                            " + m2*((a1*sin(th1)*th1_dot + l2*sin(th2)*th2_dot)^2 + (a1*cos(th1)*th1_dot + l2*cos(th2)*th2_dot)^2)/2"},
+                           {"potential", "m1*g*l1*sin(th1) + m2*g*(a1*sin(th1) + l2*sin(th2))"}};
 
 struct NumericTerms {
     Eigen::MatrixXd B, C;
@@ -155,8 +151,8 @@ private slots:
         QVERIFY(equal(eq1.lhs(), I1 * d.qdd[0] + K1 * th1 + K2 * (th1 - th2)) && eq1.rhs().is_zero());
         QVERIFY(equal(eq2.lhs(), I2 * d.qdd[1] - K2 * (th1 - th2)) && equal(eq2.rhs(), tau));
         // The Lagrange items of the notes.
-        QVERIFY(equal(item(d, "L").value, I1 * pow(d.qd[0], 2) / 2 + I2 * pow(d.qd[1], 2) / 2 - K1 * pow(th1, 2) / 2 -
-                                              K2 * pow(th1 - th2, 2) / 2));
+        QVERIFY(equal(item(d, "L").value,
+                      I1 * pow(d.qd[0], 2) / 2 + I2 * pow(d.qd[1], 2) / 2 - K1 * pow(th1, 2) / 2 - K2 * pow(th1 - th2, 2) / 2));
         QVERIFY(equal(item(d, "dL/dtheta1_dot").value, I1 * d.qd[0]));
         QVERIFY(equal(item(d, "d/dt dL/dtheta2_dot").value, I2 * d.qdd[1]));
         QVERIFY(equal(item(d, "dL/dtheta1").value, -K1 * th1 - K2 * (th1 - th2)));
@@ -241,22 +237,22 @@ private slots:
             QVERIFY2(test::scaledError(Eigen::VectorXd(J.transpose() * a.g), expected.g) < 1e-10, "g, absolute");
         }
         // sin² + cos² is gone from B: b22 = m2 l2² + I2 exactly.
-        QVERIFY(equal(absolute.B(1, 1), GiNaC::numeric(3, 2) * GiNaC::numeric(35, 100) * GiNaC::numeric(35, 100) +
-                                             GiNaC::numeric(8, 100)));
+        QVERIFY(equal(absolute.B(1, 1), GiNaC::numeric(3, 2) * GiNaC::numeric(35, 100) * GiNaC::numeric(35, 100) + GiNaC::numeric(8, 100)));
     }
 
     void effectsAddToQ() {
-        const Scene s = scene({{"m", 2}, {"k", 3}, {"b", 0.5}}, {{"coordinates", {"x"}}, {"kinetic", "m*x_dot^2/2"},
-                                                             {"potential", "k*x^2/2"}},
-                              {{"effects", {{"viscous", {{{"joint", 1}, {"coefficient", "b"}}}},
-                                            {"torques", {{{"joint", 1}, {"kind", "constant"}, {"value", 2}}}}}}});
+        const Scene s =
+            scene({{"m", 2}, {"k", 3}, {"b", 0.5}}, {{"coordinates", {"x"}}, {"kinetic", "m*x_dot^2/2"}, {"potential", "k*x^2/2"}},
+                  {{"effects",
+                    {{"viscous", {{{"joint", 1}, {"coefficient", "b"}}}},
+                     {"torques", {{{"joint", 1}, {"kind", "constant"}, {"value", 2}}}}}}});
         const Derivation d = deriveLagrangian(s);
         QVERIFY(equal(d.Q(0, 0), 2 - parameter(d, "b") * d.qd[0]));
         QCOMPARE(d.actuated, std::vector<int>{0});
         QVERIFY(!d.underactuated);
         // Friction in `forces` is no input.
-        const Derivation f = deriveLagrangian(scene({{"m", 2}}, {{"coordinates", {"x"}}, {"kinetic", "m*x_dot^2/2"},
-                                                                  {"forces", {"-x_dot^3"}}}));
+        const Derivation f =
+            deriveLagrangian(scene({{"m", 2}}, {{"coordinates", {"x"}}, {"kinetic", "m*x_dot^2/2"}, {"forces", {"-x_dot^3"}}}));
         QVERIFY(f.actuated.empty());
     }
 
@@ -267,8 +263,7 @@ private slots:
         const auto derive = [&](const char* kinetic) {
             return deriveLagrangian(scene(p, {{"coordinates", {"x", "y"}}, {"kinetic", kinetic}}));
         };
-        EXPECT_ERROR(derive("m*x_dot^2/2 + m*y_dot^2/2 + m*x_dot"), "lagrangian.kinetic:", "not a quadratic form",
-                     "is left over");
+        EXPECT_ERROR(derive("m*x_dot^2/2 + m*y_dot^2/2 + m*x_dot"), "lagrangian.kinetic:", "not a quadratic form", "is left over");
         EXPECT_ERROR(derive("m*x_dot^2/2 + m*y_dot^2/2 + k*x^2"), "lagrangian.kinetic:", "not a quadratic form");
         EXPECT_ERROR(derive("m*x_dot^4 + m*y_dot^2"), "lagrangian.kinetic:", "not quadratic", "x_dot");
         EXPECT_ERROR(derive("m*x_dot^2/2 + m*sqrt(y_dot^2)"), "lagrangian.kinetic:", "quadratic");
@@ -280,15 +275,14 @@ private slots:
     void dependentCoordinatesAreNamed() {
         // y moves with x: the body is at x + 2y, so (x_dot, y_dot) ∝ (1, -0.5) moves nothing.
         EXPECT_ERROR(deriveLagrangian(scene({{"m", 1}}, {{"coordinates", {"x", "y"}}, {"kinetic", "m*(x_dot + 2*y_dot)^2/2"}})),
-                     "lagrangian.coordinates:", "not positive definite", "not independent or not minimal",
-                     "(x_dot, y_dot) = (1, -0.5)");
+                     "lagrangian.coordinates:", "not positive definite", "not independent or not minimal", "(x_dot, y_dot) = (1, -0.5)");
         // A coordinate with no kinetic energy at all.
         EXPECT_ERROR(deriveLagrangian(scene({{"m", 1}}, {{"coordinates", {"x", "z"}}, {"kinetic", "m*x_dot^2/2"}})),
                      "lagrangian.coordinates:", "(x_dot, z_dot) = (0, 1)");
         // Singular only where the system starts: polar coordinates at r = 0.
         const Json polar = {{"coordinates", {"r", "phi"}}, {"kinetic", "m*(r_dot^2 + r^2*phi_dot^2)/2"}};
-        EXPECT_ERROR(deriveLagrangian(scene({{"m", 1}}, polar, {{"initial", {{"q", {0, 0}}}}})), "lagrangian.coordinates:",
-                     "initial state q = [0, 0]");
+        EXPECT_ERROR(deriveLagrangian(scene({{"m", 1}}, polar, {{"initial", {{"q", {0, 0}}}}})),
+                     "lagrangian.coordinates:", "initial state q = [0, 0]");
         QVERIFY(firstError([&] { deriveLagrangian(scene({{"m", 1}}, polar, {{"initial", {{"q", {1, 0}}}}})); }).empty());
         // A negative mass.
         EXPECT_ERROR(deriveLagrangian(scene({{"m", -1}}, {{"coordinates", {"x"}}, {"kinetic", "m*x_dot^2/2"}})),
@@ -301,23 +295,21 @@ private slots:
     void conservativeForcesBelongInThePotential() {
         const Json p = {{"m", 1}, {"k", 2}, {"tau", 1}};
         const auto derive = [&](Json forces) {
-            return deriveLagrangian(scene(p, {{"coordinates", {"x", "y"}}, {"kinetic", "m*(x_dot^2 + y_dot^2)/2"},
-                                              {"forces", forces}},
+            return deriveLagrangian(scene(p, {{"coordinates", {"x", "y"}}, {"kinetic", "m*(x_dot^2 + y_dot^2)/2"}, {"forces", forces}},
                                           {{"initial", {{"q", {0.1, 0.2}}}}}));
         };
-        EXPECT_ERROR(derive({"-k*x", 0}), "lagrangian.forces[0]:", "conservative", "lagrangian.potential",
-                     "V = ", "x^2");
+        EXPECT_ERROR(derive({"-k*x", 0}), "lagrangian.forces[0]:", "conservative", "lagrangian.potential", "V = ", "x^2");
         EXPECT_ERROR(derive({"-k*y", "-k*x"}), "lagrangian.forces[0]:", "gradient of a potential", "V = ");
         EXPECT_ERROR(derive({0, "-m*9.81 - k*y^3"}), "lagrangian.forces[1]:", "conservative");
         // Not conservative: inputs, friction, a curl (a rotating field), time-dependent forces.
-        for (const Json& forces : {Json{0, "tau"}, Json{"-k*x_dot", "-k*y_dot"}, Json{"-y", "x"}, Json{"-k*x*sin(t)", 0},
-                                   Json{"tau", "tau"}})
+        for (const Json& forces :
+             {Json{0, "tau"}, Json{"-k*x_dot", "-k*y_dot"}, Json{"-y", "x"}, Json{"-k*x*sin(t)", 0}, Json{"tau", "tau"}})
             QVERIFY2(firstError([&] { derive(forces); }).empty(), forces.dump().c_str());
     }
 
     void potentialMayNotUseVelocities() {
-        EXPECT_ERROR(parseScene(sceneJson({{"k", 1}}, {{"coordinates", {"x"}}, {"kinetic", "x_dot^2/2"},
-                                                       {"potential", "k*x^2/2 + k*x_dot"}})),
+        EXPECT_ERROR(parseScene(
+                         sceneJson({{"k", 1}}, {{"coordinates", {"x"}}, {"kinetic", "x_dot^2/2"}, {"potential", "k*x^2/2 + k*x_dot"}})),
                      "lagrangian.potential:", "velocity 'x_dot' at position 13", "coordinates only");
         EXPECT_ERROR(parseScene(sceneJson({{"k", 1}}, {{"coordinates", {"x"}}, {"kinetic", "x_dot^2/2 + t"}})),
                      "lagrangian.kinetic:", "time", "position 13");
@@ -326,18 +318,20 @@ private slots:
     void expressionErrorsNameFieldAndPosition() {
         const Json p = {{"m", 1}, {"k", 2}};
         const auto parse = [&](Json lagrangian) { return parseScene(sceneJson(p, lagrangian)); };
-        EXPECT_ERROR(parse({{"coordinates", {"x"}}, {"kinetic", "m*x_dot^2/2 + zz"}}), "lagrangian.kinetic:",
-                     "unknown symbol 'zz' at position 15", "known: x, x_dot, t, m, k");
+        EXPECT_ERROR(parse({{"coordinates", {"x"}}, {"kinetic", "m*x_dot^2/2 + zz"}}),
+                     "lagrangian.kinetic:", "unknown symbol 'zz' at position 15", "known: x, x_dot, t, m, k");
         EXPECT_ERROR(parse({{"coordinates", {"x"}}, {"kinetic", "m*x_dot^2/2"}, {"potential", "k*x^2/2 +* x"}}),
                      "lagrangian.potential:", "syntax error at position 10");
-        EXPECT_ERROR(parse({{"coordinates", {"x"}}, {"kinetic", "x_dot^2/(k-2)"}}), "lagrangian.kinetic:",
-                     "division by zero", "'/' at position 8");
+        EXPECT_ERROR(parse({{"coordinates", {"x"}}, {"kinetic", "x_dot^2/(k-2)"}}), "lagrangian.kinetic:", "division by zero",
+                     "'/' at position 8");
         EXPECT_ERROR(parse({{"coordinates", {"x"}}, {"kinetic", "m*x_dot^2/2"}, {"forces", {"1/(x-x)"}}}),
                      "lagrangian.forces[0]:", "division by zero", "'/' at position 2");
-        EXPECT_ERROR(parse({{"coordinates", {"x"}}, {"kinetic", "m*x_dot^2/2"},
+        EXPECT_ERROR(parse({{"coordinates", {"x"}},
+                            {"kinetic", "m*x_dot^2/2"},
                             {"bodies", {{{"shape", "sphere"}, {"size", {0.1}}, {"position", {"x", "y", 0}}}}}}),
                      "lagrangian.bodies[0].position[1]:", "unknown symbol 'y'");
-        EXPECT_ERROR(parse({{"coordinates", {"x"}}, {"kinetic", "m*x_dot^2/2"},
+        EXPECT_ERROR(parse({{"coordinates", {"x"}},
+                            {"kinetic", "m*x_dot^2/2"},
                             {"bodies", {{{"shape", "sphere"}, {"size", {0.1}}, {"position", {"x_dot", 0, 0}}}}}}),
                      "lagrangian.bodies[0].position[0]:", "velocity");
     }
@@ -346,9 +340,12 @@ private slots:
         const Json p = {{"m", 1}, {"k", 2}};
         const Json ok = {{"coordinates", {"x"}}, {"kinetic", "m*x_dot^2/2"}};
         // Coordinate names: identifiers, unique, not reserved, not a parameter, velocity free.
-        for (const auto& [names, part] : std::vector<std::pair<Json, const char*>>{
-                 {{"x", "x"}, "already taken"}, {{"pi"}, "reserved"}, {{"k"}, "already taken"},
-                 {{"2x"}, "not a name"}, {{"x_dot"}, "_dot"}, {{"sin"}, "reserved"}}) {
+        for (const auto& [names, part] : std::vector<std::pair<Json, const char*>>{{{"x", "x"}, "already taken"},
+                                                                                   {{"pi"}, "reserved"},
+                                                                                   {{"k"}, "already taken"},
+                                                                                   {{"2x"}, "not a name"},
+                                                                                   {{"x_dot"}, "_dot"},
+                                                                                   {{"sin"}, "reserved"}}) {
             Json l = ok;
             l["coordinates"] = names;
             EXPECT_ERROR(parseScene(sceneJson(p, l)), "lagrangian.coordinates[", part);
@@ -361,14 +358,16 @@ private slots:
         EXPECT_ERROR(parseScene(sceneJson(p, ok, {{"robot", {{"convention", "standard"}, {"joints", {{{"mass", 1}}}}}}})),
                      "lagrangian:", "either");
         EXPECT_ERROR(parseScene(sceneJson(p, {{"coordinates", {"x"}}})), "lagrangian.kinetic:", "missing");
-        EXPECT_ERROR(parseScene(sceneJson(p, ok, {{"lagrangian", {{"coordinates", {"x"}}, {"kinetic", "m*x_dot^2/2"},
-                                                                  {"bodies", {{{"shape", "rod"}, {"size", {1}}, {"angle", "x"}}}}}}})),
+        EXPECT_ERROR(parseScene(sceneJson(p, ok,
+                                          {{"lagrangian",
+                                            {{"coordinates", {"x"}},
+                                             {"kinetic", "m*x_dot^2/2"},
+                                             {"bodies", {{{"shape", "rod"}, {"size", {1}}, {"angle", "x"}}}}}}})),
                      "lagrangian.bodies[0].angle:", "unknown key for a rod");
         // Validation: gravity and springs belong in the potential; sizes by coordinates.
         const auto validate = [&](const Json& extra) { return requireValidScene(parseScene(sceneJson(p, ok, extra))); };
         EXPECT_ERROR(validate({{"effects", {{"gravity", {0, -9.81, 0}}}}}), "effects.gravity:", "write it in the potential");
-        EXPECT_ERROR(validate({{"effects", {{"springs", {{{"joint", 1}, {"stiffness", 1}}}}}}}), "effects.springs:",
-                     "potential");
+        EXPECT_ERROR(validate({{"effects", {{"springs", {{{"joint", 1}, {"stiffness", 1}}}}}}}), "effects.springs:", "potential");
         EXPECT_ERROR(validate({{"effects", {{"viscous", {{{"joint", 2}, {"coefficient", 1}}}}}}}),
                      "effects.viscous[0].joint:", "coordinate 2 does not exist");
         EXPECT_ERROR(validate({{"initial", {{"q", {1, 2}}}}}), "initial.q:", "1 coordinates");
@@ -387,8 +386,8 @@ private slots:
         std::vector<BodyPose> out;
         poses.evaluate(Eigen::Vector2d(1.2, 0.5), 0.0, out);
         const Eigen::Vector3d bob(1.2 * std::sin(0.5), -1.2 * std::cos(0.5), 0);
-        QVERIFY((out[2].pose.translation() - bob).norm() < 1e-15);                 // sphere at the bob
-        QVERIFY(std::abs(out[1].length - 1.2) < 1e-15);                            // the spring, pivot to bob
+        QVERIFY((out[2].pose.translation() - bob).norm() < 1e-15);  // sphere at the bob
+        QVERIFY(std::abs(out[1].length - 1.2) < 1e-15);             // the spring, pivot to bob
         QVERIFY((out[1].pose.translation() - bob / 2).norm() < 1e-15);
         QVERIFY((out[1].pose.linear() * Eigen::Vector3d::UnitZ() - bob.normalized()).norm() < 1e-12);
         const Scene pair = parseScene(readFile(std::string(LL_EXAMPLES_DIR) + "/mass_spring_pair_lagrangian.json"));
@@ -412,8 +411,8 @@ private slots:
             QCOMPARE(b.lagrangian->bodies.size(), a.lagrangian->bodies.size());
             for (std::size_t i = 0; i < a.lagrangian->bodies.size(); ++i) {
                 const VisualBody &x = a.lagrangian->bodies[i], &y = b.lagrangian->bodies[i];
-                QVERIFY(x.name == y.name && x.shape == y.shape && x.size == y.size && x.position == y.position &&
-                        x.end == y.end && x.angle == y.angle && x.axis == y.axis && x.color == y.color);
+                QVERIFY(x.name == y.name && x.shape == y.shape && x.size == y.size && x.position == y.position && x.end == y.end &&
+                        x.angle == y.angle && x.axis == y.axis && x.color == y.color);
             }
             QCOMPARE(serializeScene(b), text);  // stable
             QVERIFY(!contains(text, "\"robot\""));

@@ -31,8 +31,8 @@ Scene example(const std::string& name) { return loadScene(std::string(LL_EXAMPLE
 
 // B q̈ + K q = Q with constant B, K, Q from rest at q0: q(t) = q* + V cos(Ωt) Vᵀ B (q0 − q*),
 // with K V = B V Ω², Vᵀ B V = I and the equilibrium q* = K⁻¹ Q.
-Eigen::Vector2d normalModes(const Eigen::Matrix2d& B, const Eigen::Matrix2d& K, const Eigen::Vector2d& Q,
-                            const Eigen::Vector2d& q0, double t) {
+Eigen::Vector2d normalModes(const Eigen::Matrix2d& B, const Eigen::Matrix2d& K, const Eigen::Vector2d& Q, const Eigen::Vector2d& q0,
+                            double t) {
     const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::Matrix2d> modes(K, B);
     const Eigen::Matrix2d& V = modes.eigenvectors();
     const Eigen::Vector2d omega = modes.eigenvalues().cwiseSqrt();
@@ -169,17 +169,21 @@ private slots:
             return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / times;
         };
         double sink = 0;
-        const double compiled = perCall([&](int i) {
-            x[0] = 1.3 + 1e-7 * i;
-            ode(x, dxdt, 0.0);
-            sink += dxdt[2];
-        }, 200000);
+        const double compiled = perCall(
+            [&](int i) {
+                x[0] = 1.3 + 1e-7 * i;
+                ode(x, dxdt, 0.0);
+                sink += dxdt[2];
+            },
+            200000);
         const Eigen::VectorXd q(Eigen::Vector2d(1.3, 0.4)), qd(Eigen::Vector2d(0.2, -0.1));
-        const double ginac = perCall([&](int) {
-            const Eigen::MatrixXd B = slow.value(d.B, q, qd), C = slow.value(d.C, q, qd), g = slow.value(d.g, q, qd),
-                                  Q = slow.value(d.Q, q, qd);
-            sink += (B.llt().solve(Q - C * qd - g))(0, 0);
-        }, 200);
+        const double ginac = perCall(
+            [&](int) {
+                const Eigen::MatrixXd B = slow.value(d.B, q, qd), C = slow.value(d.C, q, qd), g = slow.value(d.g, q, qd),
+                                      Q = slow.value(d.Q, q, qd);
+                sink += (B.llt().solve(Q - C * qd - g))(0, 0);
+            },
+            200);
         qInfo("elastic pendulum right-hand side (%d instructions): compiled %.3g us, GiNaC B, C, g, Q %.3g us (%.0fx) [%g]",
               ode.model().dynamicsInstructions(), 1e6 * compiled, 1e6 * ginac, ginac / compiled, 0 * sink);
         QVERIFY(ginac > 100 * compiled);

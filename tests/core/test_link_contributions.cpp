@@ -33,8 +33,8 @@ class TestLinkContributions : public QObject {
 private slots:
     void sharesSumToTheWhole_data() {
         QTest::addColumn<QString>("example");
-        for (const char* name : {"planar_2r.json", "scara.json", "stanford_arm.json", "puma560.json", "ur5.json",
-                                 "panda.json", "mass_spring_pair.json"})
+        for (const char* name :
+             {"planar_2r.json", "scara.json", "stanford_arm.json", "puma560.json", "ur5.json", "panda.json", "mass_spring_pair.json"})
             QTest::newRow(name) << QString(name);
     }
     void sharesSumToTheWhole() {
@@ -94,13 +94,13 @@ private slots:
                 if (e.id.rfind("beta", 0) != 0) continue;
                 // beta<j><k>_<i> or beta<j>_<k>_<i>: j, k are single digits for a 6-joint arm.
                 std::string digits;
-                for (char ch : e.id.substr(4)) if (std::isdigit(static_cast<unsigned char>(ch))) digits += ch;
+                for (char ch : e.id.substr(4))
+                    if (std::isdigit(static_cast<unsigned char>(ch))) digits += ch;
                 QCOMPARE(digits.size(), std::size_t(3));
                 const int j = digits[0] - '1', k = digits[1] - '1', i = digits[2] - '1';
                 QCOMPARE(i, e.link);
                 const double share = shares.B(i)(j, k);
-                QVERIFY2(std::abs(values[e.first] - share) <= 1e-10 * std::max(1.0, shares.B(i).cwiseAbs().maxCoeff()),
-                         e.id.c_str());
+                QVERIFY2(std::abs(values[e.first] - share) <= 1e-10 * std::max(1.0, shares.B(i).cwiseAbs().maxCoeff()), e.id.c_str());
                 ++compared;
             }
         }

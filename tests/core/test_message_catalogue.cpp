@@ -88,12 +88,15 @@ private slots:
     // An exception of ours is worded in the reader's language, its what() in English; a
     // library's own words stay as they are.
     void anErrorOfOursIsWordedInTheReadersLanguage() {
-        const MessageError saving(message(MessageId::CannotSave, "/tmp/a.json", message(MessageId::CannotWriteTemporary, "/tmp/a.json.tmp-1")));
+        const MessageError saving(
+            message(MessageId::CannotSave, "/tmp/a.json", message(MessageId::CannotWriteTemporary, "/tmp/a.json.tmp-1")));
         QCOMPARE(std::string(saving.what()), std::string("/tmp/a.json: cannot save: cannot write /tmp/a.json.tmp-1"));
         QCOMPARE(present::errorText(saving, present::Language::English), std::string(saving.what()));
-        QCOMPARE(present::errorText(saving, present::Language::Danish), std::string("/tmp/a.json: kan ikke gemme: kan ikke skrive /tmp/a.json.tmp-1"));
+        QCOMPARE(present::errorText(saving, present::Language::Danish),
+                 std::string("/tmp/a.json: kan ikke gemme: kan ikke skrive /tmp/a.json.tmp-1"));
         const InputError input(jointField(1, "mass"), message(MessageId::ValueNotFinite, "nan"));
-        QCOMPARE(present::errorText(input, present::Language::Danish), std::string("robot.joints[1].mass (led 2): værdien er ikke endelig (nan)"));
+        QCOMPARE(present::errorText(input, present::Language::Danish),
+                 std::string("robot.joints[1].mass (led 2): værdien er ikke endelig (nan)"));
         QCOMPARE(present::errorText(std::runtime_error("rem: arguments must be polynomials"), present::Language::Danish),
                  std::string("rem: arguments must be polynomials"));
     }

@@ -66,7 +66,8 @@ private slots:
         QCOMPARE(renderDisplay(*a2, DisplayStyle::Plain), std::string("(2159/5000)"));
         QCOMPARE(renderDisplay(*puma.node(numeric(-2159, 5000)), DisplayStyle::Text), std::string("−0.4318"));
         // The formulas' fractions stay: ½ of E_kin, a rod's 1/12, a sphere's 2/5, ½·⅕, ⅓·2/5.
-        for (const numeric& f : {numeric(1, 2), numeric(1, 12), numeric(2, 5), numeric(1, 10), numeric(2, 15), numeric(3, 8), numeric(5, 3)})
+        for (const numeric& f :
+             {numeric(1, 2), numeric(1, 12), numeric(2, 5), numeric(1, 10), numeric(2, 15), numeric(3, 8), numeric(5, 3)})
             QVERIFY2(!none.decimal(f) && !puma.decimal(f), qPrintable(QString::fromStdString((std::ostringstream() << f).str())));
         // What a scene's decimals make: 9.8 = 49/5, 0.3·0.2 = 3/50, 0.7 + 0.2 = 9/10, 0.01/12 = 1/1200.
         for (const numeric& d : {numeric(49, 5), numeric(3, 50), numeric(9, 10), numeric(1, 1200), numeric(21, 100)})

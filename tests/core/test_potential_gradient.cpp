@@ -29,8 +29,7 @@ private slots:
             forwardKinematics(robot, data, q);
             computePotentialGradient(robot, data, effects, q);
             const double c1 = std::cos(q[0]), c12 = std::cos(q[0] + q[1]);
-            const Eigen::Vector2d expected((p.m1 * p.l1 + p.m2 * p.a1) * g * c1 + p.m2 * p.l2 * g * c12,
-                                           p.m2 * p.l2 * g * c12);
+            const Eigen::Vector2d expected((p.m1 * p.l1 + p.m2 * p.a1) * g * c1 + p.m2 * p.l2 * g * c12, p.m2 * p.l2 * g * c12);
             QVERIFY(test::scaledError(data.g, expected) < 1e-13);
             const double Epot = p.m1 * g * p.l1 * std::sin(q[0]) + p.m2 * g * (p.a1 * std::sin(q[0]) + p.l2 * std::sin(q[0] + q[1]));
             QVERIFY(std::abs(potentialEnergy(robot, data, effects, q) - Epot) < 1e-13);

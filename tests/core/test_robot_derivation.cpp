@@ -159,9 +159,15 @@ private slots:
         QTest::addColumn<QString>("from");
         QTest::addColumn<QString>("to");
         QTest::addColumn<QString>("meaning");
-        QTest::newRow("c1") << "lc1" << "c1" << "cos q1";
-        QTest::newRow("s12") << "lc2" << "s12" << "sin(q1 + q2)";
-        QTest::newRow("s2") << "lc2" << "s2" << "sin q2";
+        QTest::newRow("c1") << "lc1"
+                            << "c1"
+                            << "cos q1";
+        QTest::newRow("s12") << "lc2"
+                             << "s12"
+                             << "sin(q1 + q2)";
+        QTest::newRow("s2") << "lc2"
+                            << "s2"
+                            << "sin q2";
     }
     void shorthandParameterNamesAreRefused() {
         QFETCH(QString, from);

@@ -86,8 +86,7 @@ private slots:
         const Effects effects = allEffects(6);
         RobotOde ode(scene.robot, effects);
         evaluate(ode, 6, 17);
-        for (int t = 0; t < kRhsTermCount; ++t)
-            QVERIFY2(ode.termEvaluations(RhsTerm(t)) == 17, toString(RhsTerm(t)));
+        for (int t = 0; t < kRhsTermCount; ++t) QVERIFY2(ode.termEvaluations(RhsTerm(t)) == 17, toString(RhsTerm(t)));
         QCOMPARE(int(ode.terms().size()), kRhsTermCount);
     }
 

@@ -94,11 +94,10 @@ std::string findError(const std::optional<std::vector<Diagnostic>>& diagnostics,
     return "no error on " + field + " with the expected text; got:" + seen;
 }
 
-#define EXPECT_ERROR(call, field, ...)                                                     \
-    do {                                                                                   \
-        const std::string problem_ = findError(diagnosticsOf([&] { (void)(call); }), field, \
-                                               std::vector<std::string>{__VA_ARGS__});     \
-        QVERIFY2(problem_.empty(), problem_.c_str());                                      \
+#define EXPECT_ERROR(call, field, ...)                                                                                              \
+    do {                                                                                                                            \
+        const std::string problem_ = findError(diagnosticsOf([&] { (void)(call); }), field, std::vector<std::string>{__VA_ARGS__}); \
+        QVERIFY2(problem_.empty(), problem_.c_str());                                                                               \
     } while (false)
 
 // The minimal scene with `edit` applied to its JSON.
@@ -131,8 +130,7 @@ std::string differences(const Scene& a, const Scene& b, double baseTolerance = 0
     if (a.parameters != b.parameters) out << "parameters differ\n";
     if (a.expressions != b.expressions) out << "expressions differ\n";
     if (a.robot.convention != b.robot.convention) out << "convention differs\n";
-    if ((a.robot.base.matrix() - b.robot.base.matrix()).cwiseAbs().maxCoeff() > baseTolerance)
-        out << "base differs\n";
+    if ((a.robot.base.matrix() - b.robot.base.matrix()).cwiseAbs().maxCoeff() > baseTolerance) out << "base differs\n";
     if (a.robot.dof() != b.robot.dof()) return out.str() + "joint counts differ\n";
     for (int i = 0; i < a.robot.dof(); ++i) {
         const Joint& x = a.robot.joints[i];
@@ -148,10 +146,9 @@ std::string differences(const Scene& a, const Scene& b, double baseTolerance = 0
     }
     const Effects& e = a.effects;
     const Effects& f = b.effects;
-    if (e.gravity.has_value() != f.gravity.has_value() || (e.gravity && *e.gravity != *f.gravity))
-        out << "gravity differs\n";
-    if (e.springs.size() != f.springs.size() || e.viscous.size() != f.viscous.size() ||
-        e.coulomb.size() != f.coulomb.size() || e.torques.size() != f.torques.size())
+    if (e.gravity.has_value() != f.gravity.has_value() || (e.gravity && *e.gravity != *f.gravity)) out << "gravity differs\n";
+    if (e.springs.size() != f.springs.size() || e.viscous.size() != f.viscous.size() || e.coulomb.size() != f.coulomb.size() ||
+        e.torques.size() != f.torques.size())
         return out.str() + "effect counts differ\n";
     for (std::size_t i = 0; i < e.springs.size(); ++i) {
         same("spring joint", e.springs[i].joint, f.springs[i].joint);
@@ -172,8 +169,13 @@ std::string differences(const Scene& a, const Scene& b, double baseTolerance = 0
         const JointTorque& t = f.torques[i];
         if (s.kind != t.kind) out << "torque kind differs\n";
         same("torque joint", s.joint, t.joint);
-        for (auto [x, y] : {std::pair{s.value, t.value}, {s.at, t.at}, {s.amplitude, t.amplitude},
-                            {s.frequency, t.frequency}, {s.phase, t.phase}, {s.slope, t.slope}, {s.start, t.start}})
+        for (auto [x, y] : {std::pair{s.value, t.value},
+                            {s.at, t.at},
+                            {s.amplitude, t.amplitude},
+                            {s.frequency, t.frequency},
+                            {s.phase, t.phase},
+                            {s.slope, t.slope},
+                            {s.start, t.start}})
             same("torque", x, y);
     }
     if (a.initial.q != b.initial.q || a.initial.qd != b.initial.qd) out << "initial state differs\n";
@@ -347,8 +349,8 @@ private slots:
         // Keys in the format's order.
         std::vector<std::string> keys;
         for (const auto& [key, value] : json.items()) keys.push_back(key);
-        QCOMPARE(keys, (std::vector<std::string>{"format", "name", "description", "source", "parameters", "robot",
-                                                 "effects", "initial", "simulation"}));
+        QCOMPARE(keys, (std::vector<std::string>{"format", "name", "description", "source", "parameters", "robot", "effects", "initial",
+                                                 "simulation"}));
     }
 
     void roundTripOfSceneBuiltInCode() {
@@ -363,8 +365,7 @@ private slots:
         const Scene back = parseScene(serializeScene(scene));
         scene.robot.name = back.robot.name;
         // The file holds the six entries of a symmetric tensor.
-        for (Joint& joint : scene.robot.joints)
-            joint.link.inertia = ((joint.link.inertia + joint.link.inertia.transpose()) / 2).eval();
+        for (Joint& joint : scene.robot.joints) joint.link.inertia = ((joint.link.inertia + joint.link.inertia.transpose()) / 2).eval();
         const std::string diff = differences(scene, back, 1e-14);
         QVERIFY2(diff.empty(), diff.c_str());
     }
@@ -372,35 +373,34 @@ private slots:
     void baseAtGimbalLock() {
         // pitch = -π/2: only roll + yaw is determined; the rotation must survive anyway,
         // even though the yaw was an expression.
-        const Scene scene = parseScene(minimalWith([](Json& j) {
-            j["robot"]["base"] = Json::parse(R"({"position": [1, 2, 3], "rpy": [0.4, "-pi/2", "pi/4"]})");
-        }));
+        const Scene scene = parseScene(
+            minimalWith([](Json& j) { j["robot"]["base"] = Json::parse(R"({"position": [1, 2, 3], "rpy": [0.4, "-pi/2", "pi/4"]})"); }));
         const Scene back = parseScene(serializeScene(scene));
         QVERIFY((back.robot.base.matrix() - scene.robot.base.matrix()).cwiseAbs().maxCoeff() < 1e-14);
-        QVERIFY((scene.robot.base.linear() - rpyRotation(0.4, -std::numbers::pi / 2, std::numbers::pi / 4)).norm() <
-                1e-15);
+        QVERIFY((scene.robot.base.linear() - rpyRotation(0.4, -std::numbers::pi / 2, std::numbers::pi / 4)).norm() < 1e-15);
     }
 
     void unknownKeys() {
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["effects"] = Json::parse(R"({"viscus": []})"); })),
-                     "effects.viscus", "unknown key (expected one of gravity, springs, viscous, coulomb, torques)");
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["effects"] = Json::parse(R"({"viscus": []})"); })), "effects.viscus",
+                     "unknown key (expected one of gravity, springs, viscous, coulomb, torques)");
         EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["titel"] = "x"; })), "titel", "unknown key", "name");
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joint"] = Json::array(); })), "robot.joint",
-                     "unknown key", "joints");
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joints"][0]["mas"] = 1; })),
-                     "robot.joints[0].mas", "unknown key", "mass");
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joints"][0]["inertia"] = {{"zx", 1}}; })),
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joint"] = Json::array(); })), "robot.joint", "unknown key", "joints");
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joints"][0]["mas"] = 1; })), "robot.joints[0].mas", "unknown key",
+                     "mass");
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) {
+                         j["robot"]["joints"][0]["inertia"] = {{"zx", 1}};
+                     })),
                      "robot.joints[0].inertia.zx", "unknown key", "xz");
         EXPECT_ERROR(parseScene(minimalWith([](Json& j) {
                          j["effects"] = Json::parse(R"({"springs": [{"joint": 1, "stiffness": 1}, {"joint": 1, "k": 2}]})");
                      })),
                      "effects.springs[1].k", "unknown key", "stiffness");
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["simulation"] = {{"step", 0.1}}; })), "simulation.step",
-                     "unknown key", "dt");
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["base"] = {{"orientation", 1}}; })),
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["simulation"] = {{"step", 0.1}}; })), "simulation.step", "unknown key", "dt");
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) {
+                         j["robot"]["base"] = {{"orientation", 1}};
+                     })),
                      "robot.base.orientation", "unknown key", "rpy");
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["initial"] = {{"q0", Json::array({1})}}; })),
-                     "initial.q0", "unknown key");
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["initial"] = {{"q0", Json::array({1})}}; })), "initial.q0", "unknown key");
         // All problems are reported at once.
         const auto all = diagnosticsOf([] {
             parseScene(minimalWith([](Json& j) {
@@ -426,9 +426,8 @@ private slots:
                          j["effects"] = Json::parse(R"({"torques": [{"joint": 1, "kind": "ramp", "slope": 1, "at": 2}]})");
                      })),
                      "effects.torques[0].at", "unknown key for a ramp torque");
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) {
-                         j["effects"] = Json::parse(R"({"torques": [{"joint": 1, "kind": "square", "value": 1}]})");
-                     })),
+        EXPECT_ERROR(parseScene(minimalWith(
+                         [](Json& j) { j["effects"] = Json::parse(R"({"torques": [{"joint": 1, "kind": "square", "value": 1}]})"); })),
                      "effects.torques[0].kind", "\"constant\", \"step\", \"sine\" or \"ramp\"", "\"square\"");
     }
 
@@ -436,68 +435,67 @@ private slots:
         Json json = Json::parse(kFullScene);
         json["robot"]["joints"].push_back(json["robot"]["joints"][0]);
         json["robot"]["joints"][2]["mass"] = Json::array({1, 2});
-        EXPECT_ERROR(parseScene(json.dump()), "robot.joints[2].mass",
-                     "expected a number or an expression, got [1,2]");
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"] = "arm"; })), "robot",
-                     "expected an object", "a string \"arm\"");
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joints"] = Json::object(); })),
-                     "robot.joints", "expected an array");
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joints"][0] = 3; })), "robot.joints[0]",
-                     "expected an object", "the number 3");
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joints"][0]["com"] = {1, 2}; })),
+        EXPECT_ERROR(parseScene(json.dump()), "robot.joints[2].mass", "expected a number or an expression, got [1,2]");
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"] = "arm"; })), "robot", "expected an object", "a string \"arm\"");
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joints"] = Json::object(); })), "robot.joints", "expected an array");
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joints"][0] = 3; })), "robot.joints[0]", "expected an object",
+                     "the number 3");
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) {
+                         j["robot"]["joints"][0]["com"] = {1, 2};
+                     })),
                      "robot.joints[0].com", "array of 3", "[1,2]");
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joints"][0]["com"] = {1, true, 2}; })),
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) {
+                         j["robot"]["joints"][0]["com"] = {1, true, 2};
+                     })),
                      "robot.joints[0].com[1]", "expected a number or an expression, got true");
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joints"][0]["inertia"] = {1, 2, 3}; })),
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) {
+                         j["robot"]["joints"][0]["inertia"] = {1, 2, 3};
+                     })),
                      "robot.joints[0].inertia", "expected an object", "[1,2,3]");
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joints"][0]["alpha"] = nullptr; })),
-                     "robot.joints[0].alpha", "got null");
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joints"][0]["type"] = "rotary"; })),
-                     "robot.joints[0].type", "\"revolute\" or \"prismatic\"", "\"rotary\"");
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["convention"] = "craig"; })),
-                     "robot.convention", "\"standard\" or \"modified\"");
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["name"] = 5; })), "name", "expected a string",
-                     "the number 5");
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["effects"] = {{"gravity", "down"}}; })),
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joints"][0]["alpha"] = nullptr; })), "robot.joints[0].alpha",
+                     "got null");
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joints"][0]["type"] = "rotary"; })), "robot.joints[0].type",
+                     "\"revolute\" or \"prismatic\"", "\"rotary\"");
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["convention"] = "craig"; })), "robot.convention",
+                     "\"standard\" or \"modified\"");
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["name"] = 5; })), "name", "expected a string", "the number 5");
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) {
+                         j["effects"] = {{"gravity", "down"}};
+                     })),
                      "effects.gravity", "array of 3", "a string \"down\"");
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["effects"] = {{"springs", {{"joint", 1}}}}; })),
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) {
+                         j["effects"] = {{"springs", {{"joint", 1}}}};
+                     })),
                      "effects.springs", "expected an array");
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["effects"] = "none"; })), "effects",
-                     "expected an object");
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["parameters"] = {1, 2}; })), "parameters",
-                     "expected an object");
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["parameters"] = {{"l1", {1}}}; })), "parameters.l1",
-                     "expected a number or an expression");
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["initial"] = {{"q", 0.5}}; })), "initial.q",
-                     "expected an array");
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["simulation"] = {{"integrator", 4}}; })),
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["effects"] = "none"; })), "effects", "expected an object");
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["parameters"] = {1, 2}; })), "parameters", "expected an object");
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) {
+                         j["parameters"] = {{"l1", {1}}};
+                     })),
+                     "parameters.l1", "expected a number or an expression");
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["initial"] = {{"q", 0.5}}; })), "initial.q", "expected an array");
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) {
+                         j["simulation"] = {{"integrator", 4}};
+                     })),
                      "simulation.integrator", "expected a string");
         EXPECT_ERROR(parseScene("[1, 2]"), "scene", "expected a JSON object");
         // Joint numbers of effects: integers from 1.
         for (const char* joint : {"\"2\"", "1.5", "0", "-1", "null"})
             EXPECT_ERROR(parseScene(minimalWith([&](Json& j) {
-                             j["effects"] = Json::parse(std::string(R"({"viscous": [{"joint": )") + joint +
-                                                        R"(, "coefficient": 1}]})");
+                             j["effects"] = Json::parse(std::string(R"({"viscous": [{"joint": )") + joint + R"(, "coefficient": 1}]})");
                          })),
                          "effects.viscous[0].joint", "from 1");
     }
 
     void missingRequiredFields() {
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j.erase("format"); })), "format", "missing",
-                     "lagrangelab-scene/1");
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j.erase("format"); })), "format", "missing", "lagrangelab-scene/1");
         EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j.erase("name"); })), "name", "missing");
         EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j.erase("robot"); })), "robot", "missing");
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"].erase("convention"); })), "robot.convention",
-                     "missing");
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"].erase("joints"); })), "robot.joints",
-                     "missing");
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joints"] = Json::array(); })), "robot.joints",
-                     "at least one joint");
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joints"][0].erase("mass"); })),
-                     "robot.joints[0].mass", "missing");
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) {
-                         j["effects"] = Json::parse(R"({"springs": [{"stiffness": 1}]})");
-                     })),
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"].erase("convention"); })), "robot.convention", "missing");
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"].erase("joints"); })), "robot.joints", "missing");
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joints"] = Json::array(); })), "robot.joints", "at least one joint");
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joints"][0].erase("mass"); })), "robot.joints[0].mass", "missing");
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["effects"] = Json::parse(R"({"springs": [{"stiffness": 1}]})"); })),
                      "effects.springs[0].joint", "missing");
     }
 
@@ -542,27 +540,34 @@ private slots:
                          j["robot"]["joints"].push_back({{"a", "l3/2"}, {"mass", 1}});
                      })),
                      "robot.joints[1].a", "unknown symbol 'l3' at position 1 in \"l3/2\"");
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joints"][0]["d"] = "1/(2-2)"; })),
-                     "robot.joints[0].d", "division by zero in \"1/(2-2)\"");
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joints"][0]["inertia"] = {{"xz", "1e400"}}; })),
-                     "robot.joints[0].inertia.xz", "value is not finite (inf) in \"1e400\"");
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["effects"] = {{"gravity", {0, "-9.81*", 0}}}; })),
-                     "effects.gravity[1]", "syntax error", "\"-9.81*\"");
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["initial"] = {{"qd", {"oops"}}}; })), "initial.qd[0]",
-                     "unknown symbol 'oops'");
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joints"][0]["d"] = "1/(2-2)"; })), "robot.joints[0].d",
+                     "division by zero in \"1/(2-2)\"");
         EXPECT_ERROR(parseScene(minimalWith([](Json& j) {
-                         j["effects"] = Json::parse(R"({"coulomb": [{"joint": 1, "force": 1, "smoothing": "v"}]})");
+                         j["robot"]["joints"][0]["inertia"] = {{"xz", "1e400"}};
                      })),
+                     "robot.joints[0].inertia.xz", "value is not finite (inf) in \"1e400\"");
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) {
+                         j["effects"] = {{"gravity", {0, "-9.81*", 0}}};
+                     })),
+                     "effects.gravity[1]", "syntax error", "\"-9.81*\"");
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["initial"] = {{"qd", {"oops"}}}; })), "initial.qd[0]", "unknown symbol 'oops'");
+        EXPECT_ERROR(parseScene(minimalWith(
+                         [](Json& j) { j["effects"] = Json::parse(R"({"coulomb": [{"joint": 1, "force": 1, "smoothing": "v"}]})"); })),
                      "effects.coulomb[0].smoothing", "unknown symbol 'v'");
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["base"] = {{"rpy", {0, 0, "pi/"}}}; })),
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) {
+                         j["robot"]["base"] = {{"rpy", {0, 0, "pi/"}}};
+                     })),
                      "robot.base.rpy[2]", "syntax error");
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["simulation"] = {{"dt", "1/0"}}; })), "simulation.dt",
-                     "division by zero");
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["simulation"] = {{"dt", "1/0"}}; })), "simulation.dt", "division by zero");
         // Parameters: later ones may use earlier ones only; reserved names refused.
-        EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["parameters"] = {{"a", "b"}, {"b", 1}}; })),
+        EXPECT_ERROR(parseScene(minimalWith([](Json& j) {
+                         j["parameters"] = {{"a", "b"}, {"b", 1}};
+                     })),
                      "parameters.a", "unknown symbol 'b'");
         for (const char* name : {"pi", "q1", "qd2", "t", "sin", "cos"})
-            EXPECT_ERROR(parseScene(minimalWith([&](Json& j) { j["parameters"] = {{name, 1}}; })),
+            EXPECT_ERROR(parseScene(minimalWith([&](Json& j) {
+                             j["parameters"] = {{name, 1}};
+                         })),
                          std::string("parameters.") + name, "reserved");
         // Several broken fields: each reported.
         const auto both = diagnosticsOf([] {
@@ -662,16 +667,11 @@ private slots:
         EXPECT_ERROR(loadScene(extraQ.string()), extraQ.string() + ": initial.q", "2 entries");
 
         const fs::path outOfRange = root / "range.json";
-        writeFile(outOfRange, minimalWith([](Json& j) {
-                      j["effects"] = Json::parse(R"({"springs": [{"joint": 3, "stiffness": 1}]})");
-                  }));
-        EXPECT_ERROR(loadScene(outOfRange.string()), outOfRange.string() + ": effects.springs[0].joint",
-                     "joint 3 does not exist");
+        writeFile(outOfRange, minimalWith([](Json& j) { j["effects"] = Json::parse(R"({"springs": [{"joint": 3, "stiffness": 1}]})"); }));
+        EXPECT_ERROR(loadScene(outOfRange.string()), outOfRange.string() + ": effects.springs[0].joint", "joint 3 does not exist");
 
         const fs::path oddInertia = root / "odd.json";
-        writeFile(oddInertia, minimalWith([](Json& j) {
-                      j["robot"]["joints"][0]["inertia"] = {{"xx", 0.1}, {"yy", 0.1}, {"zz", 0.5}};
-                  }));
+        writeFile(oddInertia, minimalWith([](Json& j) { j["robot"]["joints"][0]["inertia"] = {{"xx", 0.1}, {"yy", 0.1}, {"zz", 0.5}}; }));
         const LoadedScene odd = loadScene(oddInertia.string());
         QVERIFY(!odd.warnings.empty());
         QCOMPARE(odd.warnings.front().severity, Severity::Warning);
@@ -685,10 +685,9 @@ private slots:
                 if (entry.is_regular_file() && entry.path().extension() == ".json") files.push_back(entry.path());
         if (files.empty()) QSKIP("no examples/*.json yet");
 
-        const std::vector<std::string> numericFields = {"a",       "alpha",   "d",          "theta",
-                                                        "mass",    "com[0]",  "com[1]",     "com[2]",
-                                                        "inertia.xx", "inertia.yy", "inertia.zz", "inertia.xy",
-                                                        "inertia.xz", "inertia.yz"};
+        const std::vector<std::string> numericFields = {"a",          "alpha",      "d",          "theta",      "mass",
+                                                        "com[0]",     "com[1]",     "com[2]",     "inertia.xx", "inertia.yy",
+                                                        "inertia.zz", "inertia.xy", "inertia.xz", "inertia.yz"};
         const Json corruptions[] = {"oops", Json::object({{"x", 1}}), nullptr};
         for (const fs::path& file : files) {
             const std::string text = readFile(file);

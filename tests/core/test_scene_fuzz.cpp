@@ -107,8 +107,7 @@ private slots:
                         namedCodePoint += d.message.english().find("(U+") != std::string::npos;
                     }
                 } catch (const std::exception& e) {
-                    QFAIL(qPrintable(QString::fromStdString(file.filename().string() + ": not an InputError: " +
-                                                            validUtf8(e.what()))));
+                    QFAIL(qPrintable(QString::fromStdString(file.filename().string() + ": not an InputError: " + validUtf8(e.what()))));
                 }
             }
         }

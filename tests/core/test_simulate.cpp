@@ -43,7 +43,7 @@ private slots:
         QCOMPARE(int(r.trajectory.size()), 1001);
         // Local errors of size tol per step accumulate over the run; allow 100x.
         QVERIFY2(r.stats.maxRelEnergyError < 100 * tolerance, qPrintable(QString::number(r.stats.maxRelEnergyError)));
-        QVERIFY(r.stats.maxRelEnergyError > 0);  // it is a real measurement, not a copy of E(0)
+        QVERIFY(r.stats.maxRelEnergyError > 0);   // it is a real measurement, not a copy of E(0)
         QCOMPARE(r.trajectory.work.back(), 0.0);  // no Q declared: no work
         QVERIFY(r.stats.rhsEvaluations > r.stats.steps);
     }
@@ -91,10 +91,13 @@ private slots:
         const Scene scene = doublePendulumScene();
         std::atomic<bool> cancel{false};
         double lastFraction = 0;
-        const SimulationResult r = simulate(scene, scene.simulation, [&](double f) {
-            lastFraction = f;
-            if (f >= 0.3) cancel = true;
-        }, &cancel);
+        const SimulationResult r = simulate(
+            scene, scene.simulation,
+            [&](double f) {
+                lastFraction = f;
+                if (f >= 0.3) cancel = true;
+            },
+            &cancel);
         QCOMPARE(int(r.status), int(SimulationStatus::Cancelled));
         QCOMPARE(int(r.message.id), int(MessageId::CancelledAtTime));
         QVERIFY(r.trajectory.t.back() >= 3.0 && r.trajectory.t.back() < 3.1);

@@ -82,7 +82,8 @@ private slots:
         QCOMPARE(latex(rotor, Notation::Craig, true, Language::Danish),
                  std::string(R"(\text{(rotor } j \text{ drejer med } G_j \dot{\theta}_j\text{)})"));
         QCOMPARE(text(rotor, Notation::Notes, true, Language::Danish), std::string("(rotor j drejer med G_j qd_j)"));
-        const StepFormula row = stepFormula("«1»:", "«1»:", {formulaWords(MessageId::FormulaDhRow, {"i"})}, {formulaWords(MessageId::FormulaDhRow, {"i"})});
+        const StepFormula row =
+            stepFormula("«1»:", "«1»:", {formulaWords(MessageId::FormulaDhRow, {"i"})}, {formulaWords(MessageId::FormulaDhRow, {"i"})});
         QCOMPARE(latex(row, Notation::Notes, true), std::string(R"(\text{row } i:)"));
         QCOMPARE(text(row, Notation::Notes, true, Language::Danish), std::string("række i:"));
     }

@@ -103,8 +103,7 @@ std::string latexProblem(const std::string& doc) {
             continue;
         }
         if (c == '#' && i + 1 < doc.size() && std::isdigit(static_cast<unsigned char>(doc[i + 1]))) continue;  // a macro's #1
-        if ((c == '_' || c == '^' || c == '&' || c == '#') && !math)
-            return std::string("'") + c + "' outside math at line " + line(i);
+        if ((c == '_' || c == '^' || c == '&' || c == '#') && !math) return std::string("'") + c + "' outside math at line " + line(i);
         if (c == '_' || c == '^') {
             const int bit = c == '_' ? 1 : 2;
             if (lastScript[depth] & bit) return std::string("double ") + (c == '_' ? "subscript" : "superscript") + " at line " + line(i);
@@ -348,12 +347,15 @@ private slots:
             const EntryRef ref = parseEntry(label, 6);
             const ExpandedEntry e = expandEntry(s, ref);
             QCOMPARE(e.terms == 0, e.value.is_zero());
-            const GiNaC::ex& structured = ref.matrix == 'B' ? s.B(ref.row, ref.col) : ref.matrix == 'C' ? s.C(ref.row, ref.col) : s.g(ref.row, 0);
+            const GiNaC::ex& structured = ref.matrix == 'B'   ? s.B(ref.row, ref.col)
+                                          : ref.matrix == 'C' ? s.C(ref.row, ref.col)
+                                                              : s.g(ref.row, 0);
             for (int k = 0; k < 3; ++k) {
                 const Eigen::VectorXd q = test::randomVector(rng, 6, 2.0), qd = test::randomVector(rng, 6, 2.0);
                 const DefinitionValues v(*s.table, structuredInputs(s, {q.data(), q.data() + 6}, {qd.data(), qd.data() + 6}));
                 const double a = v(e.value), b = v(structured);
-                QVERIFY2(std::abs(a - b) <= 1e-9 * std::max(1.0, std::abs(b)), qPrintable(QString("%1: %2 vs %3").arg(label).arg(a).arg(b)));
+                QVERIFY2(std::abs(a - b) <= 1e-9 * std::max(1.0, std::abs(b)),
+                         qPrintable(QString("%1: %2 vs %3").arg(label).arg(a).arg(b)));
                 nonzero += std::abs(b) > 1e-6 ? 1 : 0;
             }
         }

@@ -263,7 +263,11 @@ private slots:
                 for (int k = j; k < n; ++k) {
                     const bool symbolic = !s.dB[l](j, k).is_zero(), fd = largest(j * n + k, l) > 1e-8;
                     QVERIFY2(symbolic == fd, qPrintable(QString("db%1%2/dq%3: structured %4, finite differences %5")
-                                                           .arg(j + 1).arg(k + 1).arg(l + 1).arg(symbolic).arg(largest(j * n + k, l))));
+                                                            .arg(j + 1)
+                                                            .arg(k + 1)
+                                                            .arg(l + 1)
+                                                            .arg(symbolic)
+                                                            .arg(largest(j * n + k, l))));
                     count += symbolic;
                 }
         QCOMPARE(count, s.nonZeroMassDerivatives());

@@ -72,7 +72,8 @@ private slots:
             ++cells;
             const present::DisplayNode& cell = *item.value->rows[static_cast<std::size_t>(s.row)][static_cast<std::size_t>(s.col)];
             const std::string value = present::renderDisplay(cell, present::DisplayStyle::Text);
-            const std::string listed = present::entryName(item, static_cast<std::size_t>(s.row), static_cast<std::size_t>(s.col)) + " = " + value;
+            const std::string listed =
+                present::entryName(item, static_cast<std::size_t>(s.row), static_cast<std::size_t>(s.col)) + " = " + value;
             QVERIFY2(shown == value || shown == listed, (item.name + ": '" + shown + "' is not '" + value + "'").c_str());
         }
         // the expanded form's B, C, g are matrices (cells); the structured form lists b_jk as items

@@ -53,9 +53,7 @@ std::shared_ptr<const present::DisplayDocument> displayTrees(const Scene& scene,
 void compareJsonWithTrees(const nlohmann::json& json, const present::DisplayDocument& display, const char* name) {
     // JSON's Plain: a matrix as rows of entries (a column as a list).
     auto samePlain = [](const nlohmann::json& written, const present::DisplayNode& value) {
-        const auto plain = [](const present::DisplayNode& n) {
-            return present::renderDisplay(n, present::DisplayStyle::Plain);
-        };
+        const auto plain = [](const present::DisplayNode& n) { return present::renderDisplay(n, present::DisplayStyle::Plain); };
         if (value.kind != present::DisplayKind::Matrix) return written.get<std::string>() == plain(value);
         if (written.size() != value.rows.size()) return false;
         for (std::size_t r = 0; r < value.rows.size(); ++r)
@@ -74,19 +72,15 @@ void compareJsonWithTrees(const nlohmann::json& json, const present::DisplayDocu
             const auto& written = json["steps"][k]["items"][i];
             QCOMPARE(written["name"].get<std::string>(), items[i].name);
             QCOMPARE(written["text"].get<std::string>(), present::itemText(items[i]));
-            QCOMPARE(written["latex"].get<std::string>(),
-                     present::renderDisplay(*items[i].equation, present::DisplayStyle::Latex));
+            QCOMPARE(written["latex"].get<std::string>(), present::renderDisplay(*items[i].equation, present::DisplayStyle::Latex));
             if (items[i].name.rfind("equation_", 0) == 0)
-                QCOMPARE(written["expr"].get<std::string>(),
-                         present::renderDisplay(*items[i].equation, present::DisplayStyle::Plain));
-            else
-                QVERIFY2(samePlain(written["expr"], *items[i].value), items[i].name.c_str());
+                QCOMPARE(written["expr"].get<std::string>(), present::renderDisplay(*items[i].equation, present::DisplayStyle::Plain));
+            else QVERIFY2(samePlain(written["expr"], *items[i].value), items[i].name.c_str());
             results[items[i].name] = &items[i];
         }
     }
     int repeated = 0;
-    for (const auto& [top, item] :
-         {std::pair{"B", "B"}, {"C", "C"}, {"g", "g"}, {"Q", "Q"}, {"Ekin", "E_kin"}, {"Epot", "E_pot"}}) {
+    for (const auto& [top, item] : {std::pair{"B", "B"}, {"C", "C"}, {"g", "g"}, {"Q", "Q"}, {"Ekin", "E_kin"}, {"Epot", "E_pot"}}) {
         if (!results.count(item)) continue;
         QVERIFY2(samePlain(json[top], *results[item]->value), top);
         ++repeated;
@@ -100,9 +94,7 @@ SimulationSettings shortRun(const Scene& scene, double duration) {
     return s;
 }
 
-double milliseconds(std::chrono::steady_clock::duration d) {
-    return std::chrono::duration<double, std::milli>(d).count();
-}
+double milliseconds(std::chrono::steady_clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); }
 
 }  // namespace
 
@@ -133,8 +125,7 @@ private slots:
             for (std::string& doc : planarTogether)
                 doc = derive(planar, symbolic::ParameterMode::Parametric, present::DocumentFormat::Latex);
         });
-        for (SimulationResult& r : pairTogether)
-            threads.emplace_back([&] { r = simulate(pair, shortRun(pair, 2.0)); });
+        for (SimulationResult& r : pairTogether) threads.emplace_back([&] { r = simulate(pair, shortRun(pair, 2.0)); });
         threads.emplace_back([&] {
             for (int k = 0; k < 5; ++k) {
                 if (example("elastic_pendulum.json").dof() == 2) ++loads;
@@ -180,13 +171,12 @@ private slots:
         cancel = true;
         worker.join();
         QVERIFY(cancelled.load());
-        qInfo("Panda (symbolic) derivation cancelled after %d entries; it stopped %.2f ms after the flag was set",
-              entries.load(), milliseconds(stopped - set));
+        qInfo("Panda (symbolic) derivation cancelled after %d entries; it stopped %.2f ms after the flag was set", entries.load(),
+              milliseconds(stopped - set));
 
         // The lock is free again: the next derivation runs to the end.
         const Scene planar = example("planar_2r.json");
-        QVERIFY(derive(planar, symbolic::ParameterMode::Numeric, present::DocumentFormat::Text).find("B = ") !=
-                std::string::npos);
+        QVERIFY(derive(planar, symbolic::ParameterMode::Numeric, present::DocumentFormat::Text).find("B = ") != std::string::npos);
     }
 
     // A text, LaTeX or JSON document says exactly what the display trees say when
@@ -203,7 +193,6 @@ private slots:
 
                 compareJsonWithTrees(nlohmann::json::parse(derive(scene, mode, present::DocumentFormat::Json)), *display, name);
                 if (QTest::currentTestFailed()) return;
-
             }
         }
     }

@@ -82,10 +82,14 @@ private slots:
         QTest::addColumn<double>("value");
         QTest::addColumn<QString>("field");
         QTest::addColumn<QString>("says");
-        QTest::newRow("COM in mm") << "/robot/joints/1/com/0" << -363.8 << "robot.joints[1].com[0]" << "-363.8 mm = -0.3638 m";
-        QTest::newRow("a in mm") << "/robot/joints/1/a" << 431.8 << "robot.joints[1].a" << "431.8 mm = 0.4318 m";
-        QTest::newRow("mass in g") << "/robot/joints/1/mass" << 17400.0 << "robot.joints[1].mass" << "17400 g = 17.4 kg";
-        QTest::newRow("inertia in g mm²") << "/robot/joints/1/inertia/yy" << 0.524e9 << "robot.joints[1].inertia" << "g mm²";
+        QTest::newRow("COM in mm") << "/robot/joints/1/com/0" << -363.8 << "robot.joints[1].com[0]"
+                                   << "-363.8 mm = -0.3638 m";
+        QTest::newRow("a in mm") << "/robot/joints/1/a" << 431.8 << "robot.joints[1].a"
+                                 << "431.8 mm = 0.4318 m";
+        QTest::newRow("mass in g") << "/robot/joints/1/mass" << 17400.0 << "robot.joints[1].mass"
+                                   << "17400 g = 17.4 kg";
+        QTest::newRow("inertia in g mm²") << "/robot/joints/1/inertia/yy" << 0.524e9 << "robot.joints[1].inertia"
+                                          << "g mm²";
     }
     void slipsWarnNamingTheFieldAndLoad() {
         QFETCH(QString, pointer);
@@ -109,10 +113,8 @@ private slots:
             std::vector<std::string> slips;
             for (const Diagnostic& d : unitSlipWarnings(loaded.scene.robot)) slips.push_back(d.field);
             const std::string name = entry.path().filename().string();
-            if (name == "stanford_arm.json")
-                QCOMPARE(slips, std::vector<std::string>{"robot.joints[2].com[2]"});
-            else
-                QVERIFY2(slips.empty(), (name + ": " + (slips.empty() ? "" : slips.front())).c_str());
+            if (name == "stanford_arm.json") QCOMPARE(slips, std::vector<std::string>{"robot.joints[2].com[2]"});
+            else QVERIFY2(slips.empty(), (name + ": " + (slips.empty() ? "" : slips.front())).c_str());
         }
     }
 
@@ -144,7 +146,8 @@ private slots:
         bool named = false;
         for (const Diagnostic& d : absurd.diagnostics) {
             QVERIFY2(!contains(d.message.english(), "ill-conditioned"), d.message.english().c_str());
-            named = named || (d.field.ends_with("robot.joints[1].com[0]") && contains(d.message.english(), "absurdly large length -363800 m"));
+            named =
+                named || (d.field.ends_with("robot.joints[1].com[0]") && contains(d.message.english(), "absurdly large length -363800 m"));
         }
         QVERIFY(named);
     }
@@ -155,7 +158,7 @@ private slots:
     // and simulates.
     void publishedUr5LoadsOnceArmatureIsGiven() {
         Json json = exampleJson("ur5.json");
-        const double com[6][3] = {{0, -0.02561, 0.00193}, {0.2125, 0, 0.11336}, {0.15, 0, 0.0265},
+        const double com[6][3] = {{0, -0.02561, 0.00193}, {0.2125, 0, 0.11336},  {0.15, 0, 0.0265},
                                   {0, -0.0018, 0.01634},  {0, -0.0018, 0.01634}, {0, 0, -0.001159}};
         const double mass[6] = {3.7, 8.393, 2.33, 1.219, 1.219, 0.1897};
         for (std::size_t j = 0; j < 6; ++j) {

@@ -21,8 +21,7 @@ std::vector<std::string> exampleFiles() {
     // examples/hard/ holds scenes built to break things (a joint that moves no mass, a
     // 1e4 s symplectic run...); test_hard_cases checks each one's own property.
     for (const auto& entry : std::filesystem::recursive_directory_iterator(LL_EXAMPLES_DIR))
-        if (entry.path().extension() == ".json" && entry.path().parent_path().filename() != "hard")
-            files.push_back(entry.path().string());
+        if (entry.path().extension() == ".json" && entry.path().parent_path().filename() != "hard") files.push_back(entry.path().string());
     std::sort(files.begin(), files.end());
     return files;
 }
@@ -58,7 +57,8 @@ private slots:
                     Scene scene = original;
                     corrupt(scene.robot.joints[j]);
                     const auto diagnostics = validateScene(scene);
-                    QVERIFY2(namesError(diagnostics, field), qPrintable(QString::fromStdString(file + ": " + what + " not reported at " + field)));
+                    QVERIFY2(namesError(diagnostics, field),
+                             qPrintable(QString::fromStdString(file + ": " + what + " not reported at " + field)));
                 };
                 expectError("negative mass", jointField(j, "mass"), [](Joint& x) { x.link.mass = -1.0; });
                 expectError("NaN mass", jointField(j, "mass"), [](Joint& x) { x.link.mass = std::nan(""); });
@@ -88,7 +88,8 @@ private slots:
         const LoadedScene puma = loadScene(std::string(LL_EXAMPLES_DIR) + "/puma560.json");
         bool warnedLink1 = false;
         for (const Diagnostic& d : puma.warnings)
-            warnedLink1 |= d.field.find("robot.joints[0].inertia") != std::string::npos && d.message.english().find("triangle") != std::string::npos;
+            warnedLink1 |=
+                d.field.find("robot.joints[0].inertia") != std::string::npos && d.message.english().find("triangle") != std::string::npos;
         QVERIFY(warnedLink1);
         const LoadedScene stanford = loadScene(std::string(LL_EXAMPLES_DIR) + "/stanford_arm.json");
         bool warnedLink5 = false;

@@ -64,10 +64,8 @@ private slots:
             QVERIFY((visual.endEffectorPosition() - data.T_0i[6].translation()).norm() < 1e-14);
             for (int i = 0; i < 6; ++i) {
                 const auto com = partsNamed(visual, "COM " + std::to_string(i + 1));
-                if (scene.robot.joints[i].link.mass == 0)
-                    QVERIFY(com.empty());
-                else
-                    QVERIFY((com.at(0)->pose.translation() - data.p_ci[i]).norm() < 1e-14);
+                if (scene.robot.joints[i].link.mass == 0) QVERIFY(com.empty());
+                else QVERIFY((com.at(0)->pose.translation() - data.p_ci[i]).norm() < 1e-14);
                 // The segments of link i chain from o_{i-1} to o_i.
                 const auto links = partsNamed(visual, "link " + std::to_string(i + 1));
                 Eigen::Vector3d at = data.T_0i[i].translation();
@@ -181,7 +179,7 @@ private slots:
             const bool atBase = pedestal.role == PartRole::Pedestal &&
                                 std::abs(visual.up.dot(visual.ground.centre) -
                                          (visual.up.dot(pedestal.pose.translation()) - pedestal.length / 2 - 0.01 * visual.scale)) < 1e-12;
-            QCOMPARE(atBase, std::string(file) == "puma560.json");  // the pendulum hangs below its pivot: the ground below all
+            QCOMPARE(atBase, std::string(file) == "puma560.json");          // the pendulum hangs below its pivot: the ground below all
             QCOMPARE(planar, std::string(file) == "double_pendulum.json");  // `auto` looks at a planar pendulum from the front
             std::vector<CameraView> views;
             for (const char* name : {"auto", "iso", "top", "side", "20,-35", "-120,60"})
@@ -195,7 +193,8 @@ private slots:
                         QVERIFY((e.array() - p.radius >= visual.bounds.min.array() - 1e-12).all());
                         QVERIFY((e.array() + p.radius <= visual.bounds.max.array() + 1e-12).all());
                         // (atBase checked the pedestal's own bottom; its ends' spheres of the disc's radius would not fit)
-                        if (!atBase || (k == 0 && p.role != PartRole::Pedestal)) QVERIFY(visual.up.dot(e) - p.radius >= visual.up.dot(visual.ground.centre));
+                        if (!atBase || (k == 0 && p.role != PartRole::Pedestal))
+                            QVERIFY(visual.up.dot(e) - p.radius >= visual.up.dot(visual.ground.centre));
                         for (const CameraView& view : views) {
                             const Eigen::Vector3d forward = (view.centre - view.eye).normalized();
                             const Eigen::Vector3d right = forward.cross(view.up).normalized(), up = right.cross(forward);

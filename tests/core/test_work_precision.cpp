@@ -82,9 +82,12 @@ private slots:
         QCOMPARE(fractions.back(), 1.0);
 
         std::atomic<bool> cancel{false};
-        const WorkPrecisionResult part = runWorkPrecision(scene, s, [&](double f, const Message&) {
-            if (f > 0.4) cancel = true;
-        }, &cancel);
+        const WorkPrecisionResult part = runWorkPrecision(
+            scene, s,
+            [&](double f, const Message&) {
+                if (f > 0.4) cancel = true;
+            },
+            &cancel);
         QCOMPARE(int(part.status), int(SimulationStatus::Cancelled));
         QVERIFY(part.points.size() < full.points.size());
         QCOMPARE(int(part.message.id), int(MessageId::CancelledAfterSettings));

@@ -17,8 +17,7 @@ const std::vector<ll::Scene>& scenes() {
     static const std::vector<ll::Scene> all = [] {
         std::vector<ll::Scene> s;
         for (const char* name : {"planar_2r.json", "puma560.json", "mass_spring_pair.json", "cart_pole.json",
-                                 "mass_spring_pair_lagrangian.json", "elastic_pendulum.json", "stanford_arm.json",
-                                 "hard/stick_slip.json"})
+                                 "mass_spring_pair_lagrangian.json", "elastic_pendulum.json", "stanford_arm.json", "hard/stick_slip.json"})
             s.push_back(ll::loadScene(std::string(LL_EXAMPLES_DIR) + "/" + name).scene);
         return s;
     }();
@@ -45,11 +44,9 @@ int ll::fuzz::evalState(const std::uint8_t* data, std::size_t size) {
     const auto finite = [](const Eigen::VectorXd& v) { return v.allFinite(); };
     if (!finite(q) || !finite(qd) || !finite(tau) || !std::isfinite(t)) return 0;
     try {
-        const ll::SceneEvaluation e =
-            ll::evaluateScene(scene, q, qd, t, withTau ? std::optional<Eigen::VectorXd>(tau) : std::nullopt);
-        ll::fuzz::require(e.terms.B.allFinite() && e.terms.C.allFinite() && e.terms.g.allFinite() &&
-                              e.terms.Q.allFinite() && e.qdd.allFinite() && std::isfinite(e.terms.Ekin) &&
-                              std::isfinite(e.terms.Epot),
+        const ll::SceneEvaluation e = ll::evaluateScene(scene, q, qd, t, withTau ? std::optional<Eigen::VectorXd>(tau) : std::nullopt);
+        ll::fuzz::require(e.terms.B.allFinite() && e.terms.C.allFinite() && e.terms.g.allFinite() && e.terms.Q.allFinite() &&
+                              e.qdd.allFinite() && std::isfinite(e.terms.Ekin) && std::isfinite(e.terms.Epot),
                           "eval returned a non-finite number");
     } catch (const ll::InputError& e) {
         ll::fuzz::checkRefusal(e);

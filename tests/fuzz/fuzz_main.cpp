@@ -2,6 +2,4 @@
 // (tests/fuzz/CMakeLists.txt compiles this file once per target).
 #include "fuzz_support.hpp"
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    return ll::fuzz::LL_FUZZ_TARGET(data, size);
-}
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) { return ll::fuzz::LL_FUZZ_TARGET(data, size); }

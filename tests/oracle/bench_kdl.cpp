@@ -42,8 +42,8 @@ int main(int argc, char** argv) {
             scenes.push_back(std::string(LL_EXAMPLES_DIR) + "/" + name + ".json");
 
     std::printf("median time per call [µs] over %d batches of random states\n\n", batches);
-    std::printf("%-24s %2s | %7s %7s %7s %7s %7s | %9s %9s %9s %9s %9s\n", "robot", "n", "B", "C", "g", "FD", "RNEA", "KDL B",
-                "KDL Cq̇", "KDL g", "KDL FD", "KDL RNEA");
+    std::printf("%-24s %2s | %7s %7s %7s %7s %7s | %9s %9s %9s %9s %9s\n", "robot", "n", "B", "C", "g", "FD", "RNEA", "KDL B", "KDL Cq̇",
+                "KDL g", "KDL FD", "KDL RNEA");
     for (const std::string& path : scenes) {
         Scene scene;
         try {
@@ -75,8 +75,8 @@ int main(int argc, char** argv) {
         const double kG = kdlTime([&] { kdl.kdlGravity(); }) - setOnly;
         const double kFD = kdlTime([&] { kdl.kdlForwardDynamics(); }) - setOnly;
         const double kID = kdlTime([&] { kdl.kdlInverseDynamics(); }) - setOnly;
-        std::printf("%-24.24s %2d | %7.3f %7.3f %7.3f %7.3f %7.3f | %9.3f %9.3f %9.3f %9.3f %9.3f\n", scene.name.c_str(),
-                    robot.dof(), ours.B, ours.C, ours.g, ours.FD, ours.RNEA, kB, kC, kG, kFD, kID);
+        std::printf("%-24.24s %2d | %7.3f %7.3f %7.3f %7.3f %7.3f | %9.3f %9.3f %9.3f %9.3f %9.3f\n", scene.name.c_str(), robot.dof(),
+                    ours.B, ours.C, ours.g, ours.FD, ours.RNEA, kB, kC, kG, kFD, kID);
     }
     std::printf("\nB: kinematics + CRBA; C: + Christoffel matrix; FD: q̈ = B⁻¹(Q − C q̇ − g); RNEA: inverse dynamics.\n"
                 "KDL: ChainDynParam JntToMass/JntToCoriolis/JntToGravity, ChainFdSolver_RNE, ChainIdSolver_RNE\n"

@@ -14,13 +14,15 @@ KDL::Rotation toKdl(const Eigen::Matrix3d& R) {
     return KDL::Rotation(R(0, 0), R(0, 1), R(0, 2), R(1, 0), R(1, 1), R(1, 2), R(2, 0), R(2, 1), R(2, 2));
 }
 
-KDL::Frame toKdl(const Eigen::Isometry3d& T) { return KDL::Frame(toKdl(Eigen::Matrix3d(T.linear())), toKdl(Eigen::Vector3d(T.translation()))); }
+KDL::Frame toKdl(const Eigen::Isometry3d& T) {
+    return KDL::Frame(toKdl(Eigen::Matrix3d(T.linear())), toKdl(Eigen::Vector3d(T.translation())));
+}
 
 KDL::RigidBodyInertia toKdl(const LinkInertia& link) {
     const Eigen::Matrix3d& I = link.inertia;
     // Tensor entries, same sign convention on both sides (see the header).
-    const KDL::RotationalInertia Ic(I(0, 0), I(1, 1), I(2, 2), 0.5 * (I(0, 1) + I(1, 0)),
-                                    0.5 * (I(0, 2) + I(2, 0)), 0.5 * (I(1, 2) + I(2, 1)));
+    const KDL::RotationalInertia Ic(I(0, 0), I(1, 1), I(2, 2), 0.5 * (I(0, 1) + I(1, 0)), 0.5 * (I(0, 2) + I(2, 0)),
+                                    0.5 * (I(1, 2) + I(2, 1)));
     return KDL::RigidBodyInertia(link.mass, toKdl(link.com), Ic);  // Ic about the COM
 }
 
@@ -47,8 +49,7 @@ bool isIdentity(const KDL::Frame& F) { return isIdentity(toEigen(F)); }  // exac
 
 // The motor's armature is KDL's joint inertia, which KDL adds to H(j,j) and inertia·q̈_j.
 KDL::Joint jointOf(const Joint& joint) {
-    return KDL::Joint(joint.dh.type == JointType::Revolute ? KDL::Joint::RotZ : KDL::Joint::TransZ, 1.0, 0.0,
-                      joint.motor.armature());
+    return KDL::Joint(joint.dh.type == JointType::Revolute ? KDL::Joint::RotZ : KDL::Joint::TransZ, 1.0, 0.0, joint.motor.armature());
 }
 
 // Rot_x(α) Trans_x(a): the fixed head of a modified DH row.
@@ -82,8 +83,7 @@ KdlChain toKdlChain(const RobotModel& model, KdlChainLayout layout) {
                     add(KDL::Segment(name, jointOf(joint), KDL::Frame::DH(r.a, r.alpha, r.d, r.theta), toKdl(joint.link)));
             } else {
                 add(KDL::Segment(name + "_head", fixed, modifiedHead(joint.dh)));
-                out.frameSegment[i + 1] =
-                    add(KDL::Segment(name, jointOf(joint), modifiedTail(joint.dh), toKdl(joint.link)));
+                out.frameSegment[i + 1] = add(KDL::Segment(name, jointOf(joint), modifiedTail(joint.dh), toKdl(joint.link)));
             }
         }
         return out;
@@ -111,8 +111,7 @@ KdlChain toKdlChain(const RobotModel& model, KdlChainLayout layout) {
         const KDL::Frame toFrameI = nextHead.Inverse();  // frame i seen from the tip
         // KDL: operator*(T_a_b, I_b) = I_a. The link inertia is given in frame i.
         const KDL::RigidBodyInertia I = toFrameI * toKdl(joint.link);
-        out.frameSegment[i + 1] = add(KDL::Segment("link" + std::to_string(i + 1), jointOf(joint),
-                                                   modifiedTail(joint.dh) * nextHead, I));
+        out.frameSegment[i + 1] = add(KDL::Segment("link" + std::to_string(i + 1), jointOf(joint), modifiedTail(joint.dh) * nextHead, I));
         out.frameCorrection[i + 1] = toFrameI;
     }
     return out;
@@ -132,8 +131,7 @@ KdlOracle::KdlOracle(KdlOracle&&) noexcept = default;
 KdlOracle& KdlOracle::operator=(KdlOracle&&) noexcept = default;
 KdlOracle::~KdlOracle() = default;
 
-void KdlOracle::init(const RobotModel& model, const Eigen::Vector3d& gravity, const Effects* effects,
-                     KdlChainLayout layout) {
+void KdlOracle::init(const RobotModel& model, const Eigen::Vector3d& gravity, const Effects* effects, KdlChainLayout layout) {
     n_ = model.dof();
     kdl_ = std::make_unique<KdlChain>(toKdlChain(model, layout));
     const KDL::Chain& chain = kdl_->chain;
@@ -207,8 +205,7 @@ const Eigen::VectorXd& KdlOracle::gravity(const Eigen::VectorXd& qv) {
     return g_;
 }
 
-const Eigen::VectorXd& KdlOracle::inverseDynamics(const Eigen::VectorXd& qv, const Eigen::VectorXd& qdv,
-                                                  const Eigen::VectorXd& qddv) {
+const Eigen::VectorXd& KdlOracle::inverseDynamics(const Eigen::VectorXd& qv, const Eigen::VectorXd& qdv, const Eigen::VectorXd& qddv) {
     setState(qv, qdv);
     qdd.data = qddv;
     check(kdlInverseDynamics(), "ChainIdSolver_RNE::CartToJnt");
@@ -217,8 +214,7 @@ const Eigen::VectorXd& KdlOracle::inverseDynamics(const Eigen::VectorXd& qv, con
     return tau_;
 }
 
-const Eigen::VectorXd& KdlOracle::forwardDynamics(const Eigen::VectorXd& qv, const Eigen::VectorXd& qdv,
-                                                  const Eigen::VectorXd& tauv) {
+const Eigen::VectorXd& KdlOracle::forwardDynamics(const Eigen::VectorXd& qv, const Eigen::VectorXd& qdv, const Eigen::VectorXd& tauv) {
     setState(qv, qdv);
     tau.data = tauv;
     if (!springs_.empty()) {

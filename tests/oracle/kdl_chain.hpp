@@ -87,8 +87,7 @@ KdlChain toKdlChain(const RobotModel& model, KdlChainLayout layout = KdlChainLay
 // They throw std::runtime_error if a KDL solver returns an error.
 class KdlOracle {
 public:
-    KdlOracle(const RobotModel& model, const Eigen::Vector3d& gravity,
-              KdlChainLayout layout = KdlChainLayout::Exact);
+    KdlOracle(const RobotModel& model, const Eigen::Vector3d& gravity, KdlChainLayout layout = KdlChainLayout::Exact);
     // Gravity from effects.gravity (zero if absent) and the springs; friction and
     // external torques are generalized forces Q, which the caller passes as τ.
     KdlOracle(const RobotModel& model, const Effects& effects, KdlChainLayout layout = KdlChainLayout::Exact);
@@ -102,13 +101,13 @@ public:
     const KdlChain& kdlChain() const { return *kdl_; }
 
     // --- Eigen in, Eigen out ---
-    const Eigen::MatrixXd& massMatrix(const Eigen::VectorXd& q);                        // B(q)
+    const Eigen::MatrixXd& massMatrix(const Eigen::VectorXd& q);                           // B(q)
     const Eigen::VectorXd& coriolis(const Eigen::VectorXd& q, const Eigen::VectorXd& qd);  // C(q,q̇) q̇
-    const Eigen::VectorXd& gravity(const Eigen::VectorXd& q);                           // g(q) (+ springs)
+    const Eigen::VectorXd& gravity(const Eigen::VectorXd& q);                              // g(q) (+ springs)
     const Eigen::VectorXd& inverseDynamics(const Eigen::VectorXd& q, const Eigen::VectorXd& qd,
-                                           const Eigen::VectorXd& qdd);                 // τ (+ springs)
+                                           const Eigen::VectorXd& qdd);  // τ (+ springs)
     const Eigen::VectorXd& forwardDynamics(const Eigen::VectorXd& q, const Eigen::VectorXd& qd,
-                                           const Eigen::VectorXd& tau);                 // q̈
+                                           const Eigen::VectorXd& tau);  // q̈
     // T_0i for i = 0..n (n+1 poses, world frame), as ll::RobotData::T_0i.
     const std::vector<Eigen::Isometry3d>& framePoses(const Eigen::VectorXd& q);
 
@@ -116,27 +115,26 @@ public:
     void setState(const Eigen::VectorXd& q, const Eigen::VectorXd& qd);
     void setAcceleration(const Eigen::VectorXd& qdd);
     void setTorque(const Eigen::VectorXd& tau);  // used as is (no spring correction)
-    int kdlMassMatrix();       // dynParam.JntToMass(q, H)           -> H
-    int kdlCoriolis();         // dynParam.JntToCoriolis(q, qd, c)   -> c
-    int kdlGravity();          // dynParam.JntToGravity(q, g)        -> g
-    int kdlInverseDynamics();  // idSolver.CartToJnt(q, qd, qdd, 0, tau_out)  -> tauOut
-    int kdlForwardDynamics();  // fdSolver.CartToJnt(q, qd, tau, 0, qdd_out)  -> qddOut
-    int kdlFramePoses();       // fkSolver.JntToCart(q, segmentFrames) -> segmentFrames
+    int kdlMassMatrix();                         // dynParam.JntToMass(q, H)           -> H
+    int kdlCoriolis();                           // dynParam.JntToCoriolis(q, qd, c)   -> c
+    int kdlGravity();                            // dynParam.JntToGravity(q, g)        -> g
+    int kdlInverseDynamics();                    // idSolver.CartToJnt(q, qd, qdd, 0, tau_out)  -> tauOut
+    int kdlForwardDynamics();                    // fdSolver.CartToJnt(q, qd, tau, 0, qdd_out)  -> qddOut
+    int kdlFramePoses();                         // fkSolver.JntToCart(q, segmentFrames) -> segmentFrames
 
     KDL::ChainDynParam& dynParam() { return *dyn_; }
     KDL::ChainIdSolver_RNE& idSolver() { return *id_; }
     KDL::ChainFdSolver_RNE& fdSolver() { return *fd_; }
     KDL::ChainFkSolverPos_recursive& fkSolver() { return *fk_; }
 
-    KDL::JntArray q, qd, qdd, tau;       // inputs
-    KDL::JntSpaceInertiaMatrix H;        // outputs
+    KDL::JntArray q, qd, qdd, tau;  // inputs
+    KDL::JntSpaceInertiaMatrix H;   // outputs
     KDL::JntArray c, g, tauOut, qddOut;
-    KDL::Wrenches fExt;                  // zero external wrenches, one per segment
+    KDL::Wrenches fExt;  // zero external wrenches, one per segment
     std::vector<KDL::Frame> segmentFrames;
 
 private:
-    void init(const RobotModel& model, const Eigen::Vector3d& gravity, const Effects* effects,
-              KdlChainLayout layout);
+    void init(const RobotModel& model, const Eigen::Vector3d& gravity, const Effects* effects, KdlChainLayout layout);
     void addSprings(Eigen::VectorXd& out, const Eigen::VectorXd& qv) const;
     static void check(int error, const char* what);
 

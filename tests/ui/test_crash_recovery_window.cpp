@@ -144,10 +144,10 @@ private slots:
         QVERIFY(w.document().isModified());
         QCOMPARE(w.document().path(), arm_);
         QVERIFY(!QFile::exists(left[0].file));           // the crashed copy is gone...
-        QVERIFY(QFile::exists(w.autosave().ownFile()));    // ...after this window's own was written
+        QVERIFY(QFile::exists(w.autosave().ownFile()));  // ...after this window's own was written
         QFile f(arm_);
         QVERIFY(f.open(QIODevice::ReadOnly));
-        QCOMPARE(f.readAll(), original);  // still untouched until saved
+        QCOMPARE(f.readAll(), original);   // still untouched until saved
         w.document().undoStack()->undo();  // undo returns to the file as it is
         QTRY_COMPARE_WITH_TIMEOUT(w.document().validScene().robot.joints[0].dh.a, 1.0, 30000);
         w.autosave().discard();
@@ -226,10 +226,15 @@ private slots:
     // message and never loaded.
     void copiesCutShortAreSetAside() {
         QDir().mkpath(recovery_);
-        QJsonObject copy{{"format", "lagrangelab-recovery/1"}, {"recovery_of", arm_}, {"original_sha256", ""},
-                         {"pid", 999999}, {"written", "2026-11-27T12:00:00Z"}, {"scene", QJsonObject{{"name", "x"}}}};
+        QJsonObject copy{{"format", "lagrangelab-recovery/1"},
+                         {"recovery_of", arm_},
+                         {"original_sha256", ""},
+                         {"pid", 999999},
+                         {"written", "2026-11-27T12:00:00Z"},
+                         {"scene", QJsonObject{{"name", "x"}}}};
         const QByteArray json = QJsonDocument(copy).toJson();
-        for (const auto& [name, bytes] : {std::pair{QString("cut.json"), json.left(json.size() / 2)}, {QString("empty.json"), QByteArray()}}) {
+        for (const auto& [name, bytes] :
+             {std::pair{QString("cut.json"), json.left(json.size() / 2)}, {QString("empty.json"), QByteArray()}}) {
             QFile f(recovery_ + "/" + name);
             QVERIFY(f.open(QIODevice::WriteOnly));
             f.write(bytes);

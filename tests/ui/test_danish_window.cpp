@@ -75,7 +75,7 @@ QString bare(QString s) { return s.remove('&').trimmed(); }
 
 bool settled(MainWindow& w, int seconds = 60) {
     return ll::test::waitUntil([&] { return w.result() && !w.liveSimulation().busy() && !w.liveDerivation().busy() && w.derivation(); },
-                           seconds * 1000);
+                               seconds * 1000);
 }
 
 void menuTexts(QMenu* menu, QStringList& out) {
@@ -197,11 +197,13 @@ private slots:
         QCOMPARE(doc->language, present::Language::Danish);
         QCOMPARE(titleOfStep7(*doc), std::string("Kinetisk energi og massematricen"));
         bool massMatrixIsD = false;
-        for (const auto& item : doc->steps.at(7).items) massMatrixIsD = massMatrixIsD || (item.quantity == present::Quantity::MassMatrix && item.name == "D");
+        for (const auto& item : doc->steps.at(7).items)
+            massMatrixIsD = massMatrixIsD || (item.quantity == present::Quantity::MassMatrix && item.name == "D");
         QVERIFY(massMatrixIsD);
         QVERIFY(w.derivationPanel().findChild<QPlainTextEdit*>());
         const QString text = w.derivationPanel().findChild<QPlainTextEdit*>()->toPlainText();
-        QVERIFY2(text.contains(QString::fromUtf8("Trin 7. Kinetisk energi og massematricen")) && text.contains("D = "), qPrintable(text.left(500)));
+        QVERIFY2(text.contains(QString::fromUtf8("Trin 7. Kinetisk energi og massematricen")) && text.contains("D = "),
+                 qPrintable(text.left(500)));
         // and back, through the View menu as a student would
         QAction* english = nullptr;
         for (QAction* a : w.findChildren<QAction*>())

@@ -132,7 +132,8 @@ private:
                 if (a <= 7 && robot && rows > 0) {  // a cell
                     const int column = std::uniform_int_distribution<int>(JointTableModel::A, JointTableModel::ColumnCount - 1)(rng);
                     const QModelIndex cell = joints.index(anyRow(), column);
-                    joints.setData(cell, randomValue(rng, SceneDocument::parseCell(joints.data(cell, Qt::EditRole).toString())), Qt::EditRole);
+                    joints.setData(cell, randomValue(rng, SceneDocument::parseCell(joints.data(cell, Qt::EditRole).toString())),
+                                   Qt::EditRole);
                 } else if (a == 8 && robot) {
                     if (rows < 8) joints.addJoint(anyRow());
                 } else if (a == 9 && robot && rows > 1) {
@@ -153,7 +154,10 @@ private:
                     if (what == 0 || n == 0) {
                         w.editor().addParameter(QString("p%1").arg(rng() % 50), QString::number((rng() % 100) / 10.0));
                     } else {
-                        const QString name = w.editor().parameters().data(w.editor().parameters().index(static_cast<int>(rng() % n), 0), Qt::DisplayRole).toString();
+                        const QString name = w.editor()
+                                                 .parameters()
+                                                 .data(w.editor().parameters().index(static_cast<int>(rng() % n), 0), Qt::DisplayRole)
+                                                 .toString();
                         if (what == 1) w.editor().renameParameter(name, QString("r%1").arg(rng() % 50));
                         else w.editor().removeParameter(name);
                     }

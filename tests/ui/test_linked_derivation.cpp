@@ -237,8 +237,7 @@ private slots:
         QCOMPARE(w.selection().link(), 1);
         const auto& marked = w.selection().marked();
         QVERIFY(!marked.empty());
-        for (const ll::CatalogueEntry* e : marked)
-            QVERIFY(std::find(e->links.begin(), e->links.end(), 1) != e->links.end());
+        for (const ll::CatalogueEntry* e : marked) QVERIFY(std::find(e->links.begin(), e->links.end(), 1) != e->links.end());
         bool b11 = false, b22 = false;
         for (const ll::CatalogueEntry* e : marked) b11 |= e->id == "b11", b22 |= e->id == "b22";
         QVERIFY(b11 && b22);

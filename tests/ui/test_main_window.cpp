@@ -96,7 +96,8 @@ std::pair<double, int> content(const QImage& image, const QRect& rect) {
             const QRgb p = image.pixel(x, y);
             ++total;
             colours.insert(p & 0xf0f0f0);
-            if (std::abs(qRed(p) - qRed(background)) + std::abs(qGreen(p) - qGreen(background)) + std::abs(qBlue(p) - qBlue(background)) > 30)
+            if (std::abs(qRed(p) - qRed(background)) + std::abs(qGreen(p) - qGreen(background)) + std::abs(qBlue(p) - qBlue(background)) >
+                30)
                 ++differing;
         }
     return {double(differing) / std::max(total, 1L), static_cast<int>(colours.size())};
@@ -176,7 +177,8 @@ private slots:
         // The distance glides to its new fit (0.3 s).
         QTRY_VERIFY_WITH_TIMEOUT(std::abs(w.sceneView().cameraDistance() / d0 - r1 / r0) < 0.05, 3000);
         const double d1 = w.sceneView().cameraDistance();
-        QVERIFY2(std::abs(d1 / d0 - r1 / r0) < 0.05, qPrintable(QString("distance %1 -> %2, radius %3 -> %4").arg(d0).arg(d1).arg(r0).arg(r1)));
+        QVERIFY2(std::abs(d1 / d0 - r1 / r0) < 0.05,
+                 qPrintable(QString("distance %1 -> %2, radius %3 -> %4").arg(d0).arg(d1).arg(r0).arg(r1)));
         // The user zooms in: the next resize keeps that camera.
         w.sceneView().zoomBy(0.5);
         QVERIFY(w.sceneView().cameraMovedByUser());
@@ -296,12 +298,18 @@ private slots:
         QTest::addColumn<int>("column");
         QTest::addColumn<QString>("typed");
         QTest::addColumn<QString>("expected");
-        QTest::newRow("d = 1e300") << int(JointTableModel::D) << "1e300" << "robot.joints[0].d (joint 1): absurdly large length 1e+300 m";
-        QTest::newRow("a = 1e-12") << int(JointTableModel::A) << "1e-12" << "robot.joints[0].a (joint 1): absurdly small length 1e-12 m";
-        QTest::newRow("mass = 1e10") << int(JointTableModel::Mass) << "1e10" << "robot.joints[0].mass (joint 1): absurdly large mass 1e+10 kg";
-        QTest::newRow("mass = 1e-12") << int(JointTableModel::Mass) << "1e-12" << "robot.joints[0].mass (joint 1): absurdly small mass 1e-12 kg";
-        QTest::newRow("Izz = 1e10") << int(JointTableModel::Izz) << "1e10" << "robot.joints[0].inertia.zz (joint 1): absurdly large inertia";
-        QTest::newRow("Izz = 1e-20") << int(JointTableModel::Izz) << "1e-20" << "robot.joints[0].inertia.zz (joint 1): absurdly small inertia";
+        QTest::newRow("d = 1e300") << int(JointTableModel::D) << "1e300"
+                                   << "robot.joints[0].d (joint 1): absurdly large length 1e+300 m";
+        QTest::newRow("a = 1e-12") << int(JointTableModel::A) << "1e-12"
+                                   << "robot.joints[0].a (joint 1): absurdly small length 1e-12 m";
+        QTest::newRow("mass = 1e10") << int(JointTableModel::Mass) << "1e10"
+                                     << "robot.joints[0].mass (joint 1): absurdly large mass 1e+10 kg";
+        QTest::newRow("mass = 1e-12") << int(JointTableModel::Mass) << "1e-12"
+                                      << "robot.joints[0].mass (joint 1): absurdly small mass 1e-12 kg";
+        QTest::newRow("Izz = 1e10") << int(JointTableModel::Izz) << "1e10"
+                                    << "robot.joints[0].inertia.zz (joint 1): absurdly large inertia";
+        QTest::newRow("Izz = 1e-20") << int(JointTableModel::Izz) << "1e-20"
+                                     << "robot.joints[0].inertia.zz (joint 1): absurdly small inertia";
     }
     void absurdMagnitudesAreNamedInTheEditor() {
         QFETCH(int, column);
@@ -368,8 +376,8 @@ private slots:
         QVERIFY(shownOn(w, "mass_spring_pair_lagrangian.json"));
         QTRY_VERIFY_WITH_TIMEOUT(w.derivationView().listedSteps().size() == 4, 30000);
         const QStringList rows = w.derivationView().listedSteps();
-        QVERIFY2(rows[0].startsWith("Step 0: Generalized coordinates") && rows[1].startsWith("Step 6:") &&
-                     rows[2].startsWith("Step 7:") && rows[3].startsWith("Step 8:"),
+        QVERIFY2(rows[0].startsWith("Step 0: Generalized coordinates") && rows[1].startsWith("Step 6:") && rows[2].startsWith("Step 7:") &&
+                     rows[3].startsWith("Step 8:"),
                  qPrintable(rows.join(" | ")));
         QCOMPARE(w.editor().currentTabName(), QString("Lagrangian"));
         w.derivationView().showStep(0);
@@ -456,7 +464,8 @@ private slots:
         again.setAskBeforeClosing(false);
         QVERIFY(again.openFile(path, nullptr, true));
         QCOMPARE(again.document().validScene().robot.joints[0].link.mass, 2.5);
-        QCOMPARE(again.editor().joints().data(again.editor().joints().index(1, JointTableModel::Alpha), Qt::DisplayRole).toString(), QString("90°"));
+        QCOMPARE(again.editor().joints().data(again.editor().joints().index(1, JointTableModel::Alpha), Qt::DisplayRole).toString(),
+                 QString("90°"));
         QVERIFY(!again.document().isModified());
     }
 
@@ -599,7 +608,8 @@ private slots:
         QVERIFY2(readout.contains("E_pot(q) = 5.886 J"), qPrintable(readout));
         // The drawn end effector is at (a1, a2) = (1, 0.8).
         const Eigen::Vector3d tip = w.result()->visual->endEffectorPosition();
-        QVERIFY2((tip - Eigen::Vector3d(1.0, 0.8, 0)).norm() < 1e-3, qPrintable(QString("%1 %2 %3").arg(tip.x()).arg(tip.y()).arg(tip.z())));
+        QVERIFY2((tip - Eigen::Vector3d(1.0, 0.8, 0)).norm() < 1e-3,
+                 qPrintable(QString("%1 %2 %3").arg(tip.x()).arg(tip.y()).arg(tip.z())));
         // The typeset derivation gains step 9, its results at the pose, in the closed forms
         // of the 2R (examples/planar_2r.json's description) at c2 = 0, c12 = 0:
         // b11 = I1 + m1 lc1² + I2 + m2 (a1² + lc2² + 2 a1 lc2 c2) = 1/6 + 0.5 + 0.08 + 1.5·1.16,
@@ -624,7 +634,6 @@ private slots:
         QCOMPARE(cell("B", 0, 0), QString("3.687"));
         QCOMPARE(w.derivationView().step(), 9);
     }
-
 
     // One edit, one derivation: the typeset and text tabs show the same result of one
     // deriveDocument call (they used to derive twice, one after the other on the lock).
@@ -740,7 +749,9 @@ private slots:
         QVERIFY(openShown(w, "planar_2r.json"));
         w.playback().pause();
         const double font = QApplication::font().pointSizeF();
-        auto axisFont = [&] { return static_cast<QValueAxis*>(w.energyChart().chart()->axes(Qt::Horizontal).front())->labelsFont().pointSizeF(); };
+        auto axisFont = [&] {
+            return static_cast<QValueAxis*>(w.energyChart().chart()->axes(Qt::Horizontal).front())->labelsFont().pointSizeF();
+        };
         const double chartFont = axisFont();
         w.presentationMode().setOn(true);
         QTRY_VERIFY(w.isFullScreen());
@@ -774,7 +785,8 @@ private slots:
         QTest::keyClick(next, Qt::Key_F);
         const QImage before = nextFrame(w);
         const QPoint centre = w.sceneView().rect().center();
-        QWheelEvent wheel(centre, w.sceneView().mapToGlobal(centre), QPoint(), QPoint(0, 600), Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+        QWheelEvent wheel(centre, w.sceneView().mapToGlobal(centre), QPoint(), QPoint(0, 600), Qt::NoButton, Qt::NoModifier,
+                          Qt::NoScrollPhase, false);
         QApplication::sendEvent(w.sceneView().surface(), &wheel);
         const QImage zoomed = nextFrame(w);
         QVERIFY2(differing(before, zoomed) > 0.01, qPrintable(QString::number(differing(before, zoomed))));
@@ -812,8 +824,8 @@ private slots:
         ll::ui::SceneView& view = w.sceneView();
         const double share = double(view.width()) * view.height() / (double(w.width()) * w.height());
         const double robot = view.sceneHeightInView();
-        qInfo("%s: 3D view %dx%d (%.0f %% of the window), robot %.0f %% of its height", qPrintable(scene), view.width(),
-              view.height(), 100 * share, 100 * robot);
+        qInfo("%s: 3D view %dx%d (%.0f %% of the window), robot %.0f %% of its height", qPrintable(scene), view.width(), view.height(),
+              100 * share, 100 * robot);
         QVERIFY2(share >= 0.5, qPrintable(QString::number(share)));
         QVERIFY2(robot >= 0.6, qPrintable(QString::number(robot)));
         QVERIFY2(robot <= 1.0, qPrintable(QString::number(robot)));  // and all of it in view
@@ -889,10 +901,12 @@ private slots:
                 QList<double> ticks;
                 if (axis->tickType() == QValueAxis::TicksDynamic) {
                     QVERIFY(axis->tickInterval() > 0);
-                    const double first = axis->tickAnchor() + std::ceil((axis->min() - axis->tickAnchor()) / axis->tickInterval() - 1e-9) * axis->tickInterval();
+                    const double first = axis->tickAnchor() +
+                                         std::ceil((axis->min() - axis->tickAnchor()) / axis->tickInterval() - 1e-9) * axis->tickInterval();
                     for (double v = first; v <= axis->max() + 1e-9 * axis->tickInterval(); v += axis->tickInterval()) ticks << v;
                 } else {
-                    for (int k = 0; k < axis->tickCount(); ++k) ticks << axis->min() + k * (axis->max() - axis->min()) / (axis->tickCount() - 1);
+                    for (int k = 0; k < axis->tickCount(); ++k)
+                        ticks << axis->min() + k * (axis->max() - axis->min()) / (axis->tickCount() - 1);
                 }
                 const int n = static_cast<int>(ticks.size());
                 QVERIFY(n >= 2);
@@ -900,7 +914,8 @@ private slots:
                 const QString format = axis->labelFormat().isEmpty() ? "%.1f" : axis->labelFormat();
                 double widest = 0;
                 for (double v : ticks) widest = std::max(widest, fm.horizontalAdvance(QString::asprintf(format.toLatin1().constData(), v)));
-                const double spacing = (o == Qt::Horizontal ? area.width() : area.height()) * (ticks[1] - ticks[0]) / (axis->max() - axis->min());
+                const double spacing =
+                    (o == Qt::Horizontal ? area.width() : area.height()) * (ticks[1] - ticks[0]) / (axis->max() - axis->min());
                 const double needed = o == Qt::Horizontal ? widest : fm.height();
                 if (o == Qt::Horizontal && axis->tickType() == QValueAxis::TicksDynamic) {  // round seconds
                     const double interval = axis->tickInterval(), mantissa = interval / std::pow(10.0, std::floor(std::log10(interval)));
@@ -909,7 +924,11 @@ private slots:
                              qPrintable(QString("%1: time ticks every %2 s").arg(where).arg(interval)));
                 }
                 QVERIFY2(spacing > needed, qPrintable(QString("%1 %2: %3 ticks %4 px apart, labels %5 px")
-                                                          .arg(where).arg(o == Qt::Horizontal ? "x" : "y").arg(n).arg(spacing).arg(needed)));
+                                                          .arg(where)
+                                                          .arg(o == Qt::Horizontal ? "x" : "y")
+                                                          .arg(n)
+                                                          .arg(spacing)
+                                                          .arg(needed)));
             }
         };
         flushEvents();
@@ -975,7 +994,13 @@ private slots:
         const auto layout = [&] {
             QStringList out{QString("window %1x%2").arg(w.width()).arg(w.height())};
             for (QDockWidget* dock : w.findChildren<QDockWidget*>())
-                out << QString("%1 %2,%3 %4x%5 %6").arg(dock->objectName()).arg(dock->x()).arg(dock->y()).arg(dock->width()).arg(dock->height()).arg(dock->isVisible());
+                out << QString("%1 %2,%3 %4x%5 %6")
+                           .arg(dock->objectName())
+                           .arg(dock->x())
+                           .arg(dock->y())
+                           .arg(dock->width())
+                           .arg(dock->height())
+                           .arg(dock->isVisible());
             return out.join("; ");
         };
         const QString before = layout();
@@ -1005,10 +1030,12 @@ private slots:
         auto* table = w.findChild<QTableView*>("dh-table");
         QVERIFY(table);
         table->clearSelection();
-        QMouseEvent move(QEvent::MouseMove, QPointF(at), view.surface()->mapToGlobal(QPointF(at)), Qt::NoButton, Qt::NoButton, Qt::NoModifier);
+        QMouseEvent move(QEvent::MouseMove, QPointF(at), view.surface()->mapToGlobal(QPointF(at)), Qt::NoButton, Qt::NoButton,
+                         Qt::NoModifier);
         QApplication::sendEvent(view.surface(), &move);
         QVERIFY(table->selectionModel()->isRowSelected(joint, {}));
-        QMouseEvent press(QEvent::MouseButtonPress, QPointF(at), view.surface()->mapToGlobal(QPointF(at)), Qt::LeftButton, Qt::LeftButton, Qt::NoModifier);
+        QMouseEvent press(QEvent::MouseButtonPress, QPointF(at), view.surface()->mapToGlobal(QPointF(at)), Qt::LeftButton, Qt::LeftButton,
+                          Qt::NoModifier);
         QApplication::sendEvent(view.surface(), &press);
         QCOMPARE(table->currentIndex().row(), joint);
     }
@@ -1168,10 +1195,13 @@ private slots:
             // The status bar names the first page and the last (and the older pages).
             const QString status = w.statusBar()->currentMessage();
             QVERIFY2(status.contains(file) && status.contains(QString("derivation-%1.%2").arg(pdfPages).arg(suffix)), qPrintable(status));
-            QCOMPARE(status.contains(QString("2 page files of an earlier, longer export remain beside it, not deleted: derivation-%1.svg … derivation-%2.svg")
-                                         .arg(pdfPages + 1)
-                                         .arg(pdfPages + 2)),
-                     older);
+            QCOMPARE(
+                status.contains(
+                    QString(
+                        "2 page files of an earlier, longer export remain beside it, not deleted: derivation-%1.svg … derivation-%2.svg")
+                        .arg(pdfPages + 1)
+                        .arg(pdfPages + 2)),
+                older);
             if (older) QCOMPARE(readAll(dir_.filePath(QString("slides/derivation-%1.svg").arg(pdfPages + 2))), QByteArray("<svg/>"));
             QImage page;
             if (QString(suffix) == "png") {
@@ -1207,7 +1237,8 @@ private slots:
             QVERIFY(exported.wait(120000));
             QCOMPARE(exported.back().at(1).toString(), QString());
             QProcess probe;
-            probe.start("ffprobe", {"-v", "error", "-count_frames", "-select_streams", "v:0", "-show_entries", "stream=nb_read_frames,width,height", "-of", "csv=p=0", mp4});
+            probe.start("ffprobe", {"-v", "error", "-count_frames", "-select_streams", "v:0", "-show_entries",
+                                    "stream=nb_read_frames,width,height", "-of", "csv=p=0", mp4});
             QVERIFY(probe.waitForFinished(30000));
             const QStringList fields = QString::fromUtf8(probe.readAllStandardOutput()).trimmed().split(',');
             QCOMPARE(fields.size(), 3);

@@ -147,7 +147,7 @@ private slots:
             if (p.kind != MathPiece::Bracket) continue;
             ++brackets;
             QVERIFY(p.at.y() < x->at.y() - 0.5 * ui::mathUnitsPerEm);  // above the first row's letters
-            QVERIFY(p.at.y() + p.height > z->at.y());                 // below the last row's baseline
+            QVERIFY(p.at.y() + p.height > z->at.y());                  // below the last row's baseline
         }
         QCOMPARE(brackets, 2);
         QVERIFY(box.height() > 3 * ui::layoutMath(*symbolNode("x")).height());
@@ -175,7 +175,7 @@ private slots:
         B.value = m;
         B.equation = displayEquation(symbolNode("B"), m);
         const auto entries = ui::layoutItem(B, width);
-        QVERIFY(entries.size() > 4 * 2);  // a heading and four entries, each broken
+        QVERIFY(entries.size() > 4 * 2);          // a heading and four entries, each broken
         QVERIFY(pieceWithText(entries[1], "b"));  // b11, named by the quantity: B's entries are b_jk
     }
 
@@ -197,7 +197,7 @@ private slots:
         QCOMPARE(QString::fromStdString(more->text), QString("⋯ (%1 more terms)").arg(300 - int(ui::maxTypesetTerms * 2 / 3)));
         QCOMPARE(present::moreTermsCount(*more), std::size_t(300 - ui::maxTypesetTerms * 2 / 3));  // the count its text shows
         QCOMPARE(present::moreTermsCount(*longSum->children.back()), std::size_t(0));
-        QCOMPARE(cut->children[1]->children[1], DisplayPtr(shortSum));  // untouched: shared, not copied
+        QCOMPARE(cut->children[1]->children[1], DisplayPtr(shortSum));     // untouched: shared, not copied
         QVERIFY(longSum->children.size() == 300 && !moreTerms(*longSum));  // the original keeps every term
         const DisplayPtr same = ui::elided(displayEquation(symbolNode("b", "12"), shortSum), ui::maxTypesetTerms);
         QVERIFY(!moreTerms(*same->children[1]));
@@ -344,7 +344,8 @@ private slots:
         QVERIFY(acrobot.out.contains("9.8 m2 ℓc2 c12") && !acrobot.out.contains("49/5"));
         // JSON's expr is for machines: the exact 49/5 there (it read 9.8000000000000007).
         const Run json = run({"derive", example("acrobot.json"), "--format", "json"});
-        QVERIFY2(json.out.contains("(49/5)*m2*lc2*cos(q1+q2)") && !json.out.contains("9.8000000000000007"), qPrintable(json.out.right(2000)));
+        QVERIFY2(json.out.contains("(49/5)*m2*lc2*cos(q1+q2)") && !json.out.contains("9.8000000000000007"),
+                 qPrintable(json.out.right(2000)));
 
         const QString pendulum = dir.filePath("spherical.json");
         QFile p(pendulum);
@@ -391,8 +392,7 @@ private slots:
         const Run text = run({"-layout", pdf, "-"}, "pdftotext");
         QCOMPARE(text.code, 0);
         // b11 = I1 + m1 ℓc1² + I2 + m2 (a1² + ℓc2² + 2 a1 ℓc2 c2): its symbols are text.
-        for (const char* s : {"B(q)", "ℓ", "I", "m", "Step 7", "Kinetic energy"})
-            QVERIFY2(text.out.contains(QString::fromUtf8(s)), s);
+        for (const char* s : {"B(q)", "ℓ", "I", "m", "Step 7", "Kinetic energy"}) QVERIFY2(text.out.contains(QString::fromUtf8(s)), s);
         const Run png = run({"-png", "-r", "40", "-f", "4", "-l", "4", pdf, dir.filePath("page")}, "pdftoppm");
         QCOMPARE(png.code, 0);
         const QStringList pages = QDir(dir.path()).entryList({"page*.png"});
@@ -441,7 +441,8 @@ private slots:
             if (y - top < 8) continue;  // a rule or a stray dot, not a line of text
             ++lines;
             QVERIFY2(std::abs(refRight - ourRight) <= 3,
-                     qPrintable(QString("line at y %1..%2 ends at x %3 in the PDF, %4 in the PNG").arg(top).arg(y).arg(refRight).arg(ourRight)));
+                     qPrintable(
+                         QString("line at y %1..%2 ends at x %3 in the PDF, %4 in the PNG").arg(top).arg(y).arg(refRight).arg(ourRight)));
         }
         QVERIFY2(lines >= 8, qPrintable(QString::number(lines)));
     }
@@ -600,9 +601,8 @@ private slots:
         QCOMPARE(again.code, 0);
         const int now = static_cast<int>(again.err.count("wrote ")) > 0 ? static_cast<int>(again.err.count("wrote ")) : 1;
         QVERIFY(now < all.size());
-        const QString note = QString("note: %1 page file%2 of an earlier, longer export remain")
-                                 .arg(all.size() - now)
-                                 .arg(all.size() - now == 1 ? "" : "s");
+        const QString note =
+            QString("note: %1 page file%2 of an earlier, longer export remain").arg(all.size() - now).arg(all.size() - now == 1 ? "" : "s");
         QVERIFY2(again.err.contains(note), qPrintable(again.err));
         QVERIFY2(again.err.contains(QString("b-%1.svg").arg(now + 1)), qPrintable(again.err));
         QCOMPARE(QDir(dir.path()).entryList({"b*.svg"}, QDir::Files).size(), all.size());

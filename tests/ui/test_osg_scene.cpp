@@ -59,8 +59,8 @@ private slots:
             gl.render(image);
             QCOMPARE(image.size(), QSize(480, 360));
             // Project the tip with the camera and look for the red sphere around it.
-            const osg::Matrixd toWindow = gl.camera()->getViewMatrix() * gl.camera()->getProjectionMatrix() *
-                                          gl.camera()->getViewport()->computeWindowMatrix();
+            const osg::Matrixd toWindow =
+                gl.camera()->getViewMatrix() * gl.camera()->getProjectionMatrix() * gl.camera()->getViewport()->computeWindowMatrix();
             const osg::Vec3d pixel = osg::Vec3d(tip.x(), tip.y(), tip.z()) * toWindow;
             const int x = int(std::lround(pixel.x())), y = 360 - 1 - int(std::lround(pixel.y()));
             int red = 0;
@@ -95,8 +95,7 @@ private slots:
                 below = std::min(below, visual.up.dot(Eigen::Vector3d(c & 1 ? visual.bounds.max.x() : visual.bounds.min.x(),
                                                                       c & 2 ? visual.bounds.max.y() : visual.bounds.min.y(),
                                                                       c & 4 ? visual.bounds.max.z() : visual.bounds.min.z())));
-            if (lowest <= visual.up.dot(visual.bounds.centre()))
-                QVERIFY2(std::abs(ground - (lowest - 0.01 * visual.scale)) < 1e-12, file);
+            if (lowest <= visual.up.dot(visual.bounds.centre())) QVERIFY2(std::abs(ground - (lowest - 0.01 * visual.scale)) < 1e-12, file);
             else  // most of it hangs below the base (the Stanford arm's centre of mass 3): below all
                 QVERIFY2(std::abs(ground - (below - 0.01 * visual.scale)) < 1e-12 && QByteArray(file) == "/stanford_arm.json", file);
             int coms = 0;
@@ -164,13 +163,15 @@ private slots:
         QCOMPARE(moved > 0, d4 > 0);
         for (std::size_t a = 0; a < boxes.size(); ++a) {
             for (std::size_t b = a + 1; b < boxes.size(); ++b)
-                QVERIFY2(!boxes[a].overlaps(boxes[b]), qPrintable(QString("\"%1\" and \"%2\"").arg(QString::fromStdString(boxes[a].text),
-                                                                                                 QString::fromStdString(boxes[b].text))));
+                QVERIFY2(!boxes[a].overlaps(boxes[b]),
+                         qPrintable(QString("\"%1\" and \"%2\"")
+                                        .arg(QString::fromStdString(boxes[a].text), QString::fromStdString(boxes[b].text))));
             int ink = 0;
             for (int y = int(boxes[a].top); y < int(boxes[a].bottom); ++y)
                 for (int x = int(boxes[a].left); x < int(boxes[a].right); ++x)
                     if (x >= 0 && y >= 0 && x < image.width() && y < image.height()) ink += qGray(image.pixel(x, y)) < 70;
-            QVERIFY2(ink >= 5, qPrintable(QString("label \"%1\": %2 dark pixels in its box").arg(QString::fromStdString(boxes[a].text)).arg(ink)));
+            QVERIFY2(ink >= 5,
+                     qPrintable(QString("label \"%1\": %2 dark pixels in its box").arg(QString::fromStdString(boxes[a].text)).arg(ink)));
         }
     }
 };

@@ -112,8 +112,8 @@ private slots:
             std::ofstream csv(qgetenv("LL_SOAK_REPORT").toStdString());
             csv << "t_s,scene,visit,rss_kb,threads,open_files,graph_objects,pending\n";
             for (const Sample& s : samples)
-                csv << s.t << ',' << (s.scene == 0 ? "puma560" : "panda") << ',' << s.visit + 1 << ',' << s.rssKb << ',' << s.threads
-                    << ',' << s.files << ',' << s.graph << ',' << s.pending << '\n';
+                csv << s.t << ',' << (s.scene == 0 ? "puma560" : "panda") << ',' << s.visit + 1 << ',' << s.rssKb << ',' << s.threads << ','
+                    << s.files << ',' << s.graph << ',' << s.pending << '\n';
         }
         // Flat: each scene's last visit against its first (the first visit of the PUMA
         // warms up: its second half only), peaks of the samples in them.
@@ -140,11 +140,20 @@ private slots:
             const Sample first = window(firstVisit, firstVisit == 0), last = window(lastOne, false);
             const QString figures = QString("%1 s, %2 edits, %3 frames; %4, visit %5 against visit %6 (peaks): "
                                             "RSS %7 -> %8 MB, threads %9 -> %10, open files %11 -> %12, graph objects %13 -> %14")
-                                        .arg(seconds).arg(edits).arg(w.sceneView().framesDrawn())
-                                        .arg(firstVisit == 0 ? "PUMA 560" : "Panda").arg(lastOne + 1).arg(firstVisit + 1)
-                                        .arg(first.rssKb / 1024.0, 0, 'f', 1).arg(last.rssKb / 1024.0, 0, 'f', 1)
-                                        .arg(first.threads).arg(last.threads).arg(first.files).arg(last.files)
-                                        .arg(first.graph).arg(last.graph);
+                                        .arg(seconds)
+                                        .arg(edits)
+                                        .arg(w.sceneView().framesDrawn())
+                                        .arg(firstVisit == 0 ? "PUMA 560" : "Panda")
+                                        .arg(lastOne + 1)
+                                        .arg(firstVisit + 1)
+                                        .arg(first.rssKb / 1024.0, 0, 'f', 1)
+                                        .arg(last.rssKb / 1024.0, 0, 'f', 1)
+                                        .arg(first.threads)
+                                        .arg(last.threads)
+                                        .arg(first.files)
+                                        .arg(last.files)
+                                        .arg(first.graph)
+                                        .arg(last.graph);
             qInfo("%s", qPrintable(figures));
             QVERIFY2(last.rssKb <= first.rssKb * 1.25 + 40 * 1024, qPrintable(figures));
             QVERIFY2(last.threads <= first.threads + 2, qPrintable(figures));

@@ -119,8 +119,8 @@ private slots:
                 const QImage fromSvg = rendered(svg, pages.format);
                 QVERIFY2(!fromSvg.isNull(), "QSvgRenderer refused the page");
                 const Comparison c = compare(painted(pages, int(i)), fromSvg);
-                const QString where = QString("%1 page %2: ink %3 and %4 px, %5 apart")
-                                          .arg(example).arg(i + 1).arg(c.inkA).arg(c.inkB).arg(c.apart);
+                const QString where =
+                    QString("%1 page %2: ink %3 and %4 px, %5 apart").arg(example).arg(i + 1).arg(c.inkA).arg(c.inkB).arg(c.apart);
                 QVERIFY2(c.inkA > 500, qPrintable(where));  // not a blank page (the shortest is a last line)
                 QVERIFY2(c.inkB > 0.95 * c.inkA && c.inkB < 1.4 * c.inkA, qPrintable(where));
                 QVERIFY2(c.apart < 0.175, qPrintable(where));
@@ -226,8 +226,8 @@ private slots:
             const ui::DerivationPages pages = ui::paginate(*documentOf(scenes[e]));
             ui::SvgGlyphs glyphs;
             for (std::size_t i = 0; i < pages.pages.size(); ++i) {
-                const std::string svg = ui::svgPage(marksOf(pages, i, glyphs),
-                                                    QSizeF(pages.format.widthPt, pages.format.heightPt), scenes[e], glyphs);
+                const std::string svg =
+                    ui::svgPage(marksOf(pages, i, glyphs), QSizeF(pages.format.widthPt, pages.format.heightPt), scenes[e], glyphs);
                 QXmlStreamReader xml(QString::fromStdString(svg));
                 while (!xml.atEnd()) {
                     xml.readNext();

@@ -65,9 +65,13 @@ private slots:
         QVERIFY(labels.size() >= 8);  // at least two per axis of each panel
         for (std::size_t i = 0; i < labels.size(); ++i)
             for (std::size_t j = i + 1; j < labels.size(); ++j)
-                QVERIFY2(!labels[i].intersects(labels[j]),
-                         qPrintable(QString("label %1 (%2,%3 %4x%5) overlaps label %6").arg(i).arg(labels[i].x()).arg(labels[i].y())
-                                        .arg(labels[i].width()).arg(labels[i].height()).arg(j)));
+                QVERIFY2(!labels[i].intersects(labels[j]), qPrintable(QString("label %1 (%2,%3 %4x%5) overlaps label %6")
+                                                                          .arg(i)
+                                                                          .arg(labels[i].x())
+                                                                          .arg(labels[i].y())
+                                                                          .arg(labels[i].width())
+                                                                          .arg(labels[i].height())
+                                                                          .arg(j)));
     }
 
     // With room, every decade keeps its label: 9 + 9 on the time axes (1e-6..1e2), the

@@ -38,18 +38,18 @@ std::string outputProblem(const std::string& path, OutputKind kind);
 struct ExportSettings {
     std::string out;
     OutputKind kind = OutputKind::Mp4;
-    double duration = 0;       // [s] simulated time shown, from the trajectory's start
+    double duration = 0;  // [s] simulated time shown, from the trajectory's start
     double fps = 30;
-    double speed = 1;          // simulated seconds per second of video (< 1: slow motion)
+    double speed = 1;  // simulated seconds per second of video (< 1: slow motion)
     int width = 1280, height = 720;
     CameraSpec camera;
     OverlayOptions overlay;
-    bool trail = true;         // end-effector path of the last `trailSeconds`
-    double trailSeconds = 2;   // [s] simulated
-    bool frames = true;        // DH triads
-    bool frameLabels = true;   // and their numbers
-    double at = 0;             // Still: the picture's time [s]
-    int antialiasing = -1;     // MSAA samples, or kEdgeSmoothing / kAutoAntialiasing (ui/paint/headless_renderer.hpp)
+    bool trail = true;        // end-effector path of the last `trailSeconds`
+    double trailSeconds = 2;  // [s] simulated
+    bool frames = true;       // DH triads
+    bool frameLabels = true;  // and their numbers
+    double at = 0;            // Still: the picture's time [s]
+    int antialiasing = -1;    // MSAA samples, or kEdgeSmoothing / kAutoAntialiasing (ui/paint/headless_renderer.hpp)
     // The slide layout (ui/paint/composite_frame.hpp): the 3D view beside `step`'s key equation
     // and the energy plot, in one width × height frame; `overlay` is then not used.
     bool composite = false;

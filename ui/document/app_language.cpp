@@ -41,10 +41,8 @@ std::optional<present::Language> rememberedLanguage() {
 
 void rememberLanguage(std::optional<present::Language> language) {
     auto s = settings();
-    if (language)
-        s.setValue("language", QString::fromLatin1(present::languageCode(*language)));
-    else
-        s.remove("language");
+    if (language) s.setValue("language", QString::fromLatin1(present::languageCode(*language)));
+    else s.remove("language");
 }
 
 present::Notation rememberedNotation() {
@@ -77,8 +75,7 @@ bool installLanguage(present::Language language) {
     qt = new QTranslator(QCoreApplication::instance());
     const bool loaded = ours->load(QStringLiteral(":/i18n/lagrangelab_da.qm"));
     if (loaded) QCoreApplication::installTranslator(ours);
-    if (qt->load(QStringLiteral("qtbase_da"), QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
-        QCoreApplication::installTranslator(qt);
+    if (qt->load(QStringLiteral("qtbase_da"), QLibraryInfo::path(QLibraryInfo::TranslationsPath))) QCoreApplication::installTranslator(qt);
     return loaded;
 }
 

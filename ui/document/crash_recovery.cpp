@@ -60,7 +60,8 @@ void collectChanges(const SceneJson* before, const SceneJson* after, const std::
         return;
     }
     const Diagnostic field{Severity::Warning, path, {}};
-    out << QString::fromStdString(present::messageText(field.place(), windowLanguage())) + ": " + shown(before) + QString::fromUtf8(" → ") + shown(after);
+    out << QString::fromStdString(present::messageText(field.place(), windowLanguage())) + ": " + shown(before) + QString::fromUtf8(" → ") +
+               shown(after);
 }
 
 }  // namespace

@@ -203,8 +203,8 @@ QString EntrySelection::readout() const {
     }
     const CatalogueEntry* e = entry();
     if (!e) return {};
-    QString text = "<b>" + valueText().toHtmlEscaped() + "</b>  " +
-                   (teachPose_ ? tr("at the teach pose") : tr("at t = %1 s").arg(readableNumber(t_)));
+    QString text =
+        "<b>" + valueText().toHtmlEscaped() + "</b>  " + (teachPose_ ? tr("at the teach pose") : tr("at t = %1 s").arg(readableNumber(t_)));
     // 37 %, and "<1 %" for a part that is there but small
     const auto percent = [](double share) {
         const long p = std::lround(100 * share);
@@ -216,8 +216,8 @@ QString EntrySelection::readout() const {
             fed << (e->perLink ? linkName(i) + "&nbsp;" + percent(shares_[static_cast<std::size_t>(i)]) : linkName(i));
     if (jointsPart_ > 0) {
         using present::Quantity;
-        const bool mass = e->quantity == Quantity::MassMatrix || e->quantity == Quantity::MassMatrixEntry ||
-                          e->quantity == Quantity::KineticEnergy;
+        const bool mass =
+            e->quantity == Quantity::MassMatrix || e->quantity == Quantity::MassMatrixEntry || e->quantity == Quantity::KineticEnergy;
         fed << (mass ? tr("the motor's armature") : tr("the springs")) + "&nbsp;" + percent(jointsShare_);
     }
     text += " · " + (fed.isEmpty() ? tr("no link's parameters occur in it") : tr("fed by %1").arg(fed.join(", ")));

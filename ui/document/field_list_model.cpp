@@ -14,8 +14,9 @@ FieldListModel::FieldListModel(SceneDocument& document, FieldRows rows, QObject*
 
 void FieldListModel::documentChanged() {
     std::vector<FieldRow> rows = make_(doc_.json());
-    const bool same = rows.size() == rows_.size() &&
-                      std::equal(rows.begin(), rows.end(), rows_.begin(), [](const FieldRow& a, const FieldRow& b) { return a.pointer == b.pointer; });
+    const bool same =
+        rows.size() == rows_.size() &&
+        std::equal(rows.begin(), rows.end(), rows_.begin(), [](const FieldRow& a, const FieldRow& b) { return a.pointer == b.pointer; });
     if (!same) {
         beginResetModel();
         rows_ = std::move(rows);
@@ -39,10 +40,10 @@ QVariant FieldListModel::data(const QModelIndex& index, int role) const {
     if (role == Qt::ToolTipRole) return error.isEmpty() ? QString::fromStdString(r.field) : error;
     if (role != Qt::DisplayRole && role != Qt::EditRole) return {};
     switch (index.column()) {
-    case Name: return r.name;
-    case Value: return SceneDocument::display(doc_.value(r.pointer));
-    case Unit: return r.unit;
-    default: return {};
+        case Name: return r.name;
+        case Value: return SceneDocument::display(doc_.value(r.pointer));
+        case Unit: return r.unit;
+        default: return {};
     }
 }
 
@@ -56,10 +57,10 @@ bool FieldListModel::setData(const QModelIndex& index, const QVariant& value, in
 QVariant FieldListModel::headerData(int section, Qt::Orientation orientation, int role) const {
     if (role != Qt::DisplayRole || orientation != Qt::Horizontal) return {};
     switch (section) {
-    case Name: return tr("field");
-    case Value: return tr("value");
-    case Unit: return tr("unit");
-    default: return {};
+        case Name: return tr("field");
+        case Value: return tr("value");
+        case Unit: return tr("unit");
+        default: return {};
     }
 }
 
@@ -134,8 +135,10 @@ std::vector<FieldRow> lagrangianRows(const SceneJson& json) {
     const SceneJson& l = json["lagrangian"];
     if (!l.is_object()) return rows;
     for (std::size_t i = 0; i < arrayAt(json, "/lagrangian/coordinates").size(); ++i)
-            rows.push_back({QString("coordinate %1").arg(i + 1), "/lagrangian/coordinates/" + std::to_string(i),
-                            "lagrangian.coordinates[" + std::to_string(i) + "]", {}});
+        rows.push_back({QString("coordinate %1").arg(i + 1),
+                        "/lagrangian/coordinates/" + std::to_string(i),
+                        "lagrangian.coordinates[" + std::to_string(i) + "]",
+                        {}});
     for (const char* key : {"kinetic", "potential"})
         if (l.contains(key)) rows.push_back({key, "/lagrangian/" + std::string(key), "lagrangian." + std::string(key), "J"});
     return rows;

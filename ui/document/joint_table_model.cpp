@@ -15,8 +15,7 @@ namespace ll::ui {
 
 namespace {
 
-const char* const kKeys[] = {"type", "a", "alpha", "d", "theta", "mass", "com", "com", "com",
-                             "xx", "yy", "zz", "xy", "xz", "yz"};
+const char* const kKeys[] = {"type", "a", "alpha", "d", "theta", "mass", "com", "com", "com", "xx", "yy", "zz", "xy", "xz", "yz"};
 
 bool isAngle(int column) { return column == JointTableModel::Alpha || column == JointTableModel::Theta; }
 
@@ -65,32 +64,31 @@ QVariant JointTableModel::data(const QModelIndex& index, int role) const {
     const SceneJson v = doc_.value(pointer(row, column));
     const QString error = doc_.errorAt(fieldPath(row, column));
     switch (role) {
-    case Qt::DisplayRole:
-    case Qt::EditRole: {
-        const SceneJson shown = v.is_null() ? absentValue(column) : v;
-        if (degrees_ && isAngle(column) && shown.is_number()) {
-            const double deg = shown.get<double>() * 180.0 / std::numbers::pi;
-            return QString::number(deg, 'g', 10) + QStringLiteral("°");
+        case Qt::DisplayRole:
+        case Qt::EditRole: {
+            const SceneJson shown = v.is_null() ? absentValue(column) : v;
+            if (degrees_ && isAngle(column) && shown.is_number()) {
+                const double deg = shown.get<double>() * 180.0 / std::numbers::pi;
+                return QString::number(deg, 'g', 10) + QStringLiteral("°");
+            }
+            // The joint's kind in the window's language; the scene file's word when edited.
+            if (role == Qt::DisplayRole && column == Type && shown.is_string()) {
+                if (shown.get<std::string>() == "revolute") return tr("revolute");
+                if (shown.get<std::string>() == "prismatic") return tr("prismatic");
+            }
+            return SceneDocument::display(shown);
         }
-        // The joint's kind in the window's language; the scene file's word when edited.
-        if (role == Qt::DisplayRole && column == Type && shown.is_string()) {
-            if (shown.get<std::string>() == "revolute") return tr("revolute");
-            if (shown.get<std::string>() == "prismatic") return tr("prismatic");
-        }
-        return SceneDocument::display(shown);
-    }
-    case Qt::ToolTipRole:
-        if (!error.isEmpty()) return error;
-        return QString::fromStdString(fieldPath(row, column));
-    case Qt::BackgroundRole:
-        if (error.startsWith("error")) return QBrush(QColor(255, 190, 190));
-        if (!error.isEmpty()) return QBrush(QColor(255, 240, 190));
-        return {};
-    case Qt::ForegroundRole:
-        if (v.is_null()) return QBrush(QColor(140, 140, 140));
-        return {};
-    default:
-        return {};
+        case Qt::ToolTipRole:
+            if (!error.isEmpty()) return error;
+            return QString::fromStdString(fieldPath(row, column));
+        case Qt::BackgroundRole:
+            if (error.startsWith("error")) return QBrush(QColor(255, 190, 190));
+            if (!error.isEmpty()) return QBrush(QColor(255, 240, 190));
+            return {};
+        case Qt::ForegroundRole:
+            if (v.is_null()) return QBrush(QColor(140, 140, 140));
+            return {};
+        default: return {};
     }
 }
 
@@ -126,28 +124,26 @@ QVariant JointTableModel::headerData(int section, Qt::Orientation orientation, i
     if (orientation == Qt::Vertical) return tr("joint %1").arg(section + 1);
     const QString angle = degrees_ ? tr("[°]") : tr("[rad]");
     switch (section) {
-    case Type: return tr("type");
-    case A: return tr("a [m]");
-    case Alpha: return tr("α %1").arg(angle);
-    case D: return tr("d [m]");
-    case Theta: return tr("θ offset %1").arg(angle);
-    case Mass: return tr("mass [kg]");
-    case ComX: return tr("COM x [m]");
-    case ComY: return tr("COM y [m]");
-    case ComZ: return tr("COM z [m]");
-    case Ixx: return tr("Ixx [kg·m²]");
-    case Iyy: return tr("Iyy [kg·m²]");
-    case Izz: return tr("Izz [kg·m²]");
-    case Ixy: return tr("Ixy [kg·m²]");
-    case Ixz: return tr("Ixz [kg·m²]");
-    case Iyz: return tr("Iyz [kg·m²]");
-    default: return {};
+        case Type: return tr("type");
+        case A: return tr("a [m]");
+        case Alpha: return tr("α %1").arg(angle);
+        case D: return tr("d [m]");
+        case Theta: return tr("θ offset %1").arg(angle);
+        case Mass: return tr("mass [kg]");
+        case ComX: return tr("COM x [m]");
+        case ComY: return tr("COM y [m]");
+        case ComZ: return tr("COM z [m]");
+        case Ixx: return tr("Ixx [kg·m²]");
+        case Iyy: return tr("Iyy [kg·m²]");
+        case Izz: return tr("Izz [kg·m²]");
+        case Ixy: return tr("Ixy [kg·m²]");
+        case Ixz: return tr("Ixz [kg·m²]");
+        case Iyz: return tr("Iyz [kg·m²]");
+        default: return {};
     }
 }
 
-Qt::ItemFlags JointTableModel::flags(const QModelIndex& index) const {
-    return QAbstractTableModel::flags(index) | Qt::ItemIsEditable;
-}
+Qt::ItemFlags JointTableModel::flags(const QModelIndex& index) const { return QAbstractTableModel::flags(index) | Qt::ItemIsEditable; }
 
 void JointTableModel::setDegrees(bool on) {
     if (on == degrees_) return;
@@ -162,8 +158,7 @@ namespace {
 template <class F>
 void editInitial(SceneJson& json, F&& edit) {
     for (const char* key : {"q", "qd"})
-        if (json.contains("initial") && json["initial"].contains(key) && json["initial"][key].is_array())
-            edit(json["initial"][key]);
+        if (json.contains("initial") && json["initial"].contains(key) && json["initial"][key].is_array()) edit(json["initial"][key]);
 }
 
 }  // namespace
@@ -174,8 +169,8 @@ void JointTableModel::addJoint(int after) {
     if (!joints.is_array()) joints = SceneJson::array();
     const int n = static_cast<int>(joints.size());
     const int at = std::clamp(after, -1, n - 1) + 1;
-    SceneJson joint = n > 0 ? joints[std::max(at - 1, 0)] : SceneJson{{"type", "revolute"}, {"a", 0.5}, {"alpha", 0}, {"d", 0}, {"theta", 0},
-                                                                      {"mass", 1}, {"com", {-0.25, 0, 0}}};
+    SceneJson joint = n > 0 ? joints[std::max(at - 1, 0)] : SceneJson{{"type", "revolute"}, {"a", 0.5},  {"alpha", 0},          {"d", 0},
+                                                                      {"theta", 0},         {"mass", 1}, {"com", {-0.25, 0, 0}}};
     joints.insert(joints.begin() + at, joint);
     editInitial(json, [&](SceneJson& a) {
         if (static_cast<int>(a.size()) >= at) a.insert(a.begin() + at, 0);
@@ -198,7 +193,8 @@ void JointTableModel::moveJoint(int row, int delta) {
     SceneJson json = doc_.json();
     SceneJson& joints = json["robot"]["joints"];
     const int other = row + delta;
-    if (!joints.is_array() || row < 0 || other < 0 || row >= static_cast<int>(joints.size()) || other >= static_cast<int>(joints.size())) return;
+    if (!joints.is_array() || row < 0 || other < 0 || row >= static_cast<int>(joints.size()) || other >= static_cast<int>(joints.size()))
+        return;
     std::swap(joints[row], joints[other]);
     editInitial(json, [&](SceneJson& a) {
         if (std::max(row, other) < static_cast<int>(a.size())) std::swap(a[row], a[other]);
@@ -230,11 +226,17 @@ bool JointTableModel::fillInertiaFromShape(int row, const QString& shape, const 
         return false;
     }
     SceneJson json = doc_.json();
-    json["robot"]["joints"][row]["inertia"] = {{"xx", SceneDocument::parseCell(xx)}, {"yy", SceneDocument::parseCell(yy)},
-                                               {"zz", SceneDocument::parseCell(zz)}, {"xy", 0}, {"xz", 0}, {"yz", 0}};
-    static const std::map<QString, const char*> shapeNames = {{"rod", QT_TR_NOOP("rod")},         {"cylinder", QT_TR_NOOP("cylinder")},
-                                                             {"disc", QT_TR_NOOP("disc")},       {"box", QT_TR_NOOP("box")},
-                                                             {"sphere", QT_TR_NOOP("sphere")}};
+    json["robot"]["joints"][row]["inertia"] = {{"xx", SceneDocument::parseCell(xx)},
+                                               {"yy", SceneDocument::parseCell(yy)},
+                                               {"zz", SceneDocument::parseCell(zz)},
+                                               {"xy", 0},
+                                               {"xz", 0},
+                                               {"yz", 0}};
+    static const std::map<QString, const char*> shapeNames = {{"rod", QT_TR_NOOP("rod")},
+                                                              {"cylinder", QT_TR_NOOP("cylinder")},
+                                                              {"disc", QT_TR_NOOP("disc")},
+                                                              {"box", QT_TR_NOOP("box")},
+                                                              {"sphere", QT_TR_NOOP("sphere")}};
     const auto named = shapeNames.find(shape);
     doc_.replace(json, tr("Joint %1: inertia of a %2").arg(row + 1).arg(named != shapeNames.end() ? tr(named->second) : shape));
     return true;

@@ -34,7 +34,7 @@ public:
     void setDegrees(bool on);
 
     // Undoable edits of the joint list (initial q and q̇ follow the joints).
-    void addJoint(int after);      // a copy of joint `after` (a revolute joint when none)
+    void addJoint(int after);  // a copy of joint `after` (a revolute joint when none)
     void removeJoint(int row);
     void moveJoint(int row, int delta);
     // Fills the inertia tensor of joint `row` from a shape of mass m (its current mass)

@@ -23,9 +23,9 @@
 namespace ll::ui {
 
 struct LabReportInput {
-    Scene scene;                       // as simulated
-    std::string sceneFileName;         // "puma560.json": the copy's name
-    std::string sceneText;             // the scene file's bytes
+    Scene scene;                // as simulated
+    std::string sceneFileName;  // "puma560.json": the copy's name
+    std::string sceneText;      // the scene file's bytes
     SimulationResult simulation;
     std::shared_ptr<const present::DisplayDocument> display;  // the derivation, in the language shown
 };

@@ -39,41 +39,42 @@ void LiveDerivation::request(const Scene& scene) {
     stopped_ = false;
     ++runs_;
     emit started(request);
-    pool_.start([self = this, scene = scene_, request, cancel, delay = std::chrono::milliseconds(startDelayMs_),
-                 language = windowLanguage()] {
-        const auto begin = std::chrono::steady_clock::now();
-        auto result = std::make_shared<DerivationResult>();
-        result->request = request;
-        result->scene = scene;
-        try {
-            while (std::chrono::steady_clock::now() - begin < delay) {
-                throwIfCancelled(cancel.get());
-                std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    pool_.start(
+        [self = this, scene = scene_, request, cancel, delay = std::chrono::milliseconds(startDelayMs_), language = windowLanguage()] {
+            const auto begin = std::chrono::steady_clock::now();
+            auto result = std::make_shared<DerivationResult>();
+            result->request = request;
+            result->scene = scene;
+            try {
+                while (std::chrono::steady_clock::now() - begin < delay) {
+                    throwIfCancelled(cancel.get());
+                    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+                }
+                DocumentRequest r;
+                r.format = present::DocumentFormat::Display;
+                r.cancel = cancel.get();
+                r.catalogue = true;  // the entries a student can pick, with what feeds them
+                // The form `derive --form auto` picks: expanded when cheap, else structured (the
+                // Panda's expanded B has thousands of terms of 15-digit products per entry).
+                DerivedDocument derived = deriveDisplay(*scene, r);
+                result->display = std::move(derived.display);
+                result->catalogue = std::move(derived.catalogue);
+                // Text from the same trees, outside the GiNaC lock.
+                result->text = QString::fromStdString(present::textDocument(*result->display, &result->textSpans));
+            } catch (const Cancelled&) {
+                result->stopped = true;
+            } catch (const InputError& e) {
+                for (const Diagnostic& d : e.diagnostics())
+                    result->error += QString::fromStdString(present::diagnosticBody(d, language) + "\n");
+            } catch (const std::exception& e) {
+                result->error = QString::fromStdString(e.what());
             }
-            DocumentRequest r;
-            r.format = present::DocumentFormat::Display;
-            r.cancel = cancel.get();
-            r.catalogue = true;  // the entries a student can pick, with what feeds them
-            // The form `derive --form auto` picks: expanded when cheap, else structured (the
-            // Panda's expanded B has thousands of terms of 15-digit products per entry).
-            DerivedDocument derived = deriveDisplay(*scene, r);
-            result->display = std::move(derived.display);
-            result->catalogue = std::move(derived.catalogue);
-            // Text from the same trees, outside the GiNaC lock.
-            result->text = QString::fromStdString(present::textDocument(*result->display, &result->textSpans));
-        } catch (const Cancelled&) {
-            result->stopped = true;
-        } catch (const InputError& e) {
-            for (const Diagnostic& d : e.diagnostics()) result->error += QString::fromStdString(present::diagnosticBody(d, language) + "\n");
-        } catch (const std::exception& e) {
-            result->error = QString::fromStdString(e.what());
-        }
-        result->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
-        self->work_.deliver(self, request, [self, result] {  // dropped when a newer scene is deriving
-            self->delivered_ = result->request;
-            emit self->finished(result);
+            result->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+            self->work_.deliver(self, request, [self, result] {  // dropped when a newer scene is deriving
+                self->delivered_ = result->request;
+                emit self->finished(result);
+            });
         });
-    });
 }
 
 }  // namespace ll::ui

@@ -25,15 +25,15 @@
 namespace ll::ui {
 
 struct DerivationResult {
-    int request = 0;                                                 // which request this answers
-    std::shared_ptr<const present::DisplayDocument> display;       // the steps as display trees
-    std::shared_ptr<const EntryCatalogue> catalogue;                 // its entries, traced and compiled
-    QString text;                                                    // the same steps as plain text
-    std::vector<present::TextSpan> textSpans;                        // where each item and entry stands in it
-    std::shared_ptr<const Scene> scene;                              // the scene derived
-    QString error;                                                   // why there is no derivation
-    bool stopped = false;                                            // cancelled for an edit being checked
-    double seconds = 0.0;                                            // wall time in the worker
+    int request = 0;                                          // which request this answers
+    std::shared_ptr<const present::DisplayDocument> display;  // the steps as display trees
+    std::shared_ptr<const EntryCatalogue> catalogue;          // its entries, traced and compiled
+    QString text;                                             // the same steps as plain text
+    std::vector<present::TextSpan> textSpans;                 // where each item and entry stands in it
+    std::shared_ptr<const Scene> scene;                       // the scene derived
+    QString error;                                            // why there is no derivation
+    bool stopped = false;                                     // cancelled for an edit being checked
+    double seconds = 0.0;                                     // wall time in the worker
 };
 
 class LiveDerivation : public QObject {

@@ -82,8 +82,7 @@ void LiveSimulation::start() {
         try {
             analysis->torques = std::make_shared<const TorqueHistory>(torqueHistory(*input, result->simulation.trajectory));
             if (cancel->load()) return;
-            analysis->properties =
-                std::make_shared<const ModelProperties>(checkModelProperties(*input, result->simulation.trajectory));
+            analysis->properties = std::make_shared<const ModelProperties>(checkModelProperties(*input, result->simulation.trajectory));
         } catch (const std::exception& e) {
             analysis->error = present::errorText(e, language);
         }

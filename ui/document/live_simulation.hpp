@@ -25,22 +25,22 @@
 namespace ll::ui {
 
 struct LiveResult {
-    int request = 0;                          // which request this answers
-    std::shared_ptr<const Scene> scene;       // the scene simulated
+    int request = 0;                     // which request this answers
+    std::shared_ptr<const Scene> scene;  // the scene simulated
     SimulationResult simulation;
-    std::shared_ptr<VisualScene> visual;      // posed at the last sample; fitted to the motion
-    std::string error;                        // why there is no trajectory (empty when there is)
-    double workerSeconds = 0.0;               // wall time in the worker
+    std::shared_ptr<VisualScene> visual;  // posed at the last sample; fitted to the motion
+    std::string error;                    // why there is no trajectory (empty when there is)
+    double workerSeconds = 0.0;           // wall time in the worker
 };
 
 // What the run says about the model, computed after the run is shown (same worker):
 // where the torque goes (core/simulation/torque_parts) and the model's properties along
 // it (core/simulation/model_properties).
 struct RunAnalysis {
-    int request = 0;                                  // the LiveResult it belongs to
-    std::shared_ptr<const TorqueHistory> torques;     // null when it could not be computed
+    int request = 0;                               // the LiveResult it belongs to
+    std::shared_ptr<const TorqueHistory> torques;  // null when it could not be computed
     std::shared_ptr<const ModelProperties> properties;
-    std::string error;                                // why not
+    std::string error;  // why not
 };
 
 class LiveSimulation : public QObject {

@@ -9,8 +9,8 @@ bool nameChar(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') 
 
 // Keys whose strings are words, not expressions.
 const std::set<std::string>& proseKeys() {
-    static const std::set<std::string> keys = {"format", "name", "description", "source", "convention",
-                                               "type", "integrator", "recovery_of", "kind", "law", "unit", "shape", "color", "axis"};
+    static const std::set<std::string> keys = {"format",      "name", "description", "source", "convention", "type",  "integrator",
+                                               "recovery_of", "kind", "law",         "unit",   "shape",      "color", "axis"};
     return keys;
 }
 

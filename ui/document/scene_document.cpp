@@ -61,8 +61,7 @@ bool SceneDocument::loadText(const std::string& text, const QString& path, QStri
     return adopt(text, path, std::move(found), scene, errors);
 }
 
-bool SceneDocument::adopt(const std::string& text, const QString& path, std::vector<Diagnostic> found, Scene& scene,
-                          QStringList* errors) {
+bool SceneDocument::adopt(const std::string& text, const QString& path, std::vector<Diagnostic> found, Scene& scene, QStringList* errors) {
     const QString prefix = path.isEmpty() ? QString() : path + ": ";
     if (ll::hasErrors(found)) {
         if (errors)
@@ -119,11 +118,14 @@ void SceneDocument::loadFileInBackground(const QString& path, std::function<void
     checker_.start([self = this, text, path, done = std::move(done)] {
         auto scene = std::make_shared<Scene>();
         auto found = std::make_shared<std::vector<Diagnostic>>(diagnose(*text, scene.get()));
-        QMetaObject::invokeMethod(self, [self, text, path, done, scene, found] {
-            QStringList lines;
-            const bool ok = self->adopt(*text, shownPath(path), std::move(*found), *scene, &lines);
-            done(ok, lines);
-        }, Qt::QueuedConnection);
+        QMetaObject::invokeMethod(
+            self,
+            [self, text, path, done, scene, found] {
+                QStringList lines;
+                const bool ok = self->adopt(*text, shownPath(path), std::move(*found), *scene, &lines);
+                done(ok, lines);
+            },
+            Qt::QueuedConnection);
     });
 }
 
@@ -151,7 +153,8 @@ void SceneDocument::setValue(const std::string& pointer, const SceneJson& v, con
     replace(after, description);
     // "/robot/joints/1/com/0" → "robot.joints[1].com[0]"
     std::string field;
-    for (const std::string& part : p.to_string().substr(1) | std::views::split('/') | std::views::transform([](auto r) { return std::string(r.begin(), r.end()); })) {
+    for (const std::string& part :
+         p.to_string().substr(1) | std::views::split('/') | std::views::transform([](auto r) { return std::string(r.begin(), r.end()); })) {
         if (!part.empty() && std::all_of(part.begin(), part.end(), [](char c) { return c >= '0' && c <= '9'; })) field += "[" + part + "]";
         else field += (field.empty() ? "" : ".") + part;
     }
@@ -166,8 +169,7 @@ void SceneDocument::replace(const SceneJson& after, const QString& description) 
 QString SceneDocument::errorAt(const std::string& field) const {
     QStringList found;
     for (const Diagnostic& d : diagnostics_)
-        if (d.field == field)
-            found << QString::fromStdString(present::diagnosticText(d, windowLanguage(), present::Place::Omitted));
+        if (d.field == field) found << QString::fromStdString(present::diagnosticText(d, windowLanguage(), present::Place::Omitted));
     return found.join('\n');
 }
 

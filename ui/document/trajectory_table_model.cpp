@@ -12,9 +12,7 @@ void TrajectoryTableModel::setTrajectory(Trajectory trajectory) {
     endResetModel();
 }
 
-int TrajectoryTableModel::rowCount(const QModelIndex& parent) const {
-    return parent.isValid() ? 0 : static_cast<int>(trajectory_.size());
-}
+int TrajectoryTableModel::rowCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : static_cast<int>(trajectory_.size()); }
 
 int TrajectoryTableModel::columnCount(const QModelIndex& parent) const {
     return parent.isValid() || trajectory_.size() == 0 ? 0 : 1 + 2 * trajectory_.n + 4;

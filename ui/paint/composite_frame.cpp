@@ -21,8 +21,8 @@ CompositeLayout CompositeLayout::forSize(QSize size) {
     return l;
 }
 
-CompositeFrame::CompositeFrame(const Trajectory& trajectory, const QString& sceneName, QSize frameSize,
-                               const present::DisplayStep* step, present::Language language, bool showWork, double speed)
+CompositeFrame::CompositeFrame(const Trajectory& trajectory, const QString& sceneName, QSize frameSize, const present::DisplayStep* step,
+                               present::Language language, bool showWork, double speed)
     : layout_(CompositeLayout::forSize(frameSize)), size_(frameSize) {
     const int h = frameSize.height();
     OverlayOptions overlay;
@@ -43,9 +43,9 @@ CompositeFrame::CompositeFrame(const Trajectory& trajectory, const QString& scen
     p.setPen(QColor(25, 25, 35));
     if (!step) return;
     const QRectF box = QRectF(layout_.equation).adjusted(h / 60.0, h / 80.0, -h / 60.0, -h / 80.0);
-    const double em = h / 28.0;                      // 26 px at 720p, 39 px at 1080p
-    const double scale = em / mathUnitsPerEm;        // px per layout unit
-    const double maxWidth = box.width() / scale;     // units
+    const double em = h / 28.0;                   // 26 px at 720p, 39 px at 1080p
+    const double scale = em / mathUnitsPerEm;     // px per layout unit
+    const double maxWidth = box.width() / scale;  // units
     double y = box.top();
     const auto place = [&](const MathBox& line, double gapAbove) {
         if (y + (gapAbove + line.ascent + line.descent) * scale > box.bottom()) return false;
@@ -55,8 +55,8 @@ CompositeFrame::CompositeFrame(const Trajectory& trajectory, const QString& scen
         return true;
     };
     // In the document's own language, as its title is (the derivation view's heading).
-    const QString title = QString::fromStdString(present::messageText(MessageId::DocumentStep, language) + " " + std::to_string(step->number) +
-                                                 ". " + present::messageText(step->title, language));
+    const QString title = QString::fromStdString(present::messageText(MessageId::DocumentStep, language) + " " +
+                                                 std::to_string(step->number) + ". " + present::messageText(step->title, language));
     QFont titleFont = textbookFont(p.font());
     titleFont.setPixelSize(static_cast<int>(0.8 * em));
     titleFont.setBold(true);
@@ -73,7 +73,7 @@ CompositeFrame::CompositeFrame(const Trajectory& trajectory, const QString& scen
         // An equation is shown whole or not at all.
         double need = 0, widest = 0;
         for (const MathBox& l : lines) need += (12 + l.ascent + l.descent) * scale, widest = std::max(widest, l.width);
-        if (widest > maxWidth) continue;  // a line that cannot break
+        if (widest > maxWidth) continue;     // a line that cannot break
         if (y + need > box.bottom()) break;  // it fits whole: every line is placed
         for (const MathBox& l : lines) place(l, 12);
     }

@@ -29,8 +29,8 @@ class CompositeFrame {
 public:
     // `step` (may be null: an empty equation panel) is read here only; `language` the
     // document's, for the names of a matrix's entries listed one by one.
-    CompositeFrame(const Trajectory& trajectory, const QString& sceneName, QSize frameSize,
-                   const present::DisplayStep* step, present::Language language, bool showWork, double speed);
+    CompositeFrame(const Trajectory& trajectory, const QString& sceneName, QSize frameSize, const present::DisplayStep* step,
+                   present::Language language, bool showWork, double speed);
     ~CompositeFrame();
 
     const CompositeLayout& layout() const { return layout_; }
@@ -41,7 +41,7 @@ public:
 private:
     CompositeLayout layout_;
     QSize size_;
-    QImage panel_;  // the equation panel and the plot's frame, painted once
+    QImage panel_;                           // the equation panel and the plot's frame, painted once
     std::unique_ptr<FrameOverlay> overlay_;  // name and time over the view
     std::unique_ptr<EnergyInset> plot_;
 };

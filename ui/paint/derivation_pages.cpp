@@ -41,8 +41,8 @@ std::vector<MathBox> wrapped(const QString& text, double size, double maxWidth, 
         }
         const double estimate = lineWidth + space + wordWidth;
         const QString candidate = line + ' ' + w;
-        const bool fits = std::abs(estimate - maxWidth) < nearMargin ? prose(candidate, size, bold).width <= maxWidth
-                                                                      : estimate <= maxWidth;
+        const bool fits =
+            std::abs(estimate - maxWidth) < nearMargin ? prose(candidate, size, bold).width <= maxWidth : estimate <= maxWidth;
         if (fits) {
             line = candidate;
             lineWidth = estimate;
@@ -112,12 +112,14 @@ void paginateFrom(const present::DisplayDocument& document, const PageFormat& fo
     const auto words = [&](const Message& m) { return present::messageText(m, document.language); };
     c.block(wrapped(QString::fromStdString(words(MessageId::DocumentModelTitle) + ": " + document.systemName), 1.5, c.width(), true), 0, 0,
             0.3 * em);
-    c.block(wrapped(QString::fromStdString(words(MessageId::DocumentShorthand) + ": c_i = cos q_i, s_i = sin q_i, c12 = cos(q1 + q2); q̇, q̈ " +
+    c.block(wrapped(QString::fromStdString(words(MessageId::DocumentShorthand) +
+                                           ": c_i = cos q_i, s_i = sin q_i, c12 = cos(q1 + q2); q̇, q̈ " +
                                            words(MessageId::DocumentJointVelocitiesAndAccelerations) + "."),
                     0.85, c.width()),
             0, 0.4 * em, 0.2 * em);
     if (!document.form.empty())
-        c.block(wrapped(QString::fromStdString(words(MessageId::DocumentForm) + ": " + words(document.form) + " (" + words(document.formReason) + ")"),
+        c.block(wrapped(QString::fromStdString(words(MessageId::DocumentForm) + ": " + words(document.form) + " (" +
+                                               words(document.formReason) + ")"),
                         0.85, c.width()),
                 0, 0.2 * em, 0.2 * em);
     if (!document.remark.empty()) c.block(wrapped(QString::fromStdString(words(document.remark)), 0.85, c.width()), 0, 0.2 * em, 0.2 * em);
@@ -128,9 +130,9 @@ void paginateFrom(const present::DisplayDocument& document, const PageFormat& fo
     };
     for (const present::DisplayStep& s : document.steps) {
         const present::DisplayStep* step = &s;
-        std::vector<MathBox> head = wrapped(QString::fromStdString(words(MessageId::DocumentStep) + " " + std::to_string(step->number) + ". " +
-                                                                   words(step->title)),
-                                            1.2, c.width(), true);
+        std::vector<MathBox> head =
+            wrapped(QString::fromStdString(words(MessageId::DocumentStep) + " " + std::to_string(step->number) + ". " + words(step->title)),
+                    1.2, c.width(), true);
         if (step->formula)  // the notes' general formula, typeset
             for (const MathBox& l : layoutFormula(*step->formula, (c.width() - em) / 0.9, 0.9)) head.push_back(indented(l));
         else
@@ -142,15 +144,15 @@ void paginateFrom(const present::DisplayDocument& document, const PageFormat& fo
             if (!item->note.empty()) {  // what a name means, beside it when it fits, else under it
                 const QString meaning = QString::fromStdString(words(item->note));
                 const MathBox note = layoutProse(meaning, 0.75);
-                if (lines.size() == 1 && lines[0].width + 2 * em + note.width <= c.width() - em)
-                    hcat(lines[0], note, 2 * em);
+                if (lines.size() == 1 && lines[0].width + 2 * em + note.width <= c.width() - em) hcat(lines[0], note, 2 * em);
                 else
                     for (const MathBox& l : wrapped(meaning, 0.75, c.width() - 3 * em)) lines.push_back(indented(l));
             }
             c.block(lines, em, (item->note.empty() ? 0.7 : 0.35) * em, 0.45 * em);
         }
     }
-    c.block(wrapped(QString::fromStdString(words(MessageId::DocumentActuation) + ": " + document.actuation), 0.9, c.width()), 0, 1.2 * em, 0.2 * em);
+    c.block(wrapped(QString::fromStdString(words(MessageId::DocumentActuation) + ": " + document.actuation), 0.9, c.width()), 0, 1.2 * em,
+            0.2 * em);
     c.finish();
 }
 
@@ -195,8 +197,7 @@ QString pagePath(const QString& path, int page) {
 
 }  // namespace
 
-bool writePdf(const present::DisplayDocument& document, const QString& path, std::string& error, const PageFormat& format,
-              int* pageCount) {
+bool writePdf(const present::DisplayDocument& document, const QString& path, std::string& error, const PageFormat& format, int* pageCount) {
     const DerivationPages pages = paginate(document, format);
     if (pageCount) *pageCount = static_cast<int>(pages.pages.size());
     return writePdf(pages, path, error);

@@ -20,7 +20,7 @@ namespace ll::ui {
 struct PageFormat {
     double widthPt = 842, heightPt = 595;  // A4 landscape: long entries need the width
     double marginPt = 42;
-    double fontPt = 11;                    // the em of the formulas
+    double fontPt = 11;                                            // the em of the formulas
     double unitsPerPt() const { return mathUnitsPerEm / fontPt; }  // layout units per point
 };
 

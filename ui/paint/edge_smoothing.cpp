@@ -7,8 +7,8 @@
 namespace ll::ui {
 namespace {
 
-constexpr int kSearch = 12;        // pixels walked along an edge each way
-constexpr int kMinContrast = 20;   // luma steps (of 255) below which nothing is smoothed
+constexpr int kSearch = 12;           // pixels walked along an edge each way
+constexpr int kMinContrast = 20;      // luma steps (of 255) below which nothing is smoothed
 constexpr int kRelativeContrast = 8;  // ... or below the brightest neighbour / 8
 
 // Mixes `weight` / 256 of `other` into `self`, per 8-bit channel.
@@ -20,7 +20,6 @@ inline std::uint32_t mix(std::uint32_t self, std::uint32_t other, int weight) {
     }
     return out;
 }
-
 
 // Marks the pixels of row `y` whose luma differs from its four neighbours' by at least
 // the contrast threshold. Plain loops over bytes, so the compiler vectorises them
@@ -76,11 +75,11 @@ void EdgeSmoothing::apply(QImage& frame) {
             const int acrossRows = 2 * std::abs(north + south - 2 * c) + std::abs(nw + sw - 2 * west) + std::abs(ne + se - 2 * east);
             const int acrossColumns = 2 * std::abs(west + east - 2 * c) + std::abs(nw + ne - 2 * north) + std::abs(sw + se - 2 * south);
             const bool horizontal = acrossRows >= acrossColumns;  // the edge runs along x
-            const std::ptrdiff_t toPartner = horizontal ? (std::abs(north - c) >= std::abs(south - c) ? -w : w)
-                                                        : (std::abs(west - c) >= std::abs(east - c) ? -1 : 1);
+            const std::ptrdiff_t toPartner =
+                horizontal ? (std::abs(north - c) >= std::abs(south - c) ? -w : w) : (std::abs(west - c) >= std::abs(east - c) ? -1 : 1);
             const std::ptrdiff_t along = horizontal ? 1 : w;
             const int partner = L[i + toPartner];
-            const int middle = c + partner;  // twice the luma halfway across the edge
+            const int middle = c + partner;                               // twice the luma halfway across the edge
             const int gradient = std::max(2, std::abs(partner - c) / 2);  // twice a quarter step
 
             // Walk along the edge both ways until the pair (this row, partner row) leaves it.
@@ -110,7 +109,8 @@ void EdgeSmoothing::apply(QImage& frame) {
             const int endPair = forwardNearer ? endForward : endBackward;
             const int distance = std::min(forward, backward), span = forward + backward;
             int weight = 0;  // of 256
-            if (endPair != middle && ((2 * c < middle) != (endPair < middle))) weight = std::max(0, 128 - 256 * distance / span + 128 / span);
+            if (endPair != middle && ((2 * c < middle) != (endPair < middle)))
+                weight = std::max(0, 128 - 256 * distance / span + 128 / span);
 
             // Lone pixels (thin lines, sharp tips) have no long edge: blend by how far
             // the pixel stands out of its 3x3 neighbourhood.

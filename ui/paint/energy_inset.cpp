@@ -97,8 +97,7 @@ EnergyInset::EnergyInset(const Trajectory& trajectory, bool showWork, QSize size
         p.setPen(QPen(QColor(225, 225, 230), 1));
         p.drawLine(QPointF(x, plot_.top()), QPointF(x, plot_.bottom()));
         p.setPen(QColor(70, 70, 80));
-        p.drawText(QRectF(x - 3 * f, plot_.bottom() + 0.15 * f, 6 * f, 1.2 * f), Qt::AlignHCenter | Qt::AlignTop,
-                   number(t, tStep) + " s");
+        p.drawText(QRectF(x - 3 * f, plot_.bottom() + 0.15 * f, 6 * f, 1.2 * f), Qt::AlignHCenter | Qt::AlignTop, number(t, tStep) + " s");
     }
     p.setPen(QPen(QColor(120, 120, 130), 1));
     p.drawRect(plot_);

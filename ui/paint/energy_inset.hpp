@@ -27,7 +27,7 @@ public:
 
 private:
     QImage background_;
-    QRectF plot_;           // the plot area inside the inset
+    QRectF plot_;  // the plot area inside the inset
     double t0_, t1_, low_, high_;
     bool showWork_;
     int fontPixels_;

@@ -95,17 +95,29 @@ FfmpegEncoder::FfmpegEncoder(const std::string& path, VideoFormat format, int wi
     ::close(logFd);
     log_ = logName;
 
-    std::vector<std::string> args = {"ffmpeg", "-hide_banner", "-loglevel", "error", "-y", "-f", "rawvideo", "-pix_fmt", "rgb0",
-                                     "-s", std::to_string(width) + "x" + std::to_string(height), "-framerate", number(fps),
-                                     "-i", "pipe:0"};
+    std::vector<std::string> args = {"ffmpeg",
+                                     "-hide_banner",
+                                     "-loglevel",
+                                     "error",
+                                     "-y",
+                                     "-f",
+                                     "rawvideo",
+                                     "-pix_fmt",
+                                     "rgb0",
+                                     "-s",
+                                     std::to_string(width) + "x" + std::to_string(height),
+                                     "-framerate",
+                                     number(fps),
+                                     "-i",
+                                     "pipe:0"};
     switch (format) {
         case VideoFormat::Mp4:
             args.insert(args.end(), {"-c:v", "libx264", "-preset", "veryfast", "-crf", "20", "-pix_fmt", "yuv420p", "-movflags",
                                      "+faststart", "-f", "mp4", temporary_});
             break;
         case VideoFormat::Webm:
-            args.insert(args.end(), {"-c:v", "libvpx-vp9", "-deadline", "realtime", "-cpu-used", "8", "-row-mt", "1", "-b:v", "0",
-                                     "-crf", "33", "-pix_fmt", "yuv420p", "-f", "webm", temporary_});
+            args.insert(args.end(), {"-c:v", "libvpx-vp9", "-deadline", "realtime", "-cpu-used", "8", "-row-mt", "1", "-b:v", "0", "-crf",
+                                     "33", "-pix_fmt", "yuv420p", "-f", "webm", temporary_});
             break;
         case VideoFormat::Gif:
             intermediate_ = (dir / ("." + stem + ".part-" + pid + ".mkv")).string();

@@ -7,8 +7,8 @@
 
 namespace ll::ui {
 
-FrameOverlay::FrameOverlay(const Trajectory& trajectory, const QString& sceneName, QSize frameSize,
-                           const OverlayOptions& options, bool showWork, double speed)
+FrameOverlay::FrameOverlay(const Trajectory& trajectory, const QString& sceneName, QSize frameSize, const OverlayOptions& options,
+                           bool showWork, double speed)
     : name_(sceneName), options_(options), speed_(speed), fontPixels_(std::max(9, frameSize.height() / 42)) {
     if (options_.energy) {
         const QSize size(std::clamp(frameSize.width() * 32 / 100, 120, 900), std::clamp(frameSize.height() * 30 / 100, 80, 600));
@@ -30,8 +30,7 @@ void FrameOverlay::paint(QImage& frame, double t, const std::array<double, 4>& e
     if (options_.name && !name_.isEmpty()) lines << name_;
     if (options_.time) {
         QString time = QCoreApplication::translate("FrameOverlay", "t = %1 s").arg(t, 0, 'f', 2);
-        if (std::abs(speed_ - 1) > 1e-12)
-            time += QCoreApplication::translate("FrameOverlay", "   (%1× real time)").arg(speed_, 0, 'g', 3);
+        if (std::abs(speed_ - 1) > 1e-12) time += QCoreApplication::translate("FrameOverlay", "   (%1× real time)").arg(speed_, 0, 'g', 3);
         lines << time;
     }
     if (!lines.isEmpty()) {

@@ -23,8 +23,8 @@ struct OverlayOptions {
 
 class FrameOverlay {
 public:
-    FrameOverlay(const Trajectory& trajectory, const QString& sceneName, QSize frameSize, const OverlayOptions& options,
-                 bool showWork, double speed);
+    FrameOverlay(const Trajectory& trajectory, const QString& sceneName, QSize frameSize, const OverlayOptions& options, bool showWork,
+                 double speed);
     ~FrameOverlay();
 
     // Paints onto `frame` (frameSize) for time t with the energies E_kin, E_pot, E, W at t.

@@ -71,8 +71,8 @@ struct HeadlessRenderer::Impl {
             framebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, *depthBuffer);
         }
         if (checkFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-            fail("framebuffer object incomplete (" + std::to_string(width) + "x" + std::to_string(height) + ", " +
-                 std::to_string(s) + " samples)");
+            fail("framebuffer object incomplete (" + std::to_string(width) + "x" + std::to_string(height) + ", " + std::to_string(s) +
+                 " samples)");
         return fbo;
     }
 };
@@ -86,8 +86,8 @@ HeadlessRenderer::HeadlessRenderer(int width, int height, int antialiasing)
     EGLint major = 0, minor = 0;
     if (d.display == EGL_NO_DISPLAY || !eglInitialize(d.display, &major, &minor)) fail("no surfaceless EGL display");
     if (!eglBindAPI(EGL_OPENGL_API)) fail("EGL cannot bind desktop OpenGL");
-    const EGLint configAttributes[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8,
-                                       EGL_BLUE_SIZE, 8, EGL_DEPTH_SIZE, 24, EGL_NONE};
+    const EGLint configAttributes[] =
+        {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8, EGL_DEPTH_SIZE, 24, EGL_NONE};
     EGLConfig config = nullptr;
     EGLint configs = 0;
     eglChooseConfig(d.display, configAttributes, &config, 1, &configs);

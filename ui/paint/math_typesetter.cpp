@@ -147,9 +147,7 @@ MathBox run(const QString& text, int which, double size) {
 // Greek and letter-like symbols come from the math font: lowercase Greek as math
 // italic (U+1D6FC…), capitals and ℓ upright as TeX sets them.
 bool isGreekLower(char32_t c) { return c >= 0x03B1 && c <= 0x03C9; }
-bool isMathSymbol(char32_t c) {
-    return (c >= 0x0391 && c <= 0x03C9) || c == 0x2113 || c == 0x2112 || (c >= 0x2200 && c <= 0x22FF);
-}
+bool isMathSymbol(char32_t c) { return (c >= 0x0391 && c <= 0x03C9) || c == 0x2113 || c == 0x2112 || (c >= 0x2200 && c <= 0x22FF); }
 
 // A word: Latin letters italic (upright when `upright`), digits and punctuation roman,
 // Greek and ℓ from the math font; combining dots over the letter before them.
@@ -235,8 +233,7 @@ MathBox fenced(const MathBox& content, char open, char close, double size) {
 // base with sub- and superscript boxes (either may be empty).
 // A letter (`letter`) keeps the font's script shifts whatever accents sit on it; a
 // taller base (parentheses, a fraction) lifts the superscript with its top.
-MathBox scripted(MathBox base, const MathBox* sub, const MathBox* sup, double size, double italicCorrection = 0,
-                 bool letter = false) {
+MathBox scripted(MathBox base, const MathBox* sub, const MathBox* sup, double size, double italicCorrection = 0, bool letter = false) {
     const double e = em(size);
     double up = 0, down = 0;
     if (sup) up = std::max({superscriptUp * e, letter ? 0.0 : base.ascent - 0.25 * e, sup->descent + 0.1 * e});
@@ -370,8 +367,7 @@ MathBox matrixBox(const DisplayNode& n, double size) {
         for (std::size_t j = 0; j < cols; ++j) {
             cell[i][j].regions.clear();
             append(body, cell[i][j], x + (width[j] - cell[i][j].width) / 2, y);  // centred columns
-            regions.push_back({QRectF(x - colGap / 2, y - ascent[i] - rowGap / 2, width[j] + colGap,
-                                      ascent[i] + descent[i] + rowGap),
+            regions.push_back({QRectF(x - colGap / 2, y - ascent[i] - rowGap / 2, width[j] + colGap, ascent[i] + descent[i] + rowGap),
                                static_cast<int>(i), static_cast<int>(j)});
             x += width[j] + colGap;
         }
@@ -394,107 +390,108 @@ MathBox layout(const DisplayNode& n, double size) {
     const double e = em(size);
     const bool script = size < 0.95;
     switch (n.kind) {
-    case DisplayKind::Symbol: return symbolBox(n, size);
-    case DisplayKind::Number: {
-        MathBox b = run(QString::fromStdString(n.text), 0, size);
-        if (!n.exponent.empty()) {
-            hcat(b, op(QString(QChar(0x22C5)), size), thinSpace * e);
-            MathBox ten = run("10", 0, size);
-            const MathBox x = run(QString::fromStdString(n.exponent).replace('-', QChar(0x2212)), 0, scriptSize(size));
-            hcat(b, scripted(ten, nullptr, &x, size), thinSpace * e);
-        }
-        return b;
-    }
-    case DisplayKind::Sum: {
-        MathBox b;
-        const double gap = script ? 0 : mediumSpace * e;
-        for (std::size_t i = 0; i < n.children.size(); ++i) {
-            const MathBox sign = op(n.negative[i] ? QString(QChar(0x2212)) : QString("+"), size);
-            if (i == 0) {
-                if (n.negative[i]) hcat(b, sign);
-            } else {
-                hcat(b, sign, gap);
-                b.width += gap;
+        case DisplayKind::Symbol: return symbolBox(n, size);
+        case DisplayKind::Number: {
+            MathBox b = run(QString::fromStdString(n.text), 0, size);
+            if (!n.exponent.empty()) {
+                hcat(b, op(QString(QChar(0x22C5)), size), thinSpace * e);
+                MathBox ten = run("10", 0, size);
+                const MathBox x = run(QString::fromStdString(n.exponent).replace('-', QChar(0x2212)), 0, scriptSize(size));
+                hcat(b, scripted(ten, nullptr, &x, size), thinSpace * e);
             }
-            hcat(b, layout(*n.children[i], size));
+            return b;
         }
-        return b;
-    }
-    case DisplayKind::Product: {
-        MathBox b;
-        for (std::size_t i = 0; i < n.children.size(); ++i) {
-            const DisplayNode& c = *n.children[i];
-            if (i > 0) {
-                if (c.kind == DisplayKind::Number) {  // 2·3: a centred dot, as a binary operator
-                    const double gap = script ? 0 : mediumSpace * e;
-                    hcat(b, op(QString(QChar(0x22C5)), size), gap);
-                    b.width += gap;
-                } else if (isWordNode(c) || isWordNode(*n.children[i - 1])) {
-                    b.width += thinSpace * e;
+        case DisplayKind::Sum: {
+            MathBox b;
+            const double gap = script ? 0 : mediumSpace * e;
+            for (std::size_t i = 0; i < n.children.size(); ++i) {
+                const MathBox sign = op(n.negative[i] ? QString(QChar(0x2212)) : QString("+"), size);
+                if (i == 0) {
+                    if (n.negative[i]) hcat(b, sign);
                 } else {
-                    b.width += 0.04 * e;  // letters of a product a hair apart
+                    hcat(b, sign, gap);
+                    b.width += gap;
                 }
+                hcat(b, layout(*n.children[i], size));
             }
-            hcat(b, layout(c, size));
+            return b;
         }
-        return b;
-    }
-    case DisplayKind::Fraction: return fractionBox(n, size);
-    case DisplayKind::Power: {
-        const DisplayNode &base = *n.children[0], &x = *n.children[1];
-        if (base.kind == DisplayKind::Function) return functionBox(base, size, &x);
-        if (base.kind == DisplayKind::Symbol) return symbolBox(base, size, &x);
-        const MathBox sup = layout(x, scriptSize(size));
-        const bool italic = base.kind == DisplayKind::Symbol && !base.upright;
-        return scripted(layout(base, size), nullptr, &sup, size, italic ? 0.03 * e : 0);
-    }
-    case DisplayKind::Root: {
-        const MathBox content = layout(*n.children[0], size);
-        MathBox b;
-        const double top = -content.ascent - 0.15 * e, height = content.ascent + content.descent + 0.15 * e;
-        hcat(b, bracket('r', top, height, size));
-        hcat(b, content, 0.05 * e);
-        MathPiece bar;
-        bar.kind = MathPiece::Rule;
-        bar.at = QPointF(b.width - content.width - 0.05 * e, top);
-        bar.width = content.width + 0.05 * e;
-        bar.height = ruleThickness * e;
-        b.pieces.push_back(bar);
-        b.ascent = std::max(b.ascent, -top);
-        return b;
-    }
-    case DisplayKind::Fence: return fenced(layout(*n.children[0], size), '(', ')', size);
-    case DisplayKind::Function: return functionBox(n, size, nullptr);
-    case DisplayKind::Matrix: return matrixBox(n, size);
-    case DisplayKind::Equation: {
-        MathBox b = layout(*n.children[0], size);
-        const double gap = script ? 0 : thickSpace * e;
-        std::string relation = n.text;
-        relation.erase(std::remove(relation.begin(), relation.end(), ' '), relation.end());
-        hcat(b, op(QString::fromStdString(relation), size), gap);
-        b.width += gap;
-        hcat(b, layout(*n.children[1], size));
-        return b;
-    }
-    case DisplayKind::List: {
-        MathBox items;
-        for (std::size_t i = 0; i < n.children.size(); ++i) {
-            if (i) hcat(items, run(",", 0, size)), items.width += thinSpace * e;
-            hcat(items, layout(*n.children[i], size));
+        case DisplayKind::Product: {
+            MathBox b;
+            for (std::size_t i = 0; i < n.children.size(); ++i) {
+                const DisplayNode& c = *n.children[i];
+                if (i > 0) {
+                    if (c.kind == DisplayKind::Number) {  // 2·3: a centred dot, as a binary operator
+                        const double gap = script ? 0 : mediumSpace * e;
+                        hcat(b, op(QString(QChar(0x22C5)), size), gap);
+                        b.width += gap;
+                    } else if (isWordNode(c) || isWordNode(*n.children[i - 1])) {
+                        b.width += thinSpace * e;
+                    } else {
+                        b.width += 0.04 * e;  // letters of a product a hair apart
+                    }
+                }
+                hcat(b, layout(c, size));
+            }
+            return b;
         }
-        MathBox b = run("{", 0, size);
-        hcat(b, items);
-        hcat(b, run("}", 0, size));
-        return b;
-    }
-    case DisplayKind::Raw: {
-        if (n.moreTerms > 0)  // a cut sum's rest (elided): words, so in the reader's language
-            return run(QCoreApplication::translate("MathTypesetter", "⋯ (%n more terms)", nullptr, static_cast<int>(n.moreTerms)), 0, size);
-        if (n.children.empty()) return run(QString::fromStdString(n.text), 0, size);
-        MathBox b;  // a row (a label's shown form, a formula's part): its children side by side
-        for (const present::DisplayPtr& c : n.children) hcat(b, layout(*c, size));
-        return b;
-    }
+        case DisplayKind::Fraction: return fractionBox(n, size);
+        case DisplayKind::Power: {
+            const DisplayNode &base = *n.children[0], &x = *n.children[1];
+            if (base.kind == DisplayKind::Function) return functionBox(base, size, &x);
+            if (base.kind == DisplayKind::Symbol) return symbolBox(base, size, &x);
+            const MathBox sup = layout(x, scriptSize(size));
+            const bool italic = base.kind == DisplayKind::Symbol && !base.upright;
+            return scripted(layout(base, size), nullptr, &sup, size, italic ? 0.03 * e : 0);
+        }
+        case DisplayKind::Root: {
+            const MathBox content = layout(*n.children[0], size);
+            MathBox b;
+            const double top = -content.ascent - 0.15 * e, height = content.ascent + content.descent + 0.15 * e;
+            hcat(b, bracket('r', top, height, size));
+            hcat(b, content, 0.05 * e);
+            MathPiece bar;
+            bar.kind = MathPiece::Rule;
+            bar.at = QPointF(b.width - content.width - 0.05 * e, top);
+            bar.width = content.width + 0.05 * e;
+            bar.height = ruleThickness * e;
+            b.pieces.push_back(bar);
+            b.ascent = std::max(b.ascent, -top);
+            return b;
+        }
+        case DisplayKind::Fence: return fenced(layout(*n.children[0], size), '(', ')', size);
+        case DisplayKind::Function: return functionBox(n, size, nullptr);
+        case DisplayKind::Matrix: return matrixBox(n, size);
+        case DisplayKind::Equation: {
+            MathBox b = layout(*n.children[0], size);
+            const double gap = script ? 0 : thickSpace * e;
+            std::string relation = n.text;
+            relation.erase(std::remove(relation.begin(), relation.end(), ' '), relation.end());
+            hcat(b, op(QString::fromStdString(relation), size), gap);
+            b.width += gap;
+            hcat(b, layout(*n.children[1], size));
+            return b;
+        }
+        case DisplayKind::List: {
+            MathBox items;
+            for (std::size_t i = 0; i < n.children.size(); ++i) {
+                if (i) hcat(items, run(",", 0, size)), items.width += thinSpace * e;
+                hcat(items, layout(*n.children[i], size));
+            }
+            MathBox b = run("{", 0, size);
+            hcat(b, items);
+            hcat(b, run("}", 0, size));
+            return b;
+        }
+        case DisplayKind::Raw: {
+            if (n.moreTerms > 0)  // a cut sum's rest (elided): words, so in the reader's language
+                return run(QCoreApplication::translate("MathTypesetter", "⋯ (%n more terms)", nullptr, static_cast<int>(n.moreTerms)), 0,
+                           size);
+            if (n.children.empty()) return run(QString::fromStdString(n.text), 0, size);
+            MathBox b;  // a row (a label's shown form, a formula's part): its children side by side
+            for (const present::DisplayPtr& c : n.children) hcat(b, layout(*c, size));
+            return b;
+        }
     }
     return {};
 }
@@ -509,40 +506,38 @@ void bracketShapes(const MathPiece& b, double scale, std::vector<MathMarks::Shap
     const double x0 = r.left() + 0.1 * e * scale, x1 = r.right() - 0.08 * e * scale;
     const auto rect = [&](const QRectF& box) { out.push_back({Shape::Rect, box, {}, 0}); };
     switch (b.bracket) {
-    case '[':
-    case ']': {
-        const bool open = b.bracket == '[';
-        const double stem = open ? x0 : x1, arm = open ? x1 : x0;
-        rect(QRectF(std::min(stem, stem + (open ? 0 : -t * scale)), r.top(), t * scale, r.height()));
-        rect(QRectF(std::min(stem, arm), r.top(), std::abs(arm - stem), t * scale * 0.9));
-        rect(QRectF(std::min(stem, arm), r.bottom() - t * scale * 0.9, std::abs(arm - stem), t * scale * 0.9));
-        return;
-    }
-    case '(':
-    case ')': {
-        // A crescent: outer and inner curves through the ends, thickest in the middle.
-        const bool open = b.bracket == '(';
-        const double dir = open ? 1 : -1, mid = r.center().y();
-        const double tip = open ? x1 : x0, bulge = open ? x0 - 0.12 * e * scale : x1 + 0.12 * e * scale;
-        path.moveTo(tip, r.top());
-        path.quadTo(bulge, mid, tip, r.bottom());
-        path.quadTo(bulge + dir * 2.2 * t * scale, mid, tip, r.top());
-        path.closeSubpath();
-        out.push_back({Shape::Fill, {}, path, 0});
-        return;
-    }
-    case '|':
-        rect(QRectF(r.center().x() - t * scale / 2, r.top(), t * scale, r.height()));
-        return;
-    case 'r': {  // radical sign
-        path.moveTo(r.left(), r.bottom() - r.height() * 0.35);
-        path.lineTo(r.left() + r.width() * 0.3, r.bottom() - r.height() * 0.42);
-        path.lineTo(r.left() + r.width() * 0.55, r.bottom());
-        path.lineTo(r.right(), r.top() + t * scale / 2);
-        out.push_back({Shape::Stroke, {}, path, t * scale});
-        return;
-    }
-    default: return;
+        case '[':
+        case ']': {
+            const bool open = b.bracket == '[';
+            const double stem = open ? x0 : x1, arm = open ? x1 : x0;
+            rect(QRectF(std::min(stem, stem + (open ? 0 : -t * scale)), r.top(), t * scale, r.height()));
+            rect(QRectF(std::min(stem, arm), r.top(), std::abs(arm - stem), t * scale * 0.9));
+            rect(QRectF(std::min(stem, arm), r.bottom() - t * scale * 0.9, std::abs(arm - stem), t * scale * 0.9));
+            return;
+        }
+        case '(':
+        case ')': {
+            // A crescent: outer and inner curves through the ends, thickest in the middle.
+            const bool open = b.bracket == '(';
+            const double dir = open ? 1 : -1, mid = r.center().y();
+            const double tip = open ? x1 : x0, bulge = open ? x0 - 0.12 * e * scale : x1 + 0.12 * e * scale;
+            path.moveTo(tip, r.top());
+            path.quadTo(bulge, mid, tip, r.bottom());
+            path.quadTo(bulge + dir * 2.2 * t * scale, mid, tip, r.top());
+            path.closeSubpath();
+            out.push_back({Shape::Fill, {}, path, 0});
+            return;
+        }
+        case '|': rect(QRectF(r.center().x() - t * scale / 2, r.top(), t * scale, r.height())); return;
+        case 'r': {  // radical sign
+            path.moveTo(r.left(), r.bottom() - r.height() * 0.35);
+            path.lineTo(r.left() + r.width() * 0.3, r.bottom() - r.height() * 0.42);
+            path.lineTo(r.left() + r.width() * 0.55, r.bottom());
+            path.lineTo(r.right(), r.top() + t * scale / 2);
+            out.push_back({Shape::Stroke, {}, path, t * scale});
+            return;
+        }
+        default: return;
     }
 }
 
@@ -640,9 +635,7 @@ std::size_t leafCount(const DisplayNode& n) {
     return count;
 }
 
-bool isFencedSum(const DisplayNode& n) {
-    return n.kind == DisplayKind::Fence && n.children[0]->kind == DisplayKind::Sum;
-}
+bool isFencedSum(const DisplayNode& n) { return n.kind == DisplayKind::Fence && n.children[0]->kind == DisplayKind::Sum; }
 
 // A node as pieces a line may break between (before the signs of its sums).
 void chunks(const DisplayNode& n, std::vector<Chunk>& out, double maxWidth) {
@@ -726,8 +719,10 @@ std::vector<MathBox> layoutItem(const present::DisplayItem& item, double maxWidt
     const std::size_t rows = rhs.rows.size(), cols = rows ? rhs.rows[0].size() : 0;
     const bool zeros = present::hasZeroEntry(rhs);  // zero entries are left out (B_m of the PUMA: 30 of 36), and said so
     const auto words = [&](ll::MessageId id) { return QString::fromStdString(present::messageText(id, language)); };
-    hcat(head, layoutText(QString(" (%1×%2), ").arg(rows).arg(cols) + words(ll::MessageId::DocumentEntryByEntry) +
-                          (zeros ? ", " + words(ll::MessageId::DocumentZerosLeftOut) + ":" : QString(":"))), 0.3 * e);
+    hcat(head,
+         layoutText(QString(" (%1×%2), ").arg(rows).arg(cols) + words(ll::MessageId::DocumentEntryByEntry) +
+                    (zeros ? ", " + words(ll::MessageId::DocumentZerosLeftOut) + ":" : QString(":"))),
+         0.3 * e);
     std::vector<MathBox> lines{head};
     for (std::size_t i = 0; i < rows; ++i)
         for (std::size_t j = 0; j < cols; ++j) {
@@ -820,31 +815,32 @@ void collectMarks(const MathBox& box, QPointF origin, double scale, MathMarks& m
     // pages.
     for (const MathPiece& p : box.pieces) {
         switch (p.kind) {
-        case MathPiece::Text: {
-            // Fonts are set in device pixels: scale the pixel size, not the painter, so
-            // the PDF keeps real text at the right size.
-            const int pixels = std::max(1, static_cast<int>(std::lround(mathUnitsPerEm * p.size * scale)));
-            const QPointF at = p.at * scale;
-            const int link = byLink ? p.link : -1;
-            for (const QGlyphRun& run : shapedRuns(p.font, pixels, p.text)) {
-                const QRawFont raw = run.rawFont();
-                auto same = std::find_if(marks.glyphs.begin(), marks.glyphs.end(),
-                                         [&](const MathMarks::Glyphs& g) { return g.font == raw && g.link == link; });
-                if (same == marks.glyphs.end()) same = marks.glyphs.insert(marks.glyphs.end(), MathMarks::Glyphs{raw, {}, {}, link});
-                same->indexes.append(run.glyphIndexes());
-                for (const QPointF& position : run.positions()) same->positions.append(origin + (position + at));
+            case MathPiece::Text: {
+                // Fonts are set in device pixels: scale the pixel size, not the painter, so
+                // the PDF keeps real text at the right size.
+                const int pixels = std::max(1, static_cast<int>(std::lround(mathUnitsPerEm * p.size * scale)));
+                const QPointF at = p.at * scale;
+                const int link = byLink ? p.link : -1;
+                for (const QGlyphRun& run : shapedRuns(p.font, pixels, p.text)) {
+                    const QRawFont raw = run.rawFont();
+                    auto same = std::find_if(marks.glyphs.begin(), marks.glyphs.end(),
+                                             [&](const MathMarks::Glyphs& g) { return g.font == raw && g.link == link; });
+                    if (same == marks.glyphs.end()) same = marks.glyphs.insert(marks.glyphs.end(), MathMarks::Glyphs{raw, {}, {}, link});
+                    same->indexes.append(run.glyphIndexes());
+                    for (const QPointF& position : run.positions()) same->positions.append(origin + (position + at));
+                }
+                break;
             }
-            break;
-        }
-        case MathPiece::Rule:
-            marks.shapes.push_back({MathMarks::Shape::Rect, QRectF(origin + p.at * scale, QSizeF(p.width * scale, p.height * scale)), {}, 0});
-            break;
-        case MathPiece::Bracket: {
-            MathPiece shifted = p;
-            shifted.at = p.at + (origin / scale);
-            bracketShapes(shifted, scale, marks.shapes);
-            break;
-        }
+            case MathPiece::Rule:
+                marks.shapes.push_back(
+                    {MathMarks::Shape::Rect, QRectF(origin + p.at * scale, QSizeF(p.width * scale, p.height * scale)), {}, 0});
+                break;
+            case MathPiece::Bracket: {
+                MathPiece shifted = p;
+                shifted.at = p.at + (origin / scale);
+                bracketShapes(shifted, scale, marks.shapes);
+                break;
+            }
         }
     }
 }
@@ -854,16 +850,16 @@ void paintMarks(QPainter& painter, const MathMarks& marks) {
     const QColor ink = painter.pen().color();
     for (const MathMarks::Shape& s : marks.shapes) {
         switch (s.kind) {
-        case MathMarks::Shape::Rect: painter.fillRect(s.rect, ink); break;
-        case MathMarks::Shape::Fill: painter.fillPath(s.path, ink); break;
-        case MathMarks::Shape::Stroke: {  // as svg_page writes it: square caps, bevelled joins, no fill
-            painter.save();
-            painter.setPen(QPen(ink, s.penWidth, Qt::SolidLine, Qt::SquareCap, Qt::BevelJoin));
-            painter.setBrush(Qt::NoBrush);
-            painter.drawPath(s.path);
-            painter.restore();
-            break;
-        }
+            case MathMarks::Shape::Rect: painter.fillRect(s.rect, ink); break;
+            case MathMarks::Shape::Fill: painter.fillPath(s.path, ink); break;
+            case MathMarks::Shape::Stroke: {  // as svg_page writes it: square caps, bevelled joins, no fill
+                painter.save();
+                painter.setPen(QPen(ink, s.penWidth, Qt::SolidLine, Qt::SquareCap, Qt::BevelJoin));
+                painter.setBrush(Qt::NoBrush);
+                painter.drawPath(s.path);
+                painter.restore();
+                break;
+            }
         }
     }
     // After the rules and brackets, each font's glyphs as one run.

@@ -34,10 +34,10 @@ namespace ll::ui {
 // One thing to draw, relative to the box's origin on its baseline (y grows downwards).
 struct MathPiece {
     enum Kind { Text, Rule, Bracket } kind = Text;
-    QPointF at;        // Text: baseline start; Rule: top-left; Bracket: top-left
-    QString text;      // Text
-    int font = 0;      // Text: 0 roman, 1 italic, 2 math (Greek, operators)
-    double size = 1;   // Text: relative size (1 normal, 0.7 script)
+    QPointF at;                    // Text: baseline start; Rule: top-left; Bracket: top-left
+    QString text;                  // Text
+    int font = 0;                  // Text: 0 roman, 1 italic, 2 math (Greek, operators)
+    double size = 1;               // Text: relative size (1 normal, 0.7 script)
     double width = 0, height = 0;  // Rule, Bracket
     char bracket = '[';            // Bracket: [ ] ( ) |
     int link = -1;                 // Text: a link's inertial parameter (m2, ℓc2), drawn in its colour by the window
@@ -80,8 +80,7 @@ std::vector<MathBox> layoutEquation(const present::DisplayNode& equation, double
 // An item of a derivation the same way; a matrix too wide becomes its entries listed
 // under it, each named as core/present/labels.hpp names them (b11 = …, each breaking the
 // same way).
-std::vector<MathBox> layoutItem(const present::DisplayItem& item, double maxWidth,
-                                present::Language language = present::Language::English);
+std::vector<MathBox> layoutItem(const present::DisplayItem& item, double maxWidth, present::Language language = present::Language::English);
 
 // A step's general formula (core/present/latex_formula.hpp): its parts side by side,
 // 2 em apart, a new line where the next part would pass maxWidth.
@@ -108,9 +107,9 @@ struct MathMarks {
     };
     struct Shape {
         enum Kind { Rect, Fill, Stroke } kind = Rect;
-        QRectF rect;         // Rect: filled
-        QPainterPath path;   // Fill: filled (its own fill rule); Stroke: drawn with the pen
-        double penWidth = 0; // Stroke
+        QRectF rect;          // Rect: filled
+        QPainterPath path;    // Fill: filled (its own fill rule); Stroke: drawn with the pen
+        double penWidth = 0;  // Stroke
     };
     std::vector<Glyphs> glyphs;
     std::vector<Shape> shapes;

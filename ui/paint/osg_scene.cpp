@@ -482,8 +482,8 @@ void OsgScene::setEmphasis(const VisualEmphasis& emphasis) {
             const float w = 0.35f + 0.65f * strength;
             setMaterial(solid, {faded.r + w * (c.r - faded.r), faded.g + w * (c.g - faded.g), faded.b + w * (c.b - faded.b), 1});
             auto* material = static_cast<osg::Material*>(solid.getStateSet()->getAttribute(osg::StateAttribute::MATERIAL));
-            material->setEmission(osg::Material::FRONT_AND_BACK, osg::Vec4(0.35f * strength * c.r, 0.35f * strength * c.g,
-                                                                        0.35f * strength * c.b, 1));
+            material->setEmission(osg::Material::FRONT_AND_BACK,
+                                  osg::Vec4(0.35f * strength * c.r, 0.35f * strength * c.g, 0.35f * strength * c.b, 1));
         }
         if (!axes_[i]) continue;
         const AxisMark mark = emphasis.active() && i < emphasis.axes.size() ? emphasis.axes[i] : AxisMark::None;

@@ -23,12 +23,12 @@
 namespace ll::ui {
 
 struct OsgSceneOptions {
-    bool frames = true;        // DH triads
-    bool frameLabels = true;   // their numbers beside them
-    bool trail = true;         // the end effector's recent path
-    bool grid = true;          // the ground grid
-    bool dropLines = true;     // a line from each centre of mass down to the ground, a dot at its foot
-    double labelPixels = 18;   // label height on screen [px]
+    bool frames = true;       // DH triads
+    bool frameLabels = true;  // their numbers beside them
+    bool trail = true;        // the end effector's recent path
+    bool grid = true;         // the ground grid
+    bool dropLines = true;    // a line from each centre of mass down to the ground, a dot at its foot
+    double labelPixels = 18;  // label height on screen [px]
 };
 
 class OsgScene {
@@ -76,16 +76,16 @@ private:
     osg::ref_ptr<osg::Group> groundGroup_;
     std::vector<osg::ref_ptr<osg::MatrixTransform>> parts_, frames_;
     std::vector<bool> stretch_;
-    std::vector<Rgba> built_;                                  // each part's colour as built
-    std::vector<Rgba> colours_;                                // and when its link is emphasised
-    std::vector<osg::ref_ptr<osg::MatrixTransform>> axes_;     // per part: a joint's axis line (null elsewhere)
+    std::vector<Rgba> built_;                               // each part's colour as built
+    std::vector<Rgba> colours_;                             // and when its link is emphasised
+    std::vector<osg::ref_ptr<osg::MatrixTransform>> axes_;  // per part: a joint's axis line (null elsewhere)
     std::vector<osg::ref_ptr<osg::Geode>> axisGeodes_;
     osg::ref_ptr<osg::Geometry> trail_;
     osg::ref_ptr<osg::MatrixTransform> moving_;
     osg::ref_ptr<osg::Geometry> drops_;
     osg::ref_ptr<osg::Group> dimensions_;
     std::vector<osg::ref_ptr<osgText::Text>> labels_;     // per frame (null: no label)
-    std::vector<osg::ref_ptr<osg::Geode>> leaderGeodes_;   // per frame: the line anchor → moved label
+    std::vector<osg::ref_ptr<osg::Geode>> leaderGeodes_;  // per frame: the line anchor → moved label
     osg::ref_ptr<osg::Geode> dropGeode_;
     double frameLength_ = 0.1;
 };

@@ -40,10 +40,10 @@ std::string pathData(const QPainterPath& path, double k) {
         const QPainterPath::Element e = path.elementAt(i);
         if (!d.empty()) d += ' ';
         switch (e.type) {
-        case QPainterPath::MoveToElement: d += 'M'; break;
-        case QPainterPath::LineToElement: d += 'L'; break;
-        case QPainterPath::CurveToElement: d += 'C'; break;
-        case QPainterPath::CurveToDataElement: break;
+            case QPainterPath::MoveToElement: d += 'M'; break;
+            case QPainterPath::LineToElement: d += 'L'; break;
+            case QPainterPath::CurveToElement: d += 'C'; break;
+            case QPainterPath::CurveToDataElement: break;
         }
         appendNumber(d, k * e.x);
         d += ' ';
@@ -55,11 +55,11 @@ std::string pathData(const QPainterPath& path, double k) {
 void appendEscaped(std::string& out, const std::string& text) {
     for (const char c : text) {
         switch (c) {
-        case '&': out += "&amp;"; break;
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '"': out += "&quot;"; break;
-        default: out += c;
+            case '&': out += "&amp;"; break;
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '"': out += "&quot;"; break;
+            default: out += c;
         }
     }
 }
@@ -133,29 +133,29 @@ std::string svgPage(const MathMarks& marks, QSizeF sizePt, const std::string& ti
     out += "</defs>\n<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n<g fill=\"#000000\" stroke=\"none\">\n";
     for (const MathMarks::Shape& s : marks.shapes) {
         switch (s.kind) {
-        case MathMarks::Shape::Rect:
-            out += "<rect x=\"";
-            appendNumber(out, k * s.rect.x());
-            out += "\" y=\"";
-            appendNumber(out, k * s.rect.y());
-            out += "\" width=\"";
-            appendNumber(out, k * s.rect.width());
-            out += "\" height=\"";
-            appendNumber(out, k * s.rect.height());
-            out += "\"/>\n";
-            break;
-        case MathMarks::Shape::Fill:
-            out += s.path.fillRule() == Qt::OddEvenFill ? "<path fill-rule=\"evenodd\" d=\"" : "<path d=\"";
-            out += pathData(s.path, k);
-            out += "\"/>\n";
-            break;
-        case MathMarks::Shape::Stroke:  // QPen's defaults: square caps, bevelled joins
-            out += "<path fill=\"none\" stroke=\"#000000\" stroke-linecap=\"square\" stroke-linejoin=\"bevel\" stroke-width=\"";
-            appendNumber(out, k * s.penWidth);
-            out += "\" d=\"";
-            out += pathData(s.path, k);
-            out += "\"/>\n";
-            break;
+            case MathMarks::Shape::Rect:
+                out += "<rect x=\"";
+                appendNumber(out, k * s.rect.x());
+                out += "\" y=\"";
+                appendNumber(out, k * s.rect.y());
+                out += "\" width=\"";
+                appendNumber(out, k * s.rect.width());
+                out += "\" height=\"";
+                appendNumber(out, k * s.rect.height());
+                out += "\"/>\n";
+                break;
+            case MathMarks::Shape::Fill:
+                out += s.path.fillRule() == Qt::OddEvenFill ? "<path fill-rule=\"evenodd\" d=\"" : "<path d=\"";
+                out += pathData(s.path, k);
+                out += "\"/>\n";
+                break;
+            case MathMarks::Shape::Stroke:  // QPen's defaults: square caps, bevelled joins
+                out += "<path fill=\"none\" stroke=\"#000000\" stroke-linecap=\"square\" stroke-linejoin=\"bevel\" stroke-width=\"";
+                appendNumber(out, k * s.penWidth);
+                out += "\" d=\"";
+                out += pathData(s.path, k);
+                out += "\"/>\n";
+                break;
         }
     }
     for (std::size_t r = 0; r < marks.glyphs.size(); ++r) {

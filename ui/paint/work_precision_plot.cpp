@@ -18,10 +18,9 @@
 namespace ll::ui {
 namespace {
 
-const QColor kPalette[] = {QColor(0x1f, 0x77, 0xb4), QColor(0xff, 0x7f, 0x0e), QColor(0x2c, 0xa0, 0x2c),
-                           QColor(0xd6, 0x27, 0x28), QColor(0x94, 0x67, 0xbd), QColor(0x8c, 0x56, 0x4b),
-                           QColor(0xe3, 0x77, 0xc2), QColor(0x7f, 0x7f, 0x7f), QColor(0xbc, 0xbd, 0x22),
-                           QColor(0x17, 0xbe, 0xcf)};
+const QColor kPalette[] = {QColor(0x1f, 0x77, 0xb4), QColor(0xff, 0x7f, 0x0e), QColor(0x2c, 0xa0, 0x2c), QColor(0xd6, 0x27, 0x28),
+                           QColor(0x94, 0x67, 0xbd), QColor(0x8c, 0x56, 0x4b), QColor(0xe3, 0x77, 0xc2), QColor(0x7f, 0x7f, 0x7f),
+                           QColor(0xbc, 0xbd, 0x22), QColor(0x17, 0xbe, 0xcf)};
 
 struct Range {
     int lo = 0, hi = 1;  // decades 10^lo .. 10^hi
@@ -57,7 +56,8 @@ QRectF drawPowerOfTen(QPainter& p, QPointF anchor, int exponent, int align, bool
         p.drawText(QPointF(x + w1, y - 0.45 * ascent), power);
         p.setFont(base);
     }
-    return QRectF(x, y - 0.45 * ascent - QFontMetricsF(small).ascent(), w1 + w2, 0.45 * ascent + QFontMetricsF(small).ascent() + QFontMetricsF(base).descent());
+    return QRectF(x, y - 0.45 * ascent - QFontMetricsF(small).ascent(), w1 + w2,
+                  0.45 * ascent + QFontMetricsF(small).ascent() + QFontMetricsF(base).descent());
 }
 
 // Every how many decades a label fits: labels `size` long (with a gap) on an axis
@@ -73,9 +73,8 @@ struct Series {
     std::vector<QPointF> points;  // (cpu, value), in setting order
 };
 
-void paintPanel(QPainter& p, const QRectF& box, const QString& title, const QString& yLabel,
-                const std::vector<Series>& series, Range xr, Range yr, double floorValue, const QString& floorLabel,
-                std::vector<QRectF>* tickLabels) {
+void paintPanel(QPainter& p, const QRectF& box, const QString& title, const QString& yLabel, const std::vector<Series>& series, Range xr,
+                Range yr, double floorValue, const QString& floorLabel, std::vector<QRectF>* tickLabels) {
     const QFontMetricsF fm(p.font());
     const QRectF plot = box.adjusted(fm.horizontalAdvance("10−00") + 34, fm.height() * 1.8, -12, -fm.height() * 2.8);
     const auto X = [&](double v) { return plot.left() + (std::log10(v) - xr.lo) / (xr.hi - xr.lo) * plot.width(); };
@@ -145,10 +144,8 @@ void paintPanel(QPainter& p, const QRectF& box, const QString& title, const QStr
         QPainterPath path;
         for (size_t k = 0; k < s.points.size(); ++k) {
             const QPointF q(X(s.points[k].x()), Y(s.points[k].y()));
-            if (k == 0)
-                path.moveTo(q);
-            else
-                path.lineTo(q);
+            if (k == 0) path.moveTo(q);
+            else path.lineTo(q);
         }
         p.setPen(QPen(s.color, 2.0));
         p.setBrush(Qt::NoBrush);
@@ -204,9 +201,7 @@ void paintWorkPrecision(QPainter& p, const QRectF& area, const WorkPrecisionResu
     titleFont.setBold(true);
     p.setFont(titleFont);
     p.drawText(QRectF(area.left(), area.top() + 4, area.width(), fm.height() * 1.6), Qt::AlignCenter,
-               QString("What accuracy costs: %1, %2 s simulated")
-                   .arg(QString::fromStdString(result.scene))
-                   .arg(result.duration));
+               QString("What accuracy costs: %1, %2 s simulated").arg(QString::fromStdString(result.scene)).arg(result.duration));
     p.setFont(font);
     p.drawText(QRectF(area.left(), area.top() + fm.height() * 1.7, area.width(), fm.height() * 1.3), Qt::AlignCenter,
                QString("reference: %1 at tol %2 (its own error ≈ %3); error = max |x − x_ref| / (1 + |x_ref|) over q and "
@@ -218,10 +213,9 @@ void paintWorkPrecision(QPainter& p, const QRectF& area, const WorkPrecisionResu
     const double panelW = (area.width() - legendW) / 2;
     const QRectF left(area.left(), area.top() + titleH, panelW, area.height() - titleH);
     const QRectF right(area.left() + panelW, area.top() + titleH, panelW, area.height() - titleH);
-    paintPanel(p, left, "final-state error vs CPU time", "final-state error", errors, xr, yr1,
-               result.reference.estimatedError, "reference error estimate", tickLabels);
-    paintPanel(p, right, "energy drift vs CPU time", "max relative energy drift |E − E0 − W| / E", drifts, xr, yr2, 0,
-               {}, tickLabels);
+    paintPanel(p, left, "final-state error vs CPU time", "final-state error", errors, xr, yr1, result.reference.estimatedError,
+               "reference error estimate", tickLabels);
+    paintPanel(p, right, "energy drift vs CPU time", "max relative energy drift |E − E0 − W| / E", drifts, xr, yr2, 0, {}, tickLabels);
 
     // legend
     const double lx = area.left() + 2 * panelW + 10;

@@ -22,7 +22,6 @@ void paintWorkPrecision(QPainter& painter, const QRectF& area, const WorkPrecisi
 
 // Writes `path` as SVG or PNG by its suffix (.svg, .png), atomically (saveFileAtomically,
 // no .bak). On failure returns false and says why in *error.
-bool saveWorkPrecisionPlot(const WorkPrecisionResult& result, const QString& path, QString* error = nullptr,
-                           QSize size = QSize(1500, 680));
+bool saveWorkPrecisionPlot(const WorkPrecisionResult& result, const QString& path, QString* error = nullptr, QSize size = QSize(1500, 680));
 
 }  // namespace ll::ui

@@ -43,9 +43,9 @@ bool Autosave::isOwnScene(const RecoveryCopy& copy) const {
 }
 
 QString Autosave::question(const RecoveryCopy& copy) const {
-    const QString name = copy.original.isEmpty() ? tr("a new scene that was never saved")
-                                                 : tr("%1 (in %2)").arg(QFileInfo(copy.original).fileName(),
-                                                                        QFileInfo(copy.original).absolutePath());
+    const QString name = copy.original.isEmpty()
+                             ? tr("a new scene that was never saved")
+                             : tr("%1 (in %2)").arg(QFileInfo(copy.original).fileName(), QFileInfo(copy.original).absolutePath());
     QString text = tr("LagrangeLab did not close normally while %1 had unsaved edits (autosaved %2).")
                        .arg(name, QLocale().toString(copy.written.toLocalTime(), QLocale::ShortFormat));
     SceneJson before = SceneJson::object();
@@ -55,8 +55,8 @@ QString Autosave::question(const RecoveryCopy& copy) const {
         } else {
             if (CrashRecovery::originalChanged(copy))
                 text += "\n\n" + tr("Warning: %1 has changed on disk since these edits were made. Restoring puts the "
-                                     "recovered scene on top of the file as it is now; undo returns to it.")
-                                      .arg(copy.original);
+                                    "recovered scene on top of the file as it is now; undo returns to it.")
+                                     .arg(copy.original);
             QFile f(copy.original);
             if (f.open(QIODevice::ReadOnly)) try {
                     before = SceneJson::parse(f.readAll().toStdString());

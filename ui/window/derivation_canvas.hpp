@@ -85,8 +85,7 @@ public:
 
     QString latex(int index) const {
         if (!step_ || index < 0 || index >= static_cast<int>(step_->items.size())) return {};
-        return QString::fromStdString(renderDisplay(*step_->items[static_cast<std::size_t>(index)].equation,
-                                                    present::DisplayStyle::Latex));
+        return QString::fromStdString(renderDisplay(*step_->items[static_cast<std::size_t>(index)].equation, present::DisplayStyle::Latex));
     }
 
 protected:
@@ -105,8 +104,8 @@ protected:
         const QFontMetricsF fm(headerFont);
         // The page's heading in the document's own language, as its title is.
         p.drawText(QPointF(margin, y + fm.ascent()),
-                   QString::fromStdString(present::messageText(MessageId::DocumentStep, language_) + " " + std::to_string(step_->number) + ". " +
-                                          present::messageText(step_->title, language_)));
+                   QString::fromStdString(present::messageText(MessageId::DocumentStep, language_) + " " + std::to_string(step_->number) +
+                                          ". " + present::messageText(step_->title, language_)));
         y += fm.height() * 1.2;
         p.setPen(palette().color(QPalette::PlaceholderText));
         if (step_->formula) {  // the general formula typeset, smaller than the results
@@ -119,8 +118,9 @@ protected:
         } else {
             p.drawText(QRectF(margin, y, width() - 2 * margin, fm.height() * 3), Qt::TextWordWrap,
                        QString::fromStdString(step_->formulaText));
-            y += fm.boundingRect(QRectF(0, 0, width() - 2 * margin, 1e6), Qt::TextWordWrap,
-                                 QString::fromStdString(step_->formulaText)).height() + fm.height() * 0.5;
+            y += fm.boundingRect(QRectF(0, 0, width() - 2 * margin, 1e6), Qt::TextWordWrap, QString::fromStdString(step_->formulaText))
+                     .height() +
+                 fm.height() * 0.5;
         }
         for (std::size_t i = 0; i < entries_.size(); ++i) {
             Entry& e = entries_[i];
@@ -137,8 +137,8 @@ protected:
             if (!item.note.empty()) {  // what the name means (the structured form)
                 const double x = margin + fm.horizontalAdvance(head + "  ");
                 p.setPen(palette().color(QPalette::PlaceholderText));
-                p.drawText(QPointF(x, y + fm.ascent()),
-                           fm.elidedText(QString::fromStdString(present::messageText(item.note, language_)), Qt::ElideRight, std::max(0.0, width() - margin - x)));
+                p.drawText(QPointF(x, y + fm.ascent()), fm.elidedText(QString::fromStdString(present::messageText(item.note, language_)),
+                                                                      Qt::ElideRight, std::max(0.0, width() - margin - x)));
             }
             y += fm.height() * 1.1;
             if (e.collapsed) continue;
@@ -154,7 +154,7 @@ protected:
                             if (r.row == m.row && r.col == m.col)
                                 p.fillRect(QRectF(origin + r.rect.topLeft() * s, r.rect.size() * s), m.colour);
                 if (bottom >= event->rect().top() && top <= event->rect().bottom())  // paint only what is exposed
-                    paintMath(p, line, origin, s, true);  // each link's parameters in its colour
+                    paintMath(p, line, origin, s, true);                             // each link's parameters in its colour
                 y = bottom + 0.35 * mathUnitsPerEm * s;
             }
             y += 0.4 * mathUnitsPerEm * s;

@@ -123,7 +123,7 @@ void DerivationPanel::setDerivation(const DerivationResult& result) {
         spans_ = result.textSpans;
         readHeadings(result.display ? result.display->language : present::Language::English);
         view_->verticalScrollBar()->setValue(bar);
-        showStep(step_);  // or the next step this derivation has
+        showStep(step_);          // or the next step this derivation has
         emit stepChanged(step_);  // the count may have changed
     }
     emit derived();

@@ -79,7 +79,9 @@ void DerivationView::relist() {
     for (const auto& [n, title] : rows) numbers.push_back(n);
     bool retitled = false;  // the same steps in another language
     for (int i = 0; i < steps_->count() && i < static_cast<int>(rows.size()); ++i)
-        retitled = retitled || steps_->item(i)->text() != tr("Step %1: %2").arg(rows[static_cast<std::size_t>(i)].first).arg(rows[static_cast<std::size_t>(i)].second);
+        retitled =
+            retitled || steps_->item(i)->text() !=
+                            tr("Step %1: %2").arg(rows[static_cast<std::size_t>(i)].first).arg(rows[static_cast<std::size_t>(i)].second);
     if (numbers != listed_ || retitled || steps_->count() != static_cast<int>(rows.size())) {
         const QSignalBlocker quiet(steps_);
         steps_->clear();
@@ -154,17 +156,14 @@ void DerivationView::setDerivation(std::shared_ptr<const present::DisplayDocumen
 
 // What the derivation shown is, or why there is none.
 void DerivationView::showStatus() {
-    if (deriving_)
-        status_->setText(tr("Deriving…"));
-    else if (!document_ && error_.isEmpty())
-        status_->setText(tr("No scene"));
-    else if (!error_.isEmpty() || !document_)
-        status_->setText(tr("Error: %1").arg(error_));
-    else if (document_->form.empty())
-        status_->setText(QString::fromStdString(document_->systemName));
+    if (deriving_) status_->setText(tr("Deriving…"));
+    else if (!document_ && error_.isEmpty()) status_->setText(tr("No scene"));
+    else if (!error_.isEmpty() || !document_) status_->setText(tr("Error: %1").arg(error_));
+    else if (document_->form.empty()) status_->setText(QString::fromStdString(document_->systemName));
     else
-        status_->setText(tr("%1 (%2 form)").arg(QString::fromStdString(document_->systemName),
-                                                document_->form.id == MessageId::FormStructured ? tr("structured") : tr("expanded")));
+        status_->setText(tr("%1 (%2 form)")
+                             .arg(QString::fromStdString(document_->systemName),
+                                  document_->form.id == MessageId::FormStructured ? tr("structured") : tr("expanded")));
 }
 
 void DerivationView::accept(std::shared_ptr<const present::DisplayDocument> document, QString error) {

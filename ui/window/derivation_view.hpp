@@ -106,7 +106,7 @@ private:
     int lastStep() const { return listed_.back(); }
     void relist();
     std::vector<int> listed_;  // the step numbers listed, ascending (9: the pose results)
-    NewestWins derivations_;  // setScene's own derivations, and the documents set from outside
+    NewestWins derivations_;   // setScene's own derivations, and the documents set from outside
     QThreadPool pool_;
     int step_ = 0;
     double zoom_ = 1.0;

@@ -172,14 +172,14 @@ void DhStepPanel::refresh() {
     for (int k = 0; k < 4; ++k) {
         const ElementaryMotion& m = motions[static_cast<std::size_t>(k)];
         QString f = QString("%1(%2)").arg(op(m.kind), name(m.parameter));
-        if (k < done_) f = QString("<span style='color:#1a7f37'>%1</span>").arg(f);  // done
+        if (k < done_) f = QString("<span style='color:#1a7f37'>%1</span>").arg(f);    // done
         else if (k == current) f = QString("<b style='color:#c0392b'>%1</b>").arg(f);  // next
         else f = QString("<span style='color:#888'>%1</span>").arg(f);
         factors += (k ? " " : "") + f;
     }
     QString lines = QString("<p style='font-size:large'>A<sub>%1</sub> = %2</p>").arg(i).arg(factors);
-    lines += "<p>" + tr("Frame %1 becomes frame %2 by four motions, each along or about an axis of the moving frame.")
-                         .arg(i - 1).arg(i) + "</p><ol>";
+    lines += "<p>" + tr("Frame %1 becomes frame %2 by four motions, each along or about an axis of the moving frame.").arg(i - 1).arg(i) +
+             "</p><ol>";
     for (int k = 0; k < 4; ++k) {
         const ElementaryMotion& m = motions[static_cast<std::size_t>(k)];
         const QString value = m.rotates() ? QString("%1 rad (%2°)").arg(m.amount, 0, 'g', 4).arg(m.amount * 180 / M_PI, 0, 'f', 1)
@@ -204,8 +204,7 @@ void DhStepPanel::refresh() {
     table += "</table><p>" + tr("lengths in m") + "</p>";
     matrix_->setText(table);
     emit stepChanged(joint_, done_, 0.0);
-    emit parameterChanged(joint_, current >= 0 ? motions[static_cast<std::size_t>(current)].parameter
-                                               : motions[3].parameter);
+    emit parameterChanged(joint_, current >= 0 ? motions[static_cast<std::size_t>(current)].parameter : motions[3].parameter);
 }
 
 }  // namespace ll::ui

@@ -40,9 +40,9 @@ public:
     void setShowDimensions(bool on);
 
 public slots:
-    void next();      // the next motion, to the next row after the 4th
+    void next();  // the next motion, to the next row after the 4th
     void previous();
-    void animate();   // carries the next motion out over one second
+    void animate();  // carries the next motion out over one second
 
 signals:
     // The moving frame: row joint+1 after `done` motions and `fraction` of the next.

@@ -85,9 +85,9 @@ void EntryLinking::selectionChanged() {
     // The teach panel tints the same entry of its B(q) or g(q).
     if (const CatalogueEntry* picked = selection_.entry(); picked && picked->row >= 0) {
         using present::Quantity;
-        const Quantity q = picked->quantity == Quantity::MassMatrixEntry   ? Quantity::MassMatrix
-                           : picked->quantity == Quantity::GravityEntry    ? Quantity::GravityVector
-                                                                           : picked->quantity;
+        const Quantity q = picked->quantity == Quantity::MassMatrixEntry ? Quantity::MassMatrix
+                           : picked->quantity == Quantity::GravityEntry  ? Quantity::GravityVector
+                                                                         : picked->quantity;
         parts_.teach->matrices().setMark(q, picked->row, picked->col);
     } else if (picked && picked->quantity == present::Quantity::PotentialEnergy) {
         parts_.teach->matrices().setMark(picked->quantity);

@@ -22,8 +22,7 @@ QColor colourOf(int link, int alpha = 255) {
 
 }  // namespace
 
-EntryListModel::EntryListModel(const EntrySelection& selection, QObject* parent)
-    : QAbstractTableModel(parent), selection_(selection) {}
+EntryListModel::EntryListModel(const EntrySelection& selection, QObject* parent) : QAbstractTableModel(parent), selection_(selection) {}
 
 void EntryListModel::reset() {
     beginResetModel();
@@ -116,10 +115,8 @@ void EntryList::setFilter(const QString& text) { search_->setText(text); }
 int EntryList::shownRows() const { return filter_->rowCount(); }
 
 void EntryList::catalogueOrPickChanged() {
-    if (model_->rowCount() != (selection_.catalogue() ? static_cast<int>(selection_.catalogue()->entries.size()) : 0))
-        model_->reset();
-    else
-        emit model_->dataChanged(model_->index(0, 0), model_->index(std::max(0, model_->rowCount() - 1), EntryListModel::ColumnCount - 1));
+    if (model_->rowCount() != (selection_.catalogue() ? static_cast<int>(selection_.catalogue()->entries.size()) : 0)) model_->reset();
+    else emit model_->dataChanged(model_->index(0, 0), model_->index(std::max(0, model_->rowCount() - 1), EntryListModel::ColumnCount - 1));
     picking_ = true;
     if (const CatalogueEntry* e = selection_.entry()) {
         const int row = static_cast<int>(e - selection_.catalogue()->entries.data());

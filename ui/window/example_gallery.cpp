@@ -32,7 +32,8 @@ ExampleGallery::ExampleGallery(QWidget* parent) : QDialog(parent) {
         QFile f(path);
         QString name = QFileInfo(file).completeBaseName();
         if (f.open(QIODevice::ReadOnly))
-            if (const QString typed = QJsonDocument::fromJson(f.readAll()).object().value("name").toString(); !typed.isEmpty()) name = typed;
+            if (const QString typed = QJsonDocument::fromJson(f.readAll()).object().value("name").toString(); !typed.isEmpty())
+                name = typed;
         const QString picture = ":/thumbnails/" + QFileInfo(file).completeBaseName() + ".png";
         const bool has = QFile::exists(picture);
         auto* item = new QListWidgetItem(has ? QIcon(picture) : QIcon(), name, list_);

@@ -83,7 +83,8 @@ void ExportActions::askScreenshot() {
 }
 
 void ExportActions::askPlot() {
-    const QString path = QFileDialog::getSaveFileName(parts_.window, tr("Export plot"), "energy.png", tr("PNG (*.png);;SVG (*.svg);;CSV (*.csv)"));
+    const QString path =
+        QFileDialog::getSaveFileName(parts_.window, tr("Export plot"), "energy.png", tr("PNG (*.png);;SVG (*.svg);;CSV (*.csv)"));
     QString error;
     if (!path.isEmpty() && !plotTo(path, &error)) QMessageBox::critical(parts_.window, tr("Export plot"), error);
 }
@@ -121,10 +122,8 @@ bool ExportActions::plotTo(const QString& path, QString* error) {
     TrajectoryChart* chart = parts_.plotTabs->currentWidget() == parts_.joints ? parts_.joints : parts_.energy;
     try {
         if (!shown_.result) throw std::runtime_error(tr("nothing to export: the simulation has not finished").toStdString());
-        if (path.endsWith(".csv", Qt::CaseInsensitive))
-            chart->exportCsv(path);
-        else
-            chart->exportImage(path);
+        if (path.endsWith(".csv", Qt::CaseInsensitive)) chart->exportCsv(path);
+        else chart->exportImage(path);
     } catch (const std::exception& e) {
         if (error) *error = shownError(e, windowLanguage());
         return false;
@@ -137,12 +136,9 @@ bool ExportActions::plotTo(const QString& path, QString* error) {
 // caller is a test or script (no dialog asked).
 void ExportActions::report(const QString& path, const QString& error, bool dialog) {
     QStatusBar* bar = parts_.window->statusBar();
-    if (error.isEmpty())
-        bar->showMessage(tr("Written: %1").arg(path), 10000);
-    else if (error != "cancelled" && dialog)
-        QMessageBox::critical(parts_.window, tr("Export"), error);
-    else
-        bar->showMessage(tr("Export of %1 stopped: %2").arg(path, error), 10000);
+    if (error.isEmpty()) bar->showMessage(tr("Written: %1").arg(path), 10000);
+    else if (error != "cancelled" && dialog) QMessageBox::critical(parts_.window, tr("Export"), error);
+    else bar->showMessage(tr("Export of %1 stopped: %2").arg(path, error), 10000);
 }
 
 bool ExportActions::derivationTo(const QString& path, QString* error) {
@@ -172,13 +168,13 @@ bool ExportActions::derivationTo(const QString& path, QString* error) {
                 if (!(suffix == "svg" ? writeSvg(pages, path, reason, &written) : writePng(pages, path, reason, &written)))
                     failure = QString::fromStdString(reason);
                 else if (written.size() > 1)
-                    shown = tr("%1 … %2 (%n pages)", nullptr, static_cast<int>(written.size())).arg(path, QFileInfo(written.back()).fileName());
+                    shown =
+                        tr("%1 … %2 (%n pages)", nullptr, static_cast<int>(written.size())).arg(path, QFileInfo(written.back()).fileName());
                 if (failure.isEmpty())
                     if (const auto older = pagesBeyond(path, static_cast<int>(written.size())); !older.empty())
-                        shown += (older.size() == 1
-                                      ? tr("; 1 page file of an earlier, longer export remains beside it, not deleted: %1")
-                                      : tr("; %n page files of an earlier, longer export remain beside it, not deleted: %1",
-                                           nullptr, static_cast<int>(older.size())))
+                        shown += (older.size() == 1 ? tr("; 1 page file of an earlier, longer export remains beside it, not deleted: %1")
+                                                    : tr("; %n page files of an earlier, longer export remain beside it, not deleted: %1",
+                                                         nullptr, static_cast<int>(older.size())))
                                      .arg(fileNameRange(older));
             } else {
                 const auto format = suffix == "tex" ? present::DocumentFormat::Latex : present::DocumentFormat::Text;
@@ -187,11 +183,14 @@ bool ExportActions::derivationTo(const QString& path, QString* error) {
         } catch (const std::exception& e) {
             failure = shownError(e, language);
         }
-        QMetaObject::invokeMethod(qApp, [self, path, shown, failure] {
-            if (!self) return;
-            self->report(shown, failure, self->parts_.window->isVisible());
-            emit self->finished(path, failure);
-        }, Qt::QueuedConnection);
+        QMetaObject::invokeMethod(
+            qApp,
+            [self, path, shown, failure] {
+                if (!self) return;
+                self->report(shown, failure, self->parts_.window->isVisible());
+                emit self->finished(path, failure);
+            },
+            Qt::QueuedConnection);
     });
     parts_.window->statusBar()->showMessage(tr("Writing %1…").arg(path));
     return true;
@@ -271,25 +270,33 @@ void ExportActions::onWorker(const QString& target, const QString& label, bool w
         connect(dialog, &QProgressDialog::canceled, this, [cancel] { cancel->store(true); });
         dialog->show();
     }
-    QThreadPool::globalInstance()->start([self = QPointer<ExportActions>(this), dialog, cancel, work = std::move(work), target, withDialog,
-                                          language = windowLanguage()] {
-        QString failure;
-        try {
-            work([dialog](double f) {
-                QMetaObject::invokeMethod(qApp, [dialog, f] {
-                    if (dialog) dialog->setValue(static_cast<int>(f * 1000));
-                }, Qt::QueuedConnection);
-            }, cancel.get());
-        } catch (const std::exception& e) {
-            failure = shownError(e, language);
-        }
-        QMetaObject::invokeMethod(qApp, [self, dialog, target, failure, withDialog] {
-            if (dialog) dialog->close();
-            if (!self) return;
-            self->report(target, failure, withDialog);
-            emit self->finished(target, failure);
-        }, Qt::QueuedConnection);
-    });
+    QThreadPool::globalInstance()->start(
+        [self = QPointer<ExportActions>(this), dialog, cancel, work = std::move(work), target, withDialog, language = windowLanguage()] {
+            QString failure;
+            try {
+                work(
+                    [dialog](double f) {
+                        QMetaObject::invokeMethod(
+                            qApp,
+                            [dialog, f] {
+                                if (dialog) dialog->setValue(static_cast<int>(f * 1000));
+                            },
+                            Qt::QueuedConnection);
+                    },
+                    cancel.get());
+            } catch (const std::exception& e) {
+                failure = shownError(e, language);
+            }
+            QMetaObject::invokeMethod(
+                qApp,
+                [self, dialog, target, failure, withDialog] {
+                    if (dialog) dialog->close();
+                    if (!self) return;
+                    self->report(target, failure, withDialog);
+                    emit self->finished(target, failure);
+                },
+                Qt::QueuedConnection);
+        });
 }
 
 }  // namespace ll::ui

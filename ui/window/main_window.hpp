@@ -140,9 +140,9 @@ private:
     OnScreen shown_;
     std::shared_ptr<const DerivationResult> derivedAsDerived_;  // as the worker made it (English, the notes' notation)
     std::vector<Eigen::Vector3d> effectorPath_;                 // end effector at every sample (the trail)
-    Eigen::VectorXd q_, qd_;                                     // the state shown
-    Relabel* relabel_ = nullptr;      // the window's own texts, set again when the language changes
-    EditFrame* editFrame_ = nullptr;  // one repaint per edit: the cell and its result together
+    Eigen::VectorXd q_, qd_;                                    // the state shown
+    Relabel* relabel_ = nullptr;                                // the window's own texts, set again when the language changes
+    EditFrame* editFrame_ = nullptr;                            // one repaint per edit: the cell and its result together
     QLabel* status_ = nullptr;
 
     std::unique_ptr<SceneFiles> files_;
@@ -156,7 +156,7 @@ private:
     std::unique_ptr<TeachMode> teachMode_;
 
     bool remembersLayout_ = false;
-    bool runFailed_ = false;  // the status line says why the newest run failed
+    bool runFailed_ = false;   // the status line says why the newest run failed
     int shownStructure_ = -1;  // joints/coordinates of the scene on screen (a change refits the camera)
     QString shownName_;
 };

@@ -62,8 +62,8 @@ ModelEditor::ModelEditor(SceneDocument& document, QWidget* parent) : QWidget(par
     tabs_->addTab(buildJsonPage(), QString());
     (*relabel_)([tabs = tabs_] {
         int i = 0;
-        for (const QString& title : {tr("DH"), tr("Inertials"), tr("Parameters"), tr("Initial && gravity"), tr("Solver"),
-                                     tr("Lagrangian"), tr("JSON")})
+        for (const QString& title :
+             {tr("DH"), tr("Inertials"), tr("Parameters"), tr("Initial && gravity"), tr("Solver"), tr("Lagrangian"), tr("JSON")})
             tabs->setTabText(i++, title);
     });
     connect(tabs_, &QTabWidget::currentChanged, this, &ModelEditor::refreshJson);
@@ -126,7 +126,8 @@ QWidget* ModelEditor::buildDhPage() {
     rowBar->addStretch(1);
     layout->addLayout(rowBar);
     connect(convention_, &QComboBox::activated, this, [this](int i) {
-        doc_.setValue("/robot/convention", convention_->itemData(i).toString().toStdString(), tr("Convention: %1").arg(convention_->itemText(i)));
+        doc_.setValue("/robot/convention", convention_->itemData(i).toString().toStdString(),
+                      tr("Convention: %1").arg(convention_->itemText(i)));
     });
     connect(degrees, &QCheckBox::toggled, joints_, &JointTableModel::setDegrees);
     return page;
@@ -152,10 +153,10 @@ QWidget* ModelEditor::buildInertialPage() {
     connect(fill, &QPushButton::clicked, this, [this, shape] {
         const int row = inertialView_->currentIndex().isValid() ? inertialView_->currentIndex().row() : 0;
         bool ok = false;
-        const QString dims = QInputDialog::getText(this, tr("Inertia from a shape"),
-                                                   tr("Joint %1, %2: dimensions in metres, comma-separated (numbers or parameters)")
-                                                       .arg(row + 1).arg(shape->currentText()),
-                                                   QLineEdit::Normal, "", &ok);
+        const QString dims = QInputDialog::getText(
+            this, tr("Inertia from a shape"),
+            tr("Joint %1, %2: dimensions in metres, comma-separated (numbers or parameters)").arg(row + 1).arg(shape->currentText()),
+            QLineEdit::Normal, "", &ok);
         if (ok) joints_->fillInertiaFromShape(row, shape->currentData().toString(), dims.split(','));
     });
     bar->addWidget(shape);
@@ -185,15 +186,16 @@ QWidget* ModelEditor::buildParameterPage() {
         if (!index.isValid()) return;
         const QString from = parameters_->row(index.row()).name;
         bool ok = false;
-        const QString to = QInputDialog::getText(this, tr("Rename parameter"), tr("New name of %1 (every expression using it follows):").arg(from),
-                                                 QLineEdit::Normal, from, &ok);
+        const QString to =
+            QInputDialog::getText(this, tr("Rename parameter"), tr("New name of %1 (every expression using it follows):").arg(from),
+                                  QLineEdit::Normal, from, &ok);
         QString error;
         if (ok && !renameParameter(from, to, &error)) QMessageBox::warning(this, tr("Rename parameter"), error);
     });
     connect(add, &QPushButton::clicked, this, [this] {
         bool ok = false;
-        const QString name = QInputDialog::getText(this, tr("Add parameter"), tr("Name (letters, digits, _; e.g. m3, l2, k):"),
-                                                   QLineEdit::Normal, "", &ok);
+        const QString name =
+            QInputDialog::getText(this, tr("Add parameter"), tr("Name (letters, digits, _; e.g. m3, l2, k):"), QLineEdit::Normal, "", &ok);
         if (!ok || name.isEmpty()) return;
         const QString value = QInputDialog::getText(this, tr("Add parameter"), tr("Value of %1 (a number, SI units):").arg(name),
                                                     QLineEdit::Normal, "1", &ok);
@@ -234,7 +236,8 @@ QWidget* ModelEditor::buildJsonPage() {
 }
 
 void ModelEditor::documentChanged(present::Language language) {
-    const std::string convention = doc_.value("/robot/convention").is_string() ? doc_.value("/robot/convention").get<std::string>() : "standard";
+    const std::string convention =
+        doc_.value("/robot/convention").is_string() ? doc_.value("/robot/convention").get<std::string>() : "standard";
     convention_->setCurrentIndex(convention == "modified" ? 1 : 0);
     jsonStale_ = true;
     refreshJson();
@@ -246,8 +249,9 @@ void ModelEditor::documentChanged(present::Language language) {
         const std::string& edited = doc_.lastEditedField();
         if (d.severity == Severity::Error && !edited.empty() && d.field.ends_with("]") &&
             d.field.find("robot.joints[") != std::string::npos && edited.rfind("robot.joints[", 0) == 0)
-            text += "\n" + tr("hint: it happened with your edit of %1")
-                               .arg(QString::fromStdString(present::messageText(Diagnostic{Severity::Error, edited, {}}.place(), language)));
+            text +=
+                "\n" + tr("hint: it happened with your edit of %1")
+                           .arg(QString::fromStdString(present::messageText(Diagnostic{Severity::Error, edited, {}}.place(), language)));
         auto* item = new QListWidgetItem(text, diagnostics_);
         item->setForeground(d.severity == Severity::Error ? QColor(180, 0, 0) : QColor(140, 100, 0));
     }

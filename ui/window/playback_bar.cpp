@@ -63,9 +63,7 @@ PlaybackBar::PlaybackBar(QWidget* parent) : QWidget(parent) {
     connect(&timer_, &QTimer::timeout, this, &PlaybackBar::tick);
     connect(play_, &QToolButton::clicked, this, &PlaybackBar::togglePlay);
     connect(restart_, &QToolButton::clicked, this, &PlaybackBar::restart);
-    connect(slider_, &QSlider::valueChanged, this, [this](int v) {
-        setTime(start_ + (end_ - start_) * v / kSliderSteps);
-    });
+    connect(slider_, &QSlider::valueChanged, this, [this](int v) { setTime(start_ + (end_ - start_) * v / kSliderSteps); });
     showTime();
 }
 

@@ -36,13 +36,14 @@ PresentationMode::PresentationMode(const WindowParts& parts) : parts_(parts) {
     // The keys, whichever widget has the focus (a button would take the space, the step
     // list the arrows); off otherwise, so the editors keep their keys. F (fit) is the 3D
     // view bar's shortcut, always on.
-    for (auto [key, slot] : std::initializer_list<std::pair<QKeySequence, std::function<void()>>>{
-             {Qt::Key_Space, [this] { parts_.playback->togglePlay(); }},
-             {Qt::Key_Right, [this] { parts_.derivation->nextStep(); }},
-             {Qt::Key_Left, [this] { parts_.derivation->previousStep(); }},
-             {Qt::Key_Plus, [this] { parts_.playback->faster(); }},
-             {Qt::Key_Minus, [this] { parts_.playback->slower(); }},
-             {Qt::Key_Escape, [this] { setOn(false); }}}) {
+    for (auto [key, slot] :
+         std::initializer_list<std::pair<QKeySequence, std::function<void()>>>{{Qt::Key_Space, [this] { parts_.playback->togglePlay(); }},
+                                                                               {Qt::Key_Right, [this] { parts_.derivation->nextStep(); }},
+                                                                               {Qt::Key_Left,
+                                                                                [this] { parts_.derivation->previousStep(); }},
+                                                                               {Qt::Key_Plus, [this] { parts_.playback->faster(); }},
+                                                                               {Qt::Key_Minus, [this] { parts_.playback->slower(); }},
+                                                                               {Qt::Key_Escape, [this] { setOn(false); }}}) {
         auto* action = new QAction(window);
         action->setShortcut(key);
         action->setShortcutContext(Qt::WindowShortcut);

@@ -68,17 +68,17 @@ void PropertiesPanel::setProperties(std::shared_ptr<const ModelProperties> prope
             badge = c.passed ? "<span style='color:#1a7f37;font-weight:bold'>✔ " + tr("pass") + "</span>"
                              : "<span style='color:#c62828;font-weight:bold'>✘ " + tr("fail") + "</span>";
             detail = QString("<tt>%1</tt> = %2 (%3 %4)")
-                         .arg(QString::fromStdString(c.key), withUnit(c.value, c.unit),
-                              c.atLeast ? tr("must stay above") : tr("tolerance"), withUnit(c.tolerance, c.unit));
+                         .arg(QString::fromStdString(c.key), withUnit(c.value, c.unit), c.atLeast ? tr("must stay above") : tr("tolerance"),
+                              withUnit(c.tolerance, c.unit));
             if (c.q.size() > 0)
-                detail += " · " + tr("worst at <a href='%1'>t = %2 s</a>, q = %3")
-                                      .arg(c.time, 0, 'g', 17)
-                                      .arg(readableNumber(c.time), poseText(c.q));
+                detail +=
+                    " · " +
+                    tr("worst at <a href='%1'>t = %2 s</a>, q = %3").arg(c.time, 0, 'g', 17).arg(readableNumber(c.time), poseText(c.q));
         }
-        html += QString("<tr><td valign='top' style='white-space:nowrap'>%1</td><td><b>%2</b><br>%3<br>"
-                        "<span style='color:#555'>%4</span></td></tr>")
-                    .arg(badge, QString::fromStdString(c.title).toHtmlEscaped(), detail,
-                         QString::fromStdString(c.explanation).toHtmlEscaped());
+        html +=
+            QString("<tr><td valign='top' style='white-space:nowrap'>%1</td><td><b>%2</b><br>%3<br>"
+                    "<span style='color:#555'>%4</span></td></tr>")
+                .arg(badge, QString::fromStdString(c.title).toHtmlEscaped(), detail, QString::fromStdString(c.explanation).toHtmlEscaped());
     }
     html += "</table>";
     body_->setText(html);

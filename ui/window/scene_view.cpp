@@ -143,8 +143,7 @@ void SceneView::rebuild() {
         osg_ = std::make_unique<OsgScene>(*visual_, options_);
         root_->addChild(osg_->root());
         for (std::size_t i = 0; i < visual_->parts.size(); ++i)
-            if (visual_->parts[i].role == PartRole::CentreOfMass)
-                osg_->setPartVisible(static_cast<int>(i), coms_);
+            if (visual_->parts[i].role == PartRole::CentreOfMass) osg_->setPartVisible(static_cast<int>(i), coms_);
         osg_->setDropLinesVisible(coms_);
         if (options_.trail) osg_->setTrail(trail_);
         if (emphasis_.strength.size() == visual_->parts.size()) osg_->setEmphasis(emphasis_);
@@ -157,7 +156,8 @@ void SceneView::rebuild() {
         // Translucent: blended, drawn after the opaque robot, not writing depth.
         osg::StateSet* ss = ghost_->root()->getOrCreateStateSet();
         ss->setMode(GL_BLEND, osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
-        ss->setAttributeAndModes(new osg::BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA), osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
+        ss->setAttributeAndModes(new osg::BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA),
+                                 osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
         auto* material = new osg::Material;
         material->setDiffuse(osg::Material::FRONT_AND_BACK, osg::Vec4(0.2f, 0.45f, 0.95f, 0.35f));
         material->setAmbient(osg::Material::FRONT_AND_BACK, osg::Vec4(0.1f, 0.2f, 0.5f, 0.35f));
@@ -258,7 +258,8 @@ int SceneView::jointAt(const QPoint& p) {
             for (std::size_t i = 0; i < visual_->parts.size(); ++i)
                 if (node == osg_->partTransform(static_cast<int>(i))) {
                     const VisualPart& part = visual_->parts[i];
-                    if (part.coordinate >= 0 && (part.role == PartRole::Joint || part.role == PartRole::Link || part.role == PartRole::CentreOfMass))
+                    if (part.coordinate >= 0 &&
+                        (part.role == PartRole::Joint || part.role == PartRole::Link || part.role == PartRole::CentreOfMass))
                         return part.coordinate;
                 }
     }

@@ -77,10 +77,8 @@ void TeachPanel::setScene(const Scene& scene) {
             auto* name = new QLabel(QString("q%1").arg(i + 1), row);
             auto* slider = new QSlider(Qt::Horizontal, row);
             const JointType type = scene.robot.joints[static_cast<std::size_t>(i)].dh.type;
-            if (type == JointType::Revolute)
-                slider->setRange(-1800, 1800);
-            else
-                slider->setRange(-1000, 1000);
+            if (type == JointType::Revolute) slider->setRange(-1800, 1800);
+            else slider->setRange(-1000, 1000);
             auto* value = new QLabel(row);
             value->setMinimumWidth(90);
             h->addWidget(name);
@@ -109,7 +107,8 @@ void TeachPanel::setPose(const Eigen::VectorXd& q) {
 
 void TeachPanel::slidersMoved() {
     if (!model_) return;
-    for (std::size_t i = 0; i < sliders_.size(); ++i) q_[static_cast<int>(i)] = sliders_[i]->value() * unitOf(model_->scene.robot.joints[i].dh.type);
+    for (std::size_t i = 0; i < sliders_.size(); ++i)
+        q_[static_cast<int>(i)] = sliders_[i]->value() * unitOf(model_->scene.robot.joints[i].dh.type);
     evaluate();
     emit poseChanged(q_);
 }
@@ -121,7 +120,7 @@ void TeachPanel::evaluate() {
     for (std::size_t i = 0; i < labels_.size(); ++i) {
         const double v = q_[static_cast<int>(i)];
         labels_[i]->setText(m.scene.robot.joints[i].dh.type == JointType::Revolute ? tr("%1°").arg(v * 180 / std::numbers::pi, 0, 'f', 1)
-                                                                                 : tr("%1 m").arg(v, 0, 'f', 3));
+                                                                                   : tr("%1 m").arg(v, 0, 'f', 3));
     }
 }
 

@@ -43,8 +43,8 @@ bool anyWork(const Trajectory& tr) {
     return std::any_of(tr.work.begin(), tr.work.end(), [](double w) { return std::abs(w) > 1e-12; });
 }
 
-const QColor kJointColours[] = {QColor(31, 119, 180), QColor(255, 127, 14), QColor(44, 160, 44), QColor(214, 39, 40),
-                                QColor(148, 103, 189), QColor(140, 86, 75), QColor(227, 119, 194), QColor(127, 127, 127)};
+const QColor kJointColours[] = {QColor(31, 119, 180),  QColor(255, 127, 14), QColor(44, 160, 44),   QColor(214, 39, 40),
+                                QColor(148, 103, 189), QColor(140, 86, 75),  QColor(227, 119, 194), QColor(127, 127, 127)};
 
 }  // namespace
 
@@ -73,8 +73,7 @@ TrajectoryChart::TrajectoryChart(Kind kind, QWidget* parent) : QChartView(new QC
     baseLegend_ = chart->legend()->font();
     (*new Relabel(this))([this] {
         axisX_->setTitleText(tr("t [s]"));
-        if (kind_ != Kind::Curves)
-            axisY_->setTitleText(kind_ == Kind::Energy ? tr("energy [J]") : tr("q [rad or m], q̇ [rad/s or m/s]"));
+        if (kind_ != Kind::Curves) axisY_->setTitleText(kind_ == Kind::Energy ? tr("energy [J]") : tr("q [rad or m], q̇ [rad/s or m/s]"));
         cursor_->setName(tr("t"));
         if (kind_ != Kind::Curves && !trajectory_.t.empty()) setTrajectory(Trajectory(trajectory_));  // the curves' names
     });
@@ -138,10 +137,12 @@ void TrajectoryChart::setTrajectory(const Trajectory& trajectory) {
         curves.push_back({tr("E"), QColor(128, 0, 160), Qt::SolidLine, decimated(traj.t, [&](int k) { return traj.E[k]; })});
         if (anyWork(traj)) {
             curves.push_back({tr("W"), QColor(200, 30, 30), Qt::SolidLine, decimated(traj.t, [&](int k) { return traj.work[k]; })});
-            curves.push_back({tr("E − W"), QColor(128, 0, 160), Qt::DotLine, decimated(traj.t, [&](int k) { return traj.E[k] - traj.work[k]; })});
+            curves.push_back(
+                {tr("E − W"), QColor(128, 0, 160), Qt::DotLine, decimated(traj.t, [&](int k) { return traj.E[k] - traj.work[k]; })});
         }
         if (hasGhost_)
-            curves.push_back({tr("E, ghost (%1)").arg(ghostLabel_), QColor(128, 0, 160, 150), Qt::DashLine, decimated(ghost_.t, [&](int k) { return ghost_.E[k]; })});
+            curves.push_back({tr("E, ghost (%1)").arg(ghostLabel_), QColor(128, 0, 160, 150), Qt::DashLine,
+                              decimated(ghost_.t, [&](int k) { return ghost_.E[k]; })});
     } else if (kind_ == Kind::Joints) {
         for (int i = 0; i < traj.n && i < 8; ++i) {
             const QString name = QString::fromStdString(traj.coordinateName(i));
@@ -256,9 +257,7 @@ void TrajectoryChart::resizeEvent(QResizeEvent* e) {
     setCursorTime(t);
 }
 
-void TrajectoryChart::setCursorTime(double t) {
-    cursor_->replace(QList<QPointF>{QPointF(t, yMin_), QPointF(t, yMax_)});
-}
+void TrajectoryChart::setCursorTime(double t) { cursor_->replace(QList<QPointF>{QPointF(t, yMin_), QPointF(t, yMax_)}); }
 
 int TrajectoryChart::curvePoints() const {
     int n = 0;
@@ -303,34 +302,37 @@ void TrajectoryChart::exportImage(const QString& path) {
 
 void TrajectoryChart::exportCsv(const QString& path) {
     const Trajectory& tr = trajectory_;
-    saveFileAtomically(path.toStdString(), [&](std::ostream& out) {
-        out.precision(12);
-        if (kind_ == Kind::Curves) {
-            out << "t [s]";
-            for (const Curve& c : curves_) out << ',' << c.name.toStdString();
-            out << '\n';
-            for (std::size_t k = 0; k < times_.size(); ++k) {
-                out << times_[k];
-                for (const Curve& c : curves_) out << ',' << (k < c.values.size() ? c.values[k] : 0.0);
+    saveFileAtomically(
+        path.toStdString(),
+        [&](std::ostream& out) {
+            out.precision(12);
+            if (kind_ == Kind::Curves) {
+                out << "t [s]";
+                for (const Curve& c : curves_) out << ',' << c.name.toStdString();
                 out << '\n';
-            }
-        } else if (kind_ == Kind::Energy) {
-            out << "t [s],Ekin [J],Epot [J],E [J],W [J]\n";
-            for (std::size_t k = 0; k < tr.size(); ++k)
-                out << tr.t[k] << ',' << tr.Ekin[k] << ',' << tr.Epot[k] << ',' << tr.E[k] << ',' << tr.work[k] << '\n';
-        } else {
-            out << "t [s]";
-            for (int i = 0; i < tr.n; ++i) out << ',' << tr.coordinateName(i);
-            for (int i = 0; i < tr.n; ++i) out << ",d" << tr.coordinateName(i) << "/dt";
-            out << '\n';
-            for (std::size_t k = 0; k < tr.size(); ++k) {
-                out << tr.t[k];
-                for (int i = 0; i < tr.n; ++i) out << ',' << tr.q[k][i];
-                for (int i = 0; i < tr.n; ++i) out << ',' << tr.qd[k][i];
+                for (std::size_t k = 0; k < times_.size(); ++k) {
+                    out << times_[k];
+                    for (const Curve& c : curves_) out << ',' << (k < c.values.size() ? c.values[k] : 0.0);
+                    out << '\n';
+                }
+            } else if (kind_ == Kind::Energy) {
+                out << "t [s],Ekin [J],Epot [J],E [J],W [J]\n";
+                for (std::size_t k = 0; k < tr.size(); ++k)
+                    out << tr.t[k] << ',' << tr.Ekin[k] << ',' << tr.Epot[k] << ',' << tr.E[k] << ',' << tr.work[k] << '\n';
+            } else {
+                out << "t [s]";
+                for (int i = 0; i < tr.n; ++i) out << ',' << tr.coordinateName(i);
+                for (int i = 0; i < tr.n; ++i) out << ",d" << tr.coordinateName(i) << "/dt";
                 out << '\n';
+                for (std::size_t k = 0; k < tr.size(); ++k) {
+                    out << tr.t[k];
+                    for (int i = 0; i < tr.n; ++i) out << ',' << tr.q[k][i];
+                    for (int i = 0; i < tr.n; ++i) out << ',' << tr.qd[k][i];
+                    out << '\n';
+                }
             }
-        }
-    }, Backup::None);
+        },
+        Backup::None);
 }
 
 }  // namespace ll::ui

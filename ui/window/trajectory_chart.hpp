@@ -75,7 +75,7 @@ private:
 
     Kind kind_;
     Trajectory trajectory_, ghost_;
-    std::vector<double> times_;   // Kind Curves: the times and curves shown
+    std::vector<double> times_;  // Kind Curves: the times and curves shown
     std::vector<Curve> curves_;
     bool hasGhost_ = false;
     QString ghostLabel_;  // the ghost run's integrator, named in the legend

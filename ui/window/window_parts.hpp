@@ -39,15 +39,15 @@ struct OnScreen {
 struct WindowParts {
     QMainWindow* window = nullptr;
     QDockWidget *modelDock = nullptr, *derivationDock = nullptr, *plotDock = nullptr;
-    ModelEditor* editor = nullptr;           // the model dock's tabs and checks
-    SceneView* view = nullptr;               // the 3D view
+    ModelEditor* editor = nullptr;  // the model dock's tabs and checks
+    SceneView* view = nullptr;      // the 3D view
     PlaybackBar* playback = nullptr;
-    QLabel* readout = nullptr;               // the picked entry's value, under the 3D view
-    DerivationPanel* derivation = nullptr;   // the derivation as text
-    DerivationView* typeset = nullptr;       // the derivation typeset
-    QTabWidget* derivationTabs = nullptr;    // typeset, text, entries
-    QTabWidget* plotTabs = nullptr;          // the plots dock's tabs
-    QWidget* energyPage = nullptr;           // the energy plot with the picked entry's plot beside it
+    QLabel* readout = nullptr;              // the picked entry's value, under the 3D view
+    DerivationPanel* derivation = nullptr;  // the derivation as text
+    DerivationView* typeset = nullptr;      // the derivation typeset
+    QTabWidget* derivationTabs = nullptr;   // typeset, text, entries
+    QTabWidget* plotTabs = nullptr;         // the plots dock's tabs
+    QWidget* energyPage = nullptr;          // the energy plot with the picked entry's plot beside it
     TrajectoryChart *energy = nullptr, *joints = nullptr, *entryChart = nullptr;
     TeachPanel* teach = nullptr;
     TorquePane* torques = nullptr;

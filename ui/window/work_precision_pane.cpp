@@ -106,12 +106,16 @@ void WorkPrecisionPane::run() {
         std::optional<WorkPrecisionResult> result;
         QString error;
         try {
-            result = ll::runWorkPrecision(scene, settings, [self, generation, language](double fraction, const Message& what) {
-                self->sweep_.deliver(self, generation, [self, fraction, text = QString::fromStdString(present::messageText(what, language))] {
-                    self->progress_->setValue(static_cast<int>(fraction * 1000));
-                    self->label_->setText(text);
-                });
-            }, stop.get());
+            result = ll::runWorkPrecision(
+                scene, settings,
+                [self, generation, language](double fraction, const Message& what) {
+                    self->sweep_.deliver(self, generation,
+                                         [self, fraction, text = QString::fromStdString(present::messageText(what, language))] {
+                                             self->progress_->setValue(static_cast<int>(fraction * 1000));
+                                             self->label_->setText(text);
+                                         });
+                },
+                stop.get());
             if (stop->load()) result.reset(), error = tr("cancelled");
             else if (result->status == SimulationStatus::Failed)  // the reference failed: no point to plot
                 error = QString::fromStdString(present::messageText(result->message, language)), result.reset();

@@ -48,7 +48,7 @@ private:
     QLabel* label_;
     QThreadPool pool_;
     bool introShown_ = true;  // the label still says what the sweep does (no run started)
-    NewestWins sweep_;  // Run again or Cancel: the older sweep stops, its results are dropped
+    NewestWins sweep_;        // Run again or Cancel: the older sweep stops, its results are dropped
 };
 
 }  // namespace ll::ui
