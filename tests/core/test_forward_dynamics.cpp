@@ -12,15 +12,32 @@
 
 // Count every heap allocation in this process, to show that a dynamics evaluation makes none.
 // The replacement is the process's, so it counts for every test of tests/core's program;
-// it only counts, malloc and free do the work.
+// it only counts, malloc and free do the work. Every form of new and delete that does not
+// take an alignment is replaced, so that no pair is split between ours and the library's
+// (or AddressSanitizer's): std::stable_sort's buffer comes from the nothrow new and goes
+// back through the sized delete, which with only the plain new replaced was an
+// alloc-dealloc mismatch under scripts/lab asan.
 static std::atomic<long> g_allocations{0};
-void* operator new(std::size_t size) {
+static void* counted(std::size_t size) noexcept {
     ++g_allocations;
-    if (void* p = std::malloc(size ? size : 1)) return p;
+    return std::malloc(size ? size : 1);
+}
+void* operator new(std::size_t size) {
+    if (void* p = counted(size)) return p;
     throw std::bad_alloc();
 }
+void* operator new[](std::size_t size) {
+    if (void* p = counted(size)) return p;
+    throw std::bad_alloc();
+}
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept { return counted(size); }
+void* operator new[](std::size_t size, const std::nothrow_t&) noexcept { return counted(size); }
 void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete[](void* p, const std::nothrow_t&) noexcept { std::free(p); }
 
 // A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
 namespace test_forward_dynamics {
