@@ -2,8 +2,8 @@
 
 #include <vector>
 
-#include "core/model/actuation.hpp"
 #include "core/present/latex_text.hpp"
+#include "core/present/localized_document.hpp"
 #include "core/present/message_text.hpp"
 
 namespace ll::present {
@@ -84,11 +84,7 @@ struct Writer {
                 case FormulaPiece::Kind::Letter: out += letter(p); break;
                 case FormulaPiece::Kind::Words: out += words(p); break;
                 case FormulaPiece::Kind::Actuation: {
-                    const std::string sentence = actuationText(p.actuated, p.coordinates,
-                                                               {messageText(MessageId::ActuationNoInputs, reader.language),
-                                                                messageText(MessageId::ActuationInputsOn, reader.language),
-                                                                messageText(MessageId::ActuationUnderactuated, reader.language),
-                                                                messageText(MessageId::ActuationFullyActuated, reader.language)});
+                    const std::string sentence = actuationSentence(p.actuated, p.coordinates, reader.language);
                     out += style == Spelling::Latex ? "\\text{" + latexText(sentence) + "}" : sentence;
                     break;
                 }
