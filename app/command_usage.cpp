@@ -11,7 +11,7 @@ struct CommandText {
     const char* summary;
 };
 
-constexpr std::array<CommandText, 11> commands{{
+constexpr std::array<CommandText, 12> commands{{
     {"eval", "SCENE --q v1,... --qd v1,... [--t T] [--tau v1,...]", "B, C, g, Q, q̈, E_kin, E_pot at one state, as JSON"},
     {"simulate",
      "SCENE [--duration T] [--integrator NAME] [--abs-tol X] [--rel-tol X] [--dt X]\n"
@@ -39,6 +39,12 @@ constexpr std::array<CommandText, 11> commands{{
     {"check", "SCENE [--duration T] [--format text|json]",
      "the model's properties along a simulated run: B positive definite and its condition, Ḃ − 2C\n"
      "skew, power balance, Newton–Euler against B q̈ + C q̇ + g, energy; exit 1 when one fails"},
+    {"check-answer",
+     "SCENE --entry ENTRY --answer \"...\" | --answer-file FILE.json [--format text|json] [--reveal]\n"
+     "[--symbolic] [--numeric] [--lang da|en]",
+     "a student's own answer for an entry of the derivation (b11, c121, g2, T_2^0(1,4), p_c2(1), E_kin,\n"
+     "equation1, dL/dx_dot) checked exactly: what was read, right or wrong, and which link, term or\n"
+     "slip; exit 0 right, 1 wrong, 2 unreadable"},
     {"integrators", "", "the integrators with order, kind and when to use each"},
     {"accuracy",
      "SCENE [--integrators a,b,...] [--tolerances 1e-3..1e-12] [--steps dt1,dt2,...] [--duration T]\n"
@@ -82,8 +88,9 @@ std::string overviewUsage() {
     std::string s = "usage: lagrangelab <command> [arguments]\n       lagrangelab --version\n"
                     "       lagrangelab [SCENE] [--screenshot FILE.png [--play SECONDS] [--step N] [--teach q1,q2,...]] [--size WxH]\n"
                     "           the window (default scene: examples/double_pendulum.json; 1280x800 unless --size);\n"
-                    "           with --screenshot it plays, shows a derivation step or poses the robot, saves the\n"
-                    "           whole window and exits; [--select ENTRY] [--pick-link I] [--at T] [--tab NAME]\n"
+                    "           with --screenshot it plays, shows a derivation step or poses the robot (--teach: one\n"
+                    "           value per joint, radians or metres), saves the whole window and exits;\n"
+                    "           [--select ENTRY] [--pick-link I] [--at T] [--tab NAME]\n"
                     "           [--joint J] [--derivation typeset|text|entries] picture a picked entry or link, a time,\n"
                     "           the Torques or Properties tab; --present starts in presentation mode (full screen, or\n"
                     "           --size with --screenshot); --dh-step I,K the DH step-through at joint I after K of its\n"
