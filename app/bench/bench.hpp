@@ -22,6 +22,8 @@ int gui(const std::vector<std::string>& scenes, int runs);
 // angles (bench_expanded_entries.cpp); benchChains(): its default scenes, docs/bench/chain8*.json.
 int expandedEntries(const std::vector<std::string>& scenes, const std::vector<std::string>& entries, int runs);
 std::vector<std::string> benchChains();
+// --answers: a student's answer checked, as a process and against a built key (bench_answers.cpp).
+int answers(int runs);
 // --linked: the entry catalogue, per-frame evaluation and the run's analysis (bench_linked.cpp).
 int linked(const std::vector<std::string>& scenes, int runs);
 
