@@ -487,10 +487,9 @@ AnswerCheck AnswerKey::check(const AnswerRequest& request) const {
         }
         if (same) {
             out.verdict = AnswerVerdict::Right;
-            if (!out.withValues) {
-                const ex difference = (symbolic::expandedTrigonometry(answer) - symbolic::expandedTrigonometry(right)).expand();
-                out.writtenDifferently = !difference.is_zero() && entry.kind != EntryKind::Equation;
-            }
+            // not the derivation's form term by term (GiNaC orders terms and factors itself, so
+            // another order alone is not "different"; factored or expanded is)
+            if (!out.withValues) out.writtenDifferently = !(answer - right).is_zero() && entry.kind != EntryKind::Equation;
             return out;
         }
         out.verdict = AnswerVerdict::Wrong;

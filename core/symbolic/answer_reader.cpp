@@ -441,11 +441,20 @@ private:
     ex power() {
         ex base = primary();
         if (isOp("^")) {
-            next();
-            const ex exponent = factor();
-            return GiNaC::pow(base, exponent);
+            const std::size_t at = next().position;
+            return GiNaC::pow(base, exponent(at));
         }
         return base;
+    }
+
+    // An exponent: a rational number of at most ±64 (b11's squares, a ½ power), so that
+    // no answer makes GiNaC compute 2^(10^10) exactly.
+    ex exponent(std::size_t caret) {
+        const ex e = factor();
+        if (!GiNaC::is_exactly_a<GiNaC::numeric>(e) || !GiNaC::ex_to<GiNaC::numeric>(e).is_rational() ||
+            GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(e)) > 64)
+            throw AnswerUnreadable(message(MessageId::AnswerExponent, std::to_string(caret)), caret);
+        return e;
     }
 
     ex primary() {
@@ -467,10 +476,10 @@ private:
 
     ex function(const std::string& which) {
         // sin^2(q2), sin² q2: the power of the function's value
-        std::optional<ex> exponent;
+        std::optional<ex> raised;  // sin^2: the function's value to that power
         if (isOp("^")) {
-            next();
-            exponent = primary();
+            const std::size_t at = next().position;
+            raised = exponent(at);
         }
         ex argument;
         if (isOp("(")) {
@@ -489,7 +498,7 @@ private:
         else if (which == "tan") value = GiNaC::sin(argument) / GiNaC::cos(argument);
         else if (which == "cot") value = GiNaC::cos(argument) / GiNaC::sin(argument);
         else value = GiNaC::sqrt(argument);
-        return exponent ? GiNaC::pow(value, *exponent) : value;
+        return raised ? GiNaC::pow(value, *raised) : value;
     }
 
     ex name() {
@@ -503,8 +512,8 @@ private:
             if (isFunctionName(last) && !names_.resolve(last)) return value * function(last);
             ex lastValue = *names_.resolve(last);
             if (isOp("^")) {  // m1lc1^2: the power is the last name's, as written
-                next();
-                lastValue = GiNaC::pow(lastValue, factor());
+                const std::size_t at = next().position;
+                lastValue = GiNaC::pow(lastValue, exponent(at));
             }
             return value * lastValue;
         }

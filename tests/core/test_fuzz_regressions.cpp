@@ -39,7 +39,8 @@ private slots:
         const std::map<std::string, int (*)(const std::uint8_t*, std::size_t)> bodies = {{"sceneLoader", ll::fuzz::sceneLoader},
                                                                                          {"expression", ll::fuzz::expression},
                                                                                          {"lagrangian", ll::fuzz::lagrangian},
-                                                                                         {"evalState", ll::fuzz::evalState}};
+                                                                                         {"evalState", ll::fuzz::evalState},
+                                                                                         {"answer", ll::fuzz::answer}};
         int files = 0;
         for (const auto& folder : std::filesystem::directory_iterator(LL_SOURCE_DIR "/tests/fuzz/regressions")) {
             const auto body = bodies.find(folder.path().filename().string());
