@@ -2,6 +2,7 @@
 // names an answer may use, and the check of one answer (core/pipeline/answer_check.hpp).
 #include <algorithm>
 #include <cctype>
+#include <cstddef>
 #include <set>
 
 #include "core/model/diagnostics.hpp"
@@ -162,6 +163,17 @@ private:
         k_.entries.push_back(std::move(entry));
     }
 
+    // A matrix or vector whose entries are the next rows·cols entries added, row by row.
+    void whole(const std::string& id, unsigned rows, unsigned cols, std::size_t first, std::vector<std::string> aliases = {}) {
+        AnswerKey::Data::Whole w{id, rows, cols, {}};
+        for (std::size_t i = 0; i < rows * cols; ++i) w.entries.push_back(first + i);
+        const std::size_t index = k_.wholes.size();
+        k_.wholeByKey.emplace(entryKey(id), index);
+        for (const std::string& alias : aliases)
+            if (!alias.empty()) k_.wholeByKey.emplace(entryKey(alias), index);
+        k_.wholes.push_back(std::move(w));
+    }
+
     // T_2^0 is also typed T2(…), I_l2^0 also I_l2(…): the base frame's superscript left out.
     static std::string shortItemName(const symbolic::DerivationItem& item) {
         const std::string i = std::to_string(item.index + 1);
@@ -200,6 +212,7 @@ private:
                 }
                 if (GiNaC::is_a<GiNaC::matrix>(item.value)) {
                     const GiNaC::matrix& m = GiNaC::ex_to<GiNaC::matrix>(item.value);
+                    whole(item.name, m.rows(), m.cols(), k_.entries.size(), {shortItemName(item)});
                     for (unsigned r = 0; r < m.rows(); ++r)
                         for (unsigned c = 0; c < m.cols(); ++c) {
                             KeyEntry e;
@@ -232,10 +245,12 @@ private:
                     add(std::move(e), lagrangianAliases(item.name));
                 }
             }
+        whole("B", n, n, k_.entries.size());
         for (int i = 0; i < n; ++i)
             for (int j = 0; j < n; ++j)
                 add({"b" + indices({i, j}, n), EntryKind::MassMatrix, i, j, -1, "", d_.B(i, j)},
                     {"b(" + indices({i}, 0) + "," + indices({j}, 0) + ")"});
+        whole("C", n, n, k_.entries.size());
         for (int i = 0; i < n; ++i)
             for (int j = 0; j < n; ++j)
                 add({"c" + indices({i, j}, n), EntryKind::Coriolis, i, j, -1, "", d_.C(i, j)},
@@ -245,7 +260,9 @@ private:
                 for (int k = 0; k < n; ++k)
                     add({"c" + indices({i, j, k}, n), EntryKind::Christoffel, i, j, k, "", 0, false},
                         {"c(" + indices({i}, 0) + "," + indices({j}, 0) + "," + indices({k}, 0) + ")"});
+        whole("g", n, 1, k_.entries.size());
         for (int i = 0; i < n; ++i) add({"g" + indices({i}, n), EntryKind::Gravity, i, -1, -1, "", d_.g(i, 0)});
+        whole("Q", n, 1, k_.entries.size());
         for (int i = 0; i < n; ++i) add({"Q" + indices({i}, n), EntryKind::Force, i, -1, -1, "", d_.Q(i, 0)}, {"tau" + indices({i}, n)});
         add({"E_kin", EntryKind::KineticEnergy, -1, -1, -1, "", d_.Ekin}, {"T", "K"});
         add({"E_pot", EntryKind::PotentialEnergy, -1, -1, -1, "", d_.Epot}, {"U", "V", "P"});
@@ -430,38 +447,13 @@ std::string AnswerKey::rightAnswer(const std::string& id) const {
     return printed(*data_, data_->valueOf(data_->entries[it->second]), present::Style::Text);
 }
 
-AnswerCheck AnswerKey::check(const AnswerRequest& request) const {
-    const auto lock = symbolic::lockGinac();
-    const Data& k = *data_;
-    AnswerCheck out;
-    out.entry = request.entry;
-    auto it = k.byKey.find(entryKey(request.entry));
-    if (it == k.byKey.end()) {
-        std::string some;
-        for (const char* id : {"b11", "c121", "g1", "E_kin", "p_c1(1)", "T_1^0(1,4)"})
-            if (k.byKey.count(entryKey(id))) some += (some.empty() ? "" : ", ") + std::string(id);
-        if (some.empty())
-            for (std::size_t i = 0; i < k.ids.size() && i < 5; ++i) some += (some.empty() ? "" : ", ") + k.ids[i];
-        out.problem = message(MessageId::AnswerUnknownEntry, request.entry, some);
-        return out;
-    }
-    const KeyEntry& entry = k.entries[it->second];
-    out.entry = entry.id;
-    symbolic::ReadAnswer read;
-    try {
-        read = symbolic::readAnswer(request.answer, k.vocabulary);
-    } catch (const symbolic::AnswerUnreadable& e) {
-        out.problem = e.message();
-        out.position = e.position();
-        if (e.unknownName()) out.kinds.push_back(AnswerErrorKind::UnknownSymbol);
-        return out;
-    }
-    const ex answer = read.value;
+namespace {
+
+// The verdict on one expression for one entry, into `out` (verdict, hints, kinds, links,
+// points); what was read and the entry's id are the caller's.
+void judge(const AnswerKey::Data& k, const KeyEntry& entry, std::size_t index, const ex& answer, AnswerCheck& out) {
     const ex right = k.valueOf(entry);
-    out.readAs = printed(k, answer, present::Style::Text) + (read.equation ? " = 0" : "");
-    out.readAsLatex = printed(k, answer, present::Style::Latex) + (read.equation ? " = 0" : "");
-    if (request.reveal) out.rightAnswer = printed(k, right, present::Style::Text);
-    symbolic::IdentitySampler sampler(0x1a9a4e5eULL + it->second);
+    symbolic::IdentitySampler sampler(0x1a9a4e5eULL + index);
     try {
         bool same = false;
         if (entry.kind == EntryKind::Equation) {  // an equation times any constant is the same equation
@@ -490,7 +482,7 @@ AnswerCheck AnswerKey::check(const AnswerRequest& request) const {
             // not the derivation's form term by term (GiNaC orders terms and factors itself, so
             // another order alone is not "different"; factored or expanded is)
             if (!out.withValues) out.writtenDifferently = !(answer - right).is_zero() && entry.kind != EntryKind::Equation;
-            return out;
+            return;
         }
         out.verdict = AnswerVerdict::Wrong;
         explainWrongAnswer(k, entry, answer, out);
@@ -500,6 +492,110 @@ AnswerCheck AnswerKey::check(const AnswerRequest& request) const {
         out.hints.clear();
         out.kinds.clear();
     }
+}
+
+// A whole matrix or vector answered at once: each entry judged, the verdict right when
+// every one is, the hints entry by entry.
+void judgeWhole(const AnswerKey::Data& k, const AnswerKey::Data::Whole& whole, const symbolic::ReadAnswer& read, AnswerCheck& out) {
+    GiNaC::matrix shown(static_cast<unsigned>(read.rows.size()), static_cast<unsigned>(read.rows[0].size()));
+    for (unsigned r = 0; r < shown.rows(); ++r)
+        for (unsigned c = 0; c < shown.cols(); ++c) shown(r, c) = read.rows[r][c];
+    out.readAs = printed(k, shown, present::Style::Text);
+    out.readAsLatex = printed(k, shown, present::Style::Latex);
+    if (shown.rows() != whole.rows || shown.cols() != whole.cols) {
+        out.problem = message(MessageId::AnswerShape, whole.id, whole.rows, whole.cols, shown.rows(), shown.cols());
+        return;
+    }
+    int right = 0;
+    std::vector<Message> entryHints;
+    out.verdict = AnswerVerdict::Right;
+    out.points = 0;
+    for (unsigned r = 0; r < whole.rows; ++r)
+        for (unsigned c = 0; c < whole.cols; ++c) {
+            const std::size_t index = whole.entries[r * whole.cols + c];
+            AnswerCheck one;
+            judge(k, k.entries[index], index, shown(r, c), one);
+            out.points = std::max(out.points, one.points);
+            out.sixtyDigits = out.sixtyDigits || one.sixtyDigits;
+            if (one.verdict == AnswerVerdict::Unreadable) {
+                out.verdict = AnswerVerdict::Unreadable;
+                out.problem = one.problem;
+                return;
+            }
+            if (one.verdict == AnswerVerdict::Right) {
+                ++right;
+                continue;
+            }
+            out.verdict = AnswerVerdict::Wrong;
+            const std::string at =
+                whole.cols == 1 ? "(" + std::to_string(r + 1) + ")" : "(" + std::to_string(r + 1) + "," + std::to_string(c + 1) + ")";
+            if (entryHints.size() < 3)
+                entryHints.push_back(Message(MessageId::HintEntry, {literal(at), one.hints.empty() ? Message() : one.hints[0]}));
+            for (AnswerErrorKind kind : one.kinds)
+                if (std::find(out.kinds.begin(), out.kinds.end(), kind) == out.kinds.end()) out.kinds.push_back(kind);
+            for (int link : one.links)
+                if (std::find(out.links.begin(), out.links.end(), link) == out.links.end()) out.links.push_back(link);
+        }
+    if (out.verdict == AnswerVerdict::Wrong) {
+        out.hints.push_back(message(MessageId::HintEntriesRight, right, whole.rows * whole.cols));
+        out.hints.insert(out.hints.end(), entryHints.begin(), entryHints.end());
+    }
+}
+
+}  // namespace
+
+AnswerCheck AnswerKey::check(const AnswerRequest& request) const {
+    const auto lock = symbolic::lockGinac();
+    const Data& k = *data_;
+    AnswerCheck out;
+    out.entry = request.entry;
+    const std::string typed = entryKey(request.entry);
+    auto it = k.byKey.find(typed);
+    auto whole = k.wholeByKey.find(typed);
+    if (it == k.byKey.end() && whole == k.wholeByKey.end()) {
+        std::string some;
+        for (const char* id : {"b11", "c121", "g1", "E_kin", "p_c1(1)", "T_1^0(1,4)", "B", "p_c1"})
+            if (k.byKey.count(entryKey(id)) || k.wholeByKey.count(entryKey(id))) some += (some.empty() ? "" : ", ") + std::string(id);
+        if (some.empty())
+            for (std::size_t i = 0; i < k.ids.size() && i < 5; ++i) some += (some.empty() ? "" : ", ") + k.ids[i];
+        out.problem = message(MessageId::AnswerUnknownEntry, request.entry, some);
+        return out;
+    }
+    symbolic::ReadAnswer read;
+    try {
+        read = symbolic::readAnswer(request.answer, k.vocabulary);
+    } catch (const symbolic::AnswerUnreadable& e) {
+        out.problem = e.message();
+        out.position = e.position();
+        if (e.unknownName()) out.kinds.push_back(AnswerErrorKind::UnknownSymbol);
+        return out;
+    }
+    if (it == k.byKey.end()) {  // a whole matrix or vector: B, p_c2, T_2^0
+        const Data::Whole& w = k.wholes[whole->second];
+        out.entry = w.id;
+        if (read.rows.empty()) {
+            out.problem = message(MessageId::AnswerMatrixNeeded, w.id, w.rows, w.cols);
+            return out;
+        }
+        if (request.reveal) {
+            GiNaC::matrix right(w.rows, w.cols);
+            for (unsigned i = 0; i < w.rows * w.cols; ++i) right(i / w.cols, i % w.cols) = k.valueOf(k.entries[w.entries[i]]);
+            out.rightAnswer = printed(k, right, present::Style::Text);
+        }
+        judgeWhole(k, w, read, out);
+        return out;
+    }
+    const KeyEntry& entry = k.entries[it->second];
+    out.entry = entry.id;
+    if (!read.rows.empty()) {
+        out.problem = message(MessageId::AnswerOneEntry, entry.id);
+        return out;
+    }
+    const ex answer = read.value;
+    out.readAs = printed(k, answer, present::Style::Text) + (read.equation ? " = 0" : "");
+    out.readAsLatex = printed(k, answer, present::Style::Latex) + (read.equation ? " = 0" : "");
+    if (request.reveal) out.rightAnswer = printed(k, k.valueOf(entry), present::Style::Text);
+    judge(k, entry, it->second, answer, out);
     return out;
 }
 

@@ -22,8 +22,8 @@ enum class EntryKind { MassMatrix, Coriolis, Christoffel, Gravity, Force, Kineti
 struct KeyEntry {
     std::string id;  // b11, c121, T_2^0(1,4)
     EntryKind kind = EntryKind::Item;
-    int i = -1, j = -1, k = -1;                                       // 0-based indices (b_ij, c_ijk, g_i, a matrix item's row and column)
-    std::string item;                                                 // a derivation item's name (EntryKind::Item), as shown
+    int i = -1, j = -1, k = -1;  // 0-based indices (b_ij, c_ijk, g_i, a matrix item's row and column)
+    std::string item;            // a derivation item's name (EntryKind::Item), as shown
     // sin and cos as functions of the coordinates; a Christoffel symbol's is made when first
     // asked for (AnswerKey::Data::valueOf: a 6-joint robot has 216 of them)
     mutable GiNaC::ex value;
@@ -47,10 +47,17 @@ struct AnswerKey::Data {
     std::vector<KeyEntry> entries;
     std::vector<std::string> ids;
     std::map<std::string, std::size_t> byKey;  // normalized name → index into entries
-    GiNaC::exmap toFunctions, toShorthand;     // c12 → cos(q1 + q2) and back
-    GiNaC::exmap values;                       // every parameter symbol → its exact value
-    std::vector<LinkRoles> links;              // robots only
-    std::map<std::string, Dimension> units;    // by symbol name; absent: not known
+    struct Whole {                             // a matrix or vector answered at once: B, g, p_c2, T_2^0
+        std::string id;
+        unsigned rows = 0, cols = 0;
+        std::vector<std::size_t> entries;  // row by row, into entries
+    };
+    std::vector<Whole> wholes;
+    std::map<std::string, std::size_t> wholeByKey;  // normalized name → index into wholes
+    GiNaC::exmap toFunctions, toShorthand;          // c12 → cos(q1 + q2) and back
+    GiNaC::exmap values;                            // every parameter symbol → its exact value
+    std::vector<LinkRoles> links;                   // robots only
+    std::map<std::string, Dimension> units;         // by symbol name; absent: not known
     // The same robot derived in the other DH convention, made when first needed.
     mutable std::optional<symbolic::Derivation> otherConvention;
 

@@ -178,9 +178,9 @@ std::vector<Token> tokens(const Plain& plain) {
             t.kind = Kind::Operator;
             t.text = "^";
             i += 2;
-        } else if (std::string("+-*/^()[],=").find(c) != std::string::npos) {
+        } else if (std::string("+-*/^()[],;=").find(c) != std::string::npos) {
             t.kind = Kind::Operator;
-            t.text = std::string(1, c == '[' ? '(' : c == ']' ? ')' : c);
+            t.text = std::string(1, c);
             ++i;
         } else {
             Utf8Char ch;
@@ -354,6 +354,13 @@ public:
     ReadAnswer answer() {
         ReadAnswer read;
         if (peek().kind == Kind::End) throw AnswerUnreadable(message(MessageId::AnswerEmpty), 1);
+        if (isOp("[")) {  // a whole matrix, unless the brackets only group one expression
+            read.rows = matrix();
+            const bool one = read.rows.size() == 1 && read.rows[0].size() == 1;
+            if (peek().kind == Kind::End && !one) return read;
+            read.rows.clear();
+            i_ = 0;
+        }
         read.value = sum();
         if (isOp("=")) {
             next();
@@ -363,7 +370,7 @@ public:
             if (isOp("=")) throw AnswerUnreadable(message(MessageId::AnswerSecondEquals, std::to_string(peek().position)), peek().position);
         }
         if (peek().kind != Kind::End) {
-            if (isOp(")"))
+            if (isOp(")") || isOp("]"))
                 throw AnswerUnreadable(message(MessageId::AnswerUnmatchedClosing, std::to_string(peek().position)), peek().position);
             expected(MessageId::AnswerExpectOperator);
         }
@@ -371,6 +378,47 @@ public:
     }
 
 private:
+    // "[a, b; c, d]", "[[a, b], [c, d]]", "[a; b; c]": rows of equal length.
+    std::vector<std::vector<ex>> matrix() {
+        next();  // '['
+        std::vector<std::vector<ex>> rows(1);
+        const bool nested = isOp("[");
+        for (;;) {
+            if (nested) {
+                if (!isOp("[")) expected(MessageId::AnswerExpectOpenBracket);
+                next();
+                std::vector<ex> row{sum()};
+                while (isOp(",")) {
+                    next();
+                    row.push_back(sum());
+                }
+                if (!isOp("]")) expected(MessageId::AnswerExpectBracket);
+                next();
+                rows.back() = row;
+                if (!isOp(",") && !isOp(";")) break;
+                next();
+                rows.emplace_back();
+                continue;
+            }
+            rows.back().push_back(sum());
+            if (isOp(",")) {
+                next();
+            } else if (isOp(";")) {
+                next();
+                rows.emplace_back();
+            } else {
+                break;
+            }
+        }
+        if (!isOp("]")) expected(MessageId::AnswerExpectBracket);
+        const std::size_t closing = next().position;
+        for (std::size_t r = 1; r < rows.size(); ++r)
+            if (rows[r].size() != rows[0].size())
+                throw AnswerUnreadable(message(MessageId::AnswerRowLength, std::to_string(closing), r + 1, rows[r].size(), rows[0].size()),
+                                       closing);
+        return rows;
+    }
+
     const Token& peek(std::size_t ahead = 0) const { return t_[std::min(i_ + ahead, t_.size() - 1)]; }
     const Token& next() { return t_[std::min(i_++, t_.size() - 1)]; }
     bool isOp(const char* op, std::size_t ahead = 0) const { return peek(ahead).kind == Kind::Operator && peek(ahead).text == op; }
@@ -386,7 +434,7 @@ private:
     // a1 (…), (…)(…)).
     bool startsImplicitFactor() const {
         const Token& t = peek();
-        return t.kind == Kind::Number || t.kind == Kind::Name || (t.kind == Kind::Operator && t.text == "(");
+        return t.kind == Kind::Number || t.kind == Kind::Name || (t.kind == Kind::Operator && (t.text == "(" || t.text == "["));
     }
 
     ex sum() {
@@ -463,10 +511,11 @@ private:
             next();
             return exactNumber(t.text);
         }
-        if (isOp("(")) {
+        if (isOp("(") || isOp("[")) {  // brackets group as parentheses do
+            const bool square = isOp("[");
             next();
             const ex inside = sum();
-            if (!isOp(")")) expected(MessageId::AnswerExpectClosing);
+            if (!isOp(square ? "]" : ")")) expected(square ? MessageId::AnswerExpectBracket : MessageId::AnswerExpectClosing);
             next();
             return inside;
         }

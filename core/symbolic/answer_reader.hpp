@@ -7,7 +7,8 @@
 // names written together, "a1lc2", is split when only one split gives known names), a
 // function without parentheses (cos q2), and one '=' (an equation, read as left − right).
 // Numbers are exact: 9.81 is 981/100. Anything else stops the reading with the character
-// where it went wrong and what was expected there (AnswerUnreadable).
+// where it went wrong and what was expected there (AnswerUnreadable). A whole matrix or
+// vector is typed in brackets, rows split by ';' (or as a list of bracketed rows).
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -45,6 +46,9 @@ private:
 struct ReadAnswer {
     GiNaC::ex value;  // cos and sin as functions (c12 → cos(q1 + q2)); an equation as left − right
     bool equation = false;
+    // A matrix or vector typed whole, "[a, b; c, d]" or "[[a, b], [c, d]]" (a column:
+    // "[a; b; c]"): its rows. Empty for one expression.
+    std::vector<std::vector<GiNaC::ex>> rows;
 };
 
 // Throws AnswerUnreadable. Takes no lock: the caller holds the GiNaC lock.

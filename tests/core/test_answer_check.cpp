@@ -292,6 +292,26 @@ private slots:
         QVERIFY(values.verdict == AnswerVerdict::Right && values.withValues);
     }
 
+    // A whole matrix or vector at once, judged entry by entry.
+    void readsWholeMatrices() {
+        const auto k = key("planar_2r.json");
+        const std::string b11 = "I1 + m1 lc1^2 + I2 + m2 (a1^2 + lc2^2 + 2 a1 lc2 c2)", b12 = "I2 + m2 (lc2^2 + a1 lc2 c2)";
+        QVERIFY(check(*k, "B", "[" + b11 + ", " + b12 + "; " + b12 + ", I2 + m2 lc2^2]").verdict == AnswerVerdict::Right);
+        QVERIFY(check(*k, "B", "[[" + b11 + ", " + b12 + "], [" + b12 + ", I2 + m2 lc2^2]]").verdict == AnswerVerdict::Right);
+        QVERIFY(check(*k, "p_c2", "[a1 c1 + lc2 c12; a1 s1 + lc2 s12; 0]").verdict == AnswerVerdict::Right);
+        const AnswerCheck wrong = check(*k, "B", "[" + b11 + ", " + b12 + "; " + b12 + ", I2 + m2 a2^2]");
+        QVERIFY(wrong.verdict == AnswerVerdict::Wrong && has(wrong, AnswerErrorKind::Length));
+        QCOMPARE(wrong.hints.at(0).english(), std::string("3 of 4 entries are right."));
+        QVERIFY2(wrong.hints.at(1).english().rfind("Entry (2,2): ", 0) == 0, wrong.hints.at(1).english().c_str());
+        const AnswerCheck shape = check(*k, "B", "[1, 2]");
+        QVERIFY(shape.verdict == AnswerVerdict::Unreadable && shape.problem.id == MessageId::AnswerShape);
+        QVERIFY(check(*k, "B", b11).problem.id == MessageId::AnswerMatrixNeeded);
+        QVERIFY(check(*k, "b11", "[1, 2]").problem.id == MessageId::AnswerOneEntry);
+        QCOMPARE(check(*k, "B", "[1, 2; 3]").problem.english(), std::string("character 9: row 2 has 1 entries, row 1 has 2"));
+        QVERIFY(check(*k, "b22", "[I2 + m2 lc2^2]").verdict == AnswerVerdict::Right);  // brackets around one expression group it
+        QVERIFY(check(*k, "b22", "I2 + m2 [lc2]^2").verdict == AnswerVerdict::Right);
+    }
+
     void saysWhereItCannotRead() {
         const auto k = key("planar_2r.json");
         const AnswerCheck dangling = check(*k, "b22", "I2 + m2 *");
