@@ -7,6 +7,7 @@
 
 #include "core/model/diagnostics.hpp"
 #include "core/pipeline/answer_key_data.hpp"
+#include "core/present/display_builder.hpp"
 #include "core/present/expression_printer.hpp"
 #include "core/symbolic/exact_numbers.hpp"
 #include "core/symbolic/function_identity.hpp"
@@ -335,21 +336,14 @@ private:
     const symbolic::Derivation& d_;
 };
 
-// Numbers with long denominators (a scene's decimals made exact, 2159/5000) shown as decimals.
-struct ShortNumbers : GiNaC::map_function {
-    ex operator()(const ex& e) override {
-        if (GiNaC::is_exactly_a<GiNaC::numeric>(e)) {
-            const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(e);
-            if (n.is_rational() && !n.is_integer() && n.denom() > 1000) return n.evalf();
-            return e;
-        }
-        return e.map(*this);
-    }
-};
-
+// As the derivation prints: the trig shorthand (c12), and numbers spelled as the document
+// spells them (the scene's decimals as typed, 9.81 rather than 981/100).
 std::string printed(const AnswerKey::Data& k, const ex& e, present::Style style) {
-    ShortNumbers shorter;
-    return present::print(shorter(e.subs(k.toShorthand, GiNaC::subs_options::no_pattern)), present::printOptionsFor(k.derivation, style));
+    present::DisplayOptions options = present::displayOptions(present::printOptionsFor(k.derivation, style));
+    options.readableNumbers = true;
+    options.typedDecimals = k.derivation.typedDecimals;
+    const ex shorthand = e.subs(k.toShorthand, GiNaC::subs_options::no_pattern);
+    return present::renderDisplay(*present::buildDisplay(shorthand, options), present::displayStyle(style));
 }
 
 }  // namespace
