@@ -63,6 +63,37 @@ const char* greekName(char32_t c) {
     }
 }
 
+// The other characters a hand-written formula has, in ASCII: dots over a letter, fractions,
+// multiplication and minus signs, spaces.
+const char* symbolSpelling(char32_t c) {
+    switch (c) {
+        case 0x0307: return "_dot";   // combining dot above: q̇1, θ̇₁
+        case 0x0308: return "_ddot";  // combining two dots: q̈1
+        case U'ẋ': return "x_dot";
+        case U'½': return "(1/2)";
+        case U'¼': return "(1/4)";
+        case U'¾': return "(3/4)";
+        case U'⅓': return "(1/3)";
+        case U'⅔': return "(2/3)";
+        case U'·':
+        case U'×':
+        case U'⋅':
+        case U'∙':
+        case U'∗': return "*";
+        case U'−':
+        case U'–':
+        case U'‐': return "-";
+        case U'÷':
+        case U'∕': return "/";
+        case 0x00A0:
+        case 0x2009:
+        case 0x202F:
+        case 0x2002:
+        case 0x2003: return " ";
+        default: return nullptr;
+    }
+}
+
 Plain plainText(const std::string& text) {
     Plain plain;
     std::size_t offset = 0, character = 0;
@@ -88,30 +119,8 @@ Plain plainText(const std::string& text) {
         } else if (u == U'²' || u == U'³' || u == U'¹' || (u >= U'⁴' && u <= U'⁹') || u == U'⁰') {
             const int digit = u == U'¹' ? 1 : u == U'²' ? 2 : u == U'³' ? 3 : u == U'⁰' ? 0 : static_cast<int>(u - U'⁰');
             plain.put("^" + std::to_string(digit), character);
-        } else if (u == 0x0307) {  // combining dot above: q̇1, θ̇₁, ẋ
-            plain.put("_dot", character);
-        } else if (u == 0x0308) {  // combining two dots: q̈1
-            plain.put("_ddot", character);
-        } else if (u == U'ẋ') {
-            plain.put("x_dot", character);
-        } else if (u == U'½') {
-            plain.put("(1/2)", character);
-        } else if (u == U'¼') {
-            plain.put("(1/4)", character);
-        } else if (u == U'¾') {
-            plain.put("(3/4)", character);
-        } else if (u == U'⅓') {
-            plain.put("(1/3)", character);
-        } else if (u == U'⅔') {
-            plain.put("(2/3)", character);
-        } else if (u == U'·' || u == U'×' || u == U'⋅' || u == U'∙' || u == U'∗') {
-            plain.put("*", character);
-        } else if (u == U'−' || u == U'–' || u == U'‐') {
-            plain.put("-", character);
-        } else if (u == U'÷' || u == U'∕') {
-            plain.put("/", character);
-        } else if (u == 0x00A0 || u == 0x2009 || u == 0x202F || u == 0x2002 || u == 0x2003) {
-            plain.put(" ", character);
+        } else if (const char* spelled = symbolSpelling(u)) {
+            plain.put(spelled, character);
         } else {
             refuse();
         }
