@@ -1,6 +1,7 @@
-// `lagrangelab check-answer SCENE --entry ENTRY --answer "…" | --answer-file F
+// `lagrangelab check-answer SCENE [--entry ENTRY --answer "…" | --answer-file F]
 // [--format text|json] [--reveal] [--symbolic|--numeric]`: a student's own answer for one
-// entry of the derivation (or many, from a JSON file {"b11": "…", "g2": "…"}), checked
+// entry of the derivation (or many, from a JSON file {"b11": "…", "g2": "…"}, or those
+// the scene's "exercise" section holds when neither is given), checked
 // exactly (core/pipeline/answer_check.hpp): what was read, right or wrong, and why.
 // Exit 0 when every answer is right, 1 when one is wrong, 2 when one is unreadable or
 // names no entry (and for bad input).
@@ -95,11 +96,16 @@ int checkAnswerCommand(const Args& args) {
         if (options.has("answer") || options.has("entry"))
             throw UsageError(UsageId::ExcludeEachOther, "answer-file", options.has("answer") ? "answer" : "entry");
         answers = answersFromFile(options.text("answer-file"));
-    } else {
+    } else if (options.has("entry") || options.has("answer")) {
         if (!options.has("entry") || !options.has("answer")) throw UsageError(UsageId::AnswerNeeded);
         answers.emplace_back(options.text("entry"), options.text("answer"));
     }
     const Scene scene = loadSceneReportingWarnings(options.positional()[0]);
+    if (answers.empty()) {  // the answers the scene holds (the window's exercise mode saves them there)
+        for (const auto& [entry, answer] : scene.exercise.answers)
+            if (!answer.empty()) answers.emplace_back(entry, answer);
+        if (answers.empty()) throw UsageError(UsageId::AnswerNeeded);
+    }
     const symbolic::ParameterMode mode = options.has("symbolic")  ? symbolic::ParameterMode::Textbook
                                          : options.has("numeric") ? symbolic::ParameterMode::Numeric
                                                                   : symbolic::ParameterMode::Parametric;

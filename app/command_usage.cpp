@@ -40,11 +40,12 @@ constexpr std::array<CommandText, 12> commands{{
      "the model's properties along a simulated run: B positive definite and its condition, Ḃ − 2C\n"
      "skew, power balance, Newton–Euler against B q̈ + C q̇ + g, energy; exit 1 when one fails"},
     {"check-answer",
-     "SCENE --entry ENTRY --answer \"...\" | --answer-file FILE.json [--format text|json] [--reveal]\n"
+     "SCENE [--entry ENTRY --answer \"...\" | --answer-file FILE.json] [--format text|json] [--reveal]\n"
      "[--symbolic] [--numeric] [--lang da|en]",
      "a student's own answer for an entry of the derivation (b11, c121, g2, T_2^0(1,4), p_c2(1), E_kin,\n"
      "equation1, dL/dx_dot) checked exactly: what was read, right or wrong, and which link, term or\n"
-     "slip; exit 0 right, 1 wrong, 2 unreadable"},
+     "slip (without an answer given: those the scene's \"exercise\" section holds); exit 0 right,\n"
+     "1 wrong, 2 unreadable"},
     {"integrators", "", "the integrators with order, kind and when to use each"},
     {"accuracy",
      "SCENE [--integrators a,b,...] [--tolerances 1e-3..1e-12] [--steps dt1,dt2,...] [--duration T]\n"
@@ -91,8 +92,9 @@ std::string overviewUsage() {
                     "           with --screenshot it plays, shows a derivation step or poses the robot (--teach: one\n"
                     "           value per joint, radians or metres), saves the whole window and exits;\n"
                     "           [--select ENTRY] [--pick-link I] [--at T] [--tab NAME]\n"
-                    "           [--joint J] [--derivation typeset|text|entries] picture a picked entry or link, a time,\n"
-                    "           the Torques or Properties tab; --present starts in presentation mode (full screen, or\n"
+                    "           [--joint J] [--derivation typeset|text|entries|exercise] picture a picked entry or\n"
+                    "           link, a time, the Torques or Properties tab, an exercise's answers judged; --present\n"
+                    "           starts in presentation mode (full screen, or\n"
                     "           --size with --screenshot); --dh-step I,K the DH step-through at joint I after K of its\n"
                     "           four elementary motions, --dh-dimensions every DH parameter drawn on the robot\n"
                     "\ncommands:\n";

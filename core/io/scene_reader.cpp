@@ -57,7 +57,8 @@ public:
     Scene read(const Json& root) {
         readFormat(root);
         checkKeys(root, "",
-                  {"format", "name", "description", "source", "parameters", "robot", "lagrangian", "effects", "initial", "simulation"});
+                  {"format", "name", "description", "source", "parameters", "robot", "lagrangian", "effects", "initial", "simulation",
+                   "exercise"});
         const std::size_t errorsBefore = errors_.size();
         if (const Json* parameters = member(root, "parameters")) readParameters(*parameters);
         // Every later field may use the parameters: a broken one would echo everywhere.
@@ -77,6 +78,7 @@ public:
         if (const Json* effects = member(root, "effects")) readEffects(*effects);
         readInitial(member(root, "initial"));
         if (const Json* simulation = member(root, "simulation")) readSimulation(*simulation);
+        if (const Json* exercise = member(root, "exercise")) readExercise(*exercise);
         throwIfErrors();
         return std::move(scene_);
     }
@@ -546,6 +548,31 @@ private:
         readNumber(simulation, "simulation", "rel_tol", s.relTol);
         readNumber(simulation, "simulation", "dt", s.dt);
         readNumber(simulation, "simulation", "output_rate", s.outputRate);
+    }
+
+    // The entries asked and the answers typed (core/model/exercise.hpp). Entry names are
+    // the answer key's to judge (they need the derivation): here only their shape.
+    void readExercise(const Json& exercise) {
+        if (!checkObject(exercise, "exercise", {"entries", "answers"})) return;
+        Exercise& e = scene_.exercise;
+        if (const Json* entries = member(exercise, "entries")) {
+            if (!entries->is_array()) error("exercise.entries", expectedGot(MessageId::WantedNameArray, *entries));
+            else
+                for (std::size_t k = 0; k < entries->size(); ++k) {
+                    std::string name;
+                    readText((*entries)[k], "exercise.entries[" + std::to_string(k) + "]", name);
+                    e.entries.push_back(std::move(name));
+                }
+        }
+        if (const Json* answers = member(exercise, "answers")) {
+            if (!answers->is_object()) error("exercise.answers", expectedGot(MessageId::WantedObject, *answers));
+            else
+                for (const auto& [entry, answer] : answers->items()) {
+                    std::string text;
+                    readText(answer, child("exercise.answers", entry), text);
+                    e.answers.emplace_back(entry, std::move(text));
+                }
+        }
     }
 
     std::vector<Diagnostic> errors_;

@@ -59,6 +59,12 @@ public:
                               {"rel_tol", number("simulation.rel_tol", s.relTol)},
                               {"dt", number("simulation.dt", s.dt)},
                               {"output_rate", number("simulation.output_rate", s.outputRate)}};
+        if (!scene_.exercise.empty()) {
+            Json& exercise = root["exercise"] = Json::object();
+            if (!scene_.exercise.entries.empty()) exercise["entries"] = scene_.exercise.entries;
+            Json& answers = exercise["answers"] = Json::object();
+            for (const auto& [entry, answer] : scene_.exercise.answers) answers[entry] = answer;
+        }
         return root;
     }
 

@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include "core/model/effects.hpp"
+#include "core/model/exercise.hpp"
 #include "core/model/integration_settings.hpp"
 #include "core/model/lagrangian_spec.hpp"
 #include "core/model/robot_model.hpp"
@@ -43,6 +44,7 @@ struct Scene {
     Effects effects;
     InitialState initial;
     SimulationSettings simulation;
+    Exercise exercise;  // the entries a student answers and their answers (may be empty)
 
     // Number of generalized coordinates: the Lagrangian's, or the robot's joints.
     int dof() const { return lagrangian ? lagrangian->dof() : robot.dof(); }
