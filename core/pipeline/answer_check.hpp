@@ -20,6 +20,7 @@
 
 #include "core/model/message.hpp"
 #include "core/model/scene.hpp"
+#include "core/present/hidden_answers.hpp"
 #include "core/symbolic/symbolic_robot.hpp"
 
 namespace ll {
@@ -84,6 +85,16 @@ public:
     std::string entryId(const std::string& typed) const;
     // The right answer of an entry in text (empty for an unknown id).
     std::string rightAnswer(const std::string& id) const;
+    // Where an entry stands in the derivation (core/present/hidden_answers.hpp); step −1
+    // for an unknown id and for what the derivation does not show (Christoffel symbols).
+    present::EntryPlace place(const std::string& id) const;
+    // The entries of step `step` worth asking a student for, in the derivation's order: not
+    // a constant (the 0 and 1 of a transform), b_ij only for i ≤ j (B is symmetric), no
+    // Christoffel symbols (C asks for them).
+    std::vector<std::string> practiceEntries(int step) const;
+    // The entries a name typed or picked stands for: one entry (b11), or every entry of a
+    // matrix or vector (B, p_c2, T_2^0); empty when it names none.
+    std::vector<std::string> entriesOf(const std::string& typed) const;
 
     struct Data;  // core/pipeline/answer_key_data.hpp
     // The key's GiNaC side, for what builds on it (exercise generators, the tests' wrong

@@ -53,8 +53,6 @@ ex christoffel(const GiNaC::matrix& B, const std::vector<GiNaC::symbol>& q, int 
     return GiNaC::numeric(1, 2) * (signs[0] * B(i, j).diff(q[k]) + signs[1] * B(i, k).diff(q[j]) + signs[2] * B(j, k).diff(q[i]));
 }
 
-namespace {
-
 // An entry name as a student may type it, reduced to what identifies it: T_2^0(1, 4),
 // T2_0[1,4] and t20(1,4) are the same key; ω₂ is w2, ∂L/∂θ̇₁ is dl/dthetadot1.
 std::string entryKey(const std::string& typed) {
@@ -73,6 +71,9 @@ std::string entryKey(const std::string& typed) {
     for (std::size_t at; (at = key.find("dot")) != std::string::npos;) key.replace(at, 3, "d");
     return key;
 }
+
+namespace {
+
 
 std::string indices(std::initializer_list<int> zeroBased, int n) {
     std::string out;

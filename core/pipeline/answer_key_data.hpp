@@ -68,6 +68,10 @@ struct AnswerKey::Data {
     std::optional<GiNaC::ex> entryValue(const symbolic::Derivation& d, const KeyEntry& entry) const;
 };
 
+// An entry name as a student may type it, reduced to what identifies it (the keys of
+// byKey and wholeByKey): T_2^0(1, 4), T2_0[1,4] and t20(1,4) are the same key.
+std::string entryKey(const std::string& typed);
+
 // The feedback on a wrong answer (the verdict is Wrong when this is called): hints, kinds
 // and links filled in `check`. answer_feedback.cpp.
 void explainWrongAnswer(const AnswerKey::Data& key, const KeyEntry& entry, const GiNaC::ex& answer, AnswerCheck& check);

@@ -19,6 +19,9 @@
 #include <sstream>
 
 #include "core/io/scene_file.hpp"
+#include "core/pipeline/display_derivation.hpp"
+#include "core/present/hidden_answers.hpp"
+#include "core/present/text_document.hpp"
 #include "core/pipeline/answer_key_data.hpp"
 #include "core/present/message_text.hpp"
 #include "core/symbolic/function_identity.hpp"
@@ -382,6 +385,55 @@ private slots:
         QVERIFY(index.verdict == AnswerVerdict::Wrong);
         // Danish, from the same data
         QVERIFY(present::messageText(half.hints.at(0), present::Language::Danish).find("Rigtigt på nær en konstant faktor") == 0);
+    }
+
+    // Exercise mode hides the entries asked (core/present/hidden_answers): each at its
+    // place in the derivation the key names, the symmetric b_ji with b_ij, nothing else.
+    void hidesTheEntriesAsked() {
+        const Scene scene = loadScene(std::string(LL_EXAMPLES_DIR) + "/planar_2r.json").scene;
+        const auto k = AnswerKey::build(scene);
+        QCOMPARE(k->practiceEntries(7), (std::vector<std::string>{"b11", "b12", "b22", "E_kin"}));
+        const std::vector<std::string> step8 = k->practiceEntries(8);  // c_ij, g_i, Q_i, the equations; no c_ijk
+        for (const char* id : {"c12", "g2", "equation1"}) QVERIFY2(std::count(step8.begin(), step8.end(), id) == 1, id);
+        QVERIFY(std::count(step8.begin(), step8.end(), "c121") == 0);
+        QCOMPARE(k->entriesOf("p_c2").size(), std::size_t(3));
+        QCOMPARE(k->entriesOf("B"), (std::vector<std::string>{"b11", "b12", "b21", "b22"}));
+        QVERIFY(k->entriesOf("zz").empty());
+        QCOMPARE(k->place("c121").step, -1);  // Christoffel symbols are not shown
+        DocumentRequest request;
+        request.format = present::DocumentFormat::Display;
+        const auto shown = deriveDisplay(scene, request).display;
+        std::vector<present::EntryPlace> places;
+        for (const char* id : {"b12", "g2", "T_2^0(1,4)", "E_kin"}) {
+            places.push_back(k->place(id));
+            QVERIFY2(places.back().step >= 0, id);
+        }
+        QCOMPARE(places[0].step, 7);
+        QCOMPARE(places[2].step, 1);
+        const present::DisplayDocument hidden = present::withAnswersHidden(*shown, places);
+        const auto cell = [](const present::DisplayDocument& d, int step, present::Quantity q, int index, int r, int c) {
+            for (const present::DisplayItem& item : d.step(step)->items)
+                if (item.quantity == q && (index < 0 || item.row == index)) return item.value->rows[r][c];
+            return present::DisplayPtr();
+        };
+        using Q = present::Quantity;
+        QCOMPARE(cell(hidden, 7, Q::MassMatrix, -1, 0, 1), present::hiddenAnswer());
+        QCOMPARE(cell(hidden, 7, Q::MassMatrix, -1, 1, 0), present::hiddenAnswer());
+        QVERIFY(cell(hidden, 7, Q::MassMatrix, -1, 0, 0) != present::hiddenAnswer());
+        QCOMPARE(cell(hidden, 8, Q::GravityVector, -1, 1, 0), present::hiddenAnswer());
+        QVERIFY(cell(hidden, 8, Q::GravityVector, -1, 0, 0) != present::hiddenAnswer());
+        QCOMPARE(cell(hidden, 1, Q::Transform, 1, 0, 3), present::hiddenAnswer());
+        QVERIFY(cell(hidden, 1, Q::Transform, 0, 0, 3) != present::hiddenAnswer());  // T_1^0 shown
+        // the text: E_kin's value gone, the '?' in its place; every other step as before
+        const std::string before = present::textDocument(*shown), after = present::textDocument(hidden);
+        QVERIFY(after.find("E_kin = ?") != std::string::npos);
+        QVERIFY(before.find("E_kin = ?") == std::string::npos);
+        for (int step : {0, 2, 3, 4, 5, 6}) {
+            present::DisplayDocument a, b;
+            a.steps = {*shown->step(step)};
+            b.steps = {*hidden.step(step)};
+            QCOMPARE(present::textDocument(b), present::textDocument(a));
+        }
     }
 
     void catalogueOfSlips() {
