@@ -26,6 +26,7 @@
 #include "app/offscreen_gui.hpp"
 #include "app/pixel_size.hpp"
 #include "core/io/atomic_file.hpp"
+#include "ui/window/exercise_mode.hpp"
 #include "ui/window/main_window.hpp"
 #include "ui/window/language_menu.hpp"
 #include "ui/window/entry_linking.hpp"
@@ -63,8 +64,8 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
     if (options.has("tab") && std::find(std::begin(tabs), std::end(tabs), tab) == std::end(tabs))
         throw UsageError(UsageId::ExpectedOneOf, "tab", "energy, joints, teach, torques, properties, work-precision", "dh-steps", tab);
     const std::string derivationView = options.text("derivation", "typeset");
-    if (derivationView != "typeset" && derivationView != "text" && derivationView != "entries")
-        throw UsageError(UsageId::ExpectedOneOf, "derivation", "typeset, text", "entries", derivationView);
+    if (derivationView != "typeset" && derivationView != "text" && derivationView != "entries" && derivationView != "exercise")
+        throw UsageError(UsageId::ExpectedOneOf, "derivation", "typeset, text, entries", "exercise", derivationView);
     // The window's size; it is never made smaller than its layout's minimum.
     const PixelSize size = parsePixelSize(options.text("size", "1280x800"));
     if (!hasDisplay()) throw UsageError(UsageId::NoDisplay);
@@ -137,6 +138,11 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
         window.torquePane().setJoint(static_cast<int>(joint) - 1);
     }
     window.showDerivationView(QString::fromStdString(derivationView));
+    // an exercise: its key made and the answers the scene holds judged (what the tab shows)
+    if (!waitFor([&] { return !window.exercise().judging(); }, 120)) {
+        std::cerr << "error: " << scene << ": the exercise's answers were not judged in 120 s\n";
+        return 1;
+    }
     if (tab == "work-precision") {  // the picture of that tab is its plot: the sweep is run first
         window.workPrecisionPane().run();
         if (!waitFor([&] { return window.workPrecisionPane().hasResult(); }, 600)) {

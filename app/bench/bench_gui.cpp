@@ -7,7 +7,9 @@
 //     beside it in its own thread and is timed apart;
 //   - the Panda opened in a fresh window until its derivation (step 7) is on screen;
 //   - the PUMA 560 animated in a 1280×720 view (posed at a new time every frame);
-//   - start to the first drawn frame of the simulated default scene, a fresh lagrangelab.
+//   - start to the first drawn frame of the simulated default scene, a fresh lagrangelab;
+//   - exercise mode: an answer checked in the window (Enter in its field until the verdict
+//     is shown), the PUMA 560's b11 right and wrong.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -38,6 +40,9 @@
 #include "ui/window/derivation_view.hpp"
 #include "ui/window/main_window.hpp"
 #include "ui/window/entry_linking.hpp"
+#include "ui/window/exercise_mode.hpp"
+#include "ui/window/exercise_panel.hpp"
+#include <QLineEdit>
 #include "ui/window/model_editor.hpp"
 #include "ui/window/playback_bar.hpp"
 #include "ui/window/scene_view.hpp"
@@ -68,15 +73,19 @@ std::pair<int, int> editableCell(const ui::SceneDocument& doc) {
     return {0, ui::JointTableModel::A};
 }
 
-void latency(const std::string& path, int runs) {
-    ui::MainWindow window;
+// `window` at 1280×800 on screen with `path` open (false, and said, when it cannot be).
+bool openedIn(ui::MainWindow& window, const std::string& path) {
     window.setAskBeforeClosing(false);
     window.resize(1280, 800);
     window.show();
-    if (!window.openFile(QString::fromStdString(path), nullptr, true)) {
-        std::printf("%s: cannot open\n", path.c_str());
-        return;
-    }
+    if (window.openFile(QString::fromStdString(path), nullptr, true)) return true;
+    std::printf("%s: cannot open\n", path.c_str());
+    return false;
+}
+
+void latency(const std::string& path, int runs) {
+    ui::MainWindow window;
+    if (!openedIn(window, path)) return;
     waitFor([&] { return window.result() && !window.liveDerivation().busy(); }, 120);
     auto [row, column] = editableCell(window.document());
     ui::JointTableModel& model = window.editor().joints();
@@ -159,6 +168,34 @@ void derivationOnScreen(const std::string& path, int runs) {
     }
     std::printf("%s opened to its derivation on screen: %.0f ms median of %zu (budget 1000 ms)\n", path.c_str(), median(times),
                 times.size());
+}
+
+// Exercise mode on `path`: Enter pressed in b11's field until its verdict is in the panel,
+// `runs` times each for the right answer and a wrong one (another link's part missing).
+void exerciseCheck(const std::string& path, int runs) {
+    ui::MainWindow window;
+    if (!openedIn(window, path)) return;
+    window.showDerivationView("exercise");
+    window.document().setValue("/exercise/entries", std::vector<std::string>{"b11"}, "bench");
+    if (!waitFor([&] { return window.exercise().checking().key() && window.exercisePanel().field("b11"); }, 120)) {
+        std::printf("%s: no answer key\n", path.c_str());
+        return;
+    }
+    const auto key = window.exercise().checking().key();
+    const QString right = QString::fromStdString(key->rightAnswer("b11")), wrong = right + " + m2";
+    std::vector<double> times[2];
+    QLineEdit* field = window.exercisePanel().field("b11");
+    for (int k = 0; k < 2 * runs; ++k) {
+        field->setText(k % 2 ? wrong : right);
+        window.exercisePanel().showVerdict("b11", ui::ExercisePanel::Mark::None, {});
+        const auto t0 = Clock::now();
+        emit field->returnPressed();
+        if (!waitFor([&] { return window.exercisePanel().mark("b11") != ui::ExercisePanel::Mark::None; }, 60)) break;
+        QApplication::processEvents();  // the verdict's paint
+        times[k % 2].push_back(ms(t0, Clock::now()));
+    }
+    std::printf("exercise check in the window, %s b11: right %.1f ms, wrong %.1f ms median of %d (budget 100 ms)\n", path.c_str(),
+                median(times[0]), median(times[1]), runs);
 }
 
 // The frames `view` draws per second while `advance` is called for 2 s, `runs` times:
@@ -284,6 +321,7 @@ int gui(const std::vector<std::string>& scenes, int runs) {
     linkedFrameRate(examples + "/puma560.json", "b23", 3);
     linkedFrameRate(examples + "/panda.json", "b11", 3);
     firstFrame(std::max(3, runs / 2));
+    exerciseCheck(examples + "/puma560.json", std::max(5, runs));
     return 0;
 }
 

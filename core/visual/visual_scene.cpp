@@ -409,6 +409,17 @@ std::vector<DhDimension> VisualScene::dhDimensions(double arcShare) const {
     return ll::dhDimensions(rig.robot, *rig.data, rig.q, arcShare * scale);
 }
 
+std::vector<Eigen::Vector3d> VisualScene::endEffectorPath(const Trajectory& trajectory) {
+    std::vector<Eigen::Vector3d> path;
+    if (endEffector < 0) return path;
+    path.reserve(trajectory.size());
+    for (std::size_t k = 0; k < trajectory.size(); ++k) {
+        pose(trajectory.q[k], trajectory.t[k]);
+        path.push_back(endEffectorPosition());
+    }
+    return path;
+}
+
 Eigen::Vector3d VisualScene::endEffectorPosition() const {
     return endEffector >= 0 ? Eigen::Vector3d(parts[endEffector].pose.translation()) : Eigen::Vector3d::Zero();
 }

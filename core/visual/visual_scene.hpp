@@ -149,6 +149,9 @@ public:
     std::vector<DhDimension> dhDimensions(double arcShare = 0.06) const;
     // Position of the end effector part at the current pose (zero if there is none).
     Eigen::Vector3d endEffectorPosition() const;
+    // The end effector at every sample of `trajectory` (a trail's points); empty when there
+    // is none. Leaves the scene posed at the last sample.
+    std::vector<Eigen::Vector3d> endEffectorPath(const Trajectory& trajectory);
 
 private:
     struct Rig;

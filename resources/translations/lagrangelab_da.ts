@@ -4,12 +4,12 @@
 <context>
     <name>Autosave</name>
     <message>
-        <location filename="../../ui/window/autosave.cpp" line="+32" />
+        <location filename="../../ui/window/autosave.cpp" line="+33" />
         <source>Autosave failed: %1</source>
         <translation>Automatisk gemning mislykkedes: %1</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+14" />
         <source>a new scene that was never saved</source>
         <translation>en ny scene, der aldrig er blevet gemt</translation>
     </message>
@@ -19,7 +19,7 @@
         <translation>%1 (i %2)</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+1" />
         <source>LagrangeLab did not close normally while %1 had unsaved edits (autosaved %2).</source>
         <translation>LagrangeLab blev ikke lukket normalt, mens %1 havde ændringer, der ikke var gemt (automatisk gemt %2).</translation>
     </message>
@@ -79,7 +79,7 @@
 <context>
     <name>DerivationPanel</name>
     <message>
-        <location filename="../../ui/window/derivation_panel.cpp" line="+107" />
+        <location filename="../../ui/window/derivation_panel.cpp" line="+108" />
         <source>Deriving…</source>
         <translation>Udleder…</translation>
     </message>
@@ -102,7 +102,7 @@
 <context>
     <name>DerivationView</name>
     <message>
-        <location filename="../../ui/window/derivation_view.cpp" line="+311" />
+        <location filename="../../ui/window/derivation_view.cpp" line="+56" />
         <source>Previous</source>
         <translation>Forrige</translation>
     </message>
@@ -112,12 +112,12 @@
         <translation>Næste</translation>
     </message>
     <message>
-        <location line="+101" />
+        <location line="+103" />
         <source>No scene</source>
         <translation>Ingen scene</translation>
     </message>
     <message>
-        <location line="-83" />
+        <location line="-84" />
         <source>DH parameters</source>
         <translation>DH-parametre</translation>
     </message>
@@ -127,30 +127,30 @@
         <translation>Resultater i teach-stillingen</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+7" />
         <location line="+4" />
         <source>Step %1: %2</source>
         <translation>Trin %1: %2</translation>
     </message>
     <message>
-        <location line="+37" />
+        <location line="+38" />
         <location line="+22" />
-        <location line="+12" />
+        <location line="+11" />
         <source>Deriving…</source>
         <translation>Udleder…</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+2" />
         <source>Error: %1</source>
         <translation>Fejl: %1</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+3" />
         <source>%1 (%2 form)</source>
         <translation>%1 (%2 form)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+2" />
         <source>structured</source>
         <translation>struktureret</translation>
     </message>
@@ -226,7 +226,7 @@
 <context>
     <name>EnergyInset</name>
     <message>
-        <location filename="../../ui/paint/energy_inset.cpp" line="+154" />
+        <location filename="../../ui/paint/energy_inset.cpp" line="+153" />
         <source>%1 J</source>
         <translation>%1 J</translation>
     </message>
@@ -242,7 +242,7 @@
 <context>
     <name>EntryList</name>
     <message>
-        <location filename="../../ui/window/entry_list.cpp" line="+87" />
+        <location filename="../../ui/window/entry_list.cpp" line="+86" />
         <source>Find an entry: b11, g2, beta, p_c…</source>
         <translation>Find et element: b11, g2, beta, p_c…</translation>
     </message>
@@ -330,9 +330,142 @@
     </message>
 </context>
 <context>
+    <name>ExerciseMode</name>
+    <message>
+        <location filename="../../ui/window/exercise_mode.cpp" line="+39" />
+        <source>Answers cannot be checked for this scene: %1</source>
+        <translation>Svarene kan ikke tjekkes for denne scene: %1</translation>
+    </message>
+    <message>
+        <location line="+17" />
+        <source>Practise step %1</source>
+        <translation>Øv trin %1</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Practise %1</source>
+        <translation>Øv %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>End the exercise</source>
+        <translation>Afslut øvelsen</translation>
+    </message>
+    <message>
+        <location line="+60" />
+        <location line="+14" />
+        <source>Step %1: %2</source>
+        <translation>Trin %1: %2</translation>
+    </message>
+    <message>
+        <location line="-2" />
+        <source>Entries not in this derivation</source>
+        <translation>Elementer, som ikke findes i denne udledning</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The answer key is being made…</source>
+        <translation>Facitlisten laves …</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Step %1</source>
+        <translation>Trin %1</translation>
+    </message>
+    <message>
+        <location line="+32" />
+        <source>Answer %1</source>
+        <translation>Svar %1</translation>
+    </message>
+</context>
+<context>
+    <name>ExercisePanel</name>
+    <message>
+        <location filename="../../ui/window/exercise_panel.cpp" line="+89" />
+        <source>Practise this step</source>
+        <translation>Øv dette trin</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Hide the answers of the step chosen in the derivation and answer them here</source>
+        <translation>Skjul svarene i det valgte trin af udledningen, og besvar dem her</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Practise the picked entry</source>
+        <translation>Øv det valgte element</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Hide the entry picked in the derivation, the entry list or the teach panel</source>
+        <translation>Skjul elementet, der er valgt i udledningen, elementlisten eller Teach-panelet</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>End the exercise</source>
+        <translation>Afslut øvelsen</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Show every answer again and remove the answers typed (undoable)</source>
+        <translation>Vis alle svar igen, og fjern de indtastede svar (kan fortrydes)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Choose a step (or pick an entry) to practise: its answers are hidden in the derivation, and you type your own here. Check says whether yours is right and, if not, where it goes wrong; the answers are saved with the scene.</source>
+        <translation>Vælg et trin (eller et element) at øve: svarene skjules i udledningen, og du skriver dine egne her. Tjek siger, om dit svar er rigtigt, og hvis ikke, hvor det går galt; svarene gemmes med scenen.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <location line="+11" />
+        <source>your %1 (c2, q1, m2 lc2^2, …)</source>
+        <translation>dit %1 (c2, q1, m2 lc2^2, …)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Check</source>
+        <translation>Tjek</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Reveal</source>
+        <translation>Vis svaret</translation>
+    </message>
+    <message>
+        <location line="+92" />
+        <source>read as: %1</source>
+        <translation>læst som: %1</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>Right.</source>
+        <translation>Rigtigt.</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Wrong.</source>
+        <translation>Forkert.</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Cannot read it:</source>
+        <translation>Kan ikke læses:</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>The right answer: %1</source>
+        <translation>Det rigtige svar: %1</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>%1 — %2 of %3 right</source>
+        <translation>%1 — %2 af %3 rigtige</translation>
+    </message>
+</context>
+<context>
     <name>ExportActions</name>
     <message>
-        <location filename="../../ui/window/export_actions.cpp" line="+51" />
+        <location filename="../../ui/window/export_actions.cpp" line="+52" />
         <source>Screenshot (PNG)…</source>
         <translation>Skærmbillede (PNG)…</translation>
     </message>
@@ -377,7 +510,7 @@
         <translation>Skærmbillede</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+6" />
         <location line="+2" />
         <source>Export plot</source>
         <translation>Eksportér graf</translation>
@@ -425,7 +558,7 @@
     </message>
     <message>
         <location line="+8" />
-        <location line="+79" />
+        <location line="+77" />
         <source>nothing to export: the simulation has not finished</source>
         <translation>intet at eksportere: simuleringen er ikke færdig</translation>
     </message>
@@ -435,17 +568,17 @@
         <translation>Grafen er skrevet til %1</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+8" />
         <source>Written: %1</source>
         <translation>Skrevet: %1</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+1" />
         <source>Export</source>
         <translation>Eksportér</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+1" />
         <source>Export of %1 stopped: %2</source>
         <translation>Eksporten af %1 blev afbrudt: %2</translation>
     </message>
@@ -460,7 +593,7 @@
         <translation>intet at eksportere: udledningen er ikke færdig</translation>
     </message>
     <message numerus="yes">
-        <location line="+20" />
+        <location line="+21" />
         <source>%1 … %2 (%n pages)</source>
         <translation>
             <numerusform>%1 … %2 (%n side)</numerusform>
@@ -468,7 +601,7 @@
         </translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+3" />
         <source>; 1 page file of an earlier, longer export remains beside it, not deleted: %1</source>
         <translation>; 1 sidefil fra en tidligere, længere eksport ligger stadig ved siden af og er ikke slettet: %1</translation>
     </message>
@@ -481,7 +614,7 @@
         </translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+19" />
         <source>Writing %1…</source>
         <translation>Skriver %1…</translation>
     </message>
@@ -509,7 +642,7 @@
 <context>
     <name>FieldListModel</name>
     <message>
-        <location filename="../../ui/document/field_list_model.cpp" line="+52" />
+        <location filename="../../ui/document/field_list_model.cpp" line="+53" />
         <source>%1 = %2</source>
         <translation>%1 = %2</translation>
     </message>
@@ -537,7 +670,7 @@
         <translation>t = %1 s</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+1" />
         <source>   (%1× real time)</source>
         <translation>   (%1× realtid)</translation>
     </message>
@@ -545,7 +678,7 @@
 <context>
     <name>GhostRun</name>
     <message>
-        <location filename="../../ui/window/ghost_run.cpp" line="+22" />
+        <location filename="../../ui/window/ghost_run.cpp" line="+23" />
         <source>Ghost run</source>
         <translation>Spøgelseskørsel</translation>
     </message>
@@ -558,7 +691,7 @@
 <context>
     <name>JointTableModel</name>
     <message>
-        <location filename="../../ui/document/joint_table_model.cpp" line="+77" />
+        <location filename="../../ui/document/joint_table_model.cpp" line="+76" />
         <source>revolute</source>
         <translation>roterende</translation>
     </message>
@@ -568,7 +701,7 @@
         <translation>prismatisk</translation>
     </message>
     <message>
-        <location line="+32" />
+        <location line="+31" />
         <location line="+3" />
         <source>Joint %1: %2 = %3</source>
         <translation>Led %1: %2 = %3</translation>
@@ -664,7 +797,7 @@
         <translation>Iyz [kg·m²]</translation>
     </message>
     <message>
-        <location line="+40" />
+        <location line="+37" />
         <source>Add joint %1</source>
         <translation>Tilføj led %1</translation>
     </message>
@@ -674,17 +807,17 @@
         <translation>Fjern led %1</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+13" />
         <source>Move joint %1 to %2</source>
         <translation>Flyt led %1 til %2</translation>
     </message>
     <message>
-        <location line="+29" />
+        <location line="+33" />
         <source>rod</source>
         <translation>stang</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+1" />
         <source>cylinder</source>
         <translation>cylinder</translation>
     </message>
@@ -694,7 +827,7 @@
         <translation>skive</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+1" />
         <source>box</source>
         <translation>kasse</translation>
     </message>
@@ -745,7 +878,7 @@
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../ui/window/main_window.cpp" line="+97" />
+        <location filename="../../ui/window/main_window.cpp" line="+104" />
         <source>Fit</source>
         <translation>Tilpas</translation>
     </message>
@@ -795,7 +928,7 @@
         <translation>Model</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+8" />
         <source>Derivation</source>
         <translation>Udledning</translation>
     </message>
@@ -815,7 +948,7 @@
         <translation>trin %1 (%2 af %3)</translation>
     </message>
     <message>
-        <location line="+21" />
+        <location line="+22" />
         <source>Typeset</source>
         <translation>Typesat</translation>
     </message>
@@ -830,12 +963,17 @@
         <translation>Elementer</translation>
     </message>
     <message>
+        <location line="+1" />
+        <source>Exercise</source>
+        <translation>Øvelse</translation>
+    </message>
+    <message>
         <location line="+6" />
         <source>Plots</source>
         <translation>Grafer</translation>
     </message>
     <message>
-        <location line="+24" />
+        <location line="+23" />
         <source>Energy</source>
         <translation>Energi</translation>
     </message>
@@ -846,12 +984,12 @@
     </message>
     <message>
         <location line="+0" />
-        <location line="+123" />
+        <location line="+119" />
         <source>Teach</source>
         <translation>Teach</translation>
     </message>
     <message>
-        <location line="-123" />
+        <location line="-119" />
         <source>Torques</source>
         <translation>Momenter</translation>
     </message>
@@ -871,7 +1009,7 @@
         <translation>DH-gennemgang</translation>
     </message>
     <message>
-        <location line="+77" />
+        <location line="+73" />
         <source>&amp;File</source>
         <translation>&amp;Filer</translation>
     </message>
@@ -961,12 +1099,12 @@
         <translation>Præsentér</translation>
     </message>
     <message>
-        <location line="+57" />
+        <location line="+59" />
         <source>Simulation failed: %1</source>
         <translation>Simuleringen mislykkedes: %1</translation>
     </message>
     <message>
-        <location line="+114" />
+        <location line="+95" />
         <source>simulating…</source>
         <translation>simulerer…</translation>
     </message>
@@ -999,7 +1137,7 @@
         <translation> · modellen har fejl: viser den seneste gyldige</translation>
     </message>
     <message>
-        <location line="+119" />
+        <location line="+86" />
         <source>%1%2 — LagrangeLab</source>
         <translation>%1%2 — LagrangeLab</translation>
     </message>
@@ -1007,7 +1145,7 @@
 <context>
     <name>ModelEditor</name>
     <message>
-        <location filename="../../ui/window/model_editor.cpp" line="+64" />
+        <location filename="../../ui/window/model_editor.cpp" line="+66" />
         <source>DH</source>
         <translation>DH</translation>
     </message>
@@ -1032,7 +1170,7 @@
         <translation>Løser</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+0" />
         <source>Lagrangian</source>
         <translation>Lagrange-funktion</translation>
     </message>
@@ -1073,12 +1211,12 @@
     </message>
     <message>
         <location line="+1" />
-        <location line="+62" />
+        <location line="+63" />
         <source>Remove</source>
         <translation>Fjern</translation>
     </message>
     <message>
-        <location line="-61" />
+        <location line="-62" />
         <source>Move up</source>
         <translation>Flyt op</translation>
     </message>
@@ -1088,7 +1226,7 @@
         <translation>Flyt ned</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+10" />
         <source>Convention: %1</source>
         <translation>Konvention: %1</translation>
     </message>
@@ -1123,7 +1261,7 @@
         <translation>Udfyld inerti ud fra form…</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+6" />
         <source>Inertia from a shape</source>
         <translation>Inerti ud fra en form</translation>
     </message>
@@ -1133,7 +1271,7 @@
         <translation>Led %1, %2: dimensioner i meter, adskilt med komma (tal eller parametre)</translation>
     </message>
     <message>
-        <location line="+23" />
+        <location line="+22" />
         <source>Add parameter…</source>
         <translation>Tilføj parameter…</translation>
     </message>
@@ -1143,7 +1281,7 @@
         <translation>Omdøb…</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+8" />
         <location line="+3" />
         <source>Rename parameter</source>
         <translation>Omdøb parameter</translation>
@@ -1154,19 +1292,19 @@
         <translation>Nyt navn til %1 (alle udtryk, der bruger den, opdateres):</translation>
     </message>
     <message>
-        <location line="+7" />
-        <location line="+3" />
+        <location line="+8" />
+        <location line="+2" />
         <location line="+3" />
         <source>Add parameter</source>
         <translation>Tilføj parameter</translation>
     </message>
     <message>
-        <location line="-6" />
+        <location line="-5" />
         <source>Name (letters, digits, _; e.g. m3, l2, k):</source>
         <translation>Navn (bogstaver, cifre, _; f.eks. m3, l2, k):</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+2" />
         <source>Value of %1 (a number, SI units):</source>
         <translation>Værdi af %1 (et tal i SI-enheder):</translation>
     </message>
@@ -1186,7 +1324,7 @@
         <translation>Scenens JSON</translation>
     </message>
     <message>
-        <location line="+21" />
+        <location line="+23" />
         <source>hint: it happened with your edit of %1</source>
         <translation>tip: det skete ved din ændring af %1</translation>
     </message>
@@ -1264,7 +1402,7 @@
         <translation>hastighed</translation>
     </message>
     <message>
-        <location line="+87" />
+        <location line="+85" />
         <source>t = %1 s / %2 s</source>
         <translation>t = %1 s / %2 s</translation>
     </message>
@@ -1305,7 +1443,7 @@
         <translation>ikke bestået</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+2" />
         <source>must stay above</source>
         <translation>skal holde sig over</translation>
     </message>
@@ -1315,12 +1453,12 @@
         <translation>tolerance</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+5" />
         <source>worst at &lt;a href='%1'&gt;t = %2 s&lt;/a&gt;, q = %3</source>
         <translation>værst ved &lt;a href='%1'&gt;t = %2 s&lt;/a&gt;, q = %3</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+9" />
         <source>All %1 properties that apply hold along the run.</source>
         <translation>Alle %1 relevante egenskaber holder gennem hele kørslen.</translation>
     </message>
@@ -1336,12 +1474,12 @@
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../../ui/document/crash_recovery.cpp" line="+35" />
+        <location filename="../../ui/document/crash_recovery.cpp" line="+37" />
         <source>(none)</source>
         <translation>(ingen)</translation>
     </message>
     <message>
-        <location line="+88" />
+        <location line="+89" />
         <source>A recovery copy that was cut short was set aside: %1</source>
         <translation>En ufuldstændig gendannelseskopi blev lagt til side: %1</translation>
     </message>
@@ -1359,7 +1497,7 @@
 <context>
     <name>SceneFiles</name>
     <message>
-        <location filename="../../ui/window/scene_files.cpp" line="+24" />
+        <location filename="../../ui/window/scene_files.cpp" line="+25" />
         <source>LagrangeLab scenes (*.lagrange *.json);;All files (*)</source>
         <translation>LagrangeLab-scener (*.lagrange *.json);;Alle filer (*)</translation>
     </message>
@@ -1456,7 +1594,7 @@
         <translation>Teach-tilstanden bruges til at stille robotter i en bestemt stilling; denne scene er en håndindtastet Lagrange-funktion.</translation>
     </message>
     <message>
-        <location line="+81" />
+        <location line="+80" />
         <source>%1°</source>
         <translation>%1°</translation>
     </message>
@@ -1528,12 +1666,12 @@
 <context>
     <name>TrajectoryChart</name>
     <message>
-        <location filename="../../ui/window/trajectory_chart.cpp" line="+73" />
+        <location filename="../../ui/window/trajectory_chart.cpp" line="+75" />
         <source>t [s]</source>
         <translation>t [s]</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+1" />
         <source>energy [J]</source>
         <translation>energi [J]</translation>
     </message>
@@ -1568,7 +1706,7 @@
         <translation>W</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+2" />
         <source>E − W</source>
         <translation>E − W</translation>
     </message>
@@ -1581,7 +1719,7 @@
 <context>
     <name>WorkPrecisionPane</name>
     <message>
-        <location filename="../../ui/window/work_precision_pane.cpp" line="+31" />
+        <location filename="../../ui/window/work_precision_pane.cpp" line="+33" />
         <source>Run work–precision sweep</source>
         <translation>Kør gennemløb for beregningsarbejde–præcision</translation>
     </message>
@@ -1611,12 +1749,12 @@
         <translation>Beregningsarbejde–præcision: %1</translation>
     </message>
     <message>
-        <location line="+37" />
+        <location line="+42" />
         <source>cancelled</source>
         <translation>annulleret</translation>
     </message>
     <message numerus="yes">
-        <location line="+11" />
+        <location line="+13" />
         <source>Done: %n run(s).</source>
         <translation>
             <numerusform>Færdig: %n kørsel.</numerusform>
@@ -1637,7 +1775,7 @@
 <context>
     <name>ll::ui::DerivationCanvas</name>
     <message>
-        <location filename="../../ui/window/derivation_view.cpp" line="-204" />
+        <location filename="../../ui/window/derivation_canvas.hpp" line="+210" />
         <source>Copy %1 as LaTeX</source>
         <translation>Kopiér %1 som LaTeX</translation>
     </message>
@@ -1645,7 +1783,7 @@
 <context>
     <name>ll::ui::DerivationView</name>
     <message>
-        <location line="-181" />
+        <location line="-182" />
         <source>equation %1</source>
         <translation>ligning %1</translation>
     </message>

@@ -22,6 +22,7 @@
 #include "ui/window/derivation_view.hpp"
 #include "ui/window/entry_list.hpp"
 #include "ui/window/main_window.hpp"
+#include "window_checks.hpp"
 #include "window_waits.hpp"
 #include "ui/window/entry_linking.hpp"
 #include "ui/window/playback_bar.hpp"
@@ -48,20 +49,6 @@ bool settled(MainWindow& w, int seconds = 120) {
         seconds * 1000);
 }
 
-// Per link: the emphasis the 3D view draws on its rods and COM (−1 faded, 0..1 lit; the
-// most of its parts), from the parts the view is told.
-std::vector<float> linkStrengths(MainWindow& w) {
-    const ll::VisualScene& scene = *w.result()->visual;
-    const ll::VisualEmphasis& e = w.sceneView().emphasis();
-    std::vector<float> out(static_cast<std::size_t>(scene.dof()), -2.0f);
-    if (!e.active()) return out;
-    for (std::size_t i = 0; i < scene.parts.size(); ++i) {
-        const ll::VisualPart& p = scene.parts[i];
-        if (p.role != ll::PartRole::Link && p.role != ll::PartRole::CentreOfMass) continue;
-        out[static_cast<std::size_t>(p.coordinate)] = std::max(out[static_cast<std::size_t>(p.coordinate)], e.strength[i]);
-    }
-    return out;
-}
 
 // A window at 1280×800 with `name` opened, simulated and derived.
 std::unique_ptr<MainWindow> opened(const char* name) {
@@ -75,7 +62,7 @@ std::unique_ptr<MainWindow> opened(const char* name) {
 
 std::vector<int> lit(MainWindow& w) {
     std::vector<int> links;
-    const std::vector<float> s = linkStrengths(w);
+    const std::vector<float> s = ll::test::linkStrengths(w);
     for (std::size_t i = 0; i < s.size(); ++i)
         if (s[i] >= 0) links.push_back(static_cast<int>(i));
     return links;
@@ -92,8 +79,7 @@ private:
 private slots:
     void initTestCase() {
         QVERIFY(dir_.isValid());
-        qputenv("LAGRANGELAB_RECOVERY_DIR", dir_.filePath("recovery").toLocal8Bit());
-        QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, dir_.filePath("settings"));
+        ll::test::keepWindowStateIn(dir_);
     }
 
     // The 2R: b11 lights links 1 and 2, b22 link 2 alone and fades link 1; b11 depends on
@@ -114,7 +100,7 @@ private slots:
         QCOMPARE(axes, 1);
         QVERIFY(w.linking().selectEntry("b22"));
         QCOMPARE(lit(w), (std::vector<int>{1}));
-        QCOMPARE(linkStrengths(w)[0], -1.0f);
+        QCOMPARE(ll::test::linkStrengths(w)[0], -1.0f);
         QVERIFY(w.linking().readoutText().contains("b22"));
         QVERIFY(w.linking().readoutText().contains("kg·m²"));
         // its curve over the run beside the energy plot
@@ -131,7 +117,7 @@ private slots:
         MainWindow& w = *window;
         QVERIFY(w.linking().selectEntry("g1"));
         QVERIFY(lit(w).empty());
-        for (float s : linkStrengths(w)) QCOMPARE(s, -1.0f);
+        for (float s : ll::test::linkStrengths(w)) QCOMPARE(s, -1.0f);
         QVERIFY(w.linking().readoutText().contains("no link"));
     }
 

@@ -42,6 +42,7 @@
 #include "ui/window/example_gallery.hpp"
 #include "ui/window/main_window.hpp"
 #include "ui/window/scene_files.hpp"
+#include "window_checks.hpp"
 #include "window_waits.hpp"
 #include "ui/window/ghost_run.hpp"
 #include "ui/window/presentation_mode.hpp"
@@ -155,8 +156,7 @@ private slots:
         QVERIFY(dir_.isValid());
         dir_.setAutoRemove(!qEnvironmentVariableIsSet("LL_TEST_KEEP"));  // LL_TEST_KEEP=1: keep the screenshots to look at
         // Recovery copies and recent files go to the temporary folder, not the user's.
-        qputenv("LAGRANGELAB_RECOVERY_DIR", dir_.filePath("recovery").toLocal8Bit());
-        QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, dir_.filePath("settings"));
+        ll::test::keepWindowStateIn(dir_);
     }
 
     // An edit that makes the robot larger refits a camera the user has not moved (a1 = 1.5

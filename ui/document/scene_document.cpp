@@ -173,7 +173,52 @@ QString SceneDocument::errorAt(const std::string& field) const {
     return found.join('\n');
 }
 
+namespace {
+
+// The "exercise" section when it is well formed (entries: names; answers: texts by entry);
+// nothing otherwise (the scene check then says what is wrong with it).
+std::optional<Exercise> exerciseIn(const SceneJson& json) {
+    Exercise e;
+    const auto section = json.find("exercise");
+    if (section == json.end()) return e;
+    if (!section->is_object()) return std::nullopt;
+    for (const auto& [key, value] : section->items()) {
+        if (key == "entries" && value.is_array()) {
+            for (const SceneJson& entry : value)
+                if (entry.is_string()) e.entries.push_back(entry.get<std::string>());
+                else return std::nullopt;
+        } else if (key == "answers" && value.is_object()) {
+            for (const auto& [entry, answer] : value.items())
+                if (answer.is_string()) e.answers.emplace_back(entry, answer.get<std::string>());
+                else return std::nullopt;
+        } else {
+            return std::nullopt;
+        }
+    }
+    return e;
+}
+
+bool sameModel(SceneJson a, SceneJson b) {
+    a.erase("exercise");
+    b.erase("exercise");
+    return a == b;
+}
+
+}  // namespace
+
+Exercise SceneDocument::exercise() const { return exerciseIn(json_).value_or(Exercise{}); }
+
 void SceneDocument::setJson(const SceneJson& json) {
+    // Only the student's answers or the entries asked changed, and the model they are about
+    // is checked and valid: nothing to check, simulate or derive again.
+    if (!validating() && !hasErrors() && validRevision_ > 0 && sameModel(json_, json))
+        if (std::optional<Exercise> exercise = exerciseIn(json)) {
+            json_ = json;
+            lastEdited_.clear();
+            validScene_.exercise = std::move(*exercise);
+            emit exerciseChanged();
+            return;
+        }
     json_ = json;
     lastEdited_.clear();  // setValue names its field after this
     checks_.request();

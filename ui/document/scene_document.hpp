@@ -55,6 +55,10 @@ public:
     QUndoStack* undoStack() { return &undo_; }
     bool isModified() const { return !undo_.isClean(); }
 
+    // The "exercise" section as it stands now (the entries asked, the answers typed); empty
+    // when the scene has none or it is not well formed.
+    Exercise exercise() const;
+
     // The value at `pointer` ("/robot/joints/0/a"), null when absent.
     SceneJson value(const std::string& pointer) const;
     // One undoable edit: the value at `pointer` becomes `v` (null removes it).
@@ -88,6 +92,10 @@ signals:
     void validated();
     // When the change gave a valid scene (validScene() holds it).
     void validSceneChanged();
+    // Instead of all three, when only the "exercise" section changed (an answer typed, an
+    // entry asked): the student's work, not the model, so nothing is checked, simulated
+    // or derived again; validScene().exercise holds it.
+    void exerciseChanged();
 
 private:
     friend class SceneEditCommand;

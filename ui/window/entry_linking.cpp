@@ -61,6 +61,7 @@ void EntryLinking::pickedInDerivation(int step, int item, int row, int col) {
 }
 
 void EntryLinking::runShown() {
+    litShown_ = false;  // a new view of the robot: lit again
     if (shown_.result && shown_.result->visual) parts_.view->setEmphasis(selection_.emphasis(*shown_.result->visual));
     selectionChanged();
 }
@@ -110,12 +111,29 @@ void EntryLinking::selectionChanged() {
     valueChanged();
 }
 
+void EntryLinking::showLit() {
+    litShown_ = false;
+    valueChanged();
+}
+
 void EntryLinking::valueChanged() {
     if (!selection_.active()) {
         parts_.readout->setText(readoutHint());
-        if (parts_.view->emphasis().active()) parts_.view->setEmphasis({});
+        const VisualScene* visual = shown_.result ? shown_.result->visual.get() : nullptr;
+        if (!shown_.litLinks.empty() && visual) {
+            if (litShown_) return;  // set once, not every frame
+            std::vector<double> shares(static_cast<std::size_t>(shown_.result->scene->dof()), -1.0);
+            for (int link : shown_.litLinks)
+                if (link >= 1 && link <= static_cast<int>(shares.size())) shares[static_cast<std::size_t>(link - 1)] = 1.0;
+            parts_.view->setEmphasis(visualEmphasis(*visual, shares, 0, 0));
+            litShown_ = true;
+        } else if (parts_.view->emphasis().active()) {
+            parts_.view->setEmphasis({});
+            litShown_ = false;
+        }
         return;
     }
+    litShown_ = false;
     parts_.readout->setText(selection_.readout());
     if (shown_.result && shown_.result->visual) parts_.view->setEmphasis(selection_.emphasis(*shown_.result->visual));
 }

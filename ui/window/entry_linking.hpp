@@ -26,6 +26,8 @@ public:
     void runShown();
     // A new time or pose: the value, the shares, the emphasis.
     void valueChanged();
+    // The links an exercise's hint names changed (OnScreen::litLinks): lit while nothing is picked.
+    void showLit();
 
     QString readoutText() const;
     static QString readoutHint();
@@ -37,6 +39,7 @@ private:
     EntrySelection& selection_;
     const OnScreen& shown_;
     const WindowParts& parts_;
+    bool litShown_ = false;  // the view shows OnScreen::litLinks
 };
 
 }  // namespace ll::ui

@@ -24,9 +24,12 @@
 #include "ui/window/derivation_view.hpp"
 #include "ui/window/dh_step_link.hpp"
 #include "ui/window/dh_step_panel.hpp"
+#include "ui/document/shown_derivation.hpp"
 #include "ui/window/edit_frame.hpp"
 #include "ui/window/entry_linking.hpp"
 #include "ui/window/entry_list.hpp"
+#include "ui/window/exercise_mode.hpp"
+#include "ui/window/exercise_panel.hpp"
 #include "ui/window/export_actions.hpp"
 #include "ui/window/ghost_run.hpp"
 #include "ui/window/language_menu.hpp"
@@ -74,6 +77,7 @@ MainWindow::~MainWindow() {
     // signals while they go (a slot would meet a feature or widget already gone).
     for (QObject* o : findChildren<QObject*>()) o->blockSignals(true);
     doc_.blockSignals(true), doc_.undoStack()->blockSignals(true);
+    exercise_.reset();
     ghost_.reset();
     teachMode_.reset();
     language_.reset();
@@ -180,10 +184,12 @@ void MainWindow::buildDocks() {
     parts_.derivationTabs->addTab(typeset, QString());
     parts_.derivationTabs->addTab(textPage, QString());
     parts_.derivationTabs->addTab(new EntryList(selection_, parts_.derivationTabs), QString());
+    parts_.derivationTabs->addTab(parts_.exercise = new ExercisePanel(parts_.derivationTabs), QString());
     (*relabel_)([tabs = parts_.derivationTabs] {
         tabs->setTabText(0, tr("Typeset"));
         tabs->setTabText(1, tr("Text"));
         tabs->setTabText(2, tr("Entries"));
+        tabs->setTabText(3, tr("Exercise"));
     });
     derivationDock->setWidget(parts_.derivationTabs);
     addDockWidget(Qt::RightDockWidgetArea, derivationDock);
@@ -232,6 +238,7 @@ void MainWindow::buildFeatures() {
     presentationMode_ = std::make_unique<PresentationMode>(parts_);
     language_ = std::make_unique<LanguageMenu>(*this);
     ghost_ = std::make_unique<GhostRun>(doc_, parts_);
+    exercise_ = std::make_unique<ExerciseMode>(doc_, selection_, *linking_, shown_, parts_, *parts_.exercise);
 
     connect(files_.get(), &SceneFiles::opened, this, [this](const QString& path) {
         autosave_->discard();  // the copy of the scene open before, if it was not saved: asked in maybeSave
@@ -245,10 +252,14 @@ void MainWindow::buildFeatures() {
         autosave_->setOriginal(path);
         updateTitle();
     });
-    connect(language_.get(), &LanguageMenu::changed, this, [this] {
-        parts_.editor->documentChanged(language_->current().language);  // the checks in the new language
+    const auto showAgain = [this] {
         if (derivedAsDerived_) showDerivation(derivedAsDerived_);
+    };
+    connect(language_.get(), &LanguageMenu::changed, this, [this, showAgain] {
+        parts_.editor->documentChanged(language_->current().language);  // the checks in the new language
+        showAgain();
     });
+    connect(exercise_.get(), &ExerciseMode::hiddenChanged, this, showAgain);  // other answers hidden
     connect(ghost_.get(), &GhostRun::shown, this, [this] { showTime(parts_.playback->time()); });
 
     // The 3D view: a joint pointed at selects its DH row; a row chosen lights its joint.
@@ -379,6 +390,7 @@ void MainWindow::validSceneChanged() {
     parts_.dhSteps->setRobot(scene.robot, !scene.lagrangian);
     teachMode_->sceneChanged();
     parts_.workPrecision->setScene(scene);
+    exercise_->sceneChanged();
 }
 
 void MainWindow::showResult(std::shared_ptr<const LiveResult> result) {
@@ -393,16 +405,7 @@ void MainWindow::showResult(std::shared_ptr<const LiveResult> result) {
     shown_.sampler = std::make_unique<TrajectorySampler>(traj);
     q_.resize(traj.n);
     qd_.resize(traj.n);
-    // The end effector at every sample, for the trail.
-    effectorPath_.clear();
-    VisualScene& visual = *result->visual;
-    if (visual.endEffector >= 0) {
-        effectorPath_.reserve(traj.size());
-        for (std::size_t k = 0; k < traj.size(); ++k) {
-            visual.pose(traj.q[k], traj.t[k]);
-            effectorPath_.push_back(visual.endEffectorPosition());
-        }
-    }
+    effectorPath_ = result->visual->endEffectorPath(traj);  // the trail's points
     const int structure = result->scene->dof();
     const QString name = QString::fromStdString(result->scene->name);
     const bool refit = structure != shownStructure_ || name != shownName_;
@@ -424,17 +427,13 @@ void MainWindow::showResult(std::shared_ptr<const LiveResult> result) {
 }
 
 // The derivation as the worker made it (English, the notes' notation), shown in the
-// language and notation chosen.
+// language and notation chosen, an exercise's answers hidden.
 void MainWindow::showDerivation(std::shared_ptr<const DerivationResult> derived) {
-    std::shared_ptr<const DerivationResult> result = derived;
-    const present::Presentation& presentation = language_->current();
-    if (derived->display && (presentation.language != present::Language::English || presentation.notation != present::Notation::Notes)) {
-        auto shown = std::make_shared<DerivationResult>(*derived);
-        shown->display = present::localizedDocument(*derived->display, presentation);
-        shown->textSpans.clear();
-        shown->text = QString::fromStdString(present::textDocument(*shown->display, &shown->textSpans));
-        result = shown;
+    if (exercise_->holdsDerivation() && !derived->stopped) {  // shown once the exercise knows what to hide
+        derivedAsDerived_ = derived;
+        return;
     }
+    const auto result = shownDerivation(derived, language_->current(), exercise_->hidden());
     parts_.derivation->setDerivation(*result);
     if (result->stopped) {
         parts_.typeset->cancel();
@@ -446,6 +445,7 @@ void MainWindow::showDerivation(std::shared_ptr<const DerivationResult> derived)
     selection_.setCatalogue(result->catalogue, result->scene);
     if (shown_.sampler && selection_.catalogue() && q_.size() == selection_.catalogue()->n)
         selection_.setState(q_, qd_, parts_.playback->time());
+    exercise_->derivationShown();
 }
 
 void MainWindow::showAnalysis(std::shared_ptr<const RunAnalysis> analysis) {
@@ -527,7 +527,7 @@ bool MainWindow::showPlotTab(const QString& name) {
 }
 
 void MainWindow::showDerivationView(const QString& name) {
-    parts_.derivationTabs->setCurrentIndex(name == "text" ? 1 : name == "entries" ? 2 : 0);
+    parts_.derivationTabs->setCurrentIndex(name == "text" ? 1 : name == "entries" ? 2 : name == "exercise" ? 3 : 0);
 }
 
 void MainWindow::setEditHoldLimit(int milliseconds) { editFrame_->setLimit(milliseconds); }

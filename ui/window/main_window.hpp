@@ -15,6 +15,7 @@
 //   LanguageMenu      the derivation's language and notation
 //   GhostRun          the same scene with a cheaper integrator beside it
 //   TeachMode         the robot at a pose of the sliders, B, C, g evaluated there
+//   ExerciseMode      the student's own answers, hidden entries, checked with hints
 #include <memory>
 
 #include <Eigen/Core>
@@ -34,6 +35,7 @@ class Autosave;
 class DhStepLink;
 class EditFrame;
 class EntryLinking;
+class ExerciseMode;
 class ExportActions;
 class GhostRun;
 class LanguageMenu;
@@ -90,6 +92,8 @@ public:
     PresentationMode& presentationMode() { return *presentationMode_; }
     LanguageMenu& language() { return *language_; }
     GhostRun& ghost() { return *ghost_; }
+    ExerciseMode& exercise() { return *exercise_; }
+    ExercisePanel& exercisePanel() { return *parts_.exercise; }
 
     // What is on screen (null before the first result).
     const LiveResult* result() const { return shown_.result.get(); }
@@ -104,7 +108,7 @@ public:
     // Shows a tab of the plots dock by name: energy, joints, teach, torques, properties,
     // work-precision, dh-steps (false: no such tab).
     bool showPlotTab(const QString& name);
-    // Shows the derivation dock's tab: typeset, text or entries.
+    // Shows the derivation dock's tab: typeset, text, entries or exercise.
     void showDerivationView(const QString& name);
 
 signals:
@@ -154,6 +158,7 @@ private:
     std::unique_ptr<LanguageMenu> language_;
     std::unique_ptr<GhostRun> ghost_;
     std::unique_ptr<TeachMode> teachMode_;
+    std::unique_ptr<ExerciseMode> exercise_;
 
     bool remembersLayout_ = false;
     bool runFailed_ = false;   // the status line says why the newest run failed

@@ -3,6 +3,7 @@
 // ones it needs and builds none of them) and what is on screen now (the run, its sampler,
 // the derivation as shown). MainWindow owns both; the features read them.
 #include <memory>
+#include <vector>
 
 #include "core/visual/trajectory_sampler.hpp"
 #include "ui/document/live_derivation.hpp"
@@ -19,6 +20,7 @@ namespace ll::ui {
 class DerivationPanel;
 class DerivationView;
 class DhStepPanel;
+class ExercisePanel;
 class ModelEditor;
 class PlaybackBar;
 class PropertiesPanel;
@@ -34,6 +36,7 @@ struct OnScreen {
     std::unique_ptr<TrajectorySampler> sampler;       // over result's trajectory
     std::shared_ptr<const DerivationResult> derived;  // as shown: in the chosen language and notation
     std::shared_ptr<const RunAnalysis> analysis;      // torques and properties of `result`, once they arrive
+    std::vector<int> litLinks;                        // 1-based: the links an exercise's hint names (lit when nothing is picked)
 };
 
 struct WindowParts {
@@ -45,7 +48,8 @@ struct WindowParts {
     QLabel* readout = nullptr;              // the picked entry's value, under the 3D view
     DerivationPanel* derivation = nullptr;  // the derivation as text
     DerivationView* typeset = nullptr;      // the derivation typeset
-    QTabWidget* derivationTabs = nullptr;   // typeset, text, entries
+    QTabWidget* derivationTabs = nullptr;   // typeset, text, entries, exercise
+    ExercisePanel* exercise = nullptr;      // the exercise tab (ui/window/exercise_mode)
     QTabWidget* plotTabs = nullptr;         // the plots dock's tabs
     QWidget* energyPage = nullptr;          // the energy plot with the picked entry's plot beside it
     TrajectoryChart *energy = nullptr, *joints = nullptr, *entryChart = nullptr;

@@ -1,0 +1,80 @@
+#include "ui/document/answer_checking.hpp"
+
+#include <QMetaObject>
+
+#include "core/model/diagnostics.hpp"
+#include "core/present/diagnostic_text.hpp"
+#include "ui/document/app_language.hpp"
+
+namespace ll::ui {
+
+AnswerChecking::AnswerChecking(QObject* parent) : QObject(parent) { pool_.setMaxThreadCount(1); }
+
+AnswerChecking::~AnswerChecking() {
+    keys_.cancel();
+    pool_.waitForDone();
+}
+
+void AnswerChecking::setScene(const Scene& scene) {
+    const int number = keys_.request();
+    key_.reset();
+    pool_.start([self = this, scene = std::make_shared<const Scene>(scene), number, language = windowLanguage()] {
+        std::shared_ptr<const AnswerKey> key;
+        QString why;
+        try {
+            key = AnswerKey::build(*scene);
+        } catch (const InputError& e) {
+            for (const Diagnostic& d : e.diagnostics()) why += QString::fromStdString(present::diagnosticBody(d, language) + "\n");
+        } catch (const std::exception& e) {
+            why = QString::fromStdString(e.what());
+        }
+        self->keys_.deliver(self, number, [self, number, key, why] {  // dropped when a newer scene's key is asked for
+            self->keyNumber_ = number;
+            self->key_ = key;
+            if (!key) {
+                self->waiting_.clear();
+                emit self->keyFailed(why.trimmed());
+                return;
+            }
+            const std::map<QString, Waiting> waiting = std::move(self->waiting_);
+            self->waiting_.clear();
+            emit self->keyReady();
+            for (const auto& [entry, w] : waiting) self->check(entry, w.answer, w.reveal);
+        });
+    });
+}
+
+void AnswerChecking::clear() {
+    keys_.request();  // a key being built is dropped when it arrives
+    key_.reset();
+    waiting_.clear();
+}
+
+void AnswerChecking::check(const QString& entry, const QString& answer, bool reveal) {
+    const int number = ++checks_;
+    newestCheck_[entry] = number;
+    if (!key_) {
+        if (building()) waiting_[entry] = {answer, reveal};
+        return;
+    }
+    start(entry, answer, reveal, number);
+}
+
+void AnswerChecking::start(const QString& entry, const QString& answer, bool reveal, int number) {
+    pool_.start([self = this, key = key_, request = AnswerRequest{entry.toStdString(), answer.toStdString(), reveal}, entry, answer, number,
+                 keyNumber = keyNumber_] {
+        auto result = std::make_shared<AnswerCheck>(key->check(request));
+        if (request.reveal && result->rightAnswer.empty()) result->rightAnswer = key->rightAnswer(request.entry);  // nothing typed yet
+        QMetaObject::invokeMethod(
+            self,
+            [self, entry, answer, number, keyNumber, result] {
+                // void when the same entry was checked again since, or the scene changed
+                const auto newest = self->newestCheck_.find(entry);
+                if (newest == self->newestCheck_.end() || newest->second != number || keyNumber != self->keyNumber_ || !self->key_) return;
+                emit self->checked(entry, answer, *result);
+            },
+            Qt::QueuedConnection);
+    });
+}
+
+}  // namespace ll::ui
