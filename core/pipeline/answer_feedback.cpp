@@ -9,6 +9,7 @@
 //    part), and within a link into its m v_cᵀv_c and ωᵀIω terms; a constant difference
 //    in the translational term is a parallel-axis (Steiner) slip;
 //  - the units of each term, the coordinates and velocities it depends on, the home pose.
+#include <cstdio>
 #include <algorithm>
 #include <optional>
 #include <set>
@@ -90,11 +91,21 @@ private:
         if (!k || k->is_zero()) return false;
         if (*k == -1) {
             hint(message(MessageId::HintSign), AnswerErrorKind::Sign);
-        } else {
-            std::ostringstream s;
-            s << *k;
-            hint(message(MessageId::HintFactor, s.str(), e_.id), AnswerErrorKind::Factor);
+            return true;
         }
+        // a factor a student slips in is a small fraction (½, 2, 4/3); between two numbers any
+        // ratio is "a factor", which says nothing: they are simply different
+        const bool small = abs(k->numer()) <= 64 && k->denom() <= 64;
+        if (!small && GiNaC::is_a<GiNaC::numeric>(answer_) && GiNaC::is_a<GiNaC::numeric>(right_)) return false;
+        std::ostringstream s;
+        if (small) {
+            s << *k;
+        } else {
+            char decimal[32];
+            std::snprintf(decimal, sizeof decimal, "≈ %.4g", k->to_double());
+            s << decimal;
+        }
+        hint(message(MessageId::HintFactor, s.str(), e_.id), AnswerErrorKind::Factor);
         return true;
     }
 
@@ -268,6 +279,7 @@ private:
             case EntryKind::KineticEnergy:
             case EntryKind::PotentialEnergy:
             case EntryKind::Equation: return true;
+            case EntryKind::LinkPart: return e_.k >= 0;  // β_jk⁽ⁱ⁾: link i's part alone, its terms told apart the same way
             default: return false;
         }
     }

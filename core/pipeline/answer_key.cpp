@@ -268,6 +268,7 @@ private:
         for (int i = 0; i < n; ++i) add({"Q" + indices({i}, n), EntryKind::Force, i, -1, -1, "", d_.Q(i, 0)}, {"tau" + indices({i}, n)});
         add({"E_kin", EntryKind::KineticEnergy, -1, -1, -1, "", d_.Ekin}, {"T", "K"});
         add({"E_pot", EntryKind::PotentialEnergy, -1, -1, -1, "", d_.Epot}, {"U", "V", "P"});
+        if (!k_.scene.lagrangian) linkParts(n);
         for (const symbolic::DerivationStep& step : d_.steps)
             for (const symbolic::DerivationItem& item : step.items)
                 if (item.quantity == symbolic::Quantity::EquationOfMotion) {
@@ -277,6 +278,19 @@ private:
                     add({"equation" + number, EntryKind::Equation, row, -1, -1, item.name, relation.lhs() - relation.rhs()},
                         {"eom" + number, "equation_" + number});
                 }
+    }
+
+    // The structured form's names (β_jk⁽ⁱ⁾ = beta{j}_{k}_{i}, γ_j⁽ⁱ⁾ = gamma{j}_{i}), made when asked.
+    void linkParts(int n) {
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; j <= i; ++j) {
+                const std::string L = std::to_string(i + 1), J = std::to_string(j + 1);
+                for (int k = j; k <= i; ++k) {
+                    const std::string K = std::to_string(k + 1);
+                    add({"beta" + J + "_" + K + "_" + L, EntryKind::LinkPart, i, j, k, "", 0, false}, {"beta" + J + K + "(" + L + ")"});
+                }
+                if (k_.scene.effects.gravity) add({"gamma" + J + "_" + L, EntryKind::LinkPart, i, j, -1, "", 0, false}, {"gamma" + J + "(" + L + ")"});
+            }
     }
 
     // The roles of the symbols by link (a mass, an inertia, a centre of mass, a DH length),
@@ -330,6 +344,17 @@ private:
             unit(d_.qdd[i].get_name(), {0, prismatic ? 1 : 0, -2});
         }
         if (symbolOf("g")) unit("g", {0, 1, -2});  // the textbook symbol of gravity
+        // the masses and g0 for the link parts, in the derivation's own symbols (by name)
+        const auto adopt = [&](const ex& e) {
+            std::map<std::string, ex> found;
+            collectSymbols(e, found);
+            GiNaC::exmap own;
+            for (const auto& [name, symbol] : found)
+                if (auto it = k_.vocabulary.names.find(name); it != k_.vocabulary.names.end()) own[symbol] = it->second;
+            return e.subs(own, GiNaC::subs_options::no_pattern);
+        };
+        for (const symbolic::SymbolicJoint& joint : robot.joints) k_.masses.push_back(adopt(joint.mass));
+        for (unsigned r = 0; r < 3; ++r) k_.gravity(r, 0) = robot.hasGravity ? adopt(robot.gravity(r, 0)) : ex(0);
         for (const auto& [name, ignored] : conflicts) k_.units.erase(name);
     }
 
@@ -351,7 +376,9 @@ std::string printed(const AnswerKey::Data& k, const ex& e, present::Style style)
 
 const ex& AnswerKey::Data::valueOf(const KeyEntry& entry) const {
     if (!entry.ready) {
-        entry.value = christoffel(GiNaC::ex_to<GiNaC::matrix>(functions(derivation.B)), derivation.q, entry.i, entry.j, entry.k);
+        entry.value = entry.kind == EntryKind::LinkPart
+                          ? functions(linkPart(entry))
+                          : christoffel(GiNaC::ex_to<GiNaC::matrix>(functions(derivation.B)), derivation.q, entry.i, entry.j, entry.k);
         entry.ready = true;
     }
     return entry.value;
@@ -395,6 +422,7 @@ std::optional<ex> AnswerKey::Data::entryValue(const symbolic::Derivation& d, con
             if (!v) return std::nullopt;
             return f(v->lhs() - v->rhs());
         }
+        case EntryKind::LinkPart: return std::nullopt;  // made from this derivation's items only
         case EntryKind::Item: {
             const ex* v = itemValue(d, e.quantity, e.index);
             if (!v) return std::nullopt;

@@ -17,15 +17,17 @@
 
 namespace ll {
 
-enum class EntryKind { MassMatrix, Coriolis, Christoffel, Gravity, Force, KineticEnergy, PotentialEnergy, Equation, Item };
+// LinkPart: the structured form's β_jk⁽ⁱ⁾ (k ≥ 0) and γ_j⁽ⁱ⁾ (k = −1), link i's part of b_jk
+// and its gravity lever for joint j (core/symbolic/structured_dynamics.hpp).
+enum class EntryKind { MassMatrix, Coriolis, Christoffel, Gravity, Force, KineticEnergy, PotentialEnergy, Equation, Item, LinkPart };
 
 struct KeyEntry {
     std::string id;  // b11, c121, T_2^0(1,4)
     EntryKind kind = EntryKind::Item;
     int i = -1, j = -1, k = -1;  // 0-based indices (b_ij, c_ijk, g_i, a matrix item's row and column)
     std::string item;            // a derivation item's name (EntryKind::Item), as shown
-    // sin and cos as functions of the coordinates; a Christoffel symbol's is made when first
-    // asked for (AnswerKey::Data::valueOf: a 6-joint robot has 216 of them)
+    // sin and cos as functions of the coordinates; a Christoffel symbol's and a link part's
+    // are made when first asked for (AnswerKey::Data::valueOf: a 6-joint robot has 216 and 77)
     mutable GiNaC::ex value;
     mutable bool ready = true;
     symbolic::Quantity quantity = symbolic::Quantity::NamedQuantity;  // EntryKind::Item: the item's quantity and index
@@ -57,12 +59,17 @@ struct AnswerKey::Data {
     GiNaC::exmap toFunctions, toShorthand;          // c12 → cos(q1 + q2) and back
     GiNaC::exmap values;                            // every parameter symbol → its exact value
     std::vector<LinkRoles> links;                   // robots only
+    std::vector<GiNaC::ex> masses;                  // robots: each link's mass, in the derivation's symbols
+    GiNaC::matrix gravity{3, 1};                    // robots: g0 in the base frame, likewise
     std::map<std::string, Dimension> units;         // by symbol name; absent: not known
     // The same robot derived in the other DH convention, made when first needed.
     mutable std::optional<symbolic::Derivation> otherConvention;
 
     GiNaC::ex functions(const GiNaC::ex& e) const { return e.subs(toFunctions, GiNaC::subs_options::no_pattern); }
     const GiNaC::ex& valueOf(const KeyEntry& entry) const;
+    // β_jk⁽ⁱ⁾ or γ_j⁽ⁱ⁾ (EntryKind::LinkPart) from this derivation's Jacobians and inertia
+    // tensors (answer_link_parts.cpp).
+    GiNaC::ex linkPart(const KeyEntry& entry) const;
     const GiNaC::ex* itemValue(const symbolic::Derivation& d, symbolic::Quantity quantity, int index) const;
     // The value of `entry` in another derivation of the same scene (the other convention).
     std::optional<GiNaC::ex> entryValue(const symbolic::Derivation& d, const KeyEntry& entry) const;

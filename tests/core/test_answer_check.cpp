@@ -27,6 +27,7 @@
 #include "core/symbolic/function_identity.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/symbolic/robot_derivation.hpp"
+#include "core/symbolic/structured_dynamics.hpp"
 
 namespace test_answer_check {
 
@@ -434,6 +435,66 @@ private slots:
             b.steps = {*hidden.step(step)};
             QCOMPARE(present::textDocument(b), present::textDocument(a));
         }
+    }
+
+    // The structured form's names as entries: β_jk⁽ⁱ⁾ and γ_j⁽ⁱ⁾ from the expanded
+    // derivation equal the structured derivation's own (written in the links' frames, an
+    // independent construction), sum to b_jk and −g_j as the notes say, and are checked
+    // like any entry.
+    void structuredNamesAreEntries() {
+        for (const char* which : {"spatial 3R", "stanford_arm.json"}) {
+            Scene scene = std::string(which) == "spatial 3R" ? parseScene(kSpatial3R) : loadScene(std::string(LL_EXAMPLES_DIR) + "/" + which).scene;
+            scene.effects.springs.clear();  // g_j is then gravity's alone
+            const auto k = AnswerKey::build(scene);
+            const AnswerKey::Data& d = k->data();
+            const auto lock = symbolic::lockGinac();
+            const auto value = [&](const std::string& id) {
+                for (const KeyEntry& e : d.entries)
+                    if (e.id == id) return d.valueOf(e);
+                qFatal("no entry %s", id.c_str());
+            };
+            const symbolic::StructuredDynamics s = symbolic::deriveStructured(scene);
+            GiNaC::exmap toFunctions;
+            for (const ex& r : s.trigToFunctions) toFunctions[r.lhs()] = r.rhs();
+            const auto adopt = [&](ex e) {  // the structured derivation's symbols are the key's, by name
+                e = s.table->unfold(e).subs(toFunctions, GiNaC::subs_options::no_pattern);
+                GiNaC::exmap byName;
+                std::map<std::string, ex> found;
+                std::function<void(const ex&)> collect = [&](const ex& x) {
+                    if (GiNaC::is_a<GiNaC::symbol>(x)) found.emplace(GiNaC::ex_to<GiNaC::symbol>(x).get_name(), x);
+                    for (std::size_t i = 0; i < x.nops(); ++i) collect(x.op(i));
+                };
+                collect(e);
+                for (const auto& [name, symbol] : found)
+                    if (auto it = d.vocabulary.names.find(name); it != d.vocabulary.names.end()) byName[symbol] = it->second;
+                return e.subs(byName, GiNaC::subs_options::no_pattern);
+            };
+            const int n = scene.dof();
+            symbolic::IdentitySampler sampler(77);
+            for (int j = 0; j < n; ++j) {
+                ex gamma = 0;
+                for (int i = j; i < n; ++i) gamma -= d.masses[i] * value("gamma" + std::to_string(j + 1) + "_" + std::to_string(i + 1));
+                QVERIFY2(symbolic::sameFunction(gamma, value("g" + std::to_string(j + 1)), sampler).same, which);
+                for (int kk = j; kk < n; ++kk) {
+                    ex b = 0;
+                    for (int i = kk; i < n; ++i) {
+                        const std::string id = "beta" + std::to_string(j + 1) + "_" + std::to_string(kk + 1) + "_" + std::to_string(i + 1);
+                        const ex beta = value(id);
+                        b += beta;
+                        QVERIFY2(symbolic::sameFunction(beta, adopt(s.beta[j][kk][i - kk]), sampler).same, (std::string(which) + " " + id).c_str());
+                    }
+                    const std::string bid = "b" + std::to_string(j + 1) + std::to_string(kk + 1);
+                    QVERIFY2(symbolic::sameFunction(b, value(bid), sampler).same, (std::string(which) + " " + bid).c_str());
+                }
+            }
+        }
+        const auto k = AnswerKey::build(parseScene(kSpatial3R));
+        QCOMPARE(k->entryId("β23(3)"), std::string("beta2_3_3"));
+        QCOMPARE(k->entryId("gamma_2^(3)"), std::string("gamma2_3"));
+        QCOMPARE(int(check(*k, "beta3_3_3", "Iz3 + m3 lc3^2").verdict), int(AnswerVerdict::Right));
+        const AnswerCheck slip = check(*k, "beta3_3_3", "Iz3");
+        QCOMPARE(int(slip.verdict), int(AnswerVerdict::Wrong));
+        QVERIFY(has(slip, AnswerErrorKind::Steiner) || has(slip, AnswerErrorKind::Link));
     }
 
     void catalogueOfSlips() {
