@@ -342,7 +342,7 @@
         <translation>Øv trin %1</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+5" />
         <source>Practise %1</source>
         <translation>Øv %1</translation>
     </message>
@@ -352,28 +352,33 @@
         <translation>Afslut øvelsen</translation>
     </message>
     <message>
-        <location line="+60" />
-        <location line="+14" />
+        <location line="+16" />
+        <source>Making the answer key (the derivation, entry by entry)…</source>
+        <translation>Facitlisten laves (udledningen, element for element)…</translation>
+    </message>
+    <message>
+        <location line="+50" />
+        <location line="+16" />
         <source>Step %1: %2</source>
         <translation>Trin %1: %2</translation>
     </message>
     <message>
-        <location line="-2" />
+        <location line="-3" />
         <source>Entries not in this derivation</source>
         <translation>Elementer, som ikke findes i denne udledning</translation>
     </message>
     <message>
         <location line="+1" />
         <source>The answer key is being made…</source>
-        <translation>Facitlisten laves …</translation>
+        <translation>Facitlisten laves…</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+3" />
         <source>Step %1</source>
         <translation>Trin %1</translation>
     </message>
     <message>
-        <location line="+32" />
+        <location line="+35" />
         <source>Answer %1</source>
         <translation>Svar %1</translation>
     </message>
@@ -381,14 +386,14 @@
 <context>
     <name>ExercisePanel</name>
     <message>
-        <location filename="../../ui/window/exercise_panel.cpp" line="+89" />
+        <location filename="../../ui/window/exercise_panel.cpp" line="+92" />
         <source>Practise this step</source>
         <translation>Øv dette trin</translation>
     </message>
     <message>
         <location line="+1" />
         <source>Hide the answers of the step chosen in the derivation and answer them here</source>
-        <translation>Skjul svarene i det valgte trin af udledningen, og besvar dem her</translation>
+        <translation>Skjul svarene i det trin, der er valgt i udledningen, og besvar dem her</translation>
     </message>
     <message>
         <location line="+1" />
@@ -398,7 +403,7 @@
     <message>
         <location line="+1" />
         <source>Hide the entry picked in the derivation, the entry list or the teach panel</source>
-        <translation>Skjul elementet, der er valgt i udledningen, elementlisten eller Teach-panelet</translation>
+        <translation>Skjul elementet, der er valgt i udledningen, elementlisten eller teach-panelet</translation>
     </message>
     <message>
         <location line="+1" />
@@ -432,7 +437,7 @@
         <translation>Vis svaret</translation>
     </message>
     <message>
-        <location line="+92" />
+        <location line="+104" />
         <source>read as: %1</source>
         <translation>læst som: %1</translation>
     </message>

@@ -66,12 +66,17 @@ ExerciseMode::ExerciseMode(SceneDocument& document, const EntrySelection& select
     // a scene opened with an exercise.
     connect(parts_.derivationTabs, &QTabWidget::currentChanged, this, [this] {
         if (parts_.derivationTabs->currentWidget() == &panel_ && !checking_.key() && !checking_.building())
-            checking_.setScene(doc_.validScene());
+            buildKey();
     });
 }
 
 void ExerciseMode::sceneChanged() {
-    if (active() || checking_.key() || checking_.building()) checking_.setScene(doc_.validScene());
+    if (active() || checking_.key() || checking_.building()) buildKey();
+}
+
+void ExerciseMode::buildKey() {
+    checking_.setScene(doc_.validScene());
+    panel_.setStatus(tr("Making the answer key (the derivation, entry by entry)…"));  // a second for a 6-joint arm
 }
 
 void ExerciseMode::documentChanged() {
@@ -86,7 +91,7 @@ void ExerciseMode::documentChanged() {
             revealing_.clear();
             light({});
         } else if (!was && !checking_.key()) {
-            if (!checking_.building()) checking_.setScene(doc_.validScene());
+            if (!checking_.building()) buildKey();
         }
         if (checking_.key()) keyReady();  // the places of the entries asked now
         else showEntries();

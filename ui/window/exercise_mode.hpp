@@ -52,6 +52,7 @@ signals:
 
 private:
     void documentChanged();
+    void buildKey();
     void keyReady();
     void checked(const QString& entry, const QString& answer, const AnswerCheck& result);
     void commit(const QString& entry, const QString& answer);
