@@ -363,10 +363,12 @@ private:
 };
 
 // As the derivation prints: the trig shorthand (c12), and numbers spelled as the document
-// spells them (the scene's decimals as typed, 9.81 rather than 981/100).
-std::string printed(const AnswerKey::Data& k, const ex& e, present::Style style) {
+// spells them (the scene's decimals as typed, 9.81 rather than 981/100). A right answer
+// (`exact`) keeps every digit, so that copied back it is right.
+std::string printed(const AnswerKey::Data& k, const ex& e, present::Style style, bool exact = false) {
     present::DisplayOptions options = present::displayOptions(present::printOptionsFor(k.derivation, style));
     options.readableNumbers = true;
+    options.allDigits = exact;
     options.typedDecimals = k.derivation.typedDecimals;
     const ex shorthand = e.subs(k.toShorthand, GiNaC::subs_options::no_pattern);
     return present::renderDisplay(*present::buildDisplay(shorthand, options), present::displayStyle(style));
@@ -467,7 +469,7 @@ std::string AnswerKey::rightAnswer(const std::string& id) const {
     const auto lock = symbolic::lockGinac();
     auto it = data_->byKey.find(entryKey(id));
     if (it == data_->byKey.end()) return "";
-    return printed(*data_, data_->valueOf(data_->entries[it->second]), present::Style::Text);
+    return printed(*data_, data_->valueOf(data_->entries[it->second]), present::Style::Text, true);
 }
 
 namespace {
@@ -603,7 +605,7 @@ AnswerCheck AnswerKey::check(const AnswerRequest& request) const {
         if (request.reveal) {
             GiNaC::matrix right(w.rows, w.cols);
             for (unsigned i = 0; i < w.rows * w.cols; ++i) right(i / w.cols, i % w.cols) = k.valueOf(k.entries[w.entries[i]]);
-            out.rightAnswer = printed(k, right, present::Style::Text);
+            out.rightAnswer = printed(k, right, present::Style::Text, true);
         }
         judgeWhole(k, w, read, out);
         return out;
@@ -617,7 +619,7 @@ AnswerCheck AnswerKey::check(const AnswerRequest& request) const {
     const ex answer = read.value;
     out.readAs = printed(k, answer, present::Style::Text) + (read.equation ? " = 0" : "");
     out.readAsLatex = printed(k, answer, present::Style::Latex) + (read.equation ? " = 0" : "");
-    if (request.reveal) out.rightAnswer = printed(k, k.valueOf(entry), present::Style::Text);
+    if (request.reveal) out.rightAnswer = printed(k, k.valueOf(entry), present::Style::Text, true);
     judge(k, entry, it->second, answer, out);
     return out;
 }

@@ -113,7 +113,7 @@ struct DisplayBuilder::Term {
     bool more = false;  // "⋯ (N more terms)" of a cut sum
 };
 
-DisplayBuilder::DisplayBuilder(DisplayOptions options) : options_(std::move(options)), numbers_(options_.typedDecimals) {}
+DisplayBuilder::DisplayBuilder(DisplayOptions options) : options_(std::move(options)), numbers_(options_.typedDecimals, options_.allDigits) {}
 DisplayBuilder::~DisplayBuilder() = default;
 
 DisplayPtr DisplayBuilder::number(const numeric& n, bool standalone) const {

@@ -32,6 +32,7 @@ struct DisplayOptions {
     // as GiNaC holds them (fractions stay fractions).
     bool readableNumbers = false;
     std::vector<GiNaC::numeric> typedDecimals;
+    bool allDigits = false;  // readable numbers with every digit (NumberSpelling's allDigits)
     // Only for pages: a sum of more than maxTypesetTerms terms is built already cut as the
     // typesetter cuts it (its first keptTypesetTerms terms in display order and "⋯ (N more
     // terms)"). Every term is still ordered; the others are never built, which for the

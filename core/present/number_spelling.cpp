@@ -108,7 +108,26 @@ bool formulaMade(const numeric& v) {
     return fives == 0 || n == 1 || n == 2 || n == 4 || n == 8;
 }
 
-NumberSpelling::NumberSpelling(std::vector<numeric> typed) : typed_(std::move(typed)) {}
+NumberSpelling::NumberSpelling(std::vector<numeric> typed, bool allDigits) : typed_(std::move(typed)), allDigits_(allDigits) {}
+
+namespace {
+
+// Every digit of a positive rational whose denominator has no factor but 2 and 5
+// (2159/5000 → 0.4318); empty for any other.
+std::string allDigitsOf(const numeric& n) {
+    numeric d = n.denom();
+    int twos = 0, fives = 0;
+    while (GiNaC::irem(d, 2).is_zero()) d = d / 2, ++twos;
+    while (GiNaC::irem(d, 5).is_zero()) d = d / 5, ++fives;
+    if (d != 1) return "";
+    const int places = std::max(twos, fives);
+    std::string digits = str(n * numeric(10).power(places));
+    if (static_cast<int>(digits.size()) <= places) digits.insert(0, static_cast<std::size_t>(places) + 1 - digits.size(), '0');
+    digits.insert(digits.size() - static_cast<std::size_t>(places), ".");
+    return digits;
+}
+
+}  // namespace
 
 bool NumberSpelling::decimal(const numeric& n, bool standalone) const {
     if (!n.is_rational() || n.is_integer()) return false;
@@ -124,6 +143,10 @@ bool NumberSpelling::decimal(const numeric& n, bool standalone) const {
 DisplayPtr NumberSpelling::node(const numeric& n, bool standalone) const {
     if (!n.is_real() || !decimal(n, standalone)) return numberNode(n);
     if (n.is_negative()) return displayNegated(node(-n, standalone));
+    if (allDigits_) {
+        const std::string all = allDigitsOf(n);
+        return all.empty() ? numberNode(n) : displayNumber(all, all, "(" + str(n) + ")");
+    }
     return decimalNode(n.to_double(), "(" + str(n) + ")");
 }
 

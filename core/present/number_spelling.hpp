@@ -48,7 +48,10 @@ bool formulaMade(const GiNaC::numeric& v);
 // ((2159/5000)), so JSON and re-parsing stay exact.
 class NumberSpelling {
 public:
-    explicit NumberSpelling(std::vector<GiNaC::numeric> typed = {});
+    // allDigits: a decimal shows every digit it has (a rational whose denominator is made of
+    // 2s and 5s), and one with endless digits stays a fraction: an answer key's right answer,
+    // which a student may copy back and must find right, not 6 rounded digits.
+    explicit NumberSpelling(std::vector<GiNaC::numeric> typed = {}, bool allDigits = false);
     // Whether n (real) reads as a decimal.
     bool decimal(const GiNaC::numeric& n, bool standalone = false) const;
     // The node of n as this derivation spells it.
@@ -56,6 +59,7 @@ public:
 
 private:
     std::vector<GiNaC::numeric> typed_;
+    bool allDigits_ = false;
 };
 
 }  // namespace ll::present

@@ -497,6 +497,25 @@ private slots:
         QVERIFY(has(slip, AnswerErrorKind::Steiner) || has(slip, AnswerErrorKind::Link));
     }
 
+    // The right answer as --reveal and the window print it, copied back, is right: every
+    // digit of the scene's decimal arithmetic is printed (the PUMA 560's 1.553523243625),
+    // not 6 rounded ones, and endless decimals stay fractions.
+    void revealedAnswersReadBackRight() {
+        for (const char* example : {"puma560.json", "planar_2r.json", "stanford_arm.json"}) {
+            const auto k = key(example);
+            int checked = 0;
+            for (const std::string& id : k->entries()) {
+                if (id.rfind("b", 0) != 0 && id.rfind("g", 0) != 0 && id.rfind("E_", 0) != 0 && id.rfind("T_", 0) != 0) continue;
+                const std::string right = k->rightAnswer(id);
+                QVERIFY2(right.find("·10") == std::string::npos, (id + ": " + right).c_str());  // no rounded mantissas
+                const AnswerCheck c = check(*k, id, right);
+                QVERIFY2(c.verdict == AnswerVerdict::Right, (std::string(example) + " " + id + ": " + right).c_str());
+                ++checked;
+            }
+            QVERIFY(checked >= 10);
+        }
+    }
+
     void catalogueOfSlips() {
         struct Scene_ {
             std::shared_ptr<const AnswerKey> key;
