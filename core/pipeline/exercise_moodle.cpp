@@ -1,0 +1,160 @@
+// An exercise set as Moodle XML for STACK (core/pipeline/exercise_set.hpp): a question per
+// task whose question variables draw the robot's numbers within the set's ranges, the
+// model answer the derivation's with those numbers (exact fractions, so AlgEquiv compares
+// exactly), one algebraic input, one potential response tree.
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <sstream>
+
+#include "core/pipeline/exercise_set.hpp"
+#include "core/io/xml_text.hpp"
+#include "core/present/message_text.hpp"
+
+namespace ll {
+namespace {
+
+// HTML inside CDATA: "]]>" cannot stand there.
+std::string cdata(const std::string& html) {
+    std::string safe = html;
+    for (std::size_t at; (at = safe.find("]]>")) != std::string::npos;) safe.replace(at, 3, "]]&gt;");
+    return "<![CDATA[" + safe + "]]>";
+}
+
+// A double as an exact Maxima fraction of its shortest decimal: 0.8 → 8/10, 9.81 → 981/100.
+std::string maximaNumber(double value) {
+    char buffer[64];
+    const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
+    std::string text(buffer, end);
+    if (text.find_first_of("eE") != std::string::npos) return text;  // 1e-05: Maxima reads it (a float)
+    const std::size_t dot = text.find('.');
+    if (dot == std::string::npos) return text;
+    const bool negative = text[0] == '-';
+    std::string digits = text.substr(negative ? 1 : 0, dot - (negative ? 1 : 0)) + text.substr(dot + 1);
+    digits.erase(0, std::min(digits.find_first_not_of('0'), digits.size() - 1));
+    return std::string("(") + (negative ? "-" : "") + digits + "/1" + std::string(text.size() - dot - 1, '0') + ")";
+}
+
+// b11 → b_{11}; T_2^0(1,4) → \mathrm{T\_2^0(1,4)} as it is typed.
+std::string latexLabel(const std::string& id) {
+    std::size_t letters = 0;
+    while (letters < id.size() && std::isalpha(static_cast<unsigned char>(id[letters]))) ++letters;
+    const bool plain = letters > 0 && letters < id.size() && id.find_first_not_of("0123456789", letters) == std::string::npos;
+    if (plain) return id.substr(0, letters) + "_{" + id.substr(letters) + "}";
+    std::string escaped;
+    for (char c : id) escaped += c == '_' ? std::string("\\_") : c == '^' ? std::string("\\hat{}") : std::string(1, c);
+    return "\\mathtt{" + escaped + "}";
+}
+
+std::string robotHtml(const Scene& scene, present::Language language) {
+    std::ostringstream html;
+    const auto words = [&](MessageId id) { return xmlEscaped(present::messageText(Message(id), language)); };
+    const std::vector<RobotTableRow> rows = robotTable(scene);
+    if (!rows.empty()) {
+        html << "<p>" << words(scene.robot.convention == DhConvention::Modified ? MessageId::TitleDhModified : MessageId::TitleDhStandard)
+             << "</p>\n<table border=\"1\" cellpadding=\"4\"><tr><th>" << words(MessageId::ExerciseJoint)
+             << "</th><th>a</th><th>α</th><th>d</th><th>θ</th></tr>\n";
+        for (std::size_t i = 0; i < rows.size(); ++i) {
+            const RobotTableRow& r = rows[i];
+            html << "<tr><td>" << i + 1 << "</td><td>" << xmlEscaped(r.a) << "</td><td>" << xmlEscaped(r.alpha) << "</td><td>"
+                 << xmlEscaped(r.d) << "</td><td>" << xmlEscaped(r.theta) << "</td></tr>\n";
+        }
+        html << "</table>\n<p>" << words(MessageId::ExerciseLinks) << "</p>\n<table border=\"1\" cellpadding=\"4\"><tr><th>"
+             << words(MessageId::ExerciseJoint) << "</th><th>" << words(MessageId::ExerciseMass) << "</th><th>"
+             << words(MessageId::ExerciseCom) << "</th><th>" << words(MessageId::ExerciseInertia) << "</th></tr>\n";
+        for (std::size_t i = 0; i < rows.size(); ++i) {
+            const RobotTableRow& r = rows[i];
+            html << "<tr><td>" << i + 1 << "</td><td>" << xmlEscaped(r.mass) << "</td><td>[" << xmlEscaped(r.com[0]) << ", "
+                 << xmlEscaped(r.com[1]) << ", " << xmlEscaped(r.com[2]) << "]</td><td>";
+            for (int k = 0; k < 6; ++k) html << (k ? ", " : "") << xmlEscaped(r.inertia[k]);
+            html << "</td></tr>\n";
+        }
+        html << "</table>\n";
+    } else if (scene.lagrangian) {
+        html << "<p>E_kin = " << xmlEscaped(scene.lagrangian->kinetic) << "<br/>E_pot = " << xmlEscaped(scene.lagrangian->potential)
+             << "</p>\n";
+    }
+    if (scene.effects.gravity) {
+        const Eigen::Vector3d& g = *scene.effects.gravity;
+        const std::string vector = "[" + shortNumber(g[0]) + ", " + shortNumber(g[1]) + ", " + shortNumber(g[2]) + "]";
+        html << "<p>" << xmlEscaped(present::messageText(message(MessageId::ExerciseGravity, vector), language)) << "</p>\n";
+    }
+    return html.str();
+}
+
+}  // namespace
+
+std::string moodleXml(const ExerciseSet& set, const Scene& scene, const AnswerKey& parametric, present::Language language) {
+    const auto words = [&](const Message& m) { return present::messageText(m, language); };
+    const std::map<std::string, std::string> units = parameterUnits(scene);
+    // The question variables: each varied parameter drawn on its grid, the others their value.
+    std::ostringstream variables, note, values;
+    std::map<std::string, const ParameterRange*> varied;
+    for (const ParameterRange& r : set.ranges) varied[r.name] = &r;
+    for (const auto& [name, value] : scene.parameters) {
+        if (auto it = varied.find(name); it != varied.end()) {
+            const ParameterRange& r = *it->second;
+            const double scale = std::pow(10.0, r.decimals);
+            const long long lo = std::llround(r.low * scale), hi = std::llround(r.high * scale);
+            variables << name << ": (" << lo << " + rand(" << hi - lo + 1 << "))/" << static_cast<long long>(scale) << ";\n";
+            note << (note.tellp() > 0 ? ", " : "") << name;
+        } else {
+            variables << name << ": " << maximaNumber(std::stod(shortNumber(value))) << ";\n";  // as the sheets have it
+        }
+        const auto unit = units.find(name);
+        values << (values.tellp() > 0 ? ", " : "") << name << " = {@float(" << name << ")@}"
+               << (unit != units.end() ? "\u00a0" + unit->second : "");
+    }
+    const std::string robot = robotHtml(scene, language);
+
+    std::ostringstream xml;
+    xml << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<quiz>\n";
+    xml << "<question type=\"category\">\n  <category><text>$course$/top/"
+        << xmlEscaped(words(message(MessageId::ExerciseMoodleCategory, set.name))) << "</text></category>\n</question>\n";
+    for (const std::string& entry : set.entries) {
+        const std::string answer = maximaAnswer(parametric, entry);
+        std::ostringstream text;
+        text << "<p>" << xmlEscaped(words(message(MessageId::ExerciseMoodleTask, entry))) << "</p>\n"
+             << robot << "<p>" << xmlEscaped(words(Message(MessageId::ExerciseParameters))) << ": " << values.str() << "</p>\n"
+             << "<p>\\(" << latexLabel(entry) << " = \\) [[input:ans1]] [[validation:ans1]]</p>\n";
+        xml << "<question type=\"stack\">\n"
+            << "  <name><text>" << xmlEscaped(set.name + ": " + entry) << "</text></name>\n"
+            << "  <questiontext format=\"html\"><text>" << cdata(text.str()) << "</text></questiontext>\n"
+            << "  <generalfeedback format=\"html\"><text></text></generalfeedback>\n"
+            << "  <defaultgrade>1</defaultgrade>\n  <penalty>0.1</penalty>\n  <hidden>0</hidden>\n  <idnumber></idnumber>\n"
+            << "  <stackversion><text></text></stackversion>\n"
+            << "  <questionvariables><text>" << xmlEscaped(variables.str() + "ta: " + answer + ";") << "</text></questionvariables>\n"
+            << "  <specificfeedback format=\"html\"><text>[[feedback:prt1]]</text></specificfeedback>\n"
+            << "  <questionnote><text>{@[" << xmlEscaped(note.str()) << "]@}</text></questionnote>\n"
+            << "  <questionsimplify>1</questionsimplify>\n  <assumepositive>0</assumepositive>\n  <assumereal>1</assumereal>\n"
+            << "  <prtcorrect format=\"html\"><text>" << xmlEscaped(words(Message(MessageId::ExerciseMoodleRight)))
+            << "</text></prtcorrect>\n"
+            << "  <prtpartiallycorrect format=\"html\"><text></text></prtpartiallycorrect>\n"
+            << "  <prtincorrect format=\"html\"><text>" << xmlEscaped(words(Message(MessageId::ExerciseMoodleWrong)))
+            << "</text></prtincorrect>\n"
+            << "  <multiplicationsign>dot</multiplicationsign>\n  <sqrtsign>1</sqrtsign>\n  <complexno>i</complexno>\n"
+            << "  <inversetrig>cos-1</inversetrig>\n  <logicsymbol>lang</logicsymbol>\n  <matrixparens>[</matrixparens>\n"
+            << "  <variantsselectionseed>" << set.seed << "</variantsselectionseed>\n"
+            << "  <input>\n    <name>ans1</name>\n    <type>algebraic</type>\n    <tans>ta</tans>\n    <boxsize>60</boxsize>\n"
+            << "    <strictsyntax>1</strictsyntax>\n    <insertstars>0</insertstars>\n    <syntaxhint></syntaxhint>\n"
+            << "    <syntaxattribute>0</syntaxattribute>\n    <forbidwords></forbidwords>\n    <allowwords></allowwords>\n"
+            << "    <forbidfloat>0</forbidfloat>\n    <requirelowestterms>0</requirelowestterms>\n"
+            << "    <checkanswertype>0</checkanswertype>\n    <mustverify>1</mustverify>\n    <showvalidation>1</showvalidation>\n"
+            << "    <options></options>\n  </input>\n"
+            << "  <prt>\n    <name>prt1</name>\n    <value>1.0000000</value>\n    <autosimplify>1</autosimplify>\n"
+            << "    <feedbackstyle>1</feedbackstyle>\n    <feedbackvariables><text></text></feedbackvariables>\n"
+            << "    <node>\n      <name>0</name>\n      <description></description>\n      <answertest>AlgEquiv</answertest>\n"
+            << "      <sans>ans1</sans>\n      <tans>ta</tans>\n      <testoptions></testoptions>\n      <quiet>0</quiet>\n"
+            << "      <truescoremode>=</truescoremode>\n      <truescore>1.0000000</truescore>\n      <truepenalty></truepenalty>\n"
+            << "      <truenextnode>-1</truenextnode>\n      <trueanswernote>prt1-1-T</trueanswernote>\n"
+            << "      <truefeedback format=\"html\"><text></text></truefeedback>\n"
+            << "      <falsescoremode>=</falsescoremode>\n      <falsescore>0.0000000</falsescore>\n      <falsepenalty></falsepenalty>\n"
+            << "      <falsenextnode>-1</falsenextnode>\n      <falseanswernote>prt1-1-F</falseanswernote>\n"
+            << "      <falsefeedback format=\"html\"><text></text></falsefeedback>\n    </node>\n  </prt>\n"
+            << "</question>\n";
+    }
+    xml << "</quiz>\n";
+    return xml.str();
+}
+
+}  // namespace ll
