@@ -99,10 +99,6 @@ present::DisplayPtr exerciseAnswerDisplay(const AnswerKey& key, const std::strin
             return present::displayEquation(present::displaySumOf(parts),
                                             present::buildDisplay(form(relation->rhs(), form.plainGrouping()), options));
     }
-    std::size_t letters = 0;
-    while (letters < id.size() && std::isalpha(static_cast<unsigned char>(id[letters]))) ++letters;
-    const bool indexed = letters > 0 && letters < id.size() && id.find_first_not_of("0123456789", letters) == std::string::npos;
-    const std::string latex = indexed ? id.substr(0, letters) + "_{" + id.substr(letters) + "}" : id;
     // the derivation's own value, in its textbook form (c12, not c1 c2 − s1 s2)
     const symbolic::Derivation& d = k.derivation;
     GiNaC::ex value;
@@ -120,7 +116,7 @@ present::DisplayPtr exerciseAnswerDisplay(const AnswerKey& key, const std::strin
         default: value = k.valueOf(e).subs(k.toShorthand, GiNaC::subs_options::no_pattern);
     }
     const symbolic::Grouping grouping = e.kind == EntryKind::Coriolis ? symbolic::Grouping::Velocities : form.plainGrouping();
-    return present::displayEquation(present::displayLabel(id, latex), present::buildDisplay(form(value, grouping), options));
+    return present::displayEquation(present::displayLabel(id, entryLatex(id)), present::buildDisplay(form(value, grouping), options));
 }
 
 std::string maximaAnswer(const AnswerKey& key, const std::string& id) {

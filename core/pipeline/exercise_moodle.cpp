@@ -35,17 +35,6 @@ std::string maximaNumber(double value) {
     return std::string("(") + (negative ? "-" : "") + digits + "/1" + std::string(text.size() - dot - 1, '0') + ")";
 }
 
-// b11 → b_{11}; T_2^0(1,4) → \mathrm{T\_2^0(1,4)} as it is typed.
-std::string latexLabel(const std::string& id) {
-    std::size_t letters = 0;
-    while (letters < id.size() && std::isalpha(static_cast<unsigned char>(id[letters]))) ++letters;
-    const bool plain = letters > 0 && letters < id.size() && id.find_first_not_of("0123456789", letters) == std::string::npos;
-    if (plain) return id.substr(0, letters) + "_{" + id.substr(letters) + "}";
-    std::string escaped;
-    for (char c : id) escaped += c == '_' ? std::string("\\_") : c == '^' ? std::string("\\hat{}") : std::string(1, c);
-    return "\\mathtt{" + escaped + "}";
-}
-
 std::string robotHtml(const Scene& scene, present::Language language) {
     std::ostringstream html;
     const auto words = [&](MessageId id) { return xmlEscaped(present::messageText(Message(id), language)); };
@@ -116,7 +105,7 @@ std::string moodleXml(const ExerciseSet& set, const Scene& scene, const AnswerKe
         std::ostringstream text;
         text << "<p>" << xmlEscaped(words(message(MessageId::ExerciseMoodleTask, entry))) << "</p>\n"
              << robot << "<p>" << xmlEscaped(words(Message(MessageId::ExerciseParameters))) << ": " << values.str() << "</p>\n"
-             << "<p>\\(" << latexLabel(entry) << " = \\) [[input:ans1]] [[validation:ans1]]</p>\n";
+             << "<p>\\(" << entryLatex(entry) << " = \\) [[input:ans1]] [[validation:ans1]]</p>\n";
         xml << "<question type=\"stack\">\n"
             << "  <name><text>" << xmlEscaped(set.name + ": " + entry) << "</text></name>\n"
             << "  <questiontext format=\"html\"><text>" << cdata(text.str()) << "</text></questiontext>\n"

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numeric>
+#include <regex>
 #include <set>
 #include <stdexcept>
 
@@ -163,6 +164,25 @@ std::vector<RobotTableRow> robotTable(const Scene& scene) {
         rows.push_back(std::move(row));
     }
     return rows;
+}
+
+std::string entryLatex(const std::string& id) {
+    static const std::regex indexed(R"(([A-Za-z]+)([0-9]+))");
+    static const std::regex item(R"(([A-Za-z]+)_\{?([A-Za-z0-9]+)\}?(?:\^\{?([A-Za-z0-9]+)\}?)?(?:\(([0-9]+)(?:,([0-9]+))?\))?)");
+    static const std::regex word(R"(([A-Za-z])_([a-z]+))");
+    std::smatch m;
+    if (id.rfind("equation", 0) == 0) return id;  // a word, not e·q·u… with an index
+    if (std::regex_match(id, m, indexed)) return m.str(1) + "_{" + m.str(2) + "}";
+    if (std::regex_match(id, m, word)) return m.str(1) + "_{" + m.str(2) + "}";
+    if (std::regex_match(id, m, item)) {
+        std::string sub = m.str(2);
+        if (m[4].matched) {
+            const bool wide = m.str(4).size() > 1 || m.str(5).size() > 1;
+            sub += "," + m.str(4) + (m[5].matched ? (wide ? "," : "") + m.str(5) : "");
+        }
+        return m.str(1) + "_{" + sub + "}" + (m[3].matched ? "^{" + m.str(3) + "}" : "");
+    }
+    return id;
 }
 
 std::vector<ParameterRange> defaultRanges(const Scene& scene) {

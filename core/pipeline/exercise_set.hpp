@@ -124,6 +124,11 @@ std::vector<std::string> entriesOfSteps(const AnswerKey& key, int first, int las
 // The tasks when none are named: B's upper triangle, g and C, where not zero.
 std::vector<std::string> defaultEntries(const AnswerKey& key);
 
+// An entry's name in LaTeX as a sheet sets it: b11 → b_{11}, E_kin → E_{kin}, T_2^0(1,4) →
+// T_{2,14}^{0} (the matrix's label with the entry's indices added, as the derivation's
+// pages name entries), p_c2(1) → p_{c2,1}; anything else as it is.
+std::string entryLatex(const std::string& id);
+
 // An entry's right answer as the derivation typesets it: "b11 = …" (the trig shorthand,
 // the scene's decimals), an equation of motion as itself; null for an unknown id.
 present::DisplayPtr exerciseAnswerDisplay(const AnswerKey& key, const std::string& id);

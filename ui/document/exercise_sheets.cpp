@@ -11,6 +11,7 @@
 
 #include "core/io/atomic_file.hpp"
 #include "core/pipeline/scene_visual.hpp"
+#include "core/present/labels.hpp"
 #include "core/present/message_text.hpp"
 #include "ui/paint/headless_renderer.hpp"
 #include "ui/paint/math_typesetter.hpp"
@@ -74,7 +75,8 @@ public:
         };
         for (const QString& word : wordsOf) {
             const QString candidate = line.isEmpty() ? word : line + ' ' + word;
-            if (!line.isEmpty() && layout(candidate).width * (set == Set::Bold ? 1.12 : 1.0) > width) {  // bold measures narrow
+            // layoutText measures bold as regular: a fifth more for the bold letters
+            if (!line.isEmpty() && layout(candidate).width * (set == Set::Bold ? 1.2 : 1.0) > width) {
                 flush();
                 line = word;
             } else {
@@ -143,9 +145,10 @@ public:
         }
     }
 
-    // A task: its label ("b₁₁ =") and a box to write in.
-    void answerBox(const QString& label, double height) {
-        const MathBox box = layoutProse(label + " =", 1.1);
+    // A task: its label ("b₁₁ =", as the derivation's pages name the entry) and a box to write in.
+    void answerBox(const std::string& entry, double height) {
+        MathBox box = layoutMath(*present::displayLabel(entry, entryLatex(entry)), 1.1);
+        hcat(box, layoutText("=", 1.1), 0.3 * mathUnitsPerEm);
         const double labelWidth = std::max(55.0, box.width * kUnitPt + 8);
         add({height + 8, [box, labelWidth, height](QPainter& p, double y) {
                  drawBox(p, box, kMargin, y + 4 + 1.2 * kFontPt);
@@ -354,7 +357,7 @@ int writeExerciseSheet(const ExerciseSet& set, const SheetStudent& s, present::L
     flow.gap(4);
     for (const std::string& entry : set.entries) {
         const bool long_ = entry.rfind("equation", 0) == 0 || entry.rfind("E_", 0) == 0 || entry.rfind("c", 0) == 0;
-        flow.answerBox(qs(entry), long_ ? 60 : 42);
+        flow.answerBox(entry, long_ ? 60 : 42);
     }
     flow.gap(6);
     flow.text(flow.words(Message(MessageId::ExerciseHandIn)), 0.9, SheetFlow::Set::Plain, 0, QColor(60, 60, 60));
