@@ -1,7 +1,8 @@
-// `lagrangelab exercise SCENE --out DIR [--students list.csv | --count N] [--seed S]
+// `lagrangelab exercise SCENE [SCENE…] --out DIR [--students list.csv | --count N] [--seed S]
 // [--entries b11,g2,… | --steps 5-8] [--vary NAME=LOW..HIGH …] [--parametric]`: a robot per
-// student (core/pipeline/exercise_set.hpp), each in DIR/<id>/ with its scene, its sheet
-// (ui/document/exercise_sheets.hpp) and an answer file to fill in; the lecturer's
+// student (core/pipeline/exercise_set.hpp), from one scene or a family of them (a 2R and a
+// 3R arm, a twist, a prismatic joint: one member per student), each in DIR/<id>/ with its
+// scene, its sheet (ui/document/exercise_sheets.hpp) and an answer file to fill in; the lecturer's
 // solutions.pdf, the set's exercise.json and moodle.xml (STACK) beside them.
 #include <algorithm>
 #include <charconv>
@@ -103,10 +104,21 @@ std::vector<std::string> takeVary(Args& args) {
     return vary;
 }
 
-std::vector<ParameterRange> rangesFrom(const std::vector<std::string>& texts, const Scene& scene, const std::string& scenePath) {
-    std::vector<ParameterRange> ranges;
-    std::vector<std::string> names;
-    for (const auto& [name, value] : scene.parameters) names.push_back(name);
+// A scene of the set (one, or each member of a family) with the key its tasks are checked against.
+struct FamilyMember {
+    std::string path;
+    Scene scene;
+    std::shared_ptr<const AnswerKey> key;
+};
+
+// Each member's ranges: the --vary ranges of its parameters (a name no member has is an
+// error), or, without --vary, ±20 % of its own link parameters.
+std::vector<std::vector<ParameterRange>> rangesFrom(const std::vector<std::string>& texts, const std::vector<FamilyMember>& family) {
+    std::vector<ParameterRange> given;
+    std::vector<std::string> names;  // every member's, once
+    for (const FamilyMember& m : family)
+        for (const auto& [name, value] : m.scene.parameters)
+            if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
     for (const std::string& text : texts) {
         const std::size_t equals = text.find('='), dots = text.find("..");
         if (equals == std::string::npos || dots == std::string::npos || dots < equals) throw UsageError(UsageId::VaryExpected, text);
@@ -121,11 +133,20 @@ std::vector<ParameterRange> rangesFrom(const std::vector<std::string>& texts, co
         if (std::find(names.begin(), names.end(), name) == names.end())
             throw UsageError(UsageId::VaryUnknown, text, name, joinedNames(names));
         if (low > high) throw UsageError(UsageId::VaryEmptyRange, text, text.substr(equals + 1, dots - equals - 1), text.substr(dots + 2));
-        std::erase_if(ranges, [&](const ParameterRange& r) { return r.name == name; });
-        ranges.push_back(roundedRange(name, low, high));
+        std::erase_if(given, [&](const ParameterRange& r) { return r.name == name; });
+        given.push_back(roundedRange(name, low, high));
     }
-    if (texts.empty()) ranges = defaultRanges(scene);
-    if (ranges.empty()) throw UsageError(UsageId::VaryNothing, scenePath);
+    std::vector<std::vector<ParameterRange>> ranges;
+    bool any = false;
+    for (const FamilyMember& m : family) {
+        std::vector<ParameterRange> own = texts.empty() ? defaultRanges(m.scene) : std::vector<ParameterRange>{};
+        for (const ParameterRange& r : given)
+            if (std::any_of(m.scene.parameters.begin(), m.scene.parameters.end(), [&](const auto& p) { return p.first == r.name; }))
+                own.push_back(r);
+        any = any || !own.empty();
+        ranges.push_back(std::move(own));
+    }
+    if (!any) throw UsageError(UsageId::VaryNothing, family.front().path);
     return ranges;
 }
 
@@ -136,9 +157,17 @@ std::uint64_t seedFrom(const std::string& text) {
     return seed;
 }
 
-// The tasks: --entries validated against the derivation, or the entries of --steps, or
-// the default ones. Step 0 asks for the DH table itself (`dhTable`).
-std::vector<std::string> tasksFrom(const Options& options, const AnswerKey& key, const Scene& scene, bool& dhTable) {
+// The tasks: --entries validated against every member's derivation, or the entries of
+// --steps, or the default ones, that every member has. Step 0 asks for the DH table itself
+// (`dhTable`).
+std::vector<std::string> tasksFrom(const Options& options, const std::vector<FamilyMember>& family, bool& dhTable) {
+    const AnswerKey& first = *family.front().key;
+    const auto common = [&](std::vector<std::string> ids) {
+        std::erase_if(ids, [&](const std::string& id) {
+            return std::any_of(family.begin(), family.end(), [&](const FamilyMember& m) { return m.key->entryId(id).empty(); });
+        });
+        return ids;
+    };
     std::vector<std::string> ids;
     if (options.has("entries")) {
         std::stringstream list(options.text("entries"));
@@ -146,29 +175,32 @@ std::vector<std::string> tasksFrom(const Options& options, const AnswerKey& key,
             typed.erase(0, typed.find_first_not_of(' '));
             typed.erase(typed.find_last_not_of(' ') + 1);
             if (typed.empty()) continue;
-            const std::string id = key.entryId(typed);
-            if (id.empty()) throw UsageError(UsageId::ExerciseUnknownEntry, scene.name, typed, joinedNames(defaultEntries(key), 8));
+            for (const FamilyMember& m : family)
+                if (m.key->entryId(typed).empty())
+                    throw UsageError(UsageId::ExerciseUnknownEntry, m.scene.name, typed, joinedNames(defaultEntries(*m.key), 8));
+            const std::string id = first.entryId(typed);
             if (std::find(ids.begin(), ids.end(), id) == ids.end()) ids.push_back(id);
         }
         return ids;
     }
     if (options.has("steps")) {
         const std::string text = options.text("steps");
-        int first = 0, last = 0;
+        int from = 0, to = 0;
         const std::size_t dash = text.find('-');
         try {
-            first = std::stoi(text.substr(0, dash));
-            last = dash == std::string::npos ? first : std::stoi(text.substr(dash + 1));
+            from = std::stoi(text.substr(0, dash));
+            to = dash == std::string::npos ? from : std::stoi(text.substr(dash + 1));
         } catch (const std::exception&) {
             throw UsageError(UsageId::StepsExpected, text);
         }
-        if (first < 0 || last > 8 || first > last) throw UsageError(UsageId::StepsOutOfRange, text);
-        dhTable = first == 0 && !scene.lagrangian;
-        ids = entriesOfSteps(key, std::max(first, 1), last);
-        if (ids.empty() && !dhTable) throw UsageError(UsageId::StepsNoEntries, text, scene.name);
+        if (from < 0 || to > 8 || from > to) throw UsageError(UsageId::StepsOutOfRange, text);
+        dhTable =
+            from == 0 && std::none_of(family.begin(), family.end(), [](const FamilyMember& m) { return m.scene.lagrangian.has_value(); });
+        ids = common(entriesOfSteps(first, std::max(from, 1), to));
+        if (ids.empty() && !dhTable) throw UsageError(UsageId::StepsNoEntries, text, family.front().scene.name);
         return ids;
     }
-    return defaultEntries(key);
+    return common(defaultEntries(first));
 }
 
 }  // namespace
@@ -177,11 +209,11 @@ int exerciseCommand(const Args& given) {
     Args args = given;
     const std::vector<std::string> vary = takeVary(args);
     const Options options(args, {"out", "students", "count", "seed", "entries", "steps"}, {"parametric"});
-    if (options.positional().size() != 1 || !options.has("out")) throw UsageError(usageLine("exercise"));
+    if (options.positional().empty() || !options.has("out")) throw UsageError(usageLine("exercise"));
     if (options.has("students") && options.has("count")) throw UsageError(UsageId::ExcludeEachOther, "students", "count");
     if (options.has("entries") && options.has("steps")) throw UsageError(UsageId::ExcludeEachOther, "entries", "steps");
     if (!options.has("students") && !options.has("count")) throw UsageError(UsageId::ExerciseNeedsStudents);
-    const std::string path = options.positional()[0], out = options.text("out");
+    const std::string out = options.text("out");
 
     std::vector<std::string> students;
     if (options.has("students")) {
@@ -200,23 +232,27 @@ int exerciseCommand(const Args& given) {
     }
     const std::uint64_t seed = options.has("seed") ? seedFrom(options.text("seed")) : 1;
 
-    const Scene scene = loadSceneReportingWarnings(path);
-    requireValidSceneFrom(scene, path);
-    std::ifstream file(path, std::ios::binary);
     ExerciseSpec spec;
-    spec.sceneText.assign(std::istreambuf_iterator<char>(file), {});
-    spec.sceneFile = fs::path(path).filename().string();
     spec.students = students;
     spec.seed = seed;
     spec.mode = options.has("parametric") ? symbolic::ParameterMode::Parametric : symbolic::ParameterMode::Numeric;
-    spec.ranges = rangesFrom(vary, scene, path);
-    const auto key = inSceneFile(path, [&] { return AnswerKey::build(scene, spec.mode); });
-    spec.entries = tasksFrom(options, *key, scene, spec.dhTable);
+    std::vector<FamilyMember> family;
+    for (const std::string& path : options.positional()) {  // one scene, or a family of them
+        FamilyMember member{path, loadSceneReportingWarnings(path), nullptr};
+        requireValidSceneFrom(member.scene, path);
+        member.key = inSceneFile(path, [&] { return AnswerKey::build(member.scene, spec.mode); });
+        std::ifstream file(path, std::ios::binary);
+        spec.scenes.push_back({fs::path(path).filename().string(), std::string(std::istreambuf_iterator<char>(file), {}), {}});
+        family.push_back(std::move(member));
+    }
+    const std::vector<std::vector<ParameterRange>> ranges = rangesFrom(vary, family);
+    for (std::size_t k = 0; k < family.size(); ++k) spec.scenes[k].ranges = ranges[k];
+    spec.entries = tasksFrom(options, family, spec.dhTable);
     prepareOutputFolder(out);
 
     const bool tty = ::isatty(STDERR_FILENO);
     ProgressBar bar(tty);
-    const ExerciseSet set = inSceneFile(path, [&] { return makeExerciseSet(spec); });
+    const ExerciseSet set = inSceneFile(family.front().path, [&] { return makeExerciseSet(spec); });
     const auto app = makeGuiApplication();
     if (!ui::mathFontsAvailable()) throw std::runtime_error("the Latin Modern fonts are missing: install fonts-lmodern");
     const present::Language language = presentation().language;
@@ -239,7 +275,7 @@ int exerciseCommand(const Args& given) {
         }
         ui::writeExerciseSheet(set, sheet, language, (folder / "sheet.pdf").string());
         saveFileAtomically((folder / "answers.json").string(), answerTemplate(set, student).dump(2) + "\n", Backup::None);
-        const auto own = inSceneFile(path, [&] { return AnswerKey::build(sheet.scene, set.mode); });
+        const auto own = inSceneFile(folder.string(), [&] { return AnswerKey::build(sheet.scene, set.mode); });
         ui::SolutionStudent solution{&student, sheet.scene, {}};
         for (const std::string& entry : set.entries) solution.answers.push_back(exerciseAnswerDisplay(*own, entry));
         solutions.push_back(std::move(solution));
@@ -248,8 +284,13 @@ int exerciseCommand(const Args& given) {
     }
     ui::writeSolutions(set, solutions, language, (fs::path(out) / "solutions.pdf").string());
     written.push_back((fs::path(out) / "solutions.pdf").string());
-    const auto parametric = inSceneFile(path, [&] { return AnswerKey::build(scene, symbolic::ParameterMode::Parametric); });
-    saveFileAtomically((fs::path(out) / "moodle.xml").string(), moodleXml(set, scene, *parametric, language), Backup::None);
+    std::vector<std::shared_ptr<const AnswerKey>> parametric;  // the STACK questions' model answers, in names
+    std::vector<MoodleScene> quiz;
+    for (const FamilyMember& m : family) {
+        parametric.push_back(inSceneFile(m.path, [&] { return AnswerKey::build(m.scene, symbolic::ParameterMode::Parametric); }));
+        quiz.push_back({&m.scene, parametric.back().get()});
+    }
+    saveFileAtomically((fs::path(out) / "moodle.xml").string(), moodleXml(set, quiz, language), Backup::None);
     written.push_back((fs::path(out) / "moodle.xml").string());
     saveFileAtomically((fs::path(out) / "exercise.json").string(), set.manifest().dump(2) + "\n", Backup::None);
     written.push_back((fs::path(out) / "exercise.json").string());

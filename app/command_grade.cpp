@@ -211,7 +211,7 @@ int gradeCommand(const Args& args) {
         }
         const fs::path folder = fs::path(out) / s.student->id;
         fs::create_directories(folder);
-        ui::writeFeedback(set, *s.student, tasks, language, (folder / "feedback.pdf").string());
+        ui::writeFeedback(set, *s.student, scene, tasks, language, (folder / "feedback.pdf").string());
         feedbackFiles.push_back((folder / "feedback.pdf").string());
     }
     const fs::path grades = fs::path(out) / "grades.csv";

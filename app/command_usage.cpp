@@ -46,10 +46,11 @@ constexpr std::array<CommandText, 14> commands{{
      "equation1, dL/dx_dot) checked exactly: what was read, right or wrong, and which link, term or\n"
      "slip; exit 0 right, 1 wrong, 2 unreadable"},
     {"exercise",
-     "SCENE --out DIR --students FILE.csv | --count N [--seed S] [--entries b11,g2,... | --steps 5-8]\n"
+     "SCENE [SCENE...] --out DIR --students FILE.csv | --count N [--seed S] [--entries b11,g2,... | --steps 5-8]\n"
      "[--vary NAME=LOW..HIGH ...] [--parametric] [--lang da|en]",
-     "exercise sheets: a robot per student (numbers drawn within the ranges, from the seed), each with\n"
-     "sheet.pdf, scene.json and answers.json to fill in; solutions.pdf, exercise.json and moodle.xml (STACK)"},
+     "exercise sheets: a robot per student (one of the scenes given, its numbers drawn within the ranges,\n"
+     "both from the seed), each with sheet.pdf, scene.json and answers.json to fill in; solutions.pdf,\n"
+     "exercise.json and moodle.xml (STACK)"},
     {"grade", "DIR ANSWERS... [--out DIR] [--lang da|en]",
      "every answer file checked against its own student's robot of the exercise set in DIR:\n"
      "grades.csv (student, entry, verdict, hint) and a feedback.pdf per student"},

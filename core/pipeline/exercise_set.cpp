@@ -88,8 +88,10 @@ std::vector<std::pair<std::string, std::string>> physicalUses(const Scene& scene
             if (parameters.count(name)) uses.emplace_back(name, unit);
     };
     for (const auto& [path, text] : scene.expressions) {
+        // a field's unit is its names' when the field adds or halves them (a, lc1-a1, l1/2);
+        // in a product (m1*l1^2/12) the names' units are not the field's
         const std::string unit = fieldUnit(path);
-        if (!unit.empty()) use(text, unit);
+        if (!unit.empty()) use(text, text.find_first_of("*^") == std::string::npos ? unit : "");
     }
     if (scene.lagrangian) {
         use(scene.lagrangian->kinetic, "");
@@ -233,24 +235,33 @@ const ExerciseStudent* ExerciseSet::student(const std::string& id) const {
 }
 
 ExerciseSet makeExerciseSet(const ExerciseSpec& spec) {
-    const nlohmann::ordered_json base = nlohmann::ordered_json::parse(spec.sceneText);
-    ExerciseSet set{.name = base.value("name", spec.sceneFile),
-                    .sceneFile = spec.sceneFile,
+    std::vector<nlohmann::ordered_json> family;
+    std::vector<ExerciseSet::Member> members;
+    for (const ExerciseScene& member : spec.scenes) {
+        family.push_back(nlohmann::ordered_json::parse(member.text));
+        members.push_back({member.file, member.ranges});
+    }
+    ExerciseSet set{.name = family.at(0).value("name", members.at(0).file),
+                    .scenes = members,
                     .seed = spec.seed,
                     .mode = spec.mode,
                     .entries = spec.entries,
                     .dhTable = spec.dhTable,
-                    .ranges = spec.ranges,
                     .students = {}};
     std::set<std::vector<long long>> drawn;  // the grids' numbers of every robot so far
     for (const std::string& id : spec.students) {
         ExerciseStudent student;
         student.id = id;
-        std::vector<long long> grid;
+        std::uint64_t pick = spec.seed ^ fnv1a(id) ^ 0x2545f4914f6cdd1dull;
+        const std::size_t m = family.size() == 1 ? 0 : static_cast<std::size_t>(nextRandom(pick) % family.size());
+        const nlohmann::ordered_json& base = family[m];
+        const std::vector<ParameterRange>& ranges = members[m].ranges;
+        student.scene = members[m].file;
+        std::vector<long long> grid{static_cast<long long>(m)};
         for (int attempt = 0; attempt < 64; ++attempt) {  // a robot no earlier student has, when the ranges allow
             std::uint64_t state = spec.seed ^ fnv1a(id) ^ (0x5851f42d4c957f2dull * static_cast<std::uint64_t>(attempt));
-            grid.clear();
-            for (const ParameterRange& r : spec.ranges) {
+            grid.resize(1);
+            for (const ParameterRange& r : ranges) {
                 const auto [lo, hi] = gridEnds(r);
                 const auto count = static_cast<std::uint64_t>(hi - lo + 1);
                 grid.push_back(lo + static_cast<long long>(nextRandom(state) % count));
@@ -259,17 +270,17 @@ ExerciseSet makeExerciseSet(const ExerciseSpec& spec) {
         }
         drawn.insert(grid);
         nlohmann::ordered_json scene = base;
-        for (std::size_t k = 0; k < spec.ranges.size(); ++k) {
-            const ParameterRange& r = spec.ranges[k];
-            const double value = std::stod(formatValue(grid[k] / power10(r.decimals), r.decimals));
+        for (std::size_t k = 0; k < ranges.size(); ++k) {
+            const ParameterRange& r = ranges[k];
+            const double value = std::stod(formatValue(grid[k + 1] / power10(r.decimals), r.decimals));
             student.values.emplace_back(r.name, value);
             scene["parameters"][r.name] = value;
         }
         for (auto& [name, value] : scene["parameters"].items())  // the others as a sheet shows them: six digits
             if (value.is_number_float() &&
-                !std::any_of(spec.ranges.begin(), spec.ranges.end(), [&](const ParameterRange& r) { return r.name == name; }))
+                !std::any_of(ranges.begin(), ranges.end(), [&](const ParameterRange& r) { return r.name == name; }))
                 value = std::stod(shortNumber(value.get<double>()));
-        scene["name"] = set.name + " (" + id + ")";
+        scene["name"] = base.value("name", members[m].file) + " (" + id + ")";
         student.sceneText = scene.dump(2) + "\n";
         parseScene(student.sceneText);  // throws InputError when a drawn value breaks the scene
         student.fingerprint = sceneFingerprint(student.sceneText);
@@ -282,20 +293,23 @@ nlohmann::ordered_json ExerciseSet::manifest() const {
     nlohmann::ordered_json m;
     m["lagrangelab_exercise"] = 1;
     m["name"] = name;
-    m["scene"] = sceneFile;
+    nlohmann::ordered_json family = nlohmann::ordered_json::array();
+    for (const Member& member : scenes) {
+        nlohmann::ordered_json ranges = nlohmann::ordered_json::array();
+        for (const ParameterRange& r : member.ranges)
+            ranges.push_back({{"name", r.name}, {"low", r.low}, {"high", r.high}, {"decimals", r.decimals}});
+        family.push_back({{"file", member.file}, {"ranges", ranges}});
+    }
+    m["scenes"] = family;
     m["seed"] = seed;
     m["mode"] = modeName(mode);  // numeric, symbolic or parameters, as derive --format json says
     m["entries"] = entries;
     m["dh_table"] = dhTable;
-    nlohmann::ordered_json ranges = nlohmann::ordered_json::array();
-    for (const ParameterRange& r : this->ranges)
-        ranges.push_back({{"name", r.name}, {"low", r.low}, {"high", r.high}, {"decimals", r.decimals}});
-    m["ranges"] = ranges;
     nlohmann::ordered_json list = nlohmann::ordered_json::array();
     for (const ExerciseStudent& s : students) {
         nlohmann::ordered_json values = nlohmann::ordered_json::object();
         for (const auto& [name, value] : s.values) values[name] = value;
-        list.push_back({{"id", s.id}, {"folder", s.id}, {"robot", s.fingerprint}, {"values", values}});
+        list.push_back({{"id", s.id}, {"folder", s.id}, {"scene", s.scene}, {"robot", s.fingerprint}, {"values", values}});
     }
     m["students"] = list;
     return m;
@@ -310,7 +324,12 @@ ExerciseSet ExerciseSet::fromManifest(const nlohmann::json& m, const std::functi
         if (need(m, "lagrangelab_exercise").get<int>() != 1) throw std::invalid_argument("\"lagrangelab_exercise\" is not 1");
         ExerciseSet set;
         set.name = need(m, "name").get<std::string>();
-        set.sceneFile = need(m, "scene").get<std::string>();
+        for (const nlohmann::json& member : need(m, "scenes")) {
+            set.scenes.push_back({need(member, "file").get<std::string>(), {}});
+            for (const nlohmann::json& r : need(member, "ranges"))
+                set.scenes.back().ranges.push_back({need(r, "name").get<std::string>(), need(r, "low").get<double>(),
+                                                    need(r, "high").get<double>(), need(r, "decimals").get<int>()});
+        }
         set.seed = need(m, "seed").get<std::uint64_t>();
         const std::string mode = need(m, "mode").get<std::string>();
         set.mode = mode == modeName(symbolic::ParameterMode::Numeric)    ? symbolic::ParameterMode::Numeric
@@ -318,12 +337,10 @@ ExerciseSet ExerciseSet::fromManifest(const nlohmann::json& m, const std::functi
                                                                          : symbolic::ParameterMode::Parametric;
         set.entries = need(m, "entries").get<std::vector<std::string>>();
         set.dhTable = m.value("dh_table", false);
-        for (const nlohmann::json& r : need(m, "ranges"))
-            set.ranges.push_back({need(r, "name").get<std::string>(), need(r, "low").get<double>(), need(r, "high").get<double>(),
-                                  need(r, "decimals").get<int>()});
         for (const nlohmann::json& s : need(m, "students")) {
             ExerciseStudent student;
             student.id = need(s, "id").get<std::string>();
+            student.scene = need(s, "scene").get<std::string>();
             student.fingerprint = need(s, "robot").get<std::string>();
             for (const auto& [name, value] : need(s, "values").items()) student.values.emplace_back(name, value.get<double>());
             student.sceneText = sceneText(need(s, "folder").get<std::string>());

@@ -4,7 +4,7 @@
 // with, the same tasks (entries of the derivation) for everyone, and a fingerprint of each
 // student's robot so that grading can tell an answer file for another robot or set.
 //
-//   ExerciseSpec spec{sceneText, "planar_2r.json", {"s01", "s02"}, 7, ranges};
+//   ExerciseSpec spec{{{"planar_2r.json", sceneText, ranges}}, {"s01", "s02"}, 7};
 //   ExerciseSet set = makeExerciseSet(spec);     // deterministic: the same spec, the same robots
 //   set.manifest()                               // exercise.json; ExerciseSet::fromManifest reads it back
 //
@@ -67,43 +67,55 @@ std::string shortNumber(double value);
 
 struct ExerciseStudent {
     std::string id;
+    std::string scene;                                   // the family member it was drawn from (its file name)
     std::vector<std::pair<std::string, double>> values;  // the drawn parameters, in the ranges' order
     std::string sceneText;                               // the student's scene file
     std::string fingerprint;                             // sceneFingerprint(sceneText)
 };
 
+// A scene file the set is made from: its name, its JSON, and the ranges its parameters
+// are drawn from.
+struct ExerciseScene {
+    std::string file, text;
+    std::vector<ParameterRange> ranges;
+};
+
 struct ExerciseSpec {
-    std::string sceneText;  // the scene file the set is made from (JSON)
-    std::string sceneFile;  // its name, for the manifest
+    // One scene, or a family (a 2R and a 3R arm, one with a twist, one with a prismatic
+    // joint): each student gets one of them, drawn from the seed and the id, with its
+    // parameters drawn from its ranges.
+    std::vector<ExerciseScene> scenes;
     std::vector<std::string> students;
     std::uint64_t seed = 1;
-    std::vector<ParameterRange> ranges;
     std::vector<std::string> entries;  // entry ids (AnswerKey::entries' spelling)
     bool dhTable = false;              // step 0 asked: the DH table read from the picture
     symbolic::ParameterMode mode = symbolic::ParameterMode::Numeric;
 };
 
 struct ExerciseSet {
-    std::string name;  // the scene's name
-    std::string sceneFile;
+    std::string name;  // the first scene's name
+    struct Member {
+        std::string file;
+        std::vector<ParameterRange> ranges;
+    };
+    std::vector<Member> scenes;  // the family (one for a single scene), without the texts
     std::uint64_t seed = 1;
     symbolic::ParameterMode mode = symbolic::ParameterMode::Numeric;
     std::vector<std::string> entries;
     bool dhTable = false;
-    std::vector<ParameterRange> ranges;
     std::vector<ExerciseStudent> students;
 
     const ExerciseStudent* student(const std::string& id) const;
-    // exercise.json: format, scene, seed, mode, entries, ranges, and per student its id,
-    // values, fingerprint and folder.
+    // exercise.json: format, the scenes with their ranges, seed, mode, entries, and per
+    // student its id, scene, values, fingerprint and folder.
     nlohmann::ordered_json manifest() const;
     // The students' scene texts are read by `sceneText(id)` (from their folders). Throws
     // std::invalid_argument naming what is missing or wrong.
     static ExerciseSet fromManifest(const nlohmann::json& manifest, const std::function<std::string(const std::string&)>& sceneText);
 };
 
-// Draws every student's robot: each value from the seed and the student's id, so a
-// student keeps the robot when others are added; two students never share a robot when
+// Draws every student's robot: the family member and each value from the seed and the
+// student's id, so a student keeps the robot when others are added; two students never share a robot when
 // the ranges allow otherwise. The parameters not drawn keep their values, to six
 // significant digits (0.16666666666666666 becomes 0.166667): a sheet shows them so, and
 // answers are checked exactly against the student's scene. Throws InputError when the scene does not load.
@@ -139,9 +151,13 @@ std::string maximaAnswer(const AnswerKey& key, const std::string& id);
 
 // The set as Moodle XML: one STACK question per task, its parameters drawn by STACK
 // within the set's ranges (question variables), the model answer the derivation's in
-// Maxima's syntax, one algebraic input and a potential response tree testing AlgEquiv.
-// `parametric` is the key of the scene derived with its parameters as symbols; the words
-// in `language`.
-std::string moodleXml(const ExerciseSet& set, const Scene& scene, const AnswerKey& parametric, present::Language language);
+// Maxima's syntax, one algebraic input and a potential response tree testing AlgEquiv;
+// for a family, a question per member and task. Each member with the key of its scene
+// derived with its parameters as symbols; the words in `language`.
+struct MoodleScene {  // a member of the set's family (set.scenes, in the same order)
+    const Scene* scene = nullptr;
+    const AnswerKey* parametric = nullptr;
+};
+std::string moodleXml(const ExerciseSet& set, const std::vector<MoodleScene>& family, present::Language language);
 
 }  // namespace ll

@@ -12,6 +12,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QMap>
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QXmlStreamReader>
@@ -266,6 +267,50 @@ private slots:
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.startsWith("fejl: --entries:"), r.err.constData());
         QVERIFY(!QFileInfo::exists(dir_.filePath("x/exercise.json")));  // nothing made
+    }
+
+    void aFamilyOfRobots() {
+        // a planar 2R arm and a SCARA: each student gets one, the tasks are those both have
+        const QString out = dir_.filePath("family");
+        Run r = run({"exercise", example("planar_2r.json"), example("scara.json"), "--out", out, "--count", "6", "--seed", "3", "--entries",
+                     "b11,b22", "--vary", "m2=1.2..1.8", "--vary", "m3=0.8..1.2"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QJsonObject manifest = json(out + "/exercise.json");
+        const QJsonArray scenes = manifest["scenes"].toArray();
+        QCOMPARE(scenes.size(), 2);
+        QCOMPARE(scenes[0].toObject()["file"].toString(), QString("planar_2r.json"));
+        QCOMPARE(scenes[1].toObject()["file"].toString(), QString("scara.json"));
+        const auto rangeNames = [](const QJsonValue& scene) {
+            QStringList names;
+            for (const QJsonValue& r : scene.toObject()["ranges"].toArray()) names << r.toObject()["name"].toString();
+            return names;
+        };
+        QCOMPARE(rangeNames(scenes[0]), QStringList{"m2"});  // each member's own parameters only
+        QCOMPARE(rangeNames(scenes[1]), (QStringList{"m2", "m3"}));
+        QMap<QString, int> members;
+        for (const QJsonValue& v : manifest["students"].toArray()) {
+            const QJsonObject s = v.toObject();
+            const QString scene = s["scene"].toString();
+            ++members[scene];
+            const QJsonObject own = json(out + "/" + s["id"].toString() + "/scene.json");
+            QCOMPARE(own["robot"].toObject()["joints"].toArray().size(), scene == "scara.json" ? 4 : 2);
+            const double m2 = own["parameters"].toObject()["m2"].toDouble();
+            QVERIFY2(m2 >= 1.2 && m2 <= 1.8, qPrintable(QString::number(m2)));
+            QCOMPARE(s["values"].toObject().contains("m3"), scene == "scara.json");  // a member's own parameters only
+        }
+        QCOMPARE(members.size(), 2);  // both members drawn for this seed
+        int questions = 0;
+        QXmlStreamReader xml(bytes(out + "/moodle.xml"));
+        while (!xml.atEnd())
+            if (xml.readNext() == QXmlStreamReader::StartElement && xml.attributes().value("type") == u"stack") ++questions;
+        QVERIFY(!xml.hasError());
+        QCOMPARE(questions, 4);  // a question per member and task
+        // a task one member has not: one line naming that member
+        r = run({"exercise", example("planar_2r.json"), example("scara.json"), "--out", dir_.filePath("y"), "--count", "2", "--entries",
+                 "b33"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.startsWith("error: --entries: the derivation of Planar 2R arm (uniform rods) has no entry 'b33'"),
+                 r.err.constData());
     }
 
     void stepZeroAsksForTheDhTable() {

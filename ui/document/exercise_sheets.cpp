@@ -293,8 +293,16 @@ void robotTables(SheetFlow& flow, const Scene& scene, bool dhToFill) {
     }
 }
 
-QString footerOf(const ExerciseSet& set, const ExerciseStudent& student, const SheetFlow& flow) {
-    return qs(set.name) + "  ·  " + flow.words(message(MessageId::ExerciseStudent, student.id)) + "  ·  " +
+// The student's robot's name: its scene's, without the " (id)" the set added.
+std::string robotName(const Scene& scene, const ExerciseStudent& student) {
+    const std::string suffix = " (" + student.id + ")";
+    const std::string& name = scene.name;
+    return name.size() > suffix.size() && name.ends_with(suffix) ? name.substr(0, name.size() - suffix.size()) : name;
+}
+
+QString footerOf(const ExerciseSet& set, const ExerciseStudent& student, const Scene& scene,
+                 const SheetFlow& flow) {  // name · student · robot
+    return qs(robotName(scene, student)) + "  ·  " + flow.words(message(MessageId::ExerciseStudent, student.id)) + "  ·  " +
            flow.words(message(MessageId::ExerciseRobotId, student.fingerprint, std::to_string(set.seed)));
 }
 
@@ -341,7 +349,7 @@ QImage robotPicture(const Scene& scene, int width, int height) {
 int writeExerciseSheet(const ExerciseSet& set, const SheetStudent& s, present::Language language, const std::string& path) {
     SheetFlow flow(language);
     const ExerciseStudent& student = *s.student;
-    flow.text(flow.words(message(MessageId::ExerciseSheetTitle, set.name)), 1.5, SheetFlow::Set::Bold);
+    flow.text(flow.words(message(MessageId::ExerciseSheetTitle, robotName(s.scene, student))), 1.5, SheetFlow::Set::Bold);
     flow.text(flow.words(message(MessageId::ExerciseStudent, student.id)) + "     " +
                   flow.words(message(MessageId::ExerciseRobotId, student.fingerprint, std::to_string(set.seed))),
               0.9, SheetFlow::Set::Plain);
@@ -361,7 +369,8 @@ int writeExerciseSheet(const ExerciseSet& set, const SheetStudent& s, present::L
     }
     flow.gap(6);
     flow.text(flow.words(Message(MessageId::ExerciseHandIn)), 0.9, SheetFlow::Set::Plain, 0, QColor(60, 60, 60));
-    return flow.write(path, flow.words(message(MessageId::ExerciseSheetTitle, set.name)), footerOf(set, student, flow));
+    return flow.write(path, flow.words(message(MessageId::ExerciseSheetTitle, robotName(s.scene, student))),
+                      footerOf(set, student, s.scene, flow));
 }
 
 int writeSolutions(const ExerciseSet& set, const std::vector<SolutionStudent>& students, present::Language language,
@@ -373,6 +382,7 @@ int writeSolutions(const ExerciseSet& set, const std::vector<SolutionStudent>& s
         if (k) flow.pageBreak();
         flow.text(title, 1.3, SheetFlow::Set::Bold);
         flow.text(flow.words(Message(MessageId::ExerciseSolutionsNote)), 0.85, SheetFlow::Set::Prose, 0, QColor(90, 90, 90));
+        if (set.scenes.size() > 1) flow.text(qs(robotName(s.scene, *s.student)), 1.0, SheetFlow::Set::Bold);  // a family: which member
         flow.heading(flow.words(message(MessageId::ExerciseStudent, s.student->id)) + "     " +
                          flow.words(message(MessageId::ExerciseRobotId, s.student->fingerprint, std::to_string(set.seed))),
                      1.05);
@@ -387,10 +397,10 @@ int writeSolutions(const ExerciseSet& set, const std::vector<SolutionStudent>& s
     return flow.write(path, title, qs(set.name));
 }
 
-int writeFeedback(const ExerciseSet& set, const ExerciseStudent& student, const std::vector<GradedTask>& tasks, present::Language language,
-                  const std::string& path) {
+int writeFeedback(const ExerciseSet& set, const ExerciseStudent& student, const Scene& scene, const std::vector<GradedTask>& tasks,
+                  present::Language language, const std::string& path) {
     SheetFlow flow(language);
-    const QString title = flow.words(message(MessageId::ExerciseFeedbackTitle, set.name));
+    const QString title = flow.words(message(MessageId::ExerciseFeedbackTitle, robotName(scene, student)));
     flow.text(title, 1.5, SheetFlow::Set::Bold);
     flow.text(flow.words(message(MessageId::ExerciseStudent, student.id)) + "     " +
                   flow.words(message(MessageId::ExerciseRobotId, student.fingerprint, std::to_string(set.seed))),
@@ -422,7 +432,7 @@ int writeFeedback(const ExerciseSet& set, const ExerciseStudent& student, const 
         if (t.check.withValues) flow.text(flow.words(Message(MessageId::AnswerWithValues)), 0.95, SheetFlow::Set::Prose, 14);
         for (const Message& hint : t.check.hints) flow.text("– " + flow.words(hint), 0.95, SheetFlow::Set::Prose, 14);
     }
-    return flow.write(path, title, footerOf(set, student, flow));
+    return flow.write(path, title, footerOf(set, student, scene, flow));
 }
 
 }  // namespace ll::ui

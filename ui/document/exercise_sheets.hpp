@@ -47,7 +47,7 @@ struct GradedTask {
     std::string typed;  // the answer as the file has it ("" unanswered)
     AnswerCheck check;  // not used when unanswered
 };
-int writeFeedback(const ExerciseSet& set, const ExerciseStudent& student, const std::vector<GradedTask>& tasks, present::Language language,
-                  const std::string& path);
+int writeFeedback(const ExerciseSet& set, const ExerciseStudent& student, const Scene& scene, const std::vector<GradedTask>& tasks,
+                  present::Language language, const std::string& path);
 
 }  // namespace ll::ui
