@@ -313,6 +313,23 @@ private slots:
                  r.err.constData());
     }
 
+    void studentsFromASpreadsheet() {
+        // a spreadsheet's CSV: byte-order mark, a header, quoted ids, comments and blank lines
+        write(dir_.filePath("roster.csv"), "\xEF\xBB\xBFstudent;name\n\"anna.k\";Anna\n# on leave: dan\n\nbo_2;Bo\ncarl-3\n");
+        const QString out = dir_.filePath("roster");
+        const Run r =
+            run({"exercise", example("planar_2r.json"), "--out", out, "--students", dir_.filePath("roster.csv"), "--entries", "g2"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        QStringList ids;
+        for (const QJsonValue& v : json(out + "/exercise.json")["students"].toArray()) ids << v.toObject()["id"].toString();
+        QCOMPARE(ids, (QStringList{"anna.k", "bo_2", "carl-3"}));
+        for (const QString& id : ids) QVERIFY2(QFileInfo(out + "/" + id + "/sheet.pdf").size() > 0, qPrintable(id));
+        write(dir_.filePath("bad.csv"), "student\nanna\n../etc\n");
+        const Run bad = run({"exercise", example("planar_2r.json"), "--out", out, "--students", dir_.filePath("bad.csv")});
+        QCOMPARE(bad.exitCode, 2);
+        QVERIFY2(bad.err.contains("line 3: '../etc' is not a student id"), bad.err.constData());
+    }
+
     void stepZeroAsksForTheDhTable() {
         const QString out = dir_.filePath("steps");
         const Run r = run({"exercise", example("planar_2r.json"), "--out", out, "--count", "1", "--steps", "0-2", "--lang", "da"});
