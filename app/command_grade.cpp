@@ -219,6 +219,13 @@ int gradeCommand(const Args& args) {
     std::printf("%s\n", words(message(MessageId::ExerciseGradeSummary, static_cast<int>(submissions.size()),
                                       static_cast<int>(submissions.size() * set.entries.size()), right, wrong, unreadable, unanswered))
                             .c_str());
+    std::string missing;  // the students of the set with no answer file among those given
+    int without = 0;
+    for (const ExerciseStudent& student : set.students)
+        if (!fileOf.count(student.id)) missing += (without++ ? ", " : "") + student.id;
+    if (without)
+        std::printf("%s\n",
+                    words(message(MessageId::ExerciseNotHandedIn, without, static_cast<int>(set.students.size()), missing)).c_str());
     std::printf("%s\n", grades.string().c_str());
     for (const std::string& f : feedbackFiles) std::printf("%s\n", f.c_str());
     return 0;

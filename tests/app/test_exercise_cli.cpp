@@ -178,6 +178,12 @@ private slots:
         QCOMPARE(lines[0], QByteArray("student,entry,verdict,hint"));
         QCOMPARE(lines[1], QByteArray("s01,b11,right,"));
         for (const QString& id : {"s01", "s02", "s03"}) QCOMPARE(pages(out + "/" + id + "/feedback.pdf"), 1);
+        // a student without a file is named after the summary
+        const Run two = run({"grade", set_, files[0], files[1], "--out", dir_.filePath("graded-two")});
+        QVERIFY2(two.exitCode == 0, two.err.constData());
+        QVERIFY2(two.out.startsWith("2 students, 6 answers: 6 right, 0 wrong, 0 unreadable, 0 unanswered\n"
+                                    "no answer file from 1 of 3 students: s03\n"),
+                 two.out.constData());
     }
 
     void aWrongAnswerGetsAHint() {

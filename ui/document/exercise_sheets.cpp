@@ -356,12 +356,15 @@ int writeExerciseSheet(const ExerciseSet& set, const SheetStudent& s, present::L
     flow.gap(4);
     if (!s.picture.isNull()) {
         flow.image(s.picture, 140);
-        flow.text(flow.words(Message(MessageId::ExercisePicture)), 0.85, SheetFlow::Set::Prose, 0, QColor(90, 90, 90));
+        flow.text(flow.words(Message(s.scene.lagrangian ? MessageId::ExercisePictureSystem : MessageId::ExercisePicture)), 0.85,
+                  SheetFlow::Set::Prose, 0, QColor(90, 90, 90));
     }
     robotTables(flow, s.scene, set.dhTable);
     flow.heading(flow.words(Message(MessageId::ExerciseTasks)));
     const bool numeric = set.mode == symbolic::ParameterMode::Numeric;
-    flow.text(flow.words(Message(numeric ? MessageId::ExerciseTaskIntroNumeric : MessageId::ExerciseTaskIntroSymbols)));
+    const bool system = s.scene.lagrangian.has_value();  // a typed Lagrangian: its own coordinates, no joints
+    flow.text(flow.words(Message(numeric ? (system ? MessageId::ExerciseTaskIntroNumericSystem : MessageId::ExerciseTaskIntroNumeric)
+                                         : (system ? MessageId::ExerciseTaskIntroSymbolsSystem : MessageId::ExerciseTaskIntroSymbols))));
     flow.gap(4);
     for (const std::string& entry : set.entries) {
         const bool long_ = entry.rfind("equation", 0) == 0 || entry.rfind("E_", 0) == 0 || entry.rfind("c", 0) == 0;
