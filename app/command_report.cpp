@@ -11,6 +11,7 @@
 #include "app/command_usage.hpp"
 #include "app/commands.hpp"
 #include "app/offscreen_gui.hpp"
+#include "app/output_folder.hpp"
 #include "app/progress_bar.hpp"
 #include "app/scene_loading.hpp"
 #include "core/pipeline/display_derivation.hpp"
@@ -25,17 +26,7 @@ int reportCommand(const Args& args) {
     const Options options(args, {"out", "duration"});
     if (options.positional().size() != 1 || !options.has("out")) throw UsageError(usageLine("report"));
     const std::string path = options.positional()[0], out = options.text("out");
-    {  // before the work: a folder that cannot be made or written is known now (made here)
-        namespace fs = std::filesystem;
-        std::error_code error;
-        fs::create_directories(out, error);
-        if (!fs::is_directory(out)) throw UsageError(UsageId::CannotMakeFolder, out, error.message());
-        const fs::path probe = fs::path(out) / ".lagrangelab-write-test";
-        std::ofstream test(probe);
-        if (!test) throw UsageError(UsageId::FolderNotWritable, out);
-        test.close();
-        fs::remove(probe, error);
-    }
+    prepareOutputFolder(out);  // before the work: a folder that cannot be made or written is known now
     Scene scene = loadSceneReportingWarnings(path);
     if (options.has("duration")) {
         const double duration = options.number("duration", 0);

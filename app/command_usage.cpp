@@ -11,7 +11,7 @@ struct CommandText {
     const char* summary;
 };
 
-constexpr std::array<CommandText, 12> commands{{
+constexpr std::array<CommandText, 14> commands{{
     {"eval", "SCENE --q v1,... --qd v1,... [--t T] [--tau v1,...]", "B, C, g, Q, q̈, E_kin, E_pot at one state, as JSON"},
     {"simulate",
      "SCENE [--duration T] [--integrator NAME] [--abs-tol X] [--rel-tol X] [--dt X]\n"
@@ -46,6 +46,15 @@ constexpr std::array<CommandText, 12> commands{{
      "equation1, dL/dx_dot) checked exactly: what was read, right or wrong, and which link, term or\n"
      "slip (without an answer given: those the scene's \"exercise\" section holds); exit 0 right,\n"
      "1 wrong, 2 unreadable"},
+    {"exercise",
+     "SCENE [SCENE...] --out DIR --students FILE.csv | --count N [--seed S] [--entries b11,g2,... | --steps 5-8]\n"
+     "[--vary NAME=LOW..HIGH ...] [--parametric] [--lang da|en]",
+     "exercise sheets: a robot per student (one of the scenes given, its numbers drawn within the ranges,\n"
+     "both from the seed), each with sheet.pdf, scene.json and answers.json to fill in; solutions.pdf,\n"
+     "exercise.json and moodle.xml (STACK)"},
+    {"grade", "DIR ANSWERS... [--out DIR] [--lang da|en]",
+     "every answer file checked against its own student's robot of the exercise set in DIR:\n"
+     "grades.csv (student, entry, verdict, hint) and a feedback.pdf per student"},
     {"integrators", "", "the integrators with order, kind and when to use each"},
     {"accuracy",
      "SCENE [--integrators a,b,...] [--tolerances 1e-3..1e-12] [--steps dt1,dt2,...] [--duration T]\n"

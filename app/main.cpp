@@ -21,8 +21,8 @@ namespace {
 
 bool isHelp(const std::string& arg) { return arg == "--help" || arg == "-h"; }
 
-const char* const kCommands[] = {"eval",   "simulate", "integrators", "accuracy", "derive",  "render",
-                                 "report", "codegen",  "check",       "check-answer", "help",     "version", "--version"};
+const char* const kCommands[] = {"eval",  "simulate",     "integrators", "accuracy", "derive", "render", "report",  "codegen",
+                                 "check", "check-answer", "exercise",    "grade",    "help",   "version", "--version"};
 
 // `lagrangelab`, `lagrangelab SCENE …` and `lagrangelab --screenshot …` open the window:
 // no arguments, or a first argument that is no command but a scene file or an option.
@@ -126,6 +126,8 @@ int main(int argc, char** argv) {
         if (command == "codegen") return codegenCommand(args);
         if (command == "check") return checkCommand(args);
         if (command == "check-answer") return checkAnswerCommand(args);
+        if (command == "exercise") return exerciseCommand(args);
+        if (command == "grade") return gradeCommand(args);
         std::cerr << usageErrorLine(usageMessage(UsageId::UnknownCommand, command), presentation().language) << "\n\n" << overviewUsage();
         return 2;
     });

@@ -1,5 +1,6 @@
 #pragma once
 // Running a program from a test: exit code, stdout and stderr.
+#include <QFile>
 #include <QProcess>
 #include <QProcessEnvironment>
 #include <QString>
@@ -33,6 +34,21 @@ inline QProcessEnvironment freshLocaleEnvironment(const QStringList& extra = {})
     e.insert("LC_ALL", "C.UTF-8");
     for (const QString& kv : extra) e.insert(kv.section('=', 0, 0), kv.section('=', 1));
     return e;
+}
+
+// `program` run as from a shell without X (no DISPLAY, no WAYLAND_DISPLAY), in a fresh
+// locale: a command that must work headless, worded in English.
+inline ProcessRun runHeadless(const QString& program, const QStringList& args) {
+    QProcessEnvironment env = freshLocaleEnvironment();
+    env.remove("DISPLAY");
+    env.remove("WAYLAND_DISPLAY");
+    return runProcess(program, args, {}, env);
+}
+
+// A file's bytes; empty when it cannot be read.
+inline QByteArray fileBytes(const QString& path) {
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
 }
 
 }  // namespace ll::test

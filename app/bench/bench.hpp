@@ -24,6 +24,8 @@ int expandedEntries(const std::vector<std::string>& scenes, const std::vector<st
 std::vector<std::string> benchChains();
 // --answers: a student's answer checked, as a process and against a built key (bench_answers.cpp).
 int answers(int runs);
+// --grade: `lagrangelab grade` of 30 students' files of 10 entries (bench_grade.cpp).
+int grade(int runs);
 // --linked: the entry catalogue, per-frame evaluation and the run's analysis (bench_linked.cpp).
 int linked(const std::vector<std::string>& scenes, int runs);
 

@@ -8,6 +8,8 @@
 #include <string_view>
 #include <unordered_set>
 
+#include "core/io/xml_text.hpp"
+
 namespace ll::ui {
 namespace {
 
@@ -50,18 +52,6 @@ std::string pathData(const QPainterPath& path, double k) {
         appendNumber(d, k * e.y);
     }
     return d;
-}
-
-void appendEscaped(std::string& out, const std::string& text) {
-    for (const char c : text) {
-        switch (c) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            default: out += c;
-        }
-    }
 }
 
 }  // namespace
@@ -121,7 +111,7 @@ std::string svgPage(const MathMarks& marks, QSizeF sizePt, const std::string& ti
     out += ' ';
     appendNumber(out, sizePt.height());
     out += "\">\n<title>";
-    appendEscaped(out, title);
+    appendXmlEscaped(out, title);
     out += "</title>\n<defs>\n";
     std::unordered_set<std::string_view> defined;  // two glyphs of one outline (one id): defined once
     for (const int n : used) {
