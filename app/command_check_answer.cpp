@@ -7,6 +7,7 @@
 // names no entry (and for bad input).
 #include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <iostream>
 #include <sstream>
 
@@ -17,12 +18,15 @@
 #include "app/commands.hpp"
 #include "app/scene_loading.hpp"
 #include "core/pipeline/answer_check.hpp"
+#include "core/pipeline/exercise_set.hpp"
 #include "core/present/message_text.hpp"
 
 namespace ll::cli {
 namespace {
 
-std::vector<std::pair<std::string, std::string>> answersFromFile(const std::string& path) {
+// The answers of an answer file (`lagrangelab exercise`'s template, or {"b11": "…"});
+// `robot`: the fingerprint of the robot it names, when it names one.
+std::vector<std::pair<std::string, std::string>> answersFromFile(const std::string& path, std::string& robot) {
     std::ifstream in(path);
     if (!in) throw UsageError(UsageId::AnswerFileUnreadable, path);
     std::stringstream text;
@@ -33,6 +37,7 @@ std::vector<std::pair<std::string, std::string>> answersFromFile(const std::stri
     } catch (const nlohmann::json::parse_error& e) {
         throw UsageError(UsageId::AnswerFileNotJson, path, e.what());
     }
+    if (json.is_object() && json.contains("robot") && json["robot"].is_string()) robot = json["robot"].get<std::string>();
     if (json.is_object() && json.contains("answers")) json = json["answers"];
     if (!json.is_object()) throw UsageError(UsageId::AnswerFileNotJson, path, json.type_name());
     std::vector<std::pair<std::string, std::string>> answers;
@@ -92,15 +97,21 @@ int checkAnswerCommand(const Args& args) {
     if (format != "text" && format != "json") throw UsageError(UsageId::ExpectedOneOf, "format", "text", "json", format);
     if (options.has("symbolic") && options.has("numeric")) throw UsageError(UsageId::ExcludeEachOther, "symbolic", "numeric");
     std::vector<std::pair<std::string, std::string>> answers;
+    std::string robot;  // the answer file's robot, when it names one
     if (options.has("answer-file")) {
         if (options.has("answer") || options.has("entry"))
             throw UsageError(UsageId::ExcludeEachOther, "answer-file", options.has("answer") ? "answer" : "entry");
-        answers = answersFromFile(options.text("answer-file"));
+        answers = answersFromFile(options.text("answer-file"), robot);
     } else if (options.has("entry") || options.has("answer")) {
         if (!options.has("entry") || !options.has("answer")) throw UsageError(UsageId::AnswerNeeded);
         answers.emplace_back(options.text("entry"), options.text("answer"));
     }
     const Scene scene = loadSceneReportingWarnings(options.positional()[0]);
+    if (!robot.empty()) {  // answers for another student's robot would be judged against the wrong one
+        std::ifstream file(options.positional()[0], std::ios::binary);
+        const std::string own = sceneFingerprint(std::string(std::istreambuf_iterator<char>(file), {}));
+        if (robot != own) throw UsageError(UsageId::AnswerFileOtherRobot, options.text("answer-file"), robot, options.positional()[0], own);
+    }
     if (answers.empty()) {  // the answers the scene holds (the window's exercise mode saves them there)
         for (const auto& [entry, answer] : scene.exercise.answers)
             if (!answer.empty()) answers.emplace_back(entry, answer);

@@ -89,6 +89,33 @@ struct Submission {
     std::map<std::string, std::string> answers;
 };
 
+// The answers of a student's tasks, checked against the set's tasks.
+void readAnswers(const std::string& name, const nlohmann::json& answers, const ExerciseSet& set, Submission& s) {
+    if (!answers.is_object()) throw UsageError(UsageId::GradeAnswerNotJson, name, std::string("\"answers\": ") + answers.type_name());
+    std::string tasks;
+    for (const std::string& e : set.entries) tasks += (tasks.empty() ? "" : ", ") + e;
+    for (const auto& [entry, answer] : answers.items()) {
+        if (std::find(set.entries.begin(), set.entries.end(), entry) == set.entries.end())
+            throw UsageError(UsageId::GradeUnknownEntry, name, entry, tasks);
+        if (!answer.is_string()) throw UsageError(UsageId::GradeAnswerNotString, name, entry);
+        s.answers[entry] = answer.get<std::string>();
+    }
+}
+
+// A student's scene.json handed in with the answers the window's exercise mode saved in it:
+// the student is the one whose robot it is (no two share one).
+Submission handedInScene(const std::string& name, const std::string& text, const nlohmann::json& json, const ExerciseSet& set) {
+    Submission s;
+    s.file = name;
+    const std::string robot = sceneFingerprint(text);
+    for (const ExerciseStudent& student : set.students)
+        if (student.fingerprint == robot) s.student = &student;
+    if (!s.student) throw UsageError(UsageId::GradeSceneNoStudent, name, robot);
+    const nlohmann::json& exercise = json["exercise"];
+    if (exercise.is_object() && exercise.contains("answers")) readAnswers(name, exercise["answers"], set, s);
+    return s;
+}
+
 Submission readSubmission(const fs::path& path, const ExerciseSet& set) {
     const std::string name = path.string();
     bool ok = false;
@@ -101,6 +128,7 @@ Submission readSubmission(const fs::path& path, const ExerciseSet& set) {
         throw UsageError(UsageId::GradeAnswerNotJson, name, e.what());
     }
     if (!json.is_object()) throw UsageError(UsageId::GradeAnswerNotJson, name, json.type_name());
+    if (json.contains("format") && json.contains("exercise")) return handedInScene(name, text, json, set);
     for (const char* field : {"student", "seed", "robot", "answers"})
         if (!json.contains(field)) throw UsageError(UsageId::GradeMissingField, name, field);
     Submission s;
@@ -113,16 +141,7 @@ Submission readSubmission(const fs::path& path, const ExerciseSet& set) {
         throw UsageError(UsageId::GradeWrongSeed, name, seed.dump(), std::to_string(set.seed));
     const std::string robot = json["robot"].is_string() ? json["robot"].get<std::string>() : json["robot"].dump();
     if (robot != s.student->fingerprint) throw UsageError(UsageId::GradeWrongRobot, name, robot, id, s.student->fingerprint);
-    const nlohmann::json& answers = json["answers"];
-    if (!answers.is_object()) throw UsageError(UsageId::GradeAnswerNotJson, name, std::string("\"answers\": ") + answers.type_name());
-    std::string tasks;
-    for (const std::string& e : set.entries) tasks += (tasks.empty() ? "" : ", ") + e;
-    for (const auto& [entry, answer] : answers.items()) {
-        if (std::find(set.entries.begin(), set.entries.end(), entry) == set.entries.end())
-            throw UsageError(UsageId::GradeUnknownEntry, name, entry, tasks);
-        if (!answer.is_string()) throw UsageError(UsageId::GradeAnswerNotString, name, entry);
-        s.answers[entry] = answer.get<std::string>();
-    }
+    readAnswers(name, json["answers"], set, s);
     return s;
 }
 

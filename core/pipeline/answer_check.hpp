@@ -89,8 +89,8 @@ public:
     // for an unknown id and for what the derivation does not show (Christoffel symbols).
     present::EntryPlace place(const std::string& id) const;
     // The entries of step `step` worth asking a student for, in the derivation's order: not
-    // a constant (the 0 and 1 of a transform), b_ij only for i ≤ j (B is symmetric), no
-    // Christoffel symbols (C asks for them).
+    // zero, not a constant of a step's matrix (the 1 of a transform's last row), b_ij only
+    // for i ≤ j (B is symmetric), no Christoffel symbols (C asks for them).
     std::vector<std::string> practiceEntries(int step) const;
     // The entries a name typed or picked stands for: one entry (b11), or every entry of a
     // matrix or vector (B, p_c2, T_2^0); empty when it names none.

@@ -63,9 +63,10 @@ std::vector<std::string> AnswerKey::practiceEntries(int step) const {
     const auto lock = symbolic::lockGinac();
     std::vector<std::string> out;
     for (const KeyEntry& e : data_->entries) {
-        if (e.kind == EntryKind::Christoffel || placeOf(*data_, e).step != step) continue;
-        if (e.kind == EntryKind::MassMatrix && e.i > e.j) continue;
-        if (GiNaC::is_a<GiNaC::numeric>(e.value)) continue;  // nothing to derive
+        if (e.kind == EntryKind::Christoffel || e.kind == EntryKind::LinkPart || placeOf(*data_, e).step != step) continue;
+        if (e.kind == EntryKind::MassMatrix && e.i > e.j) continue;  // it is b_ji
+        const GiNaC::ex value = data_->valueOf(e).expand();
+        if (value.is_zero() || (e.kind == EntryKind::Item && GiNaC::is_a<GiNaC::numeric>(value))) continue;  // nothing to derive
         out.push_back(e.id);
     }
     return out;

@@ -15,43 +15,6 @@
 namespace ll {
 namespace {
 
-// The quantity of the derivation an entry belongs to (its step's), or nothing (a
-// Christoffel symbol: C's entries are asked instead).
-std::optional<std::pair<symbolic::Quantity, int>> quantityOfEntry(const KeyEntry& e) {
-    using symbolic::Quantity;
-    switch (e.kind) {
-        case EntryKind::MassMatrix: return std::pair{Quantity::MassMatrix, -1};
-        case EntryKind::Coriolis: return std::pair{Quantity::CoriolisMatrix, -1};
-        case EntryKind::Gravity: return std::pair{Quantity::GravityVector, -1};
-        case EntryKind::Force: return std::pair{Quantity::GeneralizedForces, -1};
-        case EntryKind::KineticEnergy: return std::pair{Quantity::KineticEnergy, -1};
-        case EntryKind::PotentialEnergy: return std::pair{Quantity::PotentialEnergy, -1};
-        case EntryKind::Equation: return std::pair{Quantity::EquationOfMotion, e.i};
-        case EntryKind::Item: return std::pair{e.quantity, e.index};
-        case EntryKind::Christoffel: break;
-    }
-    return std::nullopt;
-}
-
-int stepOfEntry(const AnswerKey::Data& k, const KeyEntry& e) {
-    const auto quantity = quantityOfEntry(e);
-    if (!quantity) return -1;
-    for (const symbolic::DerivationStep& step : k.derivation.steps)
-        for (const symbolic::DerivationItem& item : step.items)
-            if (item.quantity == quantity->first && (quantity->second < 0 || item.index == quantity->second)) return step.number;
-    return -1;
-}
-
-// Worth asking: not zero, not a constant of a matrix (the 1 of a transform's last row),
-// not b_ij below the diagonal (it is b_ji).
-bool worthAsking(const AnswerKey::Data& k, const KeyEntry& e) {
-    if (e.kind == EntryKind::Christoffel) return false;
-    if (e.kind == EntryKind::MassMatrix && e.i > e.j) return false;
-    const GiNaC::ex value = k.valueOf(e).expand();
-    if (value.is_zero()) return false;
-    return !(e.kind == EntryKind::Item && GiNaC::is_a<GiNaC::numeric>(value));
-}
-
 const KeyEntry* entryById(const AnswerKey::Data& k, const std::string& id) {
     for (const KeyEntry& e : k.entries)
         if (e.id == id) return &e;
@@ -61,23 +24,19 @@ const KeyEntry* entryById(const AnswerKey::Data& k, const std::string& id) {
 }  // namespace
 
 std::vector<std::string> entriesOfSteps(const AnswerKey& key, int first, int last) {
-    const auto lock = symbolic::lockGinac();
-    const AnswerKey::Data& k = key.data();
     std::vector<std::string> ids;
-    for (const KeyEntry& e : k.entries) {
-        const int step = stepOfEntry(k, e);
-        if (step >= first && step <= last && worthAsking(k, e)) ids.push_back(e.id);
-    }
+    for (int step = first; step <= last; ++step)
+        for (const std::string& id : key.practiceEntries(step)) ids.push_back(id);
     return ids;
 }
 
 std::vector<std::string> defaultEntries(const AnswerKey& key) {
     const auto lock = symbolic::lockGinac();
-    const AnswerKey::Data& k = key.data();
-    std::vector<std::string> ids;
+    std::vector<std::string> worth = key.practiceEntries(7), more = key.practiceEntries(8), ids;
+    worth.insert(worth.end(), more.begin(), more.end());
     for (EntryKind kind : {EntryKind::MassMatrix, EntryKind::Gravity, EntryKind::Coriolis})
-        for (const KeyEntry& e : k.entries)
-            if (e.kind == kind && worthAsking(k, e)) ids.push_back(e.id);
+        for (const KeyEntry& e : key.data().entries)
+            if (e.kind == kind && std::find(worth.begin(), worth.end(), e.id) != worth.end()) ids.push_back(e.id);
     return ids;
 }
 

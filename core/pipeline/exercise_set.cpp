@@ -221,8 +221,22 @@ std::map<std::string, std::string> parameterUnits(const Scene& scene) {
     return units;
 }
 
+namespace {
+
+// Every number as the double it stands for: 2, 2.0 and 2e0 are one value, whichever a
+// program that saved the file wrote.
+void numbersAsValues(nlohmann::json& j) {
+    if (j.is_number()) j = j.get<double>();
+    else if (j.is_structured())
+        for (nlohmann::json& child : j) numbersAsValues(child);
+}
+
+}  // namespace
+
 std::string sceneFingerprint(const std::string& sceneText) {
-    const nlohmann::json canonical = nlohmann::json::parse(sceneText);  // keys sorted, numbers as parsed
+    nlohmann::json canonical = nlohmann::json::parse(sceneText);  // keys sorted
+    if (canonical.is_object()) canonical.erase("exercise");       // the student's work on the robot, not the robot
+    numbersAsValues(canonical);
     char hex[17];
     std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(fnv1a(canonical.dump())));
     return hex;
@@ -281,6 +295,8 @@ ExerciseSet makeExerciseSet(const ExerciseSpec& spec) {
                 !std::any_of(ranges.begin(), ranges.end(), [&](const ParameterRange& r) { return r.name == name; }))
                 value = std::stod(shortNumber(value.get<double>()));
         scene["name"] = base.value("name", members[m].file) + " (" + id + ")";
+        // opened in the window, the tasks are asked in its exercise mode (their answers hidden)
+        if (!spec.entries.empty()) scene["exercise"] = {{"entries", spec.entries}};
         student.sceneText = scene.dump(2) + "\n";
         parseScene(student.sceneText);  // throws InputError when a drawn value breaks the scene
         student.fingerprint = sceneFingerprint(student.sceneText);

@@ -122,7 +122,8 @@ struct ExerciseSet {
 ExerciseSet makeExerciseSet(const ExerciseSpec& spec);
 
 // 16 hex digits identifying a scene file's content (FNV-1a over its JSON, keys sorted,
-// numbers as parsed): the same robot, the same fingerprint, whatever the spacing.
+// every number as the value it stands for (2 and 2.0 alike), without its "exercise" section): the same robot, the same
+// fingerprint, whatever the spacing and the answers saved in it.
 std::string sceneFingerprint(const std::string& sceneText);
 
 // The answer file a student fills in: {"lagrangelab_answers": 1, "student", "seed",

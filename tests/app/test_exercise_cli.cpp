@@ -222,6 +222,47 @@ private slots:
         QVERIFY(pdfText(danish + "/s02/feedback.pdf").contains("ikke besvaret"));
     }
 
+    // A student may do the exercise in the window: their scene.json opens with the tasks
+    // asked (its exercise section), and the scene saved with the answers is graded as their
+    // hand-in, its student found by the robot (the answers do not change the fingerprint).
+    void aSceneSavedByTheWindowIsGraded() {
+        QJsonObject scene = json(set_ + "/s02/scene.json");
+        QCOMPARE(scene["exercise"].toObject()["entries"].toVariant().toStringList(), entries_);
+        QJsonObject answers;
+        answers["b11"] = rightAnswer(set_ + "/s02/scene.json", "b11");
+        answers["g2"] = "1";
+        QJsonObject exercise = scene["exercise"].toObject();
+        exercise["answers"] = answers;
+        scene["exercise"] = exercise;
+        const QString handedIn = dir_.filePath("handed-in-s02.json");
+        write(handedIn, QJsonDocument(scene).toJson());
+        const QString out = dir_.filePath("graded-scene");
+        const Run r = run({"grade", set_, handedIn, "--out", out});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QString csv = QString::fromUtf8(bytes(out + "/grades.csv"));
+        QVERIFY2(csv.contains("\ns02,b11,right,\n") && csv.contains("\ns02,b12,unanswered,\n") && csv.contains("\ns02,g2,wrong,"),
+                 qPrintable(csv));
+        // check-answer with a student's answer file: their own robot judged; another's refused
+        QJsonObject filled = json(set_ + "/s02/answers.json");
+        QJsonObject its = filled["answers"].toObject();
+        its["b11"] = answers["b11"];
+        filled["answers"] = its;
+        write(dir_.filePath("s02-answers.json"), QJsonDocument(filled).toJson());
+        const Run own = run({"check-answer", set_ + "/s02/scene.json", "--answer-file", dir_.filePath("s02-answers.json")});
+        QVERIFY2(own.out.contains("b11: right"), own.out.constData());
+        const Run theirs = run({"check-answer", set_ + "/s01/scene.json", "--answer-file", dir_.filePath("s02-answers.json")});
+        QCOMPARE(theirs.exitCode, 2);
+        QVERIFY2(theirs.err.contains("answers for another robot") && theirs.err.count('\n') == 1, theirs.err.constData());
+        // the scene of a robot that is no student's: one line, exit 2
+        QJsonObject parameters = scene["parameters"].toObject();
+        parameters["a1"] = parameters["a1"].toDouble() + 0.001;
+        scene["parameters"] = parameters;
+        write(handedIn, QJsonDocument(scene).toJson());
+        const Run other = run({"grade", set_, handedIn, "--out", out});
+        QCOMPARE(other.exitCode, 2);
+        QVERIFY2(other.err.contains("no student's of this exercise set") && other.err.count('\n') == 1, other.err.constData());
+    }
+
     void badInputIsOneLineAndExitTwo() {
         // an answer file for another student's robot
         const QStringList swapped = fillTemplates(dir_.filePath("swapped"), [&](const QString& id, QJsonObject& t) {
