@@ -155,6 +155,8 @@ void ExercisePanel::setEntries(const std::vector<Step>& steps) {
     std::map<QString, int> asked;
     for (const Step& s : steps)
         for (const QString& entry : s.entries) asked[entry] = s.number;
+    empty_->setVisible(steps.empty());
+    clear_->setEnabled(!steps.empty());
     bool same = asked.size() == rows_.size() && steps.size() == boxes_.size();
     for (const auto& [entry, step] : asked) same = same && rows_.count(entry) && rows_.at(entry).step == step;
     if (same) {  // the same fields (one may be being typed in): new titles only
@@ -186,12 +188,11 @@ void ExercisePanel::setEntries(const std::vector<Step>& steps) {
         }
         updateHeading(s.number);
     }
-    empty_->setVisible(steps.empty());
-    clear_->setEnabled(!steps.empty());
 }
 
 void ExercisePanel::setChoices(const std::vector<Step>& steps, bool entryPicked) {
-    const int chosen = steps_->currentData().toInt();
+    // the step chosen before, else the dynamics' (B and E_kin, step 7), where students start
+    const int chosen = steps_->count() > 0 ? steps_->currentData().toInt() : 7;
     steps_->clear();
     for (const Step& s : steps) {
         steps_->addItem(s.title, s.number);
