@@ -3,6 +3,8 @@
 // test's own for the window's settings and recovery copies, and what the 3D view
 // emphasises per link.
 #include <algorithm>
+#include <functional>
+#include <memory>
 #include <vector>
 
 #include <QSettings>
@@ -17,6 +19,17 @@ namespace ll::test {
 inline void keepWindowStateIn(const QTemporaryDir& dir) {
     qputenv("LAGRANGELAB_RECOVERY_DIR", dir.filePath("recovery").toLocal8Bit());
     QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, dir.filePath("settings"));
+}
+
+// A window at 1280×800 on screen with `path` opened, once `ready` holds (a fatal test
+// failure when it does not open).
+inline std::unique_ptr<ui::MainWindow> openedWindow(const QString& path, const std::function<bool(ui::MainWindow&)>& ready) {
+    auto w = std::make_unique<ui::MainWindow>();
+    w->setAskBeforeClosing(false);
+    w->resize(1280, 800);
+    w->show();
+    if (!w->openFile(path, nullptr, true) || !ready(*w)) qFatal("%s did not open", qPrintable(path));
+    return w;
 }
 
 // Per link: the emphasis the 3D view draws on its rods and COM (−1 faded, 0..1 lit; the

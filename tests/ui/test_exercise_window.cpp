@@ -38,12 +38,7 @@ bool settled(MainWindow& w) {
 }
 
 std::unique_ptr<MainWindow> opened(const QString& path) {
-    auto w = std::make_unique<MainWindow>();
-    w->setAskBeforeClosing(false);
-    w->resize(1280, 800);
-    w->show();
-    if (!w->openFile(path, nullptr, true) || !settled(*w)) qFatal("%s did not open", qPrintable(path));
-    return w;
+    return ll::test::openedWindow(path, [](MainWindow& w) { return settled(w); });
 }
 
 // Step `n` of the derivation's text, heading to the next heading.
@@ -53,7 +48,6 @@ QString stepText(MainWindow& w, int n) {
     const qsizetype to = text.indexOf(QString("Step %1").arg(n + 1), from + 1);
     return from < 0 ? QString() : text.mid(from, to < 0 ? -1 : to - from);
 }
-
 
 // Types `answer` into the entry's field and presses Enter; waits for the verdict.
 ExercisePanel::Mark answer(MainWindow& w, const QString& entry, const QString& text) {

@@ -49,15 +49,9 @@ bool settled(MainWindow& w, int seconds = 120) {
         seconds * 1000);
 }
 
-
 // A window at 1280×800 with `name` opened, simulated and derived.
 std::unique_ptr<MainWindow> opened(const char* name) {
-    auto w = std::make_unique<MainWindow>();
-    w->setAskBeforeClosing(false);
-    w->resize(1280, 800);
-    w->show();
-    if (!w->openFile(example(name), nullptr, true) || !settled(*w)) qFatal("%s did not open", name);
-    return w;
+    return ll::test::openedWindow(example(name), [](MainWindow& w) { return settled(w); });
 }
 
 std::vector<int> lit(MainWindow& w) {
