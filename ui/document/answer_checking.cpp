@@ -20,17 +20,20 @@ void AnswerChecking::setScene(const Scene& scene) {
     key_.reset();
     pool_.start([self = this, scene = std::make_shared<const Scene>(scene), number, language = windowLanguage()] {
         std::shared_ptr<const AnswerKey> key;
+        std::map<int, std::vector<std::string>> practice;
         QString why;
         try {
             key = AnswerKey::build(*scene);
+            for (int step = 0; step <= 8; ++step) practice[step] = key->practiceEntries(step);
         } catch (const InputError& e) {
             for (const Diagnostic& d : e.diagnostics()) why += QString::fromStdString(present::diagnosticBody(d, language) + "\n");
         } catch (const std::exception& e) {
             why = QString::fromStdString(e.what());
         }
-        self->keys_.deliver(self, number, [self, number, key, why] {  // dropped when a newer scene's key is asked for
+        self->keys_.deliver(self, number, [self, number, key, practice, why] {  // dropped when a newer scene's key is asked for
             self->keyNumber_ = number;
             self->key_ = key;
+            self->practice_ = practice;
             if (!key) {
                 self->waiting_.clear();
                 emit self->keyFailed(why.trimmed());
@@ -42,6 +45,11 @@ void AnswerChecking::setScene(const Scene& scene) {
             for (const auto& [entry, w] : waiting) self->check(entry, w.answer, w.reveal);
         });
     });
+}
+
+std::vector<std::string> AnswerChecking::practiceEntries(int step) const {
+    const auto found = practice_.find(step);
+    return key_ && found != practice_.end() ? found->second : std::vector<std::string>{};
 }
 
 void AnswerChecking::clear() {

@@ -6,6 +6,8 @@
 // and so does a newer key. Checks asked before the key is ready wait for it.
 #include <map>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include <QObject>
 #include <QString>
@@ -30,6 +32,9 @@ public:
     // The key of the newest scene; null while it is being built (or could not be).
     const std::shared_ptr<const AnswerKey>& key() const { return key_; }
     bool building() const { return keys_.newest() > keyNumber_; }
+    // The key's AnswerKey::practiceEntries(step), made on the worker with the key (it expands
+    // entries under the GiNaC lock, which the GUI thread never waits for); empty without a key.
+    std::vector<std::string> practiceEntries(int step) const;
 
     // Judges `answer` for `entry`; `checked` follows (at once when there is no key to build).
     void check(const QString& entry, const QString& answer, bool reveal = false);
@@ -49,7 +54,8 @@ private:
     NewestWins keys_;
     int keyNumber_ = 0;  // the request the key answers
     std::shared_ptr<const AnswerKey> key_;
-    std::map<QString, int> newestCheck_;  // per entry: the newest check's number
+    std::map<int, std::vector<std::string>> practice_;  // of key_, by step
+    std::map<QString, int> newestCheck_;                // per entry: the newest check's number
     struct Waiting {
         QString answer;
         bool reveal = false;

@@ -53,7 +53,7 @@ ExerciseMode::ExerciseMode(SceneDocument& document, const EntrySelection& select
         checking_.check(entry, panel_.answer(entry), true);
     });
     connect(&panel_, &ExercisePanel::addStepRequested, this, [this](int step) {
-        if (const auto& key = checking_.key()) ask(key->practiceEntries(step), tr("Practise step %1").arg(step));
+        if (checking_.key()) ask(checking_.practiceEntries(step), tr("Practise step %1").arg(step));
     });
     connect(&panel_, &ExercisePanel::addPickedRequested, this, [this] {
         const auto& key = checking_.key();
@@ -65,8 +65,7 @@ ExerciseMode::ExerciseMode(SceneDocument& document, const EntrySelection& select
     // The key is built when the tab is first looked at (the steps it offers need it), or for
     // a scene opened with an exercise.
     connect(parts_.derivationTabs, &QTabWidget::currentChanged, this, [this] {
-        if (parts_.derivationTabs->currentWidget() == &panel_ && !checking_.key() && !checking_.building())
-            buildKey();
+        if (parts_.derivationTabs->currentWidget() == &panel_ && !checking_.key() && !checking_.building()) buildKey();
     });
 }
 
@@ -125,7 +124,7 @@ void ExerciseMode::derivationShown() {
     const present::DisplayDocument* shown = shown_.derived ? shown_.derived->display.get() : nullptr;
     if (key && shown)
         for (const present::DisplayStep& step : shown->steps)
-            if (!key->practiceEntries(step.number).empty())
+            if (!checking_.practiceEntries(step.number).empty())
                 choices.push_back({step.number, tr("Step %1: %2").arg(step.number).arg(words(step.title)), {}});
     panel_.setChoices(choices, key && selection_.entry());
     if (active()) showEntries();  // the steps' titles in the derivation's language
