@@ -290,10 +290,12 @@ ExerciseSet makeExerciseSet(const ExerciseSpec& spec) {
             student.values.emplace_back(r.name, value);
             scene["parameters"][r.name] = value;
         }
-        for (auto& [name, value] : scene["parameters"].items())  // the others as a sheet shows them: six digits
-            if (value.is_number_float() &&
+        for (auto item : scene["parameters"].items()) {  // the others as a sheet shows them: six digits
+            const std::string& name = item.key();
+            if (item.value().is_number_float() &&
                 !std::any_of(ranges.begin(), ranges.end(), [&](const ParameterRange& r) { return r.name == name; }))
-                value = std::stod(shortNumber(value.get<double>()));
+                item.value() = std::stod(shortNumber(item.value().get<double>()));
+        }
         scene["name"] = base.value("name", members[m].file) + " (" + id + ")";
         // opened in the window, the tasks are asked in its exercise mode (their answers hidden)
         if (!spec.entries.empty()) scene["exercise"] = {{"entries", spec.entries}};
