@@ -1,6 +1,6 @@
 // The window's answer key and checks on their worker (ui/document/answer_checking) while the
-// window's derivation worker holds the GiNaC lock beside them. Not yet under
-// ThreadSanitizer: it cannot see Qt's queued calls (tests/ui/CMakeLists.txt).
+// window's derivation worker holds the GiNaC lock beside them; under ThreadSanitizer
+// (labelled threads), which follows the results back through ui/document/handover.
 //
 // Every verdict that comes back is the one the same key gives when asked directly, for the
 // newest scene and the newest answer of each entry: older answers' and older scenes'

@@ -1,7 +1,5 @@
 #include "ui/document/answer_checking.hpp"
 
-#include <QMetaObject>
-
 #include "core/model/diagnostics.hpp"
 #include "core/present/diagnostic_text.hpp"
 #include "ui/document/app_language.hpp"
@@ -30,7 +28,7 @@ void AnswerChecking::setScene(const Scene& scene) {
         } catch (const std::exception& e) {
             why = QString::fromStdString(e.what());
         }
-        self->keys_.deliver(self, number, [self, number, key, practice, why] {  // dropped when a newer scene's key is asked for
+        self->keys_.deliver(number, [self, number, key, practice, why] {  // dropped when a newer scene's key is asked for
             self->keyNumber_ = number;
             self->key_ = key;
             self->practice_ = practice;
@@ -73,15 +71,12 @@ void AnswerChecking::start(const QString& entry, const QString& answer, bool rev
                  keyNumber = keyNumber_] {
         auto result = std::make_shared<AnswerCheck>(key->check(request));
         if (request.reveal && result->rightAnswer.empty()) result->rightAnswer = key->rightAnswer(request.entry);  // nothing typed yet
-        QMetaObject::invokeMethod(
-            self,
-            [self, entry, answer, number, keyNumber, result] {
-                // void when the same entry was checked again since, or the scene changed
-                const auto newest = self->newestCheck_.find(entry);
-                if (newest == self->newestCheck_.end() || newest->second != number || keyNumber != self->keyNumber_ || !self->key_) return;
-                emit self->checked(entry, answer, *result);
-            },
-            Qt::QueuedConnection);
+        self->checked_.post([self, entry, answer, number, keyNumber, result] {
+            // void when the same entry was checked again since, or the scene changed
+            const auto newest = self->newestCheck_.find(entry);
+            if (newest == self->newestCheck_.end() || newest->second != number || keyNumber != self->keyNumber_ || !self->key_) return;
+            emit self->checked(entry, answer, *result);
+        });
     });
 }
 

@@ -15,6 +15,7 @@
 
 #include "core/model/scene.hpp"
 #include "core/pipeline/answer_check.hpp"
+#include "ui/document/handover.hpp"
 #include "ui/document/newest_wins.hpp"
 
 namespace ll::ui {
@@ -52,6 +53,7 @@ private:
 
     QThreadPool pool_;
     NewestWins keys_;
+    Handover checked_;  // each check's result back to this thread
     int keyNumber_ = 0;  // the request the key answers
     std::shared_ptr<const AnswerKey> key_;
     std::map<int, std::vector<std::string>> practice_;  // of key_, by step

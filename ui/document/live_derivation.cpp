@@ -70,7 +70,7 @@ void LiveDerivation::request(const Scene& scene) {
                 result->error = QString::fromStdString(e.what());
             }
             result->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
-            self->work_.deliver(self, request, [self, result] {  // dropped when a newer scene is deriving
+            self->work_.deliver(request, [self, result] {  // dropped when a newer scene is deriving
                 self->delivered_ = result->request;
                 emit self->finished(result);
             });

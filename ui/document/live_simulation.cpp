@@ -72,7 +72,7 @@ void LiveSimulation::start() {
         }
         if (cancel->load()) return;
         result->workerSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
-        self->work_.deliver(self, request, [self, result] {  // dropped when a newer edit came
+        self->work_.deliver(request, [self, result] {  // dropped when a newer edit came
             self->delivered_ = result->request;
             emit self->finished(result);
         });
@@ -87,7 +87,7 @@ void LiveSimulation::start() {
             analysis->error = present::errorText(e, language);
         }
         if (cancel->load()) return;
-        self->work_.deliver(self, request, [self, analysis] { emit self->analysed(analysis); });
+        self->work_.deliver(request, [self, analysis] { emit self->analysed(analysis); });
     });
 }
 

@@ -4,18 +4,19 @@
 // view's own derivation). Each request gets a number, newer than every one before; the
 // work for it gets a fresh cancel flag, and beginning new work sets the flag of the work
 // before it (its result would be dropped anyway). A result travels back to the owner's
-// thread as a queued call, which runs only if no newer request was made meanwhile. The
-// worker shares nothing else with the owner: copies in, plain results back.
+// thread through a Handover (ui/document/handover.hpp), and runs there only if no newer
+// request was made meanwhile. The worker shares nothing else with the owner: copies in,
+// plain results back.
 //
-// Lifetime: a NewestWins is a member of the QObject that owns the work; the queued call
-// goes to that object, so Qt drops it when the object is gone, and the owner waits for its
-// workers before it dies (their flag set by ~NewestWins or the owner's cancel()).
+// Lifetime: a NewestWins is a member of the QObject that owns the work, made on its
+// thread; its Handover goes with it, so calls still queued are dropped when the owner is
+// gone, and the owner waits for its workers before it dies (their flag set by ~NewestWins
+// or the owner's cancel()).
 #include <atomic>
 #include <memory>
 #include <utility>
 
-#include <QMetaObject>
-#include <QObject>
+#include "ui/document/handover.hpp"
 
 namespace ll::ui {
 
@@ -45,21 +46,19 @@ public:
         if (running_) running_->store(true);
     }
 
-    // From a worker: `show` runs on `owner`'s thread, and only if `number` is still the
+    // From a worker: `show` runs on the owner's thread, and only if `number` is still the
     // newest request then.
     template <class Show>
-    void deliver(QObject* owner, int number, Show show) const {
-        QMetaObject::invokeMethod(
-            owner,
-            [this, number, show = std::move(show)]() mutable {
-                if (isNewest(number)) show();
-            },
-            Qt::QueuedConnection);
+    void deliver(int number, Show show) {
+        back_.post([this, number, show = std::move(show)]() mutable {
+            if (isNewest(number)) show();
+        });
     }
 
 private:
     int newest_ = 0;
     Flag running_;
+    Handover back_;
 };
 
 }  // namespace ll::ui

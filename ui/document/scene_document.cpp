@@ -118,14 +118,11 @@ void SceneDocument::loadFileInBackground(const QString& path, std::function<void
     checker_.start([self = this, text, path, done = std::move(done)] {
         auto scene = std::make_shared<Scene>();
         auto found = std::make_shared<std::vector<Diagnostic>>(diagnose(*text, scene.get()));
-        QMetaObject::invokeMethod(
-            self,
-            [self, text, path, done, scene, found] {
-                QStringList lines;
-                const bool ok = self->adopt(*text, shownPath(path), std::move(*found), *scene, &lines);
-                done(ok, lines);
-            },
-            Qt::QueuedConnection);
+        self->loaded_.post([self, text, path, done, scene, found] {
+            QStringList lines;
+            const bool ok = self->adopt(*text, shownPath(path), std::move(*found), *scene, &lines);
+            done(ok, lines);
+        });
     });
 }
 
@@ -231,7 +228,7 @@ void SceneDocument::validate() {
     checker_.start([self = this, text = json_.dump(), revision] {
         auto scene = std::make_shared<Scene>();
         auto found = std::make_shared<std::vector<Diagnostic>>(diagnose(text, scene.get()));
-        self->checks_.deliver(self, revision, [self, revision, scene, found] {  // dropped when a newer edit is being checked
+        self->checks_.deliver(revision, [self, revision, scene, found] {  // dropped when a newer edit is being checked
             self->validated_ = revision;
             self->accept(std::move(*found), scene.get());
         });

@@ -20,6 +20,7 @@
 #include <QStringList>
 #include <QUndoStack>
 
+#include "ui/document/handover.hpp"
 #include "ui/document/newest_wins.hpp"
 #include <nlohmann/json.hpp>
 
@@ -115,6 +116,7 @@ private:
     NewestWins checks_;  // a check per revision of the JSON: the newest one is applied
     int validated_ = 0;  // the revision whose check was applied last
     QThreadPool checker_;
+    Handover loaded_;  // a scene read in the background, back to this thread
 };
 
 }  // namespace ll::ui

@@ -137,7 +137,7 @@ void DerivationView::setScene(const ll::Scene& scene) {
             error = QString::fromStdString(e.what());
         }
         // The widget waits for its workers before it dies, so `this` is alive.
-        derivations_.deliver(this, request, [this, document, error] { accept(document, error); });
+        derivations_.deliver(request, [this, document, error] { accept(document, error); });
     });
 }
 

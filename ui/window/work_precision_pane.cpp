@@ -109,7 +109,7 @@ void WorkPrecisionPane::run() {
             result = ll::runWorkPrecision(
                 scene, settings,
                 [self, generation, language](double fraction, const Message& what) {
-                    self->sweep_.deliver(self, generation,
+                    self->sweep_.deliver(generation,
                                          [self, fraction, text = QString::fromStdString(present::messageText(what, language))] {
                                              self->progress_->setValue(static_cast<int>(fraction * 1000));
                                              self->label_->setText(text);
@@ -122,7 +122,7 @@ void WorkPrecisionPane::run() {
         } catch (const std::exception& e) {
             error = shownError(e, language);
         }
-        self->sweep_.deliver(self, generation, [self, result = std::move(result), error] {
+        self->sweep_.deliver(generation, [self, result = std::move(result), error] {
             self->run_->setEnabled(true);
             self->cancel_->setEnabled(false);
             if (result) {
