@@ -46,7 +46,15 @@ DisplayItem displayItem(const Derivation& d, const DerivationItem& item, Textboo
         out.equation = displayEquation(displaySumOf(parts), out.value);
         return out;
     }
-    out.value = build(form(item.value, item.grouping));
+    if (item.quantity == Quantity::Lagrangian && (d.Ekin - d.Epot - item.value).expand().is_zero()) {
+        // as the notes write it, L = E_kin − E_pot: the kinetic terms first
+        std::vector<DisplayPtr> parts;
+        for (const GiNaC::ex& part : {d.Ekin, GiNaC::ex(-d.Epot)})
+            if (!part.is_zero()) parts.push_back(build(form(part, item.grouping)));
+        out.value = parts.empty() ? build(GiNaC::ex(0)) : displaySumOf(parts);
+    } else {
+        out.value = build(form(item.value, item.grouping));
+    }
     out.equation = displayEquation(displayLabel(out.name, out.latexName), out.value);
     return out;
 }

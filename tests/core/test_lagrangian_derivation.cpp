@@ -19,6 +19,8 @@
 #include "core/symbolic/compiled_derivation.hpp"
 #include "core/symbolic/derivation_evaluator.hpp"
 #include "core/symbolic/lagrangian_derivation.hpp"
+#include "core/present/derivation_document.hpp"
+#include "core/present/display_tree.hpp"
 #include "test_support.hpp"
 
 // A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
@@ -172,6 +174,30 @@ private slots:
         QVERIFY(equal(n.B(0, 0), GiNaC::numeric(1, 2)) && equal(n.B(1, 1), GiNaC::numeric(1, 5)));
         QVERIFY(equal(n.g(0, 0), 14 * n.q[0] - 4 * n.q[1]));
         QVERIFY(equal(n.Q(1, 0), 1));
+    }
+
+    // L printed as the notes write it, L = E_kin − E_pot: every term with a velocity
+    // (E_kin's) before every term without one (E_pot's, negated), in each example typed
+    // as a Lagrangian; its value still L itself.
+    void lagrangianIsPrintedKineticFirst() {
+        for (const char* name : {"mass_spring_pair_lagrangian.json", "elastic_pendulum.json"}) {
+            const Scene s = parseScene(readFile(std::string(LL_EXAMPLES_DIR) + "/" + name));
+            const Derivation d = deriveLagrangian(s, ParameterMode::Parametric);
+            const auto doc = present::displayDocument(d);
+            const present::DisplayItem* L = nullptr;
+            for (const auto& step : doc->steps)
+                for (const auto& i : step.items)
+                    if (i.quantity == Quantity::Lagrangian) L = &i;
+            QVERIFY2(L && L->value && L->value->kind == present::DisplayKind::Sum, name);
+            std::vector<bool> kinetic;
+            for (const auto& term : L->value->children)
+                kinetic.push_back(present::renderDisplay(*term, present::DisplayStyle::Text).find("\u0307") != std::string::npos);
+            QVERIFY2(kinetic.size() >= 2 && kinetic.front() && !kinetic.back(), name);
+            QVERIFY2(std::is_sorted(kinetic.begin(), kinetic.end(), std::greater<bool>()),
+                     name);  // no velocity term after the first without
+            // the same L: E_kin − E_pot
+            QVERIFY(equal(item(d, "L").value, d.Ekin - d.Epot));
+        }
     }
 
     // The Lagrange items and the matrix form say the same for a system with C ≠ 0:
