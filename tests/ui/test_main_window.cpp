@@ -817,6 +817,7 @@ private slots:
         MainWindow w;
         QVERIFY(openShown(w, qPrintable(scene)));
         w.playback().pause();
+        const QSize docked = w.size();
         w.presentationMode().setSize(size);
         w.presentationMode().setOn(true);
         QTRY_COMPARE(w.size(), size);
@@ -848,7 +849,38 @@ private slots:
             QVERIFY(distance >= last * (1 - 1e-12));
             last = distance;
         }
+        // Leaving: the camera that framed the wide view (backed away for the whole motion)
+        // is refitted to the docked view, so the robot is not left small in it.
         w.presentationMode().setOn(false);
+        QTRY_COMPARE(w.size(), docked);
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs((view.camera().eye - view.camera().centre).norm() - last) > 1e-9, 5000);
+        QVERIFY(ll::test::nextFrameDrawn(w));
+        const double docked_robot = view.sceneHeightInView();
+        qInfo("%s after presenting: 3D view %dx%d, robot %.0f %% of its height", qPrintable(scene), view.width(), view.height(),
+              100 * docked_robot);
+        w.screenshot().save(dir_.filePath(QString("after_presenting_%1_%2.png").arg(scene).arg(size.width())));
+        QVERIFY2(docked_robot >= 0.4, qPrintable(QString::number(docked_robot)));
+        QVERIFY2(docked_robot <= 1.0, qPrintable(QString::number(docked_robot)));
+    }
+
+    // A camera the lecturer moved while presenting stays as they left it.
+    void leavingPresentationKeepsAMovedCamera() {
+        MainWindow w;
+        QVERIFY(openShown(w, "planar_2r.json"));
+        w.playback().pause();
+        const QSize docked = w.size();
+        w.presentationMode().setSize(QSize(1280, 720));
+        w.presentationMode().setOn(true);
+        QTRY_COMPARE(w.size(), QSize(1280, 720));
+        QVERIFY(ll::test::nextFrameDrawn(w));
+        ll::ui::SceneView& view = w.sceneView();
+        view.zoomBy(0.5);
+        const double moved = (view.camera().eye - view.camera().centre).norm();
+        w.presentationMode().setOn(false);
+        QTRY_COMPARE(w.size(), docked);
+        for (int k = 0; k < 5; ++k) flushEvents();
+        QVERIFY(view.cameraMovedByUser());
+        QCOMPARE((view.camera().eye - view.camera().centre).norm(), moved);
     }
 
     // File → Examples → Gallery: every example of examples/ with its picture (320×200, with

@@ -119,6 +119,10 @@ void PresentationMode::setOn(bool on) {
         // Again once the window has its full size (full screen comes through the event loop).
         QTimer::singleShot(0, this, [this] { layOut(); });
     } else {  // every dock, toolbar and the window itself where they were
+        // The camera that framed the projector's wide view would leave the robot small in
+        // the docked one: refitted once the view has its docked size, unless the lecturer
+        // turned, panned or zoomed it while presenting (then it stays as they left it).
+        const bool refit = !parts_.view->cameraMovedByUser();
         window->showNormal();
         parts_.view->setFramePose(false);
         // After the event loop has applied the normal state, the smaller fonts and the
@@ -133,9 +137,12 @@ void PresentationMode::setOn(bool on) {
             window->setGeometry(geometryBefore_);
             window->restoreState(layoutBefore_);
         };
-        QTimer::singleShot(0, this, [this, restore] {
+        QTimer::singleShot(0, this, [this, restore, refit] {
             restore();
-            QTimer::singleShot(0, this, restore);
+            QTimer::singleShot(0, this, [this, restore, refit] {
+                restore();
+                if (refit && !on_) QTimer::singleShot(0, parts_.view, [view = parts_.view] { view->fit(); });  // at the docked size
+            });
         });
     }
 }

@@ -52,7 +52,8 @@ public:
     double sceneHeightInView() const;
     // Presentation framing: the camera fits the robot as it stands (not its whole motion,
     // which would leave a falling Panda half the height), then backs away as far as the
-    // motion needs to stay in view, never closer again until the next fit.
+    // motion needs to stay in view, never closer again until the next fit. Off: the camera
+    // stays where it is (the caller refits it once the view has its docked size).
     void setFramePose(bool on);
     bool framesPose() const { return framePose_; }
     const VisualScene* visualScene() const { return visual_.get(); }

@@ -61,7 +61,7 @@ double SceneView::sceneHeightInView() const {
 
 void SceneView::setFramePose(bool on) {
     framePose_ = on;
-    fit();
+    if (on) fit();
 }
 
 void SceneView::keepPoseInView() {
