@@ -11,12 +11,12 @@
 
 #include <QObject>
 #include <QString>
-#include <QThreadPool>
 
 #include "core/model/scene.hpp"
 #include "core/pipeline/answer_check.hpp"
 #include "ui/document/handover.hpp"
 #include "ui/document/newest_wins.hpp"
+#include "ui/document/work_pool.hpp"
 
 namespace ll::ui {
 
@@ -51,7 +51,7 @@ signals:
 private:
     void start(const QString& entry, const QString& answer, bool reveal, int number);
 
-    QThreadPool pool_;
+    WorkPool pool_;
     NewestWins keys_;
     Handover checked_;  // each check's result back to this thread
     int keyNumber_ = 0;  // the request the key answers

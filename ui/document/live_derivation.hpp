@@ -14,13 +14,13 @@
 
 #include <QObject>
 #include <QString>
-#include <QThreadPool>
 
 #include "core/model/scene.hpp"
 #include "core/pipeline/entry_catalogue.hpp"
 #include "core/present/derivation_document.hpp"
 #include "core/present/text_document.hpp"
 #include "ui/document/newest_wins.hpp"
+#include "ui/document/work_pool.hpp"
 
 namespace ll::ui {
 
@@ -64,7 +64,7 @@ signals:
     void finished(std::shared_ptr<const ll::ui::DerivationResult> result);
 
 private:
-    QThreadPool pool_;
+    WorkPool pool_;
     std::shared_ptr<const Scene> scene_;  // the newest requested scene
     NewestWins work_;
     bool stopped_ = false;  // the newest request was cancelled before it finished

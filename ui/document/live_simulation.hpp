@@ -12,7 +12,6 @@
 
 #include <QElapsedTimer>
 #include <QObject>
-#include <QThreadPool>
 #include <QTimer>
 
 #include "core/model/scene.hpp"
@@ -21,6 +20,7 @@
 #include "core/simulation/torque_parts.hpp"
 #include "core/simulation/trajectory.hpp"
 #include "ui/document/newest_wins.hpp"
+#include "ui/document/work_pool.hpp"
 
 namespace ll::ui {
 
@@ -73,7 +73,7 @@ private:
     void start();
     QTimer debounce_;
     QElapsedTimer lastStart_;  // since the last run started (the debounce's leading edge)
-    QThreadPool pool_;
+    WorkPool pool_;
     std::shared_ptr<const Scene> pending_;
     std::optional<SimulationSettings> override_;
     NewestWins work_;

@@ -15,13 +15,13 @@
 #include <vector>
 
 #include <QObject>
-#include <QThreadPool>
 #include <QString>
 #include <QStringList>
 #include <QUndoStack>
 
 #include "ui/document/handover.hpp"
 #include "ui/document/newest_wins.hpp"
+#include "ui/document/work_pool.hpp"
 #include <nlohmann/json.hpp>
 
 #include "core/model/diagnostics.hpp"
@@ -115,7 +115,7 @@ private:
     int validRevision_ = 0;
     NewestWins checks_;  // a check per revision of the JSON: the newest one is applied
     int validated_ = 0;  // the revision whose check was applied last
-    QThreadPool checker_;
+    WorkPool checker_;
     Handover loaded_;  // a scene read in the background, back to this thread
 };
 

@@ -11,11 +11,11 @@
 #include <QWidget>
 #include <atomic>
 #include <memory>
-#include <QThreadPool>
 #include <vector>
 
 #include "core/model/scene.hpp"
 #include "ui/document/newest_wins.hpp"
+#include "ui/document/work_pool.hpp"
 #include "ui/paint/entry_mark.hpp"
 #include "core/present/derivation_document.hpp"
 
@@ -107,7 +107,7 @@ private:
     void relist();
     std::vector<int> listed_;  // the step numbers listed, ascending (9: the pose results)
     NewestWins derivations_;   // setScene's own derivations, and the documents set from outside
-    QThreadPool pool_;
+    WorkPool pool_;
     int step_ = 0;
     double zoom_ = 1.0;
     bool deriving_ = false;

@@ -6,12 +6,12 @@
 #include <memory>
 #include <optional>
 
-#include <QThreadPool>
 #include <QWidget>
 
 #include "core/model/scene.hpp"
 #include "core/simulation/work_precision.hpp"
 #include "ui/document/newest_wins.hpp"
+#include "ui/document/work_pool.hpp"
 
 class QLabel;
 class QProgressBar;
@@ -46,7 +46,7 @@ private:
     QPushButton *run_, *cancel_, *large_;
     QProgressBar* progress_;
     QLabel* label_;
-    QThreadPool pool_;
+    WorkPool pool_;
     bool introShown_ = true;  // the label still says what the sweep does (no run started)
     NewestWins sweep_;        // Run again or Cancel: the older sweep stops, its results are dropped
 };
