@@ -19,6 +19,7 @@ struct LabelBox {
     std::string text;
     double left = 0, top = 0, right = 0, bottom = 0;  // [px], y down, in a width × height picture
     double anchorX = 0, anchorY = 0;                  // [px] where the label belongs (its box's top-right before moving)
+    bool offBodies = false;                           // kept clear of the bodies' boxes (VisualFrame::labelOffBodies)
     bool moved() const { return std::abs(right - anchorX) > 0.5 || std::abs(top - anchorY) > 0.5; }
     bool overlaps(const LabelBox& other) const {
         return left < other.right && other.left < right && top < other.bottom && other.top < bottom;
@@ -30,10 +31,14 @@ struct LabelBox {
 // height wide, a comma 0.38). Labels behind the eye are left out.
 std::vector<LabelBox> frameLabelBoxes(const VisualScene& scene, const CameraView& view, int width, int height, double pixels);
 
-// Moves labels that would overlap an earlier one (in frame order) to the nearest free
-// place, trying rings of positions around its anchor a label height apart; a moved label
-// is drawn with a leader line from its anchor (ui/osg_scene). Boxes stay inside the
-// width × height picture where they can.
-void separateLabels(std::vector<LabelBox>& boxes, int width, int height);
+// The boxes the bodies of a typed system (PartRole::Body) cover in the same picture: the
+// square around each one's bounding sphere. Empty for a robot.
+std::vector<LabelBox> bodyBoxes(const VisualScene& scene, const CameraView& view, int width, int height);
+
+// Moves labels that would overlap an earlier one (in frame order), or for a label kept off
+// the bodies one of `bodies`, to the nearest free place, trying rings of positions around
+// its anchor a label height apart; a moved label is drawn with a leader line from its
+// anchor (ui/osg_scene). Boxes stay inside the width × height picture where they can.
+void separateLabels(std::vector<LabelBox>& boxes, int width, int height, const std::vector<LabelBox>& bodies = {});
 
 }  // namespace ll

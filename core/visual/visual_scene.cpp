@@ -148,7 +148,7 @@ VisualScene::VisualScene(const Scene& scene, std::optional<BodyPoses> compiledBo
             }
             add(part, {Rule::Body, b, false});
         }
-        frames.push_back({"world", 0.0, Eigen::Isometry3d::Identity()});
+        frames.push_back({"world", 0.0, Eigen::Isometry3d::Identity(), true});
         pose(scene.initial.q, 0.0);
         // Sizes come from the bodies: the scale is the extent of the initial pose.
         const VisualBounds initial = currentBounds();

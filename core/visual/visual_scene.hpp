@@ -75,6 +75,9 @@ struct VisualFrame {
                                                              // whose origins always coincide, empty on the others), "world"
     double axisLength = 0.0;                                 // [m]
     Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  // filled by pose(q, t)
+    // Its label kept off the bodies in a picture (frame_labels.hpp): the world frame of a
+    // typed system, which no body carries, would otherwise read as a body's name.
+    bool labelOffBodies = false;
 };
 
 // The ground: a grid on the plane through `centre` perpendicular to `up`.

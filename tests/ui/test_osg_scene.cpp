@@ -174,6 +174,45 @@ private slots:
                      qPrintable(QString("label \"%1\": %2 dark pixels in its box").arg(QString::fromStdString(boxes[a].text)).arg(ink)));
         }
     }
+
+    // A typed system's world frame sits inside its lower body (the mass–spring pair's
+    // discs turn about it): its label "world" would read as that disc's name, so it is
+    // moved off every body's box, with a leader line, and drawn where it was moved to.
+    void worldLabelStaysOffTheBodies() {
+        const QSize size(1280, 720);
+        VisualScene visual = visualScene(loadScene(std::string(LL_EXAMPLES_DIR) + "/mass_spring_pair_lagrangian.json").scene);
+        ui::OsgSceneOptions options;
+        options.labelPixels = size.height() / 40.0;
+        options.trail = false;
+        ui::OsgScene graph(visual, options);
+        ui::HeadlessRenderer gl(size.width(), size.height(), 0);
+        gl.setScene(graph.root());
+        const CameraView view = cameraView(visual, CameraSpec{}, gl.aspect());
+        ui::applyCameraView(*gl.camera(), view, gl.aspect());
+        std::vector<LabelBox> boxes = frameLabelBoxes(visual, view, size.width(), size.height(), options.labelPixels);
+        const std::vector<LabelBox> bodies = bodyBoxes(visual, view, size.width(), size.height());
+        QVERIFY(bodies.size() >= 2);  // the two discs, and what the scene draws besides
+        const auto onABody = [&](const LabelBox& label) {
+            return std::any_of(bodies.begin(), bodies.end(), [&](const LabelBox& b) { return label.overlaps(b); });
+        };
+        QCOMPARE(int(boxes.size()), 1);
+        QCOMPARE(boxes[0].text, std::string("world"));
+        QVERIFY(onABody(boxes[0]));  // where it belongs: on the lower disc
+        separateLabels(boxes, size.width(), size.height(), bodies);
+        QVERIFY(boxes[0].moved());
+        QVERIFY(!onABody(boxes[0]));
+        QVERIFY(boxes[0].left >= 0 && boxes[0].top >= 0 && boxes[0].right <= size.width() && boxes[0].bottom <= size.height());
+        graph.placeLabels(visual, view, size.width(), size.height());
+        QImage image;
+        gl.render(image);
+        int ink = 0;
+        for (int y = int(boxes[0].top); y < int(boxes[0].bottom); ++y)
+            for (int x = int(boxes[0].left); x < int(boxes[0].right); ++x) ink += qGray(image.pixel(x, y)) < 70;
+        QVERIFY2(ink >= 5, qPrintable(QString("%1 dark pixels in the moved label's box").arg(ink)));
+        // a robot's labels are not kept off its links (their frames are on them)
+        const VisualScene puma = visualScene(loadScene(std::string(LL_EXAMPLES_DIR) + "/puma560.json").scene);
+        QVERIFY(bodyBoxes(puma, cameraView(puma, CameraSpec{}, gl.aspect()), size.width(), size.height()).empty());
+    }
 };
 
 LL_TEST_GUILESS_MAIN(TestOsgScene)

@@ -406,7 +406,7 @@ void OsgScene::setDimensions(const std::vector<DhDimension>* dimensions) {
 void OsgScene::placeLabels(const VisualScene& scene, const CameraView& view, int width, int height) {
     if (labels_.empty() || width <= 0 || height <= 0) return;
     std::vector<LabelBox> boxes = frameLabelBoxes(scene, view, width, height, options_.labelPixels);
-    separateLabels(boxes, width, height);
+    separateLabels(boxes, width, height, bodyBoxes(scene, view, width, height));
     const PictureAxes axes = pictureAxes(view);
     for (const LabelBox& box : boxes) {
         const std::size_t k = static_cast<std::size_t>(box.frame);
