@@ -708,6 +708,22 @@ private slots:
         QVERIFY(differing(alone, nextFrame(w)) < 0.002);
     }
 
+    // Every curve of the energy plot in a colour of its own (E − W is not E's purple),
+    // where a scene does work on the system (the mass–spring pair driven by a torque).
+    void energyCurvesHaveColoursOfTheirOwn() {
+        MainWindow w;
+        QVERIFY(openShown(w, "mass_spring_pair_torque.json"));
+        QStringList names;
+        QSet<QRgb> colours;
+        for (QAbstractSeries* a : w.energyChart().chart()->series())
+            if (auto* line = qobject_cast<QLineSeries*>(a); line && line->count() > 0) {
+                names << line->name();
+                colours.insert(line->pen().color().rgb());
+            }
+        QVERIFY2(names.contains("E − W") && names.contains("W"), qPrintable(names.join(", ")));
+        QCOMPARE(int(colours.size()), int(names.size()));
+    }
+
     // The work–precision tab runs the sweep on a worker with a progress bar that moves.
     void workPrecisionTabRunsWithProgress() {
         MainWindow w;

@@ -138,7 +138,7 @@ void TrajectoryChart::setTrajectory(const Trajectory& trajectory) {
         if (anyWork(traj)) {
             curves.push_back({tr("W"), QColor(200, 30, 30), Qt::SolidLine, decimated(traj.t, [&](int k) { return traj.work[k]; })});
             curves.push_back(
-                {tr("E − W"), QColor(128, 0, 160), Qt::DotLine, decimated(traj.t, [&](int k) { return traj.E[k] - traj.work[k]; })});
+                {tr("E − W"), QColor(230, 120, 0), Qt::DotLine, decimated(traj.t, [&](int k) { return traj.E[k] - traj.work[k]; })});
         }
         if (hasGhost_)
             curves.push_back({tr("E, ghost (%1)").arg(ghostLabel_), QColor(128, 0, 160, 150), Qt::DashLine,
