@@ -8,12 +8,12 @@ Handover::~Handover() {
 }
 
 void Handover::drain() {
-    std::vector<std::unique_ptr<Pending>> calls;
+    std::vector<PendingCall> calls;
     {
         std::lock_guard lock(mutex_);
         calls.swap(calls_);
     }
-    for (const auto& call : calls) call->run();  // a call may post again: that one waits for the next drain
+    for (PendingCall& call : calls) call();  // a call may post again: that one waits for the next drain
 }
 
 }  // namespace ll::ui

@@ -22,6 +22,8 @@
 
 #include <QObject>
 
+#include "ui/document/pending_call.hpp"
+
 namespace ll::ui {
 
 class Handover : public QObject {
@@ -34,27 +36,16 @@ public:
     void post(Call call) {
         {
             std::lock_guard lock(mutex_);
-            calls_.push_back(std::make_unique<Held<Call>>(std::move(call)));
+            calls_.emplace_back(std::move(call));
         }
         QMetaObject::invokeMethod(this, "drain", Qt::QueuedConnection);
     }
 
 private:
-    struct Pending {
-        virtual ~Pending() = default;
-        virtual void run() = 0;
-    };
-    template <class Call>
-    struct Held final : Pending {
-        explicit Held(Call c) : call(std::move(c)) {}
-        void run() override { call(); }
-        Call call;
-    };
-
     Q_INVOKABLE void drain();
 
     std::mutex mutex_;
-    std::vector<std::unique_ptr<Pending>> calls_;
+    std::vector<PendingCall> calls_;
 };
 
 }  // namespace ll::ui

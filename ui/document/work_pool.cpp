@@ -1,5 +1,7 @@
 #include "ui/document/work_pool.hpp"
 
+#include <optional>
+
 namespace ll::ui {
 
 WorkPool::~WorkPool() {
@@ -9,14 +11,14 @@ WorkPool::~WorkPool() {
 }
 
 void WorkPool::runOne() {
-    std::unique_ptr<Pending> job;
+    std::optional<PendingCall> job;
     {
         std::lock_guard lock(mutex_);
         if (jobs_.empty()) return;
-        job = std::move(jobs_.front());
+        job.emplace(std::move(jobs_.front()));
         jobs_.pop_front();
     }
-    job->run();  // the job and its copies are destroyed on this thread, after it ran
+    (*job)();  // the job and its copies are destroyed on this thread, after it ran
 }
 
 }  // namespace ll::ui

@@ -23,6 +23,8 @@
 
 #include <QThreadPool>
 
+#include "ui/document/pending_call.hpp"
+
 namespace ll::ui {
 
 class WorkPool {
@@ -36,7 +38,7 @@ public:
     void start(Job job) {
         {
             std::lock_guard lock(mutex_);
-            jobs_.push_back(std::make_unique<Held<Job>>(std::move(job)));
+            jobs_.emplace_back(std::move(job));
         }
         pool_.start([this] { runOne(); });
     }
@@ -45,22 +47,11 @@ public:
     void waitForDone() { pool_.waitForDone(); }
 
 private:
-    struct Pending {
-        virtual ~Pending() = default;
-        virtual void run() = 0;
-    };
-    template <class Job>
-    struct Held final : Pending {
-        explicit Held(Job j) : job(std::move(j)) {}
-        void run() override { job(); }
-        Job job;
-    };
-
     void runOne();
 
     QThreadPool pool_;
     std::mutex mutex_;
-    std::deque<std::unique_ptr<Pending>> jobs_;
+    std::deque<PendingCall> jobs_;
 };
 
 }  // namespace ll::ui
