@@ -352,7 +352,7 @@
         <translation>Afslut øvelsen</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+15" />
         <source>Making the answer key (the derivation, entry by entry)…</source>
         <translation>Facitlisten laves (udledningen, element for element)…</translation>
     </message>
@@ -437,7 +437,7 @@
         <translation>Vis svaret</translation>
     </message>
     <message>
-        <location line="+104" />
+        <location line="+105" />
         <source>read as: %1</source>
         <translation>læst som: %1</translation>
     </message>
@@ -883,52 +883,7 @@
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../ui/window/main_window.cpp" line="+104" />
-        <source>Fit</source>
-        <translation>Tilpas</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>front</source>
-        <translation>forfra</translation>
-    </message>
-    <message>
-        <location line="+0" />
-        <source>side</source>
-        <translation>fra siden</translation>
-    </message>
-    <message>
-        <location line="+0" />
-        <source>top</source>
-        <translation>oppefra</translation>
-    </message>
-    <message>
-        <location line="+0" />
-        <source>iso</source>
-        <translation>iso</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>frames</source>
-        <translation>koordinatsystemer</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>labels</source>
-        <translation>etiketter</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>COMs</source>
-        <translation>massemidtpunkter</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>trail</source>
-        <translation>spor</translation>
-    </message>
-    <message>
-        <location line="+26" />
+        <location filename="../../ui/window/main_window.cpp" line="+122" />
         <source>Model</source>
         <translation>Model</translation>
     </message>
@@ -1372,7 +1327,7 @@
 <context>
     <name>PlaybackBar</name>
     <message>
-        <location filename="../../ui/window/playback_bar.cpp" line="+44" />
+        <location filename="../../ui/window/playback_bar.cpp" line="+47" />
         <source>Play / pause (Space)</source>
         <translation>Afspil/pause (Space)</translation>
     </message>
@@ -1407,7 +1362,7 @@
         <translation>hastighed</translation>
     </message>
     <message>
-        <location line="+85" />
+        <location line="+89" />
         <source>t = %1 s / %2 s</source>
         <translation>t = %1 s / %2 s</translation>
     </message>
@@ -1719,6 +1674,54 @@
         <location line="+3" />
         <source>E, ghost (%1)</source>
         <translation>E, spøgelse (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>ViewBar</name>
+    <message>
+        <location filename="../../ui/window/view_bar.cpp" line="+30" />
+        <source>Fit</source>
+        <translation>Tilpas</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>front</source>
+        <translation>forfra</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>side</source>
+        <translation>fra siden</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>top</source>
+        <translation>oppefra</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>iso</source>
+        <translation>iso</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>frames</source>
+        <translation>koordinatsystemer</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>labels</source>
+        <translation>etiketter</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>COMs</source>
+        <translation>massemidtpunkter</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>trail</source>
+        <translation>spor</translation>
     </message>
 </context>
 <context>

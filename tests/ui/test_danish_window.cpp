@@ -22,6 +22,8 @@
 #include <QTabBar>
 #include <QTableView>
 #include <QTemporaryDir>
+#include <QToolButton>
+#include <QSlider>
 #include <QToolBar>
 #include <QXmlStreamReader>
 
@@ -178,6 +180,40 @@ private slots:
         // and the Danish is there: the menus as Danish desktop programs name them
         const QStringList menus = menuTitles(w);
         QVERIFY2(menus.contains("Filer") && menus.contains("Rediger") && menus.contains("Vis"), qPrintable(menus.join(",")));
+    }
+
+    // Laid out for the longer language at 1280×800: every button of the 3D view's bar is
+    // shown inside it (wrapped to a second row if need be, none behind "»"), and the
+    // playback's time slider is wide enough to scrub (not squeezed to a box). The
+    // screenshot is kept with LL_TEST_KEEP=1.
+    void danishFitsAt1280x800() {
+        QTemporaryDir dir;
+        dir.setAutoRemove(!qEnvironmentVariableIsSet("LL_TEST_KEEP"));
+        MainWindow w;
+        w.setAskBeforeClosing(false);
+        w.resize(1280, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.openFile(QString(LL_EXAMPLES_DIR) + "/planar_2r.json", nullptr, true));
+        QVERIFY(settled(w));
+        QVERIFY(ll::test::nextFrameDrawn(w));
+        w.screenshot().save(dir.filePath("danish-1280x800.png"));
+        auto* bar = w.findChild<QWidget*>("view-bar");
+        QVERIFY(bar);
+        QStringList shown;
+        for (QToolButton* b : bar->findChildren<QToolButton*>()) {
+            QVERIFY2(b->isVisible(), qPrintable(b->text()));
+            const QRect r(b->mapTo(bar, QPoint(0, 0)), b->size());
+            QVERIFY2(bar->rect().contains(r), qPrintable(b->text()));
+            QVERIFY2(b->width() >= b->sizeHint().width(), qPrintable(b->text()));  // its whole text
+            shown << b->text();
+        }
+        QCOMPARE(shown.size(), 9);  // Fit, four views, four toggles
+        QVERIFY2(shown.contains("koordinatsystemer") && shown.contains("massemidtpunkter"), qPrintable(shown.join(", ")));
+        auto* slider = w.playback().findChild<QSlider*>();
+        QVERIFY(slider);
+        qInfo("time slider %d px of the %d px 3D view", slider->width(), w.sceneView().width());
+        QVERIFY2(slider->width() >= w.sceneView().width() * 3 / 4, qPrintable(QString::number(slider->width())));
     }
 
     // View → Language and Notation relabel the derivation on screen; nothing is derived again.

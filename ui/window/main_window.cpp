@@ -44,6 +44,7 @@
 #include "ui/window/teach_panel.hpp"
 #include "ui/window/torque_pane.hpp"
 #include "ui/window/trajectory_chart.hpp"
+#include "ui/window/view_bar.hpp"
 #include "ui/window/work_precision_pane.hpp"
 
 // Q_INIT_RESOURCE must stand outside any namespace.
@@ -97,26 +98,8 @@ void MainWindow::buildCentre() {
     auto* centre = new QWidget(this);
     auto* layout = new QVBoxLayout(centre);
     layout->setContentsMargins(0, 0, 0, 0);
-    auto* bar = new QToolBar(centre);
     SceneView* view = parts_.view = new SceneView(centre);
-    QAction* fit = bar->addAction(QString(), view, &SceneView::fit);
-    fit->setShortcut(Qt::Key_F);
-    (*relabel_)([fit] { fit->setText(tr("Fit")); });
-    for (const char* name : {QT_TR_NOOP("front"), QT_TR_NOOP("side"), QT_TR_NOOP("top"), QT_TR_NOOP("iso")}) {
-        QAction* a = bar->addAction(QString(), this, [view, name] { view->setStandardView(name); });
-        (*relabel_)([a, name] { a->setText(tr(name)); });
-    }
-    bar->addSeparator();
-    for (const auto& [name, slot] : {std::pair{QT_TR_NOOP("frames"), &SceneView::setShowFrames},
-                                     {QT_TR_NOOP("labels"), &SceneView::setShowLabels},
-                                     {QT_TR_NOOP("COMs"), &SceneView::setShowComs},
-                                     {QT_TR_NOOP("trail"), &SceneView::setShowTrail}}) {
-        QAction* a = bar->addAction(QString());
-        a->setCheckable(true);
-        a->setChecked(true);
-        connect(a, &QAction::toggled, view, slot);
-        (*relabel_)([a, name = name] { a->setText(tr(name)); });
-    }
+    auto* bar = new ViewBar(view, centre);
     parts_.playback = new PlaybackBar(centre);
     // The picked entry's value now, what feeds it; or how to pick one (ui/window/entry_linking).
     // Three lines, always: a readout that grew or shrank with its text would resize the 3D

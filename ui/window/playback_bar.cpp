@@ -9,6 +9,7 @@
 #include <QCheckBox>
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>
+#include <QVBoxLayout>
 #include <QLabel>
 #include <QSignalBlocker>
 #include <QSlider>
@@ -23,8 +24,10 @@ constexpr std::array<double, 7> kSpeeds = {0.1, 0.25, 0.5, 1, 2, 5, 10};
 }  // namespace
 
 PlaybackBar::PlaybackBar(QWidget* parent) : QWidget(parent) {
-    auto* layout = new QHBoxLayout(this);
-    layout->setContentsMargins(4, 2, 4, 2);
+    auto* rows = new QVBoxLayout(this);
+    rows->setContentsMargins(4, 2, 4, 2);
+    rows->setSpacing(0);
+    auto* layout = new QHBoxLayout;
     play_ = new QToolButton(this);
     play_->setIcon(style()->standardIcon(QStyle::SP_MediaPlay));
     restart_ = new QToolButton(this);
@@ -33,6 +36,7 @@ PlaybackBar::PlaybackBar(QWidget* parent) : QWidget(parent) {
     slider_->setRange(0, kSliderSteps);
     label_ = new QLabel(this);
     label_->setMinimumWidth(150);
+    label_->setContentsMargins(6, 0, 0, 0);
     speed_ = new QDoubleSpinBox(this);
     speed_->setRange(0.1, 10.0);
     speed_->setSingleStep(0.1);
@@ -51,10 +55,14 @@ PlaybackBar::PlaybackBar(QWidget* parent) : QWidget(parent) {
         showTime();
     });
     loop_->setChecked(true);
+    // The time slider on a row of its own, as wide as the view: beside the buttons and
+    // labels it was squeezed to a box in Danish at 1280×800.
+    rows->addWidget(slider_);
+    rows->addLayout(layout);
     layout->addWidget(play_);
     layout->addWidget(restart_);
     layout->addWidget(label_);
-    layout->addWidget(slider_, 1);
+    layout->addStretch(1);
     layout->addWidget(speedLabel);
     layout->addWidget(speed_);
     layout->addWidget(loop_);

@@ -78,6 +78,7 @@ void PresentationMode::setOn(bool on) {
     window->statusBar()->setVisible(!on);
     parts_.readout->setVisible(!on);
     for (QToolBar* bar : window->findChildren<QToolBar*>(QString(), Qt::FindDirectChildrenOnly)) bar->setVisible(!on);
+    if (auto* viewBar = window->findChild<QWidget*>("view-bar")) viewBar->setVisible(!on);  // the 3D view's (ui/window/view_bar)
     QFont font = QApplication::font();
     static const double base = font.pointSizeF() > 0 ? font.pointSizeF() : 10;
     font.setPointSizeF(on ? base * 1.6 : base);

@@ -1,0 +1,56 @@
+#include "ui/window/view_bar.hpp"
+
+#include <QAction>
+#include <QFrame>
+#include <QToolButton>
+#include <utility>
+
+#include "ui/window/flow_layout.hpp"
+#include "ui/window/relabel.hpp"
+#include "ui/window/scene_view.hpp"
+
+namespace ll::ui {
+
+ViewBar::ViewBar(SceneView* view, QWidget* parent) : QWidget(parent) {
+    setObjectName("view-bar");
+    QSizePolicy policy(QSizePolicy::Preferred, QSizePolicy::Preferred);
+    policy.setHeightForWidth(true);
+    setSizePolicy(policy);
+    auto* layout = new FlowLayout(this);
+    Relabel& relabel = *new Relabel(this);
+    const auto button = [this, layout](QAction* action) {
+        auto* b = new QToolButton(this);
+        b->setAutoRaise(true);
+        b->setDefaultAction(action);  // the action's shortcut lives as long as the button is shown
+        layout->addWidget(b);
+    };
+    auto* fit = new QAction(this);
+    fit->setShortcut(Qt::Key_F);
+    connect(fit, &QAction::triggered, view, &SceneView::fit);
+    parent->addAction(fit);  // F also while the bar is hidden (presentation mode)
+    relabel([fit] { fit->setText(tr("Fit")); });
+    button(fit);
+    for (const char* name : {QT_TR_NOOP("front"), QT_TR_NOOP("side"), QT_TR_NOOP("top"), QT_TR_NOOP("iso")}) {
+        auto* a = new QAction(this);
+        connect(a, &QAction::triggered, view, [view, name] { view->setStandardView(name); });
+        relabel([a, name] { a->setText(tr(name)); });
+        button(a);
+    }
+    auto* separator = new QFrame(this);
+    separator->setFrameShape(QFrame::VLine);
+    separator->setFrameShadow(QFrame::Sunken);
+    layout->addWidget(separator);
+    for (const auto& [name, slot] : {std::pair{QT_TR_NOOP("frames"), &SceneView::setShowFrames},
+                                     {QT_TR_NOOP("labels"), &SceneView::setShowLabels},
+                                     {QT_TR_NOOP("COMs"), &SceneView::setShowComs},
+                                     {QT_TR_NOOP("trail"), &SceneView::setShowTrail}}) {
+        auto* a = new QAction(this);
+        a->setCheckable(true);
+        a->setChecked(true);
+        connect(a, &QAction::toggled, view, slot);
+        relabel([a, name = name] { a->setText(tr(name)); });
+        button(a);
+    }
+}
+
+}  // namespace ll::ui
