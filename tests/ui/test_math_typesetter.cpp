@@ -368,7 +368,9 @@ private slots:
         QVERIFY2(text.code == 0, qPrintable(text.err));
         for (const char* s : {"∂L/∂θ̇1 = I1 θ̇1", "d/dt ∂L/∂θ̇1 = I1 θ̈1", "∂L/∂θ1 = ", "Actuation: inputs on θ2",
                               // typed K2*(theta1-theta2)^2/2: shown as typed, not expanded
-                              "E_pot = 1/2 K1 θ1² + 1/2 K2 (θ1 − θ2)²", "L = −1/2 K1 θ1² − 1/2 K2 (θ1 − θ2)²"})
+                              "E_pot = 1/2 K1 θ1² + 1/2 K2 (θ1 − θ2)²",
+                              // L = E_kin − E_pot as the notes write it: the kinetic terms first (issue 51)
+                              "L = 1/2 I1 θ̇1² + 1/2 I2 θ̇2² − 1/2 K1 θ1² − 1/2 K2 (θ1 − θ2)²"})
             QVERIFY2(text.out.contains(QString::fromUtf8(s)), s);
         const Run latex = run({"derive", scene, "--format", "latex"});
         QVERIFY(latex.out.contains(R"(\frac{\partial \mathcal{L}}{\partial \dot{\theta}_{1}})"));
