@@ -8,6 +8,7 @@
 #include "core/present/latex_formula.hpp"
 #include "core/present/latex_text.hpp"
 #include "core/present/localized_document.hpp"
+#include "core/present/number_style.hpp"
 #include "core/present/text_document.hpp"
 #include "core/present/textbook_form.hpp"
 #include "core/symbolic/ginac_lock.hpp"
@@ -44,6 +45,7 @@ DisplayItem displayItem(const Derivation& d, const DerivationItem& item, Textboo
             if (!part.is_zero()) parts.push_back(build(part));
         out.value = build(form(item.value.rhs(), form.plainGrouping()));
         out.equation = displayEquation(displaySumOf(parts), out.value);
+        useOneNumberStyle(out);
         return out;
     }
     if (item.quantity == Quantity::Lagrangian && (d.Ekin - d.Epot - item.value).expand().is_zero()) {
@@ -56,6 +58,7 @@ DisplayItem displayItem(const Derivation& d, const DerivationItem& item, Textboo
         out.value = build(form(item.value, item.grouping));
     }
     out.equation = displayEquation(displayLabel(out.name, out.latexName), out.value);
+    useOneNumberStyle(out);
     return out;
 }
 

@@ -166,9 +166,9 @@ private:
         } else if (n.exponent.empty()) {
             out += style_ == DisplayStyle::Latex ? n.latex : n.text;
         } else if (style_ == DisplayStyle::Latex) {
-            out += n.latex + " \\cdot 10^{" + n.exponent + "}";
+            out += (n.latex.empty() ? "" : n.latex + " \\cdot ") + "10^{" + n.exponent + "}";  // an empty mantissa: 1, left out
         } else {
-            out += n.text + "·10" + superscript(n.exponent);
+            out += (n.text.empty() ? "" : n.text + "·") + "10" + superscript(n.exponent);
         }
     }
 

@@ -57,7 +57,8 @@ DisplayPtr decimalNode(double v, const std::string& exact = {}) {
     const std::string s = shown(v), plain = exact.empty() ? seventeen(v) : exact;
     const auto e = s.find('e');
     if (e == std::string::npos) return displayNumber(s, s, plain);
-    const std::string mantissa = s.substr(0, e), exponent = std::to_string(std::stoi(s.substr(e + 1)));
+    const std::string exponent = std::to_string(std::stoi(s.substr(e + 1)));
+    const std::string mantissa = s.substr(0, e) == "1" ? "" : s.substr(0, e);  // 10⁻⁵, never 1·10⁻⁵
     return displayNumber(mantissa, mantissa, plain, exponent);
 }
 

@@ -8,6 +8,7 @@
 #include "core/present/display_builder.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/present/localized_document.hpp"
+#include "core/present/number_style.hpp"
 #include "core/present/structured_notes.hpp"
 #include "core/present/symbol_names.hpp"
 #include "core/symbolic/index_list.hpp"
@@ -174,6 +175,7 @@ std::shared_ptr<const DisplayDocument> structuredDisplayDocument(const Structure
         it.col = col;
         it.value = build(value);
         it.equation = displayEquation(label, it.value);
+        useOneNumberStyle(it);
         it.note = std::move(note);
         return it;
     };

@@ -280,6 +280,76 @@ private slots:
         }
     }
 
+    // One number style per entry (issue 51), on every example in parameters and in
+    // numbers, in the form the window picks: an entry (a scalar, an equation, each entry
+    // of a matrix) has its decimals below 1 all plain (0.0005) or all in powers of ten
+    // (5.00861·10⁻⁵), never both; plain while every one fits in eight places after the
+    // point; never "1·10".
+    void oneNumberStylePerEntry() {
+        static const QRegularExpression plainSmall(R"((?<![\d.])0\.(\d+))");
+        static const QRegularExpression powerOfTen(R"(10⁻)");
+        static const QRegularExpression oneTimes(R"((?<![\d.])1·10)");
+        int plainEntries = 0, scientificEntries = 0;
+        for (const auto& file : std::filesystem::recursive_directory_iterator(LL_EXAMPLES_DIR)) {
+            if (file.path().extension() != ".json") continue;
+            const LoadedScene loaded = [&] {
+                try {
+                    return loadScene(file.path().string());
+                } catch (const InputError&) {
+                    return LoadedScene{};  // refused by design (massless_joint)
+                }
+            }();
+            if (loaded.scene.dof() == 0) continue;
+            for (auto mode : {symbolic::ParameterMode::Parametric, symbolic::ParameterMode::Numeric}) {
+                DocumentRequest request;
+                request.mode = mode;
+                const auto doc = deriveDisplay(loaded.scene, request).display;
+                std::vector<std::pair<std::string, const DisplayNode*>> entries;  // a matrix's cells each, else the equation
+                for (const DisplayStep& step : doc->steps)
+                    for (const DisplayItem& item : step.items)
+                        if (item.value->kind == DisplayKind::Matrix) {
+                            for (const auto& row : item.value->rows)
+                                for (const DisplayPtr& cell : row) entries.emplace_back(item.name, cell.get());
+                        } else {
+                            entries.emplace_back(item.name, item.equation.get());
+                        }
+                for (const auto& [name, node] : entries) {
+                    const QString text = QString::fromStdString(renderDisplay(*node, DisplayStyle::Text));
+                    const QString where = QString::fromStdString(file.path().filename().string() + " " + name + ": ");
+                    const bool plain = plainSmall.match(text).hasMatch(), scientific = powerOfTen.match(text).hasMatch();
+                    QVERIFY2(!(plain && scientific), qPrintable(where + text.left(400)));
+                    QVERIFY2(!oneTimes.match(text).hasMatch(), qPrintable(where + text.left(400)));
+                    for (auto m = plainSmall.globalMatch(text); m.hasNext();) {
+                        const QString fraction = m.next().captured(1);
+                        QVERIFY2(fraction.size() <= 8, qPrintable(where + "0." + fraction));
+                    }
+                    plainEntries += plain;
+                    scientificEntries += scientific;
+                    // and every number still reads as its exact value (to its six digits)
+                    const std::function<void(const DisplayNode&)> sameValue = [&](const DisplayNode& n) {
+                        if (n.kind == DisplayKind::Number && (n.text.find('.') != std::string::npos || !n.exponent.empty())) {
+                            std::string exact = n.plain;
+                            if (!exact.empty() && exact.front() == '(') exact = exact.substr(1, exact.size() - 2);
+                            const auto slash = exact.find('/');
+                            const double value =
+                                slash == std::string::npos ? std::stod(exact) : std::stod(exact.substr(0, slash)) / std::stod(exact.substr(slash + 1));
+                            const double shown =
+                                (n.text.empty() ? 1.0 : std::stod(n.text)) * std::pow(10.0, n.exponent.empty() ? 0 : std::stoi(n.exponent));
+                            QVERIFY2(std::abs(shown - value) <= 5e-6 * std::abs(value),
+                                     qPrintable(where + QString::fromStdString(n.text + "e" + n.exponent + " for " + n.plain)));
+                        }
+                        for (const auto& c : n.children) sameValue(*c);
+                        for (const auto& row : n.rows)
+                            for (const auto& c : row) sameValue(*c);
+                    };
+                    sameValue(*node);
+                }
+            }
+        }
+        qInfo("%d entries with plain decimals, %d in powers of ten", plainEntries, scientificEntries);
+        QVERIFY(plainEntries > 50 && scientificEntries > 5);  // both styles are met
+    }
+
     // The readers are not blind: a different symbol in LaTeX is seen.
     void readersSeeADifference() {
         QCOMPARE(textLeaves("m2 a1 ℓc2 s2 q̇1²"), latexLeaves("m_{2} a_{1} \\ell_{c2} s_{2} \\dot{q}_{1}^{2}"));

@@ -394,10 +394,11 @@ MathBox layout(const DisplayNode& n, double size) {
         case DisplayKind::Number: {
             MathBox b = run(QString::fromStdString(n.text), 0, size);
             if (!n.exponent.empty()) {
-                hcat(b, op(QString(QChar(0x22C5)), size), thinSpace * e);
+                const bool mantissa = !n.text.empty();  // empty: 1, left out (10⁻⁴)
+                if (mantissa) hcat(b, op(QString(QChar(0x22C5)), size), thinSpace * e);
                 MathBox ten = run("10", 0, size);
                 const MathBox x = run(QString::fromStdString(n.exponent).replace('-', QChar(0x2212)), 0, scriptSize(size));
-                hcat(b, scripted(ten, nullptr, &x, size), thinSpace * e);
+                hcat(b, scripted(ten, nullptr, &x, size), mantissa ? thinSpace * e : 0);
             }
             return b;
         }
