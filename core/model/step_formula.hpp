@@ -44,11 +44,10 @@ struct FormulaPiece {
     std::vector<std::string> coordinates;              // Actuation: the coordinates' names
 };
 
+// The text is written as the entries beneath it are: dots and Greek letters as characters
+// (q̇, θ, τ, Σ, ∂, ½), never in ASCII (qd, theta, sum, d^2); one alphabet per page.
 struct StepFormula {
     FormulaPieces text, latex;
-    // The text writes dots and Greek letters as characters (q̇, θ, τ) rather than in ASCII
-    // (qd, theta, tau): the typed Lagrangian's and the structured form's formulas do.
-    bool unicodeText = false;
 };
 
 // The pieces of `source`: math, with the letters marked «B» «b» «g» «Q» «q» «q'» «q''»

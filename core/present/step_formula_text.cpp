@@ -9,7 +9,7 @@
 namespace ll::present {
 namespace {
 
-enum class Spelling { Ascii, Unicode, Latex };
+enum class Spelling { Unicode, Latex };
 
 struct Writer {
     const NotationSymbols& n;
@@ -24,23 +24,16 @@ struct Writer {
             case FormulaLetter::MassEntry: return n.massEntry;
             case FormulaLetter::Gravity: return n.gravity;
             case FormulaLetter::Force:
-                return style == Spelling::Latex ? n.forceLatex : style == Spelling::Unicode || n.force == "Q" ? n.force : "tau";
+                return style == Spelling::Latex ? n.forceLatex : n.force;
             case FormulaLetter::JointVector:
-                base = style == Spelling::Latex     ? (reader.robot ? n.vectorLatex : "q")
-                       : !renamed                   ? "q"
-                       : style == Spelling::Unicode ? "Θ"
-                                                    : "Theta";
+                base = style == Spelling::Latex ? (reader.robot ? n.vectorLatex : "q") : !renamed ? "q" : "Θ";
                 break;
             case FormulaLetter::JointVariable:
-                base = style == Spelling::Latex     ? (reader.robot ? n.coordinateLatex : "q")
-                       : !renamed                   ? "q"
-                       : style == Spelling::Unicode ? n.coordinate
-                                                    : "theta";
+                base = style == Spelling::Latex ? (reader.robot ? n.coordinateLatex : "q") : !renamed ? "q" : n.coordinate;
                 break;
         }
         if (style == Spelling::Latex && p.dots > 0) base = (p.dots == 1 ? "\\dot{" : "\\ddot{") + base + "}";
         if (style == Spelling::Unicode && p.dots > 0) base += p.dots == 1 ? "\u0307" : "\u0308";  // combining dot(s) above
-        if (style == Spelling::Ascii) base += std::string(p.dots, 'd');
         return p.letter == FormulaLetter::JointVariable ? base + "_" : base;
     }
 
@@ -96,7 +89,7 @@ struct Writer {
 }  // namespace
 
 std::string formulaText(const StepFormula& formula, const FormulaReader& reader) {
-    return Writer{notationSymbols(reader.notation), reader, formula.unicodeText ? Spelling::Unicode : Spelling::Ascii}.write(formula.text);
+    return Writer{notationSymbols(reader.notation), reader, Spelling::Unicode}.write(formula.text);
 }
 
 std::string formulaLatex(const StepFormula& formula, const FormulaReader& reader) {

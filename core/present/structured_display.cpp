@@ -117,7 +117,6 @@ StepFormula sectionFormula(int step, const StructuredDynamics& s) {
                               {std::to_string(s.nonZeroMassDerivatives()), std::to_string(n * n * (n + 1) / 2), "∂«b»_jk/∂q_l (j ≤ k)"})});
             break;
     }
-    f.unicodeText = true;
     return f;
 }
 

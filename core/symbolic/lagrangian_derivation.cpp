@@ -200,12 +200,6 @@ private:
                           message(KineticLeftOverHint, spec_.kinetic)};
     }
 
-    // The typed Lagrangian's formulas write q̇, ∂ and τ as characters.
-    static StepFormula unicode(StepFormula f) {
-        f.unicodeText = true;
-        return f;
-    }
-
     void addStep(int number, Message title, StepFormula formula, std::vector<DerivationItem> items) {
         const auto now = std::chrono::steady_clock::now();
         const double seconds = std::chrono::duration<double>(now - lap_).count();
@@ -220,9 +214,9 @@ private:
             qd(i, 0) = s_.qd[i];
         }
         addStep(0, MessageId::TitleGeneralizedCoordinates,
-                unicode(stepFormula("q = (q_1, …, q_n): «1»", R"(q = (q_1, \dots, q_n)\ «1»,\quad \dot{q} = \frac{dq}{dt})",
-                                    {formulaWords(MessageId::FormulaCoordinatesChosen, {"ẋ = dx/dt"})},
-                                    {formulaWords(MessageId::FormulaCoordinatesChosenShort)})),
+                stepFormula("q = (q_1, …, q_n): «1»;  «2»", R"(q = (q_1, \dots, q_n)\ «1»,\quad \dot{q} = \frac{dq}{dt};\quad «2»)",
+                            {formulaWords(MessageId::FormulaCoordinatesChosen, {"ẋ = dx/dt"}), formulaWords(MessageId::FormulaRobotStepsAbsent)},
+                            {formulaWords(MessageId::FormulaCoordinatesChosenShort), formulaWords(MessageId::FormulaRobotStepsAbsent)}),
                 {{"q", Quantity::Coordinates, -1, Grouping::Parameters, q}, {"qd", Quantity::Velocities, -1, Grouping::Parameters, qd}});
     }
 
@@ -245,7 +239,7 @@ private:
         addStep(
             7, MessageId::TitleKineticEnergy,
             stepFormula(
-                "E_kin(q, qd) «1» = 1/2 qd^T «B»(«q») qd,  «b»_ij = d^2 E_kin / (dqd_i dqd_j)",
+                "E_kin(q, q̇) «1» = ½ q̇ᵀ «B»(«q») q̇,  «b»_ij = ∂²E_kin/(∂q̇_i ∂q̇_j)",
                 R"(E_{\mathrm{kin}} = \tfrac{1}{2}\,\dot{q}^T «B»(«q»)\,\dot{q},\quad «b»_{ij} = \frac{\partial^2 E_{\mathrm{kin}}}{\partial \dot{q}_i\,\partial \dot{q}_j})",
                 {formulaWords(MessageId::FormulaAsGiven)}),
             {{"E_kin", Quantity::KineticEnergy, -1, Grouping::Velocities, Ekin_},
@@ -335,13 +329,13 @@ private:
         }
         addStep(
             8, MessageId::TitleEquationsOfMotion,
-            unicode(stepFormula(
+            stepFormula(
                 "L = E_kin − E_pot;  d/dt ∂L/∂q̇_i − ∂L/∂q_i = «Q»_i;  «1»;  q̈ = «B»⁻¹ («Q» − C q̇ − «g»)",
                 R"(\mathcal{L} = E_{\mathrm{kin}} - E_{\mathrm{pot}},\quad \frac{d}{dt}\frac{\partial \mathcal{L}}{\partial \dot{q}_i} - \frac{\partial \mathcal{L}}{\partial q_i} = «Q»_i,\quad «g» = \frac{\partial E_{\mathrm{pot}}}{\partial q},\quad c_{ij} = \sum_k \tfrac{1}{2}\left(\frac{\partial «b»_{ij}}{\partial q_k} + \frac{\partial «b»_{ik}}{\partial q_j} - \frac{\partial «b»_{jk}}{\partial q_i}\right)\dot{q}_k,\quad «B»\ddot{q} + C\dot{q} + «g» = «Q»)",
                 {formulaWordsOf(MessageId::FormulaWrittenAs,
                                 {formulaPieces("«B» q̈ + C q̇ + «g» = «Q»"),
                                  formulaPieces("«g» = ∂E_pot/∂q, c_ij = Σ_k ½ (∂«b»_ij/∂q_k + ∂«b»_ik/∂q_j − ∂«b»_jk/∂q_i) q̇_k, «Q»: «1»",
-                                               {formulaWords(MessageId::FormulaNonConservativeOnly)})})})),
+                                               {formulaWords(MessageId::FormulaNonConservativeOnly)})})}),
             items);
     }
 

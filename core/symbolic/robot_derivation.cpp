@@ -180,7 +180,7 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
             table(i, 3) = revolute[i] ? j.theta + tc.q(i) : j.theta;
         }
         addStep(0, standard ? MessageId::TitleDhStandard : MessageId::TitleDhModified,
-                stepFormula(standard ? "«1»: a_i, alpha_i, d_i, theta_i; «2»" : "«1»: a_{i-1}, alpha_{i-1}, d_i, theta_i (Craig); «2»",
+                stepFormula(standard ? "«1»: a_i, α_i, d_i, θ_i; «2»" : "«1»: a_{i−1}, α_{i−1}, d_i, θ_i (Craig); «2»",
                             standard ? R"(«1»:\ a_i,\ \alpha_i,\ d_i,\ \theta_i)" : R"(«1»:\ a_{i-1},\ \alpha_{i-1},\ d_i,\ \theta_i)",
                             {formulaWords(MessageId::FormulaDhRow, {"i"}), formulaWords(MessageId::FormulaDhJointVariable)},
                             {formulaWords(MessageId::FormulaDhRow, {"i"})}),
@@ -201,8 +201,8 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
     addStep(
         1, MessageId::TitleKinematicModel,
         stepFormula(
-            standard ? "A_i = Rot_z(theta_i) Trans_z(d_i) Trans_x(a_i) Rot_x(alpha_i),  T_i^0 = A_1 A_2 ... A_i"
-                     : "A_i = Rot_x(alpha_{i-1}) Trans_x(a_{i-1}) Rot_z(theta_i) Trans_z(d_i),  T_i^0 = A_1 A_2 ... A_i",
+            standard ? "A_i = Rot_z(θ_i) Trans_z(d_i) Trans_x(a_i) Rot_x(α_i),  T_i^0 = A_1 A_2 ⋯ A_i"
+                     : "A_i = Rot_x(α_{i−1}) Trans_x(a_{i−1}) Rot_z(θ_i) Trans_z(d_i),  T_i^0 = A_1 A_2 ⋯ A_i",
             standard
                 ? R"(A_i = \mathrm{Rot}_z(\theta_i)\,\mathrm{Trans}_z(d_i)\,\mathrm{Trans}_x(a_i)\,\mathrm{Rot}_x(\alpha_i),\quad T_i^0 = A_1 A_2 \cdots A_i)"
                 : R"(A_i = \mathrm{Rot}_x(\alpha_{i-1})\,\mathrm{Trans}_x(a_{i-1})\,\mathrm{Rot}_z(\theta_i)\,\mathrm{Trans}_z(d_i),\quad T_i^0 = A_1 A_2 \cdots A_i)"),
@@ -242,7 +242,7 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
             items.push_back({"w_" + idx(i), Quantity::AngularVelocity, i, Grouping::Velocities, tc.reduce(w)});
         }
         addStep(3, MessageId::TitleAngularVelocities,
-                stepFormula("omega_i^0 = sum_{j<=i, «1»} z_j «q'_»j = J_w,i «q'»",
+                stepFormula("ω_i^0 = Σ_{j≤i, «1»} z_j «q'_»j = J_ω,i «q'»",
                             R"(\omega_i^0 = \sum_{j \le i} z_{j} «q'_»j = J_{\omega,i}\,«q'»)",
                             {formulaWords(MessageId::FormulaRevoluteJoints)}),
                 items);
@@ -264,7 +264,7 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
             items.push_back({"v_c" + idx(i), Quantity::ComVelocity, i, Grouping::Velocities, tc.reduce(v)});
         }
         addStep(4, MessageId::TitleComVelocities,
-                stepFormula("v_ci^0 = d/dt p_ci^0 = J_v,ci «q'»,  J_v,ci = dp_ci^0/d«q»",
+                stepFormula("v_ci^0 = d/dt p_ci^0 = J_v,ci «q'»,  J_v,ci = ∂p_ci^0/∂«q»",
                             R"(v_{ci}^0 = \dot{p}_{ci}^0 = J_{v,ci}\,«q'»,\quad J_{v,ci} = \frac{\partial p_{ci}^0}{\partial «q»})"),
                 items);
     }
@@ -277,7 +277,7 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
             items.push_back({"I_l" + idx(i) + "^0", Quantity::LinkInertia, i, Grouping::Masses,
                              reduceChecked(tc, R.mul(robot.joints[i].inertia).mul(R.transpose()), checkpoint, "I_l" + idx(i) + "^0")});
         }
-        addStep(5, MessageId::TitleLinkInertias, stepFormula("I_li^0 = R_i^0 I_li (R_i^0)^T", R"(I_{li}^0 = R_i^0\, I_{li}\, (R_i^0)^T)"),
+        addStep(5, MessageId::TitleLinkInertias, stepFormula("I_li^0 = R_i^0 I_li (R_i^0)ᵀ", R"(I_{li}^0 = R_i^0\, I_{li}\, (R_i^0)^T)"),
                 items);
     }
 
@@ -291,8 +291,8 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
     Epot = reduceChecked(tc, Epot, checkpoint, "E_pot");
     d.Epot = Epot;
     addStep(6, MessageId::TitlePotentialEnergy,
-            stepFormula(std::string(robot.hasGravity ? "E_pot = -sum_i m_i g0^T p_ci^0" : "E_pot = 0 («1»)") +
-                            (robot.springs.empty() ? "" : " + sum_j 1/2 K_j («q_»j - «q_»j,rest)^2"),
+            stepFormula(std::string(robot.hasGravity ? "E_pot = −Σ_i m_i g0ᵀ p_ci^0" : "E_pot = 0 («1»)") +
+                            (robot.springs.empty() ? "" : " + Σ_j ½ K_j («q_»j − «q_»j,rest)²"),
                         std::string(robot.hasGravity ? R"(E_{\mathrm{pot}} = -\sum_{i} m_i\, g_0^T p_{ci}^0)" : R"(E_{\mathrm{pot}} = 0)") +
                             (robot.springs.empty() ? "" : R"( + \sum_j \tfrac{1}{2} K_j («q_»j - «q_»{j,\mathrm{rest}})^2)"),
                         {formulaWords(MessageId::FormulaNoGravity)}),
@@ -325,9 +325,9 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
     step7.push_back({"B", Quantity::MassMatrix, -1, Grouping::Masses, d.B});
     step7.push_back({"E_kin", Quantity::KineticEnergy, -1, Grouping::Velocities, d.Ekin});
     StepFormula formula7 =
-        stepFormula(std::string("E_kin = 1/2 sum_i (m_i v_ci^T v_ci + omega_i^T I_li^0 omega_i)") +
-                        (hasMotors ? " + 1/2 sum_j Jm_j G_j^2 «q'_»j^2" : "") + " = 1/2 «q'»^T «B»(«q») «q'»" +
-                        (hasMotors ? ";  «1»: «B» = «B»_links + «B»_m, «B»_m = diag(Jm_j G_j^2) («2»)" : ""),
+        stepFormula(std::string("E_kin = ½ Σ_i (m_i v_ciᵀ v_ci + ω_iᵀ I_li^0 ω_i)") +
+                        (hasMotors ? " + ½ Σ_j Jm_j G_j² «q'_»j²" : "") + " = ½ «q'»ᵀ «B»(«q») «q'»" +
+                        (hasMotors ? ";  «1»: «B» = «B»_links + «B»_m, «B»_m = diag(Jm_j G_j²) («2»)" : ""),
                     std::string(
                         R"(E_{\mathrm{kin}} = \tfrac{1}{2}\sum_i \left(m_i\, v_{ci}^T v_{ci} + \omega_i^T I_{li}^0\, \omega_i\right))") +
                         (hasMotors ? R"( + \tfrac{1}{2}\sum_j J_{m,j} G_j^2 «q'_»j^2)" : "") + R"( = \tfrac{1}{2}\,«q'»^T «B»(«q»)\,«q'»)" +
@@ -374,8 +374,8 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
     addStep(
         8, MessageId::TitleEquationsOfMotion,
         stepFormula(
-            "«g» = dE_pot/d«q»;  c_ij = sum_k 1/2 (d«b»_ij/d«q_»k + d«b»_ik/d«q_»j - d«b»_jk/d«q_»i) «q'_»k;  "
-            "«Q»: «1»;  «B» «q''» + C «q'» + «g» = «Q»;  «q''» = «B»^-1 («Q» - C «q'» - «g»);  «2»",
+            "«g» = ∂E_pot/∂«q»;  c_ij = Σ_k ½ (∂«b»_ij/∂«q_»k + ∂«b»_ik/∂«q_»j − ∂«b»_jk/∂«q_»i) «q'_»k;  "
+            "«Q»: «1»;  «B» «q''» + C «q'» + «g» = «Q»;  «q''» = «B»⁻¹ («Q» − C «q'» − «g»);  «2»",
             R"(«g» = \frac{\partial E_{\mathrm{pot}}}{\partial «q»},\quad c_{ij} = \sum_k \tfrac{1}{2}\left(\frac{\partial «b»_{ij}}{\partial «q_»k} + \frac{\partial «b»_{ik}}{\partial «q_»j} - \frac{\partial «b»_{jk}}{\partial «q_»i}\right)«q'_»k,\quad «B»«q''» + C«q'» + «g» = «Q»,\quad «q''» = «B»^{-1}(«Q» - C«q'» - «g»))",
             {formulaWords(MessageId::FormulaNonConservativeOnly), formulaActuation(d.actuated, d.coordinateNames)}),
         step8);

@@ -193,7 +193,7 @@ private slots:
                                              << QStringList{"τ ="};
             QTest::addRow("%s siciliano", scene) << scene << "siciliano" << QStringList{puma ? "b11 = " : "B = ", "τ = "}
                                                  << QStringList{"B(q) = ", "= \\tau"} << QStringList{"B", "g", "τ"} << QStringList{"Q = "};
-            QTest::addRow("%s spong", scene) << scene << "spong" << QStringList{puma ? "d11 = " : "D = ", "τ = ", "D qdd + C qd + g = tau"}
+            QTest::addRow("%s spong", scene) << scene << "spong" << QStringList{puma ? "d11 = " : "D = ", "τ = ", "D q̈ + C q̇ + g = τ"}
                                              << QStringList{"D(q) = ", "d_{ij}", "D\\ddot{q} + C\\dot{q} + g = \\tau"}
                                              << QStringList{"D", "g", "τ"} << QStringList{"B = ", "b11 = "};
             QTest::addRow("%s craig", scene) << scene << "craig"
