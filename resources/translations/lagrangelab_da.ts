@@ -112,12 +112,12 @@
         <translation>Næste</translation>
     </message>
     <message>
-        <location line="+103" />
+        <location line="+108" />
         <source>No scene</source>
         <translation>Ingen scene</translation>
     </message>
     <message>
-        <location line="-84" />
+        <location line="-89" />
         <source>DH parameters</source>
         <translation>DH-parametre</translation>
     </message>
@@ -127,13 +127,17 @@
         <translation>Resultater i teach-stillingen</translation>
     </message>
     <message>
-        <location line="+7" />
         <location line="+4" />
         <source>Step %1: %2</source>
         <translation>Trin %1: %2</translation>
     </message>
     <message>
-        <location line="+38" />
+        <location line="+1" />
+        <source>%1 (steps 1–5 are a robot's)</source>
+        <translation>%1 (trin 1–5 hører til en robot)</translation>
+    </message>
+    <message>
+        <location line="+49" />
         <location line="+22" />
         <location line="+11" />
         <source>Deriving…</source>
@@ -1327,7 +1331,7 @@
 <context>
     <name>PlaybackBar</name>
     <message>
-        <location filename="../../ui/window/playback_bar.cpp" line="+47" />
+        <location filename="../../ui/window/playback_bar.cpp" line="+48" />
         <source>Play / pause (Space)</source>
         <translation>Afspil/pause (Space)</translation>
     </message>
@@ -1679,7 +1683,7 @@
 <context>
     <name>ViewBar</name>
     <message>
-        <location filename="../../ui/window/view_bar.cpp" line="+30" />
+        <location filename="../../ui/window/view_bar.cpp" line="+31" />
         <source>Fit</source>
         <translation>Tilpas</translation>
     </message>

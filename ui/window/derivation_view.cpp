@@ -75,17 +75,22 @@ void DerivationView::relist() {
             rows.emplace_back(s.number, QString::fromStdString(present::messageText(s.title, document_->language)));
     if (rows.empty()) rows.emplace_back(0, tr("DH parameters"));
     if (pose_) rows.emplace_back(9, tr("Results at the teach pose"));
+    // A typed Lagrangian goes from step 0 to 6: its list says why, at step 0.
+    const bool typed = document_ && !document_->robot;
+    const auto rowText = [&](int n, const QString& title) {
+        const QString row = tr("Step %1: %2").arg(n).arg(title);
+        return typed && n == 0 ? tr("%1 (steps 1–5 are a robot's)").arg(row) : row;
+    };
     std::vector<int> numbers;
     for (const auto& [n, title] : rows) numbers.push_back(n);
     bool retitled = false;  // the same steps in another language
     for (int i = 0; i < steps_->count() && i < static_cast<int>(rows.size()); ++i)
-        retitled =
-            retitled || steps_->item(i)->text() !=
-                            tr("Step %1: %2").arg(rows[static_cast<std::size_t>(i)].first).arg(rows[static_cast<std::size_t>(i)].second);
+        retitled = retitled ||
+                   steps_->item(i)->text() != rowText(rows[static_cast<std::size_t>(i)].first, rows[static_cast<std::size_t>(i)].second);
     if (numbers != listed_ || retitled || steps_->count() != static_cast<int>(rows.size())) {
         const QSignalBlocker quiet(steps_);
         steps_->clear();
-        for (const auto& [n, title] : rows) steps_->addItem(tr("Step %1: %2").arg(n).arg(title));
+        for (const auto& [n, title] : rows) steps_->addItem(rowText(n, title));
         listed_ = std::move(numbers);
     }
     const auto at = std::lower_bound(listed_.begin(), listed_.end(), step_);
