@@ -33,7 +33,7 @@ private slots:
                 for (int k = 0; k < calls; ++k) {
                     auto payload = std::make_shared<std::vector<int>>(std::vector<int>{p, k});  // written here, read there
                     handover.post([&, payload] {
-                        if (QThread::currentThread() != qApp->thread()) ++wrongThread;
+                        if (QThread::currentThread() != QCoreApplication::instance()->thread()) ++wrongThread;
                         seen[std::size_t((*payload)[0])].push_back((*payload)[1]);
                     });
                 }
