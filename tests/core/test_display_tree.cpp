@@ -73,6 +73,28 @@ std::shared_ptr<const DisplayDocument> shown(const char* example, symbolic::Para
     return deriveDocument(scene, request).display;
 }
 
+// Every example that loads (massless_joint is refused by design), in parameters and in
+// numbers, as the window shows it (the form auto picks), with its file name.
+std::vector<std::pair<std::string, std::shared_ptr<const DisplayDocument>>> exampleDocuments() {
+    std::vector<std::pair<std::string, std::shared_ptr<const DisplayDocument>>> out;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(LL_EXAMPLES_DIR)) {
+        if (entry.path().extension() != ".json") continue;
+        Scene scene;
+        try {
+            scene = loadScene(entry.path().string()).scene;
+        } catch (const InputError&) {
+            continue;
+        }
+        if (scene.dof() == 0) continue;
+        for (auto mode : {symbolic::ParameterMode::Parametric, symbolic::ParameterMode::Numeric}) {
+            DocumentRequest request;
+            request.mode = mode;
+            out.emplace_back(entry.path().filename().string(), deriveDisplay(scene, request).display);
+        }
+    }
+    return out;
+}
+
 }  // namespace
 
 class TestDisplayTree : public QObject {
@@ -254,29 +276,15 @@ private slots:
     void noDecimalFactorsPulledOutOfSums() {
         static const QRegularExpression pulled(R"((^|[ (=−+])(\d+\.\d+|\d+(\.\d+)?·10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+) \()");
         static const QRegularExpression longInteger(R"((?<![\d.])\d{7,}(?![\d.]))");
-        for (const auto& entry : std::filesystem::recursive_directory_iterator(LL_EXAMPLES_DIR)) {
-            if (entry.path().extension() != ".json") continue;
-            const LoadedScene loaded = [&] {
-                try {
-                    return loadScene(entry.path().string());
-                } catch (const InputError&) {
-                    return LoadedScene{};  // refused by design (massless_joint)
+        for (const auto& [file, doc] : exampleDocuments()) {
+            for (const DisplayStep& step : doc->steps)
+                for (const DisplayItem& item : step.items) {
+                    const QString text = QString::fromStdString(renderDisplay(*item.equation, DisplayStyle::Text));
+                    const QString where = QString::fromStdString(file + " " + item.name + ": ");
+                    QVERIFY2(!pulled.match(text).hasMatch(),
+                             qPrintable(where + pulled.match(text).captured(0) + " in " + text.left(300)));
+                    QVERIFY2(!longInteger.match(text).hasMatch(), qPrintable(where + longInteger.match(text).captured(0)));
                 }
-            }();
-            if (loaded.scene.dof() == 0) continue;
-            for (auto mode : {symbolic::ParameterMode::Parametric, symbolic::ParameterMode::Numeric}) {
-                DocumentRequest request;
-                request.mode = mode;
-                const auto doc = deriveDisplay(loaded.scene, request).display;
-                for (const DisplayStep& step : doc->steps)
-                    for (const DisplayItem& item : step.items) {
-                        const QString text = QString::fromStdString(renderDisplay(*item.equation, DisplayStyle::Text));
-                        const QString where = QString::fromStdString(entry.path().filename().string() + " " + item.name + ": ");
-                        QVERIFY2(!pulled.match(text).hasMatch(),
-                                 qPrintable(where + pulled.match(text).captured(0) + " in " + text.left(300)));
-                        QVERIFY2(!longInteger.match(text).hasMatch(), qPrintable(where + longInteger.match(text).captured(0)));
-                    }
-            }
         }
     }
 
@@ -290,60 +298,46 @@ private slots:
         static const QRegularExpression powerOfTen(R"(10⁻)");
         static const QRegularExpression oneTimes(R"((?<![\d.])1·10)");
         int plainEntries = 0, scientificEntries = 0;
-        for (const auto& file : std::filesystem::recursive_directory_iterator(LL_EXAMPLES_DIR)) {
-            if (file.path().extension() != ".json") continue;
-            const LoadedScene loaded = [&] {
-                try {
-                    return loadScene(file.path().string());
-                } catch (const InputError&) {
-                    return LoadedScene{};  // refused by design (massless_joint)
-                }
-            }();
-            if (loaded.scene.dof() == 0) continue;
-            for (auto mode : {symbolic::ParameterMode::Parametric, symbolic::ParameterMode::Numeric}) {
-                DocumentRequest request;
-                request.mode = mode;
-                const auto doc = deriveDisplay(loaded.scene, request).display;
-                std::vector<std::pair<std::string, const DisplayNode*>> entries;  // a matrix's cells each, else the equation
-                for (const DisplayStep& step : doc->steps)
-                    for (const DisplayItem& item : step.items)
-                        if (item.value->kind == DisplayKind::Matrix) {
-                            for (const auto& row : item.value->rows)
-                                for (const DisplayPtr& cell : row) entries.emplace_back(item.name, cell.get());
-                        } else {
-                            entries.emplace_back(item.name, item.equation.get());
-                        }
-                for (const auto& [name, node] : entries) {
-                    const QString text = QString::fromStdString(renderDisplay(*node, DisplayStyle::Text));
-                    const QString where = QString::fromStdString(file.path().filename().string() + " " + name + ": ");
-                    const bool plain = plainSmall.match(text).hasMatch(), scientific = powerOfTen.match(text).hasMatch();
-                    QVERIFY2(!(plain && scientific), qPrintable(where + text.left(400)));
-                    QVERIFY2(!oneTimes.match(text).hasMatch(), qPrintable(where + text.left(400)));
-                    for (auto m = plainSmall.globalMatch(text); m.hasNext();) {
-                        const QString fraction = m.next().captured(1);
-                        QVERIFY2(fraction.size() <= 8, qPrintable(where + "0." + fraction));
+        for (const auto& [file, doc] : exampleDocuments()) {
+            std::vector<std::pair<std::string, const DisplayNode*>> entries;  // a matrix's cells each, else the equation
+            for (const DisplayStep& step : doc->steps)
+                for (const DisplayItem& item : step.items)
+                    if (item.value->kind == DisplayKind::Matrix) {
+                        for (const auto& row : item.value->rows)
+                            for (const DisplayPtr& cell : row) entries.emplace_back(item.name, cell.get());
+                    } else {
+                        entries.emplace_back(item.name, item.equation.get());
                     }
-                    plainEntries += plain;
-                    scientificEntries += scientific;
-                    // and every number still reads as its exact value (to its six digits)
-                    const std::function<void(const DisplayNode&)> sameValue = [&](const DisplayNode& n) {
-                        if (n.kind == DisplayKind::Number && (n.text.find('.') != std::string::npos || !n.exponent.empty())) {
-                            std::string exact = n.plain;
-                            if (!exact.empty() && exact.front() == '(') exact = exact.substr(1, exact.size() - 2);
-                            const auto slash = exact.find('/');
-                            const double value =
-                                slash == std::string::npos ? std::stod(exact) : std::stod(exact.substr(0, slash)) / std::stod(exact.substr(slash + 1));
-                            const double shown =
-                                (n.text.empty() ? 1.0 : std::stod(n.text)) * std::pow(10.0, n.exponent.empty() ? 0 : std::stoi(n.exponent));
-                            QVERIFY2(std::abs(shown - value) <= 5e-6 * std::abs(value),
-                                     qPrintable(where + QString::fromStdString(n.text + "e" + n.exponent + " for " + n.plain)));
-                        }
-                        for (const auto& c : n.children) sameValue(*c);
-                        for (const auto& row : n.rows)
-                            for (const auto& c : row) sameValue(*c);
-                    };
-                    sameValue(*node);
+            for (const auto& [name, node] : entries) {
+                const QString text = QString::fromStdString(renderDisplay(*node, DisplayStyle::Text));
+                const QString where = QString::fromStdString(file + " " + name + ": ");
+                const bool plain = plainSmall.match(text).hasMatch(), scientific = powerOfTen.match(text).hasMatch();
+                QVERIFY2(!(plain && scientific), qPrintable(where + text.left(400)));
+                QVERIFY2(!oneTimes.match(text).hasMatch(), qPrintable(where + text.left(400)));
+                for (auto m = plainSmall.globalMatch(text); m.hasNext();) {
+                    const QString fraction = m.next().captured(1);
+                    QVERIFY2(fraction.size() <= 8, qPrintable(where + "0." + fraction));
                 }
+                plainEntries += plain;
+                scientificEntries += scientific;
+                // and every number still reads as its exact value (to its six digits)
+                const std::function<void(const DisplayNode&)> sameValue = [&](const DisplayNode& n) {
+                    if (n.kind == DisplayKind::Number && (n.text.find('.') != std::string::npos || !n.exponent.empty())) {
+                        std::string exact = n.plain;
+                        if (!exact.empty() && exact.front() == '(') exact = exact.substr(1, exact.size() - 2);
+                        const auto slash = exact.find('/');
+                        const double value =
+                            slash == std::string::npos ? std::stod(exact) : std::stod(exact.substr(0, slash)) / std::stod(exact.substr(slash + 1));
+                        const double shown =
+                            (n.text.empty() ? 1.0 : std::stod(n.text)) * std::pow(10.0, n.exponent.empty() ? 0 : std::stoi(n.exponent));
+                        QVERIFY2(std::abs(shown - value) <= 5e-6 * std::abs(value),
+                                 qPrintable(where + QString::fromStdString(n.text + "e" + n.exponent + " for " + n.plain)));
+                    }
+                    for (const auto& c : n.children) sameValue(*c);
+                    for (const auto& row : n.rows)
+                        for (const auto& c : row) sameValue(*c);
+                };
+                sameValue(*node);
             }
         }
         qInfo("%d entries with plain decimals, %d in powers of ten", plainEntries, scientificEntries);
