@@ -346,6 +346,22 @@ DisplayBuilder::Product DisplayBuilder::product(const ex& e) {
             else one(distributed);
         }
     }
+    // Likewise a square's: GiNaC writes (1.2 − a1 + ℓc1)² as 1/25 (6 − 5 a1 + 5 ℓc1)²; the
+    // coefficient's root goes back in when fewer numbers show then (¼ m (a + b)² stays).
+    const auto isSquare = [](const Factor& f) { return is_a<GiNaC::add>(f.base) && f.exp.is_equal(2); };
+    if (p.coef.is_rational() && p.coef.is_positive() && !p.coef.is_equal(1) &&
+        std::count_if(p.num.begin(), p.num.end(), isSquare) == 1 && GiNaC::sqrt(p.coef).is_rational()) {
+        const auto it = std::find_if(p.num.begin(), p.num.end(), isSquare);
+        const numeric root = GiNaC::sqrt(p.coef);
+        GiNaC::exvector terms;
+        for (const ex& t : it->base) terms.push_back(t * root);
+        const ex distributed = GiNaC::add(terms);
+        if (numbersShown(distributed) < 1 + numbersShown(it->base)) {
+            p.num.erase(it);
+            p.coef = 1;
+            factor(distributed, 2);
+        }
+    }
     const auto byKey = [this](const Factor& a, const Factor& b) { return factorKey(a) < factorKey(b); };
     std::stable_sort(p.num.begin(), p.num.end(), byKey);
     std::stable_sort(p.den.begin(), p.den.end(), byKey);

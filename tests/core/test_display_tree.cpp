@@ -6,6 +6,7 @@
 
 #include <QRegularExpression>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <set>
 
@@ -375,6 +376,44 @@ private slots:
         QCOMPARE(entry(1, 0), entry(0, 1));
         QCOMPARE(entry(1, 1), QString("I2 + m2 ℓc2²"));
         QVERIFY2(eq1.find("− m2 a1 ℓc2 s2 (2 q̇1 q̇2 + q̇2²)") != std::string::npos, eq1.c_str());
+    }
+
+    // A square stays a square: a₁ typed as 1.2 in the 2R's DH table while link 1's COM
+    // still says lc1-a1 puts link 1's COM at 1.2 − a1 + ℓc1 from joint 1, and b11 and
+    // equation 1 show m1 (1.2 − a1 + ℓc1)², not its six expanded terms. Its value is
+    // unchanged: the entry with a1 = ℓc1 = 0 is I1 + 1.44 m1 + ….
+    void squaresKeptAsSquares() {
+        std::ifstream file(std::string(LL_EXAMPLES_DIR) + "/planar_2r.json");
+        std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+        const std::string typed = R"("a": "a1")";
+        QVERIFY(text.find(typed) != std::string::npos);
+        text.replace(text.find(typed), typed.size(), R"("a": 1.2)");
+        DocumentRequest request;
+        request.mode = symbolic::ParameterMode::Parametric;
+        const auto doc = deriveDisplay(parseScene(text), request).display;
+        std::string b11, eq1;
+        for (const DisplayStep& step : doc->steps)
+            for (const DisplayItem& item : step.items) {
+                if (item.name == "B") b11 = renderDisplay(*item.value->rows[0][0], DisplayStyle::Text);
+                if (item.name == "equation_1") eq1 = renderDisplay(*item.equation, DisplayStyle::Text);
+            }
+        QVERIFY2(b11.find("m1 (1.2 − a1 + ℓc1)²") != std::string::npos, b11.c_str());
+        QVERIFY2(eq1.find("m1 (1.2 − a1 + ℓc1)²") != std::string::npos, eq1.c_str());
+        QVERIFY2(b11.find("1.44") == std::string::npos || b11.find("1.44 + ℓc2²") != std::string::npos, b11.c_str());
+        // The shaped entry is still b11 (Siciliano's, with the COM 1.2 − a1 + ℓc1 from joint 1):
+        // its Plain spelling parses back to the expanded closed form.
+        std::string plain;
+        for (const DisplayStep& step : doc->steps)
+            for (const DisplayItem& item : step.items)
+                if (item.name == "B") plain = renderDisplay(*item.value->rows[0][0], DisplayStyle::Plain);
+        const auto lock = symbolic::lockGinac();
+        GiNaC::parser reader;
+        const GiNaC::ex parsed = reader(plain);
+        GiNaC::symtab s = reader.get_syms();
+        const GiNaC::ex lc = GiNaC::numeric(6, 5) - s["a1"] + s["lc1"];
+        const GiNaC::ex expected = s["I1"] + s["m1"] * lc * lc + s["I2"] +
+                                   s["m2"] * (GiNaC::numeric(36, 25) + s["lc2"] * s["lc2"] + 2 * GiNaC::numeric(6, 5) * s["lc2"] * GiNaC::cos(s["q2"]));
+        QVERIFY2((parsed - expected).expand().is_zero(), plain.c_str());
     }
 
     // Decimals with more than 6 significant digits (products of identified inertials)
