@@ -1298,7 +1298,12 @@
         <translation>ingen fejl, ingen advarsler</translation>
     </message>
     <message>
-        <location line="+42" />
+        <location line="+9" />
+        <source>hint: %1 is no longer in %2 but still in %3; to change it everywhere, change %1 under Parameters</source>
+        <translation>tip: %1 står ikke længere i %2, men stadig i %3; ret %1 under Parametre for at ændre den overalt</translation>
+    </message>
+    <message>
+        <location line="+46" />
         <source>parameter name '%1': letters, digits and _ only, starting with a letter</source>
         <translation>parameternavn '%1': kun bogstaver, cifre og _, og det skal begynde med et bogstav</translation>
     </message>

@@ -368,6 +368,27 @@ private slots:
         QVERIFY2(lines.contains("hint: it happened with your edit of robot.joints[1].com[0] (joint 2)"), qPrintable(lines));
     }
 
+    // A parameter typed over in one cell and still used in another is pointed out: the
+    // 2R's a = "a1" of joint 1 typed as 1.2 leaves a1 in link 1's COM (lc1-a1); typing over
+    // the mass m1, used nowhere else, says nothing; undo takes the hint away.
+    void aParameterLeftInUseIsPointedOut() {
+        MainWindow w;
+        w.setAskBeforeClosing(false);
+        w.show();
+        QVERIFY(w.openFile(QString(LL_EXAMPLES_DIR) + "/planar_2r.json", nullptr, true));
+        const auto hints = [&] { return w.editor().diagnosticLines().filter("hint:").join('\n'); };
+        QVERIFY(w.editor().joints().setData(w.editor().joints().index(0, JointTableModel::A), "1.2", Qt::EditRole));
+        QVERIFY(checked(w));
+        QVERIFY2(hints().contains("hint: a1 is no longer in robot.joints[0].a (joint 1) but still in robot.joints[0].com[0] (joint 1)"),
+                 qPrintable(w.editor().diagnosticLines().join('\n')));
+        w.document().undoStack()->undo();
+        QVERIFY(checked(w));
+        QVERIFY2(hints().isEmpty(), qPrintable(hints()));
+        QVERIFY(w.editor().joints().setData(w.editor().joints().index(0, JointTableModel::Mass), "2", Qt::EditRole));
+        QVERIFY(checked(w));
+        QVERIFY2(hints().isEmpty(), qPrintable(hints()));
+    }
+
     // Every system lists its own steps: a typed Lagrangian 0, 6, 7, 8 with its own titles
     // (Previous/Next skip the steps it has not; the Text tab counts them), a robot its nine;
     // the editor opens on the tab that describes the scene.

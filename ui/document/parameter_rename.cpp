@@ -1,18 +1,12 @@
 #include "ui/document/parameter_rename.hpp"
 
+#include <algorithm>
 #include <set>
 
 namespace ll::ui {
 namespace {
 
 bool nameChar(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_'; }
-
-// Keys whose strings are words, not expressions.
-const std::set<std::string>& proseKeys() {
-    static const std::set<std::string> keys = {"format",      "name", "description", "source", "convention", "type",  "integrator",
-                                               "recovery_of", "kind", "law",         "unit",   "shape",      "color", "axis"};
-    return keys;
-}
 
 void rewrite(SceneJson& node, const std::string& from, const std::string& to) {
     if (node.is_string()) {
@@ -21,11 +15,35 @@ void rewrite(SceneJson& node, const std::string& from, const std::string& to) {
         for (SceneJson& item : node) rewrite(item, from, to);
     } else if (node.is_object()) {
         for (auto it = node.begin(); it != node.end(); ++it)
-            if (!proseKeys().count(it.key())) rewrite(it.value(), from, to);
+            if (!proseKey(it.key())) rewrite(it.value(), from, to);
     }
 }
 
 }  // namespace
+
+bool proseKey(const std::string& key) {
+    static const std::set<std::string> keys = {"format",      "name", "description", "source", "convention", "type",  "integrator",
+                                               "recovery_of", "kind", "law",         "unit",   "shape",      "color", "axis"};
+    return keys.count(key) > 0;
+}
+
+std::vector<std::string> namesInExpression(const std::string& text) {
+    std::vector<std::string> names;
+    std::size_t i = 0;
+    while (i < text.size()) {
+        if (!nameChar(text[i])) {
+            ++i;
+            continue;
+        }
+        std::size_t end = i;
+        while (end < text.size() && nameChar(text[end])) ++end;
+        const std::string word = text.substr(i, end - i);
+        const bool number = word[0] >= '0' && word[0] <= '9';  // 1e1, 2.5 (two words)
+        if (!number && std::find(names.begin(), names.end(), word) == names.end()) names.push_back(word);
+        i = end;
+    }
+    return names;
+}
 
 std::string renamedInExpression(const std::string& text, const std::string& from, const std::string& to) {
     std::string out;
@@ -55,7 +73,7 @@ SceneJson renamedParameter(const SceneJson& scene, const std::string& from, cons
         parameters[it.key() == from ? to : it.key()] = value;
     }
     for (auto it = out.begin(); it != out.end(); ++it)
-        if (it.key() != "parameters" && !proseKeys().count(it.key())) rewrite(it.value(), from, to);
+        if (it.key() != "parameters" && !proseKey(it.key())) rewrite(it.value(), from, to);
     out["parameters"] = parameters;
     return out;
 }

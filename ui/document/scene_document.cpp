@@ -1,7 +1,6 @@
 #include "ui/document/scene_document.hpp"
 
 #include <algorithm>
-#include <ranges>
 
 #include <cmath>
 #include <fstream>
@@ -147,15 +146,10 @@ void SceneDocument::setValue(const std::string& pointer, const SceneJson& v, con
         if (after.contains(p) && after.at(p) == v) return;
         after[p] = v;
     }
+    const SceneJson before = json_;
     replace(after, description);
-    // "/robot/joints/1/com/0" → "robot.joints[1].com[0]"
-    std::string field;
-    for (const std::string& part :
-         p.to_string().substr(1) | std::views::split('/') | std::views::transform([](auto r) { return std::string(r.begin(), r.end()); })) {
-        if (!part.empty() && std::all_of(part.begin(), part.end(), [](char c) { return c >= '0' && c <= '9'; })) field += "[" + part + "]";
-        else field += (field.empty() ? "" : ".") + part;
-    }
-    lastEdited_ = field;
+    lastEdited_ = fieldOfPointer(pointer);
+    stillUsed_ = parametersStillUsed(before, json_, pointer);
 }
 
 void SceneDocument::replace(const SceneJson& after, const QString& description) {
@@ -212,12 +206,14 @@ void SceneDocument::setJson(const SceneJson& json) {
         if (std::optional<Exercise> exercise = exerciseIn(json)) {
             json_ = json;
             lastEdited_.clear();
+            stillUsed_.clear();
             validScene_.exercise = std::move(*exercise);
             emit exerciseChanged();
             return;
         }
     json_ = json;
     lastEdited_.clear();  // setValue names its field after this
+    stillUsed_.clear();
     checks_.request();
     emit changed();
     validate();

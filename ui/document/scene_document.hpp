@@ -21,15 +21,14 @@
 
 #include "ui/document/handover.hpp"
 #include "ui/document/newest_wins.hpp"
+#include "ui/document/parameter_uses.hpp"
+#include "ui/document/scene_json.hpp"
 #include "ui/document/work_pool.hpp"
-#include <nlohmann/json.hpp>
 
 #include "core/model/diagnostics.hpp"
 #include "core/model/scene.hpp"
 
 namespace ll::ui {
-
-using SceneJson = nlohmann::ordered_json;
 
 class SceneDocument : public QObject {
     Q_OBJECT
@@ -67,6 +66,10 @@ public:
     // The field the newest edit changed, as the loader names it ("robot.joints[1].com[0]"),
     // when it was one value; empty after any other change (a joint added, undo, a load).
     const std::string& lastEditedField() const { return lastEdited_; }
+    // The parameters the newest edit took out of its value that other fields still use
+    // (a1 typed over with 1.2 in a DH cell, still in a COM's "lc1-a1"); empty after any
+    // other change.
+    const std::vector<ParameterStillUsed>& stillUsedAfterLastEdit() const { return stillUsed_; }
     // One undoable edit of the whole document (joints added, moved, a block typed anew).
     void replace(const SceneJson& after, const QString& description);
 
@@ -109,6 +112,7 @@ private:
     SceneJson json_;
     QString path_;
     std::string lastEdited_;
+    std::vector<ParameterStillUsed> stillUsed_;
     QUndoStack undo_;
     std::vector<Diagnostic> diagnostics_;
     Scene validScene_;

@@ -256,6 +256,19 @@ void ModelEditor::documentChanged(present::Language language) {
         item->setForeground(d.severity == Severity::Error ? QColor(180, 0, 0) : QColor(140, 100, 0));
     }
     if (doc_.diagnostics().empty()) new QListWidgetItem(tr("no errors, no warnings"), diagnostics_);
+    // A parameter typed over in one cell but still used elsewhere: the student may have
+    // meant to change it everywhere (a1 → 1.2 in the DH table, a1 still in the COM lc1-a1).
+    for (const ParameterStillUsed& used : doc_.stillUsedAfterLastEdit()) {
+        QStringList places;
+        for (const std::string& field : used.fields)
+            places << QString::fromStdString(present::messageText(Diagnostic{Severity::Warning, field, {}}.place(), language));
+        const QString edited =
+            QString::fromStdString(present::messageText(Diagnostic{Severity::Warning, doc_.lastEditedField(), {}}.place(), language));
+        auto* item = new QListWidgetItem(tr("hint: %1 is no longer in %2 but still in %3; to change it everywhere, change %1 under Parameters")
+                                             .arg(QString::fromStdString(used.parameter), edited, places.join(", ")),
+                                         diagnostics_);
+        item->setForeground(QColor(30, 70, 150));
+    }
 }
 
 QStringList ModelEditor::diagnosticLines() const {
