@@ -32,6 +32,7 @@
 #include "ui/window/derivation_panel.hpp"
 #include "ui/window/derivation_view.hpp"
 #include "ui/window/main_window.hpp"
+#include "window_checks.hpp"
 #include "window_waits.hpp"
 #include "ui/window/language_menu.hpp"
 
@@ -78,6 +79,12 @@ QString bare(QString s) { return s.remove('&').trimmed(); }
 bool settled(MainWindow& w, int seconds = 60) {
     return ll::test::waitUntil([&] { return w.result() && !w.liveSimulation().busy() && !w.liveDerivation().busy() && w.derivation(); },
                                seconds * 1000);
+}
+
+// The planar 2R in a window at 1280×800 on screen, simulated and derived.
+std::unique_ptr<MainWindow> opened2R() {
+    return ll::test::openedWindow(QString(LL_EXAMPLES_DIR) + "/planar_2r.json",
+                                  [](MainWindow& w) { return QTest::qWaitForWindowExposed(&w) && settled(w); });
 }
 
 void menuTexts(QMenu* menu, QStringList& out) {
@@ -167,12 +174,8 @@ private slots:
     }
 
     void noEnglishLeft() {
-        MainWindow w;
-        w.setAskBeforeClosing(false);
-        w.resize(1280, 800);
-        w.show();
-        QVERIFY(w.openFile(QString(LL_EXAMPLES_DIR) + "/planar_2r.json", nullptr, true));
-        QVERIFY(settled(w));
+        const auto window = opened2R();
+        MainWindow& w = *window;
         const QStringList texts = windowTexts(w);
         QVERIFY(texts.size() > 100);
         const QStringList left = englishLeft(texts);
@@ -189,13 +192,8 @@ private slots:
     void danishFitsAt1280x800() {
         QTemporaryDir dir;
         dir.setAutoRemove(!qEnvironmentVariableIsSet("LL_TEST_KEEP"));
-        MainWindow w;
-        w.setAskBeforeClosing(false);
-        w.resize(1280, 800);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
-        QVERIFY(w.openFile(QString(LL_EXAMPLES_DIR) + "/planar_2r.json", nullptr, true));
-        QVERIFY(settled(w));
+        const auto window = opened2R();
+        MainWindow& w = *window;
         QVERIFY(ll::test::nextFrameDrawn(w));
         w.screenshot().save(dir.filePath("danish-1280x800.png"));
         auto* bar = w.findChild<QWidget*>("view-bar");
@@ -257,13 +255,8 @@ private slots:
         QVERIFY(ll::ui::installLanguage(present::Language::English));
         QTemporaryDir dir;
         dir.setAutoRemove(!qEnvironmentVariableIsSet("LL_TEST_KEEP"));
-        MainWindow w;
-        w.setAskBeforeClosing(false);
-        w.resize(1280, 800);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
-        QVERIFY(w.openFile(QString(LL_EXAMPLES_DIR) + "/planar_2r.json", nullptr, true));
-        QVERIFY(settled(w));
+        const auto window = opened2R();
+        MainWindow& w = *window;
         QVERIFY2(menuTitles(w).contains("File"), qPrintable(menuTitles(w).join(",")));
         QVERIFY(ll::test::nextFrameDrawn(w));
         const QImage before = w.screenshot();

@@ -20,6 +20,51 @@ namespace test_osg_scene {
 
 using namespace ll;
 
+namespace {
+
+// A scene drawn headless from the default camera at `size` with its frame labels as
+// `render` sizes them: the boxes where the labels are first placed, and the picture after
+// the graph has placed them (render()).
+struct LabelledRender {
+    LabelledRender(VisualScene scene, QSize size)
+        : visual(std::move(scene)), size(size), options(labelOptions(size)), graph(visual, options), gl(size.width(), size.height(), 0) {
+        gl.setScene(graph.root());
+        view = cameraView(visual, CameraSpec{}, gl.aspect());
+        ui::applyCameraView(*gl.camera(), view, gl.aspect());
+        boxes = frameLabelBoxes(visual, view, size.width(), size.height(), options.labelPixels);
+    }
+    static ui::OsgSceneOptions labelOptions(QSize size) {
+        ui::OsgSceneOptions o;
+        o.labelPixels = std::max(10.0, size.height() / 40.0);  // as render sets them
+        o.trail = false;
+        return o;
+    }
+    QImage render() {
+        graph.placeLabels(visual, view, size.width(), size.height());
+        QImage image;
+        gl.render(image);
+        return image;
+    }
+    VisualScene visual;
+    QSize size;
+    ui::OsgSceneOptions options;
+    ui::OsgScene graph;
+    ui::HeadlessRenderer gl;
+    CameraView view;
+    std::vector<LabelBox> boxes;
+};
+
+// The dark pixels inside a label's box: its ink, where the renderer drew it.
+int inkIn(const QImage& image, const LabelBox& box) {
+    int ink = 0;
+    for (int y = int(box.top); y < int(box.bottom); ++y)
+        for (int x = int(box.left); x < int(box.right); ++x)
+            if (x >= 0 && y >= 0 && x < image.width() && y < image.height()) ink += qGray(image.pixel(x, y)) < 70;
+    return ink;
+}
+
+}  // namespace
+
 class TestOsgScene : public QObject {
     Q_OBJECT
 
@@ -139,24 +184,14 @@ private slots:
         QFETCH(double, d4);
         Scene scene = loadScene(std::string(LL_EXAMPLES_DIR) + file.toStdString()).scene;
         if (d4 > 0) scene.robot.joints[3].dh.d = d4;
-        VisualScene visual = visualScene(scene);
-        ui::OsgSceneOptions options;
-        options.labelPixels = std::max(10.0, size.height() / 40.0);  // as render sets them
-        options.trail = false;
-        ui::OsgScene graph(visual, options);
-        ui::HeadlessRenderer gl(size.width(), size.height(), 0);
-        gl.setScene(graph.root());
-        const CameraView view = cameraView(visual, CameraSpec{}, gl.aspect());
-        ui::applyCameraView(*gl.camera(), view, gl.aspect());
-        std::vector<LabelBox> boxes = frameLabelBoxes(visual, view, size.width(), size.height(), options.labelPixels);
+        LabelledRender r(visualScene(scene), size);
+        std::vector<LabelBox>& boxes = r.boxes;
         bool overlapped = false;  // before they are moved apart
         for (std::size_t a = 0; a < boxes.size(); ++a)
             for (std::size_t b = a + 1; b < boxes.size(); ++b) overlapped = overlapped || boxes[a].overlaps(boxes[b]);
         QCOMPARE(overlapped, d4 > 0);  // the examples' labels sit apart as placed; the squeezed PUMA's do not
         separateLabels(boxes, size.width(), size.height());
-        graph.placeLabels(visual, view, size.width(), size.height());
-        QImage image;
-        gl.render(image);
+        const QImage image = r.render();
         QVERIFY(boxes.size() >= 4);
         int moved = 0;
         for (const LabelBox& b : boxes) moved += b.moved();
@@ -166,10 +201,7 @@ private slots:
                 QVERIFY2(!boxes[a].overlaps(boxes[b]),
                          qPrintable(QString("\"%1\" and \"%2\"")
                                         .arg(QString::fromStdString(boxes[a].text), QString::fromStdString(boxes[b].text))));
-            int ink = 0;
-            for (int y = int(boxes[a].top); y < int(boxes[a].bottom); ++y)
-                for (int x = int(boxes[a].left); x < int(boxes[a].right); ++x)
-                    if (x >= 0 && y >= 0 && x < image.width() && y < image.height()) ink += qGray(image.pixel(x, y)) < 70;
+            const int ink = inkIn(image, boxes[a]);
             QVERIFY2(ink >= 5,
                      qPrintable(QString("label \"%1\": %2 dark pixels in its box").arg(QString::fromStdString(boxes[a].text)).arg(ink)));
         }
@@ -180,17 +212,9 @@ private slots:
     // moved off every body's box, with a leader line, and drawn where it was moved to.
     void worldLabelStaysOffTheBodies() {
         const QSize size(1280, 720);
-        VisualScene visual = visualScene(loadScene(std::string(LL_EXAMPLES_DIR) + "/mass_spring_pair_lagrangian.json").scene);
-        ui::OsgSceneOptions options;
-        options.labelPixels = size.height() / 40.0;
-        options.trail = false;
-        ui::OsgScene graph(visual, options);
-        ui::HeadlessRenderer gl(size.width(), size.height(), 0);
-        gl.setScene(graph.root());
-        const CameraView view = cameraView(visual, CameraSpec{}, gl.aspect());
-        ui::applyCameraView(*gl.camera(), view, gl.aspect());
-        std::vector<LabelBox> boxes = frameLabelBoxes(visual, view, size.width(), size.height(), options.labelPixels);
-        const std::vector<LabelBox> bodies = bodyBoxes(visual, view, size.width(), size.height());
+        LabelledRender r(visualScene(loadScene(std::string(LL_EXAMPLES_DIR) + "/mass_spring_pair_lagrangian.json").scene), size);
+        std::vector<LabelBox>& boxes = r.boxes;
+        const std::vector<LabelBox> bodies = bodyBoxes(r.visual, r.view, size.width(), size.height());
         QVERIFY(bodies.size() >= 2);  // the two discs, and what the scene draws besides
         const auto onABody = [&](const LabelBox& label) {
             return std::any_of(bodies.begin(), bodies.end(), [&](const LabelBox& b) { return label.overlaps(b); });
@@ -202,16 +226,11 @@ private slots:
         QVERIFY(boxes[0].moved());
         QVERIFY(!onABody(boxes[0]));
         QVERIFY(boxes[0].left >= 0 && boxes[0].top >= 0 && boxes[0].right <= size.width() && boxes[0].bottom <= size.height());
-        graph.placeLabels(visual, view, size.width(), size.height());
-        QImage image;
-        gl.render(image);
-        int ink = 0;
-        for (int y = int(boxes[0].top); y < int(boxes[0].bottom); ++y)
-            for (int x = int(boxes[0].left); x < int(boxes[0].right); ++x) ink += qGray(image.pixel(x, y)) < 70;
+        const int ink = inkIn(r.render(), boxes[0]);
         QVERIFY2(ink >= 5, qPrintable(QString("%1 dark pixels in the moved label's box").arg(ink)));
         // a robot's labels are not kept off its links (their frames are on them)
         const VisualScene puma = visualScene(loadScene(std::string(LL_EXAMPLES_DIR) + "/puma560.json").scene);
-        QVERIFY(bodyBoxes(puma, cameraView(puma, CameraSpec{}, gl.aspect()), size.width(), size.height()).empty());
+        QVERIFY(bodyBoxes(puma, cameraView(puma, CameraSpec{}, r.gl.aspect()), size.width(), size.height()).empty());
     }
 };
 
