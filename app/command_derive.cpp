@@ -13,6 +13,7 @@
 #include "app/cli_options.hpp"
 #include "app/command_usage.hpp"
 #include "app/commands.hpp"
+#include "app/output_file.hpp"
 #include "app/scene_loading.hpp"
 #include "core/io/atomic_file.hpp"
 #include "core/model/message_error.hpp"
@@ -67,13 +68,7 @@ int deriveCommand(const Args& args) {
     if (format != "text" && format != "latex" && format != "json" && !typeset)
         throw UsageError(UsageId::ExpectedOneOf, "format", "text, latex, json, pdf, svg", "png", format);
     if (typeset && !options.has("out")) throw UsageError(UsageId::FormatWritesFile, format);
-    if (options.has("out")) {  // before the work: a file that cannot be written is known now
-        std::error_code error;
-        const std::filesystem::path dir = std::filesystem::absolute(options.text("out"), error).parent_path();
-        const bool isDir = !error && std::filesystem::is_directory(dir, error);
-        if (!isDir || ::access(dir.c_str(), W_OK) != 0)
-            throw UsageError(isDir ? UsageId::OutFolderNotWritable : UsageId::OutFolderMissing, options.text("out"));
-    }
+    if (options.has("out")) requireWritableOutputFile(options.text("out"));  // before the work
     if (options.has("symbolic") && options.has("numeric")) throw UsageError(UsageId::ExcludeEachOther, "symbolic", "numeric");
     const std::string form = options.text("form", "auto");
     if (form != "auto" && form != "structured" && form != "expanded")
