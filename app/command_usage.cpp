@@ -11,7 +11,7 @@ struct CommandText {
     const char* summary;
 };
 
-constexpr std::array<CommandText, 14> commands{{
+constexpr std::array<CommandText, 16> commands{{
     {"eval", "SCENE --q v1,... --qd v1,... [--t T] [--tau v1,...]", "B, C, g, Q, q̈, E_kin, E_pot at one state, as JSON"},
     {"simulate",
      "SCENE [--duration T] [--integrator NAME] [--abs-tol X] [--rel-tol X] [--dt X]\n"
@@ -55,6 +55,12 @@ constexpr std::array<CommandText, 14> commands{{
     {"grade", "DIR ANSWERS... [--out DIR] [--lang da|en]",
      "every answer file checked against its own student's robot of the exercise set in DIR:\n"
      "grades.csv (student, entry, verdict, hint) and a feedback.pdf per student"},
+    {"import", "ROBOT.urdf --out SCENE.json [--base LINK] [--tip LINK] [--convention standard|modified]",
+     "a URDF robot as a scene: the DH table found from the joint axes by the textbook's rules (each frame's\n"
+     "case on stderr), each link's mass, centre of mass and inertia (fixed links lumped in) in its DH frame"},
+    {"export-urdf", "SCENE --out ROBOT.urdf",
+     "a robot scene as URDF: a link per DH link with its inertial, a joint per DH row, friction as\n"
+     "<dynamics>; import gives the same B, C and g back"},
     {"integrators", "", "the integrators with order, kind and when to use each"},
     {"accuracy",
      "SCENE [--integrators a,b,...] [--tolerances 1e-3..1e-12] [--steps dt1,dt2,...] [--duration T]\n"

@@ -28,6 +28,8 @@ int checkCommand(const Args& args);
 int checkAnswerCommand(const Args& args);
 int exerciseCommand(const Args& args);
 int gradeCommand(const Args& args);
+int importCommand(const Args& args);
+int exportUrdfCommand(const Args& args);
 // The painting parts: each starts Qt (offscreen without a display) for its own work.
 // derive --format pdf|svg|png: the typeset pages of a display document (app/derive_pages.cpp).
 int writeDerivationPages(const present::DisplayDocument& display, const std::string& format, const std::string& outPath, bool timings);

@@ -22,7 +22,7 @@ namespace {
 bool isHelp(const std::string& arg) { return arg == "--help" || arg == "-h"; }
 
 const char* const kCommands[] = {"eval",  "simulate",     "integrators", "accuracy", "derive", "render", "report",  "codegen",
-                                 "check", "check-answer", "exercise",    "grade",    "help",   "version", "--version"};
+                                 "check", "check-answer", "exercise",    "grade",    "import", "export-urdf", "help",   "version", "--version"};
 
 // `lagrangelab`, `lagrangelab SCENE …` and `lagrangelab --screenshot …` open the window:
 // no arguments, or a first argument that is no command but a scene file or an option.
@@ -128,6 +128,8 @@ int main(int argc, char** argv) {
         if (command == "check-answer") return checkAnswerCommand(args);
         if (command == "exercise") return exerciseCommand(args);
         if (command == "grade") return gradeCommand(args);
+        if (command == "import") return importCommand(args);
+        if (command == "export-urdf") return exportUrdfCommand(args);
         std::cerr << usageErrorLine(usageMessage(UsageId::UnknownCommand, command), presentation().language) << "\n\n" << overviewUsage();
         return 2;
     });

@@ -26,6 +26,8 @@ std::vector<std::string> benchChains();
 int answers(int runs);
 // --grade: `lagrangelab grade` of 30 students' files of 10 entries (bench_grade.cpp).
 int grade(int runs);
+// --urdf: lagrangelab import of a 7-joint URDF, as a process and in this one (bench_urdf.cpp).
+int urdf(int runs);
 // --linked: the entry catalogue, per-frame evaluation and the run's analysis (bench_linked.cpp).
 int linked(const std::vector<std::string>& scenes, int runs);
 

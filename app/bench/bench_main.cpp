@@ -179,7 +179,7 @@ int dynamics(std::vector<std::string> scenes, int batches) {
 
 const char* const usage =
     "usage: lagrangelab-bench [SCENE...] [--batches N] [--rhs | --derive | --cancel | --render | --typeset | --gui | --process | --linked |\n"
-    "                         --entries | --answers | --grade]\n"
+    "                         --entries | --answers | --grade | --urdf]\n"
     "                         [--chains A..B] [--cap S] [--form auto|structured|expanded]\n"
     "  median times of B, C, g, forward/inverse dynamics and one simulated second (default scenes:\n"
     "  the PUMA 560, Stanford arm, UR5, Panda and planar 2R); or\n"
@@ -197,17 +197,19 @@ const char* const usage =
     "             (special constant angles beside general ones)\n"
     "  --answers  check-answer of the PUMA 560's b11 as a process and against a built key; 300 checks of a 2R sheet\n"
     "  --grade    lagrangelab grade of 30 students' answer files of 10 entries, each against its own robot\n"
+    "  --urdf     lagrangelab import of a 7-joint URDF as a process, and the import alone\n"
     "Built in the tree, not installed; docs/benchmarks.md records what it measured.\n";
 
 int run(const std::vector<std::string>& args) {
     const Options options(args, {"batches", "chains", "cap", "form"},
-                          {"rhs", "derive", "cancel", "render", "typeset", "gui", "process", "linked", "entries", "answers", "grade"});
+                          {"rhs", "derive", "cancel", "render", "typeset", "gui", "process", "linked", "entries", "answers", "grade", "urdf"});
     // --batches N, or each mode's default: a whole number from 1 to 1000 (0 batches have
     // no median).
     const auto batchesOr = [&](int fallback) { return checkedBatches(options.number("batches", fallback), options.text("batches")); };
     std::vector<std::string> scenes = options.positional();
     if (options.has("gui")) return gui(scenes, batchesOr(9));
     if (options.has("answers")) return answers(batchesOr(5));
+    if (options.has("urdf")) return urdf(batchesOr(9));
     if (options.has("grade")) return grade(batchesOr(5));
     if (options.has("linked")) {
         if (scenes.empty())
