@@ -23,6 +23,7 @@
 #include "app/command_usage.hpp"
 #include "app/commands.hpp"
 #include "app/event_wait.hpp"
+#include "ui/window/scene_files.hpp"
 #include "app/offscreen_gui.hpp"
 #include "app/pixel_size.hpp"
 #include "core/io/atomic_file.hpp"
@@ -81,7 +82,8 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
     ui::MainWindow window;
     window.language().set({language, notationGiven() ? presentation().notation : ui::rememberedNotation()});
     QStringList errors;
-    if (!window.openFile(QString::fromStdString(scene), &errors, true)) {
+    const QString opened = QString::fromStdString(scene);  // a URDF robot is imported (File → Import URDF…)
+    if (!(opened.endsWith(".urdf") ? window.files().importUrdf(opened, &errors, true) : window.openFile(opened, &errors, true))) {
         const std::string error = present::messageText(MessageId::ErrorLine, language);
         for (const QString& e : errors) std::cerr << error << e.toStdString() << '\n';
         return 2;

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <map>
 #include <mutex>
+#include <numeric>
 #include <sstream>
 
 #include <console_bridge/console.h>
@@ -63,6 +64,20 @@ bool moves(const urdf::Joint& joint) { return joint.type != urdf::Joint::FIXED; 
 // scene reads as the textbook's and its checks see no absurdly small length. `scale`: the
 // size of the quantity's own values (1 m, 1 rad, the largest inertia).
 double cleaned(double v, double scale) { return std::abs(v) < 1e-12 * scale ? 0.0 : v; }
+
+// An angle that is a multiple of π/12 as the scene files and the textbook write it
+// ("-pi/2", "2*pi/3"), so the table and the derivation read α = −½π, not −1.5707963267949;
+// empty for 0 and any other angle.
+std::string angleText(double angle) {
+    const double k = std::round(angle / (M_PI / 12));
+    if (k == 0 || std::abs(angle - k * M_PI / 12) > 1e-12) return {};
+    long numerator = static_cast<long>(k), denominator = 12;
+    const long divisor = std::gcd(numerator, denominator);
+    numerator /= divisor;
+    denominator /= divisor;
+    std::string text = numerator == 1 ? "pi" : numerator == -1 ? "-pi" : std::to_string(numerator) + "*pi";
+    return denominator == 1 ? text : text + "/" + std::to_string(denominator);
+}
 
 // Whether anything below `link` moves (a branch the chain has to choose).
 bool movesBelow(const urdf::Link& link) {
@@ -231,6 +246,9 @@ UrdfImport importUrdf(const std::string& xml, const std::string& path, const Urd
         Joint joint;
         joint.dh = out.dh.rows[i];
         for (double* v : {&joint.dh.a, &joint.dh.alpha, &joint.dh.d, &joint.dh.theta}) *v = cleaned(*v, 1.0);
+        for (const auto& [name, angle] : {std::pair{"alpha", joint.dh.alpha}, std::pair{"theta", joint.dh.theta}})
+            if (const std::string text = angleText(angle); !text.empty())
+                scene.expressions["robot.joints[" + std::to_string(i) + "]." + name] = text;
         joint.link.mass = bodies[i].mass;
         joint.link.com = frame.inverse() * bodies[i].com;
         joint.link.inertia = frame.linear().transpose() * bodies[i].inertia * frame.linear();

@@ -1466,14 +1466,29 @@
 <context>
     <name>SceneFiles</name>
     <message>
-        <location filename="../../ui/window/scene_files.cpp" line="+25" />
+        <location filename="../../ui/window/scene_files.cpp" line="+27" />
         <source>LagrangeLab scenes (*.lagrange *.json);;All files (*)</source>
         <translation>LagrangeLab-scener (*.lagrange *.json);;Alle filer (*)</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="+13" />
+        <source>Import a robot from URDF</source>
+        <translation>Importér en robot fra URDF</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>URDF robots (*.urdf);;All files (*)</source>
+        <translation>URDF-robotter (*.urdf);;Alle filer (*)</translation>
+    </message>
+    <message>
+        <location line="+12" />
         <source>&amp;Open…</source>
         <translation>&amp;Åbn…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>&amp;Import URDF…</source>
+        <translation>&amp;Importér URDF…</translation>
     </message>
     <message>
         <location line="+1" />
@@ -1501,7 +1516,12 @@
         <translation>Gem &amp;som…</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+26" />
+        <source>Cannot import %1</source>
+        <translation>Kan ikke importere %1</translation>
+    </message>
+    <message>
+        <location line="+14" />
         <source>%1: another file is being opened</source>
         <translation>%1: en anden fil er ved at blive åbnet</translation>
     </message>
@@ -1516,12 +1536,12 @@
         <translation>Kan ikke åbne %1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+0" />
         <source>The scene has errors; the open scene is kept.</source>
         <translation>Scenen indeholder fejl; den åbne scene bevares.</translation>
     </message>
     <message numerus="yes">
-        <location line="+5" />
+        <location line="+6" />
         <source>%1: %n error(s), nothing changed</source>
         <translation>
             <numerusform>%1: %n fejl, intet er ændret</numerusform>
@@ -1529,7 +1549,7 @@
         </translation>
     </message>
     <message>
-        <location line="+22" />
+        <location line="+18" />
         <source>Open scene</source>
         <translation>Åbn scene</translation>
     </message>

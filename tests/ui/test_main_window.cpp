@@ -368,6 +368,28 @@ private slots:
         QVERIFY2(lines.contains("hint: it happened with your edit of robot.joints[1].com[0] (joint 2)"), qPrintable(lines));
     }
 
+    // File → Import URDF…: the PUMA-like test robot opens as a new, unsaved scene whose
+    // DH table is the known one (tests/urdf/puma_like.urdf), simulated and derived like any
+    // other; a file that is not URDF is refused with its name and the open scene kept.
+    void aUrdfRobotIsImported() {
+        MainWindow w;
+        w.setAskBeforeClosing(false);
+        w.show();
+        QVERIFY(w.openFile(QString(LL_EXAMPLES_DIR) + "/planar_2r.json", nullptr, true));
+        QStringList errors;
+        QVERIFY(!w.files().importUrdf(QString(LL_EXAMPLES_DIR) + "/planar_2r.json", &errors, true));
+        QVERIFY2(errors.join('\n').contains("planar_2r.json: not a URDF robot"), qPrintable(errors.join('\n')));
+        QCOMPARE(w.document().validScene().dof(), 2);  // kept
+        QVERIFY2(w.files().importUrdf(QString(LL_SOURCE_DIR) + "/tests/urdf/puma_like.urdf", &errors, true), qPrintable(errors.join('\n')));
+        QVERIFY(checked(w));
+        const ll::Scene& scene = w.document().validScene();
+        QCOMPARE(scene.dof(), 6);
+        QVERIFY(std::abs(scene.robot.joints[1].dh.a - 0.4318) < 1e-12 && std::abs(scene.robot.joints[0].dh.d - 0.672) < 1e-12);
+        QVERIFY(w.document().path().isEmpty());
+        QVERIFY(w.document().isModified());  // unsaved: closing asks
+        QVERIFY(ll::test::waitUntil([&] { return w.result() && w.result()->visual && w.result()->visual->dof() == 6; }, 60000));
+    }
+
     // A parameter typed over in one cell and still used in another is pointed out: the
     // 2R's a = "a1" of joint 1 typed as 1.2 leaves a1 in link 1's COM (lc1-a1); typing over
     // the mass m1, used nowhere else, says nothing; undo takes the hint away.

@@ -108,18 +108,31 @@ bool SceneDocument::loadFile(const QString& path, QStringList* errors) {
 }
 
 void SceneDocument::loadFileInBackground(const QString& path, std::function<void(bool, const QStringList&)> done) {
-    auto text = std::make_shared<std::string>();
+    std::string text;
     QStringList errors;
-    if (!readScene(path, *text, &errors)) {
+    if (!readScene(path, text, &errors)) {
         done(false, errors);
         return;
     }
-    checker_.start([self = this, text, path, done = std::move(done)] {
+    checkInBackground(std::move(text), shownPath(path), true, std::move(done));
+}
+
+void SceneDocument::loadUnsavedInBackground(std::string text, const QString& name, std::function<void(bool, const QStringList&)> done) {
+    checkInBackground(std::move(text), name, false, std::move(done));
+}
+
+void SceneDocument::checkInBackground(std::string scene, const QString& name, bool fromFile,
+                                      std::function<void(bool, const QStringList&)> done) {
+    auto text = std::make_shared<std::string>(std::move(scene));
+    checker_.start([self = this, text, name, fromFile, done = std::move(done)] {
         auto scene = std::make_shared<Scene>();
         auto found = std::make_shared<std::vector<Diagnostic>>(diagnose(*text, scene.get()));
-        self->loaded_.post([self, text, path, done, scene, found] {
+        self->loaded_.post([self, text, name, fromFile, done, scene, found] {
             QStringList lines;
-            const bool ok = self->adopt(*text, shownPath(path), std::move(*found), *scene, &lines);
+            const bool ok = self->adopt(*text, fromFile ? name : QString(), std::move(*found), *scene, &lines);
+            if (ok && !fromFile) self->undo_.resetClean();  // nothing on disk holds it yet
+            if (!fromFile)
+                for (QString& line : lines) line = name + ": " + line;
             done(ok, lines);
         });
     });

@@ -45,6 +45,9 @@ public:
     // derivation may hold) on the document's worker: `done(loaded, errors)` is called on
     // this object's thread when it is over (at once when the file cannot be read).
     void loadFileInBackground(const QString& path, std::function<void(bool, const QStringList&)> done);
+    // The same for a scene's text made here (a URDF imported): no file, so the document has
+    // no path and counts as unsaved until it is saved. `name` names it in the errors.
+    void loadUnsavedInBackground(std::string text, const QString& name, std::function<void(bool, const QStringList&)> done);
     // Writes the JSON atomically, keeping PATH.bak; throws std::runtime_error.
     void saveFile(const QString& path);
 
@@ -106,6 +109,9 @@ private:
     void setJson(const SceneJson& json);  // no undo entry; re-validates
     // The checked text becomes the document (a load), or the errors are listed.
     bool adopt(const std::string& text, const QString& path, std::vector<Diagnostic> found, Scene& scene, QStringList* errors);
+    // The text checked on the worker, then adopted on this thread: with `name` as its path
+    // when it came from that file, else unsaved.
+    void checkInBackground(std::string text, const QString& name, bool fromFile, std::function<void(bool, const QStringList&)> done);
     void validate();
     void accept(std::vector<Diagnostic> diagnostics, Scene* scene);
 

@@ -15,6 +15,8 @@
 #include "ui/document/live_derivation.hpp"
 #include "ui/document/scene_document.hpp"
 #include "ui/window/example_gallery.hpp"
+#include "core/io/scene_file.hpp"
+#include "core/io/urdf_import.hpp"
 
 namespace ll::ui {
 
@@ -32,6 +34,12 @@ SceneFiles::SceneFiles(SceneDocument& document, LiveDerivation& derivation, QMai
 void SceneFiles::addOpenEntries(QMenu* file) {
     Relabel& relabel = *new Relabel(&window_);
     QAction* open = file->addAction(QString(), QKeySequence::Open, this, &SceneFiles::open);
+    QAction* import = file->addAction(QString(), this, [this] {
+        if (!maybeSave()) return;
+        const QString path =
+            QFileDialog::getOpenFileName(&window_, tr("Import a robot from URDF"), QFileInfo(doc_.path()).absolutePath(), tr("URDF robots (*.urdf);;All files (*)"));
+        if (!path.isEmpty()) importUrdf(path);
+    });
     QMenu* examples = file->addMenu(QString());
     QAction* gallery = examples->addAction(QString(), this, [this] {
         auto* dialog = new ExampleGallery(&window_);
@@ -40,8 +48,9 @@ void SceneFiles::addOpenEntries(QMenu* file) {
         dialog->open();
     });
     recentMenu_ = file->addMenu(QString());
-    relabel([open, examples, gallery, recent = recentMenu_] {
+    relabel([open, import, examples, gallery, recent = recentMenu_] {
         open->setText(tr("&Open…"));
+        import->setText(tr("&Import URDF…"));
         examples->setTitle(tr("Examples"));
         gallery->setText(tr("Gallery…"));
         recent->setTitle(tr("Recent files"));
@@ -66,18 +75,48 @@ void SceneFiles::openAsked(const QString& path) {
 }
 
 bool SceneFiles::openFile(const QString& path, QStringList* errors, bool quiet) {
+    const bool loaded = load(
+        QFileInfo(path).fileName(), [&](std::function<void(bool, const QStringList&)> done) { doc_.loadFileInBackground(path, std::move(done)); },
+        errors, quiet);
+    if (!loaded) return false;
+    if (!path.startsWith(":/")) addRecent(QFileInfo(path).absoluteFilePath());
+    emit opened(path);
+    return true;
+}
+
+bool SceneFiles::importUrdf(const QString& path, QStringList* errors, bool quiet) {
+    std::string text;
+    try {
+        const UrdfImport imported = importUrdfFile(path.toStdString(), {});
+        text = serializeScene(imported.scene);
+    } catch (const std::exception& e) {
+        const QStringList found{shownError(e, windowLanguage())};
+        if (errors) *errors = found;
+        if (!quiet) QMessageBox::warning(&window_, tr("Cannot import %1").arg(QFileInfo(path).fileName()), found.join('\n'));
+        return false;
+    }
+    const bool loaded = load(
+        QFileInfo(path).fileName(),
+        [&](std::function<void(bool, const QStringList&)> done) { doc_.loadUnsavedInBackground(std::move(text), path, std::move(done)); },
+        errors, quiet);
+    if (loaded) emit opened(QString());
+    return loaded;
+}
+
+bool SceneFiles::load(const QString& name, const std::function<void(std::function<void(bool, const QStringList&)>)>& start, QStringList* errors,
+                      bool quiet) {
     if (opening_) {
-        if (errors) *errors = QStringList{tr("%1: another file is being opened").arg(path)};
+        if (errors) *errors = QStringList{tr("%1: another file is being opened").arg(name)};
         return false;
     }
     derive_.cancel();  // loading checks the scene under the GiNaC lock
     // The check runs on the document's worker; the window keeps drawing meanwhile.
     opening_ = true;
-    window_.statusBar()->showMessage(tr("Opening %1…").arg(QFileInfo(path).fileName()));
+    window_.statusBar()->showMessage(tr("Opening %1…").arg(name));
     QEventLoop loop;
     bool done = false, loaded = false;
     QStringList found;
-    doc_.loadFileInBackground(path, [&](bool ok, const QStringList& lines) {
+    start([&](bool ok, const QStringList& lines) {
         done = true;
         loaded = ok;
         found = lines;
@@ -86,22 +125,18 @@ bool SceneFiles::openFile(const QString& path, QStringList* errors, bool quiet) 
     if (!done) loop.exec(QEventLoop::ExcludeUserInputEvents);
     opening_ = false;
     window_.statusBar()->clearMessage();
-    if (!loaded) {
-        derive_.resume();
-        if (errors) *errors = found;
-        if (!quiet) {
-            QMessageBox box(QMessageBox::Warning, tr("Cannot open %1").arg(QFileInfo(path).fileName()),
-                            tr("The scene has errors; the open scene is kept."), QMessageBox::Ok, &window_);
-            box.setDetailedText(found.join('\n'));
-            box.setInformativeText(found.mid(0, 6).join('\n'));
-            box.exec();
-        }
-        window_.statusBar()->showMessage(tr("%1: %n error(s), nothing changed", "", found.size()).arg(path), 8000);
-        return false;
+    if (loaded) return true;
+    derive_.resume();
+    if (errors) *errors = found;
+    if (!quiet) {
+        QMessageBox box(QMessageBox::Warning, tr("Cannot open %1").arg(name), tr("The scene has errors; the open scene is kept."),
+                        QMessageBox::Ok, &window_);
+        box.setDetailedText(found.join('\n'));
+        box.setInformativeText(found.mid(0, 6).join('\n'));
+        box.exec();
     }
-    if (!path.startsWith(":/")) addRecent(QFileInfo(path).absoluteFilePath());
-    emit opened(path);
-    return true;
+    window_.statusBar()->showMessage(tr("%1: %n error(s), nothing changed", "", found.size()).arg(name), 8000);
+    return false;
 }
 
 bool SceneFiles::saveTo(const QString& path, QString* error) {

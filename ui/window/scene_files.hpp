@@ -2,6 +2,8 @@
 // The scene's file: open (checked on a worker while the window keeps drawing; a scene
 // with errors is refused and the open one kept), save and save as (atomic, PATH.bak),
 // the recent files, the examples, and a question before unsaved work is closed.
+#include <functional>
+
 #include <QObject>
 #include <QString>
 #include <QStringList>
@@ -23,6 +25,9 @@ public:
     // event loop. On failure the errors are shown (a dialog unless `quiet`), returned in
     // *errors, and the open document is kept.
     bool openFile(const QString& path, QStringList* errors = nullptr, bool quiet = false);
+    // File → Import URDF…: the robot in `path` as a new scene (lagrangelab import's), unsaved
+    // (Save asks for its name); refused as openFile refuses, the open scene kept.
+    bool importUrdf(const QString& path, QStringList* errors = nullptr, bool quiet = false);
     bool saveTo(const QString& path, QString* error = nullptr);
     // Asks what to do with unsaved edits: true when the caller may go on.
     bool maybeSave();
@@ -44,6 +49,10 @@ private:
     void addRecent(const QString& path);
     void rebuildRecentMenu();
     void openAsked(const QString& path);  // after maybeSave
+    // Starts the document's check with `start(done)` and waits for it in a local event loop;
+    // on errors shows them (unless `quiet`) and keeps the open scene.
+    bool load(const QString& name, const std::function<void(std::function<void(bool, const QStringList&)>)>& start, QStringList* errors,
+              bool quiet);
 
     SceneDocument& doc_;
     LiveDerivation& derive_;
