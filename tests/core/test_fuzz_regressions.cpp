@@ -40,7 +40,8 @@ private slots:
                                                                                          {"expression", ll::fuzz::expression},
                                                                                          {"lagrangian", ll::fuzz::lagrangian},
                                                                                          {"evalState", ll::fuzz::evalState},
-                                                                                         {"answer", ll::fuzz::answer}};
+                                                                                         {"answer", ll::fuzz::answer},
+                                                                                         {"urdf", ll::fuzz::urdf}};
         int files = 0;
         for (const auto& folder : std::filesystem::directory_iterator(LL_SOURCE_DIR "/tests/fuzz/regressions")) {
             const auto body = bodies.find(folder.path().filename().string());

@@ -19,6 +19,7 @@ int expression(const std::uint8_t* data, std::size_t size);   // a numeric field
 int lagrangian(const std::uint8_t* data, std::size_t size);   // E_kin, E_pot, Q typed by hand
 int evalState(const std::uint8_t* data, std::size_t size);    // eval of an example at a fuzzed state
 int answer(const std::uint8_t* data, std::size_t size);       // a student's answer and an entry's name (check-answer)
+int urdf(const std::uint8_t* data, std::size_t size);         // a URDF file through lagrangelab import
 
 inline void require(bool ok, const char* what) {
     if (!ok) throw std::logic_error(std::string("contract broken: ") + what);
