@@ -190,6 +190,12 @@ UrdfImport importUrdf(const std::string& xml, const std::string& path, const Urd
             throw InputError(path, message(MessageId::UrdfJointNotSerial, joint.name, typeName(joint.type)));
         if (moves(joint) && joint.mimic) throw InputError(path, message(MessageId::UrdfMimicJoint, joint.name, joint.mimic->joint_name));
         const Isometry3d T = pose[chain[k - 1]->name] * toIsometry(joint.parent_to_joint_origin_transform);
+        if (!T.matrix().allFinite()) {  // "nan", "inf" or numbers whose product overflows
+            const urdf::Vector3& xyz = joint.parent_to_joint_origin_transform.position;
+            std::ostringstream written;
+            written << xyz.x << " " << xyz.y << " " << xyz.z;
+            throw InputError(path + ": <joint name=\"" + joint.name + "\"> <origin>", message(MessageId::ValueNotFinite, written.str()));
+        }
         pose[chain[k]->name] = T;
         out.linkFrames.emplace_back(chain[k]->name, T);
         if (!moves(joint)) continue;

@@ -176,6 +176,12 @@ private slots:
             <joint name="jb" type="continuous"><parent link="a"/><child link="b"/><axis xyz="0 0 1"/><mimic joint="ja"/></joint></robot>)";
         QCOMPARE(refusal(mimic),
                  std::string("robot.urdf: joint jb mimics joint ja: it is not a coordinate of its own, which a DH chain needs"));
+        const std::string notFinite = head + R"(<joint name="ja" type="continuous"><parent link="base"/><child link="a"/>
+            <origin xyz="0 nan 1"/><axis xyz="0 0 1"/></joint>
+            <joint name="jb" type="continuous"><parent link="a"/><child link="b"/><axis xyz="0 1 0"/></joint></robot>)";
+        QVERIFY2(refusal(notFinite).find("robot.urdf: <joint name=\"ja\"> <origin>: value is not finite") == 0 ||
+                     refusal(notFinite).find("not a URDF robot") != std::string::npos,
+                 refusal(notFinite).c_str());
         const std::string fixedOnly = R"(<robot name="r"><link name="base"/><link name="a"/>
             <joint name="ja" type="fixed"><parent link="base"/><child link="a"/></joint></robot>)";
         QVERIFY2(refusal(fixedOnly).find("no moving joint between links base and a") != std::string::npos, refusal(fixedOnly).c_str());
