@@ -273,7 +273,13 @@ UrdfImport importUrdf(const std::string& xml, const std::string& path, const Urd
             scene.effects.coulomb.push_back(friction);
         }
     }
-    scene.effects.gravity = Vector3d(0, 0, -9.81);
+    // URDF robots feel gravity along −z of the root link; the scene's world is the base link.
+    Isometry3d rootToBase = Isometry3d::Identity();
+    for (urdf::LinkConstSharedPtr link = base; link->parent_joint; link = link->getParent())
+        rootToBase = toIsometry(link->parent_joint->parent_to_joint_origin_transform) * rootToBase;
+    Vector3d gravity = rootToBase.linear().transpose() * Vector3d(0, 0, -9.81);
+    for (double& v : gravity) v = cleaned(v, 9.81);
+    scene.effects.gravity = gravity;
     scene.initial.q = Eigen::VectorXd::Zero(scene.dof());
     scene.initial.qd = Eigen::VectorXd::Zero(scene.dof());
     return out;

@@ -5,7 +5,8 @@
 // links fixed to it lumped in (masses added, the centre of mass combined, the inertias
 // moved to it by the parallel-axis theorem), is re-expressed in its DH frame. URDF's
 // joint damping and friction become viscous and Coulomb friction; gravity is −9.81 m/s²
-// along the base link's z, as URDF robots stand. Joint limits have no place in a scene
+// along the root link's z, as URDF robots stand (turned into the base link's frame when
+// --base names another link). Joint limits have no place in a scene
 // and are not kept. Bad input throws InputError naming the file or the option (--base,
 // --tip) and the value.
 #include <string>

@@ -151,6 +151,20 @@ private slots:
         }
     }
 
+    // Gravity is the root link's −z, seen from the base link: the planar 2R written by
+    // export-urdf hangs under a "world" root turned so that its −y is down; imported from
+    // its own "base" link, the scene's gravity is −9.81 along y again, and g(q) the 2R's.
+    void gravityFromTheRootSeenFromTheBase() {
+        const Scene original = loadScene(std::string(LL_EXAMPLES_DIR) + "/planar_2r.json").scene;
+        UrdfImportOptions fromBase;
+        fromBase.base = "base";
+        const UrdfImport imported = importUrdf(exportUrdf(original).xml, "planar_2r.urdf", fromBase);
+        QVERIFY(imported.scene.effects.gravity && (*imported.scene.effects.gravity - Eigen::Vector3d(0, -9.81, 0)).norm() < 1e-12);
+        const Eigen::VectorXd q = Eigen::Vector2d(0.4, -1.1), qd = Eigen::Vector2d::Zero();
+        const Eigen::VectorXd want = evaluateScene(original, q, qd, 0.0, std::nullopt).terms.g;
+        QVERIFY((evaluateScene(imported.scene, q, qd, 0.0, std::nullopt).terms.g - want).norm() < 1e-9 * want.norm());
+    }
+
     // What a DH chain cannot hold, or a file that is no URDF: one line naming it.
     void refusals() {
         const std::string head = R"(<robot name="r"><link name="base"/><link name="a"/><link name="b"/>)";
