@@ -27,39 +27,46 @@ bool proseKey(const std::string& key) {
     return keys.count(key) > 0;
 }
 
-std::vector<std::string> namesInExpression(const std::string& text) {
-    std::vector<std::string> names;
+namespace {
+
+// `text` cut into its words (runs of letters, digits and _) and what lies between them, in
+// order: `word(w)` for each word, `other(c)` for each character between words.
+template <class Word, class Other>
+void splitWords(const std::string& text, Word&& word, Other&& other) {
     std::size_t i = 0;
     while (i < text.size()) {
         if (!nameChar(text[i])) {
-            ++i;
+            other(text[i++]);
             continue;
         }
         std::size_t end = i;
         while (end < text.size() && nameChar(text[end])) ++end;
-        const std::string word = text.substr(i, end - i);
-        const bool number = word[0] >= '0' && word[0] <= '9';  // 1e1, 2.5 (two words)
-        if (!number && std::find(names.begin(), names.end(), word) == names.end()) names.push_back(word);
+        word(text.substr(i, end - i));
         i = end;
     }
+}
+
+// A number (1e1, 2.5's two words) is a word starting with a digit: never a name.
+bool isName(const std::string& word) { return !(word[0] >= '0' && word[0] <= '9'); }
+
+}  // namespace
+
+std::vector<std::string> namesInExpression(const std::string& text) {
+    std::vector<std::string> names;
+    splitWords(
+        text,
+        [&](const std::string& word) {
+            if (isName(word) && std::find(names.begin(), names.end(), word) == names.end()) names.push_back(word);
+        },
+        [](char) {});
     return names;
 }
 
 std::string renamedInExpression(const std::string& text, const std::string& from, const std::string& to) {
     std::string out;
     out.reserve(text.size());
-    std::size_t i = 0;
-    while (i < text.size()) {
-        if (!nameChar(text[i])) {
-            out += text[i++];
-            continue;
-        }
-        std::size_t end = i;
-        while (end < text.size() && nameChar(text[end])) ++end;
-        const std::string word = text.substr(i, end - i);
-        out += word == from ? to : word;  // a number (1e1) is a word starting with a digit: never a name
-        i = end;
-    }
+    splitWords(
+        text, [&](const std::string& word) { out += isName(word) && word == from ? to : word; }, [&](char c) { out += c; });
     return out;
 }
 
