@@ -8,6 +8,7 @@
 #include <random>
 
 #include "core/io/scene_file.hpp"
+#include "core/kinematics/axes_at_home.hpp"
 #include "core/kinematics/dh_from_axes.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
 #include "test_support.hpp"
@@ -73,15 +74,6 @@ Eigen::Isometry3d randomPose(std::mt19937& rng) {
 }
 
 // The axes of a DH model at home (q = 0) and its last frame as the tool.
-AxesDescription axesOf(const RobotModel& robot) {
-    RobotData data(robot);
-    forwardKinematics(robot, data, Eigen::VectorXd::Zero(robot.dof()));
-    AxesDescription axes;
-    for (int i = 0; i < robot.dof(); ++i) axes.axes.push_back({robot.joints[i].dh.type, data.axisPoint[i], data.axis[i]});
-    axes.tool = data.T_0i.back();
-    return axes;
-}
-
 }  // namespace
 
 class TestDhFromAxes : public QObject {
@@ -174,7 +166,7 @@ private slots:
         for (const char* file :
              {"planar_2r.json", "puma560.json", "puma560_modified.json", "stanford_arm.json", "scara.json", "ur5.json", "panda.json"}) {
             const RobotModel robot = loadScene(std::string(LL_EXAMPLES_DIR) + "/" + file).scene.robot;
-            const DhFromAxes dh = dhFromAxes(axesOf(robot), robot.convention);
+            const DhFromAxes dh = dhFromAxes(axesAtHome(robot), robot.convention);
             const RobotModel rebuilt = modelOf(dh);
             RobotData original(robot), found(rebuilt);
             for (int trial = 0; trial < 20; ++trial) {
