@@ -42,6 +42,21 @@ Scene parseScene(const std::string& jsonText) {
     return readScene(root, std::move(duplicates));
 }
 
+namespace {
+
+// Each mesh path of the robot's look changed by `change` (package:// URLs left alone).
+template <class Change>
+void changeMeshPaths(Scene& scene, Change change) {
+    for (LinkVisual& link : scene.robot.links)
+        for (LinkShape& shape : link.shapes)
+            if (shape.kind == LinkShape::Kind::Mesh && !shape.mesh.empty() && shape.mesh.find("://") == std::string::npos)
+                shape.mesh = change(std::filesystem::path(shape.mesh)).string();
+}
+
+std::filesystem::path folderOf(const std::string& file) { return std::filesystem::absolute(std::filesystem::path(file)).parent_path(); }
+
+}  // namespace
+
 LoadedScene loadScene(const std::string& path) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) throw InputError(path, MessageId::PathIsDirectory);
@@ -58,6 +73,9 @@ LoadedScene loadScene(const std::string& path) {
         const auto lock = symbolic::lockGinac();  // expressions are parsed with GiNaC
         LoadedScene loaded;
         loaded.scene = readScene(root, std::move(duplicates), &loaded.warnings);
+        changeMeshPaths(loaded.scene, [folder = folderOf(path)](const std::filesystem::path& mesh) {
+            return mesh.is_relative() ? (folder / mesh).lexically_normal() : mesh;
+        });
         const std::vector<Diagnostic> validation = requireValidScene(loaded.scene);
         loaded.warnings.insert(loaded.warnings.end(), validation.begin(), validation.end());
         loaded.warnings = inFile(std::move(loaded.warnings), path);
@@ -74,6 +92,15 @@ std::string serializeScene(const Scene& scene) {
     return text + "\n";
 }
 
-void saveScene(const Scene& scene, const std::string& path) { saveFileAtomically(path, serializeScene(scene), Backup::Keep); }
+
+void saveScene(const Scene& scene, const std::string& path) {
+    Scene written = scene;
+    changeMeshPaths(written, [folder = folderOf(path)](const std::filesystem::path& mesh) {
+        if (mesh.is_relative()) return mesh;
+        const std::filesystem::path relative = mesh.lexically_relative(folder);
+        return relative.empty() ? mesh : relative;
+    });
+    saveFileAtomically(path, serializeScene(written), Backup::Keep);
+}
 
 }  // namespace ll

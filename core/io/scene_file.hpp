@@ -28,7 +28,8 @@ struct LoadedScene {
 // InputError with every error found (a JSON syntax error alone, first).
 Scene parseScene(const std::string& jsonText);
 
-// Reads the file, parses it and runs requireValidScene. Every diagnostic it throws
+// Reads the file, parses it and runs requireValidScene. A mesh path of the robot's look
+// (robot.links) relative to the file becomes absolute. Every diagnostic it throws
 // or returns names the file: its field is "<path>: <field path>", or just "<path>"
 // for whole-file problems (unreadable, JSON syntax errors).
 LoadedScene loadScene(const std::string& path);
@@ -40,7 +41,7 @@ std::string serializeScene(const Scene& scene);
 
 // Writes atomically with saveFileAtomically (core/io/atomic_file.hpp): PATH is always
 // either the old or the new file, whole, and an existing PATH is first copied to
-// PATH.bak, the recovery copy. Throws std::runtime_error naming the path if anything
+// PATH.bak, the recovery copy. Mesh paths are written relative to PATH's folder. Throws std::runtime_error naming the path if anything
 // fails; PATH is then untouched.
 void saveScene(const Scene& scene, const std::string& path);
 

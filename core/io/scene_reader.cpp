@@ -246,7 +246,7 @@ private:
     }
 
     void readRobot(const Json& robot) {
-        if (!checkObject(robot, "robot", {"convention", "base", "joints"})) return;
+        if (!checkObject(robot, "robot", {"convention", "base", "joints", "links"})) return;
         if (const Json* convention = required(robot, "robot", "convention", MessageId::DhConventionField))
             if (auto choice = readChoice(*convention, "robot.convention", {"standard", "modified"}))
                 scene_.robot.convention = *choice == 0 ? DhConvention::Standard : DhConvention::Modified;
@@ -260,6 +260,107 @@ private:
         scene_.robot.joints.resize(joints->size());
         for (std::size_t i = 0; i < joints->size(); ++i)
             readJoint((*joints)[i], jointField(static_cast<int>(i), ""), scene_.robot.joints[i]);
+        if (const Json* links = member(robot, "links")) readLinks(*links);
+    }
+
+    // "links": the robot as its own description draws it (core/model/link_visual.hpp).
+    void readLinks(const Json& links) {
+        if (!links.is_array()) {
+            error("robot.links", expectedGot(MessageId::WantedObjectArray, links));
+            return;
+        }
+        for (std::size_t i = 0; i < links.size(); ++i) {
+            const Json& link = links[i];
+            const std::string path = item("robot.links", i);
+            if (!checkObject(link, path, {"name", "body", "position", "rpy", "shapes"})) continue;
+            LinkVisual visual;
+            if (const Json* name = member(link, "name")) readText(*name, child(path, "name"), visual.name);
+            if (const Json* body = member(link, "body")) {
+                const int n = scene_.robot.dof();
+                if (body->is_number_integer() && body->get<long long>() >= 0 && body->get<long long>() <= n)
+                    visual.body = static_cast<int>(body->get<long long>());
+                else
+                    error(child(path, "body"), message(MessageId::JsonExpectedGot, message(MessageId::WantedLinkBody, n), describe(*body)));
+            }
+            visual.frame = readPose(link, path);
+            const Json* shapes = member(link, "shapes");
+            if (shapes && !shapes->is_array()) error(child(path, "shapes"), expectedGot(MessageId::WantedObjectArray, *shapes));
+            else if (shapes)
+                for (std::size_t k = 0; k < shapes->size(); ++k) readShape((*shapes)[k], item(child(path, "shapes"), k), visual.shapes);
+            scene_.robot.links.push_back(std::move(visual));
+        }
+    }
+
+    // "position" [m] and "rpy" [rad] of a frame in its parent.
+    Eigen::Isometry3d readPose(const Json& object, const std::string& path) {
+        Eigen::Vector3d position = Eigen::Vector3d::Zero(), rpy = Eigen::Vector3d::Zero();
+        readVector3(object, path, "position", position);
+        readVector3(object, path, "rpy", rpy, Angle::Yes);
+        Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+        pose.linear() = rotationFromRpy(rpy);
+        pose.translation() = position;
+        return pose;
+    }
+
+    // One of {"mesh": FILE, "scale": [..]}, {"box": [x, y, z]}, {"cylinder": [radius, length]},
+    // {"sphere": radius}, with "position", "rpy" and "rgba".
+    void readShape(const Json& shape, const std::string& path, std::vector<LinkShape>& shapes) {
+        if (!checkObject(shape, path, {"mesh", "scale", "box", "cylinder", "sphere", "position", "rpy", "rgba"})) return;
+        int kinds = 0;
+        LinkShape out;
+        out.origin = readPose(shape, path);
+        const auto positive = [&](double v, const std::string& field) {
+            if (!(v > 0)) error(field, message(MessageId::JsonExpectedGot, Message(MessageId::WantedPositiveSize), describe(Json(v))));
+        };
+        if (const Json* mesh = member(shape, "mesh")) {
+            ++kinds;
+            out.kind = LinkShape::Kind::Mesh;
+            readText(*mesh, child(path, "mesh"), out.mesh);
+            readVector3(shape, path, "scale", out.size);
+            for (Eigen::Index c = 0; c < 3; ++c) positive(out.size[c], item(child(path, "scale"), static_cast<std::size_t>(c)));
+        }
+        if (member(shape, "box")) {
+            ++kinds;
+            out.kind = LinkShape::Kind::Box;
+            readVector3(shape, path, "box", out.size);
+            for (Eigen::Index c = 0; c < 3; ++c) positive(out.size[c], item(child(path, "box"), static_cast<std::size_t>(c)));
+        }
+        if (const Json* cylinder = member(shape, "cylinder")) {
+            ++kinds;
+            out.kind = LinkShape::Kind::Cylinder;
+            if (!cylinder->is_array() || cylinder->size() != 2) {
+                error(child(path, "cylinder"), expectedGot(MessageId::WantedNumberArray, *cylinder));
+            } else {
+                const auto radius = number((*cylinder)[0], item(child(path, "cylinder"), 0));
+                const auto length = number((*cylinder)[1], item(child(path, "cylinder"), 1));
+                if (radius && length) {
+                    out.size = {*radius, *radius, *length};
+                    positive(*radius, item(child(path, "cylinder"), 0));
+                    positive(*length, item(child(path, "cylinder"), 1));
+                }
+            }
+        }
+        if (member(shape, "sphere")) {
+            ++kinds;
+            out.kind = LinkShape::Kind::Sphere;
+            double radius = 0;
+            readNumber(shape, path, "sphere", radius);
+            out.size = Eigen::Vector3d::Constant(radius);
+            positive(radius, child(path, "sphere"));
+        }
+        if (kinds != 1) error(path, message(MessageId::JsonExpectedGot, Message(MessageId::WantedOneShape), describe(shape)));
+        if (const Json* rgba = member(shape, "rgba")) {
+            if (!rgba->is_array() || rgba->size() != 4) {
+                error(child(path, "rgba"), expectedGot(MessageId::WantedNumberArray, *rgba));
+            } else {
+                for (std::size_t c = 0; c < 4; ++c) {
+                    const auto v = number((*rgba)[c], item(child(path, "rgba"), c));
+                    if (v && (*v < 0 || *v > 1)) error(item(child(path, "rgba"), c), message(MessageId::JsonExpectedGot, Message(MessageId::WantedUnitInterval), describe((*rgba)[c])));
+                    else if (v) out.rgba[c] = *v;
+                }
+            }
+        }
+        shapes.push_back(std::move(out));
     }
 
     // The "lagrangian" block (core/model/lagrangian_spec.hpp): every expression is parsed

@@ -200,6 +200,44 @@ private:
             else if (motor.inertia != 0.0 || hasExpressionUnder(field("armature")))
                 entry["armature"] = number(field("armature"), motor.inertia);
         }
+        if (!robot.links.empty()) out["links"] = links(robot.links);
+        return out;
+    }
+
+    // "position" and "rpy" of a frame, rounded to 1e-15 as the base's angles are.
+    static void pose(Json& out, const Eigen::Isometry3d& T) {
+        const auto rounded = [](double v) { return std::abs(v) < 1e-15 ? 0.0 : std::round(v * 1e15) / 1e15; };
+        const Eigen::Vector3d p = T.translation(), rpy = rpyFromRotation(T.linear());
+        if (!p.isZero(0.0)) out["position"] = {rounded(p.x()), rounded(p.y()), rounded(p.z())};
+        if (!rpy.isZero(1e-15)) out["rpy"] = {rounded(rpy.x()), rounded(rpy.y()), rounded(rpy.z())};
+    }
+
+    static Json links(const std::vector<LinkVisual>& links) {
+        Json out = Json::array();
+        for (const LinkVisual& link : links) {
+            Json entry;
+            if (!link.name.empty()) entry["name"] = link.name;
+            entry["body"] = link.body;
+            pose(entry, link.frame);
+            Json& shapes = entry["shapes"] = Json::array();
+            for (const LinkShape& shape : link.shapes) {
+                Json s;
+                const Eigen::Vector3d& v = shape.size;
+                switch (shape.kind) {
+                    case LinkShape::Kind::Mesh:
+                        s["mesh"] = shape.mesh;
+                        if (v != Eigen::Vector3d::Ones()) s["scale"] = {v.x(), v.y(), v.z()};
+                        break;
+                    case LinkShape::Kind::Box: s["box"] = {v.x(), v.y(), v.z()}; break;
+                    case LinkShape::Kind::Cylinder: s["cylinder"] = {v.x(), v.z()}; break;
+                    case LinkShape::Kind::Sphere: s["sphere"] = v.x(); break;
+                }
+                pose(s, shape.origin);
+                if (shape.coloured()) s["rgba"] = shape.rgba;
+                shapes.push_back(std::move(s));
+            }
+            out.push_back(std::move(entry));
+        }
         return out;
     }
 

@@ -4,12 +4,15 @@
 #include <cerrno>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <functional>
 #include <fstream>
 #include <map>
 #include <mutex>
+#include <set>
 #include <numeric>
 #include <sstream>
+#include <tuple>
 
 #include <console_bridge/console.h>
 #include <urdf_parser/urdf_parser.h>
@@ -153,6 +156,85 @@ Body lumped(const Body& a, const Body& b) {
     return s;
 }
 
+// A frame placed by the rules as a transform in the world (the base link's frame).
+Isometry3d frameOf(const DhFrameRule& f) {
+    Isometry3d frame = Isometry3d::Identity();
+    frame.linear() << f.x, f.z.cross(f.x), f.z;
+    frame.translation() = f.origin;
+    return frame;
+}
+
+// A <mesh filename> as a path to read: package://NAME/rest from the folder NAME above the
+// file (or beside one above it), file:// and relative paths from the file's folder.
+// A package not found keeps its URL (the window then shows the DH drawing) and is noted.
+std::string meshPath(const std::string& url, const std::string& urdfPath, std::set<std::string>& missing) {
+    namespace fs = std::filesystem;
+    const fs::path folder = fs::absolute(fs::path(urdfPath)).parent_path();
+    const std::string package = "package://";
+    if (url.rfind(package, 0) == 0) {
+        const std::string rest = url.substr(package.size());
+        const std::string name = rest.substr(0, rest.find('/'));
+        const std::string inside = rest.find('/') == std::string::npos ? std::string() : rest.substr(rest.find('/') + 1);
+        std::error_code error;
+        for (fs::path at = folder; !at.empty(); at = at.parent_path()) {
+            if (at.filename() == name) return (at / inside).lexically_normal().string();
+            if (fs::is_directory(at / name, error)) return (at / name / inside).lexically_normal().string();
+            if (at == at.parent_path()) break;
+        }
+        missing.insert(name);
+        return url;
+    }
+    const std::string file = url.rfind("file://", 0) == 0 ? url.substr(7) : url;
+    const fs::path given(file);
+    return (given.is_absolute() ? given : folder / given).lexically_normal().string();
+}
+
+LinkShape shapeOf(const urdf::Visual& visual, const urdf::ModelInterface& model, const std::string& path, std::set<std::string>& missing) {
+    LinkShape shape;
+    shape.origin = toIsometry(visual.origin);
+    const urdf::Geometry& g = *visual.geometry;
+    switch (g.type) {
+        case urdf::Geometry::SPHERE: {
+            shape.kind = LinkShape::Kind::Sphere;
+            shape.size = Vector3d::Constant(static_cast<const urdf::Sphere&>(g).radius);
+            break;
+        }
+        case urdf::Geometry::BOX: {
+            const urdf::Vector3& d = static_cast<const urdf::Box&>(g).dim;
+            shape.kind = LinkShape::Kind::Box;
+            shape.size = {d.x, d.y, d.z};
+            break;
+        }
+        case urdf::Geometry::CYLINDER: {
+            const auto& c = static_cast<const urdf::Cylinder&>(g);
+            shape.kind = LinkShape::Kind::Cylinder;
+            shape.size = {c.radius, c.radius, c.length};
+            break;
+        }
+        default: {
+            const auto& m = static_cast<const urdf::Mesh&>(g);
+            shape.kind = LinkShape::Kind::Mesh;
+            shape.mesh = meshPath(m.filename, path, missing);
+            shape.size = {m.scale.x, m.scale.y, m.scale.z};
+            break;
+        }
+    }
+    // The colour given in the visual, or by its material's name at the robot's top level.
+    urdf::MaterialSharedPtr material = visual.material;
+    if (material && material->color.r == 0 && material->color.g == 0 && material->color.b == 0 && material->color.a == 1 &&
+        !material->name.empty())
+        if (const urdf::MaterialSharedPtr named = model.getMaterial(material->name)) material = named;
+    if (material && material->texture_filename.empty()) {
+        const urdf::Color& c = material->color;
+        const float values[] = {c.r, c.g, c.b, c.a};
+        const bool inRange = std::all_of(std::begin(values), std::end(values), [](float v) { return v >= 0 && v <= 1; });
+        if (inRange && (c.r + c.g + c.b > 0 || c.a < 1))  // urdfdom's black, opaque default is "no colour given"
+            for (std::size_t k = 0; k < 4; ++k)       // URDF's floats as the decimals written (0.55, not 0.550000011920929)
+                shape.rgba[k] = std::round(double(values[k]) * 1e6) / 1e6;
+    }
+    return shape;
+}
+
 std::string typeName(int type) {
     switch (type) {
         case urdf::Joint::FLOATING: return "floating";
@@ -218,7 +300,9 @@ UrdfImport importUrdf(const std::string& xml, const std::string& path, const Urd
     // or off it; moving branches off the chain are left out (said once).
     std::vector<Body> bodies(axes.axes.size());
     std::vector<std::string> leftOut;
+    std::vector<std::tuple<const urdf::Link*, Isometry3d, int>> visited;  // every link kept, where it is at home, its body (−1: the base)
     std::function<void(const urdf::Link&, const Isometry3d&, int)> collect = [&](const urdf::Link& link, const Isometry3d& T, int body) {
+        visited.emplace_back(&link, T, body);
         if (body >= 0) bodies[static_cast<std::size_t>(body)] = lumped(bodies[static_cast<std::size_t>(body)], bodyOf(link, T));
         for (const auto& child : link.child_links) {
             const urdf::Joint& joint = *child->parent_joint;
@@ -245,10 +329,7 @@ UrdfImport importUrdf(const std::string& xml, const std::string& path, const Urd
     scene.robot.base = out.dh.base;
     for (double& v : scene.robot.base.matrix().reshaped()) v = cleaned(v, 1.0);
     for (std::size_t i = 0; i < axes.axes.size(); ++i) {
-        const DhFrameRule& f = out.dh.frames[i + 1];
-        Isometry3d frame = Isometry3d::Identity();
-        frame.linear() << f.x, f.z.cross(f.x), f.z;
-        frame.translation() = f.origin;
+        const Isometry3d frame = frameOf(out.dh.frames[i + 1]);
         Joint joint;
         joint.dh = out.dh.rows[i];
         for (double* v : {&joint.dh.a, &joint.dh.alpha, &joint.dh.d, &joint.dh.theta}) *v = cleaned(*v, 1.0);
@@ -273,6 +354,18 @@ UrdfImport importUrdf(const std::string& xml, const std::string& path, const Urd
             scene.effects.coulomb.push_back(friction);
         }
     }
+    // Each link as the URDF draws it, on the DH frame of the body it belongs to.
+    std::set<std::string> missingPackages;
+    for (const auto& [link, T, body] : visited) {
+        LinkVisual visual;
+        visual.name = link->name;
+        visual.body = body + 1;
+        visual.frame = body < 0 ? T : frameOf(out.dh.frames[static_cast<std::size_t>(body + 1)]).inverse() * T;
+        for (const auto& v : link->visual_array)
+            if (v && v->geometry) visual.shapes.push_back(shapeOf(*v, *model, path, missingPackages));
+        scene.robot.links.push_back(std::move(visual));
+    }
+    for (const std::string& package : missingPackages) out.notes.push_back(message(MessageId::UrdfPackageNotFound, path, package));
     // URDF robots feel gravity along −z of the root link; the scene's world is the base link.
     Isometry3d rootToBase = Isometry3d::Identity();
     for (urdf::LinkConstSharedPtr link = base; link->parent_joint; link = link->getParent())

@@ -9,6 +9,7 @@
 #include "core/model/dh_row.hpp"
 #include "core/model/joint_motor.hpp"
 #include "core/model/link_inertia.hpp"
+#include "core/model/link_visual.hpp"
 
 namespace ll {
 
@@ -25,6 +26,9 @@ struct RobotModel {
     // (the default) makes world = base frame, as in the course notes.
     Eigen::Isometry3d base = Eigen::Isometry3d::Identity();
     std::vector<Joint> joints;
+    // How its own description draws it (a URDF's links and meshes); empty for a robot typed
+    // as a DH table. Only the pictures read it.
+    std::vector<LinkVisual> links;
 
     int dof() const { return static_cast<int>(joints.size()); }
 };

@@ -65,11 +65,12 @@ void VisualBounds::add(const Eigen::Vector3d& point, double radius) {
 // How each part moves. Robot: forward kinematics into RobotData, then one rule per part.
 // Lagrangian: the compiled body poses.
 struct VisualScene::Rig {
-    enum class Rule { Fixed, JointMarker, Sleeve, FirstSegment, SecondSegment, Com, EndEffector, Body };
+    enum class Rule { Fixed, JointMarker, Sleeve, FirstSegment, SecondSegment, Com, EndEffector, Body, Look };
     struct PartRule {
         Rule rule = Rule::Fixed;
-        int index = 0;     // joint (robot) or body (Lagrangian)
+        int index = 0;     // joint (robot) or body (Lagrangian); a look's DH frame
         bool bar = false;  // a segment drawn as the prismatic joint's bar
+        Eigen::Isometry3d offset = Eigen::Isometry3d::Identity();  // a look's pose in its DH frame
     };
 
     RobotModel robot;
@@ -251,6 +252,26 @@ VisualScene::VisualScene(const Scene& scene, std::optional<BodyPoses> compiledBo
             endEffector = static_cast<int>(parts.size());
             add(tip, {Rule::EndEffector, n - 1, false});
         }
+        // The robot's own look: each shape on its link's frame (body 0 fixed in the world).
+        for (const LinkVisual& link : scene.robot.links) {
+            if (link.body < 0 || link.body > n) continue;
+            for (const LinkShape& shape : link.shapes) {
+                VisualPart look;
+                look.name = link.name;
+                look.role = PartRole::Look;
+                look.coordinate = link.body - 1;
+                look.color = shape.coloured() ? Rgba{float(shape.rgba[0]), float(shape.rgba[1]), float(shape.rgba[2]), float(shape.rgba[3])}
+                             : link.body > 0 ? linkColor(link.body - 1)
+                                             : kPedestalColor;
+                switch (shape.kind) {
+                    case LinkShape::Kind::Mesh: look.shape = PartShape::Mesh, look.mesh = shape.mesh, look.box = shape.size; break;
+                    case LinkShape::Kind::Box: look.shape = PartShape::Box, look.box = shape.size; break;
+                    case LinkShape::Kind::Cylinder: look.shape = PartShape::Cylinder, look.radius = shape.size.x(), look.length = shape.size.z(); break;
+                    case LinkShape::Kind::Sphere: look.shape = PartShape::Sphere, look.radius = shape.size.x(); break;
+                }
+                add(look, {Rule::Look, link.body, false, link.frame * shape.origin});
+            }
+        }
         for (int k = 0; k <= n; ++k) frames.push_back({std::to_string(k), kTriadLength * R, Eigen::Isometry3d::Identity()});
         labelCoincidentFrames(scene.initial.q);
         pose(scene.initial.q, 0.0);
@@ -353,6 +374,7 @@ void VisualScene::pose(const Eigen::VectorXd& q, double t) {
                 part.pose.translation() = data.p_ci[i];
                 break;
             case Rule::EndEffector: part.pose = data.T_0i[i + 1]; break;
+            case Rule::Look: part.pose = i == 0 ? r.offset : data.T_0i[i] * r.offset; break;
         }
     }
     for (std::size_t k = 0; k < frames.size(); ++k) frames[k].pose = data.T_0i[k];

@@ -46,10 +46,14 @@ namespace ll {
 //   Rod       round, `radius`, `length` along z: the length changes with the pose
 //   Bar       square cross-section of side 2·`radius`, `length` along z: changes with q
 //   Sleeve    square tube of outer side 2·`radius`, wall `radius`/4, `length` along z
-enum class PartShape { Box, Sphere, Cylinder, Rod, Bar, Sleeve };
+//   Mesh      the file `mesh` (a renderer reads it; a relative path is the scene file's),
+//             scaled by `box` along its own axes
+enum class PartShape { Box, Sphere, Cylinder, Rod, Bar, Sleeve, Mesh };
 
-// What a part stands for (a renderer may style or hide by role).
-enum class PartRole { Link, Joint, CentreOfMass, EndEffector, Pedestal, Body };
+// What a part stands for (a renderer may style or hide by role). Look: a shape of the
+// robot's own description (core/model/link_visual.hpp), drawn instead of the DH links,
+// joints and pedestal when a renderer shows the robot's look.
+enum class PartRole { Link, Joint, CentreOfMass, EndEffector, Pedestal, Body, Look };
 
 // True for the shapes whose `length` is set by every pose (a renderer draws them at
 // unit length and scales z).
@@ -61,7 +65,8 @@ struct VisualPart {
     PartRole role = PartRole::Body;
     double radius = 0.0;                            // [m]
     double length = 0.0;                            // [m] along the part's z
-    Eigen::Vector3d box = Eigen::Vector3d::Zero();  // [m] box edges
+    Eigen::Vector3d box = Eigen::Vector3d::Zero();  // [m] box edges; a mesh's scale
+    std::string mesh;                               // a Mesh's file, as the scene gives it
     Rgba color;
     int coordinate = -1;  // the joint or coordinate (0-based) whose motion moves it
                           // last along the chain; -1: fixed in the world

@@ -6,15 +6,21 @@
 // the joint or link named.
 #include "test_registry.hpp"
 
+#include <filesystem>
+#include <fstream>
 #include <random>
 
+#include <QTemporaryDir>
+
 #include <kdl/chaindynparam.hpp>
+#include <kdl/chainfksolverpos_recursive.hpp>
 #include <kdl/tree.hpp>
 #include <kdl_parser/kdl_parser.hpp>
 
 #include "core/io/scene_file.hpp"
 #include "core/io/urdf_export.hpp"
 #include "core/io/urdf_import.hpp"
+#include "core/kinematics/forward_kinematics.hpp"
 #include "core/model/diagnostics.hpp"
 #include "core/pipeline/scene_evaluation.hpp"
 #include "core/present/message_text.hpp"
@@ -264,6 +270,107 @@ private slots:
             QCOMPARE(imported.scene.effects.viscous[0].joint, 1);
             QCOMPARE(imported.scene.effects.coulomb[0].force, 0.2);
             QVERIFY((imported.scene.robot.joints[0].link.com - Eigen::Vector3d(-0.5, 0, 0)).norm() < 1e-12);
+        }
+    }
+
+    // The meshbot's look: every link kept on the DH frame of its body, where KDL puts the
+    // URDF link at random q (base, upper arm, forearm, the tool fixed to it); its shapes
+    // with their sizes and colours, the STL found by package:// in the folder named
+    // meshbot above the file, the OBJ by a path relative to it. Saved, a mesh path is
+    // relative to the scene file; loaded, absolute again. A package not found is noted
+    // and keeps its URL.
+    void linksKeepTheirLook() {
+        namespace fs = std::filesystem;
+        const std::string path = urdf("meshbot/urdf/meshbot.urdf");
+        for (DhConvention convention : {DhConvention::Standard, DhConvention::Modified}) {
+            UrdfImportOptions options;
+            options.convention = convention;
+            const UrdfImport imported = importUrdfFile(path, options);
+            const std::vector<LinkVisual>& links = imported.scene.robot.links;
+            QCOMPARE(int(links.size()), 4);
+            const char* names[] = {"base", "upper_arm", "forearm", "tool"};
+            const int bodies[] = {0, 1, 2, 2};
+            for (int k = 0; k < 4; ++k) {
+                QCOMPARE(QString::fromStdString(links[k].name), QString(names[k]));
+                QCOMPARE(links[k].body, bodies[k]);
+            }
+            KDL::Tree tree;
+            QVERIFY(kdl_parser::treeFromFile(path, tree));
+            std::mt19937 rng(5);
+            const RobotModel& robot = imported.scene.robot;
+            RobotData data(robot);
+            for (int trial = 0; trial < 10; ++trial) {
+                const Eigen::VectorXd q = test::randomVector(rng, 2, 3.0);
+                forwardKinematics(robot, data, q);
+                for (int k = 1; k < 4; ++k) {
+                    KDL::Chain chain;
+                    QVERIFY(tree.getChain("base", names[k], chain));
+                    KDL::ChainFkSolverPos_recursive fk(chain);
+                    KDL::JntArray kq(chain.getNrOfJoints());
+                    for (unsigned j = 0; j < chain.getNrOfJoints(); ++j) kq(j) = q[j];
+                    KDL::Frame kdl;
+                    QVERIFY(fk.JntToCart(kq, kdl) >= 0);
+                    const Eigen::Isometry3d ours = data.T_0i[static_cast<std::size_t>(links[k].body)] * links[k].frame;
+                    for (int r = 0; r < 3; ++r) {
+                        QVERIFY(std::abs(ours.translation()[r] - kdl.p(r)) < 1e-12);
+                        for (int c = 0; c < 3; ++c) QVERIFY(std::abs(ours.linear()(r, c) - kdl.M(r, c)) < 1e-12);
+                    }
+                }
+            }
+            const LinkShape &base = links[0].shapes.at(0), &upper = links[1].shapes.at(0), &fore = links[2].shapes.at(0),
+                            &tool = links[3].shapes.at(0);
+            QCOMPARE(base.kind, LinkShape::Kind::Cylinder);
+            QVERIFY((base.size - Eigen::Vector3d(0.08, 0.08, 0.1)).norm() < 1e-15);
+            QVERIFY((base.origin.translation() - Eigen::Vector3d(0, 0, -0.05)).norm() < 1e-15);
+            QVERIFY(std::abs(base.rgba[0] - 0.55) < 1e-6 && std::abs(base.rgba[3] - 1) < 1e-6);
+            QCOMPARE(upper.kind, LinkShape::Kind::Mesh);
+            QCOMPARE(fs::path(upper.mesh), fs::canonical(urdf("meshbot/meshes/upper_arm.stl")));
+            QVERIFY(std::abs(upper.rgba[0] - 0.85) < 1e-6 && std::abs(upper.rgba[1] - 0.1) < 1e-6);
+            QCOMPARE(fore.kind, LinkShape::Kind::Mesh);
+            QCOMPARE(fs::path(fore.mesh), fs::canonical(urdf("meshbot/meshes/forearm.obj")));
+            QCOMPARE(tool.kind, LinkShape::Kind::Sphere);
+            QCOMPARE(tool.size.x(), 0.03);
+            QVERIFY(imported.notes.empty());
+
+            QTemporaryDir dir;
+            const std::string saved = dir.filePath("arm.json").toStdString();
+            saveScene(imported.scene, saved);
+            std::ifstream file(saved);
+            const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+            QVERIFY(text.find("meshes/upper_arm.stl") != std::string::npos);
+            QVERIFY(text.find("\"mesh\": \"/") == std::string::npos);  // relative to the scene file, not absolute
+            const LoadedScene loaded = loadScene(saved);
+            QCOMPARE(int(loaded.scene.robot.links.size()), 4);
+            QCOMPARE(loaded.scene.robot.links[1].shapes.at(0).mesh, upper.mesh);
+            QVERIFY(loaded.scene.robot.links[2].frame.isApprox(links[2].frame, 1e-14));
+            QCOMPARE(loaded.scene.robot.links[0].shapes.at(0).rgba, base.rgba);
+        }
+        const std::string lost = "<robot name='r'><link name='a'/><joint name='j' type='revolute'><parent link='a'/><child link='b'/>"
+                                 "<axis xyz='0 0 1'/><limit lower='-1' upper='1' effort='1' velocity='1'/></joint>"
+                                 "<link name='b'><visual><geometry><mesh filename='package://nowhere/b.stl'/></geometry></visual></link></robot>";
+        const UrdfImport imported = importUrdf(lost, "/tmp/robot.urdf", {});
+        QCOMPARE(imported.scene.robot.links.at(1).shapes.at(0).mesh, std::string("package://nowhere/b.stl"));
+        QCOMPARE(int(imported.notes.size()), 1);
+        QVERIFY(present::messageText(imported.notes[0], present::Language::English).find("no folder named nowhere") != std::string::npos);
+    }
+
+    // A scene's "links" checked as every other field: one line naming the field.
+    void badLinksAreRefused() {
+        const std::string head = R"({"format": "lagrangelab-scene/1", "name": "x", "robot": {"convention": "standard", "joints": [
+            {"a": 1, "alpha": 0, "d": 0, "theta": 0, "mass": 1}], "links": )";
+        const std::pair<const char*, const char*> cases[] = {
+            {R"([{"body": 2}])", "robot.links[0].body"},  // fields 0-based inside, shown 1-based (one_based.hpp)
+            {R"([{"body": 1, "shapes": [{"box": [1, 0, 1]}]}])", "robot.links[0].shapes[0].box[1]"},
+            {R"([{"body": 1, "shapes": [{"box": [1, 1, 1], "sphere": 1}]}])", "robot.links[0].shapes[0]"},
+            {R"([{"body": 1, "shapes": [{"sphere": 0.1, "rgba": [1, 0, 2, 1]}]}])", "robot.links[0].shapes[0].rgba[2]"},
+            {R"({"body": 1})", "robot.links"}};
+        for (const auto& [links, field] : cases) {
+            try {
+                parseScene(head + links + "}}");
+                QFAIL(links);
+            } catch (const InputError& e) {
+                QCOMPARE(QString::fromStdString(e.diagnostics().front().field), QString(field));
+            }
         }
     }
 };
