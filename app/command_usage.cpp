@@ -111,7 +111,9 @@ std::string overviewUsage() {
                     "           link, a time, the Torques or Properties tab, an exercise's answers judged; --present\n"
                     "           starts in presentation mode (full screen, or\n"
                     "           --size with --screenshot); --dh-step I,K the DH step-through at joint I after K of its\n"
-                    "           four elementary motions, --dh-dimensions every DH parameter drawn on the robot\n"
+                    "           four elementary motions, --dh-dimensions every DH parameter drawn on the robot,\n"
+                    "           --dh-from-axes I,K the DH frames found from the joint axes: frame I after K of\n"
+                    "           its rules (z, origin, x, y; 0,0 the axes alone)\n"
                     "\ncommands:\n";
     for (const CommandText& c : commands) s += "  " + synopsis(c, 2) + "\n" + indented(c.summary, "      ");
     return s + "\nexit codes: 0 success, 2 bad input, 3 simulation stopped early\n";

@@ -37,6 +37,8 @@
 #include "ui/document/app_language.hpp"
 #include "ui/window/dh_step_panel.hpp"
 #include "ui/window/scene_view.hpp"
+#include "ui/window/dh_axes_panel.hpp"
+#include "ui/window/dh_step_page.hpp"
 #include "ui/window/torque_pane.hpp"
 #include "ui/window/work_precision_pane.hpp"
 
@@ -45,7 +47,7 @@ namespace ll::cli {
 int windowCommand(const Args& args, const std::chrono::steady_clock::time_point& processStart) {
     const Options options(args,
                           {"screenshot", "play", "step", "teach", "size", "first-frame", "select", "pick-link", "at", "tab", "joint",
-                           "derivation", "present", "dh-step", "dh-dimensions"},
+                           "derivation", "present", "dh-step", "dh-dimensions", "dh-from-axes"},
                           {"first-frame", "present", "dh-dimensions"});
     if (options.positional().size() > 1) throw UsageError(UsageId::WindowTakesOneScene, options.positional().size());
     const std::string scene =
@@ -161,20 +163,31 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
         window.teach(q);
     }
     if (options.has("step")) window.showDerivationStep(static_cast<int>(step));
-    if (options.has("dh-step")) {
-        // I,K: joint I (from 1), K of its four elementary motions done (0..4).
-        const std::string text = options.text("dh-step");
-        int joint = 0, done = -1;
+    // --dh-step I,K and --dh-from-axes I,K: two integers, each in its range, of a DH robot.
+    const auto pairOf = [&](const char* option, int firstMin, int firstMax, UsageId id) {
+        const std::string text = options.text(option);
+        int first = 0, second = -1;
         char comma = 0, rest = 0;
-        const bool parsed = std::sscanf(text.c_str(), "%d%c%d%c", &joint, &comma, &done, &rest) == 3 && comma == ',';
-        if (!parsed || window.document().validScene().lagrangian || joint < 1 || joint > n || done < 0 || done > 4)
-            throw UsageError(UsageId::DhStepExpected, text, n);
+        const bool parsed = std::sscanf(text.c_str(), "%d%c%d%c", &first, &comma, &second, &rest) == 3 && comma == ',';
+        if (!parsed || window.document().validScene().lagrangian || first < firstMin || first > firstMax || second < 0 || second > 4)
+            throw UsageError(id, text, n);
         window.showPlotTab("dh-steps");
+        return std::pair{first, second};
+    };
+    if (options.has("dh-step")) {  // joint I (from 1), K of its four elementary motions done (0..4)
+        const auto [joint, done] = pairOf("dh-step", 1, n, UsageId::DhStepExpected);
+        window.dhStepPage().setCurrentWidget(window.dhStepPage().rows());
         window.dhStepPanel().setStep(joint - 1, done);
+    }
+    if (options.has("dh-from-axes")) {  // frame I (0..n) after K of its rules (z, origin, x, y)
+        const auto [frame, done] = pairOf("dh-from-axes", 0, n, UsageId::DhFromAxesExpected);
+        window.dhStepPage().setCurrentWidget(window.dhStepPage().axes());
+        window.dhStepPage().axes()->setStep(ll::DhConstruction::index(frame, done));
     }
     if (options.has("dh-dimensions")) {  // every DH parameter drawn on the robot
         if (window.document().validScene().lagrangian) throw UsageError(UsageId::DhDimensionsNeedRobot, scene);
         window.showPlotTab("dh-steps");
+        window.dhStepPage().setCurrentWidget(window.dhStepPage().rows());
         window.dhStepPanel().setShowDimensions(true);
     }
     if (play > 0) {

@@ -165,6 +165,203 @@
     </message>
 </context>
 <context>
+    <name>DhAxesPanel</name>
+    <message>
+        <location filename="../../ui/window/dh_axes_panel.cpp" line="+60" />
+        <source>« The axes</source>
+        <translation>« Akserne</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>◀ Previous rule</source>
+        <translation>◀ Forrige regel</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Next rule ▶</source>
+        <translation>Næste regel ▶</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The table »</source>
+        <translation>Tabellen »</translation>
+    </message>
+    <message>
+        <location line="+28" />
+        <source>A typed Lagrangian has no joint axes: finding the DH parameters needs a robot.</source>
+        <translation>En indtastet Lagrange-funktion har ingen ledakser: at finde DH-parametrene kræver en robot.</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>Rule %1 of %2</source>
+        <translation>Regel %1 af %2</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>The joint axes</source>
+        <translation>Leddenes akser</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The robot stands at home (all q = 0). Joint i turns about (or slides along) its axis, the line marked q&lt;sub&gt;i&lt;/sub&gt;. The rules now place frames 0 to %1 on these lines, one rule at a time: z, then the origin o, then x, then y.</source>
+        <translation>Robotten står i hjemmestillingen (alle q = 0), og leddenes akser er tegnet: led i drejer om (eller glider langs) sin akse, linjen mærket q&lt;sub&gt;i&lt;/sub&gt;. Reglerne placerer nu rammerne 0 til %1 på disse linjer, én regel ad gangen: z, så origo o, så x, så y.</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Frame %1: z</source>
+        <translation>Ramme %1: z</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Frame %1 is the tool's: %2 is taken along the last joint's axis.</source>
+        <translation>Ramme %1 er værktøjets: %2 lægges langs det sidste leds akse.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <location line="+2" />
+        <source>%1 lies on the axis of joint %2, pointing the way q&lt;sub&gt;%2&lt;/sub&gt; turns it (right-hand rule) or slides it.</source>
+        <translation>%1 ligger på led %2s akse og peger, som q&lt;sub&gt;%2&lt;/sub&gt; drejer det (højrehåndsreglen) eller skubber det.</translation>
+    </message>
+    <message>
+        <location line="-1" />
+        <source>%1 lies on the axis of joint 1: frame 0 is frame 1 at home as far as the rules allow.</source>
+        <translation>%1 ligger på led 1s akse: ramme 0 er ramme 1 i hjemmestillingen, så vidt reglerne tillader.</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>the axis of joint %1</source>
+        <translation>led %1s akse</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Frame %1: the origin</source>
+        <translation>Ramme %1: origo</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1 may lie anywhere on %2: it is taken where %2 comes nearest to the world's origin.</source>
+        <translation>%1 må ligge hvor som helst på %2: det lægges, hvor %2 kommer nærmest verdens origo.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1 is put at the tool's origin.</source>
+        <translation>%1 lægges i værktøjets origo.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 is where %2 meets %3, so d&lt;sub&gt;%4&lt;/sub&gt; = 0.</source>
+        <translation>%1 er, hvor %2 møder %3, så d&lt;sub&gt;%4&lt;/sub&gt; = 0.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>%1 and %2 are skew: they have exactly one common normal (the magenta line). %3 is where it meets %4.</source>
+        <translation>%1 og %2 er vindskæve: de har præcis én fælles normal (den magentafarvede linje). %3 er, hvor den møder %4.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>%1 and %2 intersect: %3 is where they meet, so a&lt;sub&gt;%4&lt;/sub&gt; = 0.</source>
+        <translation>%1 og %2 skærer hinanden: %3 er, hvor de mødes, så a&lt;sub&gt;%4&lt;/sub&gt; = 0.</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>%1 and %2 are parallel: every normal to one is normal to the other, so the rule leaves the origin free. Chosen: the normal through the previous origin, so d&lt;sub&gt;%3&lt;/sub&gt; = 0.</source>
+        <translation>%1 og %2 er parallelle: enhver normal til den ene er normal til den anden, så reglen lader origo være frit. Valgt: normalen gennem det forrige origo, så d&lt;sub&gt;%3&lt;/sub&gt; = 0.</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>%1 and %2 lie on one line: %3 stays at the previous origin (a = 0 and d = 0 between them).</source>
+        <translation>%1 og %2 ligger på samme linje: %3 bliver i det forrige origo (a = 0 og d = 0 mellem dem).</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The two axes point opposite ways: α = 180°. z is never turned round to avoid it, or q would turn the joint the other way.</source>
+        <translation>De to akser peger modsat: α = 180°. z vendes aldrig om for at undgå det, for så ville q dreje leddet den anden vej.</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Frame %1: x</source>
+        <translation>Ramme %1: x</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 is any direction perpendicular to %2: the world's x (or y) made perpendicular, so frame 0 matches the world where it can.</source>
+        <translation>%1 er en vilkårlig retning vinkelret på %2: verdens x (eller y) gjort vinkelret, så ramme 0 følger verden, hvor den kan.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1 points from the last axis to the tool's origin (along %2 when the tool's origin is on that axis).</source>
+        <translation>%1 peger fra den sidste akse mod værktøjets origo (langs %2, når værktøjets origo ligger på aksen).</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 = %2 (made perpendicular to %3), so θ&lt;sub&gt;%4&lt;/sub&gt; = 0 at home.</source>
+        <translation>%1 = %2 (gjort vinkelret på %3), så θ&lt;sub&gt;%4&lt;/sub&gt; = 0 i hjemmestillingen.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1 is perpendicular to both axes: ±(%2 × %3). The sign is a choice: the one that keeps θ = 0 at home.</source>
+        <translation>%1 er vinkelret på begge akser: ±(%2 × %3). Fortegnet er et valg: det, der giver θ = 0 i hjemmestillingen.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1 is free around the one line: kept as %2, so θ = 0.</source>
+        <translation>%1 er fri omkring den ene linje: beholdt som %2, så θ = 0.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 lies along the common normal, pointing from %2 to %3.</source>
+        <translation>%1 ligger langs den fælles normal og peger fra %2 mod %3.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 lies along the common normal, pointing from %2 to the axis of joint %3.</source>
+        <translation>%1 ligger langs den fælles normal og peger fra %2 mod led %3s akse.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Frame %1: y</source>
+        <translation>Ramme %1: y</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 = %2 × %3 completes a right-handed frame.</source>
+        <translation>%1 = %2 × %3 fuldender en højrehåndet ramme.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Row %1 of the table is read off frames %2 and %1.</source>
+        <translation>Række %1 i tabellen aflæses af rammerne %2 og %1.</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>The scene's own table is the one the rules give.</source>
+        <translation>Scenens egen tabel er den, reglerne giver.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The scene's own table differs in row(s) %1: the rules leave choices (an origin on parallel axes, a sign of x) that the scene made another way. Both describe the same robot.</source>
+        <translation>Scenens egen tabel afviger i række(r) %1: reglerne lader valg stå åbne (et origo på parallelle akser, fortegnet på x), som scenen har truffet anderledes. Begge beskriver den samme robot.</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Frame 0 is not the world's frame: a base transform, which DH cannot express, places it.</source>
+        <translation>Ramme 0 er ikke verdens ramme: en basistransformation, som DH ikke kan udtrykke, placerer den.</translation>
+    </message>
+</context>
+<context>
+    <name>DhStepPage</name>
+    <message>
+        <location filename="../../ui/window/dh_step_page.cpp" line="+16" />
+        <source>Find the DH parameters</source>
+        <translation>Find DH-parametrene</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Row by row</source>
+        <translation>Række for række</translation>
+    </message>
+</context>
+<context>
     <name>DhStepPanel</name>
     <message>
         <location filename="../../ui/window/dh_step_panel.cpp" line="+58" />
@@ -887,7 +1084,7 @@
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../ui/window/main_window.cpp" line="+122" />
+        <location filename="../../ui/window/main_window.cpp" line="+123" />
         <source>Model</source>
         <translation>Model</translation>
     </message>
@@ -937,7 +1134,7 @@
         <translation>Grafer</translation>
     </message>
     <message>
-        <location line="+23" />
+        <location line="+25" />
         <source>Energy</source>
         <translation>Energi</translation>
     </message>
@@ -948,12 +1145,12 @@
     </message>
     <message>
         <location line="+0" />
-        <location line="+119" />
+        <location line="+123" />
         <source>Teach</source>
         <translation>Teach</translation>
     </message>
     <message>
-        <location line="-119" />
+        <location line="-123" />
         <source>Torques</source>
         <translation>Momenter</translation>
     </message>
@@ -973,7 +1170,12 @@
         <translation>DH-gennemgang</translation>
     </message>
     <message>
-        <location line="+73" />
+        <location line="+17" />
+        <source>Meshes not read, so the DH drawing is shown: %1</source>
+        <translation>Mesh-filer kunne ikke læses, så DH-tegningen vises: %1</translation>
+    </message>
+    <message>
+        <location line="+60" />
         <source>&amp;File</source>
         <translation>&amp;Filer</translation>
     </message>
@@ -1063,7 +1265,7 @@
         <translation>Præsentér</translation>
     </message>
     <message>
-        <location line="+59" />
+        <location line="+60" />
         <source>Simulation failed: %1</source>
         <translation>Simuleringen mislykkedes: %1</translation>
     </message>
@@ -1751,6 +1953,11 @@
         <location line="+1" />
         <source>trail</source>
         <translation>spor</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>meshes</source>
+        <translation>mesh</translation>
     </message>
 </context>
 <context>

@@ -200,6 +200,10 @@ private slots:
         QVERIFY(bar);
         QStringList shown;
         for (QToolButton* b : bar->findChildren<QToolButton*>()) {
+            if (b->text() == "mesh") {  // only for a robot drawn by its meshes (from URDF): not the 2R
+                QVERIFY(b->isHidden());
+                continue;
+            }
             QVERIFY2(b->isVisible(), qPrintable(b->text()));
             const QRect r(b->mapTo(bar, QPoint(0, 0)), b->size());
             QVERIFY2(bar->rect().contains(r), qPrintable(b->text()));

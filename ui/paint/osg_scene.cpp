@@ -2,6 +2,7 @@
 
 #include "core/visual/frame_labels.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -14,6 +15,7 @@
 #include <osg/Material>
 #include <osg/Point>
 #include <osg/ShapeDrawable>
+#include <osgDB/ReadFile>
 #include <osgText/Text>
 
 namespace ll::ui {
@@ -45,8 +47,41 @@ osg::ref_ptr<osg::TessellationHints> hints() {
 
 void addShape(osg::Geode& geode, osg::Shape* shape) { geode.addDrawable(new osg::ShapeDrawable(shape, hints().get())); }
 
-// The solid of a part in its own frame; stretching parts at unit length.
-osg::ref_ptr<osg::Geode> solid(const VisualPart& part) {
+// A mesh file read by OpenSceneGraph's plugins (STL; DAE, OBJ where Debian's build reads
+// them), kept in its registry's cache so a rebuild after an edit reads no file again;
+// null with `failure` set when there is none or it cannot be read.
+osg::ref_ptr<osg::Node> meshNode(const std::string& file, const std::string& directory, std::string& failure) {
+    std::string path = file;
+    if (path.rfind("file://", 0) == 0) path = path.substr(7);
+    if (path.rfind("package://", 0) == 0) {
+        failure = file + ": package:// not resolved";
+        return nullptr;
+    }
+    std::filesystem::path resolved(path);
+    if (resolved.is_relative() && !directory.empty()) resolved = std::filesystem::path(directory) / resolved;
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(resolved, error)) {
+        failure = resolved.string() + ": no such file";
+        return nullptr;
+    }
+    osg::ref_ptr<osgDB::Options> options = new osgDB::Options;
+    options->setObjectCacheHint(osgDB::Options::CACHE_NODES);
+    osg::ref_ptr<osg::Node> node = osgDB::readRefNodeFile(resolved.string(), options.get());
+    if (!node) failure = resolved.string() + ": OpenSceneGraph cannot read it";
+    return node;
+}
+
+// The solid of a part in its own frame; stretching parts at unit length. A mesh that
+// cannot be read is an empty node, and why is appended to `failures`.
+osg::ref_ptr<osg::Node> solid(const VisualPart& part, const std::string& meshDirectory, std::vector<std::string>& failures) {
+    if (part.shape == PartShape::Mesh) {
+        osg::ref_ptr<osg::MatrixTransform> scaled = new osg::MatrixTransform(osg::Matrixd::scale(part.box.x(), part.box.y(), part.box.z()));
+        std::string failure;
+        if (osg::ref_ptr<osg::Node> mesh = meshNode(part.mesh, meshDirectory, failure)) scaled->addChild(mesh);
+        else failures.push_back(failure);
+        setMaterial(*scaled, part.color);
+        return scaled;
+    }
     osg::ref_ptr<osg::Geode> geode = new osg::Geode;
     const float r = float(part.radius), length = float(part.length);
     switch (part.shape) {
@@ -65,6 +100,7 @@ osg::ref_ptr<osg::Geode> solid(const VisualPart& part) {
             addShape(*geode, new osg::Box(osg::Vec3(0, -mid, 0), 2 * r - 2 * wall, wall, length));
             break;
         }
+        case PartShape::Mesh: break;
     }
     setMaterial(*geode, part.color);
     return geode;
@@ -202,8 +238,9 @@ OsgScene::OsgScene(const VisualScene& scene, const OsgSceneOptions& options) : o
         osg::ref_ptr<osg::MatrixTransform> transform = new osg::MatrixTransform;
         transform->setDataVariance(osg::Object::DYNAMIC);
         transform->setName(part.name);
-        transform->addChild(solid(part));
+        transform->addChild(solid(part, options_.meshDirectory, meshFailures_));
         parts_.push_back(transform);
+        roles_.push_back(part.role);
         stretch_.push_back(stretches(part.shape));
         // a link's parts in its colour when emphasised (its COM marker too)
         colours_.push_back(part.role == PartRole::CentreOfMass && part.coordinate >= 0 ? linkColor(part.coordinate) : part.color);
@@ -307,6 +344,7 @@ OsgScene::OsgScene(const VisualScene& scene, const OsgSceneOptions& options) : o
         state->setRenderingHint(osg::StateSet::TRANSPARENT_BIN);
         root_->addChild(dropGeode_);
     }
+    setShowLook(options_.look);
     update(scene);
 }
 
@@ -354,27 +392,18 @@ void OsgScene::setMovingFrame(const Eigen::Isometry3d* pose) {
     moving_->setMatrix(toOsgMatrix(pose->matrix()));
 }
 
-void OsgScene::setDimensions(const std::vector<DhDimension>* dimensions) {
-    if (dimensions_) root_->removeChild(dimensions_);
-    dimensions_ = nullptr;
-    if (!dimensions || dimensions->empty()) return;
-    dimensions_ = new osg::Group;
-    osg::StateSet* state = dimensions_->getOrCreateStateSet();
-    state->setMode(GL_LIGHTING, osg::StateAttribute::OFF | osg::StateAttribute::PROTECTED);
-    state->setMode(GL_DEPTH_TEST, osg::StateAttribute::OFF);
-    state->setRenderBinDetails(16, "RenderBin");
-    state->setAttributeAndModes(new osg::LineWidth(2.5f));
-    state->setAttributeAndModes(new osg::Point(6.0f));
-    osg::ref_ptr<osgText::Font> font = labelFont();
-    for (const DhDimension& d : *dimensions) {
-        // θ orange, d blue, a green, α purple: the same in every row.
-        const osg::Vec4 colour = d.parameter == DhParameter::Theta ? osg::Vec4(0.85f, 0.45f, 0.0f, 1)
-                                 : d.parameter == DhParameter::D   ? osg::Vec4(0.0f, 0.45f, 0.75f, 1)
-                                 : d.parameter == DhParameter::A   ? osg::Vec4(0.0f, 0.55f, 0.3f, 1)
-                                                                   : osg::Vec4(0.6f, 0.2f, 0.65f, 1);
+namespace {
+
+// A polyline over the solids (the group's state: no lighting, no depth test) with its
+// end points as dots and an outlined label; `width` [px] when it differs from the group's.
+osg::ref_ptr<osg::Geode> overlayLine(const std::vector<Eigen::Vector3d>& points, const osg::Vec4& colour, const std::string& label,
+                                     const Eigen::Vector3d& labelAt, double labelPixels, float width = 0) {
+    osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+    if (width > 0) geode->getOrCreateStateSet()->setAttributeAndModes(new osg::LineWidth(width));
+    if (!points.empty()) {
         osg::ref_ptr<osg::Geometry> line = new osg::Geometry;
         osg::ref_ptr<osg::Vec3Array> vertices = new osg::Vec3Array;
-        for (const Eigen::Vector3d& p : d.points) vertices->push_back(toOsg(p));
+        for (const Eigen::Vector3d& p : points) vertices->push_back(toOsg(p));
         line->setVertexArray(vertices);
         osg::ref_ptr<osg::Vec4Array> colours = new osg::Vec4Array(1);
         (*colours)[0] = colour;
@@ -382,25 +411,81 @@ void OsgScene::setDimensions(const std::vector<DhDimension>* dimensions) {
         line->addPrimitiveSet(new osg::DrawArrays(GL_LINE_STRIP, 0, static_cast<GLsizei>(vertices->size())));
         osg::ref_ptr<osg::DrawElementsUShort> ends = new osg::DrawElementsUShort(GL_POINTS);
         ends->push_back(0);
-        ends->push_back(static_cast<unsigned short>(vertices->size() - 1));
+        if (vertices->size() > 1) ends->push_back(static_cast<unsigned short>(vertices->size() - 1));
         line->addPrimitiveSet(ends);
-        osg::ref_ptr<osg::Geode> geode = new osg::Geode;
         geode->addDrawable(line);
+    }
+    if (!label.empty()) {
         osg::ref_ptr<osgText::Text> text = new osgText::Text;
-        text->setFont(font.get());
-        text->setText(d.label, osgText::String::ENCODING_UTF8);
+        text->setFont(labelFont().get());
+        text->setText(label, osgText::String::ENCODING_UTF8);
         text->setCharacterSizeMode(osgText::Text::SCREEN_COORDS);
-        text->setCharacterSize(float(0.8 * options_.labelPixels));
+        text->setCharacterSize(float(labelPixels));
         text->setAxisAlignment(osgText::Text::SCREEN);
         text->setAlignment(osgText::Text::LEFT_CENTER);
-        text->setPosition(toOsg(d.labelAt));
+        text->setPosition(toOsg(labelAt));
         text->setColor(colour);
         text->setBackdropType(osgText::Text::OUTLINE);
         text->setBackdropColor(osg::Vec4(1, 1, 1, 0.9f));
         geode->addDrawable(text);
-        dimensions_->addChild(geode);
+    }
+    return geode;
+}
+
+// A group drawn over the solids, lines `width` wide.
+osg::ref_ptr<osg::Group> overlayGroup(float width) {
+    osg::ref_ptr<osg::Group> group = new osg::Group;
+    osg::StateSet* state = group->getOrCreateStateSet();
+    state->setMode(GL_LIGHTING, osg::StateAttribute::OFF | osg::StateAttribute::PROTECTED);
+    state->setMode(GL_DEPTH_TEST, osg::StateAttribute::OFF);
+    state->setRenderBinDetails(16, "RenderBin");
+    state->setAttributeAndModes(new osg::LineWidth(width));
+    state->setAttributeAndModes(new osg::Point(6.0f));
+    return group;
+}
+
+}  // namespace
+
+void OsgScene::setDimensions(const std::vector<DhDimension>* dimensions) {
+    if (dimensions_) root_->removeChild(dimensions_);
+    dimensions_ = nullptr;
+    if (!dimensions || dimensions->empty()) return;
+    dimensions_ = overlayGroup(2.5f);
+    for (const DhDimension& d : *dimensions) {
+        // θ orange, d blue, a green, α purple: the same in every row.
+        const osg::Vec4 colour = d.parameter == DhParameter::Theta ? osg::Vec4(0.85f, 0.45f, 0.0f, 1)
+                                 : d.parameter == DhParameter::D   ? osg::Vec4(0.0f, 0.45f, 0.75f, 1)
+                                 : d.parameter == DhParameter::A   ? osg::Vec4(0.0f, 0.55f, 0.3f, 1)
+                                                                   : osg::Vec4(0.6f, 0.2f, 0.65f, 1);
+        dimensions_->addChild(overlayLine(d.points, colour, d.label, d.labelAt, 0.8 * options_.labelPixels));
     }
     root_->addChild(dimensions_);
+}
+
+void OsgScene::setConstruction(const std::vector<ConstructionMark>* marks) {
+    if (construction_) root_->removeChild(construction_);
+    construction_ = nullptr;
+    if (!marks || marks->empty()) return;
+    construction_ = overlayGroup(2.0f);
+    construction_->getOrCreateStateSet()->setAttributeAndModes(new osg::Point(9.0f));
+    using Kind = ConstructionMarkKind;
+    for (const ConstructionMark& m : *marks) {
+        // The axes grey, those in use orange, the normal magenta, frames red/green/blue as the triads.
+        osg::Vec4 colour(0.45f, 0.45f, 0.45f, 1);
+        float width = 0;
+        switch (m.kind) {
+            case Kind::Axis: width = 1.5f; break;
+            case Kind::AxisInUse: colour = osg::Vec4(0.9f, 0.5f, 0.0f, 1), width = 3.5f; break;
+            case Kind::Normal: colour = osg::Vec4(0.8f, 0.1f, 0.6f, 1), width = 3.0f; break;
+            case Kind::Origin: colour = osg::Vec4(0.1f, 0.1f, 0.1f, 1); break;
+            case Kind::FrameX: colour = osg::Vec4(0.85f, 0.1f, 0.1f, 1), width = 3.5f; break;
+            case Kind::FrameY: colour = osg::Vec4(0.1f, 0.6f, 0.1f, 1), width = 3.5f; break;
+            case Kind::FrameZ: colour = osg::Vec4(0.1f, 0.25f, 0.9f, 1), width = 3.5f; break;
+            case Kind::OverlayFrame: colour = osg::Vec4(0.55f, 0.35f, 0.7f, 1), width = 1.5f; break;
+        }
+        construction_->addChild(overlayLine(m.points, colour, m.label, m.labelAt, 0.85 * options_.labelPixels, width));
+    }
+    root_->addChild(construction_);
 }
 
 void OsgScene::placeLabels(const VisualScene& scene, const CameraView& view, int width, int height) {
@@ -451,6 +536,17 @@ void OsgScene::setTrail(const std::vector<Eigen::Vector3d>& points) {
     vertices->dirty();
     colours->dirty();
     trail_->dirtyBound();
+}
+
+bool OsgScene::hasLook() const { return std::find(roles_.begin(), roles_.end(), PartRole::Look) != roles_.end(); }
+
+void OsgScene::setShowLook(bool on) {
+    showsLook_ = on && hasLook() && meshFailures_.empty();
+    for (std::size_t i = 0; i < parts_.size(); ++i) {
+        const PartRole role = roles_[i];
+        if (role == PartRole::Look) parts_[i]->setNodeMask(showsLook_ ? ~0u : 0u);
+        else if (role == PartRole::Link || role == PartRole::Joint || role == PartRole::Pedestal) parts_[i]->setNodeMask(showsLook_ ? 0u : ~0u);
+    }
 }
 
 void OsgScene::setPartVisible(int i, bool on) { parts_[static_cast<std::size_t>(i)]->setNodeMask(on ? ~0u : 0u); }

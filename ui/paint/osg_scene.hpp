@@ -4,6 +4,7 @@
 // Per frame only the part transforms and the trail change (update, setTrail). Knows no
 // GL context: the headless renderer (ui/paint/headless_renderer.hpp) and the desktop
 // window's 3D view (a native QOpenGLWindow) draw the same root.
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -17,6 +18,7 @@
 #include <osgText/Text>
 
 #include "core/visual/camera_view.hpp"
+#include "core/visual/dh_construction.hpp"
 #include "core/visual/visual_emphasis.hpp"
 #include "core/visual/visual_scene.hpp"
 
@@ -29,6 +31,8 @@ struct OsgSceneOptions {
     bool grid = true;         // the ground grid
     bool dropLines = true;    // a line from each centre of mass down to the ground, a dot at its foot
     double labelPixels = 18;  // label height on screen [px]
+    bool look = true;         // the robot's own look (its meshes and shapes) instead of the DH drawing, where it has one
+    std::string meshDirectory;  // where a relative mesh path starts: the scene file's folder
 };
 
 class OsgScene {
@@ -47,6 +51,13 @@ public:
 
     // The transform of part i (what a test reads back as "drawn").
     const osg::MatrixTransform* partTransform(int i) const { return parts_[i].get(); }
+    // The robot's own look (PartRole::Look: a URDF's meshes and shapes) instead of the DH
+    // links, joints and pedestal, or the DH drawing back. Shown only when every mesh was
+    // read: one that was not (meshFailures) leaves the DH drawing.
+    void setShowLook(bool on);
+    bool hasLook() const;
+    bool showsLook() const { return showsLook_; }
+    const std::vector<std::string>& meshFailures() const { return meshFailures_; }
     // Shows or hides part i (the window's centre-of-mass toggle).
     void setPartVisible(int i, bool on);
     // Draws part i in the highlight colour (a joint selected or hovered in the window).
@@ -57,6 +68,9 @@ public:
     // The DH table drawn on the robot (core/visual/dh_dimensions.hpp): arrows and arcs
     // with their labels, over the solids, a colour per kind of parameter; null removes them.
     void setDimensions(const std::vector<DhDimension>* dimensions);
+    // Step 0 rule by rule (core/visual/dh_construction.hpp): the joints' lines, the normals
+    // and the frames placed so far, over the solids; null removes them.
+    void setConstruction(const std::vector<ConstructionMark>* marks);
     // Shows or hides the drop lines (with the centres of mass they hang from).
     void setDropLinesVisible(bool on);
     // Places the frame labels for a picture of width × height seen through `view`
@@ -76,6 +90,9 @@ private:
     osg::ref_ptr<osg::Group> groundGroup_;
     std::vector<osg::ref_ptr<osg::MatrixTransform>> parts_, frames_;
     std::vector<bool> stretch_;
+    std::vector<PartRole> roles_;
+    std::vector<std::string> meshFailures_;  // "path: why", one per mesh not read
+    bool showsLook_ = false;
     std::vector<Rgba> built_;                               // each part's colour as built
     std::vector<Rgba> colours_;                             // and when its link is emphasised
     std::vector<osg::ref_ptr<osg::MatrixTransform>> axes_;  // per part: a joint's axis line (null elsewhere)
@@ -83,7 +100,7 @@ private:
     osg::ref_ptr<osg::Geometry> trail_;
     osg::ref_ptr<osg::MatrixTransform> moving_;
     osg::ref_ptr<osg::Geometry> drops_;
-    osg::ref_ptr<osg::Group> dimensions_;
+    osg::ref_ptr<osg::Group> dimensions_, construction_;
     std::vector<osg::ref_ptr<osgText::Text>> labels_;     // per frame (null: no label)
     std::vector<osg::ref_ptr<osg::Geode>> leaderGeodes_;  // per frame: the line anchor → moved label
     osg::ref_ptr<osg::Geode> dropGeode_;

@@ -23,6 +23,7 @@
 #include "ui/window/derivation_panel.hpp"
 #include "ui/window/derivation_view.hpp"
 #include "ui/window/dh_step_link.hpp"
+#include "ui/window/dh_step_page.hpp"
 #include "ui/window/dh_step_panel.hpp"
 #include "ui/document/shown_derivation.hpp"
 #include "ui/window/edit_frame.hpp"
@@ -195,9 +196,11 @@ void MainWindow::buildDocks() {
     parts_.torques = new TorquePane(tabs);
     parts_.properties = new PropertiesPanel(tabs);
     parts_.workPrecision = new WorkPrecisionPane(tabs);
-    parts_.dhSteps = new DhStepPanel(tabs);
+    parts_.dhPage = new DhStepPage(tabs);
+    parts_.dhSteps = parts_.dhPage->rows();
+    parts_.dhAxes = parts_.dhPage->axes();
     for (QWidget* page : std::initializer_list<QWidget*>{energyPage, parts_.joints, parts_.teach, parts_.torques, parts_.properties,
-                                                         parts_.workPrecision, parts_.dhSteps})
+                                                         parts_.workPrecision, parts_.dhPage})
         tabs->addTab(page, QString());
     (*relabel_)([tabs] {
         int i = 0;
@@ -217,6 +220,10 @@ void MainWindow::buildFeatures() {
     exports_ = std::make_unique<ExportActions>(doc_, shown_, parts_);
     linking_ = std::make_unique<EntryLinking>(selection_, shown_, parts_);
     dhStepLink_ = std::make_unique<DhStepLink>(parts_);
+    connect(dhStepLink_.get(), &DhStepLink::homeReleased, this, [this] { showTime(parts_.playback->time()); });
+    connect(parts_.view, &SceneView::meshesNotRead, this, [this](const QStringList& failures) {
+        statusBar()->showMessage(tr("Meshes not read, so the DH drawing is shown: %1").arg(failures.join("; ")), 20000);
+    });
     teachMode_ = std::make_unique<TeachMode>(doc_, selection_, *dhStepLink_, parts_);
     presentationMode_ = std::make_unique<PresentationMode>(parts_);
     language_ = std::make_unique<LanguageMenu>(*this);
@@ -370,7 +377,8 @@ void MainWindow::validSceneChanged() {
     ghost_->sceneChanged(scene);
     derive_.request(scene);
     parts_.teach->setScene(scene);
-    parts_.dhSteps->setRobot(scene.robot, !scene.lagrangian);
+    parts_.view->setMeshDirectory(doc_.path().isEmpty() ? QString() : QFileInfo(doc_.path()).absolutePath());
+    dhStepLink_->sceneChanged(scene);
     teachMode_->sceneChanged();
     parts_.workPrecision->setScene(scene);
     exercise_->sceneChanged();
@@ -442,7 +450,9 @@ void MainWindow::showAnalysis(std::shared_ptr<const RunAnalysis> analysis) {
 void MainWindow::showTime(double t) {
     if (!shown_.sampler || !shown_.result) return;
     shown_.sampler->sample(t, q_, qd_);
-    if (!teachMode_->active()) {
+    if (dhStepLink_->holdsHome()) {
+        dhStepLink_->showHome();  // a new run or an edit while the frames are being found
+    } else if (!teachMode_->active()) {
         std::vector<Eigen::Vector3d> trail;
         if (!effectorPath_.empty()) {
             const Trajectory& tr = shown_.result->simulation.trajectory;

@@ -33,6 +33,7 @@ namespace ll::ui {
 
 class Autosave;
 class DhStepLink;
+class DhStepPage;
 class EditFrame;
 class EntryLinking;
 class ExerciseMode;
@@ -83,6 +84,7 @@ public:
     PropertiesPanel& propertiesPanel() { return *parts_.properties; }
     WorkPrecisionPane& workPrecisionPane() { return *parts_.workPrecision; }
     DhStepPanel& dhStepPanel() { return *parts_.dhSteps; }
+    DhStepPage& dhStepPage() { return *parts_.dhPage; }
 
     // The features.
     SceneFiles& files() { return *files_; }

@@ -142,16 +142,23 @@ void SceneView::rebuild() {
     if (visual_) {
         osg_ = std::make_unique<OsgScene>(*visual_, options_);
         root_->addChild(osg_->root());
-        for (std::size_t i = 0; i < visual_->parts.size(); ++i)
-            if (visual_->parts[i].role == PartRole::CentreOfMass) osg_->setPartVisible(static_cast<int>(i), coms_);
-        osg_->setDropLinesVisible(coms_);
+        showComs();
         if (options_.trail) osg_->setTrail(trail_);
         if (emphasis_.strength.size() == visual_->parts.size()) osg_->setEmphasis(emphasis_);
         updateMovingFrame();
+        if (!construction_.empty()) osg_->setConstruction(&construction_);
+        emit lookAvailable(osg_->hasLook());
+        QStringList failures;
+        for (const std::string& failure : osg_->meshFailures()) failures << QString::fromStdString(failure);
+        if (failures != meshFailures_) {
+            meshFailures_ = failures;
+            if (!failures.isEmpty()) emit meshesNotRead(failures);
+        }
     }
     if (ghostVisual_) {
         OsgSceneOptions ghostOptions;
         ghostOptions.frames = ghostOptions.frameLabels = ghostOptions.grid = ghostOptions.trail = false;
+        ghostOptions.meshDirectory = options_.meshDirectory;
         ghost_ = std::make_unique<OsgScene>(*ghostVisual_, ghostOptions);
         // Translucent: blended, drawn after the opaque robot, not writing depth.
         osg::StateSet* ss = ghost_->root()->getOrCreateStateSet();
@@ -213,6 +220,16 @@ void SceneView::setShowComs(bool on) {
     rebuild();
     requestFrame();
 }
+
+void SceneView::setShowLook(bool on) {
+    options_.look = on;
+    rebuild();
+    requestFrame();
+}
+
+void SceneView::setMeshDirectory(const QString& folder) { options_.meshDirectory = folder.toStdString(); }
+
+bool SceneView::showsLook() const { return osg_ && osg_->showsLook(); }
 
 void SceneView::setShowTrail(bool on) {
     options_.trail = on;
@@ -294,10 +311,28 @@ void SceneView::updateMovingFrame() {
     } else {
         osg_->setDimensions(nullptr);
     }
-    // Stepping through row i: only frames i−1 and i beside the moving one.
+    // Stepping through row i: only frames i−1 and i beside the moving one; finding the
+    // frames by the rules: none of the robot's own (the marks place them one by one).
     if (visual_)
         for (int k = 0; k < static_cast<int>(visual_->frames.size()); ++k)
-            osg_->setFrameVisible(k, !stepping || k == stepJoint_ || k == stepJoint_ + 1);
+            osg_->setFrameVisible(k, construction_.empty() && (!stepping || k == stepJoint_ || k == stepJoint_ + 1));
+}
+
+// The centres of mass as the toggle says, but not while the frames are being found (the
+// construction's lines would hide behind them).
+void SceneView::showComs() {
+    const bool on = coms_ && construction_.empty();
+    for (std::size_t i = 0; i < visual_->parts.size(); ++i)
+        if (visual_->parts[i].role == PartRole::CentreOfMass) osg_->setPartVisible(static_cast<int>(i), on);
+    osg_->setDropLinesVisible(on);
+}
+
+void SceneView::setConstruction(std::vector<ConstructionMark> marks) {
+    construction_ = std::move(marks);
+    if (osg_) osg_->setConstruction(construction_.empty() ? nullptr : &construction_);
+    if (osg_ && visual_) showComs();
+    updateMovingFrame();
+    requestFrame();
 }
 
 void SceneView::resizeGL(int w, int h) {

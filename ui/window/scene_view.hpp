@@ -14,6 +14,7 @@
 
 #include <Eigen/Core>
 #include <QImage>
+#include <QStringList>
 #include <QWidget>
 #include <osg/ref_ptr>
 
@@ -68,6 +69,12 @@ public:
     bool showLabels() const { return options_.frameLabels; }
     void setShowComs(bool on);
     void setShowTrail(bool on);
+    // The robot's own look (a URDF's meshes and shapes) instead of the DH drawing, where the
+    // scene has one and every mesh was read (else meshesNotRead says which were not);
+    // relative mesh paths start at `folder` (the scene file's).
+    void setShowLook(bool on);
+    bool showsLook() const;
+    void setMeshDirectory(const QString& folder);
     bool showFrames() const { return options_.frames; }
     bool showComs() const { return coms_; }
     bool showTrail() const { return options_.trail; }
@@ -81,6 +88,10 @@ public:
     // an arc with its value, kept up with the pose.
     void setShowDimensions(bool on);
     bool showDimensions() const { return dimensionsShown_; }
+    // Step 0 rule by rule (core/visual/dh_construction.hpp): these marks over the robot and
+    // none of its own DH frames; empty removes them and shows the frames again.
+    void setConstruction(std::vector<ConstructionMark> marks);
+    const std::vector<ConstructionMark>& construction() const { return construction_; }
     // The moving frame as drawn now (false when none is).
     bool dhStepFrame(Eigen::Isometry3d& frame) const;
     // The pose shown (q of the last setPose).
@@ -116,6 +127,8 @@ signals:
     void frameSwapped();  // the frame drawn is on screen
     void jointHovered(int joint);
     void jointClicked(int joint);
+    void meshesNotRead(const QStringList& failures);
+    void lookAvailable(bool available);  // whether the scene shown has a look of its own (meshes)  // "path: why" each; the DH drawing is shown
 
 private:
     class GlWindow;  // the native GL window; forwards its paint, resize and mouse events here
@@ -128,6 +141,7 @@ private:
     void rebuild();
     void applyCamera();
     void applyHighlight();
+    void showComs();
 
     GlWindow* gl_ = nullptr;  // owned by its container, a child of this widget
     osg::ref_ptr<osgViewer::Viewer> viewer_;
@@ -151,6 +165,8 @@ private:
     bool framePose_ = false;
     int stepJoint_ = -1, stepDone_ = 0;
     bool dimensionsShown_ = false;
+    std::vector<ConstructionMark> construction_;
+    QStringList meshFailures_;
     double stepFraction_ = 0;
     Eigen::VectorXd shownQ_;
     void updateMovingFrame();

@@ -23,6 +23,7 @@ ViewBar::ViewBar(SceneView* view, QWidget* parent) : QWidget(parent) {
         b->setAutoRaise(true);
         b->setDefaultAction(action);  // the action's shortcut lives as long as the button is shown
         layout->addWidget(b);
+        return b;
     };
     auto* fit = new QAction(this);
     fit->setShortcut(Qt::Key_F);
@@ -43,13 +44,19 @@ ViewBar::ViewBar(SceneView* view, QWidget* parent) : QWidget(parent) {
     for (const auto& [name, slot] : {std::pair{QT_TR_NOOP("frames"), &SceneView::setShowFrames},
                                      {QT_TR_NOOP("labels"), &SceneView::setShowLabels},
                                      {QT_TR_NOOP("COMs"), &SceneView::setShowComs},
-                                     {QT_TR_NOOP("trail"), &SceneView::setShowTrail}}) {
+                                     {QT_TR_NOOP("trail"), &SceneView::setShowTrail},
+                                     {QT_TR_NOOP("meshes"), &SceneView::setShowLook}}) {
         auto* a = new QAction(this);
         a->setCheckable(true);
         a->setChecked(true);
         connect(a, &QAction::toggled, view, slot);
         relabel([a, name = name] { a->setText(tr(name)); });
-        button(a);
+        QToolButton* b = button(a);
+        // The meshes button only for a robot that has meshes (one imported from URDF).
+        if (slot == &SceneView::setShowLook) {
+            b->hide();
+            connect(view, &SceneView::lookAvailable, b, &QWidget::setVisible);
+        }
     }
 }
 

@@ -19,6 +19,8 @@ namespace ll::ui {
 
 class DerivationPanel;
 class DerivationView;
+class DhAxesPanel;
+class DhStepPage;
 class DhStepPanel;
 class ExercisePanel;
 class ModelEditor;
@@ -57,7 +59,9 @@ struct WindowParts {
     TorquePane* torques = nullptr;
     PropertiesPanel* properties = nullptr;
     WorkPrecisionPane* workPrecision = nullptr;
-    DhStepPanel* dhSteps = nullptr;
+    DhStepPage* dhPage = nullptr;    // the DH step-through tab: its two pages below
+    DhStepPanel* dhSteps = nullptr;  // row by row
+    DhAxesPanel* dhAxes = nullptr;   // find the DH parameters
 };
 
 }  // namespace ll::ui
