@@ -15,18 +15,21 @@ namespace {
 
 QString sub(const QString& symbol, int k) { return QString("%1<sub>%2</sub>").arg(symbol).arg(k); }
 
+// Numbers as the textbook prints them: a minus sign, not a hyphen.
+QString printed(QString number) { return number.replace(QChar('-'), QChar(0x2212)); }
+
 // An angle as the table reads it: degrees, one decimal where needed.
 QString degrees(double radians) {
     const double d = radians * 180 / M_PI;
-    return QString::number(std::abs(d) < 5e-10 ? 0.0 : d, 'f', std::abs(d - std::round(d)) < 5e-10 ? 0 : 1) + "°";
+    return printed(QString::number(std::abs(d) < 5e-10 ? 0.0 : d, 'f', std::abs(d - std::round(d)) < 5e-10 ? 0 : 1)) + "°";
 }
 
-QString metres(double v) { return QString::number(std::abs(v) < 5e-13 ? 0.0 : v, 'g', 4) + " m"; }
+QString metres(double v) { return printed(QString::number(std::abs(v) < 5e-13 ? 0.0 : v, 'g', 4)) + " m"; }
 
 // A table cell holding the joint variable: "q₂", "q₂ − 90°", "q₃ + 0.1 m".
 QString withJoint(int i, double offset, const QString& shown) {
     if (std::abs(offset) < 5e-13) return sub("q", i);
-    return sub("q", i) + (offset < 0 ? " − " : " + ") + QString(shown).remove(QChar('-')).remove(QChar(0x2212));
+    return sub("q", i) + (offset < 0 ? " − " : " + ") + QString(shown).remove(QChar(0x2212));
 }
 
 }  // namespace
