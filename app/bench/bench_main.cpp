@@ -42,14 +42,25 @@ int benchRhs(const std::vector<std::string>& scenes, int batches) {
     std::printf("median time of one right-hand-side evaluation f(x, t) [µs] over %d batches of random states;\n"
                 "the right-hand side is composed from the declared effects only\n\n",
                 batches);
-    std::printf("%-24s %2s | %10s %12s %12s\n", "robot", "n", "no effects", "gravity only", "all effects");
+    std::printf("%-24s %2s | %10s %12s %12s %15s\n", "robot", "n", "no effects", "gravity only", "all effects", "gravity + CT");
     for (const std::string& path : scenes) {
         const Scene scene = loadSceneReportingWarnings(path);
         const RobotModel& robot = scene.robot;
         const int n = robot.dof();
         const States s = randomStates(robot, 64);
-        Effects none, gravity, all;
+        Effects none, gravity, all, controlled;
         gravity.gravity = all.gravity = scene.effects.gravity.value_or(Eigen::Vector3d(0, 0, -9.81));
+        // Computed torque following a quintic: one more Newton–Euler pass per call.
+        controlled.gravity = gravity.gravity;
+        Control ct;
+        ct.law = ControlLaw::ComputedTorque;
+        ct.kp = Eigen::VectorXd::Constant(n, 100.0);
+        ct.kd = Eigen::VectorXd::Constant(n, 20.0);
+        ct.reference.kind = ControlReference::Kind::Quintic;
+        ct.reference.q0 = Eigen::VectorXd::Zero(n);
+        ct.reference.q1 = Eigen::VectorXd::Constant(n, 0.5);
+        ct.reference.duration = 10.0;
+        controlled.control = ct;
         for (int j = 0; j < n; ++j) {
             all.springs.push_back({j, 10.0, 0.0});
             all.viscous.push_back({j, 0.1});
@@ -68,9 +79,11 @@ int benchRhs(const std::vector<std::string>& scenes, int batches) {
             OdeState dxdt(xs[0].size());
             return medianMicros(batches, static_cast<int>(xs.size()), [&](int k) { ode(xs[k], dxdt, 0.1 * k); });
         };
-        std::printf("%-24.24s %2d | %10.3f %12.3f %12.3f\n", scene.name.c_str(), n, time(none), time(gravity), time(all));
+        std::printf("%-24.24s %2d | %10.3f %12.3f %12.3f %15.3f\n", scene.name.c_str(), n, time(none), time(gravity), time(all),
+                    time(controlled));
     }
-    std::printf("\nall effects: gravity, a spring, viscous and Coulomb friction and a sine torque on every joint.\n");
+    std::printf("\nall effects: gravity, a spring, viscous and Coulomb friction and a sine torque on every joint.\n"
+                "gravity + CT: gravity and a computed-torque controller (core/simulation/controller) following a quintic.\n");
     return 0;
 }
 

@@ -16,6 +16,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
 #include "core/symbolic/expression.hpp"
@@ -566,7 +567,7 @@ private:
     }
 
     void readEffects(const Json& effects) {
-        if (!checkObject(effects, "effects", {"gravity", "springs", "viscous", "coulomb", "torques"})) return;
+        if (!checkObject(effects, "effects", {"gravity", "springs", "viscous", "coulomb", "torques", "control"})) return;
         if (member(effects, "gravity")) {
             Eigen::Vector3d gravity = Eigen::Vector3d::Zero();
             readVector3(effects, "effects", "gravity", gravity);
@@ -591,6 +592,144 @@ private:
         });
         readList<JointTorque>(effects, "torques", e.torques,
                               [this](const Json& j, const std::string& p, JointTorque& t) { readTorque(j, p, t); });
+        if (const Json* control = member(effects, "control")) readControl(*control);
+    }
+
+    // One number per joint at `key` of `object` (revolute positions as angles when
+    // `angles`); `positive`: each > 0, else ≥ 0 when `nonNegative`. Empty when absent.
+    Eigen::VectorXd readPerJoint(const Json& object, const std::string& path, const std::string& key, bool angles = false,
+                                 bool positive = false, bool nonNegative = false) {
+        const Json* value = member(object, key);
+        const int n = scene_.dof();
+        if (!value) return {};
+        const std::string field = child(path, key);
+        if (!value->is_array() || static_cast<int>(value->size()) != n) {
+            error(field, message(MessageId::JsonExpectedGot, message(MessageId::WantedPerJoint, n), describe(*value)));
+            return {};
+        }
+        Eigen::VectorXd out = Eigen::VectorXd::Zero(n);
+        for (int i = 0; i < n; ++i) {
+            const std::string at = item(field, static_cast<std::size_t>(i));
+            const auto x = number((*value)[static_cast<std::size_t>(i)], at, angles ? jointAngle(i) : Angle::No);
+            if (!x) continue;
+            if ((positive && !(*x > 0)) || (nonNegative && !(*x >= 0)))
+                error(at, message(MessageId::JsonExpectedGot, Message(positive ? MessageId::WantedPositiveSize : MessageId::WantedNonNegative),
+                                  describe((*value)[static_cast<std::size_t>(i)])));
+            out[i] = *x;
+        }
+        return out;
+    }
+
+    // "control": a joint-space controller (core/model/control.hpp).
+    void readControl(const Json& value) {
+        const std::string path = "effects.control";
+        if (!checkObject(value, path, {"law", "kp", "kd", "reference", "model", "limits", "joints"})) return;
+        if (scene_.lagrangian) {
+            error(path, MessageId::ControlNeedsRobot);
+            return;
+        }
+        const int n = scene_.dof();
+        Control control;
+        if (const Json* law = required(value, path, "law", MessageId::ControlLawField))
+            if (auto choice = readChoice(*law, child(path, "law"), {"pd", "pd_gravity", "computed_torque", "feedforward"}))
+                control.law = static_cast<ControlLaw>(*choice);
+        for (const char* key : {"kp", "kd"}) {
+            if (!required(value, path, key, MessageId::ControlGainsField)) continue;
+            Eigen::VectorXd gains = readPerJoint(value, path, key, false, false, true);
+            (std::string(key) == "kp" ? control.kp : control.kd) = gains;
+        }
+        if (const Json* joints = member(value, "joints")) {
+            const std::string field = child(path, "joints");
+            if (!joints->is_array()) error(field, expectedGot(MessageId::WantedNumberArray, *joints));
+            else
+                for (std::size_t k = 0; k < joints->size(); ++k) {
+                    const Json& j = (*joints)[k];
+                    if (j.is_number_integer() && j.get<long long>() >= 1 && j.get<long long>() <= n) control.joints.push_back(static_cast<int>(j.get<long long>()) - 1);
+                    else error(item(field, k), expectedGot(MessageId::WantedJointNumber, j));
+                }
+            if (control.law == ControlLaw::ComputedTorque && !control.joints.empty() && static_cast<int>(control.joints.size()) < n)
+                error(field, message(MessageId::ComputedTorqueUnderactuated, static_cast<int>(control.joints.size()), n));
+        }
+        // A controlled joint needs K_p > 0 (K_d may be 0).
+        for (int i = 0; i < control.kp.size(); ++i)
+            if (control.drives(i) && !(control.kp[i] > 0))
+                error(item(child(path, "kp"), static_cast<std::size_t>(i)), message(MessageId::ControlledJointWithoutGain, i + 1));
+        if (const Json* reference = required(value, path, "reference", MessageId::ControlReferenceField))
+            readReference(*reference, child(path, "reference"), control.reference);
+        if (const Json* model = member(value, "model")) readControllerModel(*model, child(path, "model"), control.model);
+        if (const Json* limits = member(value, "limits"))
+            if (checkObject(*limits, child(path, "limits"), {"torque"})) control.torqueLimit = readPerJoint(*limits, child(path, "limits"), "torque", false, true);
+        scene_.effects.control = std::move(control);
+    }
+
+    void readReference(const Json& value, const std::string& path, ControlReference& r) {
+        static const Keys kinds = {"hold", "step", "quintic", "trapezoidal", "sine"};
+        static const Keys keysOf[] = {{"q"}, {"q0", "q1", "at"}, {"q0", "q1", "t0", "duration"},
+                                      {"q0", "q1", "t0", "velocity", "acceleration"}, {"q0", "amplitude", "frequency", "phase"}};
+        if (!value.is_object()) {
+            error(path, expectedGot(MessageId::WantedObject, value));
+            return;
+        }
+        std::optional<std::size_t> kind;
+        if (const Json* k = required(value, path, "kind", MessageId::ControlReferenceField)) kind = readChoice(*k, child(path, "kind"), kinds);
+        if (!kind) return;
+        r.kind = static_cast<ControlReference::Kind>(*kind);
+        Keys allowed = {"kind"};
+        allowed.insert(allowed.end(), keysOf[*kind].begin(), keysOf[*kind].end());
+        checkKeys(value, path, allowed);
+        const int n = scene_.dof();
+        const auto joints = [&](const char* key, bool angles, bool positive = false) {
+            if (!required(value, path, key, message(MessageId::WantedPerJoint, n))) return Eigen::VectorXd(Eigen::VectorXd::Zero(n));
+            Eigen::VectorXd v = readPerJoint(value, path, key, angles, positive);
+            return v.size() == n ? v : Eigen::VectorXd(Eigen::VectorXd::Zero(n));
+        };
+        switch (r.kind) {
+            case ControlReference::Kind::Hold: r.q0 = joints("q", true); break;
+            case ControlReference::Kind::Step:
+                r.q0 = joints("q0", true), r.q1 = joints("q1", true);
+                readNumber(value, path, "at", r.t0);
+                break;
+            case ControlReference::Kind::Quintic:
+                r.q0 = joints("q0", true), r.q1 = joints("q1", true);
+                readNumber(value, path, "t0", r.t0);
+                readNumber(value, path, "duration", r.duration);
+                if (!(r.duration > 0)) error(child(path, "duration"), message(MessageId::JsonExpectedGot, Message(MessageId::WantedPositiveSize), describe(Json(r.duration))));
+                break;
+            case ControlReference::Kind::Trapezoidal:
+                r.q0 = joints("q0", true), r.q1 = joints("q1", true);
+                readNumber(value, path, "t0", r.t0);
+                r.velocity = joints("velocity", false, true), r.acceleration = joints("acceleration", false, true);
+                break;
+            case ControlReference::Kind::Sine:
+                r.q0 = joints("q0", true), r.amplitude = joints("amplitude", false);
+                readNumber(value, path, "frequency", r.frequency);
+                readNumber(value, path, "phase", r.phase, Angle::Yes);
+                break;
+        }
+    }
+
+    // The controller's own robot: a payload on the last link, links scaled.
+    void readControllerModel(const Json& value, const std::string& path, ControllerModel& m) {
+        if (!checkObject(value, path, {"payload", "scale"})) return;
+        if (const Json* payload = member(value, "payload")) {
+            const std::string field = child(path, "payload");
+            if (checkObject(*payload, field, {"mass", "com", "inertia"})) {
+                readNumber(*payload, field, "mass", m.payloadMass);
+                if (!(m.payloadMass >= 0)) error(child(field, "mass"), message(MessageId::JsonExpectedGot, Message(MessageId::WantedNonNegative), describe(Json(m.payloadMass))));
+                readVector3(*payload, field, "com", m.payloadCom);
+                if (const Json* inertia = member(*payload, "inertia")) {
+                    LinkInertia link;
+                    readInertia(*inertia, child(field, "inertia"), link);
+                    m.payloadInertia = link.inertia;
+                    // Physical: principal moments ≥ 0, each at most the sum of the other two.
+                    const Eigen::Vector3d p = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(link.inertia).eigenvalues();
+                    const double tolerance = 1e-12 * std::max(1.0, p.cwiseAbs().maxCoeff());
+                    if (p.minCoeff() < -tolerance || p[2] > p[0] + p[1] + tolerance)
+                        error(child(field, "inertia"), message(MessageId::PayloadInertiaImpossible, p[0], p[1], p[2]));
+                }
+            }
+        }
+        m.scale = readPerJoint(value, path, "scale", false, false, true);
     }
 
     void readTorque(const Json& entry, const std::string& path, JointTorque& torque) {

@@ -288,6 +288,57 @@ private:
                     break;
             }
         });
+        if (e.control) out["control"] = control(*e.control);
+        return out;
+    }
+
+    Json control(const Control& c) const {
+        const std::string path = "effects.control";
+        const auto perJoint = [&](const std::string& at, const Eigen::VectorXd& v) { return vector(at, v); };
+        Json out;
+        out["law"] = toString(c.law);
+        out["kp"] = perJoint(child(path, "kp"), c.kp);
+        out["kd"] = perJoint(child(path, "kd"), c.kd);
+        if (!c.joints.empty()) {
+            Json& joints = out["joints"] = Json::array();
+            for (const int j : c.joints) joints.push_back(j + 1);
+        }
+        const ControlReference& r = c.reference;
+        const std::string ref = child(path, "reference");
+        Json reference;
+        reference["kind"] = toString(r.kind);
+        const auto joints = [&](const char* key, const Eigen::VectorXd& v) { reference[key] = perJoint(child(ref, key), v); };
+        const auto scalar = [&](const char* key, double v) { reference[key] = number(child(ref, key), v); };
+        const bool move = r.kind == ControlReference::Kind::Step || r.kind == ControlReference::Kind::Quintic ||
+                          r.kind == ControlReference::Kind::Trapezoidal;  // from q0 to q1
+        if (move) joints("q0", r.q0), joints("q1", r.q1);
+        switch (r.kind) {
+            case ControlReference::Kind::Hold: joints("q", r.q0); break;
+            case ControlReference::Kind::Step: scalar("at", r.t0); break;
+            case ControlReference::Kind::Quintic: scalar("t0", r.t0), scalar("duration", r.duration); break;
+            case ControlReference::Kind::Trapezoidal:
+                scalar("t0", r.t0), joints("velocity", r.velocity), joints("acceleration", r.acceleration);
+                break;
+            case ControlReference::Kind::Sine:
+                joints("q0", r.q0), joints("amplitude", r.amplitude), scalar("frequency", r.frequency), scalar("phase", r.phase);
+                break;
+        }
+        out["reference"] = reference;
+        const ControllerModel& m = c.model;
+        if (m.payloadMass > 0 || m.scale.size() > 0) {
+            const std::string at = child(path, "model");
+            Json model;
+            if (m.payloadMass > 0) {
+                const std::string p = child(at, "payload");
+                const Eigen::Matrix3d& I = m.payloadInertia;
+                model["payload"] = {{"mass", number(child(p, "mass"), m.payloadMass)},
+                                    {"com", vector(child(p, "com"), m.payloadCom)},
+                                    {"inertia", {{"xx", I(0, 0)}, {"yy", I(1, 1)}, {"zz", I(2, 2)}, {"xy", I(0, 1)}, {"xz", I(0, 2)}, {"yz", I(1, 2)}}}};
+            }
+            if (m.scale.size() > 0) model["scale"] = perJoint(child(at, "scale"), m.scale);
+            out["model"] = model;
+        }
+        if (c.torqueLimit.size() > 0) out["limits"] = {{"torque", perJoint(child(path, "limits.torque"), c.torqueLimit)}};
         return out;
     }
 

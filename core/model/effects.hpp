@@ -9,6 +9,8 @@
 
 #include <Eigen/Core>
 
+#include "core/model/control.hpp"
+
 namespace ll {
 
 struct JointSpring {  // E = ½ K (q_i - rest)^2
@@ -67,6 +69,7 @@ struct Effects {
     std::vector<ViscousFriction> viscous;
     std::vector<CoulombFriction> coulomb;
     std::vector<JointTorque> torques;
+    std::optional<Control> control;  // a joint-space controller (core/model/control.hpp)
 
     bool hasFriction() const { return !viscous.empty() || !coulomb.empty(); }
 };

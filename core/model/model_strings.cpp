@@ -37,6 +37,9 @@ std::vector<int> actuatedJoints(const Effects& effects, int dof) {
     std::vector<int> joints;
     for (const JointTorque& torque : effects.torques)
         if (torque.joint >= 0 && torque.joint < dof) joints.push_back(torque.joint);
+    if (effects.control)  // a controller drives its joints (all unless it names them)
+        for (int i = 0; i < dof; ++i)
+            if (effects.control->drives(i)) joints.push_back(i);
     std::sort(joints.begin(), joints.end());
     joints.erase(std::unique(joints.begin(), joints.end()), joints.end());
     return joints;

@@ -2,6 +2,7 @@
 
 #include "core/model/argument_checks.hpp"
 #include "core/model/friction_law.hpp"
+#include "core/simulation/controller.hpp"
 
 namespace ll {
 
@@ -27,6 +28,13 @@ void computeGeneralizedForces(const Effects& effects, double t, const Eigen::Vec
     requireSize("computeGeneralizedForces", "Q", Q.size(), qd.size(), "qd", "entries");
     computeExternalTorques(effects, t, Q);
     addFrictionForces(effects, qd, Q);
+}
+
+void addControlTorques(const RobotModel& robot, const Effects& effects, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qd,
+                       Eigen::VectorXd& Q) {
+    if (!effects.control) return;
+    Controller controller(robot, effects);
+    Q += controller.torque(t, q, qd);
 }
 
 }  // namespace ll

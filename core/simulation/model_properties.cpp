@@ -51,6 +51,7 @@ public:
             for (int k = 0; k < n; ++k) r.Bdot += d.dB_dq[k] * qd[k];
             r.Q = Eigen::VectorXd::Zero(n);
             computeGeneralizedForces(input_.scene.effects, t, qd, r.Q);
+            addControlTorques(model, input_.scene.effects, t, q, qd, r.Q);
             return r;
         }
         const CompiledLagrangian& L = *input_.lagrangian;

@@ -24,6 +24,7 @@ const char* toString(RhsTerm term) {
         case RhsTerm::Viscous: return "viscous friction";
         case RhsTerm::Coulomb: return "Coulomb friction";
         case RhsTerm::Torques: return "torques";
+        case RhsTerm::Control: return "control";
     }
     return "?";
 }
@@ -62,7 +63,11 @@ RobotOde::RobotOde(const RobotModel& model, const Effects& effects)
     if (tanhCoulomb) terms_.push_back({RhsTerm::Coulomb, &RobotOde::addTanhCoulomb});
     if (!stick_.empty()) terms_.push_back({RhsTerm::Coulomb, &RobotOde::addSlidingCoulomb});
     if (!effects.torques.empty()) terms_.push_back({RhsTerm::Torques, &RobotOde::addTorques});
-    hasGeneralizedForces_ = !effects.torques.empty() || effects.hasFriction();
+    if (effects.control) {
+        controller_.emplace(model, effects);
+        terms_.push_back({RhsTerm::Control, &RobotOde::addControl});
+    }
+    hasGeneralizedForces_ = !effects.torques.empty() || effects.hasFriction() || effects.control.has_value();
 }
 
 std::vector<RhsTerm> RobotOde::terms() const {
@@ -128,6 +133,9 @@ double RobotOde::eventFraction(const OdeState& x0, const OdeState& x1) const {
 void RobotOde::addTorques(double t) {
     for (const JointTorque& torque : effects_.torques) Q_[torque.joint] += torque(t);
 }
+
+// The controller's τ from the state (feedback): its own model, its own scratch data.
+void RobotOde::addControl(double t) { Q_ += controller_->torque(t, q_, qd_); }
 
 void RobotOde::evaluateForces(const OdeState& x, double t) {
     ++evaluations_;

@@ -7,6 +7,7 @@
 // friction code runs. Each term counts its evaluations (termEvaluations), so this is
 // checkable, not just claimed. The model and effects are copied in. Odeint copies systems by value; pass this with std::ref.
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,14 +16,15 @@
 #include "core/model/effects.hpp"
 #include "core/model/robot_data.hpp"
 #include "core/model/robot_model.hpp"
+#include "core/simulation/controller.hpp"
 #include "core/simulation/ode_system.hpp"
 
 namespace ll {
 
 // The terms of the right-hand side. MassMatrix (kinematics + B) and Coriolis (C q̇) are
 // always there; the others only when declared.
-enum class RhsTerm { MassMatrix, Coriolis, Gravity, Springs, Viscous, Coulomb, Torques };
-inline constexpr int kRhsTermCount = 7;
+enum class RhsTerm { MassMatrix, Coriolis, Gravity, Springs, Viscous, Coulomb, Torques, Control };
+inline constexpr int kRhsTermCount = 8;
 const char* toString(RhsTerm term);
 
 class RobotOde : public OdeSystem {
@@ -68,12 +70,14 @@ private:
     void addTanhCoulomb(double t);
     void addSlidingCoulomb(double t);
     void addTorques(double t);
+    void addControl(double t);
 
     // Own copies: an editor may change its scene while this runs on a worker thread.
     RobotModel model_;
     Effects effects_;
     std::vector<Term> terms_;
     std::vector<StickJoint> stick_;
+    std::optional<Controller> controller_;  // the scene's control law, when it declares one
     bool hasGeneralizedForces_ = false;
     RobotData data_;
     Eigen::VectorXd q_, qd_, Q_, rhs_, qdd_;

@@ -19,8 +19,12 @@ RobotEvaluation evaluateRobot(const Scene& scene, const Eigen::VectorXd& q, cons
     RobotEvaluation out;
     ModelTerms& m = out.terms;
     m.Q.resize(n);
-    if (tau) m.Q = *tau;
-    else computeExternalTorques(scene.effects, t, m.Q);
+    if (tau) {
+        m.Q = *tau;
+    } else {
+        computeExternalTorques(scene.effects, t, m.Q);
+        addControlTorques(robot, scene.effects, t, q, qd, m.Q);
+    }
     addFrictionForces(scene.effects, qd, m.Q);
 
     RobotData data(robot);

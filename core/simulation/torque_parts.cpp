@@ -57,6 +57,7 @@ TorqueHistory torqueHistory(const SimulationInput& input, const Trajectory& traj
             const RobotModel& robot = scene.robot;
             p.actuation = Eigen::VectorXd::Zero(n);
             computeExternalTorques(effects, t, p.actuation);
+            addControlTorques(robot, effects, t, q, qd, p.actuation);
             for (const ViscousFriction& f : effects.viscous) p.viscous[f.joint] += viscousFrictionForce(f.coefficient, qd[f.joint]);
             for (const CoulombFriction& f : effects.coulomb) {
                 const double v = qd[f.joint];

@@ -83,7 +83,11 @@ private slots:
 
     void everyDeclaredEffectRunsOncePerEvaluation() {
         const Scene scene = puma();
-        const Effects effects = allEffects(6);
+        Effects effects = allEffects(6);
+        Control control;  // and a controller (its τ joins Q)
+        control.kp = control.kd = Eigen::VectorXd::Ones(6);
+        control.reference.q0 = Eigen::VectorXd::Zero(6);
+        effects.control = control;
         RobotOde ode(scene.robot, effects);
         evaluate(ode, 6, 17);
         for (int t = 0; t < kRhsTermCount; ++t) QVERIFY2(ode.termEvaluations(RhsTerm(t)) == 17, toString(RhsTerm(t)));

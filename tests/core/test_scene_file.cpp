@@ -382,7 +382,7 @@ private slots:
 
     void unknownKeys() {
         EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["effects"] = Json::parse(R"({"viscus": []})"); })), "effects.viscus",
-                     "unknown key (expected one of gravity, springs, viscous, coulomb, torques)");
+                     "unknown key (expected one of gravity, springs, viscous, coulomb, torques, control)");
         EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["titel"] = "x"; })), "titel", "unknown key", "name");
         EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joint"] = Json::array(); })), "robot.joint", "unknown key", "joints");
         EXPECT_ERROR(parseScene(minimalWith([](Json& j) { j["robot"]["joints"][0]["mas"] = 1; })), "robot.joints[0].mas", "unknown key",
