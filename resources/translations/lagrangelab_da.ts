@@ -189,7 +189,7 @@
     <message>
         <location line="+28" />
         <source>A typed Lagrangian has no joint axes: finding the DH parameters needs a robot.</source>
-        <translation>En indtastet Lagrange-funktion har ingen ledakser: at finde DH-parametrene kræver en robot.</translation>
+        <translation>En indtastet Lagrange-funktion har ingen ledakser: DH-parametrene kan kun findes for en robot.</translation>
     </message>
     <message>
         <location line="+9" />
@@ -204,43 +204,43 @@
     <message>
         <location line="+1" />
         <source>The robot stands at home (all q = 0). Joint i turns about (or slides along) its axis, the line marked q&lt;sub&gt;i&lt;/sub&gt;. The rules now place frames 0 to %1 on these lines, one rule at a time: z, then the origin o, then x, then y.</source>
-        <translation>Robotten står i hjemmestillingen (alle q = 0), og leddenes akser er tegnet: led i drejer om (eller glider langs) sin akse, linjen mærket q&lt;sub&gt;i&lt;/sub&gt;. Reglerne placerer nu rammerne 0 til %1 på disse linjer, én regel ad gangen: z, så origo o, så x, så y.</translation>
+        <translation>Robotten står i hjemmestillingen (alle q = 0). Led i drejer om (eller glider langs) sin akse, linjen mærket q&lt;sub&gt;i&lt;/sub&gt;. Reglerne placerer nu koordinatsystemerne 0 til %1 på disse linjer, én regel ad gangen: z, så origo o, så x, så y.</translation>
     </message>
     <message>
         <location line="+5" />
         <source>Frame %1: z</source>
-        <translation>Ramme %1: z</translation>
+        <translation>Koordinatsystem %1: z</translation>
     </message>
     <message>
         <location line="+1" />
         <source>Frame %1 is the tool's: %2 is taken along the last joint's axis.</source>
-        <translation>Ramme %1 er værktøjets: %2 lægges langs det sidste leds akse.</translation>
+        <translation>Koordinatsystem %1 er værktøjets: %2 lægges langs det sidste leds akse.</translation>
     </message>
     <message>
         <location line="+1" />
         <location line="+2" />
         <source>%1 lies on the axis of joint %2, pointing the way q&lt;sub&gt;%2&lt;/sub&gt; turns it (right-hand rule) or slides it.</source>
-        <translation>%1 ligger på led %2s akse og peger, som q&lt;sub&gt;%2&lt;/sub&gt; drejer det (højrehåndsreglen) eller skubber det.</translation>
+        <translation>%1 ligger på aksen for led %2 og peger i den retning, som q&lt;sub&gt;%2&lt;/sub&gt; drejer (højrehåndsreglen) eller forskyder leddet.</translation>
     </message>
     <message>
         <location line="-1" />
         <source>%1 lies on the axis of joint 1: frame 0 is frame 1 at home as far as the rules allow.</source>
-        <translation>%1 ligger på led 1s akse: ramme 0 er ramme 1 i hjemmestillingen, så vidt reglerne tillader.</translation>
+        <translation>%1 ligger på aksen for led 1: koordinatsystem 0 falder sammen med koordinatsystem 1 i hjemmestillingen, så vidt reglerne tillader det.</translation>
     </message>
     <message>
         <location line="+5" />
         <source>the axis of joint %1</source>
-        <translation>led %1s akse</translation>
+        <translation>aksen for led %1</translation>
     </message>
     <message>
         <location line="+1" />
         <source>Frame %1: the origin</source>
-        <translation>Ramme %1: origo</translation>
+        <translation>Koordinatsystem %1: origo</translation>
     </message>
     <message>
         <location line="+2" />
         <source>%1 may lie anywhere on %2: it is taken where %2 comes nearest to the world's origin.</source>
-        <translation>%1 må ligge hvor som helst på %2: det lægges, hvor %2 kommer nærmest verdens origo.</translation>
+        <translation>%1 må ligge hvor som helst på %2: det lægges, hvor %2 kommer nærmest verdenskoordinatsystemets origo.</translation>
     </message>
     <message>
         <location line="+2" />
@@ -250,12 +250,12 @@
     <message>
         <location line="+1" />
         <source>%1 is where %2 meets %3, so d&lt;sub&gt;%4&lt;/sub&gt; = 0.</source>
-        <translation>%1 er, hvor %2 møder %3, så d&lt;sub&gt;%4&lt;/sub&gt; = 0.</translation>
+        <translation>%1 ligger, hvor %2 skærer %3, så d&lt;sub&gt;%4&lt;/sub&gt; = 0.</translation>
     </message>
     <message>
         <location line="+4" />
         <source>%1 and %2 are skew: they have exactly one common normal (the magenta line). %3 is where it meets %4.</source>
-        <translation>%1 og %2 er vindskæve: de har præcis én fælles normal (den magentafarvede linje). %3 er, hvor den møder %4.</translation>
+        <translation>%1 og %2 er vindskæve: de har netop én fælles normal (den magentafarvede linje). %3 ligger, hvor den skærer %4.</translation>
     </message>
     <message>
         <location line="+4" />
@@ -275,17 +275,17 @@
     <message>
         <location line="+4" />
         <source>The two axes point opposite ways: α = 180°. z is never turned round to avoid it, or q would turn the joint the other way.</source>
-        <translation>De to akser peger modsat: α = 180°. z vendes aldrig om for at undgå det, for så ville q dreje leddet den anden vej.</translation>
+        <translation>De to akser peger i modsat retning: α = 180°. z vendes aldrig om for at undgå det, for så ville q dreje leddet den anden vej.</translation>
     </message>
     <message>
         <location line="+5" />
         <source>Frame %1: x</source>
-        <translation>Ramme %1: x</translation>
+        <translation>Koordinatsystem %1: x</translation>
     </message>
     <message>
         <location line="+1" />
         <source>%1 is any direction perpendicular to %2: the world's x (or y) made perpendicular, so frame 0 matches the world where it can.</source>
-        <translation>%1 er en vilkårlig retning vinkelret på %2: verdens x (eller y) gjort vinkelret, så ramme 0 følger verden, hvor den kan.</translation>
+        <translation>%1 er en vilkårlig retning vinkelret på %2: verdenskoordinatsystemets x (eller y) gjort vinkelret, så koordinatsystem 0 så vidt muligt falder sammen med verdenskoordinatsystemet.</translation>
     </message>
     <message>
         <location line="+2" />
@@ -305,7 +305,7 @@
     <message>
         <location line="+2" />
         <source>%1 is free around the one line: kept as %2, so θ = 0.</source>
-        <translation>%1 er fri omkring den ene linje: beholdt som %2, så θ = 0.</translation>
+        <translation>%1 kan frit drejes om den fælles linje: den beholdes som %2, så θ = 0.</translation>
     </message>
     <message>
         <location line="+1" />
@@ -315,22 +315,22 @@
     <message>
         <location line="+1" />
         <source>%1 lies along the common normal, pointing from %2 to the axis of joint %3.</source>
-        <translation>%1 ligger langs den fælles normal og peger fra %2 mod led %3s akse.</translation>
+        <translation>%1 ligger langs den fælles normal og peger fra %2 mod aksen for led %3.</translation>
     </message>
     <message>
         <location line="+3" />
         <source>Frame %1: y</source>
-        <translation>Ramme %1: y</translation>
+        <translation>Koordinatsystem %1: y</translation>
     </message>
     <message>
         <location line="+1" />
         <source>%1 = %2 × %3 completes a right-handed frame.</source>
-        <translation>%1 = %2 × %3 fuldender en højrehåndet ramme.</translation>
+        <translation>%1 = %2 × %3 fuldender et højrehåndet koordinatsystem.</translation>
     </message>
     <message>
         <location line="+1" />
         <source>Row %1 of the table is read off frames %2 and %1.</source>
-        <translation>Række %1 i tabellen aflæses af rammerne %2 og %1.</translation>
+        <translation>Række %1 i tabellen aflæses ud fra koordinatsystem %2 og %1.</translation>
     </message>
     <message>
         <location line="+9" />
@@ -345,7 +345,7 @@
     <message>
         <location line="+5" />
         <source>Frame 0 is not the world's frame: a base transform, which DH cannot express, places it.</source>
-        <translation>Ramme 0 er ikke verdens ramme: en basistransformation, som DH ikke kan udtrykke, placerer den.</translation>
+        <translation>Koordinatsystem 0 er ikke verdenskoordinatsystemet: en basistransformation, som DH ikke kan udtrykke, placerer det.</translation>
     </message>
 </context>
 <context>
@@ -1957,7 +1957,7 @@
     <message>
         <location line="+1" />
         <source>meshes</source>
-        <translation>mesh</translation>
+        <translation>mesh-filer</translation>
     </message>
 </context>
 <context>

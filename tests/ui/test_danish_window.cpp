@@ -200,7 +200,7 @@ private slots:
         QVERIFY(bar);
         QStringList shown;
         for (QToolButton* b : bar->findChildren<QToolButton*>()) {
-            if (b->text() == "mesh") {  // only for a robot drawn by its meshes (from URDF): not the 2R
+            if (b->text() == "mesh-filer") {  // only for a robot drawn by its meshes (from URDF): not the 2R
                 QVERIFY(b->isHidden());
                 continue;
             }

@@ -116,7 +116,7 @@ private slots:
         w->dhStepPage().setCurrentWidget(w->dhStepPage().axes());
         ui::DhAxesPanel& panel = *w->dhStepPage().axes();
         panel.setStep(0);
-        QVERIFY2(panel.sentenceText().contains("leddenes akser"), qPrintable(panel.sentenceText()));
+        QVERIFY2(panel.sentenceText().contains("Leddenes akser"), qPrintable(panel.sentenceText()));
         panel.setStep(DhConstruction::index(1, 2));  // o₁ of the 2R: parallel axes
         QVERIFY2(panel.sentenceText().contains("parallelle"), qPrintable(panel.sentenceText()));
         QCOMPARE(w->dhStepPage().tabText(0), QString("Find DH-parametrene"));
