@@ -6,66 +6,13 @@
 #include <map>
 #include <stdexcept>
 
-#include <QBuffer>
-#include <QFileInfo>
 #include <QFontMetricsF>
-#include <QImage>
 #include <QPainterPath>
-#include <QSvgGenerator>
 
-#include "core/io/atomic_file.hpp"
+#include "ui/paint/plot_axes.hpp"
 
 namespace ll::ui {
 namespace {
-
-const QColor kPalette[] = {QColor(0x1f, 0x77, 0xb4), QColor(0xff, 0x7f, 0x0e), QColor(0x2c, 0xa0, 0x2c), QColor(0xd6, 0x27, 0x28),
-                           QColor(0x94, 0x67, 0xbd), QColor(0x8c, 0x56, 0x4b), QColor(0xe3, 0x77, 0xc2), QColor(0x7f, 0x7f, 0x7f),
-                           QColor(0xbc, 0xbd, 0x22), QColor(0x17, 0xbe, 0xcf)};
-
-struct Range {
-    int lo = 0, hi = 1;  // decades 10^lo .. 10^hi
-};
-
-Range decades(const std::vector<double>& values) {
-    double lo = INFINITY, hi = -INFINITY;
-    for (double v : values)
-        if (v > 0 && std::isfinite(v)) {
-            lo = std::min(lo, v);
-            hi = std::max(hi, v);
-        }
-    if (!std::isfinite(lo)) return {-1, 0};
-    Range r{static_cast<int>(std::floor(std::log10(lo))), static_cast<int>(std::ceil(std::log10(hi)))};
-    if (r.hi <= r.lo) r.hi = r.lo + 1;
-    return r;
-}
-
-// "10" with a raised exponent, centred (align = 0), right-aligned (1) at `anchor`; the
-// box it takes, drawn unless `draw` is false.
-QRectF drawPowerOfTen(QPainter& p, QPointF anchor, int exponent, int align, bool draw = true) {
-    const QFont base = p.font();
-    QFont small = base;
-    small.setPointSizeF(base.pointSizeF() * 0.72);
-    const QString mantissa = "10", power = QString::number(exponent).replace('-', QChar(0x2212));
-    const double w1 = QFontMetricsF(base).horizontalAdvance(mantissa), w2 = QFontMetricsF(small).horizontalAdvance(power);
-    const double ascent = QFontMetricsF(base).ascent();
-    double x = align == 0 ? anchor.x() - (w1 + w2) / 2 : anchor.x() - (w1 + w2);
-    const double y = anchor.y();
-    if (draw) {
-        p.drawText(QPointF(x, y), mantissa);
-        p.setFont(small);
-        p.drawText(QPointF(x + w1, y - 0.45 * ascent), power);
-        p.setFont(base);
-    }
-    return QRectF(x, y - 0.45 * ascent - QFontMetricsF(small).ascent(), w1 + w2,
-                  0.45 * ascent + QFontMetricsF(small).ascent() + QFontMetricsF(base).descent());
-}
-
-// Every how many decades a label fits: labels `size` long (with a gap) on an axis
-// `length` long over `decades` decades.
-int labelStep(double length, int decades, double size) {
-    const double spacing = length / std::max(decades, 1);
-    return spacing > 0 ? std::max(1, static_cast<int>(std::ceil(size / spacing))) : 1;
-}
 
 struct Series {
     QString name;
@@ -73,8 +20,8 @@ struct Series {
     std::vector<QPointF> points;  // (cpu, value), in setting order
 };
 
-void paintPanel(QPainter& p, const QRectF& box, const QString& title, const QString& yLabel, const std::vector<Series>& series, Range xr,
-                Range yr, double floorValue, const QString& floorLabel, std::vector<QRectF>* tickLabels) {
+void paintPanel(QPainter& p, const QRectF& box, const QString& title, const QString& yLabel, const std::vector<Series>& series, DecadeRange xr,
+                DecadeRange yr, double floorValue, const QString& floorLabel, std::vector<QRectF>* tickLabels) {
     const QFontMetricsF fm(p.font());
     const QRectF plot = box.adjusted(fm.horizontalAdvance("10−00") + 34, fm.height() * 1.8, -12, -fm.height() * 2.8);
     const auto X = [&](double v) { return plot.left() + (std::log10(v) - xr.lo) / (xr.hi - xr.lo) * plot.width(); };
@@ -175,7 +122,7 @@ void paintWorkPrecision(QPainter& p, const QRectF& area, const WorkPrecisionResu
     for (const WorkPrecisionPoint& pt : result.points) {
         if (!index.count(pt.integrator)) {
             index[pt.integrator] = errors.size();
-            const QColor color = kPalette[errors.size() % std::size(kPalette)];
+            const QColor color = plotColor(errors.size());
             errors.push_back({QString::fromStdString(pt.integrator), color, {}});
             drifts.push_back({QString::fromStdString(pt.integrator), color, {}});
         }
@@ -192,7 +139,7 @@ void paintWorkPrecision(QPainter& p, const QRectF& area, const WorkPrecisionResu
         ys2.push_back(d);
     }
     ys1.push_back(std::max(result.reference.estimatedError, kTiny));
-    const Range xr = decades(xs), yr1 = decades(ys1), yr2 = decades(ys2);
+    const DecadeRange xr = decadesOf(xs), yr1 = decadesOf(ys1), yr2 = decadesOf(ys2);
 
     const double titleH = fm.height() * 3.2, legendW = fm.horizontalAdvance("symplectic_euler (failed)") + 40;
     p.setPen(Qt::black);
@@ -242,46 +189,9 @@ void paintWorkPrecision(QPainter& p, const QRectF& area, const WorkPrecisionResu
 }
 
 bool saveWorkPrecisionPlot(const WorkPrecisionResult& result, const QString& path, QString* error, QSize size) {
-    const QString suffix = QFileInfo(path).suffix().toLower();
-    if (suffix != "svg" && suffix != "png") {
-        if (error) *error = "unknown plot format '." + suffix + "' (use .svg or .png)";
-        return false;
-    }
-    // Rendered into memory, then written by the one atomic-save routine.
-    QBuffer buffer;
-    buffer.open(QIODevice::WriteOnly);
-    if (suffix == "svg") {
-        QSvgGenerator svg;
-        svg.setOutputDevice(&buffer);
-        svg.setSize(size);
-        svg.setViewBox(QRect(QPoint(0, 0), size));
-        svg.setTitle("Work–precision: " + QString::fromStdString(result.scene));
-        QPainter painter;
-        if (!painter.begin(&svg)) {
-            if (error) *error = "cannot render the plot for " + path;
-            return false;
-        }
-        paintWorkPrecision(painter, QRectF(QPointF(0, 0), size), result);
-        painter.end();
-    } else {
-        QImage image(size, QImage::Format_ARGB32_Premultiplied);
-        image.fill(Qt::white);
-        QPainter painter(&image);
-        painter.setRenderHint(QPainter::TextAntialiasing, true);
-        paintWorkPrecision(painter, QRectF(QPointF(0, 0), size), result);
-        painter.end();
-        if (!image.save(&buffer, "PNG")) {
-            if (error) *error = "cannot encode the plot for " + path;
-            return false;
-        }
-    }
-    try {
-        saveFileAtomically(path.toStdString(), buffer.data().toStdString(), Backup::None);
-    } catch (const std::runtime_error& e) {
-        if (error) *error = QString::fromStdString(e.what());
-        return false;
-    }
-    return true;
+    return savePaintedPlot(
+        path, size, "Work–precision: " + QString::fromStdString(result.scene),
+        [&](QPainter& painter, const QRectF& area) { paintWorkPrecision(painter, area, result); }, error);
 }
 
 }  // namespace ll::ui
