@@ -1,11 +1,13 @@
 // `lagrangelab check SCENE [--duration T] [--format text|json]`: the properties every
 // Euler–Lagrange model has, checked along a simulated run of the scene
 // (core/simulation/model_properties.hpp): each with its worst value, where it occurs,
-// its tolerance and a sentence that says what it means. Exit 0 when every property
+// its tolerance and a sentence that says what it means; for a controlled scene also how
+// well it tracked (RMS and largest error, torques, saturated fraction). Exit 0 when every property
 // holds, 1 when one fails, 2 for bad input.
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -14,6 +16,10 @@
 #include "app/commands.hpp"
 #include "app/scene_loading.hpp"
 #include "core/pipeline/scene_simulation.hpp"
+#include "core/dynamics/forward_dynamics.hpp"
+#include "core/io/trajectory_file.hpp"
+#include "core/model/quantity_units.hpp"
+#include "core/simulation/control_history.hpp"
 #include "core/simulation/model_properties.hpp"
 #include "core/simulation/scene_validation.hpp"
 
@@ -37,7 +43,52 @@ std::string numberText(double v, const std::string& unit) {
     return unit.empty() ? buffer : std::string(buffer) + " " + unit;
 }
 
-void printText(const Scene& scene, const SimulationResult& run, const ModelProperties& properties) {
+// The joint (0-based) where a per-joint value is largest.
+Eigen::Index largestAt(const Eigen::VectorXd& v) {
+    Eigen::Index at = 0;
+    v.maxCoeff(&at);
+    return at;
+}
+
+void printTracking(const Scene& scene, const ControlHistory& control) {
+    const TrackingSummary& s = control.summary;
+    const std::vector<std::string> units = coordinateUnits(scene);
+    std::printf("  tracking (%s, e = q_ref - q):\n", toString(scene.effects.control->law));
+    for (int i = 0; i < s.rmsError.size(); ++i)
+        std::printf("        joint %d: RMS e = %s, max |e| = %s, max |tau| = %s%s\n", i + 1, numberText(s.rmsError[i], units[i]).c_str(),
+                    numberText(s.maxError[i], units[i]).c_str(),
+                    numberText(s.maxTorque[i], forceUnit(scene.robot.joints[i].dh.type == JointType::Revolute)).c_str(),
+                    s.saturatedFraction[i] > 0 ? (", saturated " + numberText(100 * s.saturatedFraction[i], "%")).c_str() : "");
+    const Eigen::Index worst = largestAt(s.saturatedFraction);
+    if (scene.effects.control->torqueLimit.size() == 0) std::printf("        no torque limits");
+    else
+        std::printf("        largest saturated fraction: %s (joint %d)", numberText(s.saturatedFraction[worst], "").c_str(),
+                    static_cast<int>(worst) + 1);
+    std::printf("; actuators' work %s\n", numberText(s.energySpent, "J").c_str());
+    if (control.lyapunov)
+        std::printf("        V = 1/2 qd'B qd + 1/2 e'Kp e%s: max |dV/dt + qd'Kd qd| = %s of max qd'Kd qd "
+                    "(0 when the controller's g is the robot's and nothing else acts: qd'(Bdot - 2C)qd = 0)\n",
+                    scene.effects.control->law == ControlLaw::Pd ? " + Epot(q) - Epot(q_ref)" : "",
+                    numberText(control.lyapunov->largestDeparture, "").c_str());
+}
+
+nlohmann::ordered_json trackingJson(const Scene& scene, const ControlHistory& control) {
+    const TrackingSummary& s = control.summary;
+    const auto list = [](const Eigen::VectorXd& v) { return std::vector<double>(v.data(), v.data() + v.size()); };
+    nlohmann::ordered_json j;
+    j["law"] = toString(scene.effects.control->law);
+    j["rms_error"] = list(s.rmsError);
+    j["max_error"] = list(s.maxError);
+    j["max_torque"] = list(s.maxTorque);
+    j["saturated_fraction"] = list(s.saturatedFraction);
+    j["largest_saturated_fraction"] = s.saturatedFraction.maxCoeff();
+    j["energy_spent"] = s.energySpent;
+    j["units"] = {{"rms_error", coordinateUnits(scene)}, {"energy_spent", "J"}};
+    if (control.lyapunov) j["lyapunov_departure"] = control.lyapunov->largestDeparture;
+    return j;
+}
+
+void printText(const Scene& scene, const SimulationResult& run, const ModelProperties& properties, const ControlHistory* control) {
     std::printf("%s: %.6g s simulated with %s, %zu samples checked\n", scene.name.c_str(), run.stats.simulatedSeconds,
                 run.stats.integrator.c_str(), run.trajectory.size());
     for (const PropertyCheck& c : properties.checks) {
@@ -51,12 +102,13 @@ void printText(const Scene& scene, const SimulationResult& run, const ModelPrope
         if (c.q.size() > 0) std::printf(", worst at t = %.4g s, q = %s", c.time, vectorText(c.q).c_str());
         std::printf("\n        %s\n", c.explanation.c_str());
     }
+    if (control) printTracking(scene, *control);
     if (run.status == SimulationStatus::Failed)  // the report is in English, as its checks are
         std::printf("the simulation stopped early: %s\n", run.message.english().c_str());
     std::printf("%s\n", properties.passed() ? "passed: every property holds" : "failed: a property does not hold");
 }
 
-void printJson(const Scene& scene, const SimulationResult& run, const ModelProperties& properties) {
+void printJson(const Scene& scene, const SimulationResult& run, const ModelProperties& properties, const ControlHistory* control) {
     nlohmann::ordered_json j;
     j["scene"] = scene.name;
     j["simulated_seconds"] = run.stats.simulatedSeconds;
@@ -84,6 +136,7 @@ void printJson(const Scene& scene, const SimulationResult& run, const ModelPrope
     j["passed"] = properties.passed();
     if (run.status == SimulationStatus::Failed) j["simulation_stopped"] = run.message.english();
     j["checks"] = details;
+    if (control) j["tracking"] = trackingJson(scene, *control);
     std::cout << j.dump(1) << '\n';
 }
 
@@ -105,8 +158,17 @@ int checkCommand(const Args& args) {
         return 1;
     }
     const ModelProperties properties = checkModelProperties(input, run.trajectory);
-    if (format == "json") printJson(scene, run, properties);
-    else printText(scene, run, properties);
+    // A controlled scene: how well it tracked (a report; it does not decide the exit code).
+    std::optional<TorqueHistory> torques;
+    std::optional<ControlHistory> control;
+    if (!scene.lagrangian && scene.effects.control) try {
+            torques = torqueHistory(input, run.trajectory);
+            control = controlHistory(input, run.trajectory, *torques);
+        } catch (const SingularMassMatrix&) {
+        }
+    const ControlHistory* tracking = control ? &*control : nullptr;
+    if (format == "json") printJson(scene, run, properties, tracking);
+    else printText(scene, run, properties, tracking);
     return properties.passed() && run.status != SimulationStatus::Failed ? 0 : 1;
 }
 

@@ -1,6 +1,8 @@
 // `lagrangelab simulate SCENE [--duration T] [--integrator NAME] [--abs-tol X]
 // [--rel-tol X] [--dt X] [--output-rate HZ] [--out FILE.csv|FILE.json]`: the trajectory,
-// its energies and where the torque goes (core/simulation/torque_parts.hpp) per sample.
+// its energies and where the torque goes (core/simulation/torque_parts.hpp) per sample;
+// for a controlled scene also the reference, the tracking error and the controller's terms
+// (core/simulation/control_history.hpp).
 #include <cstdio>
 #include <iostream>
 #include <optional>
@@ -18,6 +20,7 @@
 #include "core/pipeline/scene_simulation.hpp"
 #include "core/model/actuation.hpp"
 #include "core/dynamics/forward_dynamics.hpp"
+#include "core/simulation/control_history.hpp"
 #include "core/simulation/torque_parts.hpp"
 
 namespace ll::cli {
@@ -87,7 +90,13 @@ int simulateCommand(const Args& args) {
         torques = torqueHistory(input, result.trajectory);
     } catch (const SingularMassMatrix&) {
     }
-    const TorqueColumns columns = torques ? torqueColumns(scene, *torques) : TorqueColumns{};
+    TorqueColumns columns = torques ? torqueColumns(scene, *torques) : TorqueColumns{};
+    // The controller's reference, error and terms (and its Lyapunov function), as more columns.
+    std::optional<ControlHistory> control;
+    if (torques && !scene.lagrangian && scene.effects.control) {
+        control = controlHistory(input, result.trajectory, *torques);
+        columns.control = &*control;
+    }
     if (options.has("out")) saveTrajectory(result, options.text("out"), columns);
     else writeTrajectoryCsv(result.trajectory, std::cout, columns);
     printSummary(scene, settings, result);

@@ -11,7 +11,7 @@ struct CommandText {
     const char* summary;
 };
 
-constexpr std::array<CommandText, 16> commands{{
+constexpr std::array<CommandText, 17> commands{{
     {"eval", "SCENE --q v1,... --qd v1,... [--t T] [--tau v1,...]", "B, C, g, Q, q̈, E_kin, E_pot at one state, as JSON"},
     {"simulate",
      "SCENE [--duration T] [--integrator NAME] [--abs-tol X] [--rel-tol X] [--dt X]\n"
@@ -39,6 +39,10 @@ constexpr std::array<CommandText, 16> commands{{
     {"check", "SCENE [--duration T] [--format text|json]",
      "the model's properties along a simulated run: B positive definite and its condition, Ḃ − 2C\n"
      "skew, power balance, Newton–Euler against B q̈ + C q̇ + g, energy; exit 1 when one fails"},
+    {"compare-laws", "SCENE [--duration T] [--format text|json] [--out FILE.svg|png]",
+     "a controlled scene run under each law (pd, pd_gravity, computed_torque, feedforward) with its own\n"
+     "gains, reference and controller model: RMS and largest error, largest torque, the actuators' work\n"
+     "and the time saturated; a law the robot cannot carry out says why; --out: the plot against time"},
     {"check-answer",
      "SCENE [--entry ENTRY --answer \"...\" | --answer-file FILE.json] [--format text|json] [--reveal]\n"
      "[--symbolic] [--numeric] [--lang da|en]",

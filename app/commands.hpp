@@ -25,6 +25,7 @@ int renderCommand(const Args& args);
 int reportCommand(const Args& args);
 int codegenCommand(const Args& args);
 int checkCommand(const Args& args);
+int compareLawsCommand(const Args& args);
 int checkAnswerCommand(const Args& args);
 int exerciseCommand(const Args& args);
 int gradeCommand(const Args& args);

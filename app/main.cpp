@@ -22,7 +22,7 @@ namespace {
 bool isHelp(const std::string& arg) { return arg == "--help" || arg == "-h"; }
 
 const char* const kCommands[] = {"eval",  "simulate",     "integrators", "accuracy", "derive", "render", "report",  "codegen",
-                                 "check", "check-answer", "exercise",    "grade",    "import", "export-urdf", "help",   "version", "--version"};
+                                 "check", "compare-laws", "check-answer", "exercise",    "grade",    "import", "export-urdf", "help",   "version", "--version"};
 
 // `lagrangelab`, `lagrangelab SCENE …` and `lagrangelab --screenshot …` open the window:
 // no arguments, or a first argument that is no command but a scene file or an option.
@@ -125,6 +125,7 @@ int main(int argc, char** argv) {
         if (command == "report") return reportCommand(args);
         if (command == "codegen") return codegenCommand(args);
         if (command == "check") return checkCommand(args);
+        if (command == "compare-laws") return compareLawsCommand(args);
         if (command == "check-answer") return checkAnswerCommand(args);
         if (command == "exercise") return exerciseCommand(args);
         if (command == "grade") return gradeCommand(args);

@@ -647,8 +647,7 @@ private:
                     if (j.is_number_integer() && j.get<long long>() >= 1 && j.get<long long>() <= n) control.joints.push_back(static_cast<int>(j.get<long long>()) - 1);
                     else error(item(field, k), expectedGot(MessageId::WantedJointNumber, j));
                 }
-            if (control.law == ControlLaw::ComputedTorque && !control.joints.empty() && static_cast<int>(control.joints.size()) < n)
-                error(field, message(MessageId::ComputedTorqueUnderactuated, static_cast<int>(control.joints.size()), n));
+            if (const Message why = lawImpossible(control, n); !why.empty()) error(field, why);
         }
         // A controlled joint needs K_p > 0 (K_d may be 0).
         for (int i = 0; i < control.kp.size(); ++i)
@@ -710,7 +709,30 @@ private:
 
     // The controller's own robot: a payload on the last link, links scaled.
     void readControllerModel(const Json& value, const std::string& path, ControllerModel& m) {
-        if (!checkObject(value, path, {"payload", "scale"})) return;
+        if (!checkObject(value, path, {"links", "payload", "scale"})) return;
+        if (const Json* links = member(value, "links")) {
+            const std::string field = child(path, "links");
+            if (!links->is_array()) error(field, expectedGot(MessageId::WantedObjectArray, *links));
+            else
+                for (std::size_t k = 0; k < links->size(); ++k) {
+                    const Json& entry = (*links)[k];
+                    const std::string at = item(field, k);
+                    if (!checkObject(entry, at, {"joint", "mass", "com", "inertia"})) continue;
+                    ControllerLink own;
+                    const std::optional<int> joint = readJointNumber(entry, at);
+                    if (!joint) continue;
+                    if (*joint >= scene_.dof()) {
+                        error(child(at, "joint"), expectedGot(MessageId::WantedJointNumber, entry["joint"]));
+                        continue;
+                    }
+                    own.joint = *joint;
+                    if (required(entry, at, "mass", MessageId::LinkMassField)) readNumber(entry, at, "mass", own.link.mass);
+                    if (!(own.link.mass >= 0)) error(child(at, "mass"), message(MessageId::JsonExpectedGot, Message(MessageId::WantedNonNegative), describe(Json(own.link.mass))));
+                    readVector3(entry, at, "com", own.link.com);
+                    if (const Json* inertia = member(entry, "inertia")) readInertia(*inertia, child(at, "inertia"), own.link);
+                    m.links.push_back(own);
+                }
+        }
         if (const Json* payload = member(value, "payload")) {
             const std::string field = child(path, "payload");
             if (checkObject(*payload, field, {"mass", "com", "inertia"})) {

@@ -325,9 +325,18 @@ private:
         }
         out["reference"] = reference;
         const ControllerModel& m = c.model;
-        if (m.payloadMass > 0 || m.scale.size() > 0) {
+        if (m.payloadMass > 0 || m.scale.size() > 0 || !m.links.empty()) {
             const std::string at = child(path, "model");
             Json model;
+            for (std::size_t k = 0; k < m.links.size(); ++k) {
+                const std::string l = child(at, "links") + "[" + std::to_string(k) + "]";
+                const LinkInertia& own = m.links[k].link;
+                const Eigen::Matrix3d& I = own.inertia;
+                model["links"].push_back({{"joint", m.links[k].joint + 1},
+                                          {"mass", number(child(l, "mass"), own.mass)},
+                                          {"com", vector(child(l, "com"), own.com)},
+                                          {"inertia", {{"xx", I(0, 0)}, {"yy", I(1, 1)}, {"zz", I(2, 2)}, {"xy", I(0, 1)}, {"xz", I(0, 2)}, {"yz", I(1, 2)}}}});
+            }
             if (m.payloadMass > 0) {
                 const std::string p = child(at, "payload");
                 const Eigen::Matrix3d& I = m.payloadInertia;

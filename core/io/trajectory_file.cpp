@@ -42,6 +42,34 @@ const TorquePart kTorqueParts[] = {
     {"Q_coulomb_", [](const TorqueParts& p) { return p.coulomb; }},
 };
 
+// The controller's columns, per joint: stem, value, in the coordinate's unit (else the torque's).
+struct ControlPart {
+    const char* stem;
+    bool coordinate;
+    const Eigen::VectorXd ControlParts::*value;
+};
+const ControlPart kControlParts[] = {
+    {"q_ref_", true, &ControlParts::qRef},
+    {"e_", true, &ControlParts::error},
+    {"tau_ctrl_", false, &ControlParts::tau},
+    {"tau_ctrl_inertial_", false, &ControlParts::inertial},
+    {"tau_ctrl_coriolis_", false, &ControlParts::coriolis},
+    {"tau_ctrl_gravity_", false, &ControlParts::gravity},
+    {"tau_ctrl_kp_", false, &ControlParts::proportional},
+    {"tau_ctrl_kd_", false, &ControlParts::derivative},
+};
+// The Lyapunov function's columns (one each), with their units.
+struct LyapunovPart {
+    const char* name;
+    const char* unit;
+    const std::vector<double> LyapunovHistory::*value;
+};
+const LyapunovPart kLyapunovParts[] = {
+    {"V", "J", &LyapunovHistory::V},
+    {"Vdot", "W", &LyapunovHistory::Vdot},
+    {"minus_qdT_Kd_qd", "W", &LyapunovHistory::dissipation},
+};
+
 std::string withUnit(const std::string& name, const std::string& unit) { return unit.empty() ? name : name + " [" + unit + "]"; }
 
 }  // namespace
@@ -51,6 +79,7 @@ TorqueColumns torqueColumns(const Scene& scene, const TorqueHistory& history) {
     columns.history = &history;
     for (int j = 0; j < scene.dof(); ++j)
         columns.units.push_back(scene.lagrangian ? "" : forceUnit(scene.robot.joints[j].dh.type == JointType::Revolute));
+    columns.coordinateUnits = coordinateUnits(scene);
     return columns;
 }
 
@@ -74,6 +103,13 @@ void writeTrajectoryCsv(const Trajectory& tr, std::ostream& out, const TorqueCol
     if (torques.history)
         for (const TorquePart& part : kTorqueParts)
             for (int i = 0; i < tr.n; ++i) out << ',' << withUnit(indexed(part.stem, i), torques.units.at(i));
+    if (torques.control) {
+        for (const ControlPart& part : kControlParts)
+            for (int i = 0; i < tr.n; ++i)
+                out << ',' << withUnit(indexed(part.stem, i), part.coordinate ? torques.coordinateUnits.at(i) : torques.units.at(i));
+        if (torques.control->lyapunov)
+            for (const LyapunovPart& part : kLyapunovParts) out << ',' << withUnit(part.name, part.unit);
+    }
     out << '\n';
     char buffer[32];
     const auto put = [&](double v) {
@@ -93,6 +129,13 @@ void writeTrajectoryCsv(const Trajectory& tr, std::ostream& out, const TorqueCol
                 const Eigen::VectorXd v = part.value(torques.history->parts.at(k));
                 for (int i = 0; i < tr.n; ++i) out << ',', put(v[i]);
             }
+        if (torques.control) {
+            const ControlParts& p = torques.control->parts.at(k);
+            for (const ControlPart& part : kControlParts)
+                for (int i = 0; i < tr.n; ++i) out << ',', put((p.*part.value)[i]);
+            if (const auto& l = torques.control->lyapunov)
+                for (const LyapunovPart& part : kLyapunovParts) out << ',', put(((*l).*part.value).at(k));
+        }
         out << '\n';
     }
 }
@@ -124,6 +167,20 @@ void writeTrajectoryJson(const SimulationResult& result, std::ostream& out, cons
                 j[indexed(part.stem, i)] = column;
                 units[indexed(part.stem, i)] = torques.units.at(i);
             }
+        if (torques.control) {
+            for (const ControlPart& part : kControlParts)
+                for (int i = 0; i < tr.n; ++i) {
+                    std::vector<double> column(tr.size());
+                    for (size_t k = 0; k < tr.size(); ++k) column[k] = (torques.control->parts.at(k).*part.value)[i];
+                    j[indexed(part.stem, i)] = column;
+                    units[indexed(part.stem, i)] = part.coordinate ? torques.coordinateUnits.at(i) : torques.units.at(i);
+                }
+            if (const auto& l = torques.control->lyapunov)
+                for (const LyapunovPart& part : kLyapunovParts) {
+                    j[part.name] = (*l).*part.value;
+                    units[part.name] = part.unit;
+                }
+        }
         j["units"] = units;
         j["largest_residual"] = torques.history->largestResidual;
     }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/model/scene.hpp"
+#include "core/simulation/control_history.hpp"
 #include "core/simulation/torque_parts.hpp"
 #include "core/simulation/trajectory.hpp"
 
@@ -17,9 +18,17 @@ namespace ll {
 // parts Q_actuation_i, Q_viscous_i, Q_coulomb_i, each joint in its unit (N·m or N; ""
 // for a typed Lagrangian's). CSV names carry the unit ("tau_inertial_1 [N·m]"); JSON
 // keys are the plain names with a "units" object beside them.
+//
+// A controlled scene (core/simulation/control_history.hpp) adds the controller's columns:
+// q_ref_i and e_i = q_ref_i − q_i in the coordinate's unit, tau_ctrl_i (the torque applied,
+// after the limits) and its terms tau_ctrl_inertial_i (B̂ q̈_d), tau_ctrl_coriolis_i (Ĉ q̇),
+// tau_ctrl_gravity_i (ĝ), tau_ctrl_kp_i (K_p e), tau_ctrl_kd_i (K_d ė); with a Lyapunov
+// function also V [J], Vdot [W] and minus_qdT_Kd_qd [W] (−q̇ᵀK_d q̇).
 struct TorqueColumns {
-    const TorqueHistory* history = nullptr;  // its samples are the trajectory's
-    std::vector<std::string> units;          // (n) per joint
+    const TorqueHistory* history = nullptr;          // its samples are the trajectory's
+    std::vector<std::string> units;                  // (n) per joint
+    const ControlHistory* control = nullptr;         // its samples are the trajectory's
+    std::vector<std::string> coordinateUnits;        // (n) per joint: rad or m
 };
 // The units the columns of a robot scene's run are in (empty strings for a Lagrangian's).
 TorqueColumns torqueColumns(const Scene& scene, const TorqueHistory& history);

@@ -73,6 +73,12 @@ void ControlReference::evaluate(double t, Eigen::VectorXd& q, Eigen::VectorXd& q
 
 bool Control::drives(int joint) const { return joints.empty() || std::find(joints.begin(), joints.end(), joint) != joints.end(); }
 
+Message lawImpossible(const Control& control, int n) {
+    const int actuated = control.joints.empty() ? n : static_cast<int>(control.joints.size());
+    if (control.law == ControlLaw::ComputedTorque && actuated < n) return message(MessageId::ComputedTorqueUnderactuated, actuated, n);
+    return {};
+}
+
 const char* toString(ControlLaw law) {
     switch (law) {
         case ControlLaw::Pd: return "pd";

@@ -16,6 +16,9 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "core/model/link_inertia.hpp"
+#include "core/model/message.hpp"
+
 namespace ll {
 
 enum class ControlLaw { Pd, PdGravity, ComputedTorque, Feedforward };
@@ -37,8 +40,14 @@ struct ControlReference {
     void evaluate(double t, Eigen::VectorXd& q, Eigen::VectorXd& qd, Eigen::VectorXd& qdd) const;
 };
 
-// What the controller believes the robot is: the scene's robot with these changes.
+// What the controller believes the robot is: the scene's robot with these changes, in
+// this order: links given their own values, links scaled, a payload added.
+struct ControllerLink {
+    int joint = 0;     // 0-based
+    LinkInertia link;  // the controller's mass, COM and inertia for it
+};
 struct ControllerModel {
+    std::vector<ControllerLink> links;                         // the controller's own values for these links
     double payloadMass = 0.0;                                  // [kg] on the last link
     Eigen::Vector3d payloadCom = Eigen::Vector3d::Zero();      // [m] in the last DH frame
     Eigen::Matrix3d payloadInertia = Eigen::Matrix3d::Zero();  // [kg m²] about its COM, last frame's axes
@@ -55,6 +64,10 @@ struct Control {
 
     bool drives(int joint) const;
 };
+
+// Why `control` cannot drive a robot of n joints (empty: it can): computed torque commands
+// B̂ q̈ on every joint, so each needs an actuator.
+Message lawImpossible(const Control& control, int n);
 
 const char* toString(ControlLaw law);  // "pd", "pd_gravity", "computed_torque", "feedforward"
 const char* toString(ControlReference::Kind kind);

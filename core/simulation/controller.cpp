@@ -12,6 +12,8 @@ namespace ll {
 
 RobotModel controllerModel(const RobotModel& plant, const ControllerModel& changes) {
     RobotModel model = plant;
+    for (const ControllerLink& own : changes.links)
+        if (own.joint >= 0 && own.joint < static_cast<int>(model.joints.size())) model.joints[static_cast<std::size_t>(own.joint)].link = own.link;
     for (std::size_t i = 0; i < model.joints.size() && static_cast<Eigen::Index>(i) < changes.scale.size(); ++i) {
         const double s = changes.scale[static_cast<Eigen::Index>(i)];
         model.joints[i].link.mass *= s;

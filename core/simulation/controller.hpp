@@ -15,8 +15,9 @@
 
 namespace ll {
 
-// The robot as the controller believes it is: `plant` with `changes` (links scaled, a
-// payload lumped into the last link: masses added, COM combined, inertias moved to it).
+// The robot as the controller believes it is: `plant` with `changes` (links with the
+// controller's own values, links scaled, a payload lumped into the last link: masses added,
+// COM combined, inertias moved to it).
 RobotModel controllerModel(const RobotModel& plant, const ControllerModel& changes);
 
 // The controller's terms at one state, each per joint.

@@ -5,7 +5,12 @@
 // the PUMA 560 and the Panda within the integrator's tolerance; the controller's torque
 // equals B(q̈_d + K_p e + K_d ė) + C q̇ + g from evaluateScene (another route to B, C, g);
 // a payload the controller does not know leaves K_p e = g(q) − ĝ(q) at rest; bad
-// controllers are refused naming the field.
+// controllers are refused naming the field. Along whole runs of the examples
+// (core/simulation/control_history): V̇ from B, Ḃ and q̈ equals −q̇ᵀK_d q̇, V falls, and V̇
+// agrees with V's own finite differences; a wrong ĝ makes V̇ depart by exactly q̇ᵀ(ĝ − g); the
+// tracking summary is the trajectory's own error; the torque never passes a limit; the
+// payload example's link is the one controllerModel lumps; compare-laws refuses computed
+// torque on the acrobot and runs the rest.
 #include "test_registry.hpp"
 
 #include <random>
@@ -18,6 +23,8 @@
 #include "core/model/diagnostics.hpp"
 #include "core/pipeline/scene_evaluation.hpp"
 #include "core/pipeline/scene_simulation.hpp"
+#include "core/pipeline/law_comparison.hpp"
+#include "core/simulation/control_history.hpp"
 #include "core/simulation/controller.hpp"
 #include "core/simulation/robot_ode.hpp"
 #include "test_support.hpp"
@@ -174,6 +181,118 @@ private slots:
         const Eigen::VectorXd missed = gravityTorques(scene, scene.robot, q) - gravityTorques(scene, believed, q);
         QVERIFY(e.norm() > 1e-4);  // the wrong model shows
         QVERIFY2((400 * e - missed).norm() <= 1e-6 * 400, qPrintable(QString::number((400 * e - missed).norm())));
+    }
+
+    // Along the 2R examples' runs: V̇ = −q̇ᵀK_d q̇ at every sample (≤ 1e-8 relative), V
+    // never rises, and V̇ integrates to V's own change (trapezoids over 2 kHz samples).
+    void lyapunovAlongTheExamples() {
+        for (const char* file : {"control/planar_2r_pd_gravity.json", "control/planar_2r_pd.json"}) {
+            Scene scene = example(file);
+            scene.simulation.outputRate = 2000;
+            const SimulationInput input = prepareSimulation(scene);
+            const SimulationResult run = simulate(input, scene.simulation);
+            QCOMPARE(run.status, SimulationStatus::Completed);
+            const ControlHistory history = controlHistory(input, run.trajectory, torqueHistory(input, run.trajectory));
+            QVERIFY(history.lyapunov.has_value());
+            const LyapunovHistory& l = *history.lyapunov;
+            qInfo("%s: largest |dV/dt + qd'Kd qd| / max qd'Kd qd = %.2e", file, l.largestDeparture);
+            QVERIFY2(l.largestDeparture <= 1e-8, qPrintable(QString::number(l.largestDeparture)));
+            // V's fall is V̇'s integral (trapezoids over the 2 kHz samples: O(h²), about 1e-5 of V₀)
+            double rise = 0, integral = 0, drift = 0;
+            for (std::size_t k = 1; k < l.V.size(); ++k) {
+                rise = std::max(rise, l.V[k] - l.V[k - 1]);
+                integral += 0.5 * (run.trajectory.t[k] - run.trajectory.t[k - 1]) * (l.Vdot[k] + l.Vdot[k - 1]);
+                drift = std::max(drift, std::abs(l.V[k] - l.V.front() - integral));
+            }
+            QVERIFY2(rise <= 1e-9 * l.V.front(), qPrintable(QString::number(rise)));
+            QVERIFY2(drift <= 1e-4 * l.V.front(), qPrintable(QString::number(drift / l.V.front())));
+            QVERIFY(l.V.back() < 1e-3 * l.V.front());
+        }
+    }
+
+    // The controller's ĝ wrong (a 2 kg payload it believes in): V̇ departs from −q̇ᵀK_d q̇ by
+    // exactly q̇ᵀ(ĝ − g), at every sample.
+    void aWrongGravityMakesVdotDepart() {
+        Scene scene = example("control/planar_2r_pd_gravity.json");
+        scene.effects.control->model.payloadMass = 2.0;
+        const SimulationInput input = prepareSimulation(scene);
+        const SimulationResult run = simulate(input, scene.simulation);
+        const TorqueHistory torques = torqueHistory(input, run.trajectory);
+        const ControlHistory history = controlHistory(input, run.trajectory, torques);
+        const LyapunovHistory& l = *history.lyapunov;
+        QVERIFY(l.largestDeparture > 1e-2);
+        double worst = 0, scale = 0;
+        for (std::size_t k = 0; k < l.V.size(); ++k) {
+            const double expected = run.trajectory.qd[k].dot(history.parts[k].gravity - torques.parts[k].potential);
+            worst = std::max(worst, std::abs(l.Vdot[k] - l.dissipation[k] - expected));
+            scale = std::max(scale, std::abs(l.dissipation[k]));
+        }
+        QVERIFY2(worst <= 1e-8 * scale, qPrintable(QString::number(worst / scale)));
+    }
+
+    // The summary is the trajectory's: e = q_ref − q recomputed here from the reference;
+    // the Panda example saturates, and its torques never pass the limits.
+    void trackingSummaryAndLimits() {
+        const Scene scene = example("control/panda_trapezoidal_saturation.json");
+        const SimulationInput input = prepareSimulation(scene);
+        const SimulationResult run = simulate(input, scene.simulation);
+        QCOMPARE(run.status, SimulationStatus::Completed);
+        const ControlHistory history = controlHistory(input, run.trajectory, torqueHistory(input, run.trajectory));
+        const Control& c = *scene.effects.control;
+        Eigen::VectorXd q(7), qd(7), qdd(7), sum = Eigen::VectorXd::Zero(7), largest = Eigen::VectorXd::Zero(7);
+        for (std::size_t k = 0; k < run.trajectory.size(); ++k) {
+            c.reference.evaluate(run.trajectory.t[k], q, qd, qdd);
+            const Eigen::VectorXd e = q - run.trajectory.q[k];
+            sum += e.cwiseProduct(e);
+            largest = largest.cwiseMax(e.cwiseAbs());
+            QVERIFY((history.parts[k].tau.cwiseAbs() - c.torqueLimit).maxCoeff() <= 1e-12);
+        }
+        const Eigen::VectorXd rms = (sum / static_cast<double>(run.trajectory.size())).cwiseSqrt();
+        QVERIFY((rms - history.summary.rmsError).cwiseAbs().maxCoeff() <= 1e-14);
+        QVERIFY((largest - history.summary.maxError).cwiseAbs().maxCoeff() <= 1e-14);
+        QVERIFY(history.summary.saturatedFraction.maxCoeff() > 0.05);
+        QVERIFY(history.summary.maxTorque[1] == c.torqueLimit[1]);  // joint 2 at its limit
+        QVERIFY(!history.lyapunov);                                 // computed torque: none
+    }
+
+    // The payload example's link 6 (lumped by hand in the file) is the one controllerModel
+    // lumps from the bare link and the payload; the controller's own links replace them.
+    void controllerModelLinks() {
+        const Scene bare = example("puma560.json");
+        const Scene loaded = example("control/puma560_payload_unknown.json");
+        ControllerModel payload;
+        payload.payloadMass = 2.0;
+        payload.payloadCom = Eigen::Vector3d(0, 0, 0.1);
+        payload.payloadInertia = Eigen::Matrix3d::Identity() * 0.4 * 2.0 * 0.05 * 0.05;
+        const LinkInertia lumped = controllerModel(bare.robot, payload).joints[5].link;
+        const LinkInertia& file = loaded.robot.joints[5].link;
+        QVERIFY(std::abs(lumped.mass - file.mass) <= 1e-12);
+        QVERIFY((lumped.com - file.com).norm() <= 1e-12);
+        QVERIFY((lumped.inertia - file.inertia).norm() <= 1e-12);
+        const RobotModel believed = controllerModel(loaded.robot, loaded.effects.control->model);
+        QCOMPARE(believed.joints[5].link.mass, bare.robot.joints[5].link.mass);
+        QVERIFY((believed.joints[5].link.inertia - bare.robot.joints[5].link.inertia).norm() == 0);
+    }
+
+    // compare-laws on the acrobot: computed torque is impossible (one motor, two joints), said
+    // why; the other three run, and their torque on the shoulder is zero throughout.
+    void lawComparisonOnTheAcrobot() {
+        Scene scene = example("control/acrobot_pd_elbow.json");
+        scene.simulation.duration = 2;
+        const std::vector<LawRun> runs = compareLaws(scene);
+        QCOMPARE(runs.size(), std::size_t(4));
+        for (const LawRun& r : runs) {
+            if (r.law == ControlLaw::ComputedTorque) {
+                QCOMPARE(r.impossible.id, MessageId::ComputedTorqueUnderactuated);
+                QVERIFY(r.result.trajectory.t.empty());
+                continue;
+            }
+            QVERIFY(r.impossible.empty());
+            QCOMPARE(r.result.status, SimulationStatus::Completed);
+            QCOMPARE(r.summary.maxTorque[0], 0.0);
+            QVERIFY(r.summary.maxTorque[1] > 1.0);
+            QCOMPARE(r.error.size(), r.result.trajectory.size());
+        }
     }
 
     // One line naming the field for each bad controller.
