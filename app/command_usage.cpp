@@ -117,7 +117,8 @@ std::string overviewUsage() {
                     "           --size with --screenshot); --dh-step I,K the DH step-through at joint I after K of its\n"
                     "           four elementary motions, --dh-dimensions every DH parameter drawn on the robot,\n"
                     "           --dh-from-axes I,K the DH frames found from the joint axes: frame I after K of\n"
-                    "           its rules (z, origin, x, y; 0,0 the axes alone)\n"
+                    "           its rules (z, origin, x, y; 0,0 the axes alone); --tracking error|torque|lyapunov|rate\n"
+                    "           the Tracking tab of a robot with a controller\n"
                     "\ncommands:\n";
     for (const CommandText& c : commands) s += "  " + synopsis(c, 2) + "\n" + indented(c.summary, "      ");
     return s + "\nexit codes: 0 success, 2 bad input, 3 simulation stopped early\n";

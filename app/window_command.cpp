@@ -40,6 +40,7 @@
 #include "ui/window/dh_axes_panel.hpp"
 #include "ui/window/dh_step_page.hpp"
 #include "ui/window/torque_pane.hpp"
+#include "ui/window/tracking_pane.hpp"
 #include "ui/window/work_precision_pane.hpp"
 
 namespace ll::cli {
@@ -47,7 +48,7 @@ namespace ll::cli {
 int windowCommand(const Args& args, const std::chrono::steady_clock::time_point& processStart) {
     const Options options(args,
                           {"screenshot", "play", "step", "teach", "size", "first-frame", "select", "pick-link", "at", "tab", "joint",
-                           "derivation", "present", "dh-step", "dh-dimensions", "dh-from-axes"},
+                           "derivation", "present", "dh-step", "dh-dimensions", "dh-from-axes", "tracking"},
                           {"first-frame", "present", "dh-dimensions"});
     if (options.positional().size() > 1) throw UsageError(UsageId::WindowTakesOneScene, options.positional().size());
     const std::string scene =
@@ -63,9 +64,15 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
     const double at = options.number("at", 0);
     if (at < 0) throw UsageError(UsageId::AtNegative, options.text("at"));
     const std::string tab = options.text("tab");
-    static const char* const tabs[] = {"energy", "joints", "teach", "torques", "properties", "work-precision", "dh-steps"};
+    static const char* const tabs[] = {"energy", "joints", "teach", "torques", "properties", "work-precision", "dh-steps", "tracking"};
     if (options.has("tab") && std::find(std::begin(tabs), std::end(tabs), tab) == std::end(tabs))
-        throw UsageError(UsageId::ExpectedOneOf, "tab", "energy, joints, teach, torques, properties, work-precision", "dh-steps", tab);
+        throw UsageError(UsageId::ExpectedOneOf, "tab", "energy, joints, teach, torques, properties, work-precision, dh-steps", "tracking",
+                         tab);
+    // --tracking: what the Tracking tab shows (a controlled robot's)
+    const std::string tracking = options.text("tracking", "error");
+    static const char* const trackings[] = {"error", "torque", "lyapunov", "rate"};
+    const auto trackingAt = std::find(std::begin(trackings), std::end(trackings), tracking);
+    if (trackingAt == std::end(trackings)) throw UsageError(UsageId::ExpectedOneOf, "tracking", "error, torque, lyapunov", "rate", tracking);
     const std::string derivationView = options.text("derivation", "typeset");
     if (derivationView != "typeset" && derivationView != "text" && derivationView != "entries" && derivationView != "exercise")
         throw UsageError(UsageId::ExpectedOneOf, "derivation", "typeset, text, entries", "exercise", derivationView);
@@ -135,11 +142,12 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
         window.playback().pause();
         window.playback().setTime(at);
     }
-    if (options.has("tab")) window.showPlotTab(QString::fromStdString(tab));
+    if (options.has("tab") && !window.showPlotTab(QString::fromStdString(tab))) throw UsageError(UsageId::TrackingNeedsControl, "tab", scene);
     if (options.has("joint")) {
         const double joint = options.number("joint", 1);
         if (joint < 1 || joint > n || joint != std::floor(joint)) throw UsageError(UsageId::NotAJoint, options.text("joint"), n);
         window.torquePane().setJoint(static_cast<int>(joint) - 1);
+        window.trackingPane().setJoint(static_cast<int>(joint) - 1);
     }
     window.showDerivationView(QString::fromStdString(derivationView));
     // an exercise: its key made and the answers the scene holds judged (what the tab shows)
@@ -154,9 +162,13 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
             return 1;
         }
     }
-    if ((tab == "torques" || tab == "properties") && !waitFor([&] { return window.analysis() != nullptr; }, 120)) {
+    if ((tab == "torques" || tab == "properties" || tab == "tracking" || options.has("tracking")) && !waitFor([&] { return window.analysis() != nullptr; }, 120)) {
         std::cerr << "error: " << scene << ": the run's torques and properties did not come in 120 s\n";
         return 1;
+    }
+    if (options.has("tracking")) {
+        if (!window.showPlotTab("tracking")) throw UsageError(UsageId::TrackingNeedsControl, "tracking", scene);
+        window.trackingPane().setShow(static_cast<ui::TrackingPane::Show>(trackingAt - std::begin(trackings)));
     }
     if (options.has("teach")) {
         const Eigen::VectorXd q = options.vector("teach", window.document().validScene().dof());

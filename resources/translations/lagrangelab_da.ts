@@ -167,7 +167,7 @@
 <context>
     <name>DhAxesPanel</name>
     <message>
-        <location filename="../../ui/window/dh_axes_panel.cpp" line="+60" />
+        <location filename="../../ui/window/dh_axes_panel.cpp" line="+63" />
         <source>« The axes</source>
         <translation>« Akserne</translation>
     </message>
@@ -187,7 +187,7 @@
         <translation>Tabellen »</translation>
     </message>
     <message>
-        <location line="+28" />
+        <location line="+30" />
         <source>A typed Lagrangian has no joint axes: finding the DH parameters needs a robot.</source>
         <translation>En indtastet Lagrange-funktion har ingen ledakser: DH-parametrene kan kun findes for en robot.</translation>
     </message>
@@ -202,7 +202,7 @@
         <translation>Leddenes akser</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+2" />
         <source>The robot stands at home (all q = 0). Joint i turns about (or slides along) its axis, the line marked q&lt;sub&gt;i&lt;/sub&gt;. The rules now place frames 0 to %1 on these lines, one rule at a time: z, then the origin o, then x, then y.</source>
         <translation>Robotten står i hjemmestillingen (alle q = 0). Led i drejer om (eller glider langs) sin akse, linjen mærket q&lt;sub&gt;i&lt;/sub&gt;. Reglerne placerer nu koordinatsystemerne 0 til %1 på disse linjer, én regel ad gangen: z, så origo o, så x, så y.</translation>
     </message>
@@ -217,18 +217,18 @@
         <translation>Koordinatsystem %1 er værktøjets: %2 lægges langs det sidste leds akse.</translation>
     </message>
     <message>
-        <location line="+1" />
         <location line="+2" />
+        <location line="+5" />
         <source>%1 lies on the axis of joint %2, pointing the way q&lt;sub&gt;%2&lt;/sub&gt; turns it (right-hand rule) or slides it.</source>
         <translation>%1 ligger på aksen for led %2 og peger i den retning, som q&lt;sub&gt;%2&lt;/sub&gt; drejer (højrehåndsreglen) eller forskyder leddet.</translation>
     </message>
     <message>
-        <location line="-1" />
+        <location line="-2" />
         <source>%1 lies on the axis of joint 1: frame 0 is frame 1 at home as far as the rules allow.</source>
         <translation>%1 ligger på aksen for led 1: koordinatsystem 0 falder sammen med koordinatsystem 1 i hjemmestillingen, så vidt reglerne tillader det.</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+8" />
         <source>the axis of joint %1</source>
         <translation>aksen for led %1</translation>
     </message>
@@ -263,7 +263,7 @@
         <translation>%1 og %2 skærer hinanden: %3 er, hvor de mødes, så a&lt;sub&gt;%4&lt;/sub&gt; = 0.</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+3" />
         <source>%1 and %2 are parallel: every normal to one is normal to the other, so the rule leaves the origin free. Chosen: the normal through the previous origin, so d&lt;sub&gt;%3&lt;/sub&gt; = 0.</source>
         <translation>%1 og %2 er parallelle: enhver normal til den ene er normal til den anden, så reglen lader origo være frit. Valgt: normalen gennem det forrige origo, så d&lt;sub&gt;%3&lt;/sub&gt; = 0.</translation>
     </message>
@@ -273,7 +273,7 @@
         <translation>%1 og %2 ligger på samme linje: %3 bliver i det forrige origo (a = 0 og d = 0 mellem dem).</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+8" />
         <source>The two axes point opposite ways: α = 180°. z is never turned round to avoid it, or q would turn the joint the other way.</source>
         <translation>De to akser peger i modsat retning: α = 180°. z vendes aldrig om for at undgå det, for så ville q dreje leddet den anden vej.</translation>
     </message>
@@ -283,17 +283,17 @@
         <translation>Koordinatsystem %1: x</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+3" />
         <source>%1 is any direction perpendicular to %2: the world's x (or y) made perpendicular, so frame 0 matches the world where it can.</source>
         <translation>%1 er en vilkårlig retning vinkelret på %2: verdenskoordinatsystemets x (eller y) gjort vinkelret, så koordinatsystem 0 så vidt muligt falder sammen med verdenskoordinatsystemet.</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+4" />
         <source>%1 points from the last axis to the tool's origin (along %2 when the tool's origin is on that axis).</source>
         <translation>%1 peger fra den sidste akse mod værktøjets origo (langs %2, når værktøjets origo ligger på aksen).</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+2" />
         <source>%1 = %2 (made perpendicular to %3), so θ&lt;sub&gt;%4&lt;/sub&gt; = 0 at home.</source>
         <translation>%1 = %2 (gjort vinkelret på %3), så θ&lt;sub&gt;%4&lt;/sub&gt; = 0 i hjemmestillingen.</translation>
     </message>
@@ -303,12 +303,12 @@
         <translation>%1 er vinkelret på begge akser: ±(%2 × %3). Fortegnet er et valg: det, der giver θ = 0 i hjemmestillingen.</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+3" />
         <source>%1 is free around the one line: kept as %2, so θ = 0.</source>
         <translation>%1 kan frit drejes om den fælles linje: den beholdes som %2, så θ = 0.</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+2" />
         <source>%1 lies along the common normal, pointing from %2 to %3.</source>
         <translation>%1 ligger langs den fælles normal og peger fra %2 mod %3.</translation>
     </message>
@@ -333,7 +333,7 @@
         <translation>Række %1 i tabellen aflæses ud fra koordinatsystem %2 og %1.</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+10" />
         <source>The scene's own table is the one the rules give.</source>
         <translation>Scenens egen tabel er den, reglerne giver.</translation>
     </message>
@@ -1084,7 +1084,7 @@
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../ui/window/main_window.cpp" line="+123" />
+        <location filename="../../ui/window/main_window.cpp" line="+124" />
         <source>Model</source>
         <translation>Model</translation>
     </message>
@@ -1134,7 +1134,7 @@
         <translation>Grafer</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+26" />
         <source>Energy</source>
         <translation>Energi</translation>
     </message>
@@ -1145,12 +1145,12 @@
     </message>
     <message>
         <location line="+0" />
-        <location line="+123" />
+        <location line="+124" />
         <source>Teach</source>
         <translation>Teach</translation>
     </message>
     <message>
-        <location line="-123" />
+        <location line="-124" />
         <source>Torques</source>
         <translation>Momenter</translation>
     </message>
@@ -1170,12 +1170,17 @@
         <translation>DH-gennemgang</translation>
     </message>
     <message>
+        <location line="+0" />
+        <source>Tracking</source>
+        <translation>Følgning</translation>
+    </message>
+    <message>
         <location line="+17" />
         <source>Meshes not read, so the DH drawing is shown: %1</source>
         <translation>Mesh-filer kunne ikke læses, så DH-tegningen vises: %1</translation>
     </message>
     <message>
-        <location line="+60" />
+        <location line="+61" />
         <source>&amp;File</source>
         <translation>&amp;Filer</translation>
     </message>
@@ -1270,7 +1275,7 @@
         <translation>Simuleringen mislykkedes: %1</translation>
     </message>
     <message>
-        <location line="+95" />
+        <location line="+101" />
         <source>simulating…</source>
         <translation>simulerer…</translation>
     </message>
@@ -1303,7 +1308,7 @@
         <translation> · modellen har fejl: viser den seneste gyldige</translation>
     </message>
     <message>
-        <location line="+86" />
+        <location line="+87" />
         <source>%1%2 — LagrangeLab</source>
         <translation>%1%2 — LagrangeLab</translation>
     </message>
@@ -1855,6 +1860,125 @@
     </message>
 </context>
 <context>
+    <name>TrackingPane</name>
+    <message>
+        <location filename="../../ui/window/tracking_pane.cpp" line="+75" />
+        <location line="+29" />
+        <source>joint %1</source>
+        <translation>led %1</translation>
+    </message>
+    <message>
+        <location line="-19" />
+        <source>Tracking error e, ė</source>
+        <translation>Følgefejl e, ė</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Controller's torque</source>
+        <translation>Regulatorens moment</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Lyapunov function V</source>
+        <translation>Lyapunov-funktionen V</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>dV/dt and −q̇ᵀKd q̇</source>
+        <translation>dV/dt og −q̇ᵀKd q̇</translation>
+    </message>
+    <message>
+        <location line="+58" />
+        <source>e = qref − q</source>
+        <translation>e = qref − q</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>ė = q̇ref − q̇</source>
+        <translation>ė = q̇ref − q̇</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Joint %1: RMS e = %2 %3, largest |e| = %4 %3.</source>
+        <translation>Led %1: RMS e = %2 %3, største |e| = %4 %3.</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>B̂ q̈d</source>
+        <translation>B̂ q̈d</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Ĉ q̇</source>
+        <translation>Ĉ q̇</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>ĝ</source>
+        <translation>ĝ</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>B̂ Kp e</source>
+        <translation>B̂ Kp e</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Kp e</source>
+        <translation>Kp e</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>B̂ Kd ė</source>
+        <translation>B̂ Kd ė</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Kd ė</source>
+        <translation>Kd ė</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>τ applied</source>
+        <translation>τ påtrykt</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>Joint %1: largest |τ| = %2 %3</source>
+        <translation>Led %1: største |τ| = %2 %3</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>, limit %1 %2, saturated %3 % of the run</source>
+        <translation>, grænse %1 %2, mættet %3 % af kørslen</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source> (no actuator: τ = 0)</source>
+        <translation> (ingen aktuator: τ = 0)</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>V = ½ q̇ᵀB q̇ + ½ eᵀK_p e + E_pot(q) − E_pot(q_ref). </source>
+        <translation>V = ½ q̇ᵀB q̇ + ½ eᵀK_p e + E_pot(q) − E_pot(q_ref). </translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>V = ½ q̇ᵀB q̇ + ½ eᵀK_p e. </source>
+        <translation>V = ½ q̇ᵀB q̇ + ½ eᵀK_p e. </translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>dV/dt = −q̇ᵀK_d q̇ at every instant (largest difference %1 of the largest dissipation) because q̇ᵀ(Ḃ − 2C)q̇ = 0: the skew-symmetry the Properties tab checks. V can only fall.</source>
+        <translation>dV/dt = −q̇ᵀK_d q̇ til hvert tidspunkt (største forskel %1 af den største dissipation), fordi q̇ᵀ(Ḃ − 2C)q̇ = 0: den skævsymmetri, som fanen Egenskaber kontrollerer. V kan kun falde.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>dV/dt departs from −q̇ᵀK_d q̇ (by up to %1 of the largest dissipation): dV/dt + q̇ᵀK_d q̇ = q̇ᵀ(ĝ − g) + the power of friction and of the limits' shortfall. The skew property still holds; the controller's ĝ is not the robot's g, or something else acts.</source>
+        <translation>dV/dt afviger fra −q̇ᵀK_d q̇ (med op til %1 af den største dissipation): dV/dt + q̇ᵀK_d q̇ = q̇ᵀ(ĝ − g) + effekten fra friktion og fra det, grænserne skærer af. Skævsymmetrien gælder stadig; regulatorens ĝ er ikke robottens g, eller noget andet virker.</translation>
+    </message>
+</context>
+<context>
     <name>TrajectoryChart</name>
     <message>
         <location filename="../../ui/window/trajectory_chart.cpp" line="+75" />
@@ -1910,7 +2034,7 @@
 <context>
     <name>ViewBar</name>
     <message>
-        <location filename="../../ui/window/view_bar.cpp" line="+31" />
+        <location filename="../../ui/window/view_bar.cpp" line="+32" />
         <source>Fit</source>
         <translation>Tilpas</translation>
     </message>

@@ -82,6 +82,8 @@ void LiveSimulation::start() {
         try {
             analysis->torques = std::make_shared<const TorqueHistory>(torqueHistory(*input, result->simulation.trajectory));
             if (cancel->load()) return;
+            if (!scene->lagrangian && scene->effects.control)
+                analysis->control = std::make_shared<const ControlHistory>(controlHistory(*input, result->simulation.trajectory, *analysis->torques));
             analysis->properties = std::make_shared<const ModelProperties>(checkModelProperties(*input, result->simulation.trajectory));
         } catch (const std::exception& e) {
             analysis->error = present::errorText(e, language);

@@ -16,6 +16,7 @@
 
 #include "core/model/scene.hpp"
 #include "core/visual/visual_scene.hpp"
+#include "core/simulation/control_history.hpp"
 #include "core/simulation/model_properties.hpp"
 #include "core/simulation/torque_parts.hpp"
 #include "core/simulation/trajectory.hpp"
@@ -35,11 +36,13 @@ struct LiveResult {
 
 // What the run says about the model, computed after the run is shown (same worker):
 // where the torque goes (core/simulation/torque_parts) and the model's properties along
-// it (core/simulation/model_properties).
+// it (core/simulation/model_properties); for a controlled robot what its controller did
+// (core/simulation/control_history).
 struct RunAnalysis {
     int request = 0;                               // the LiveResult it belongs to
     std::shared_ptr<const TorqueHistory> torques;  // null when it could not be computed
     std::shared_ptr<const ModelProperties> properties;
+    std::shared_ptr<const ControlHistory> control;  // null without a controller
     std::string error;  // why not
 };
 

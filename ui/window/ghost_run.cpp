@@ -40,6 +40,7 @@ void GhostRun::setIntegrator(const QString& integrator) {
     integrator_ = integrator;
     result_.reset();
     sampler_.reset();
+    reference_.reset();
     parts_.view->setGhost(nullptr);
     parts_.energy->setGhost(nullptr, {});
     if (integrator.isEmpty()) return;
@@ -65,11 +66,28 @@ void GhostRun::show(std::shared_ptr<const LiveResult> result) {
     emit shown();
 }
 
-void GhostRun::runShown() {
+void GhostRun::runShown(const LiveResult& shown) {
     if (result_ && result_->simulation.trajectory.size() > 0) parts_.energy->setGhost(&result_->simulation.trajectory, integrator_);
+    if (!integrator_.isEmpty()) return;
+    const Scene& scene = *shown.scene;
+    const bool controlled = !scene.lagrangian && scene.effects.control && shown.visual;
+    if (!controlled && !reference_) return;
+    reference_.reset();
+    referenceVisual_.reset();
+    if (controlled) {
+        reference_ = scene.effects.control->reference;
+        referenceVisual_ = std::make_shared<VisualScene>(scene);
+        qRef_ = qdRef_ = qddRef_ = Eigen::VectorXd::Zero(scene.dof());
+    }
+    parts_.view->setGhost(referenceVisual_);
 }
 
 void GhostRun::showAt(double t) {
+    if (reference_) {
+        reference_->evaluate(t, qRef_, qdRef_, qddRef_);
+        parts_.view->setGhostPose(qRef_, t);
+        return;
+    }
     if (!sampler_) return;
     Eigen::VectorXd q(sampler_->dof()), qd(sampler_->dof());
     sampler_->sample(t, q, qd);

@@ -44,6 +44,7 @@
 #include "ui/window/teach_mode.hpp"
 #include "ui/window/teach_panel.hpp"
 #include "ui/window/torque_pane.hpp"
+#include "ui/window/tracking_pane.hpp"
 #include "ui/window/trajectory_chart.hpp"
 #include "ui/window/view_bar.hpp"
 #include "ui/window/work_precision_pane.hpp"
@@ -194,18 +195,19 @@ void MainWindow::buildDocks() {
     parts_.joints = new TrajectoryChart(TrajectoryChart::Kind::Joints, tabs);
     parts_.teach = new TeachPanel(tabs);
     parts_.torques = new TorquePane(tabs);
+    parts_.tracking = new TrackingPane(tabs);
     parts_.properties = new PropertiesPanel(tabs);
     parts_.workPrecision = new WorkPrecisionPane(tabs);
     parts_.dhPage = new DhStepPage(tabs);
     parts_.dhSteps = parts_.dhPage->rows();
     parts_.dhAxes = parts_.dhPage->axes();
     for (QWidget* page : std::initializer_list<QWidget*>{energyPage, parts_.joints, parts_.teach, parts_.torques, parts_.properties,
-                                                         parts_.workPrecision, parts_.dhPage})
+                                                         parts_.workPrecision, parts_.dhPage, parts_.tracking})
         tabs->addTab(page, QString());
     (*relabel_)([tabs] {
         int i = 0;
         for (const QString& title : {tr("Energy"), tr("Joints q, dq/dt"), tr("Teach"), tr("Torques"), tr("Properties"),
-                                     tr("Work–precision"), tr("DH step-through")})
+                                     tr("Work–precision"), tr("DH step-through"), tr("Tracking")})
             tabs->setTabText(i++, title);
     });
     plotDock->setWidget(tabs);
@@ -267,6 +269,7 @@ void MainWindow::buildFeatures() {
     for (TrajectoryChart* chart : {parts_.energy, parts_.joints, parts_.entryChart})
         connect(chart, &TrajectoryChart::timePicked, parts_.playback, scrub);
     connect(parts_.torques, &TorquePane::timePicked, parts_.playback, scrub);
+    connect(parts_.tracking, &TrackingPane::timePicked, parts_.playback, scrub);
     connect(parts_.properties, &PropertiesPanel::timePicked, parts_.playback, scrub);
     connect(parts_.plotTabs, &QTabWidget::currentChanged, this, &MainWindow::plotTabChanged);
 }
@@ -408,9 +411,11 @@ void MainWindow::showResult(std::shared_ptr<const LiveResult> result) {
     selection_.setTrajectory(&traj);
     shown_.analysis.reset();  // the torques and properties of this run follow
     parts_.torques->setTorques(nullptr, result->scene);
+    parts_.tracking->setControl(nullptr, result->scene, {});  // the tab only for a controlled robot
+    parts_.plotTabs->setTabVisible(parts_.plotTabs->indexOf(parts_.tracking), !result->scene->lagrangian && result->scene->effects.control);
     parts_.properties->setProperties(nullptr);
     linking_->runShown();
-    ghost_->runShown();
+    ghost_->runShown(*result);
     parts_.playback->setRange(shown_.sampler->startTime(), shown_.sampler->endTime());
     showTime(parts_.playback->time());
     status_->setText(statusText());
@@ -445,6 +450,7 @@ void MainWindow::showAnalysis(std::shared_ptr<const RunAnalysis> analysis) {
     parts_.torques->setTorques(analysis->torques, shown_.result->scene);
     parts_.torques->setCursorTime(parts_.playback->time());
     parts_.properties->setProperties(analysis->properties);
+    parts_.tracking->setControl(analysis->control, shown_.result->scene, analysis->torques ? analysis->torques->t : std::vector<double>{});
 }
 
 void MainWindow::showTime(double t) {
@@ -471,6 +477,7 @@ void MainWindow::showTime(double t) {
     }
     for (TrajectoryChart* chart : {parts_.energy, parts_.joints, parts_.entryChart}) chart->setCursorTime(t);
     parts_.torques->setCursorTime(t);
+    parts_.tracking->setCursorTime(t);
     if (!teachMode_->active()) selection_.setState(q_, qd_, t);
 }
 
@@ -514,9 +521,10 @@ void MainWindow::teach(const Eigen::VectorXd& q) { teachMode_->teach(q); }
 
 bool MainWindow::showPlotTab(const QString& name) {
     // The plots dock's tabs in the order buildDocks adds them.
-    static const QStringList names{"energy", "joints", "teach", "torques", "properties", "work-precision", "dh-steps"};
-    if (names.indexOf(name) >= 0) parts_.plotTabs->setCurrentIndex(names.indexOf(name));
-    return names.indexOf(name) >= 0;
+    static const QStringList names{"energy", "joints", "teach", "torques", "properties", "work-precision", "dh-steps", "tracking"};
+    const int at = static_cast<int>(names.indexOf(name));  // a hidden tab (Tracking without a controller) is not shown
+    if (at >= 0 && parts_.plotTabs->isTabVisible(at)) parts_.plotTabs->setCurrentIndex(at);
+    return at >= 0 && parts_.plotTabs->isTabVisible(at);
 }
 
 void MainWindow::showDerivationView(const QString& name) {

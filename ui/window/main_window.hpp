@@ -81,6 +81,7 @@ public:
     TrajectoryChart& entryChart() { return *parts_.entryChart; }
     TeachPanel& teachPanel() { return *parts_.teach; }
     TorquePane& torquePane() { return *parts_.torques; }
+    TrackingPane& trackingPane() { return *parts_.tracking; }
     PropertiesPanel& propertiesPanel() { return *parts_.properties; }
     WorkPrecisionPane& workPrecisionPane() { return *parts_.workPrecision; }
     DhStepPanel& dhStepPanel() { return *parts_.dhSteps; }
@@ -108,7 +109,7 @@ public:
     // Teach mode at pose q: the robot posed, step 9 shows B, C, g and the energies there.
     void teach(const Eigen::VectorXd& q);
     // Shows a tab of the plots dock by name: energy, joints, teach, torques, properties,
-    // work-precision, dh-steps (false: no such tab).
+    // work-precision, dh-steps, tracking (false: no such tab, or Tracking of a robot without a controller).
     bool showPlotTab(const QString& name);
     // Shows the derivation dock's tab: typeset, text, entries or exercise.
     void showDerivationView(const QString& name);

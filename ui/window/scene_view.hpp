@@ -63,6 +63,7 @@ public:
     // A second, translucent copy of the robot (a ghost run); null removes it.
     void setGhost(std::shared_ptr<VisualScene> ghost);
     void setGhostPose(const Eigen::VectorXd& q, double t);
+    const VisualScene* ghost() const { return ghostVisual_.get(); }  // null: none
 
     void setShowFrames(bool on);
     void setShowLabels(bool on);  // the frames' numbers

@@ -29,6 +29,7 @@ class PropertiesPanel;
 class SceneView;
 class TeachPanel;
 class TorquePane;
+class TrackingPane;
 class TrajectoryChart;
 class WorkPrecisionPane;
 
@@ -57,6 +58,7 @@ struct WindowParts {
     TrajectoryChart *energy = nullptr, *joints = nullptr, *entryChart = nullptr;
     TeachPanel* teach = nullptr;
     TorquePane* torques = nullptr;
+    TrackingPane* tracking = nullptr;  // a controlled robot's (ui/window/tracking_pane)
     PropertiesPanel* properties = nullptr;
     WorkPrecisionPane* workPrecision = nullptr;
     DhStepPage* dhPage = nullptr;    // the DH step-through tab: its two pages below

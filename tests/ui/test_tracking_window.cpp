@@ -1,0 +1,121 @@
+// The controller in the window (issue 49): a controlled robot gets the Tracking tab, a
+// robot without one does not; the tab plots e and ė, the controller's torque terms (which
+// add up to the torque applied), and for PD + g the Lyapunov function with dV/dt over
+// −q̇ᵀK_d q̇ and the sentence that names the skew property; a controller whose ĝ is wrong
+// says V̇ departs; the reference is drawn as the ghost robot, its end effector where the
+// 2R's closed-form kinematics puts q_ref; `--tracking` pictures a view and refuses a bad one.
+#include <QImage>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include "core/visual/visual_scene.hpp"
+#include "test_registry.hpp"
+#include "ui/document/scene_document.hpp"
+#include "ui/window/ghost_run.hpp"
+#include "ui/window/playback_bar.hpp"
+#include "ui/window/scene_files.hpp"
+#include "ui/window/scene_view.hpp"
+#include "ui/window/tracking_pane.hpp"
+#include "ui/window/trajectory_chart.hpp"
+#include "window_checks.hpp"
+#include "window_waits.hpp"
+
+namespace test_tracking_window {
+
+using namespace ll;
+using ll::ui::MainWindow;
+using Show = ll::ui::TrackingPane::Show;
+
+namespace {
+
+QString example(const char* name) { return QString(LL_EXAMPLES_DIR) + "/" + name; }
+
+bool analysed(MainWindow& w) { return test::settled(w, 120) && test::waitUntil([&] { return w.analysis() != nullptr; }, 120000); }
+
+}  // namespace
+
+class TestTrackingWindow : public QObject {
+    Q_OBJECT
+    QTemporaryDir dir_;
+
+private slots:
+    void initTestCase() { test::keepWindowStateIn(dir_); }
+
+    void theTabOfAControlledRobot() {
+        auto w = test::openedWindow(example("control/planar_2r_pd_gravity.json"), analysed);
+        QVERIFY(w->showPlotTab("tracking"));
+        ui::TrackingPane& pane = w->trackingPane();
+        QVERIFY(test::waitUntil([&] { return w->analysis() && w->analysis()->control; }, 60000));
+        const ControlHistory& history = *w->analysis()->control;
+        QVERIFY(history.lyapunov.has_value());
+        // e and ė
+        pane.setShow(Show::Error);
+        QVERIFY(pane.chart().curvePoints() > 100);
+        QVERIFY2(pane.note().contains("RMS e"), qPrintable(pane.note()));
+        // the controller's terms add up to the torque applied
+        pane.setShow(Show::Torque);
+        QVERIFY(pane.chart().curvePoints() > 100);
+        for (const ControlParts& p : history.parts)
+            QVERIFY((p.inertial + p.coriolis + p.gravity + p.proportional + p.derivative - p.tau).cwiseAbs().maxCoeff() <= 1e-12);
+        // V, and dV/dt over −q̇ᵀK_d q̇ with the sentence naming the skew property
+        pane.setShow(Show::Lyapunov);
+        QCOMPARE(pane.show(), Show::Lyapunov);
+        pane.setShow(Show::LyapunovRate);
+        QCOMPARE(pane.show(), Show::LyapunovRate);
+        QVERIFY2(pane.note().contains(QString::fromUtf8("q̇ᵀ(Ḃ − 2C)q̇ = 0")), qPrintable(pane.note()));
+        QVERIFY(history.lyapunov->largestDeparture <= 1e-8);
+
+        // The reference as the ghost: its end effector at the 2R's closed form of q_ref,
+        // whatever the time shown (a held pose), while the robot itself is elsewhere.
+        QVERIFY(w->ghost().showsReference());
+        for (double t : {0.0, 0.4, 2.0}) {
+            w->playback().setTime(t);
+            test::flushEvents();
+            const VisualScene* ghost = w->sceneView().ghost();
+            QVERIFY(ghost != nullptr);
+            const double q1 = 0.5, q2 = -0.3, a1 = 1.0, a2 = 0.8;
+            const Eigen::Vector3d expected(a1 * std::cos(q1) + a2 * std::cos(q1 + q2), a1 * std::sin(q1) + a2 * std::sin(q1 + q2), 0);
+            QVERIFY2((ghost->endEffectorPosition() - expected).norm() <= 1e-12,
+                     qPrintable(QString::number((ghost->endEffectorPosition() - expected).norm())));
+        }
+
+        // A controller that believes in a 2 kg payload: V̇ departs, and the note says why.
+        const auto* old = w->analysis();
+        w->document().setValue("/effects/control/model", ui::SceneJson{{"payload", {{"mass", 2.0}}}}, "payload");
+        QVERIFY(test::waitUntil([&] { return w->analysis() && w->analysis() != old && w->analysis()->control; }, 120000));
+        pane.setShow(Show::LyapunovRate);
+        QVERIFY(w->analysis()->control->lyapunov->largestDeparture > 1e-2);
+        QVERIFY2(pane.note().contains(QString::fromUtf8("ĝ − g")), qPrintable(pane.note()));
+    }
+
+    // A robot without a controller: no Tracking tab, no reference ghost.
+    void noControllerNoTab() {
+        auto w = test::openedWindow(example("planar_2r.json"), analysed);
+        QVERIFY(!w->showPlotTab("tracking"));  // its tab is hidden
+        test::flushEvents();
+        QVERIFY(!w->trackingPane().isVisible());
+        QVERIFY(!w->ghost().showsReference());
+        QVERIFY(w->sceneView().ghost() == nullptr);
+    }
+
+    // --tracking VIEW on the command line; a bad view is one line and exit 2.
+    void trackingOnTheCommandLine() {
+        const QString png = dir_.filePath("tracking.png");
+        QProcess p;
+        p.start(LL_CLI, {example("control/planar_2r_pd.json"), "--screenshot", png, "--tracking", "rate", "--at", "0.5"});
+        QVERIFY(p.waitForFinished(120000));
+        QVERIFY2(p.exitCode() == 0, p.readAllStandardError().constData());
+        QCOMPARE(QImage(png).size(), QSize(1280, 800));
+        p.start(LL_CLI, {example("control/planar_2r_pd.json"), "--screenshot", png, "--tracking", "bogus"});
+        QVERIFY(p.waitForFinished(60000));
+        QCOMPARE(p.exitCode(), 2);
+        const QByteArray err = p.readAllStandardError();
+        QVERIFY2(err.contains("--tracking") && err.contains("bogus") && err.count('\n') == 1, err.constData());
+    }
+};
+
+LL_TEST_MAIN(TestTrackingWindow)
+
+}  // namespace test_tracking_window
+#include "test_tracking_window.moc"
