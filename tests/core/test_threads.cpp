@@ -16,6 +16,7 @@
 
 #include "core/io/scene_file.hpp"
 #include "core/model/cancellation.hpp"
+#include "core/pipeline/law_comparison.hpp"
 #include "core/pipeline/scene_check.hpp"
 #include "core/present/text_document.hpp"
 #include "core/pipeline/scene_derivation.hpp"
@@ -143,6 +144,30 @@ private slots:
         }
         QCOMPARE(loads.load(), 5);
         QCOMPARE(checks.load(), 5);
+    }
+
+    // Controlled robots on several threads at once (each controller has its own model and
+    // scratch data): the four laws of compare-laws on the 2R and the PUMA's computed torque,
+    // twice together, equal to the same runs alone, bit for bit.
+    void controlledRunsAtOnce() {
+        Scene planar = example("control/planar_2r_pd.json");
+        planar.simulation.duration = 1.0;
+        Scene puma = example("control/puma560_payload_unknown.json");
+        puma.simulation.duration = 1.0;
+        const std::vector<LawRun> planarAlone = compareLaws(planar), pumaAlone = compareLaws(puma);
+        std::vector<std::vector<LawRun>> together(4);
+        std::vector<std::thread> threads;
+        for (std::size_t k = 0; k < together.size(); ++k)
+            threads.emplace_back([&, k] { together[k] = compareLaws(k % 2 ? puma : planar); });
+        for (std::thread& t : threads) t.join();
+        for (std::size_t k = 0; k < together.size(); ++k) {
+            const std::vector<LawRun>& alone = k % 2 ? pumaAlone : planarAlone;
+            QCOMPARE(together[k].size(), alone.size());
+            for (std::size_t l = 0; l < alone.size(); ++l) {
+                QVERIFY(together[k][l].error == alone[l].error);  // bitwise: the same steps
+                QVERIFY(together[k][l].torque == alone[l].torque);
+            }
+        }
     }
 
     // A stale Panda derivation stops soon after its cancel flag is set; the latency
