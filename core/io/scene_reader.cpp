@@ -623,7 +623,7 @@ private:
     // "control": a joint-space controller (core/model/control.hpp).
     void readControl(const Json& value) {
         const std::string path = "effects.control";
-        if (!checkObject(value, path, {"law", "kp", "kd", "reference", "model", "limits", "joints"})) return;
+        if (!checkObject(value, path, {"law", "kp", "kd", "wn", "zeta", "reference", "model", "limits", "joints"})) return;
         if (scene_.lagrangian) {
             error(path, MessageId::ControlNeedsRobot);
             return;
@@ -633,11 +633,18 @@ private:
         if (const Json* law = required(value, path, "law", MessageId::ControlLawField))
             if (auto choice = readChoice(*law, child(path, "law"), {"pd", "pd_gravity", "computed_torque", "feedforward"}))
                 control.law = static_cast<ControlLaw>(*choice);
-        for (const char* key : {"kp", "kd"}) {
-            if (!required(value, path, key, MessageId::ControlGainsField)) continue;
-            Eigen::VectorXd gains = readPerJoint(value, path, key, false, false, true);
-            (std::string(key) == "kp" ? control.kp : control.kd) = gains;
-        }
+        // The gains as kp, kd, or as a natural frequency and damping ratio (zeta 1 unless given).
+        const bool byFrequency = member(value, "wn") || member(value, "zeta");
+        if (byFrequency && (member(value, "kp") || member(value, "kd"))) error(child(path, "wn"), MessageId::ControlGainsTwice);
+        else if (byFrequency) {
+            if (required(value, path, "wn", MessageId::ControlGainsField)) control.wn = readPerJoint(value, path, "wn", false, false, true);
+            control.zeta = member(value, "zeta") ? readPerJoint(value, path, "zeta", false, false, true) : Eigen::VectorXd::Ones(n);
+        } else
+            for (const char* key : {"kp", "kd"}) {
+                if (!required(value, path, key, MessageId::ControlGainsField)) continue;
+                Eigen::VectorXd gains = readPerJoint(value, path, key, false, false, true);
+                (std::string(key) == "kp" ? control.kp : control.kd) = gains;
+            }
         if (const Json* joints = member(value, "joints")) {
             const std::string field = child(path, "joints");
             if (!joints->is_array()) error(field, expectedGot(MessageId::WantedNumberArray, *joints));
@@ -650,6 +657,9 @@ private:
             if (const Message why = lawImpossible(control, n); !why.empty()) error(field, why);
         }
         // A controlled joint needs K_p > 0 (K_d may be 0).
+        for (int i = 0; i < control.wn.size(); ++i)
+            if (control.drives(i) && !(control.wn[i] > 0))
+                error(item(child(path, "wn"), static_cast<std::size_t>(i)), message(MessageId::ControlledJointWithoutFrequency, i + 1));
         for (int i = 0; i < control.kp.size(); ++i)
             if (control.drives(i) && !(control.kp[i] > 0))
                 error(item(child(path, "kp"), static_cast<std::size_t>(i)), message(MessageId::ControlledJointWithoutGain, i + 1));

@@ -297,8 +297,13 @@ private:
         const auto perJoint = [&](const std::string& at, const Eigen::VectorXd& v) { return vector(at, v); };
         Json out;
         out["law"] = toString(c.law);
-        out["kp"] = perJoint(child(path, "kp"), c.kp);
-        out["kd"] = perJoint(child(path, "kd"), c.kd);
+        if (c.wn.size() > 0) {  // as they were given
+            out["wn"] = perJoint(child(path, "wn"), c.wn);
+            out["zeta"] = perJoint(child(path, "zeta"), c.zeta);
+        } else {
+            out["kp"] = perJoint(child(path, "kp"), c.kp);
+            out["kd"] = perJoint(child(path, "kd"), c.kd);
+        }
         if (!c.joints.empty()) {
             Json& joints = out["joints"] = Json::array();
             for (const int j : c.joints) joints.push_back(j + 1);

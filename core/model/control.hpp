@@ -57,6 +57,12 @@ struct ControllerModel {
 struct Control {
     ControlLaw law = ControlLaw::PdGravity;
     Eigen::VectorXd kp, kd;  // per joint [N m/rad, N m s/rad] (or N/m, N s/m)
+    // Or the gains as a natural frequency wn [rad/s] and a damping ratio zeta per joint
+    // (kp, kd empty then; the Controller turns them into gains): computed torque's error
+    // obeys ë + K_d ė + K_p e = 0, so K_p = wn², K_d = 2 zeta wn exactly; the other laws act
+    // on torques, so K_p = b̂_ii wn², K_d = 2 zeta wn b̂_ii with b̂_ii of the controller's
+    // B̂ at the reference's start (each joint as if alone).
+    Eigen::VectorXd wn, zeta;
     ControlReference reference;
     ControllerModel model;
     Eigen::VectorXd torqueLimit;  // per joint, > 0 (empty: none)

@@ -46,6 +46,18 @@ Controller::Controller(const RobotModel& plant, const Effects& plantEffects)
       tau_(Eigen::VectorXd::Zero(plant.dof())),
       zero_(Eigen::VectorXd::Zero(plant.dof())) {
     const Eigen::Index n = plant.dof();
+    if (control_.wn.size() == n) {  // the gains from a natural frequency and damping ratio (core/model/control.hpp)
+        const Eigen::VectorXd zeta = control_.zeta.size() == n ? control_.zeta : Eigen::VectorXd::Ones(n);
+        Eigen::VectorXd b = Eigen::VectorXd::Ones(n);
+        if (control_.law != ControlLaw::ComputedTorque) {
+            reference(0.0);
+            forwardKinematics(model_, data_, qRef_);
+            computeMassMatrix(model_, data_);
+            b = data_.B.diagonal();
+        }
+        control_.kp = b.cwiseProduct(control_.wn.cwiseProduct(control_.wn));
+        control_.kd = 2 * b.cwiseProduct(zeta.cwiseProduct(control_.wn));
+    }
     if (control_.kp.size() != n || control_.kd.size() != n) throw std::invalid_argument("Controller: kp and kd need one gain per joint");
     conservative_.gravity = plantEffects.gravity;
     conservative_.springs = plantEffects.springs;

@@ -77,6 +77,19 @@
     </message>
 </context>
 <context>
+    <name>ControlTuning</name>
+    <message>
+        <location filename="../../ui/window/control_tuning.cpp" line="+78" />
+        <source>Controller gains × %1</source>
+        <translation>Regulatorens forstærkninger × %1</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>Payload the controller believes in: %1 kg</source>
+        <translation>Last, regulatoren regner med: %1 kg</translation>
+    </message>
+</context>
+<context>
     <name>DerivationPanel</name>
     <message>
         <location filename="../../ui/window/derivation_panel.cpp" line="+108" />
@@ -1084,7 +1097,7 @@
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../ui/window/main_window.cpp" line="+124" />
+        <location filename="../../ui/window/main_window.cpp" line="+125" />
         <source>Model</source>
         <translation>Model</translation>
     </message>
@@ -1275,7 +1288,7 @@
         <translation>Simuleringen mislykkedes: %1</translation>
     </message>
     <message>
-        <location line="+101" />
+        <location line="+100" />
         <source>simulating…</source>
         <translation>simulerer…</translation>
     </message>
@@ -1862,13 +1875,23 @@
 <context>
     <name>TrackingPane</name>
     <message>
-        <location filename="../../ui/window/tracking_pane.cpp" line="+75" />
-        <location line="+29" />
+        <location filename="../../ui/window/tracking_pane.cpp" line="+87" />
+        <location line="+35" />
         <source>joint %1</source>
         <translation>led %1</translation>
     </message>
     <message>
-        <location line="-19" />
+        <location line="-27" />
+        <source>gains × %1</source>
+        <translation>forstærkninger × %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>payload in its model %1 kg</source>
+        <translation>last i dens model %1 kg</translation>
+    </message>
+    <message>
+        <location line="+7" />
         <source>Tracking error e, ė</source>
         <translation>Følgefejl e, ė</translation>
     </message>

@@ -295,6 +295,36 @@ private slots:
         }
     }
 
+    // Gains as a natural frequency and damping ratio: computed torque's K_p = wn², K_d =
+    // 2 zeta wn exactly; PD + g's scaled by b_ii of B at the reference (evaluateScene's B,
+    // another route); written back as they were given.
+    void gainsFromFrequency() {
+        Scene puma = example("control/puma560_computed_torque.json");
+        puma.effects.control->kp.resize(0), puma.effects.control->kd.resize(0);
+        puma.effects.control->wn = Eigen::VectorXd::Constant(6, 10.0);
+        puma.effects.control->zeta = Eigen::VectorXd::Constant(6, 0.7);
+        const Controller ct(puma.robot, puma.effects);
+        QVERIFY((ct.control().kp - Eigen::VectorXd::Constant(6, 100.0)).norm() == 0);
+        QVERIFY((ct.control().kd - Eigen::VectorXd::Constant(6, 14.0)).norm() <= 1e-14);
+
+        Scene planar = example("control/planar_2r_pd_gravity.json");
+        planar.effects.control->kp.resize(0), planar.effects.control->kd.resize(0);
+        planar.effects.control->wn = Eigen::Vector2d(4.0, 6.0);
+        planar.effects.control->zeta = Eigen::Vector2d(1.0, 0.5);
+        const Controller pd(planar.robot, planar.effects);
+        const Eigen::VectorXd qRef = planar.effects.control->reference.q0;
+        const Eigen::MatrixXd B = evaluateScene(planar, qRef, Eigen::VectorXd::Zero(2), 0.0).terms.B;
+        QVERIFY(std::abs(pd.control().kp[0] - 16.0 * B(0, 0)) <= 1e-12 * B(0, 0) * 16);
+        QVERIFY(std::abs(pd.control().kp[1] - 36.0 * B(1, 1)) <= 1e-12 * B(1, 1) * 36);
+        QVERIFY(std::abs(pd.control().kd[1] - 2 * 0.5 * 6.0 * B(1, 1)) <= 1e-12 * B(1, 1) * 6);
+        // through the file and back: wn and zeta, no kp
+        const std::string text = serializeScene(planar);
+        QVERIFY(text.find("\"wn\"") != std::string::npos && text.find("\"kp\"") == std::string::npos);
+        const Scene again = parseScene(text);
+        QVERIFY((again.effects.control->wn - planar.effects.control->wn).norm() == 0);
+        QVERIFY((again.effects.control->zeta - planar.effects.control->zeta).norm() == 0);
+    }
+
     // One line naming the field for each bad controller.
     void badControllersAreRefused() {
         const std::string head = R"({"format": "lagrangelab-scene/1", "name": "x", "robot": {"convention": "standard", "joints": [
@@ -314,7 +344,10 @@ private slots:
              {R"({"law": "pd", "kp": [10, 10], "kd": [1, 1], "reference": {"kind": "quintic", "q0": [0, 0], "q1": [1, 1], "duration": 0}})",
               "effects.control.reference.duration"},
              {R"({"law": "pd", "kp": [10, 10], "kd": [1, 1], "reference": {"kind": "hold", "q": [0, 0]}, "limits": {"torque": [5, -5]}})",
-              "effects.control.limits.torque[1]"}};
+              "effects.control.limits.torque[1]"},
+             {R"({"law": "pd", "kp": [10, 10], "kd": [1, 1], "wn": [5, 5], "reference": {"kind": "hold", "q": [0, 0]}})", "effects.control.wn"},
+             {R"({"law": "pd", "wn": [5, 0], "reference": {"kind": "hold", "q": [0, 0]}})", "effects.control.wn[1]"},
+             {R"({"law": "pd", "zeta": [1, 1], "reference": {"kind": "hold", "q": [0, 0]}})", "effects.control.wn"}};
         for (const auto& [control, field] : cases) {
             try {
                 parseScene(head + control + "}}");

@@ -2,10 +2,13 @@
 // robot without one does not; the tab plots e and ė, the controller's torque terms (which
 // add up to the torque applied), and for PD + g the Lyapunov function with dV/dt over
 // −q̇ᵀK_d q̇ and the sentence that names the skew property; a controller whose ĝ is wrong
-// says V̇ departs; the reference is drawn as the ghost robot, its end effector where the
+// says V̇ departs (its payload set by the tab's slider, the gains by the other, each one
+// undoable edit); the reference is drawn as the ghost robot, its end effector where the
 // 2R's closed-form kinematics puts q_ref; `--tracking` pictures a view and refuses a bad one.
 #include <QImage>
 #include <QProcess>
+#include <QSlider>
+#include <QUndoStack>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -80,13 +83,28 @@ private slots:
                      qPrintable(QString::number((ghost->endEffectorPosition() - expected).norm())));
         }
 
-        // A controller that believes in a 2 kg payload: V̇ departs, and the note says why.
+        // The payload slider: a controller that believes in 2 kg, one undoable edit; the run
+        // follows, V̇ departs and the note says why.
         const auto* old = w->analysis();
-        w->document().setValue("/effects/control/model", ui::SceneJson{{"payload", {{"mass", 2.0}}}}, "payload");
+        pane.payloadSlider().setValue(20);
+        QVERIFY(test::waitUntil([&] { return w->document().validScene().effects.control->model.payloadMass == 2.0; }, 60000));
         QVERIFY(test::waitUntil([&] { return w->analysis() && w->analysis() != old && w->analysis()->control; }, 120000));
         pane.setShow(Show::LyapunovRate);
         QVERIFY(w->analysis()->control->lyapunov->largestDeparture > 1e-2);
         QVERIFY2(pane.note().contains(QString::fromUtf8("ĝ − g")), qPrintable(pane.note()));
+        // The gains slider: four steps up doubles K_p and K_d; undo gives them and the payload back.
+        pane.payloadSlider().setValue(0);
+        QVERIFY(test::waitUntil([&] { return w->document().validScene().effects.control->model.payloadMass == 0.0; }, 60000));
+        pane.gainSlider().setValue(4);
+        const auto kp = [&] { return w->document().validScene().effects.control->kp; };
+        QVERIFY(test::waitUntil([&] { return (kp() - Eigen::Vector2d(200, 200)).norm() <= 1e-12; }, 60000));
+        QVERIFY((w->document().validScene().effects.control->kd - Eigen::Vector2d(40, 40)).norm() <= 1e-12);
+        w->document().undoStack()->undo();
+        QVERIFY(test::waitUntil([&] { return (kp() - Eigen::Vector2d(100, 100)).norm() <= 1e-12; }, 60000));
+        QCOMPARE(pane.gainSlider().value(), 0);
+        w->document().undoStack()->undo();
+        QVERIFY(test::waitUntil([&] { return w->document().validScene().effects.control->model.payloadMass == 2.0; }, 60000));
+        QCOMPARE(pane.payloadSlider().value(), 20);
     }
 
     // A robot without a controller: no Tracking tab, no reference ghost.

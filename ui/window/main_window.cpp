@@ -44,6 +44,7 @@
 #include "ui/window/teach_mode.hpp"
 #include "ui/window/teach_panel.hpp"
 #include "ui/window/torque_pane.hpp"
+#include "ui/window/control_tuning.hpp"
 #include "ui/window/tracking_pane.hpp"
 #include "ui/window/trajectory_chart.hpp"
 #include "ui/window/view_bar.hpp"
@@ -230,6 +231,7 @@ void MainWindow::buildFeatures() {
     presentationMode_ = std::make_unique<PresentationMode>(parts_);
     language_ = std::make_unique<LanguageMenu>(*this);
     ghost_ = std::make_unique<GhostRun>(doc_, parts_);
+    tuning_ = std::make_unique<ControlTuning>(doc_, parts_);
     exercise_ = std::make_unique<ExerciseMode>(doc_, selection_, *linking_, shown_, parts_, *parts_.exercise);
 
     connect(files_.get(), &SceneFiles::opened, this, [this](const QString& path) {
@@ -269,7 +271,6 @@ void MainWindow::buildFeatures() {
     for (TrajectoryChart* chart : {parts_.energy, parts_.joints, parts_.entryChart})
         connect(chart, &TrajectoryChart::timePicked, parts_.playback, scrub);
     connect(parts_.torques, &TorquePane::timePicked, parts_.playback, scrub);
-    connect(parts_.tracking, &TrackingPane::timePicked, parts_.playback, scrub);
     connect(parts_.properties, &PropertiesPanel::timePicked, parts_.playback, scrub);
     connect(parts_.plotTabs, &QTabWidget::currentChanged, this, &MainWindow::plotTabChanged);
 }
@@ -411,8 +412,7 @@ void MainWindow::showResult(std::shared_ptr<const LiveResult> result) {
     selection_.setTrajectory(&traj);
     shown_.analysis.reset();  // the torques and properties of this run follow
     parts_.torques->setTorques(nullptr, result->scene);
-    parts_.tracking->setControl(nullptr, result->scene, {});  // the tab only for a controlled robot
-    parts_.plotTabs->setTabVisible(parts_.plotTabs->indexOf(parts_.tracking), !result->scene->lagrangian && result->scene->effects.control);
+    parts_.tracking->setControl(nullptr, result->scene, {});
     parts_.properties->setProperties(nullptr);
     linking_->runShown();
     ghost_->runShown(*result);

@@ -13,7 +13,8 @@
 //   DhStepLink        the DH step-through in the 3D view and the table
 //   PresentationMode  the projector layout and its keys
 //   LanguageMenu      the derivation's language and notation
-//   GhostRun          the same scene with a cheaper integrator beside it
+//   GhostRun          the same scene with a cheaper integrator beside it (or a controller's reference)
+//   ControlTuning     the Tracking tab's sliders: the controller's gains and believed payload
 //   TeachMode         the robot at a pose of the sliders, B, C, g evaluated there
 //   ExerciseMode      the student's own answers, hidden entries, checked with hints
 #include <memory>
@@ -38,6 +39,7 @@ class EditFrame;
 class EntryLinking;
 class ExerciseMode;
 class ExportActions;
+class ControlTuning;
 class GhostRun;
 class LanguageMenu;
 class PresentationMode;
@@ -160,6 +162,7 @@ private:
     std::unique_ptr<PresentationMode> presentationMode_;
     std::unique_ptr<LanguageMenu> language_;
     std::unique_ptr<GhostRun> ghost_;
+    std::unique_ptr<ControlTuning> tuning_;
     std::unique_ptr<TeachMode> teachMode_;
     std::unique_ptr<ExerciseMode> exercise_;
 

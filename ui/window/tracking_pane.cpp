@@ -8,6 +8,7 @@
 #include <QLabel>
 #include <QRegularExpression>
 #include <QSignalBlocker>
+#include <QSlider>
 #include <QVBoxLayout>
 
 #include "core/model/quantity_units.hpp"
@@ -64,6 +65,17 @@ TrackingPane::TrackingPane(QWidget* parent) : QWidget(parent) {
     note_->setWordWrap(true);
     note_->setTextFormat(Qt::RichText);
     note_->setFont(textbookFont(note_->font()));
+    gain_ = new QSlider(Qt::Horizontal, this);
+    gain_->setObjectName("tuning-gains");
+    gain_->setRange(-8, 8);
+    payload_ = new QSlider(Qt::Horizontal, this);
+    payload_->setObjectName("tuning-payload");
+    payload_->setRange(0, 50);
+    gainText_ = new QLabel(this);
+    payloadText_ = new QLabel(this);
+    // The tuning sliders beside the choices (the plot keeps the height)
+    for (QSlider* slider : {gain_, payload_}) slider->setFixedWidth(110);
+    for (QWidget* w : std::initializer_list<QWidget*>{gainText_, gain_, payloadText_, payload_}) bar->insertWidget(bar->count() - 2, w);
     layout->addLayout(bar);
     layout->addWidget(chart_, 1);
     layout->addWidget(note_);
@@ -75,7 +87,13 @@ TrackingPane::TrackingPane(QWidget* parent) : QWidget(parent) {
         for (int j = 0; j < joint_->count(); ++j) joint_->setItemText(j, tr("joint %1").arg(j + 1));
         fillShows();
         redraw();
+        showTuning(std::pow(2.0, gain_->value() / 4.0), payload_->value() / 10.0);
     });
+}
+
+void TrackingPane::showTuning(double factor, double payload) {
+    gainText_->setText(tr("gains × %1").arg(factor, 0, 'g', 3));
+    payloadText_->setText(tr("payload in its model %1 kg").arg(payload, 0, 'f', 1));
 }
 
 void TrackingPane::fillShows() {

@@ -14,6 +14,7 @@
 
 class QComboBox;
 class QLabel;
+class QSlider;
 
 namespace ll::ui {
 
@@ -33,6 +34,11 @@ public:
     void setCursorTime(double t);
     TrajectoryChart& chart() { return *chart_; }
     QString note() const;  // the sentence under the plot
+    // The tuning sliders (ui/window/control_tuning drives them): the gains' factor, 2^(k/4)
+    // for position k in −8..8, and the believed payload in 0.1 kg steps, 0..50.
+    QSlider& gainSlider() { return *gain_; }
+    QSlider& payloadSlider() { return *payload_; }
+    void showTuning(double factor, double payload);  // the sliders' texts
 
 signals:
     void timePicked(double t);
@@ -49,6 +55,8 @@ private:
     QLabel* law_;
     QLabel* note_;
     TrajectoryChart* chart_;
+    QSlider *gain_, *payload_;
+    QLabel *gainText_, *payloadText_;
 };
 
 }  // namespace ll::ui
