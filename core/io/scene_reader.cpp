@@ -672,9 +672,10 @@ private:
     }
 
     void readReference(const Json& value, const std::string& path, ControlReference& r) {
-        static const Keys kinds = {"hold", "step", "quintic", "trapezoidal", "sine"};
-        static const Keys keysOf[] = {{"q"}, {"q0", "q1", "at"}, {"q0", "q1", "t0", "duration"},
-                                      {"q0", "q1", "t0", "velocity", "acceleration"}, {"q0", "amplitude", "frequency", "phase"}};
+        static const Keys kinds = {"hold", "step", "quintic", "trapezoidal", "sine", "waypoints"};
+        static const Keys keysOf[] = {{"q"}, {"q0", "q1", "at"},
+                                      {"q0", "q1", "t0", "duration"}, {"q0", "q1", "t0", "velocity", "acceleration"},
+                                      {"q0", "amplitude", "frequency", "phase"}, {"points"}};
         if (!value.is_object()) {
             error(path, expectedGot(MessageId::WantedObject, value));
             return;
@@ -714,6 +715,32 @@ private:
                 readNumber(value, path, "frequency", r.frequency);
                 readNumber(value, path, "phase", r.phase, Angle::Yes);
                 break;
+            case ControlReference::Kind::Waypoints: readWaypoints(value, path, r); break;
+        }
+    }
+
+    // "points": [{"t": 0, "q": [...]}, ...]: at least two, their times increasing.
+    void readWaypoints(const Json& value, const std::string& path, ControlReference& r) {
+        const Json* points = required(value, path, "points", MessageId::WantedWaypoints);
+        if (!points) return;
+        const std::string field = child(path, "points");
+        if (!points->is_array() || points->size() < 2) {
+            error(field, expectedGot(MessageId::WantedWaypoints, *points));
+            return;
+        }
+        for (std::size_t k = 0; k < points->size(); ++k) {
+            const std::string at = item(field, k);
+            const Json& point = (*points)[k];
+            if (!checkObject(point, at, {"t", "q"})) return;
+            double t = 0.0;
+            if (required(point, at, "t", MessageId::WantedWaypoints)) readNumber(point, at, "t", t);
+            if (!r.times.empty() && !(t > r.times.back()))
+                error(child(at, "t"), message(MessageId::WaypointTimesNotIncreasing, formatValue(t), formatValue(r.times.back())));
+            Eigen::VectorXd q = Eigen::VectorXd::Zero(scene_.dof());
+            if (required(point, at, "q", message(MessageId::WantedPerJoint, scene_.dof())))
+                if (Eigen::VectorXd v = readPerJoint(point, at, "q", true); v.size() == scene_.dof()) q = v;
+            r.times.push_back(t);
+            r.points.push_back(q);
         }
     }
 

@@ -324,6 +324,12 @@ private:
             case ControlReference::Kind::Trapezoidal:
                 scalar("t0", r.t0), joints("velocity", r.velocity), joints("acceleration", r.acceleration);
                 break;
+            case ControlReference::Kind::Waypoints:
+                for (std::size_t k = 0; k < r.times.size(); ++k) {
+                    const std::string at = child(ref, "points") + "[" + std::to_string(k) + "]";
+                    reference["points"].push_back({{"t", number(child(at, "t"), r.times[k])}, {"q", perJoint(child(at, "q"), r.points[k])}});
+                }
+                break;
             case ControlReference::Kind::Sine:
                 joints("q0", r.q0), joints("amplitude", r.amplitude), scalar("frequency", r.frequency), scalar("phase", r.phase);
                 break;

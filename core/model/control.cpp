@@ -32,6 +32,21 @@ void trapezoid(double distance, double vmax, double amax, double s, double& x, d
     x *= sign, v *= sign, a *= sign;
 }
 
+// The quintic s(τ) = 10τ³ − 15τ⁴ + 6τ⁵ from q0 to q1 over [t0, t0 + duration]: rest to
+// rest with no jump in acceleration; held at q0 before and q1 after.
+void quintic(const Eigen::VectorXd& q0, const Eigen::VectorXd& q1, double t0, double duration, double t, Eigen::VectorXd& q,
+             Eigen::VectorXd& qd, Eigen::VectorXd& qdd) {
+    const double tau = std::clamp((t - t0) / duration, 0.0, 1.0);
+    const bool moving = t > t0 && t < t0 + duration;
+    const double s = tau * tau * tau * (10 - 15 * tau + 6 * tau * tau);
+    const double ds = moving ? 30 * tau * tau * (1 - tau) * (1 - tau) / duration : 0.0;
+    const double dds = moving ? 60 * tau * (1 - tau) * (1 - 2 * tau) / (duration * duration) : 0.0;
+    for (Eigen::Index i = 0; i < q.size(); ++i) {
+        const double d = q1[i] - q0[i];
+        q[i] = q0[i] + d * s, qd[i] = d * ds, qdd[i] = d * dds;
+    }
+}
+
 }  // namespace
 
 void ControlReference::evaluate(double t, Eigen::VectorXd& q, Eigen::VectorXd& qd, Eigen::VectorXd& qdd) const {
@@ -39,17 +54,12 @@ void ControlReference::evaluate(double t, Eigen::VectorXd& q, Eigen::VectorXd& q
     switch (kind) {
         case Kind::Hold: q = q0, qd.setZero(), qdd.setZero(); return;
         case Kind::Step: q = t < t0 ? q0 : q1, qd.setZero(), qdd.setZero(); return;
-        case Kind::Quintic: {
-            // s(τ) = 10τ³ − 15τ⁴ + 6τ⁵: rest to rest with no jump in acceleration.
-            const double tau = std::clamp((t - t0) / duration, 0.0, 1.0);
-            const bool moving = t > t0 && t < t0 + duration;
-            const double s = tau * tau * tau * (10 - 15 * tau + 6 * tau * tau);
-            const double ds = moving ? 30 * tau * tau * (1 - tau) * (1 - tau) / duration : 0.0;
-            const double dds = moving ? 60 * tau * (1 - tau) * (1 - 2 * tau) / (duration * duration) : 0.0;
-            for (Eigen::Index i = 0; i < n; ++i) {
-                const double d = q1[i] - q0[i];
-                q[i] = q0[i] + d * s, qd[i] = d * ds, qdd[i] = d * dds;
-            }
+        case Kind::Quintic: quintic(q0, q1, t0, duration, t, q, qd, qdd); return;
+        case Kind::Waypoints: {
+            // the segment [times[k], times[k+1]] holding t (the first before, the last after)
+            std::size_t k = 0;
+            while (k + 2 < times.size() && t >= times[k + 1]) ++k;
+            quintic(points[k], points[k + 1], times[k], times[k + 1] - times[k], t, q, qd, qdd);
             return;
         }
         case Kind::Trapezoidal:
@@ -96,6 +106,7 @@ const char* toString(ControlReference::Kind kind) {
         case ControlReference::Kind::Quintic: return "quintic";
         case ControlReference::Kind::Trapezoidal: return "trapezoidal";
         case ControlReference::Kind::Sine: return "sine";
+        case ControlReference::Kind::Waypoints: return "waypoints";
     }
     return "";
 }

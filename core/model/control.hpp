@@ -25,7 +25,7 @@ enum class ControlLaw { Pd, PdGravity, ComputedTorque, Feedforward };
 
 // q_d(t) and its first two derivatives, one entry per joint.
 struct ControlReference {
-    enum class Kind { Hold, Step, Quintic, Trapezoidal, Sine };
+    enum class Kind { Hold, Step, Quintic, Trapezoidal, Sine, Waypoints };
     Kind kind = Kind::Hold;
     Eigen::VectorXd q0, q1;        // hold: q0; step, quintic, trapezoidal: from q0 to q1
     double t0 = 0.0;               // step: the jump's time; quintic, trapezoidal: the start [s]
@@ -35,6 +35,10 @@ struct ControlReference {
     Eigen::VectorXd amplitude;     // sine: q0 + amplitude sin(2π frequency t + phase)
     double frequency = 0.0;        // [Hz]
     double phase = 0.0;            // [rad]
+    // waypoints: the joints at these times (increasing), a quintic from each to the next,
+    // at rest at every one; before the first and after the last, held there
+    std::vector<double> times;           // [s]
+    std::vector<Eigen::VectorXd> points;  // one per time
 
     // q_d, q̇_d, q̈_d at t into the three vectors (sized n beforehand; no allocation).
     void evaluate(double t, Eigen::VectorXd& q, Eigen::VectorXd& qd, Eigen::VectorXd& qdd) const;

@@ -325,6 +325,46 @@ private slots:
         QVERIFY((again.effects.control->zeta - planar.effects.control->zeta).norm() == 0);
     }
 
+    // Waypoints: at each its point at rest, a quintic between (halfway at mid-time), held
+    // before and after; computed torque with the exact model follows them on the 2R; the
+    // file round-trips.
+    void waypointsReference() {
+        ControlReference r;
+        r.kind = ControlReference::Kind::Waypoints;
+        r.times = {0.5, 1.5, 3.0};
+        r.points = {Eigen::Vector2d(0.0, 0.0), Eigen::Vector2d(0.8, -0.4), Eigen::Vector2d(-0.2, 0.6)};
+        Eigen::VectorXd q(2), qd(2), qdd(2);
+        for (std::size_t k = 0; k < 3; ++k) {
+            r.evaluate(r.times[k], q, qd, qdd);
+            QVERIFY((q - r.points[k]).norm() <= 1e-15);
+            QVERIFY(qd.norm() == 0 && qdd.norm() == 0);
+        }
+        r.evaluate(1.0, q, qd, qdd);
+        QVERIFY((q - (r.points[0] + r.points[1]) / 2).norm() <= 1e-15);
+        QVERIFY((qd - (r.points[1] - r.points[0]) * 1.875).norm() <= 1e-12);  // s'(½) = 30/16 over a 1 s segment
+        r.evaluate(0.1, q, qd, qdd);
+        QVERIFY((q - r.points[0]).norm() == 0);
+        r.evaluate(9.0, q, qd, qdd);
+        QVERIFY((q - r.points[2]).norm() <= 1e-15 && qd.norm() == 0);
+
+        Scene scene = example("control/planar_2r_pd_gravity.json");
+        scene.effects.control->law = ControlLaw::ComputedTorque;
+        scene.effects.control->reference = r;
+        scene.simulation.duration = 4.0;
+        scene.simulation.absTol = scene.simulation.relTol = 1e-10;
+        const SimulationResult run = simulate(scene);
+        QCOMPARE(run.status, SimulationStatus::Completed);
+        Controller controller(scene.robot, scene.effects);
+        double worst = 0;
+        for (std::size_t k = 0; k < run.trajectory.size(); ++k)
+            worst = std::max(worst, controller.parts(run.trajectory.t[k], run.trajectory.q[k], run.trajectory.qd[k]).error.cwiseAbs().maxCoeff());
+        qInfo("waypoints on the 2R by computed torque: largest error %.2e rad", worst);
+        QVERIFY2(worst <= 1e-6, qPrintable(QString::number(worst)));
+        const Scene again = parseScene(serializeScene(scene));
+        QCOMPARE(again.effects.control->reference.times, r.times);
+        for (std::size_t k = 0; k < 3; ++k) QVERIFY((again.effects.control->reference.points[k] - r.points[k]).norm() == 0);
+    }
+
     // One line naming the field for each bad controller.
     void badControllersAreRefused() {
         const std::string head = R"({"format": "lagrangelab-scene/1", "name": "x", "robot": {"convention": "standard", "joints": [
@@ -347,7 +387,13 @@ private slots:
               "effects.control.limits.torque[1]"},
              {R"({"law": "pd", "kp": [10, 10], "kd": [1, 1], "wn": [5, 5], "reference": {"kind": "hold", "q": [0, 0]}})", "effects.control.wn"},
              {R"({"law": "pd", "wn": [5, 0], "reference": {"kind": "hold", "q": [0, 0]}})", "effects.control.wn[1]"},
-             {R"({"law": "pd", "zeta": [1, 1], "reference": {"kind": "hold", "q": [0, 0]}})", "effects.control.wn"}};
+             {R"({"law": "pd", "zeta": [1, 1], "reference": {"kind": "hold", "q": [0, 0]}})", "effects.control.wn"},
+             {R"({"law": "pd", "kp": [1, 1], "kd": [1, 1], "reference": {"kind": "waypoints", "points": [{"t": 0, "q": [0, 0]}]}})",
+              "effects.control.reference.points"},
+             {R"({"law": "pd", "kp": [1, 1], "kd": [1, 1], "reference": {"kind": "waypoints",
+                 "points": [{"t": 1, "q": [0, 0]}, {"t": 1, "q": [1, 1]}]}})", "effects.control.reference.points[1].t"},
+             {R"({"law": "pd", "kp": [1, 1], "kd": [1, 1], "reference": {"kind": "waypoints",
+                 "points": [{"t": 0, "q": [0, 0]}, {"t": 1, "q": [1]}]}})", "effects.control.reference.points[1].q"}};
         for (const auto& [control, field] : cases) {
             try {
                 parseScene(head + control + "}}");
