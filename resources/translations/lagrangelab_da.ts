@@ -86,7 +86,7 @@
     <message>
         <location line="+12" />
         <source>Payload the controller believes in: %1 kg</source>
-        <translation>Last, regulatoren regner med: %1 kg</translation>
+        <translation>Nyttelast, som regulatoren regner med: %1 kg</translation>
     </message>
 </context>
 <context>
@@ -1185,7 +1185,7 @@
     <message>
         <location line="+0" />
         <source>Tracking</source>
-        <translation>Følgning</translation>
+        <translation>Banefølgning</translation>
     </message>
     <message>
         <location line="+17" />
@@ -1888,7 +1888,7 @@
     <message>
         <location line="+1" />
         <source>payload in its model %1 kg</source>
-        <translation>last i dens model %1 kg</translation>
+        <translation>nyttelast i regulatorens model %1 kg</translation>
     </message>
     <message>
         <location line="+7" />
@@ -1973,7 +1973,7 @@
     <message>
         <location line="+2" />
         <source>, limit %1 %2, saturated %3 % of the run</source>
-        <translation>, grænse %1 %2, mættet %3 % af kørslen</translation>
+        <translation>, grænse %1 %2, mættet i %3 % af kørslen</translation>
     </message>
     <message>
         <location line="+1" />
@@ -1993,12 +1993,12 @@
     <message>
         <location line="+2" />
         <source>dV/dt = −q̇ᵀK_d q̇ at every instant (largest difference %1 of the largest dissipation) because q̇ᵀ(Ḃ − 2C)q̇ = 0: the skew-symmetry the Properties tab checks. V can only fall.</source>
-        <translation>dV/dt = −q̇ᵀK_d q̇ til hvert tidspunkt (største forskel %1 af den største dissipation), fordi q̇ᵀ(Ḃ − 2C)q̇ = 0: den skævsymmetri, som fanen Egenskaber kontrollerer. V kan kun falde.</translation>
+        <translation>dV/dt = −q̇ᵀK_d q̇ til ethvert tidspunkt (største forskel %1 af den største dissipation), fordi q̇ᵀ(Ḃ − 2C)q̇ = 0: den skævsymmetri, som fanen Egenskaber kontrollerer. V kan kun falde.</translation>
     </message>
     <message>
         <location line="+3" />
         <source>dV/dt departs from −q̇ᵀK_d q̇ (by up to %1 of the largest dissipation): dV/dt + q̇ᵀK_d q̇ = q̇ᵀ(ĝ − g) + the power of friction and of the limits' shortfall. The skew property still holds; the controller's ĝ is not the robot's g, or something else acts.</source>
-        <translation>dV/dt afviger fra −q̇ᵀK_d q̇ (med op til %1 af den største dissipation): dV/dt + q̇ᵀK_d q̇ = q̇ᵀ(ĝ − g) + effekten fra friktion og fra det, grænserne skærer af. Skævsymmetrien gælder stadig; regulatorens ĝ er ikke robottens g, eller noget andet virker.</translation>
+        <translation>dV/dt afviger fra −q̇ᵀK_d q̇ (med op til %1 af den største dissipation): dV/dt + q̇ᵀK_d q̇ = q̇ᵀ(ĝ − g) + effekten af friktion og af det moment, som momentgrænserne skærer bort. Skævsymmetrien gælder stadig; regulatorens ĝ er ikke robottens g, eller noget andet virker på robotten.</translation>
     </message>
 </context>
 <context>
