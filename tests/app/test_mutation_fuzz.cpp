@@ -149,6 +149,10 @@ std::string runInProcess(const std::string& text, int index, std::mt19937& rng, 
         SimulationSettings settings = scene.simulation;
         settings.duration = std::min(settings.duration, 0.05);
         settings.outputRate = std::min(settings.outputRate, 200.0);
+        // A mutated gain can make a controlled arm stiff where the stiffness monitor is slow
+        // to see it (K_p = 1e15 on the 2R: 668,000 dopri5 steps first); the contract is the
+        // same after 200,000 steps (a one-line stop), and 10,000 cases stay in the budget.
+        settings.maxSteps = std::min(settings.maxSteps, 200'000L);
         const IntegratorInfo* integrator = findIntegrator(settings.integrator);
         if (integrator && !integrator->adaptive) settings.dt = std::max(settings.dt, settings.duration / 2000);
         try {
