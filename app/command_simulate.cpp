@@ -51,6 +51,9 @@ void printSummary(const Scene& scene, const SimulationSettings& settings, const 
                          "output: %ld of %zu samples lie between step ends: q, qd and W by cubic Hermite "
                          "interpolation from q, qd, qdd at the step ends, energies at the interpolated state\n",
                          s.interpolatedSamples, r.trajectory.size());
+    } else if (s.eventSteps > 0) {
+        std::fprintf(stderr, "steps: %ld of them ended at a located event or corner (stick-slip, a reference's corner, a torque reaching or leaving its limit)\n",
+                     s.eventSteps);
     }
     std::fprintf(stderr, "energy: max |E - E0 - W| = %.3g J, max |dE|/E = %.3g (W: work of friction and torques)\n", s.maxEnergyError,
                  s.maxRelEnergyError);

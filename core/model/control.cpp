@@ -6,17 +6,27 @@
 namespace ll {
 namespace {
 
+// The phases of a rest-to-rest move of |distance| d under |v| ≤ vmax and |a| ≤ amax:
+// `ramp` seconds speeding up to `top`, `cruise` seconds at it, `ramp` seconds slowing
+// down (a triangle, cruise = 0, when vmax is not reached). False for no move.
+bool trapezoidPhases(double d, double vmax, double amax, double& ramp, double& cruise, double& top) {
+    if (d == 0 || vmax <= 0 || amax <= 0) return false;
+    ramp = vmax / amax;                                      // time to full speed
+    if (amax * ramp * ramp > d) ramp = std::sqrt(d / amax);  // a triangle: top speed never reached
+    top = amax * ramp, cruise = (d - amax * ramp * ramp) / top;
+    return true;
+}
+
 // A rest-to-rest move of `distance` under |v| ≤ vmax and |a| ≤ amax, `s` seconds in:
-// position, velocity and acceleration (a triangle when vmax is not reached).
+// position, velocity and acceleration.
 void trapezoid(double distance, double vmax, double amax, double s, double& x, double& v, double& a) {
     const double sign = distance < 0 ? -1.0 : 1.0, d = std::abs(distance);
-    if (d == 0 || vmax <= 0 || amax <= 0) {
+    double ramp, cruise, top;
+    if (!trapezoidPhases(d, vmax, amax, ramp, cruise, top)) {
         x = s > 0 ? distance : 0.0, v = a = 0.0;
         return;
     }
-    double ramp = vmax / amax;                               // time to full speed
-    if (amax * ramp * ramp > d) ramp = std::sqrt(d / amax);  // a triangle: top speed never reached
-    const double top = amax * ramp, cruise = (d - amax * ramp * ramp) / top, total = 2 * ramp + cruise;
+    const double total = 2 * ramp + cruise;
     if (s <= 0) {
         x = v = a = 0.0;
     } else if (s < ramp) {
@@ -79,6 +89,27 @@ void ControlReference::evaluate(double t, Eigen::VectorXd& q, Eigen::VectorXd& q
             return;
         }
     }
+}
+
+std::vector<double> ControlReference::corners() const {
+    std::vector<double> at;
+    switch (kind) {
+        case Kind::Hold:
+        case Kind::Sine: break;
+        case Kind::Step: at = {t0}; break;
+        case Kind::Quintic: at = {t0, t0 + duration}; break;
+        case Kind::Waypoints: at = times; break;
+        case Kind::Trapezoidal:
+            for (Eigen::Index i = 0; i < q0.size() && i < q1.size() && i < velocity.size() && i < acceleration.size(); ++i) {
+                double ramp, cruise, top;
+                if (!trapezoidPhases(std::abs(q1[i] - q0[i]), velocity[i], acceleration[i], ramp, cruise, top)) continue;
+                at.insert(at.end(), {t0, t0 + ramp, t0 + ramp + cruise, t0 + 2 * ramp + cruise});
+            }
+            break;
+    }
+    std::sort(at.begin(), at.end());
+    at.erase(std::unique(at.begin(), at.end()), at.end());
+    return at;
 }
 
 bool Control::drives(int joint) const { return joints.empty() || std::find(joints.begin(), joints.end(), joint) != joints.end(); }

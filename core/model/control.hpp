@@ -42,6 +42,10 @@ struct ControlReference {
 
     // q_d, q̇_d, q̈_d at t into the three vectors (sized n beforehand; no allocation).
     void evaluate(double t, Eigen::VectorXd& q, Eigen::VectorXd& qd, Eigen::VectorXd& qdd) const;
+    // Its corners, increasing: the times where q_d jumps (step), q̈_d jumps (a trapezoid's
+    // phases) or the third derivative does (a quintic's ends, every waypoint). The
+    // integrators end a step at each (core/simulation/ode_system.hpp, cornerFraction).
+    std::vector<double> corners() const;
 };
 
 // What the controller believes the robot is: the scene's robot with these changes, in

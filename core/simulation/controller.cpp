@@ -1,6 +1,8 @@
 #include "core/simulation/controller.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "core/dynamics/inverse_dynamics.hpp"
@@ -9,6 +11,12 @@
 #include "core/kinematics/forward_kinematics.hpp"
 
 namespace ll {
+
+namespace {
+// Two times this close are one for a corner: a step starting or ending this near one is at
+// it (a step this short would be taken for a collapsed one: integration_drivers.hpp).
+double nearTime(double t) { return 1e-10 * std::max(1.0, std::abs(t)); }
+}  // namespace
 
 RobotModel controllerModel(const RobotModel& plant, const ControllerModel& changes) {
     RobotModel model = plant;
@@ -44,7 +52,8 @@ Controller::Controller(const RobotModel& plant, const Effects& plantEffects)
       qddRef_(Eigen::VectorXd::Zero(plant.dof())),
       a_(Eigen::VectorXd::Zero(plant.dof())),
       tau_(Eigen::VectorXd::Zero(plant.dof())),
-      zero_(Eigen::VectorXd::Zero(plant.dof())) {
+      zero_(Eigen::VectorXd::Zero(plant.dof())),
+      demandStart_(Eigen::VectorXd::Zero(plant.dof())) {
     const Eigen::Index n = plant.dof();
     if (control_.wn.size() == n) {  // the gains from a natural frequency and damping ratio (core/model/control.hpp)
         const Eigen::VectorXd zeta = control_.zeta.size() == n ? control_.zeta : Eigen::VectorXd::Ones(n);
@@ -61,9 +70,29 @@ Controller::Controller(const RobotModel& plant, const Effects& plantEffects)
     if (control_.kp.size() != n || control_.kd.size() != n) throw std::invalid_argument("Controller: kp and kd need one gain per joint");
     conservative_.gravity = plantEffects.gravity;
     conservative_.springs = plantEffects.springs;
+    // Corners closer than nearTime are one (two joints' phases ending together, apart by a rounding).
+    for (double c : control_.reference.corners())
+        if (corners_.empty() || c - corners_.back() > nearTime(c)) corners_.push_back(c);
 }
 
-void Controller::reference(double t) { control_.reference.evaluate(t, qRef_, qdRef_, qddRef_); }
+void Controller::reference(double t) {
+    // Inside the piece by nearTime: a corner's own time and the reference's switch (t − t0
+    // against a phase's length) may differ by a rounding, which must not put a stage of a
+    // step ending on the corner past the jump.
+    double at = t;
+    if (std::isfinite(segmentStart_)) at = std::max(at, segmentStart_ + nearTime(segmentStart_));
+    if (std::isfinite(segmentEnd_)) at = std::min(at, segmentEnd_ - nearTime(segmentEnd_));
+    control_.reference.evaluate(at, qRef_, qdRef_, qddRef_);
+}
+
+bool Controller::enterSegment(double t) {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    const auto next = std::upper_bound(corners_.begin(), corners_.end(), t + nearTime(t));
+    const double end = next == corners_.end() ? inf : *next, start = next == corners_.begin() ? -inf : *(next - 1);
+    const bool changed = end != segmentEnd_ || start != segmentStart_;
+    segmentStart_ = start, segmentEnd_ = end;
+    return changed;
+}
 
 void Controller::saturate(Eigen::VectorXd& tau) const {
     for (Eigen::Index i = 0; i < tau.size(); ++i) {
@@ -73,6 +102,44 @@ void Controller::saturate(Eigen::VectorXd& tau) const {
 }
 
 const Eigen::VectorXd& Controller::torque(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qd) {
+    demand(t, q, qd);
+    saturate(tau_);
+    return tau_;
+}
+
+double Controller::nextCorner(double t) const {
+    const auto next = std::upper_bound(corners_.begin(), corners_.end(), t + nearTime(t));
+    return next == corners_.end() ? std::numeric_limits<double>::infinity() : *next;
+}
+
+double Controller::cornerFraction(double t0, const Eigen::VectorXd& q0, const Eigen::VectorXd& qd0, double t1, const Eigen::VectorXd& q1,
+                                  const Eigen::VectorXd& qd1) {
+    const double h = t1 - t0;
+    if (!(h > 0)) return 1.0;
+    double theta = 1.0;
+    // The fraction of a corner at t0 + f h, unless it is at either end already.
+    const auto consider = [&](double f) {
+        if (f * h > nearTime(t0) && (1 - f) * h > nearTime(t1)) theta = std::min(theta, f);
+    };
+    if (control_.torqueLimit.size() > 0) {
+        // s_i = |τ_i| − limit_i changes sign where joint i starts or stops saturating: a
+        // secant estimate, refined by the drivers' retries. (A torque swinging from beyond
+        // +limit to beyond −limit within one step is not seen: the step would have to be
+        // far longer than the law's time scale.)
+        demand(t0, q0, qd0);
+        demandStart_ = tau_;
+        demand(t1, q1, qd1);
+        for (Eigen::Index i = 0; i < control_.torqueLimit.size() && i < tau_.size(); ++i) {
+            if (!control_.drives(static_cast<int>(i))) continue;
+            const double limit = control_.torqueLimit[i];
+            const double a = std::abs(demandStart_[i]) - limit, b = std::abs(tau_[i]) - limit;
+            if ((a < 0 && b > 0) || (a > 0 && b < 0)) consider(a / (a - b));
+        }
+    }
+    return std::clamp(theta, 1e-9, 1.0);
+}
+
+void Controller::demand(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qd) {
     reference(t);
     const Eigen::Index n = q.size();
     switch (control_.law) {
@@ -100,8 +167,6 @@ const Eigen::VectorXd& Controller::torque(double t, const Eigen::VectorXd& q, co
             for (Eigen::Index i = 0; i < n; ++i) tau_[i] += control_.kp[i] * (qRef_[i] - q[i]) + control_.kd[i] * (qdRef_[i] - qd[i]);
             break;
     }
-    saturate(tau_);
-    return tau_;
 }
 
 ControlParts Controller::parts(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qd) {

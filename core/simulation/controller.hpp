@@ -6,6 +6,9 @@
 // acceleration q̈_d + K_p e + K_d ė; the split into its terms (parts) is for the plots and
 // the output, not for the integrator. Immutable model, scratch data of its own: no
 // allocation per call.
+#include <limits>
+#include <vector>
+
 #include <Eigen/Core>
 
 #include "core/model/control.hpp"
@@ -44,17 +47,34 @@ public:
     // Every term at (t, q, q̇) (allocates: for output and plots).
     ControlParts parts(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qd);
 
+    // Its corners (OdeSystem): the reference's, at known times (the first after t, +inf
+    // when none), and each limited joint's demanded torque reaching or leaving ±limit (the
+    // fraction of the step from (t0, q0, q̇0) to (t1, q1, q̇1) where the first does, by the
+    // secant on |τ_i| − limit_i; 1 when none does or the step ends at it already).
+    bool hasCorners() const { return !corners_.empty() || control_.torqueLimit.size() > 0; }
+    double nextCorner(double t) const;
+    double cornerFraction(double t0, const Eigen::VectorXd& q0, const Eigen::VectorXd& qd0, double t1, const Eigen::VectorXd& q1,
+                          const Eigen::VectorXd& qd1);
+    // From t on, the reference keeps to its piece between the corners around t (evaluated
+    // just inside it at and beyond its ends: OdeSystem::enterSegment); true when the piece
+    // changed. Never called (fixed-step methods, plots): the reference as it is at every t.
+    bool enterSegment(double t);
+
     const Control& control() const { return control_; }
     const RobotModel& model() const { return model_; }
 
 private:
     void reference(double t);
+    void demand(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& qd);  // tau_ before the limits
     void saturate(Eigen::VectorXd& tau) const;
     Control control_;
     RobotModel model_;
     Effects conservative_;  // gravity and springs: what ĝ is made of
     RobotData data_;
-    Eigen::VectorXd qRef_, qdRef_, qddRef_, a_, tau_, zero_;
+    std::vector<double> corners_;  // the reference's
+    // The corners around the current piece (±inf: none).
+    double segmentStart_ = -std::numeric_limits<double>::infinity(), segmentEnd_ = std::numeric_limits<double>::infinity();
+    Eigen::VectorXd qRef_, qdRef_, qddRef_, a_, tau_, zero_, demandStart_;
 };
 
 }  // namespace ll

@@ -139,13 +139,22 @@ void resetAfterEvent(Stepper& stepper) {
 // Gives x to the system's events; true when it changed x.
 inline bool event(OdeSystem& system, double t, State& x) { return system.hasEvents() && system.afterStep(t, x); }
 
+// The adaptive drivers stop at events and corners alike (OdeSystem).
+inline bool locates(OdeSystem& system) { return system.hasEvents() || system.hasCorners(); }
+// Where in the step from (t0, x0) to (t1, x1) the first event or corner lies: a fraction (0, 1), or 1.
+inline double firstEvent(OdeSystem& system, double t0, const State& x0, double t1, const State& x1) {
+    double theta = system.hasEvents() ? system.eventFraction(x0, x1) : 1.0;
+    if (system.hasCorners()) theta = std::min(theta, system.cornerFraction(t0, x0, t1, x1));
+    return theta;
+}
+
 // Event location for a dense-output stepper: the time in (t0, t1] just after the first
-// event crossing of the last step (secant iterations on the dense output), or t1.
+// event or corner of the last step (secant iterations on the dense output), or t1.
 template <class DenseStepper, class V>
 double locateEvent(DenseStepper& stepper, OdeSystem& system, const State& x0, double t0, V& out, State& xs) {
     const double t1 = stepper.current_time();
     std::copy(stepper.current_state().begin(), stepper.current_state().end(), xs.begin());
-    double theta = system.eventFraction(x0, xs);
+    double theta = firstEvent(system, t0, x0, t1, xs);
     if (theta >= 1.0) return t1;
     double lo = t0, hi = t1;  // the crossing lies in (lo, hi]
     State xlo = x0, xhi = xs;
@@ -153,15 +162,15 @@ double locateEvent(DenseStepper& stepper, OdeSystem& system, const State& x0, do
         const double tc = std::min(hi, lo + (hi - lo) * theta * (1 + 1e-9) + 1e-15 * std::abs(hi));
         stepper.calc_state(tc, out);
         std::copy(out.begin(), out.end(), xs.begin());
-        const double crossed = system.eventFraction(xlo, xs);
+        const double crossed = firstEvent(system, lo, xlo, tc, xs);
         if (crossed < 1.0) {  // still past the crossing, by more than the system accepts
             hi = tc;
             xhi = xs;
             theta = crossed;
-        } else if (system.eventFraction(x0, xs) >= 1.0 && system.eventFraction(xs, xhi) < 1.0) {
+        } else if (firstEvent(system, t0, x0, tc, xs) >= 1.0 && firstEvent(system, tc, xs, hi, xhi) < 1.0) {
             lo = tc;  // not yet crossed: it is between tc and hi
             xlo = xs;
-            theta = system.eventFraction(xlo, xhi);
+            theta = firstEvent(system, lo, xlo, hi, xhi);
         } else {
             return tc;  // crossed and located
         }
@@ -171,10 +180,14 @@ double locateEvent(DenseStepper& stepper, OdeSystem& system, const State& x0, do
     return hi;
 }
 
+// The piece of a system with corners from t on (OdeSystem::enterSegment); true when it changed.
+inline bool enterSegment(OdeSystem& system, double t) { return system.hasCorners() && system.enterSegment(t); }
+
 template <class DenseStepper, class System, class V>
 void runDense(DenseStepper stepper, System rhs, OdeSystem& system, State& x, const std::vector<double>& times,
               const IntegrationSettings& settings, const OutputObserver& observe, const Guard& guard) {
     event(system, times.front(), x);
+    enterSegment(system, times.front());
     if (!observe(times.front(), x)) return;
     V v(x.size()), out(x.size());
     std::copy(x.begin(), x.end(), v.begin());
@@ -183,20 +196,27 @@ void runDense(DenseStepper stepper, System rhs, OdeSystem& system, State& x, con
     size_t k = 1;
     while (k < times.size()) {
         const double t0 = stepper.current_time();
+        // A corner at a known time ends the step exactly there.
+        if (system.hasCorners() && system.nextCorner(t0) - t0 < stepper.current_time_step()) {
+            std::copy(stepper.current_state().begin(), stepper.current_state().end(), v.begin());
+            stepper.initialize(v, t0, system.nextCorner(t0) - t0);
+        }
         stepper.do_step(rhs);
         double t = stepper.current_time();
         guard.afterStep(t, stepper.current_time_step(), stepper.current_state());
-        // With events, the step ends where the first one happens (the rest is dropped).
-        if (system.hasEvents()) t = locateEvent(stepper, system, start, t0, out, current);
+        // With events or corners, the step ends where the first one is (the rest is dropped).
+        if (locates(system)) t = locateEvent(stepper, system, start, t0, out, current);
         for (; k < times.size() && !ahead(times[k], t); ++k) {
             stepper.calc_state(times[k], out);
             std::copy(out.begin(), out.end(), outState.begin());
             x = outState;
             if (!observe(times[k], outState)) return;
         }
-        if (system.hasEvents()) {
+        if (locates(system)) {
             const bool relocated = t < stepper.current_time();
-            if (system.afterStep(t, current) || relocated) {
+            if (relocated) ++guard.counts.eventSteps;
+            const bool changed = system.afterStep(t, current);
+            if (enterSegment(system, t) || changed || relocated) {
                 std::copy(current.begin(), current.end(), v.begin());
                 stepper.initialize(v, t, stepper.current_time_step());
             }
@@ -210,23 +230,26 @@ void runControlled(ControlledStepper stepper, System rhs, OdeSystem& system, Sta
                    const IntegrationSettings& settings, const OutputObserver& observe, const Guard& guard, IntegrationCounts& counts) {
     double t = times.front(), dt = settings.dt;
     event(system, t, x);
+    enterSegment(system, t);
     if (!observe(t, x)) return;
     V v(x.size()), v0(x.size());
     std::copy(x.begin(), x.end(), v.begin());
     State x1(x.size());
     for (size_t k = 1; k < times.size(); ++k) {
         while (ahead(times[k], t)) {
-            double h = std::min(dt, times[k] - t);  // end exactly on the output time
+            double h = std::min(dt, times[k] - t);  // end exactly on the output time, or a corner's
+            if (system.hasCorners()) h = std::min(h, system.nextCorner(t) - t);
             const double t0 = t;
-            if (system.hasEvents()) v0 = v;
+            if (locates(system)) v0 = v;
             if (stepper.try_step(rhs, v, t, h) == odeint::success) {
-                if (system.hasEvents()) {
+                if (locates(system)) {
                     // Event location: retry the step shorter until it ends just past the crossing.
                     dt = std::max(dt, h);
                     for (int retry = 0; retry < 8; ++retry) {
                         std::copy(v.begin(), v.end(), x1.begin());
-                        const double theta = system.eventFraction(x, x1);
+                        const double theta = firstEvent(system, t0, x, t, x1);
                         if (theta >= 1.0) break;
+                        if (retry == 0) ++counts.eventSteps;
                         double hr = (t - t0) * theta * (1 + 1e-9) + 1e-15 * std::max(1.0, std::abs(t0));
                         v = v0;
                         t = t0;
@@ -238,6 +261,7 @@ void runControlled(ControlledStepper stepper, System rhs, OdeSystem& system, Sta
                         std::copy(x.begin(), x.end(), v.begin());
                         resetAfterEvent(stepper);
                     }
+                    if (enterSegment(system, t)) resetAfterEvent(stepper);
                 } else {
                     guard.afterStep(t, h, v);
                     dt = std::max(dt, h);

@@ -31,9 +31,9 @@ struct IntegrationCounts {
     long steps = 0;
     long rejectedSteps = 0;
     long jacobians = 0;  // rosenbrock4 and the stiffness monitor (each costs 4n+2 evaluations)
+    long eventSteps = 0;  // steps that ended early at a located event or (adaptive methods) corner (included in steps)
     // Fixed-step methods only (see FixedStepGrid in integration_drivers.hpp):
     double lastStep = 0.0;         // a last step shorter than dt [s], when T − t0 is not a multiple of dt; else 0
-    long eventSteps = 0;           // steps that ended early at a located event (included in steps)
     long interpolatedOutputs = 0;  // output samples between step ends (cubic Hermite interpolation)
 };
 

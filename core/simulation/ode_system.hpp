@@ -2,6 +2,7 @@
 // The interface every integrated system offers: a robot from its DH table or a
 // Lagrangian typed by hand. One virtual call per right-hand side is negligible
 // beside the dynamics it evaluates, and lets the integrators compile once.
+#include <limits>
 #include <vector>
 
 namespace ll {
@@ -28,6 +29,26 @@ public:
     // much shorter, so the event is handled where it happens), or 1 when none was
     // crossed or the crossing is already located closely enough.
     virtual double eventFraction(const OdeState& /*x0*/, const OdeState& /*x1*/) const { return 1.0; }
+    // Corners: where the right-hand side does not change mode but is not smooth (a
+    // controller's reference changing phase or jumping, a torque reaching or leaving its
+    // limit). An error-controlled step across one is accepted only when short, and is less
+    // accurate; the adaptive drivers end a step at each instead. Fixed-step methods keep
+    // their grid and pass them. Corners at known times: the first after t (+inf: none),
+    // where the drivers end a step exactly. Corners that depend on the state: for a step
+    // from (t0, x0) to (t1, x1), the fraction (0, 1) of it at which the first lies, or 1
+    // when none does or the step ends at it already (located as events are). Not const:
+    // it may evaluate the system.
+    virtual bool hasCorners() const { return false; }
+    virtual double nextCorner(double /*t*/) const { return std::numeric_limits<double>::infinity(); }
+    virtual double cornerFraction(double /*t0*/, const OdeState& /*x0*/, double /*t1*/, const OdeState& /*x1*/) { return 1.0; }
+    // A corner at a known time may be a jump (a step reference, a trapezoid's
+    // acceleration): every stage of a step that ends on it must see the side the step
+    // started on, or its error estimate sees the jump and the step is refused however
+    // short. The adaptive drivers call this at the start and after every accepted step of
+    // a system with corners: from t to the next corner the right-hand side keeps to that
+    // smooth piece, one-sided at its ends. True when the piece changed (the driver restarts
+    // its stepper there).
+    virtual bool enterSegment(double /*t*/) { return false; }
 };
 
 }  // namespace ll

@@ -44,7 +44,11 @@ RobotOde::RobotOde(const RobotModel& model, const Effects& effects)
       qd_(Eigen::VectorXd::Zero(model.dof())),
       Q_(Eigen::VectorXd::Zero(model.dof())),
       rhs_(Eigen::VectorXd::Zero(model.dof())),
-      qdd_(Eigen::VectorXd::Zero(model.dof())) {
+      qdd_(Eigen::VectorXd::Zero(model.dof())),
+      cornerQ0_(Eigen::VectorXd::Zero(model.dof())),
+      cornerQd0_(Eigen::VectorXd::Zero(model.dof())),
+      cornerQ1_(Eigen::VectorXd::Zero(model.dof())),
+      cornerQd1_(Eigen::VectorXd::Zero(model.dof())) {
     requireEffectsFit("RobotOde", effects, model.dof());
     // Conservative terms (into g) first, then the generalized forces (into Q).
     if (effects.gravity) terms_.push_back({RhsTerm::Gravity, &RobotOde::addGravity});
@@ -132,6 +136,16 @@ double RobotOde::eventFraction(const OdeState& x0, const OdeState& x1) const {
 }
 void RobotOde::addTorques(double t) {
     for (const JointTorque& torque : effects_.torques) Q_[torque.joint] += torque(t);
+}
+
+double RobotOde::cornerFraction(double t0, const OdeState& x0, double t1, const OdeState& x1) {
+    if (!hasCorners()) return 1.0;
+    const int n = data_.n;
+    for (int i = 0; i < n; ++i) {
+        cornerQ0_[i] = x0[i], cornerQd0_[i] = x0[n + i];
+        cornerQ1_[i] = x1[i], cornerQd1_[i] = x1[n + i];
+    }
+    return controller_->cornerFraction(t0, cornerQ0_, cornerQd0_, t1, cornerQ1_, cornerQd1_);
 }
 
 // The controller's τ from the state (feedback): its own model, its own scratch data.

@@ -38,6 +38,11 @@ public:
     bool hasEvents() const override { return !stick_.empty(); }
     // A sliding Stick joint whose velocity changed sign during the step.
     double eventFraction(const OdeState& x0, const OdeState& x1) const override;
+    // The controller's corners (Controller::cornerFraction), when it declares one.
+    bool hasCorners() const override { return controller_ && controller_->hasCorners(); }
+    double nextCorner(double t) const override { return controller_ ? controller_->nextCorner(t) : OdeSystem::nextCorner(t); }
+    double cornerFraction(double t0, const OdeState& x0, double t1, const OdeState& x1) override;
+    bool enterSegment(double t) override { return controller_ && controller_->enterSegment(t); }
 
     long evaluations() const { return evaluations_; }
     long termEvaluations(RhsTerm term) const { return termCounts_[static_cast<int>(term)]; }
@@ -81,6 +86,7 @@ private:
     bool hasGeneralizedForces_ = false;
     RobotData data_;
     Eigen::VectorXd q_, qd_, Q_, rhs_, qdd_;
+    Eigen::VectorXd cornerQ0_, cornerQd0_, cornerQ1_, cornerQd1_;  // cornerFraction's scratch
     std::array<long, kRhsTermCount> termCounts_{};
     long evaluations_ = 0;
     long stickEvents_ = 0;

@@ -35,9 +35,10 @@ struct SimulationStats {
     long rejectedSteps = 0;   // adaptive methods only
     long rhsEvaluations = 0;  // forward-dynamics evaluations
     double cpuSeconds = 0.0;  // CPU time of this thread spent integrating
-    // Fixed-step methods (0 for adaptive ones): the step dt [s] they took on the grid
-    // t_k = t0 + k·dt, a last shorter step when the duration is not a multiple of dt,
-    // steps that ended early at a located event (included in steps), and the samples
+    // Steps that ended early at a located event (included in steps), or for adaptive
+    // methods also at a corner (OdeSystem::cornerFraction). Fixed-step methods (0 for
+    // adaptive ones): the step dt [s] they took on the grid
+    // t_k = t0 + k·dt, a last shorter step when the duration is not a multiple of dt, and the samples
     // that lie between step ends (cubic Hermite interpolation of q, q̇ and W from q, q̇,
     // q̈ at the step ends; energies evaluated at the interpolated state).
     double dt = 0.0;
