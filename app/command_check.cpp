@@ -15,11 +15,11 @@
 #include "app/command_usage.hpp"
 #include "app/commands.hpp"
 #include "app/scene_loading.hpp"
+#include "core/math/vector_list.hpp"
 #include "core/pipeline/scene_simulation.hpp"
-#include "core/dynamics/forward_dynamics.hpp"
 #include "core/io/trajectory_file.hpp"
 #include "core/model/quantity_units.hpp"
-#include "core/simulation/control_history.hpp"
+#include "core/simulation/run_history.hpp"
 #include "core/simulation/model_properties.hpp"
 #include "core/simulation/scene_validation.hpp"
 
@@ -74,13 +74,12 @@ void printTracking(const Scene& scene, const ControlHistory& control) {
 
 nlohmann::ordered_json trackingJson(const Scene& scene, const ControlHistory& control) {
     const TrackingSummary& s = control.summary;
-    const auto list = [](const Eigen::VectorXd& v) { return std::vector<double>(v.data(), v.data() + v.size()); };
     nlohmann::ordered_json j;
     j["law"] = toString(scene.effects.control->law);
-    j["rms_error"] = list(s.rmsError);
-    j["max_error"] = list(s.maxError);
-    j["max_torque"] = list(s.maxTorque);
-    j["saturated_fraction"] = list(s.saturatedFraction);
+    j["rms_error"] = listOf(s.rmsError);
+    j["max_error"] = listOf(s.maxError);
+    j["max_torque"] = listOf(s.maxTorque);
+    j["saturated_fraction"] = listOf(s.saturatedFraction);
     j["largest_saturated_fraction"] = s.saturatedFraction.maxCoeff();
     j["energy_spent"] = s.energySpent;
     j["units"] = {{"rms_error", coordinateUnits(scene)}, {"energy_spent", "J"}};
@@ -129,7 +128,7 @@ void printJson(const Scene& scene, const SimulationResult& run, const ModelPrope
             d["unit"] = c.unit;
             d["passed"] = c.passed;
             d["time"] = c.time;
-            d["q"] = std::vector<double>(c.q.data(), c.q.data() + c.q.size());
+            d["q"] = listOf(c.q);
         }
         details.push_back(d);
     }
@@ -159,14 +158,9 @@ int checkCommand(const Args& args) {
     }
     const ModelProperties properties = checkModelProperties(input, run.trajectory);
     // A controlled scene: how well it tracked (a report; it does not decide the exit code).
-    std::optional<TorqueHistory> torques;
-    std::optional<ControlHistory> control;
-    if (!scene.lagrangian && scene.effects.control) try {
-            torques = torqueHistory(input, run.trajectory);
-            control = controlHistory(input, run.trajectory, *torques);
-        } catch (const SingularMassMatrix&) {
-        }
-    const ControlHistory* tracking = control ? &*control : nullptr;
+    std::optional<RunHistory> history;
+    if (!scene.lagrangian && scene.effects.control) history = runHistory(input, run.trajectory);
+    const ControlHistory* tracking = history && history->control ? &*history->control : nullptr;
     if (format == "json") printJson(scene, run, properties, tracking);
     else printText(scene, run, properties, tracking);
     return properties.passed() && run.status != SimulationStatus::Failed ? 0 : 1;

@@ -14,6 +14,7 @@
 #include "app/offscreen_gui.hpp"
 #include "app/scene_loading.hpp"
 #include "core/io/trajectory_file.hpp"
+#include "core/math/vector_list.hpp"
 #include "core/model/quantity_units.hpp"
 #include "core/pipeline/law_comparison.hpp"
 #include "core/present/message_text.hpp"
@@ -66,7 +67,6 @@ void printTable(const Scene& scene, const std::vector<LawRun>& runs) {
 }
 
 void printJson(const Scene& scene, const std::vector<LawRun>& runs) {
-    const auto list = [](const Eigen::VectorXd& v) { return std::vector<double>(v.data(), v.data() + v.size()); };
     nlohmann::ordered_json j;
     j["scene"] = scene.name;
     j["duration"] = scene.simulation.duration;
@@ -83,9 +83,9 @@ void printJson(const Scene& scene, const std::vector<LawRun>& runs) {
             law["completed"] = r.result.status == SimulationStatus::Completed;
             if (!r.result.message.empty()) law["message"] = r.result.message.english();
             if (r.summary.rmsError.size() > 0) {
-                law["rms_error"] = list(r.summary.rmsError);
-                law["max_error"] = list(r.summary.maxError);
-                law["max_torque"] = list(r.summary.maxTorque);
+                law["rms_error"] = listOf(r.summary.rmsError);
+                law["max_error"] = listOf(r.summary.maxError);
+                law["max_torque"] = listOf(r.summary.maxTorque);
                 law["energy_spent"] = r.summary.energySpent;
                 law["saturated_seconds"] = r.saturatedSeconds;
             }

@@ -8,6 +8,7 @@
 #include "app/command_usage.hpp"
 #include "app/commands.hpp"
 #include "app/scene_loading.hpp"
+#include "core/math/vector_list.hpp"
 #include "core/pipeline/scene_evaluation.hpp"
 
 namespace ll::cli {
@@ -23,7 +24,7 @@ nlohmann::json toJson(const Eigen::MatrixXd& M) {
     return rows;
 }
 
-nlohmann::json toJson(const Eigen::VectorXd& v) { return std::vector<double>(v.data(), v.data() + v.size()); }
+nlohmann::json toJson(const Eigen::VectorXd& v) { return listOf(v); }
 
 }  // namespace
 

@@ -19,9 +19,7 @@
 #include "core/simulation/scene_validation.hpp"
 #include "core/pipeline/scene_simulation.hpp"
 #include "core/model/actuation.hpp"
-#include "core/dynamics/forward_dynamics.hpp"
-#include "core/simulation/control_history.hpp"
-#include "core/simulation/torque_parts.hpp"
+#include "core/simulation/run_history.hpp"
 
 namespace ll::cli {
 namespace {
@@ -86,20 +84,12 @@ int simulateCommand(const Args& args) {
     const SimulationInput input = prepareSimulation(scene);
     const SimulationResult result = ll::simulate(input, settings, [&](double f) { bar(f); });
     bar(1.0);
-    // Where the torque goes, as more columns; none when B is singular somewhere on the run
-    // (the simulation then stopped there and says so).
-    std::optional<TorqueHistory> torques;
-    try {
-        torques = torqueHistory(input, result.trajectory);
-    } catch (const SingularMassMatrix&) {
-    }
+    // Where the torque goes, and the controller's reference, error and terms (and its
+    // Lyapunov function), as more columns; none when B is singular somewhere on the run.
+    const RunHistory history = runHistory(input, result.trajectory);
+    const std::optional<TorqueHistory>& torques = history.torques;
     TorqueColumns columns = torques ? torqueColumns(scene, *torques) : TorqueColumns{};
-    // The controller's reference, error and terms (and its Lyapunov function), as more columns.
-    std::optional<ControlHistory> control;
-    if (torques && !scene.lagrangian && scene.effects.control) {
-        control = controlHistory(input, result.trajectory, *torques);
-        columns.control = &*control;
-    }
+    if (history.control) columns.control = &*history.control;
     if (options.has("out")) saveTrajectory(result, options.text("out"), columns);
     else writeTrajectoryCsv(result.trajectory, std::cout, columns);
     printSummary(scene, settings, result);

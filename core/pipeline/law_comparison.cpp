@@ -3,9 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "core/dynamics/forward_dynamics.hpp"
 #include "core/pipeline/scene_simulation.hpp"
-#include "core/simulation/torque_parts.hpp"
+#include "core/simulation/run_history.hpp"
 
 namespace ll {
 
@@ -25,17 +24,15 @@ std::vector<LawRun> compareLaws(const Scene& scene) {
         const SimulationInput input = prepareSimulation(variant);
         run.result = simulate(input, variant.simulation);
         const Trajectory& tr = run.result.trajectory;
-        try {
-            const TorqueHistory torques = torqueHistory(input, tr);
-            const ControlHistory control = controlHistory(input, tr, torques);
-            for (const ControlParts& p : control.parts) {
+        // Nothing when B is singular on the run: it stopped there and says so in result.message.
+        if (const RunHistory history = runHistory(input, tr); history.control) {
+            for (const ControlParts& p : history.control->parts) {
                 run.error.push_back(p.error.cwiseAbs().maxCoeff());
                 run.torque.push_back(p.tau.cwiseAbs().maxCoeff());
             }
-            run.summary = control.summary;
+            run.summary = history.control->summary;
             if (run.summary.saturatedFraction.size() > 0)
                 run.saturatedSeconds = run.summary.saturatedFraction.maxCoeff() * run.result.stats.simulatedSeconds;
-        } catch (const SingularMassMatrix&) {  // the run stopped there and says so in result.message
         }
         runs.push_back(std::move(run));
     }

@@ -6,14 +6,13 @@
 #include <QSlider>
 #include <QTabWidget>
 
+#include "core/math/vector_list.hpp"
 #include "ui/document/scene_document.hpp"
 #include "ui/window/playback_bar.hpp"
 #include "ui/window/tracking_pane.hpp"
 
 namespace ll::ui {
 namespace {
-
-std::vector<double> listOf(const Eigen::VectorXd& v) { return std::vector<double>(v.data(), v.data() + v.size()); }
 
 std::vector<double> times(const std::vector<double>& v, double factor) {
     std::vector<double> out;
