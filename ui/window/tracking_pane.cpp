@@ -162,9 +162,10 @@ void TrackingPane::redraw() {
     const TrackingSummary& s = history_->summary;
     switch (show()) {
         case Show::Error:
-            curves.push_back({tr("e = qref − q"), QColor(31, 119, 180), Qt::SolidLine, column(&ControlParts::error)});
-            curves.push_back({tr("ė = q̇ref − q̇"), QColor(255, 127, 14), Qt::DashLine, column(&ControlParts::errorRate)});
-            axis = QString::fromUtf8("[%1], [%1/s]").arg(unit);
+            // The units in the legend: a title "[rad], [rad/s]" along the axis did not fit the dock's height.
+            curves.push_back({tr("e = qref − q") + QString(" [%1]").arg(unit), QColor(31, 119, 180), Qt::SolidLine, column(&ControlParts::error)});
+            curves.push_back({tr("ė = q̇ref − q̇") + QString(" [%1/s]").arg(unit), QColor(255, 127, 14), Qt::DashLine, column(&ControlParts::errorRate)});
+            axis = QString::fromUtf8("e, ė");
             note = tr("Joint %1: RMS e = %2 %3, largest |e| = %4 %3.").arg(j + 1).arg(readableNumber(s.rmsError[j]), unit, readableNumber(s.maxError[j]));
             break;
         case Show::Torque: {
