@@ -105,6 +105,22 @@ private slots:
         w->document().undoStack()->undo();
         QVERIFY(test::waitUntil([&] { return w->document().validScene().effects.control->model.payloadMass == 2.0; }, 60000));
         QCOMPARE(pane.payloadSlider().value(), 20);
+        // Dragging: the scene follows every position the slider passes, before it is let go,
+        // and the whole drag is one undo entry back to where it began.
+        const auto payload = [&] { return w->document().validScene().effects.control->model.payloadMass; };
+        const int before = w->document().undoStack()->index();
+        QSlider& slider = pane.payloadSlider();
+        slider.setSliderDown(true);
+        for (int position : {25, 30, 35}) {
+            slider.setSliderPosition(position);
+            QVERIFY(test::waitUntil([&] { return payload() == position / 10.0; }, 60000));
+            QVERIFY(slider.isSliderDown());
+        }
+        slider.setSliderDown(false);
+        QCOMPARE(w->document().undoStack()->index(), before + 1);
+        w->document().undoStack()->undo();
+        QVERIFY(test::waitUntil([&] { return payload() == 2.0; }, 60000));
+        QCOMPARE(slider.value(), 20);
     }
 
     // A robot without a controller: no Tracking tab, no reference ghost.

@@ -21,14 +21,25 @@ namespace ll::ui {
 // is cheaper to get right than an inverse per kind of edit).
 class SceneEditCommand : public QUndoCommand {
 public:
-    SceneEditCommand(SceneDocument& doc, SceneJson before, SceneJson after, const QString& text)
-        : QUndoCommand(text), doc_(doc), before_(std::move(before)), after_(std::move(after)) {}
+    SceneEditCommand(SceneDocument& doc, SceneJson before, SceneJson after, const QString& text, int gesture)
+        : QUndoCommand(text), doc_(doc), before_(std::move(before)), after_(std::move(after)), gesture_(gesture) {}
     void undo() override { doc_.setJson(before_); }
     void redo() override { doc_.setJson(after_); }
+    // Edits of one gesture merge (QUndoStack asks when the ids agree): this one then ends
+    // where the newer one did.
+    int id() const override { return gesture_ != 0 ? 1 : -1; }
+    bool mergeWith(const QUndoCommand* other) override {
+        const auto* newer = static_cast<const SceneEditCommand*>(other);
+        if (newer->gesture_ != gesture_) return false;
+        after_ = newer->after_;
+        setText(newer->text());
+        return true;
+    }
 
 private:
     SceneDocument& doc_;
     SceneJson before_, after_;
+    int gesture_ = 0;
 };
 
 SceneDocument::SceneDocument(QObject* parent) : QObject(parent) { checker_.setMaxThreadCount(1); }
@@ -149,7 +160,7 @@ SceneJson SceneDocument::value(const std::string& pointer) const {
     return json_.contains(p) ? json_.at(p) : SceneJson();
 }
 
-void SceneDocument::setValue(const std::string& pointer, const SceneJson& v, const QString& description) {
+void SceneDocument::setValue(const std::string& pointer, const SceneJson& v, const QString& description, int gesture) {
     SceneJson after = json_;
     const SceneJson::json_pointer p(pointer);
     if (v.is_null()) {
@@ -160,14 +171,14 @@ void SceneDocument::setValue(const std::string& pointer, const SceneJson& v, con
         after[p] = v;
     }
     const SceneJson before = json_;
-    replace(after, description);
+    replace(after, description, gesture);
     lastEdited_ = fieldOfPointer(pointer);
     stillUsed_ = parametersStillUsed(before, json_, pointer);
 }
 
-void SceneDocument::replace(const SceneJson& after, const QString& description) {
+void SceneDocument::replace(const SceneJson& after, const QString& description, int gesture) {
     if (after == json_) return;
-    undo_.push(new SceneEditCommand(*this, json_, after, description));
+    undo_.push(new SceneEditCommand(*this, json_, after, description, gesture));
 }
 
 QString SceneDocument::errorAt(const std::string& field) const {

@@ -64,8 +64,10 @@ public:
 
     // The value at `pointer` ("/robot/joints/0/a"), null when absent.
     SceneJson value(const std::string& pointer) const;
-    // One undoable edit: the value at `pointer` becomes `v` (null removes it).
-    void setValue(const std::string& pointer, const SceneJson& v, const QString& description);
+    // One undoable edit: the value at `pointer` becomes `v` (null removes it). Successive
+    // edits with the same non-zero `gesture` (one slider dragged) are one undo entry, from
+    // before the first to after the last.
+    void setValue(const std::string& pointer, const SceneJson& v, const QString& description, int gesture = 0);
     // The field the newest edit changed, as the loader names it ("robot.joints[1].com[0]"),
     // when it was one value; empty after any other change (a joint added, undo, a load).
     const std::string& lastEditedField() const { return lastEdited_; }
@@ -74,7 +76,7 @@ public:
     // other change.
     const std::vector<ParameterStillUsed>& stillUsedAfterLastEdit() const { return stillUsed_; }
     // One undoable edit of the whole document (joints added, moved, a block typed anew).
-    void replace(const SceneJson& after, const QString& description);
+    void replace(const SceneJson& after, const QString& description, int gesture = 0);
 
     // Whether the newest JSON is still being checked (diagnostics and validScene are then
     // those of an earlier one).

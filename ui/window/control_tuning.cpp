@@ -33,9 +33,11 @@ bool scaledBy(const std::vector<double>& base, const Eigen::VectorXd& now, doubl
 
 ControlTuning::ControlTuning(SceneDocument& document, const WindowParts& parts) : doc_(document), parts_(parts) {
     TrackingPane& pane = *parts.tracking;
-    // One edit when a slider is let go (or stepped by the keyboard), not one per pixel dragged.
-    pane.gainSlider().setTracking(false);
-    pane.payloadSlider().setTracking(false);
+    // An edit for every position a slider is dragged through, all of one drag one undo entry.
+    for (QSlider* slider : {&pane.gainSlider(), &pane.payloadSlider()}) {
+        slider->setTracking(true);
+        connect(slider, &QSlider::sliderPressed, this, [this] { ++drag_; });
+    }
     connect(&pane.gainSlider(), &QSlider::valueChanged, this, &ControlTuning::gainsChosen);
     connect(&pane.payloadSlider(), &QSlider::valueChanged, this, &ControlTuning::payloadChosen);
     connect(&doc_, &SceneDocument::validSceneChanged, this, &ControlTuning::sceneChanged);
@@ -63,8 +65,9 @@ void ControlTuning::sceneChanged() {
     }
     TrackingPane& pane = *parts_.tracking;
     const QSignalBlocker gains(pane.gainSlider()), payload(pane.payloadSlider());
-    pane.gainSlider().setValue(static_cast<int>(std::lround(4 * std::log2(factor_))));
-    pane.payloadSlider().setValue(static_cast<int>(std::lround(10 * c.model.payloadMass)));
+    // Not under the user's hand: the check of an earlier position arrives while dragging on.
+    if (!pane.gainSlider().isSliderDown()) pane.gainSlider().setValue(static_cast<int>(std::lround(4 * std::log2(factor_))));
+    if (!pane.payloadSlider().isSliderDown()) pane.payloadSlider().setValue(static_cast<int>(std::lround(10 * c.model.payloadMass)));
     pane.showTuning(factor_, c.model.payloadMass);
 }
 
@@ -74,7 +77,7 @@ void ControlTuning::gainsChosen(int position) {
     SceneJson control = doc_.value("/effects/control");
     if (!wn_.empty()) control["wn"] = times(wn_, factor_);
     else control["kp"] = times(kp_, factor_), control["kd"] = times(kd_, factor_);
-    doc_.setValue("/effects/control", control, tr("Controller gains × %1").arg(factor_, 0, 'g', 3));
+    doc_.setValue("/effects/control", control, tr("Controller gains × %1").arg(factor_, 0, 'g', 3), gesture(parts_.tracking->gainSlider()));
 }
 
 void ControlTuning::payloadChosen(int position) {
@@ -86,7 +89,10 @@ void ControlTuning::payloadChosen(int position) {
         control["model"].erase("payload");
         if (control["model"].empty()) control.erase("model");
     }
-    doc_.setValue("/effects/control", control, tr("Payload the controller believes in: %1 kg").arg(kg, 0, 'f', 1));
+    doc_.setValue("/effects/control", control, tr("Payload the controller believes in: %1 kg").arg(kg, 0, 'f', 1),
+                  gesture(parts_.tracking->payloadSlider()));
 }
+
+int ControlTuning::gesture(const QSlider& slider) const { return slider.isSliderDown() ? drag_ : 0; }
 
 }  // namespace ll::ui
