@@ -156,14 +156,6 @@ Body lumped(const Body& a, const Body& b) {
     return s;
 }
 
-// A frame placed by the rules as a transform in the world (the base link's frame).
-Isometry3d frameOf(const DhFrameRule& f) {
-    Isometry3d frame = Isometry3d::Identity();
-    frame.linear() << f.x, f.z.cross(f.x), f.z;
-    frame.translation() = f.origin;
-    return frame;
-}
-
 // A <mesh filename> as a path to read: package://NAME/rest from the folder NAME above the
 // file (or beside one above it), file:// and relative paths from the file's folder.
 // A package not found keeps its URL (the window then shows the DH drawing) and is noted.
@@ -329,7 +321,7 @@ UrdfImport importUrdf(const std::string& xml, const std::string& path, const Urd
     scene.robot.base = out.dh.base;
     for (double& v : scene.robot.base.matrix().reshaped()) v = cleaned(v, 1.0);
     for (std::size_t i = 0; i < axes.axes.size(); ++i) {
-        const Isometry3d frame = frameOf(out.dh.frames[i + 1]);
+        const Isometry3d frame = out.dh.frames[i + 1].transform();
         Joint joint;
         joint.dh = out.dh.rows[i];
         for (double* v : {&joint.dh.a, &joint.dh.alpha, &joint.dh.d, &joint.dh.theta}) *v = cleaned(*v, 1.0);
@@ -360,7 +352,7 @@ UrdfImport importUrdf(const std::string& xml, const std::string& path, const Urd
         LinkVisual visual;
         visual.name = link->name;
         visual.body = body + 1;
-        visual.frame = body < 0 ? T : frameOf(out.dh.frames[static_cast<std::size_t>(body + 1)]).inverse() * T;
+        visual.frame = body < 0 ? T : out.dh.frames[static_cast<std::size_t>(body + 1)].transform().inverse() * T;
         for (const auto& v : link->visual_array)
             if (v && v->geometry) visual.shapes.push_back(shapeOf(*v, *model, path, missingPackages));
         scene.robot.links.push_back(std::move(visual));

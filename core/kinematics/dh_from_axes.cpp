@@ -14,7 +14,7 @@ struct Line {
     Vector3d point, direction;  // direction of unit length
 };
 
-Vector3d footOn(const Line& line, const Vector3d& p) { return line.point + (p - line.point).dot(line.direction) * line.direction; }
+Vector3d footOn(const Line& line, const Vector3d& p) { return ll::footOn(line.point, line.direction, p); }
 
 // x ⊥ z, of unit length: `preferred` with its z part taken out, else `fallback`'s.
 Vector3d perpendicular(const Vector3d& preferred, const Vector3d& fallback, const Vector3d& z) {
@@ -56,15 +56,6 @@ CommonNormal commonNormal(const Line& from, const Line& to, double tolerance) {
         n.onTo = n.onFrom;
     }
     return n;
-}
-
-Eigen::Isometry3d frameOf(const DhFrameRule& f) {
-    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-    T.linear().col(0) = f.x;
-    T.linear().col(1) = f.z.cross(f.x);
-    T.linear().col(2) = f.z;
-    T.translation() = f.origin;
-    return T;
 }
 
 double angleAbout(const Vector3d& from, const Vector3d& to, const Vector3d& axis) {
@@ -167,6 +158,20 @@ void modifiedFrames(const std::vector<Line>& lines, double tolerance, std::vecto
 
 }  // namespace
 
+Eigen::Isometry3d DhFrameRule::transform() const {
+    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+    T.linear().col(0) = x;
+    T.linear().col(1) = z.cross(x);
+    T.linear().col(2) = z;
+    T.translation() = origin;
+    return T;
+}
+
+Vector3d footOn(const Vector3d& point, const Vector3d& direction, const Vector3d& p) {
+    const Vector3d u = direction.normalized();
+    return point + (p - point).dot(u) * u;
+}
+
 DhFromAxes dhFromAxes(const AxesDescription& robot, DhConvention convention) {
     const std::size_t n = robot.axes.size();
     if (n == 0) throw std::invalid_argument("dhFromAxes: no joints");
@@ -207,8 +212,8 @@ DhFromAxes dhFromAxes(const AxesDescription& robot, DhConvention convention) {
         }
         out.rows.push_back(row);
     }
-    out.base = frameOf(out.frames[0]);
-    out.tool = frameOf(out.frames[n]).inverse() * robot.tool;
+    out.base = out.frames[0].transform();
+    out.tool = out.frames[n].transform().inverse() * robot.tool;
     return out;
 }
 

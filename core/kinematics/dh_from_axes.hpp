@@ -50,7 +50,13 @@ struct DhFrameRule {
     bool antiparallel = false;       // the two lines point opposite ways (α = π)
     Eigen::Vector3d origin = Eigen::Vector3d::Zero();
     Eigen::Vector3d x = Eigen::Vector3d::UnitX(), z = Eigen::Vector3d::UnitZ();
+
+    Eigen::Isometry3d transform() const;  // the frame in the world: axes x, z × x, z at origin
 };
+
+// The point of the line through `point` along `direction` (any length but 0) nearest `p`:
+// the foot of the perpendicular from p.
+Eigen::Vector3d footOn(const Eigen::Vector3d& point, const Eigen::Vector3d& direction, const Eigen::Vector3d& p);
 
 struct DhFromAxes {
     DhConvention convention = DhConvention::Standard;

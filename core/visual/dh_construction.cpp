@@ -22,11 +22,6 @@ std::string subscripted(const std::string& symbol, int k) {
     return text;
 }
 
-Vector3d footOn(const JointAxis& line, const Vector3d& p) {
-    const Vector3d u = line.direction.normalized();
-    return line.point + (p - line.point).dot(u) * u;
-}
-
 // An arrow from `from` along unit `direction`, `length` long, its head two strokes.
 ConstructionMark arrow(ConstructionMarkKind kind, const Vector3d& from, const Vector3d& direction, double length, std::string label) {
     const Vector3d tip = from + length * direction, side = direction.unitOrthogonal();
@@ -115,11 +110,12 @@ std::vector<ConstructionMark> DhConstruction::marks(int index) const {
         out.push_back(arrow(ConstructionMarkKind::FrameZ, f.origin, f.z, length, named("z")));
         if (done < 2) continue;
         if (current) {  // the normal the origin came from
+            const auto axis = [&](int joint) -> const JointAxis& { return axes_.axes[static_cast<std::size_t>(joint)]; };
             Vector3d from = f.origin, to = f.origin;
             const bool standard = found_.convention == DhConvention::Standard;
             if (k == 0) from = Vector3d::Zero();  // the world's origin, nearest point on z₀
-            else if (standard) from = footOn(axes_.axes[static_cast<std::size_t>(k - 1)], f.origin);
-            else if (k < n) to = footOn(axes_.axes[static_cast<std::size_t>(k)], f.origin);
+            else if (standard) from = footOn(axis(k - 1).point, axis(k - 1).direction, f.origin);
+            else if (k < n) to = footOn(axis(k).point, axis(k).direction, f.origin);
             else from = found_.frames[static_cast<std::size_t>(k - 1)].origin;
             if ((to - from).norm() > 1e-9 * scale_) {
                 ConstructionMark normal;
