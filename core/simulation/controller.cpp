@@ -16,6 +16,11 @@ namespace {
 // Two times this close are one for a corner: a step starting or ending this near one is at
 // it (a step this short would be taken for a collapsed one: integration_drivers.hpp).
 double nearTime(double t) { return 1e-10 * std::max(1.0, std::abs(t)); }
+
+// The first of `corners` (increasing) after t and not at it.
+std::vector<double>::const_iterator cornerAfter(const std::vector<double>& corners, double t) {
+    return std::upper_bound(corners.begin(), corners.end(), t + nearTime(t));
+}
 }  // namespace
 
 RobotModel controllerModel(const RobotModel& plant, const ControllerModel& changes) {
@@ -87,7 +92,7 @@ void Controller::reference(double t) {
 
 bool Controller::enterSegment(double t) {
     constexpr double inf = std::numeric_limits<double>::infinity();
-    const auto next = std::upper_bound(corners_.begin(), corners_.end(), t + nearTime(t));
+    const auto next = cornerAfter(corners_, t);
     const double end = next == corners_.end() ? inf : *next, start = next == corners_.begin() ? -inf : *(next - 1);
     const bool changed = end != segmentEnd_ || start != segmentStart_;
     segmentStart_ = start, segmentEnd_ = end;
@@ -108,7 +113,7 @@ const Eigen::VectorXd& Controller::torque(double t, const Eigen::VectorXd& q, co
 }
 
 double Controller::nextCorner(double t) const {
-    const auto next = std::upper_bound(corners_.begin(), corners_.end(), t + nearTime(t));
+    const auto next = cornerAfter(corners_, t);
     return next == corners_.end() ? std::numeric_limits<double>::infinity() : *next;
 }
 

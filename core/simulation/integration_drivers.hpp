@@ -197,9 +197,10 @@ void runDense(DenseStepper stepper, System rhs, OdeSystem& system, State& x, con
     while (k < times.size()) {
         const double t0 = stepper.current_time();
         // A corner at a known time ends the step exactly there.
-        if (system.hasCorners() && system.nextCorner(t0) - t0 < stepper.current_time_step()) {
+        if (const double toCorner = system.hasCorners() ? system.nextCorner(t0) - t0 : stepper.current_time_step();
+            toCorner < stepper.current_time_step()) {
             std::copy(stepper.current_state().begin(), stepper.current_state().end(), v.begin());
-            stepper.initialize(v, t0, system.nextCorner(t0) - t0);
+            stepper.initialize(v, t0, toCorner);
         }
         stepper.do_step(rhs);
         double t = stepper.current_time();
