@@ -481,7 +481,7 @@ private:
     }
 
     void readJoint(const Json& joint, const std::string& path, Joint& target) {
-        if (!checkObject(joint, path, {"type", "a", "alpha", "d", "theta", "mass", "com", "inertia", "armature", "motor"})) return;
+        if (!checkObject(joint, path, {"type", "a", "alpha", "d", "theta", "mass", "com", "inertia", "armature", "motor", "range"})) return;
         if (const Json* type = member(joint, "type"))
             if (auto choice = readChoice(*type, child(path, "type"), {"revolute", "prismatic"}))
                 target.dh.type = *choice == 0 ? JointType::Revolute : JointType::Prismatic;
@@ -494,6 +494,23 @@ private:
         readVector3(joint, path, "com", target.link.com);
         if (const Json* inertia = member(joint, "inertia")) readInertia(*inertia, child(path, "inertia"), target.link);
         readMotor(joint, path, target.motor);
+        if (const Json* range = member(joint, "range")) readRange(*range, child(path, "range"), target);
+    }
+
+    // "range": [lower, upper], radians (or degrees as the scene's angles) or metres.
+    void readRange(const Json& value, const std::string& path, Joint& target) {
+        if (!value.is_array() || value.size() != 2) {
+            error(path, expectedGot(MessageId::WantedJointRange, value));
+            return;
+        }
+        const Angle angle = target.dh.type == JointType::Revolute ? Angle::Yes : Angle::No;
+        const auto lower = number(value[0], item(path, 0), angle), upper = number(value[1], item(path, 1), angle);
+        if (!lower || !upper) return;
+        if (!(*lower < *upper)) {
+            error(path, expectedGot(MessageId::WantedJointRange, value));
+            return;
+        }
+        target.range = std::pair{*lower, *upper};
     }
 
     // "armature": Jm G² as one number, or "motor": {"inertia": Jm, "gear_ratio": G}.

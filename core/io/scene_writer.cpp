@@ -199,6 +199,8 @@ private:
                                   {"gear_ratio", number(field("motor.gear_ratio"), motor.gearRatio)}};
             else if (motor.inertia != 0.0 || hasExpressionUnder(field("armature")))
                 entry["armature"] = number(field("armature"), motor.inertia);
+            if (joint.range)
+                entry["range"] = {number(item(field("range"), 0), joint.range->first), number(item(field("range"), 1), joint.range->second)};
         }
         if (!robot.links.empty()) out["links"] = links(robot.links);
         return out;

@@ -1,7 +1,9 @@
 #pragma once
 // The immutable description of a serial manipulator: DH table, link inertials,
 // base placement. Algorithms never write into it; they write into RobotData.
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -17,6 +19,9 @@ struct Joint {
     DhRow dh;
     LinkInertia link;  // the link this joint moves (link i for joint i)
     JointMotor motor;  // its rotor inertia reflected to the joint (none by default)
+    // Its travel [rad or m], when the scene gives one ("range": [lower, upper]): a
+    // controller's reference must stay inside it. The simulation does not stop the joint.
+    std::optional<std::pair<double, double>> range;
 };
 
 struct RobotModel {

@@ -142,6 +142,42 @@ std::vector<Diagnostic> validateRobotFields(const RobotModel& model) {
     return out;
 }
 
+// A controlled joint's reference inside the joint's range, where the scene gives one. Each
+// reference moves monotonically between the values it names (a quintic, a trapezoid and
+// each waypoint's quintic start and end at rest), so those values are its extremes; a
+// sine's are q0 ± |amplitude|.
+void validateReferenceRange(std::vector<Diagnostic>& out, const Scene& scene, const Control& c) {
+    const ControlReference& r = c.reference;
+    const std::string at = "effects.control.reference.";
+    for (int j = 0; j < scene.dof(); ++j) {
+        const auto& range = scene.robot.joints[static_cast<std::size_t>(j)].range;
+        if (!range || !c.drives(j)) continue;
+        const std::string unit = coordinateUnit(scene.robot.joints[static_cast<std::size_t>(j)].dh.type == JointType::Revolute);
+        const std::string index = "[" + std::to_string(j) + "]";
+        const auto inside = [&](const std::string& field, double value) {
+            if (!std::isfinite(value) || (value >= range->first && value <= range->second)) return true;
+            error(out, field, message(MessageId::ReferenceOutsideRange, value, unit, j + 1, range->first, range->second));
+            return false;
+        };
+        const auto point = [&](const char* key, const Eigen::VectorXd& q) { return j >= q.size() || inside(at + key + index, q[j]); };
+        switch (r.kind) {
+            case ControlReference::Kind::Hold: point("q", r.q0); break;
+            case ControlReference::Kind::Step:
+            case ControlReference::Kind::Quintic:
+            case ControlReference::Kind::Trapezoidal: point("q0", r.q0) && point("q1", r.q1); break;
+            case ControlReference::Kind::Sine:
+                if (j < r.q0.size() && j < r.amplitude.size())
+                    inside(at + "amplitude" + index, r.q0[j] - std::abs(r.amplitude[j])) &&
+                        inside(at + "amplitude" + index, r.q0[j] + std::abs(r.amplitude[j]));
+                break;
+            case ControlReference::Kind::Waypoints:
+                for (std::size_t k = 0; k < r.points.size(); ++k)
+                    if (!point(("points[" + std::to_string(k) + "].q").c_str(), r.points[k])) break;
+                break;
+        }
+    }
+}
+
 // A controller's gains, natural frequencies and torque limits (the reader has checked
 // their signs and sizes). Beyond these a loop's own mode is faster than any servo and
 // any integrator here can follow (K_p = 1e15 on the 2R took 668,000 dopri5 steps before
@@ -165,6 +201,7 @@ void validateControl(std::vector<Diagnostic>& out, const Scene& scene) {
     check("kd", c.kd, QuantityGain, 1e9, [&](bool r) { return accelerations ? std::string("1/s") : forceUnit(r) + "·s/" + coordinateUnit(r); });
     check("wn", c.wn, QuantityNaturalFrequency, 1e5, [](bool) { return std::string("rad/s"); });
     check("limits.torque", c.torqueLimit, QuantityTorqueLimit, 1e9, [](bool r) { return forceUnit(r); });
+    validateReferenceRange(out, scene, c);
 }
 
 std::vector<Diagnostic> validateSceneFields(const Scene& scene) {

@@ -521,6 +521,40 @@ private slots:
              {R"({"law": "pd", "wn": [1e7, 5], "reference": {"kind": "hold", "q": [0, 0]}})", "effects.control.wn[0]"},
              {R"({"law": "pd", "kp": [10, 10], "kd": [1, 1], "reference": {"kind": "hold", "q": [0, 0]}, "limits": {"torque": [5, 1e12]}})",
               "effects.control.limits.torque[1]"}};
+        // A joint's range (robot.joints[i].range): the reference must stay inside it.
+        const std::string ranged = R"({"format": "lagrangelab-scene/1", "name": "x", "robot": {"convention": "standard", "joints": [
+            {"a": 1, "alpha": 0, "d": 0, "theta": 0, "mass": 1}, {"a": 1, "alpha": 0, "d": 0, "theta": 0, "mass": 1, "range": [-1, 1]}]},
+            "effects": {"gravity": [0, -9.81, 0], "control": {"law": "pd", "kp": [10, 10], "kd": [1, 1], "reference": )";
+        const std::pair<const char*, const char*> outside[] = {
+            {R"({"kind": "hold", "q": [0, 1.5]})", "effects.control.reference.q[1]"},
+            {R"({"kind": "quintic", "q0": [0, 0], "q1": [3, -2], "duration": 1})", "effects.control.reference.q1[1]"},
+            {R"({"kind": "sine", "q0": [0, 0.5], "amplitude": [0, 0.6], "frequency": 1})", "effects.control.reference.amplitude[1]"},
+            {R"({"kind": "waypoints", "points": [{"t": 0, "q": [0, 0]}, {"t": 1, "q": [0, -1.25]}]})", "effects.control.reference.points[1].q[1]"}};
+        for (const auto& [reference, field] : outside) {
+            try {
+                requireValidScene(parseScene(ranged + reference + "}}}"));
+                QFAIL(reference);
+            } catch (const InputError& e) {
+                QCOMPARE(QString::fromStdString(e.diagnostics().front().field), QString(field));
+                const std::string text = e.diagnostics().front().message.english();
+                QVERIFY2(text.find("outside joint 2's range [-1, 1] rad") != std::string::npos, text.c_str());
+            }
+        }
+        // inside (joint 1 has no range: any value), and a range that is not [lower, upper]
+        const Scene inside = parseScene(ranged + R"({"kind": "hold", "q": [7, 0.9]})" + "}}}");
+        (void)requireValidScene(inside);
+        QVERIFY(inside.robot.joints[1].range && inside.robot.joints[1].range->first == -1.0 && inside.robot.joints[1].range->second == 1.0);
+        QVERIFY(!inside.robot.joints[0].range);
+        for (const char* range : {"[1, -1]", "[0]", "[0, \"x\"]"}) {
+            std::string scene = ranged + R"({"kind": "hold", "q": [0, 0]})" + "}}}";
+            scene.replace(scene.find("[-1, 1]"), 7, range);
+            try {
+                (void)requireValidScene(parseScene(scene));
+                QFAIL(range);
+            } catch (const InputError& e) {
+                QVERIFY2(e.diagnostics().front().field.rfind("robot.joints[1].range", 0) == 0, e.diagnostics().front().field.c_str());
+            }
+        }
         for (const auto& [control, field] : cases) {
             try {
                 requireValidScene(parseScene(head + control + "}}"));  // as loadScene does
