@@ -1,5 +1,5 @@
 // `lagrangelab derive SCENE [--format text|latex|json|pdf|svg|png] [--out FILE]
-// [--steps 0-8] [--symbolic] [--numeric] [--timings] [--form auto|structured|expanded]
+// [--steps 0-9] [--symbolic] [--numeric] [--timings] [--form auto|structured|expanded]
 // [--entry B11,C23,g4] [--verify]`: the course notes' procedure, step by step, expanded or
 // structured (derivation_forms.hpp); pdf, svg and png typeset the same form (auto:
 // expanded when cheap, else structured) headless into --out (app/derive_pages.cpp).
@@ -40,7 +40,7 @@ StepRange parseSteps(const std::string& text) {
     } catch (const std::exception&) {
         throw UsageError(UsageId::StepsExpected, text);
     }
-    if (range.first < 0 || range.last > 8 || range.first > range.last) throw UsageError(UsageId::StepsOutOfRange, text);
+    if (range.first < 0 || range.last > symbolic::lastDerivationStep || range.first > range.last) throw UsageError(UsageId::StepsOutOfRange, text);
     return range;
 }
 
@@ -74,7 +74,7 @@ int deriveCommand(const Args& args) {
     if (form != "auto" && form != "structured" && form != "expanded")
         throw UsageError(UsageId::ExpectedOneOf, "form", "auto, structured", "expanded", form);
     const Scene scene = loadSceneReportingWarnings(options.positional()[0]);
-    const StepRange range = parseSteps(options.text("steps", "0-8"));
+    const StepRange range = parseSteps(options.text("steps", "0-9"));
 
     DocumentRequest request;
     request.mode = options.has("symbolic")  ? ParameterMode::Textbook

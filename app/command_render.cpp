@@ -122,7 +122,7 @@ ui::ExportSettings parseRenderOptions(const Options& options, const Scene& scene
 // motion), derived as `derive --format pdf` derives it, in the --lang/--notation asked.
 std::shared_ptr<const present::DisplayStep> keyEquationStep(const Scene& scene, const std::string& path, const Options& options) {
     const double number = options.number("step", 8);
-    if (number < 0 || number > 8 || number != std::floor(number)) throw UsageError(UsageId::StepNotDerivationStep, options.text("step"));
+    if (number < 0 || number > symbolic::lastDerivationStep || number != std::floor(number)) throw UsageError(UsageId::StepNotDerivationStep, options.text("step"));
     DocumentRequest request;
     request.firstStep = request.lastStep = static_cast<int>(number);
     request.forPages = true;

@@ -18,7 +18,7 @@ constexpr std::array<CommandText, 17> commands{{
      "[--output-rate HZ] [--out FILE.csv|FILE.json]",
      "integrate the equations of motion; trajectory to --out or CSV on stdout, summary on stderr"},
     {"derive",
-     "SCENE [--format text|latex|json|pdf|svg|png] [--out FILE] [--steps 0-8] [--symbolic] [--numeric] [--timings]\n"
+     "SCENE [--format text|latex|json|pdf|svg|png] [--out FILE] [--steps 0-9] [--symbolic] [--numeric] [--timings]\n"
      "[--form auto|structured|expanded] [--entry B11,C23,g4] [--verify] [--lang da|en]\n"
      "[--notation notes|siciliano|spong|craig]",
      "the model step by step as the course notes derive it (symbolic, GiNaC); structured\n"

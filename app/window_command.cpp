@@ -18,6 +18,7 @@
 #include <QTimer>
 
 #include "core/io/data_directory.hpp"
+#include "core/pipeline/pose_results.hpp"
 #include "core/present/message_text.hpp"
 #include "app/cli_options.hpp"
 #include "app/command_usage.hpp"
@@ -59,7 +60,8 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
     const double play = options.number("play", 0);
     if (play < 0 || play > 600) throw UsageError(UsageId::PlayOutOfRange, options.text("play"));
     const double step = options.number("step", -1);
-    if (options.has("step") && (step < 0 || step > 9 || step != std::floor(step) || (step == 9 && !options.has("teach"))))
+    if (options.has("step") &&
+        (step < 0 || step > poseStepNumber || step != std::floor(step) || (step == poseStepNumber && !options.has("teach"))))
         throw UsageError(UsageId::WindowStepOutOfRange, options.text("step"));
     const double at = options.number("at", 0);
     if (at < 0) throw UsageError(UsageId::AtNegative, options.text("at"));

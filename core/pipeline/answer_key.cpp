@@ -201,7 +201,8 @@ private:
         for (const symbolic::DerivationStep& step : d_.steps)
             for (const symbolic::DerivationItem& item : step.items) {
                 if (item.quantity == symbolic::Quantity::DhTable || item.quantity == symbolic::Quantity::EquationOfMotion ||
-                    item.quantity == symbolic::Quantity::Coordinates || item.quantity == symbolic::Quantity::Velocities)
+                    item.quantity == symbolic::Quantity::Coordinates || item.quantity == symbolic::Quantity::Velocities ||
+                    symbolic::isControlQuantity(item.quantity))
                     continue;
                 switch (item.quantity) {  // below, by their entries' textbook names
                     case symbolic::Quantity::MassMatrix:

@@ -132,9 +132,12 @@ bool byEntries(Quantity q) {
     return q == Quantity::MassMatrix || q == Quantity::CoriolisMatrix || q == Quantity::GravityVector || q == Quantity::GeneralizedForces;
 }
 
-// What a derivation item cannot be picked as: the DH table, an equation of motion, and
-// d/dt ∂L/∂q̇_i (it holds q̈, which no state gives).
-bool pickable(Quantity q) { return q != Quantity::DhTable && q != Quantity::EquationOfMotion && q != Quantity::MomentumRate; }
+// What a derivation item cannot be picked as: the DH table, an equation of motion,
+// d/dt ∂L/∂q̇_i (it holds q̈, which no state gives) and the control law's items (they hold
+// the error and the reference, which no state of the robot alone gives either).
+bool pickable(Quantity q) {
+    return q != Quantity::DhTable && q != Quantity::EquationOfMotion && q != Quantity::MomentumRate && !symbolic::isControlQuantity(q);
+}
 
 std::string labelOf(const present::DisplayItem& item) {
     if (item.equation && item.equation->kind == present::DisplayKind::Equation)

@@ -19,7 +19,7 @@ namespace ll {
 
 struct DocumentRequest {
     symbolic::ParameterMode mode = symbolic::ParameterMode::Parametric;
-    int firstStep = 0, lastStep = 8;  // the steps shown; B, C, g, Q are always derived
+    int firstStep = 0, lastStep = symbolic::lastDerivationStep;  // the steps shown; B, C, g, Q are always derived
     present::DocumentFormat format = present::DocumentFormat::Text;
     std::function<void(int step, const std::string& what)> progress;  // optional, on the deriving thread
     const std::atomic<bool>* cancel = nullptr;                        // optional: throws Cancelled

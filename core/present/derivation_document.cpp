@@ -48,6 +48,31 @@ DisplayItem displayItem(const Derivation& d, const DerivationItem& item, Textboo
         useOneNumberStyle(out);
         return out;
     }
+    if (!item.parts.empty()) {  // a sum as the derivation wrote it, each part grouped on its own
+        std::vector<DisplayPtr> parts;
+        const auto inParentheses = [](DisplayPtr x) {
+            return displayPrecedence(*x) < 1 ? displayNode(DisplayKind::Fence, {std::move(x)}) : x;  // a sum
+        };
+        for (const symbolic::ItemPart& part : item.parts) {
+            const GiNaC::ex coefficient = form(part.coefficient, part.grouping);
+            if (coefficient.is_zero() || part.factor.is_zero()) continue;
+            if (!GiNaC::is_a<GiNaC::add>(part.factor)) {
+                parts.push_back(build(coefficient * part.factor));
+                continue;
+            }
+            // a sum times a sum: built apart, as GiNaC would pull a common number out of both
+            const DisplayPtr c = build(coefficient), f = inParentheses(build(part.factor));
+            const bool negated = c->kind == DisplayKind::Sum && c->children.size() == 1 && c->negative[0];
+            const DisplayPtr product = displayNode(DisplayKind::Product, {inParentheses(negated ? c->children[0] : c), f});
+            parts.push_back(negated ? displayNegated(product) : product);
+        }
+        const DisplayPtr sum = parts.empty() ? build(GiNaC::ex(0)) : displaySumOf(parts);
+        const bool equation = GiNaC::is_a<GiNaC::relational>(item.value);
+        out.value = equation ? build(form(item.value.rhs(), item.grouping)) : sum;
+        out.equation = displayEquation(equation ? sum : displayLabel(out.name, out.latexName), out.value);
+        useOneNumberStyle(out);
+        return out;
+    }
     if (item.quantity == Quantity::Lagrangian && (d.Ekin - d.Epot - item.value).expand().is_zero()) {
         // as the notes write it, L = E_kin − E_pot: the kinetic terms first
         std::vector<DisplayPtr> parts;

@@ -27,9 +27,9 @@ bool allDigits(const std::string& s) {
     return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
 }
 
-// A combining mark after the first code point, added to out: q̇, θ̈.
-void appendWithDots(std::string_view text, int dots, std::string& out) {
-    if (dots == 0) {
+// A combining mark after the first code point, added to out: q̇, θ̈, ĝ.
+void appendWithDots(std::string_view text, int dots, std::string& out, bool hat = false) {
+    if (dots == 0 && !hat) {
         out += text;
         return;
     }
@@ -37,7 +37,8 @@ void appendWithDots(std::string_view text, int dots, std::string& out) {
     while (first < text.size() && (static_cast<unsigned char>(text[first]) & 0xC0) == 0x80) ++first;
     first = std::min(first, text.size());
     out += text.substr(0, first);
-    out += dots == 1 ? "\u0307" : "\u0308";
+    if (hat) out += "\u0302";
+    if (dots) out += dots == 1 ? "\u0307" : "\u0308";
     out += text.substr(first);
 }
 
@@ -140,13 +141,15 @@ private:
         if (plain()) {
             out += key_ ? n.name : n.plain;
         } else if (style_ == DisplayStyle::Text) {
-            appendWithDots(n.text, n.dots, out);
+            appendWithDots(n.text, n.dots, out, n.hat);
             if (!n.subText.empty()) out += n.subText;
             if (!n.supText.empty()) out += n.supText;
         } else {
+            if (n.hat) out += "\\hat{";
             if (n.dots) out += n.dots == 1 ? "\\dot{" : "\\ddot{";
             out += n.latex;
             if (n.dots) out += '}';
+            if (n.hat) out += '}';
             if (!n.subLatex.empty()) {
                 out += "_{";
                 out += n.subLatex;

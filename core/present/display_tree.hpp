@@ -54,6 +54,7 @@ struct DisplayNode {
     bool upright = false;                       // Symbol: a multi-letter word (\mathrm); Function: always
     bool subUpright = false;                    // Symbol: the subscript is a word (m_cart)
     int dots = 0;                               // Symbol: 1 velocity, 2 acceleration
+    bool hat = false;                           // Symbol: an estimate (the controller's ĝ, b̂12)
     std::vector<bool> negative;                 // Sum: the sign of each term
     std::vector<DisplayPtr> children;           // see the kinds
     std::vector<std::vector<DisplayPtr>> rows;  // Matrix

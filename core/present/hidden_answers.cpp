@@ -63,6 +63,8 @@ DisplayPtr hiddenAnswer() {
 
 DisplayDocument withAnswersHidden(const DisplayDocument& document, const std::vector<EntryPlace>& hidden) {
     DisplayDocument out = document;
+    // The control law writes τ with the derived g, B, C in place: it would give them away.
+    if (!hidden.empty()) std::erase_if(out.steps, [](const DisplayStep& s) { return s.number == symbolic::controlStepNumber; });
     for (const EntryPlace& place : hidden)
         for (DisplayStep& step : out.steps) {
             if (step.number != place.step) continue;

@@ -57,7 +57,7 @@ std::string jsonDocument(const DisplayDocument& document, const ModelSummary& mo
             json.member("latex", itemLatex(item));
             json.member("text", itemText(item, document.language));
             json.key("expr");
-            if (item.quantity == Quantity::EquationOfMotion)  // an equation: both sides
+            if (item.quantity == Quantity::EquationOfMotion || item.quantity == Quantity::ClosedLoop)  // an equation: both sides
                 json.value(renderDisplay(*item.equation, DisplayStyle::Plain));
             else writePlain(json, *item.value);
             json.endObject();

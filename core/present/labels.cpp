@@ -111,6 +111,10 @@ std::string itemLatexName(const symbolic::DerivationItem& item, const symbolic::
         case Quantity::MomentumPartial: return R"(\frac{\partial \mathcal{L}}{\partial )" + velocity() + "}";
         case Quantity::MomentumRate: return R"(\frac{d}{dt}\frac{\partial \mathcal{L}}{\partial )" + velocity() + "}";
         case Quantity::CoordinatePartial: return R"(\frac{\partial \mathcal{L}}{\partial )" + coordinate() + "}";
+        case Quantity::ProportionalGain: return "K_{p}";
+        case Quantity::DerivativeGain: return "K_{d}";
+        case Quantity::ControlTorque: return R"(\tau_{)" + i + "}";
+        case Quantity::ClosedLoop: return R"(\text{closed loop } )" + i;
         case Quantity::NamedQuantity:
         case Quantity::MassMatrixEntry:
         case Quantity::CoriolisEntry:

@@ -183,11 +183,12 @@ private:
         if (command == "mathrm" || command == "operatorname") return symbol(flat(group()), true);
         if (command == "text") return displayRaw(group(), "", "");
         if (command == "mathcal") return group(), symbol("ℒ");
-        if (command == "dot" || command == "ddot") {
+        if (command == "dot" || command == "ddot" || command == "hat") {
             const DisplayPtr inner = parsed(group());
             if (inner->kind != DisplayKind::Symbol) return inner;
             auto n = std::make_shared<DisplayNode>(*inner);
-            n->dots = command == "dot" ? 1 : 2;
+            if (command == "hat") n->hat = true;
+            else n->dots = command == "dot" ? 1 : 2;
             return n;
         }
         if (command == "left") {

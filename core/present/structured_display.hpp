@@ -23,7 +23,7 @@ using symbolic::StructuredDynamics;
 // B's sums come with step 7, g, C and the equations with step 8).
 // Throws Cancelled between items once `cancel` is set.
 std::shared_ptr<const DisplayDocument> structuredDisplayDocument(const StructuredDynamics& s, const Message& formReason, int firstStep = 0,
-                                                                 int lastStep = 8, const std::atomic<bool>* cancel = nullptr);
+                                                                 int lastStep = symbolic::lastDerivationStep, const std::atomic<bool>* cancel = nullptr);
 
 // How a generated name reads: Jx2_4 → J_{P2,x}^{(4)}, beta2_3_4 → β_{23}^{(4)},
 // Db2_3_3 → ∂b_{23}/∂q_3. A name of no known pattern reads as the display builder

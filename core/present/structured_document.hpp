@@ -29,7 +29,7 @@ struct StructuredDocumentInfo {
     Message form = MessageId::FormStructured;
     // --steps: only the names of these steps of the course notes (1 frames, 4 Jacobian
     // columns, 6 gamma, 7 beta, 8 derivatives); B needs step 7, C, g and the checks step 8.
-    int firstStep = 0, lastStep = 8;
+    int firstStep = 0, lastStep = symbolic::lastDerivationStep;
     // the language of its words (language.hpp): headings, titles, the form and why, the
     // notes and checks, and JSON's form, form_reason and meaning; the names and sums are
     // the same in every language

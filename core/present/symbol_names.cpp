@@ -56,6 +56,8 @@ std::string_view letterPrefix(std::string_view name) {
 // One piece of a subscript: 1, c, \alpha, \mathrm{cart}.
 std::string latexSubscriptPiece(std::string_view piece) {
     if (allDigits(piece) || piece.size() == 1) return latexEscape(std::string(piece));
+    // a letter and its index, as in xc1: the reference's q_d1 → q_{d1}
+    if (std::islower(static_cast<unsigned char>(piece[0])) && allDigits(piece.substr(1))) return std::string(piece);
     if (const Greek* g = greek(piece)) return g->latex;
     return "\\mathrm{" + latexEscape(std::string(piece)) + "}";
 }
@@ -202,6 +204,12 @@ SymbolMeaning symbolMeaning(const std::string& name, const NameRules& rules) {
 }
 
 DisplayPtr symbolNode(const std::string& name, const SymbolMeaning& meaning, const NameRules& rules) {
+    if (name.size() > 4 && name.ends_with("_hat")) {  // an estimate: g1_hat → ĝ_1, b12_hat → b̂_12
+        auto n = namedSymbol(name.substr(0, name.size() - 4));
+        n->name = n->plain = name;
+        n->hat = true;
+        return n;
+    }
     if (meaning.role == SymbolRole::Trig) {
         auto n = std::make_shared<DisplayNode>();
         n->kind = DisplayKind::Symbol;

@@ -57,23 +57,51 @@ enum class Quantity {
     CoriolisEntry,    // c_ij
     GravityEntry,     // g_j
     ForceEntry,       // Q_j
+    // Step 9, a controlled robot's law (core/symbolic/control_law.hpp).
+    ProportionalGain,  // K_p
+    DerivativeGain,    // K_d
+    ControlTorque,     // τ, the controller's torque with the derived terms in place
+    ClosedLoop,        // row i of B q̈ + C q̇ + g = τ + Q with τ put in
 };
+
+// The steps: 0..8 as in the course notes, 9 the control law of a robot that declares a
+// controller (its τ with the derived B, C, g in place).
+inline constexpr int lastModelStep = 8;
+inline constexpr int controlStepNumber = 9;
+inline constexpr int lastDerivationStep = controlStepNumber;
+
+// A quantity of step 9: written in the reference's and the error's symbols (e_i, ė_i,
+// q̈_di), which no state of the robot alone gives a value to.
+inline bool isControlQuantity(Quantity q) {
+    return q == Quantity::ProportionalGain || q == Quantity::DerivativeGain || q == Quantity::ControlTorque || q == Quantity::ClosedLoop;
+}
 
 // How the terms of an item group when shown: by the masses (a robot's b11 = I1 + m1 ℓc1²
 // + m2 (…)), by the velocities (C, E_kin, ω, v_c: linear or quadratic in q̇), or by the
 // parameters (a typed Lagrangian's K2 (θ1 − θ2)).
 enum class Grouping { Masses, Velocities, Parameters };
 
+// One term of a sum shown as written, not expanded: coefficient · factor, the coefficient
+// grouped on its own (b_12 (q̈_d2 + K_p,2 e_2 + K_d,2 ė_2), the row of C q̇, g_1).
+struct ItemPart {
+    GiNaC::ex coefficient;
+    GiNaC::ex factor = 1;
+    Grouping grouping = Grouping::Masses;
+};
+
 struct DerivationItem {
     std::string name;  // an identifier, also JSON's "name": "T_2^0", "p_c1", "E_kin", "equation_1"
     Quantity quantity;
     int index = -1;  // 0-based: the link, joint, coordinate or row it is of; -1 for none
     Grouping grouping;
-    GiNaC::ex value;  // a scalar, a GiNaC::matrix, or (EquationOfMotion) an equation
+    GiNaC::ex value;  // a scalar, a GiNaC::matrix, or (EquationOfMotion, ClosedLoop) an equation
+    // When not empty: the scalar value (an equation's left side) as the sum of these, in
+    // this order, as the textbook writes it (the control law's τ_i and closed loop).
+    std::vector<ItemPart> parts = {};
 };
 
 struct DerivationStep {
-    int number = 0;       // 0..8 as in the course notes
+    int number = 0;       // 0..8 as in the course notes, 9 the control law
     Message title;        // MessageId::TitleKinematicModel: words only where it is shown
     StepFormula formula;  // the general formula of the step (written for a reader by core/present)
     std::vector<DerivationItem> items;

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "core/dynamics/christoffel.hpp"
+#include "core/symbolic/control_law.hpp"
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/model/diagnostics.hpp"
 #include "core/symbolic/trig_names.hpp"
@@ -358,9 +359,7 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
     for (int i = 0; i < n; ++i)
         for (int j = 0; j < n; ++j) d.C(i, j) = reduceChecked(tc, d.C(i, j), checkpoint, "c_" + idx(i) + idx(j));
     d.Q = effectForces(robot, tc.qd());
-    for (const SymbolicTerm& torque : robot.torques) d.actuated.push_back(torque.joint);
-    std::sort(d.actuated.begin(), d.actuated.end());
-    d.actuated.erase(std::unique(d.actuated.begin(), d.actuated.end()), d.actuated.end());
+    d.actuated = actuatedJoints(scene.effects, n);  // the torques' joints and a controller's
     d.underactuated = static_cast<int>(d.actuated.size()) < n;
 
     std::vector<DerivationItem> step8{{"g", Quantity::GravityVector, -1, Grouping::Masses, d.g},
@@ -379,6 +378,14 @@ Derivation deriveRobot(const Scene& scene, const DerivationOptions& options) {
             R"(«g» = \frac{\partial E_{\mathrm{pot}}}{\partial «q»},\quad c_{ij} = \sum_k \tfrac{1}{2}\left(\frac{\partial «b»_{ij}}{\partial «q_»k} + \frac{\partial «b»_{ik}}{\partial «q_»j} - \frac{\partial «b»_{jk}}{\partial «q_»i}\right)«q'_»k,\quad «B»«q''» + C«q'» + «g» = «Q»,\quad «q''» = «B»^{-1}(«Q» - C«q'» - «g»))",
             {formulaWords(MessageId::FormulaNonConservativeOnly), formulaActuation(d.actuated, d.coordinateNames)}),
         step8);
+
+    // 9. The control law, when the scene declares a controller: B, C, g at work.
+    if (scene.effects.control && shown(controlStepNumber)) {
+        checkpoint("tau");
+        DerivationStep step = controlLawStep(scene, d, [&](const ex& e) { return tc.reduce(e); });
+        step.seconds = clock.lap();
+        d.steps.push_back(std::move(step));
+    }
 
     d.trigToFunctions = tc.toFunctions();
     d.parameterValues = robot.parameterValues;

@@ -18,7 +18,7 @@ namespace ll::symbolic {
 struct DerivationOptions {
     ParameterMode mode = ParameterMode::Parametric;
     int firstStep = 0;  // the steps to show; B, C, g and Q are always derived
-    int lastStep = 8;
+    int lastStep = lastDerivationStep;
     // Called before each piece of work with the step (0..8) and what it is ("b_23",
     // "c_41"), on the deriving thread. Optional.
     std::function<void(int step, const std::string& what)> progress;

@@ -236,7 +236,7 @@ private slots:
         QTest::newRow("no out") << QStringList{"--fps", "10"} << "--out";
         QTest::newRow("layout") << QStringList{"--layout", "poster", "--out", out} << "--layout poster";
         QTest::newRow("step without composite") << QStringList{"--step", "8", "--out", out} << "--step 8";
-        QTest::newRow("step beyond 8") << QStringList{"--layout", "composite", "--step", "9", "--out", out} << "--step 9";
+        QTest::newRow("step beyond 9") << QStringList{"--layout", "composite", "--step", "10", "--out", out} << "--step 10";
         QTest::newRow("overlay with composite")
             << QStringList{"--layout", "composite", "--overlay", "time", "--out", out} << "--overlay time";
     }

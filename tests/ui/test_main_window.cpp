@@ -31,6 +31,7 @@
 #include "core/io/scene_file.hpp"
 #include "core/kinematics/dh_step_through.hpp"
 #include "core/kinematics/forward_kinematics.hpp"
+#include "core/pipeline/pose_results.hpp"
 #include "core/pipeline/scene_derivation.hpp"
 #include "ui/paint/derivation_pages.hpp"
 #include "ui/window/derivation_panel.hpp"
@@ -655,13 +656,13 @@ private slots:
         const Eigen::Vector3d tip = w.result()->visual->endEffectorPosition();
         QVERIFY2((tip - Eigen::Vector3d(1.0, 0.8, 0)).norm() < 1e-3,
                  qPrintable(QString("%1 %2 %3").arg(tip.x()).arg(tip.y()).arg(tip.z())));
-        // The typeset derivation gains step 9, its results at the pose, in the closed forms
+        // The typeset derivation gains a last step, its results at the pose, in the closed forms
         // of the 2R (examples/planar_2r.json's description) at c2 = 0, c12 = 0:
         // b11 = I1 + m1 lc1² + I2 + m2 (a1² + lc2² + 2 a1 lc2 c2) = 1/6 + 0.5 + 0.08 + 1.5·1.16,
         // b12 = I2 + m2 (lc2² + a1 lc2 c2) = 0.32, g1 = (m1 lc1 + m2 a1) g c1 + m2 lc2 g c12 = 2.5·9.81.
         const auto cell = [&](const std::string& name, int i, int j) {
             const present::DisplayStep* pose = w.derivationView().poseResults();
-            if (!pose) return QString("no step 9");
+            if (!pose) return QString("no results step");
             for (const present::DisplayItem& item : pose->items)
                 if (item.name == name && item.value && i < int(item.value->rows.size()))
                     return QString::fromStdString(present::renderDisplay(*item.value->rows[i][j], present::DisplayStyle::Text));
@@ -672,12 +673,12 @@ private slots:
         QCOMPARE(cell("B", 1, 1), QString("0.32"));
         QVERIFY2(std::abs(cell("g", 0, 0).toDouble() - 24.525) < 0.006, qPrintable(cell("g", 0, 0)));
         QCOMPARE(cell("g", 1, 0), QString("0"));  // cos(π/2)'s rounding residue is not shown as 10⁻¹⁶
-        w.showDerivationStep(9);
-        QCOMPARE(w.derivationView().step(), 9);
+        w.showDerivationStep(ll::poseStepNumber);
+        QCOMPARE(w.derivationView().step(), ll::poseStepNumber);
         q << 0.0, 0.0;  // stretched out: b11 = 1/6 + 0.5 + 0.08 + 1.5·(1 + 0.16 + 0.8)
         w.teach(q);
         QCOMPARE(cell("B", 0, 0), QString("3.687"));
-        QCOMPARE(w.derivationView().step(), 9);
+        QCOMPARE(w.derivationView().step(), ll::poseStepNumber);
     }
 
     // One edit, one derivation: the typeset and text tabs show the same result of one

@@ -12,7 +12,10 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include "core/present/message_text.hpp"
+#include "core/symbolic/derivation.hpp"
 #include "core/visual/visual_scene.hpp"
+#include "ui/window/derivation_view.hpp"
 #include "test_registry.hpp"
 #include "ui/document/scene_document.hpp"
 #include "ui/window/ghost_run.hpp"
@@ -121,6 +124,28 @@ private slots:
         w->document().undoStack()->undo();
         QVERIFY(test::waitUntil([&] { return payload() == 2.0; }, 60000));
         QCOMPARE(slider.value(), 20);
+    }
+
+    // The law as the derivation's step 9, listed after step 8 with its title: K_p, K_d, τ_1,
+    // τ_2 with g of step 8 in place, and the closed loop, where g has cancelled.
+    void theLawAsStepNine() {
+        auto w = test::openedWindow(example("control/planar_2r_pd_gravity.json"), analysed);
+        QVERIFY(test::waitUntil([&] { return w->derivationView().document() != nullptr; }, 60000));
+        w->showDerivationStep(symbolic::controlStepNumber);
+        QCOMPARE(w->derivationView().step(), symbolic::controlStepNumber);
+        const present::DisplayStep* step = w->derivationView().document()->step(symbolic::controlStepNumber);
+        QVERIFY(step);
+        QCOMPARE(QString::fromStdString(present::messageText(step->title, present::Language::English)),
+                 QString("Control law: PD with gravity compensation"));
+        QStringList names;
+        for (const present::DisplayItem& item : step->items) names << QString::fromStdString(item.name);
+        QCOMPARE(names, (QStringList{"K_p", "K_d", QString::fromUtf8("τ_1"), QString::fromUtf8("τ_2"), "closed_loop_1", "closed_loop_2"}));
+        const QString tau1 = QString::fromStdString(present::renderDisplay(*step->items[2].equation, present::DisplayStyle::Text));
+        const QString loop1 = QString::fromStdString(present::renderDisplay(*step->items[4].equation, present::DisplayStyle::Text));
+        QVERIFY2(tau1.contains("c12") && tau1.contains("100 e1"), qPrintable(tau1));  // g_1 of step 8 in τ_1
+        QVERIFY2(!loop1.contains("c12") && !loop1.contains("9.81") && loop1.contains(QString::fromUtf8("q̈1")), qPrintable(loop1));
+        QVERIFY(test::settled(*w, 60));
+        QVERIFY(w->derivationView().isVisible());
     }
 
     // A robot without a controller: no Tracking tab, no reference ghost.

@@ -166,16 +166,16 @@ MathBox word(const QString& text, double size, bool upright) {
         } else if (c < 0x80 && std::isalpha(static_cast<int>(c)) && !upright) {
             glyph = run(QString(QChar(c)), 1, size);
             italic = true;
-        } else if (c == 0x0307 || c == 0x0308) {
+        } else if (c == 0x0302 || c == 0x0307 || c == 0x0308) {
             continue;
         } else {
             glyph = run(QString::fromUcs4(&c, 1), 0, size);
         }
-        const int dots = i + 1 < codes.size() ? (codes[i + 1] == 0x0307 ? 1 : codes[i + 1] == 0x0308 ? 2 : 0) : 0;
-        if (dots) {
+        const char32_t next = i + 1 < codes.size() ? codes[i + 1] : 0;
+        if (next == 0x0302 || next == 0x0307 || next == 0x0308) {
             // The accent's ink centred over the letter's (skewed right for italics), a
-            // small gap above the letter's x-height or top.
-            const QString mark = dots == 1 ? QString(QChar(0x02D9)) : QString(QChar(0x00A8));
+            // small gap above the letter's x-height or top: ˙ ¨ for dots, ˆ for a hat.
+            const QString mark = QString(QChar(next == 0x0302 ? 0x02C6 : next == 0x0307 ? 0x02D9 : 0x00A8));
             const MathBox accent = run(mark, 0, size);
             const QRectF ink = inkOf(mark, 0, size);
             const double x = glyph.width / 2 - ink.center().x() + (italic ? 0.1 * em(size) : 0);
@@ -270,7 +270,7 @@ MathBox symbolBox(const DisplayNode& n, double size, const DisplayNode* power = 
     std::string key;
     key.reserve(n.text.size() + n.subShown.size() + n.supText.size() + 16);
     key.append(n.text).append(1, '\x1f').append(n.subShown).append(1, '\x1f').append(n.supText).append(1, '\x1f');
-    key.append(1, static_cast<char>('0' + n.dots)).append(1, n.upright ? 'u' : 'i').append(1, n.subUpright ? 'u' : 'i');
+    key.append(1, static_cast<char>('0' + n.dots)).append(1, n.hat ? 'h' : '-').append(1, n.upright ? 'u' : 'i').append(1, n.subUpright ? 'u' : 'i');
     key.append(std::to_string(std::lround(size * 1000))).append(1, '\x1f').append(std::to_string(n.link));
     if (auto it = boxes.find(key); it != boxes.end()) return it->second;
     return boxes.emplace(std::move(key), symbolBoxOf(n, size, nullptr)).first->second;
@@ -279,6 +279,7 @@ MathBox symbolBox(const DisplayNode& n, double size, const DisplayNode* power = 
 MathBox symbolBoxOf(const DisplayNode& n, double size, const DisplayNode* power) {
     QString text = QString::fromStdString(n.text);
     if (n.dots && !text.isEmpty()) text.insert(text[0].isHighSurrogate() ? 2 : 1, QChar(n.dots == 1 ? 0x0307 : 0x0308));
+    if (n.hat && !text.isEmpty()) text.insert(text[0].isHighSurrogate() ? 2 : 1, QChar(0x0302));  // one accent: dots or a hat
     const bool upright = n.upright;
     MathBox base = word(text, size, upright);
     const double s = scriptSize(size);

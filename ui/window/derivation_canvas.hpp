@@ -26,6 +26,8 @@ namespace ll::ui {
 inline QString shownName(const present::DisplayItem& item) {
     if (item.quantity == present::Quantity::EquationOfMotion)
         return QCoreApplication::translate("ll::ui::DerivationView", "equation %1").arg(item.row + 1);
+    if (item.quantity == present::Quantity::ClosedLoop)
+        return QCoreApplication::translate("ll::ui::DerivationView", "closed loop %1").arg(item.row + 1);
     if (item.equation && item.equation->kind == present::DisplayKind::Equation && !item.equation->children.empty())
         return QString::fromStdString(present::renderDisplay(*item.equation->children[0], present::DisplayStyle::Text));
     return QString::fromStdString(item.name);

@@ -15,6 +15,7 @@
 
 #include "core/model/cancellation.hpp"
 #include "core/pipeline/display_derivation.hpp"
+#include "core/pipeline/pose_results.hpp"
 #include "core/present/message_text.hpp"
 #include "core/present/step_formula_text.hpp"
 
@@ -39,7 +40,7 @@ DerivationView::DerivationView(QWidget* parent) : QWidget(parent) {
     scroll_ = new QScrollArea(this);
     scroll_->setWidgetResizable(true);
     canvas_ = new DerivationCanvas(scroll_);
-    canvas_->picked = [this](int item, int row, int col) { emit entryPicked(step_ == 9 ? -1 : shownIndex_, item, row, col); };
+    canvas_->picked = [this](int item, int row, int col) { emit entryPicked(step_ == poseStepNumber ? -1 : shownIndex_, item, row, col); };
     canvas_->reveal = [this](double top, double bottom) {
         const int mid = static_cast<int>(std::min(top + 40, (top + bottom) / 2));  // a long item: its first lines
         (void)bottom;
@@ -74,7 +75,7 @@ void DerivationView::relist() {
         for (const present::DisplayStep& s : document_->steps)
             rows.emplace_back(s.number, QString::fromStdString(present::messageText(s.title, document_->language)));
     if (rows.empty()) rows.emplace_back(0, tr("DH parameters"));
-    if (pose_) rows.emplace_back(9, tr("Results at the teach pose"));
+    if (pose_) rows.emplace_back(poseStepNumber, tr("Results at the teach pose"));
     // A typed Lagrangian goes from step 0 to 6: its list says why, at step 0.
     const bool typed = document_ && !document_->robot;
     const auto rowText = [&](int n, const QString& title) {
@@ -182,7 +183,7 @@ void DerivationView::accept(std::shared_ptr<const present::DisplayDocument> docu
 }
 
 void DerivationView::refresh() {
-    const present::DisplayStep* shown = step_ == 9 ? pose_.get() : nullptr;
+    const present::DisplayStep* shown = step_ == poseStepNumber ? pose_.get() : nullptr;
     if (shown && document_) {  // the teach pose's sentence in the document's language
         poseWritten_ = *shown;
         poseWritten_.formulaText = present::formulaText(shown->general, {document_->language, document_->notation, document_->robot});
@@ -205,9 +206,9 @@ void DerivationView::refresh() {
 void DerivationView::setPoseResults(std::shared_ptr<const present::DisplayStep> step) {
     const bool had = pose_ != nullptr;
     pose_ = std::move(step);
-    if (!pose_ && had && step_ == 9) showStep(8);
+    if (!pose_ && had && step_ == poseStepNumber) showStep(listed_.size() > 1 ? listed_[listed_.size() - 2] : listed_.front());
     relist();
-    if (step_ == 9 || had != (pose_ != nullptr)) refresh();
+    if (step_ == poseStepNumber || had != (pose_ != nullptr)) refresh();
 }
 
 void DerivationView::showStep(int step) {
@@ -247,7 +248,7 @@ void DerivationView::setMarks(std::vector<Mark> marks) {
     marks_ = std::move(marks);
     std::vector<DerivationCanvas::Mark> here;
     for (const Mark& m : marks_)
-        if (m.step == shownIndex_ && (shownIndex_ >= 0 || step_ == 9)) here.push_back({m.item, m.row, m.col, m.colour});
+        if (m.step == shownIndex_ && (shownIndex_ >= 0 || step_ == poseStepNumber)) here.push_back({m.item, m.row, m.col, m.colour});
     canvas_->setMarks(std::move(here));
 }
 

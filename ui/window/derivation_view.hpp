@@ -43,9 +43,9 @@ public:
     // if this view had derived it. Either drops a derivation of this view's own.
     void setDeriving();
     void setDerivation(std::shared_ptr<const present::DisplayDocument> document, const QString& error = {});
-    void showStep(int step);  // a listed step (9: the pose results); one the derivation has not: the next it has
-    // The results at the teach pose (core/pipeline/pose_results) as step 9, listed after
-    // the derivation's steps; null takes it away (and leaves step 9 for step 8).
+    void showStep(int step);  // a listed step (poseStepNumber: the pose results); one the derivation has not: the next it has
+    // The results at the teach pose (core/pipeline/pose_results) as step poseStepNumber,
+    // listed after the derivation's steps; null takes it away (and leaves it for the last).
     void setPoseResults(std::shared_ptr<const present::DisplayStep> step);
     const present::DisplayStep* poseResults() const { return pose_.get(); }
     int step() const { return step_; }

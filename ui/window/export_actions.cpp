@@ -18,6 +18,7 @@
 #include <QWindow>
 
 #include "core/io/atomic_file.hpp"
+#include "core/pipeline/pose_results.hpp"
 #include "ui/window/relabel.hpp"
 #include "ui/document/animation_export.hpp"
 #include "ui/document/app_language.hpp"
@@ -225,7 +226,7 @@ bool ExportActions::animationTo(const QString& path, QString* error, double dura
         if (shown_.derived && shown_.derived->display) {
             const present::DisplayDocument& document = *shown_.derived->display;
             const int step = parts_.typeset->step();
-            const present::DisplayStep* shownStep = document.step(step <= 8 ? step : 8);
+            const present::DisplayStep* shownStep = document.step(step == poseStepNumber ? symbolic::lastModelStep : step);
             if (!shownStep && !document.steps.empty()) shownStep = &document.steps.back();
             if (shownStep) settings.step = std::make_shared<const present::DisplayStep>(*shownStep);
             settings.language = document.language;

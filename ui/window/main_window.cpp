@@ -26,6 +26,7 @@
 #include "ui/window/dh_step_page.hpp"
 #include "ui/window/dh_step_panel.hpp"
 #include "ui/document/shown_derivation.hpp"
+#include "core/pipeline/pose_results.hpp"
 #include "ui/window/edit_frame.hpp"
 #include "ui/window/entry_linking.hpp"
 #include "ui/window/entry_list.hpp"
@@ -154,17 +155,15 @@ void MainWindow::buildDocks() {
     };
     connect(derivation, &DerivationPanel::stepChanged, stepLabel, showStep);
     (*relabel_)(showStep);
-    stepBar->addWidget(prev);
-    stepBar->addWidget(stepLabel);
-    stepBar->addWidget(next);
+    for (QWidget* w : std::initializer_list<QWidget*>{prev, stepLabel, next}) stepBar->addWidget(w);
     textLayout->addLayout(stepBar);
     textLayout->addWidget(derivation, 1);
     DerivationView* typeset = parts_.typeset = new DerivationView(derivationDock);
     connect(derivation, &DerivationPanel::stepChanged, typeset, [typeset](int s) {
-        if (typeset->step() != s && typeset->step() <= 8) typeset->showStep(s);
+        if (typeset->step() != s && typeset->step() != poseStepNumber) typeset->showStep(s);
     });
     connect(typeset, &DerivationView::stepChanged, derivation, [derivation](int s) {
-        if (s <= 8 && derivation->step() != s) derivation->showStep(s);  // step 9 (the pose) is typeset only
+        if (s != poseStepNumber && derivation->step() != s) derivation->showStep(s);  // the pose is typeset only
     });
     parts_.derivationTabs = new QTabWidget(derivationDock);
     parts_.derivationTabs->addTab(typeset, QString());
@@ -513,7 +512,7 @@ QString MainWindow::statusText() const {
 }
 
 void MainWindow::showDerivationStep(int n) {
-    if (n <= 8) parts_.derivation->showStep(n);
+    if (n != poseStepNumber) parts_.derivation->showStep(n);
     parts_.typeset->showStep(n);
 }
 
