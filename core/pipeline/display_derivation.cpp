@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "core/symbolic/ginac_lock.hpp"
+#include "core/present/structured_control_law.hpp"
 #include "core/present/structured_display.hpp"
 
 namespace ll {
@@ -27,6 +28,11 @@ DerivedDocument deriveInForm(const Scene& scene, const DocumentRequest& request,
     throwIfCancelled(request.cancel);
     const auto printing = std::chrono::steady_clock::now();
     out.display = structuredDisplayDocument(s, reason, request.firstStep, request.lastStep, request.cancel);
+    if (scene.effects.control && request.firstStep <= controlStepNumber && request.lastStep >= controlStepNumber) {
+        auto withLaw = std::make_shared<DisplayDocument>(*out.display);
+        withLaw->steps.push_back(structuredControlStep(scene, s));  // over step 8's entries by name
+        out.display = std::move(withLaw);
+    }
     out.printSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - printing).count();
     if (request.catalogue) out.catalogue = structuredCatalogue(scene, s, *out.display);
     out.timings.push_back({0, "structured derivation (steps 1-8)", s.seconds});

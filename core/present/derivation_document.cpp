@@ -127,6 +127,16 @@ std::shared_ptr<DisplayDocument> displayDocument(const Derivation& d, const std:
     return shapeDocument(d, form, build, cancel);
 }
 
+DisplayStep displayStep(const Derivation& d, const DerivationStep& step, std::shared_ptr<const std::map<std::string, DisplayPtr>> givenSymbols) {
+    DisplayOptions options = optionsFor(d, false);
+    options.givenSymbols = std::move(givenSymbols);
+    DisplayBuilder build(options);
+    TextbookForm form(d);
+    DisplayStep shown = stepHead(d, step);
+    for (const DerivationItem& item : step.items) shown.items.push_back(displayItem(d, item, form, build));
+    return shown;
+}
+
 std::string renderDocument(const DisplayDocument& document, DocumentFormat format) {
     if (format == DocumentFormat::Text) return textDocument(document);
     if (format == DocumentFormat::Latex) return latexDocument(document);

@@ -31,6 +31,12 @@ struct FormNote {
 std::string derivationDocument(const symbolic::Derivation& derivation, DocumentFormat format, const std::string& modeName,
                                const FormNote& form = {}, const Presentation& presentation = {});
 
+// One step of `derivation` as display trees, its symbols named as `options` say beside the
+// derivation's own rules (the structured form's control law: b_jk, c_ij, g_i as given
+// nodes). The caller holds the GiNaC lock.
+DisplayStep displayStep(const symbolic::Derivation& derivation, const symbolic::DerivationStep& step,
+                        std::shared_ptr<const std::map<std::string, DisplayPtr>> givenSymbols);
+
 // A document in Text or Latex from its display trees (no GiNaC: any thread).
 std::string renderDocument(const DisplayDocument& document, DocumentFormat format);
 

@@ -11,6 +11,7 @@
 #include <random>
 
 #include "core/io/scene_file.hpp"
+#include "core/pipeline/display_derivation.hpp"
 #include "core/pipeline/scene_evaluation.hpp"
 #include "core/present/derivation_document.hpp"
 #include "core/present/hidden_answers.hpp"
@@ -225,6 +226,44 @@ private slots:
             present::withAnswersHidden(*display, {{symbolic::lastModelStep, symbolic::Quantity::GravityVector, -1, 0, -1}});
         QVERIFY(!hidden.step(symbolic::controlStepNumber));
         QVERIFY(hidden.step(symbolic::lastModelStep));
+    }
+
+    // The structured form (the Panda's): step 9 over step 8's entries by name, computed
+    // torque's rows the same error equations, each τ_i with every non-zero b_ij of its row.
+    void inTheStructuredForm() {
+        const Scene panda = example("control/panda_trapezoidal_saturation.json");
+        DocumentRequest request;
+        request.format = present::DocumentFormat::Display;
+        const DerivedDocument derived = deriveDisplay(panda, request, DerivationForm::Structured);
+        QCOMPARE(derived.display->form.id, MessageId::FormStructured);
+        const present::DisplayStep* step = derived.display->step(symbolic::controlStepNumber);
+        QVERIFY(step);
+        const Controller controller(panda.robot, panda.effects);
+        const auto text = [](const present::DisplayItem& item) {
+            return present::renderDisplay(*item.equation, present::DisplayStyle::Text);
+        };
+        int rows = 0, torques = 0;
+        for (const present::DisplayItem& item : step->items) {
+            if (item.quantity == symbolic::Quantity::ClosedLoop) {
+                const std::string k = std::to_string(item.row + 1);
+                std::ostringstream expected;
+                expected << "e\u0308" << k << " + " << controller.control().kd[item.row] << " e\u0307" << k << " + " << controller.control().kp[item.row]
+                         << " e" << k << " = 0";
+                QCOMPARE(QString::fromStdString(text(item)), QString::fromStdString(expected.str()));
+                ++rows;
+            }
+            if (item.quantity == symbolic::Quantity::ControlTorque) {
+                const std::string shown = text(item);
+                for (int j = 0; j < panda.dof(); ++j) {
+                    const int lo = std::min(item.row, j) + 1, hi = std::max(item.row, j) + 1;
+                    const std::string b = "b" + std::to_string(lo) + std::to_string(hi) + " (";
+                    QVERIFY2(shown.find(b) != std::string::npos, shown.c_str());
+                }
+                ++torques;
+            }
+        }
+        QCOMPARE(rows, panda.dof());
+        QCOMPARE(torques, panda.dof());
     }
 };
 
