@@ -56,7 +56,7 @@ DisplayItem displayItem(const Derivation& d, const DerivationItem& item, Textboo
         for (const symbolic::ItemPart& part : item.parts) {
             const GiNaC::ex coefficient = form(part.coefficient, part.grouping);
             if (coefficient.is_zero() || part.factor.is_zero()) continue;
-            if (!GiNaC::is_a<GiNaC::add>(part.factor)) {
+            if (!GiNaC::is_a<GiNaC::add>(part.factor) || GiNaC::is_a<GiNaC::numeric>(coefficient)) {  // a number multiplies out
                 parts.push_back(build(coefficient * part.factor));
                 continue;
             }

@@ -47,18 +47,24 @@ Message title(ControlLaw law) {
     return MessageId::TitleControlFeedforward;
 }
 
-// "80 N·m, 40 N" (text) or "80\ \mathrm{N\,m}, 40\ \mathrm{N}" (LaTeX): the driven joints' limits.
+// The driven joints' limits, "80, 40 N·m" (one unit after them when they share it, else
+// "80 N·m, 40 N"); in LaTeX with \mathrm{N\,m}.
 std::string limitsList(const Scene& scene, const Eigen::VectorXd& limits, const Control& control, bool latex) {
-    std::string out;
+    std::vector<std::pair<std::string, bool>> shown;  // the number, revolute
     for (Eigen::Index i = 0; i < limits.size(); ++i) {
         if (!control.drives(static_cast<int>(i))) continue;
         std::ostringstream number;
         number << limits[i];
-        out += (out.empty() ? "" : ", ") + number.str() +
-               (scene.robot.joints[static_cast<std::size_t>(i)].dh.type == JointType::Revolute ? (latex ? R"(\ \mathrm{N\,m})" : " N·m")
-                                                                                                 : (latex ? R"(\ \mathrm{N})" : " N"));
+        shown.emplace_back(number.str(), scene.robot.joints[static_cast<std::size_t>(i)].dh.type == JointType::Revolute);
     }
-    return out;
+    const auto unit = [&](bool revolute) {
+        return revolute ? (latex ? R"(\ \mathrm{N\,m})" : " N·m") : (latex ? R"(\ \mathrm{N})" : " N");
+    };
+    bool shared = true;
+    for (const auto& s : shown) shared = shared && s.second == shown.front().second;
+    std::string out;
+    for (const auto& [number, revolute] : shown) out += (out.empty() ? "" : ", ") + number + (shared ? "" : unit(revolute));
+    return shared && !shown.empty() ? out + unit(shown.front().second) : out;
 }
 
 }  // namespace
@@ -234,7 +240,7 @@ DerivationStep controlLawStep(const Scene& scene, const Derivation& d, const std
                 f.words(MessageId::FormulaControlOwnModel, {"B̂, Ĉ, ĝ"}, {R"(\hat{B}, \hat{C}, \hat{g})"});
             if (errorDynamics) {
                 f.add(";  ", R"(;\quad )");
-                f.words(MessageId::FormulaControlErrorDynamics, {"ë + K_d ė + K_p e = 0"}, {R"(\ddot{e} + K_d \dot{e} + K_p e = 0)"});
+                f.words(MessageId::FormulaControlErrorDynamics, {"ë + K_d ė + K_p e = 0"}, {R"(\,\ddot{e} + K_d \dot{e} + K_p e = 0)"});  // \, : the space the painted formula keeps
             }
             break;
         case ControlLaw::Feedforward:

@@ -79,7 +79,7 @@
 <context>
     <name>ControlTuning</name>
     <message>
-        <location filename="../../ui/window/control_tuning.cpp" line="+78" />
+        <location filename="../../ui/window/control_tuning.cpp" line="+80" />
         <source>Controller gains × %1</source>
         <translation>Regulatorens forstærkninger × %1</translation>
     </message>
@@ -115,7 +115,7 @@
 <context>
     <name>DerivationView</name>
     <message>
-        <location filename="../../ui/window/derivation_view.cpp" line="+56" />
+        <location filename="../../ui/window/derivation_view.cpp" line="+57" />
         <source>Previous</source>
         <translation>Forrige</translation>
     </message>
@@ -684,7 +684,7 @@
 <context>
     <name>ExportActions</name>
     <message>
-        <location filename="../../ui/window/export_actions.cpp" line="+52" />
+        <location filename="../../ui/window/export_actions.cpp" line="+53" />
         <source>Screenshot (PNG)…</source>
         <translation>Skærmbillede (PNG)…</translation>
     </message>
@@ -1097,7 +1097,7 @@
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../ui/window/main_window.cpp" line="+125" />
+        <location filename="../../ui/window/main_window.cpp" line="+126" />
         <source>Model</source>
         <translation>Model</translation>
     </message>
@@ -1122,7 +1122,7 @@
         <translation>trin %1 (%2 af %3)</translation>
     </message>
     <message>
-        <location line="+22" />
+        <location line="+20" />
         <source>Typeset</source>
         <translation>Typesat</translation>
     </message>
@@ -1911,7 +1911,7 @@
         <translation>dV/dt og −q̇ᵀKd q̇</translation>
     </message>
     <message>
-        <location line="+58" />
+        <location line="+59" />
         <source>e = qref − q</source>
         <translation>e = qref − q</translation>
     </message>
@@ -2166,7 +2166,7 @@
 <context>
     <name>ll::ui::DerivationCanvas</name>
     <message>
-        <location filename="../../ui/window/derivation_canvas.hpp" line="+210" />
+        <location filename="../../ui/window/derivation_canvas.hpp" line="+212" />
         <source>Copy %1 as LaTeX</source>
         <translation>Kopiér %1 som LaTeX</translation>
     </message>
@@ -2174,9 +2174,14 @@
 <context>
     <name>ll::ui::DerivationView</name>
     <message>
-        <location line="-182" />
+        <location line="-184" />
         <source>equation %1</source>
         <translation>ligning %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>closed loop %1</source>
+        <translation>lukket sløjfe %1</translation>
     </message>
 </context>
 </TS>

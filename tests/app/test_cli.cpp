@@ -524,7 +524,7 @@ private slots:
         QTest::newRow("simulate") << "simulate"
                                   << "SCENE [--duration T] [--integrator NAME]";
         QTest::newRow("derive") << "derive"
-                                << "SCENE [--format text|latex|json|pdf|svg|png] [--out FILE] [--steps 0-8]";
+                                << "SCENE [--format text|latex|json|pdf|svg|png] [--out FILE] [--steps 0-9]";
         QTest::newRow("integrators") << "integrators"
                                      << "";
         QTest::newRow("accuracy") << "accuracy"

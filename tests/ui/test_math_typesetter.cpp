@@ -621,7 +621,7 @@ private slots:
         QTest::addColumn<QStringList>("args");
         QTest::addColumn<QString>("names");
         QTest::newRow("format") << QStringList{"--format", "docx", "--out", "/tmp/x.docx"} << "--format";
-        QTest::newRow("steps") << QStringList{"--format", "pdf", "--out", "/tmp/x.pdf", "--steps", "3-9"} << "--steps";
+        QTest::newRow("steps") << QStringList{"--format", "pdf", "--out", "/tmp/x.pdf", "--steps", "3-10"} << "--steps";
         QTest::newRow("out") << QStringList{"--format", "pdf", "--out", "/nonexistent/dir/x.pdf"} << "--out";
         QTest::newRow("no out") << QStringList{"--format", "png"} << "--out";
     }
