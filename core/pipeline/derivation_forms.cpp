@@ -15,7 +15,11 @@
 #include "core/symbolic/ginac_lock.hpp"
 #include "core/present/latex_text.hpp"
 #include "core/symbolic/robot_derivation.hpp"
+#include "core/present/message_text.hpp"
+#include "core/present/structured_control_law.hpp"
 #include "core/present/structured_document.hpp"
+#include "core/present/text_document.hpp"
+#include "core/present/latex_document.hpp"
 
 namespace ll {
 namespace {
@@ -66,6 +70,34 @@ bool expandedIsCheap(const Scene& scene, Message& reason) {
                                            : general > 0 ? message(MessageId::FormJointsGeneralAngles, n, generalAngles)
                                                          : message(MessageId::FormJointsOffAxis, n));
     return false;
+}
+
+// The structured form's text or LaTeX with its step 9 (the control law over step 8's entries
+// by name, core/present/structured_control_law) put in before the document's end: the step
+// written by the display documents' own writers, cut from its heading to its end.
+std::string withControlLaw(std::string document, const Scene& scene, const symbolic::StructuredDynamics& s, const DocumentRequest& request) {
+    using present::DocumentFormat;
+    if (!scene.effects.control || request.firstStep > symbolic::controlStepNumber || request.lastStep < symbolic::controlStepNumber ||
+        (request.format != DocumentFormat::Text && request.format != DocumentFormat::Latex))
+        return document;
+    present::DisplayDocument law;
+    law.systemName = s.systemName;
+    law.robot = true;
+    for (int i = 0; i < s.n; ++i) law.coordinateNames.push_back("q" + std::to_string(i + 1));
+    law.steps.push_back(present::structuredControlStep(scene, s));
+    const auto shown = present::localizedDocument(law, request.presentation);
+    const present::Language l = request.presentation.language;
+    const bool text = request.format == DocumentFormat::Text;
+    const std::string written = text ? present::textDocument(*shown) : present::latexDocument(*shown);
+    const std::string step = present::messageText(MessageId::DocumentStep, l) + " " + std::to_string(symbolic::controlStepNumber);
+    const std::size_t from = written.find(text ? "\n" + step + ". " : "\\section*{" + step + ": ");
+    const std::size_t to = written.rfind(text ? "\n" + present::messageText(MessageId::DocumentActuation, l) + ":"
+                                             : "\\paragraph{" + present::messageText(MessageId::DocumentActuation, l) + "}");
+    if (from == std::string::npos || to == std::string::npos || to < from) return document;
+    const std::string part = written.substr(from, to - from);
+    const std::size_t end = text ? std::string::npos : document.rfind("\\end{document}");
+    if (end == std::string::npos) return document + part;
+    return document.insert(end, part + "\n");
 }
 
 Message formName(DerivationForm form) {
@@ -125,7 +157,7 @@ FormDocument deriveInForm(const Scene& scene, const FormRequest& request) {
             for (const EntryRef& e : entries) info.expanded.push_back(expandEntry(*structured, e, request.document.cancel));
         throwIfCancelled(request.document.cancel);
         const auto printing = std::chrono::steady_clock::now();
-        out.derived.document = structuredDocument(*structured, request.document.format, info);
+        out.derived.document = withControlLaw(structuredDocument(*structured, request.document.format, info), scene, *structured, request.document);
         out.derived.printSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - printing).count();
         out.derived.timings.push_back({0, "structured derivation (steps 1-8)", structured->seconds});
     }

@@ -11,6 +11,7 @@
 #include <random>
 
 #include "core/io/scene_file.hpp"
+#include "core/pipeline/derivation_forms.hpp"
 #include "core/pipeline/display_derivation.hpp"
 #include "core/pipeline/scene_evaluation.hpp"
 #include "core/present/derivation_document.hpp"
@@ -264,6 +265,17 @@ private slots:
         }
         QCOMPARE(rows, panda.dof());
         QCOMPARE(torques, panda.dof());
+        // `derive --format text|latex` of the structured form: the step before the end
+        for (const auto format : {present::DocumentFormat::Text, present::DocumentFormat::Latex}) {
+            FormRequest asked;
+            asked.document.format = format;
+            const std::string written = deriveInForm(panda, asked).derived.document;
+            const bool text = format == present::DocumentFormat::Text;
+            const std::size_t at = written.find(text ? "Step 9. Control law: computed torque" : "\\section*{Step 9: Control law: computed torque");
+            QVERIFY2(at != std::string::npos, written.substr(written.size() > 600 ? written.size() - 600 : 0).c_str());
+            QVERIFY(written.find("e\u03081 + 20 e\u03071 + 100 e1 = 0") != std::string::npos || !text);
+            QVERIFY(text || written.rfind("\\end{document}") > at);
+        }
     }
 };
 
