@@ -118,7 +118,9 @@ std::string overviewUsage() {
                     "           four elementary motions, --dh-dimensions every DH parameter drawn on the robot,\n"
                     "           --dh-from-axes I,K the DH frames found from the joint axes: frame I after K of\n"
                     "           its rules (z, origin, x, y; 0,0 the axes alone); --tracking error|torque|lyapunov|rate\n"
-                    "           the Tracking tab of a robot with a controller\n"
+                    "           the Tracking tab of a robot with a controller; --view FILE[#NAME] opens a saved view\n"
+                    "           (a view file, a lesson's view by name or number, a scene's named view) and\n"
+                    "           --save-view FILE.json writes the view the options set up (docs/user/views-and-lessons.md)\n"
                     "\ncommands:\n";
     for (const CommandText& c : commands) s += "  " + synopsis(c, 2) + "\n" + indented(c.summary, "      ");
     return s + "\nexit codes: 0 success, 2 bad input, 3 simulation stopped early\n";

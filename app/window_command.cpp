@@ -1,12 +1,15 @@
 // `lagrangelab [SCENE] [--screenshot FILE.png [--play SECONDS] [--step N] [--teach q1,...]
-// [--select ENTRY] [--pick-link I] [--at T] [--tab NAME] [--joint J] [--derivation VIEW]] [--present]`:
-// the desktop window (ui/window/main_window.hpp); the options picture any state from the command line.
+// [--select ENTRY] [--pick-link I] [--at T] [--tab NAME] [--joint J] [--derivation VIEW]] [--present]
+// [--view FILE[#NAME]] [--save-view FILE.json]`: the desktop window (ui/window/main_window.hpp); the
+// options picture any state from the command line, a saved view (ui/window/view_state.hpp) restores
+// one, and --save-view writes the state the options set up as a view.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <optional>
 
 #include <QApplication>
 #include <QBuffer>
@@ -18,12 +21,16 @@
 #include <QTimer>
 
 #include "core/io/data_directory.hpp"
+#include "core/io/window_view.hpp"
+#include "core/present/language.hpp"
+#include "core/present/notation.hpp"
 #include "core/pipeline/pose_results.hpp"
 #include "core/present/message_text.hpp"
 #include "app/cli_options.hpp"
 #include "app/command_usage.hpp"
 #include "app/commands.hpp"
 #include "app/event_wait.hpp"
+#include "app/output_file.hpp"
 #include "ui/window/scene_files.hpp"
 #include "app/offscreen_gui.hpp"
 #include "app/pixel_size.hpp"
@@ -43,17 +50,35 @@
 #include "ui/window/torque_pane.hpp"
 #include "ui/window/tracking_pane.hpp"
 #include "ui/window/work_precision_pane.hpp"
+#include "ui/window/view_state.hpp"
 
 namespace ll::cli {
 
 int windowCommand(const Args& args, const std::chrono::steady_clock::time_point& processStart) {
     const Options options(args,
                           {"screenshot", "play", "step", "teach", "size", "first-frame", "select", "pick-link", "at", "tab", "joint",
-                           "derivation", "present", "dh-step", "dh-dimensions", "dh-from-axes", "tracking"},
+                           "derivation", "present", "dh-step", "dh-dimensions", "dh-from-axes", "tracking", "view", "save-view"},
                           {"first-frame", "present", "dh-dimensions"});
     if (options.positional().size() > 1) throw UsageError(UsageId::WindowTakesOneScene, options.positional().size());
-    const std::string scene =
-        options.positional().empty() ? (examplesDirectory() / "double_pendulum.json").string() : options.positional()[0];
+    // A saved view: its scene, size, language and state (the other options override them).
+    std::optional<WindowView> view;
+    if (options.has("view")) {
+        if (!options.positional().empty()) throw UsageError(UsageId::ViewAndScene, options.text("view"));
+        view = loadWindowView(options.text("view"));
+        for (const std::string& kept : view->keptPaths())
+            std::cerr << present::messageText(MessageId::WarningLine, presentation().language)
+                      << present::messageText(message(MessageId::FieldsKept, kept), presentation().language) << '\n';
+        if (languageGiven()) view->language = present::languageCode(presentation().language);
+        if (notationGiven()) view->notation = present::notationName(presentation().notation);
+    }
+    const std::string saveView = options.text("save-view");
+    if (options.has("save-view")) {
+        if (QFileInfo(QString::fromStdString(saveView)).suffix().toLower() != "json") throw UsageError(UsageId::SaveViewNotJson, saveView);
+        requireWritableOutputFile(saveView);
+    }
+    const std::string scene = view && !view->scenePath.empty() ? view->scenePath
+                              : !options.positional().empty() ? options.positional()[0]
+                                                              : (examplesDirectory() / "double_pendulum.json").string();
     const std::string screenshot = options.text("screenshot");
     if (!screenshot.empty() && QFileInfo(QString::fromStdString(screenshot)).suffix().toLower() != "png")
         throw UsageError(UsageId::ScreenshotNotPng, screenshot);
@@ -79,7 +104,9 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
     if (derivationView != "typeset" && derivationView != "text" && derivationView != "entries" && derivationView != "exercise")
         throw UsageError(UsageId::ExpectedOneOf, "derivation", "typeset, text, entries", "exercise", derivationView);
     // The window's size; it is never made smaller than its layout's minimum.
-    const PixelSize size = parsePixelSize(options.text("size", "1280x800"));
+    const std::string defaultSize =
+        view && view->size ? std::to_string((*view->size)[0]) + "x" + std::to_string((*view->size)[1]) : std::string("1280x800");
+    const PixelSize size = parsePixelSize(options.text("size", defaultSize));
     if (!hasDisplay()) throw UsageError(UsageId::NoDisplay);
 
     static int argc = 1;
@@ -94,17 +121,27 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
     window.language().set({language, notationGiven() ? presentation().notation : ui::rememberedNotation()});
     QStringList errors;
     const QString opened = QString::fromStdString(scene);  // a URDF robot is imported (File → Import URDF…)
-    if (!(opened.endsWith(".urdf") ? window.files().importUrdf(opened, &errors, true) : window.openFile(opened, &errors, true))) {
+    const bool loaded = view && view->sceneEmbedded ? window.files().openText(view->sceneEmbedded->dump(), "view", &errors, true)
+                        : opened.endsWith(".urdf")  ? window.files().importUrdf(opened, &errors, true)
+                                                    : window.openFile(opened, &errors, true);
+    if (!loaded) {
         const std::string error = present::messageText(MessageId::ErrorLine, language);
         for (const QString& e : errors) std::cerr << error << e.toStdString() << '\n';
         return 2;
     }
     window.resize(size.width, size.height);
-    const bool scripted = !screenshot.empty() || options.has("first-frame");
+    const bool scripted = !screenshot.empty() || options.has("first-frame") || options.has("save-view");
     if (scripted) window.setAskBeforeClosing(false);
-    if (!scripted && !options.has("size")) window.rememberLayout();
+    if (!scripted && !options.has("size") && !view) window.rememberLayout();
     window.show();
     if (!scripted) window.autosave().offer();
+    // What of the view could not be restored, as warnings.
+    QObject::connect(&window.views(), &ui::ViewState::restored, &window, [](const QStringList& problems) {
+        for (const QString& p : problems)
+            std::cerr << present::messageText(MessageId::WarningLine, presentation().language) << p.toStdString() << '\n';
+    });
+    if (view && options.has("present")) view->present = true;
+    if (view && !scripted) window.views().restore(*view);
     if (options.has("present")) {
         // A scripted picture presents in a window of --size (the projector's pixels), the
         // window full screen otherwise.
@@ -120,8 +157,8 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
         std::printf("first frame after %.1f ms\n", ms);
         return 0;
     }
-    if (screenshot.empty()) {
-        window.playback().play();
+    if (!scripted) {
+        if (!view) window.playback().play();
         return app.exec();
     }
 
@@ -129,6 +166,13 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
     if (!waitFor([&] { return window.result() && !window.liveDerivation().busy(); }, 120)) {
         std::cerr << "error: " << scene << ": the simulation or derivation did not finish in 120 s\n";
         return 1;
+    }
+    if (view) {
+        window.views().restore(*view);
+        if (!waitFor([&] { return !window.views().restoring(); }, 120)) {
+            std::cerr << "error: " << options.text("view") << ": the view was not restored in 120 s\n";
+            return 1;
+        }
     }
     const int n = window.document().validScene().dof();
     if (options.has("select") && !window.linking().selectEntry(QString::fromStdString(options.text("select"))))
@@ -151,7 +195,7 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
         window.torquePane().setJoint(static_cast<int>(joint) - 1);
         window.trackingPane().setJoint(static_cast<int>(joint) - 1);
     }
-    window.showDerivationView(QString::fromStdString(derivationView));
+    if (options.has("derivation") || !view) window.showDerivationView(QString::fromStdString(derivationView));
     // an exercise: its key made and the answers the scene holds judged (what the tab shows)
     if (!waitFor([&] { return !window.exercise().judging(); }, 120)) {
         std::cerr << "error: " << scene << ": the exercise's answers were not judged in 120 s\n";
@@ -210,6 +254,11 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
         window.playback().play();
         pauseFor(play);
         window.playback().pause();
+    }
+    if (!saveView.empty()) {
+        saveWindowView(window.views().capture(), saveView);
+        std::fprintf(stderr, "view written to %s\n", saveView.c_str());
+        if (screenshot.empty()) return 0;
     }
     // Let the last frame reach the screen before grabbing it.
     const long frames = window.sceneView().framesDrawn();

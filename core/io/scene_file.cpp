@@ -13,19 +13,11 @@
 #include "core/io/scene_writer.hpp"
 #include "core/simulation/scene_validation.hpp"
 #include "core/symbolic/ginac_lock.hpp"
+#include "core/io/json_file.hpp"
 
 namespace ll {
 
 namespace {
-
-std::optional<std::string> readWholeFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return std::nullopt;
-    std::ostringstream content;
-    content << in.rdbuf();
-    if (in.bad()) return std::nullopt;
-    return content.str();
-}
 
 // loadScene's diagnostics name the file: "<path>: <field>".
 std::vector<Diagnostic> inFile(std::vector<Diagnostic> diagnostics, const std::string& path) {

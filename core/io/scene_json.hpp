@@ -41,6 +41,17 @@ inline Message describe(const Json& value) {
     return literal(text);
 }
 
+// The choices as a message lists them: "\"a\"", "\"a\" or \"b\"", "\"a\", \"b\" or \"c\"".
+inline Message alternatives(const Keys& choices) {
+    std::string first;
+    for (std::size_t i = 0; i + 1 < choices.size(); ++i) first += (i == 0 ? "\"" : ", \"") + choices[i] + "\"";
+    const std::string last = choices.empty() ? std::string() : "\"" + choices.back() + "\"";
+    return first.empty() ? literal(last) : message(MessageId::ChoiceOr, first, last);
+}
+
+// "expected <what>, got <the value>".
+inline Message expectedGot(Message what, const Json& value) { return message(MessageId::JsonExpectedGot, std::move(what), describe(value)); }
+
 inline Eigen::Matrix3d rotationFromRpy(const Eigen::Vector3d& rpy) {
     return (Eigen::AngleAxisd(rpy[2], Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(rpy[1], Eigen::Vector3d::UnitY()) *
             Eigen::AngleAxisd(rpy[0], Eigen::Vector3d::UnitX()))

@@ -26,6 +26,7 @@
 #include "core/symbolic/angle_units.hpp"
 #include "core/model/utf8_text.hpp"
 #include "core/model/usable_number.hpp"
+#include "core/io/window_view.hpp"
 namespace ll {
 
 namespace {
@@ -36,17 +37,6 @@ using namespace scene_json;
 // bare number beyond 2π is warned about (probably degrees typed as radians). `Maybe`:
 // degrees are allowed, but the field may as well be a length (a Lagrangian's coordinate).
 enum class Angle { No, Yes, Maybe };
-
-// The choices as a message lists them: "\"a\"", "\"a\" or \"b\"", "\"a\", \"b\" or \"c\"".
-Message alternatives(const Keys& choices) {
-    std::string first;
-    for (std::size_t i = 0; i + 1 < choices.size(); ++i) first += (i == 0 ? "\"" : ", \"") + choices[i] + "\"";
-    const std::string last = choices.empty() ? std::string() : "\"" + choices.back() + "\"";
-    return first.empty() ? literal(last) : message(MessageId::ChoiceOr, first, last);
-}
-
-// "expected <what>, got <the value>".
-Message expectedGot(MessageId what, const Json& value) { return message(MessageId::JsonExpectedGot, Message(what), describe(value)); }
 
 class SceneReader {
 public:
@@ -59,7 +49,7 @@ public:
         readFormat(root);
         checkKeys(root, "",
                   {"format", "name", "description", "source", "parameters", "robot", "lagrangian", "effects", "initial", "simulation",
-                   "exercise"});
+                   "exercise", "views"});
         const std::size_t errorsBefore = errors_.size();
         if (const Json* parameters = member(root, "parameters")) readParameters(*parameters);
         // Every later field may use the parameters: a broken one would echo everywhere.
@@ -80,6 +70,7 @@ public:
         readInitial(member(root, "initial"));
         if (const Json* simulation = member(root, "simulation")) readSimulation(*simulation);
         if (const Json* exercise = member(root, "exercise")) readExercise(*exercise);
+        if (const Json* views = member(root, "views")) readViews(*views);
         throwIfErrors();
         return std::move(scene_);
     }
@@ -868,6 +859,22 @@ private:
 
     // The entries asked and the answers typed (core/model/exercise.hpp). Entry names are
     // the answer key's to judge (they need the derivation): here only their shape.
+    // Named views of the scene (core/io/window_view.hpp): checked here, kept by the
+    // document as written, restored by the window.
+    void readViews(const Json& views) {
+        if (!views.is_object()) {
+            error("views", expectedGot(MessageId::WantedObject, views));
+            return;
+        }
+        for (const auto& [name, view] : views.items()) {
+            try {
+                readWindowView(view, child("views", name));
+            } catch (const InputError& e) {
+                errors_.insert(errors_.end(), e.diagnostics().begin(), e.diagnostics().end());
+            }
+        }
+    }
+
     void readExercise(const Json& exercise) {
         if (!checkObject(exercise, "exercise", {"entries", "answers"})) return;
         Exercise& e = scene_.exercise;

@@ -117,6 +117,13 @@ double distanceToHold(const CameraView& view, const std::vector<Eigen::Vector4d>
     return distance;
 }
 
+std::pair<double, double> viewAngles(const VisualScene& scene, const Eigen::Vector3d& toEye) {
+    const Basis basis = sceneBasis(scene.up);
+    const Eigen::Vector3d d = toEye.normalized();
+    const double elevation = std::asin(std::clamp(d.dot(basis.up), -1.0, 1.0)) / kDegree;
+    return {std::atan2(d.dot(basis.right), -d.dot(basis.back)) / kDegree, elevation};
+}
+
 CameraView cameraView(const VisualScene& scene, const CameraSpec& spec, double aspect, const std::vector<Eigen::Vector4d>* hold) {
     double azimuth = spec.azimuth, elevation = spec.elevation;
     CameraSpec::Preset preset = spec.preset;

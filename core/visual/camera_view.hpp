@@ -12,6 +12,7 @@
 // face on), iso otherwise. Distance 0 fits the bounds: every corner of the bounds box
 // lies inside the view, so the scene never leaves the frame.
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -43,6 +44,10 @@ struct CameraView {
 // The view of `scene` (its `bounds`) for a picture of width/height `aspect`; it holds the
 // scene's keepInView spheres, or `hold` when given (the robot at one pose).
 CameraView cameraView(const VisualScene& scene, const CameraSpec& spec, double aspect, const std::vector<Eigen::Vector4d>* hold = nullptr);
+
+// The azimuth and elevation [deg] (CameraSpec's) of the direction `toEye` from the centre
+// towards the eye: the inverse of cameraView's direction d (a saved camera restored).
+std::pair<double, double> viewAngles(const VisualScene& scene, const Eigen::Vector3d& toEye);
 
 // How far from `view.centre`, looking along the view's direction, the eye must stand for
 // every sphere (centre x, y, z, radius [m]) to lie inside the picture with 5 % to spare.

@@ -9,9 +9,11 @@
 #include <QListWidget>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QSignalBlocker>
 #include <QVBoxLayout>
 #include <algorithm>
+#include <cmath>
 
 #include "core/model/cancellation.hpp"
 #include "core/pipeline/display_derivation.hpp"
@@ -63,6 +65,16 @@ DerivationView::DerivationView(QWidget* parent) : QWidget(parent) {
 
 // The list holds the steps of the document derived (a robot's 0–8, a typed Lagrangian's
 // 0, 6, 7, 8 with their own titles), then the pose results as step 9.
+double DerivationView::scrollFraction() const {
+    const QScrollBar* bar = scroll_->verticalScrollBar();
+    return bar->maximum() > bar->minimum() ? double(bar->value() - bar->minimum()) / (bar->maximum() - bar->minimum()) : 0.0;
+}
+
+void DerivationView::setScrollFraction(double fraction) {
+    QScrollBar* bar = scroll_->verticalScrollBar();
+    bar->setValue(bar->minimum() + static_cast<int>(std::lround(std::clamp(fraction, 0.0, 1.0) * (bar->maximum() - bar->minimum()))));
+}
+
 QStringList DerivationView::listedSteps() const {
     QStringList rows;
     for (int i = 0; i < steps_->count(); ++i) rows << steps_->item(i)->text();

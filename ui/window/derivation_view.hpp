@@ -56,6 +56,9 @@ public:
     void setPageOnly(bool on);
     void setZoom(double zoom);  // 1 = 15 px per em; clamped to 0.25..8
     double zoom() const { return zoom_; }
+    // How far down the step's page is scrolled: 0 the top, 1 the bottom (a saved view).
+    double scrollFraction() const;
+    void setScrollFraction(double fraction);
 
     bool isDeriving() const { return deriving_; }
     QString errorText() const { return error_; }  // the last derivation's error, if any

@@ -49,6 +49,7 @@
 #include "ui/window/tracking_pane.hpp"
 #include "ui/window/trajectory_chart.hpp"
 #include "ui/window/view_bar.hpp"
+#include "ui/window/view_state.hpp"
 #include "ui/window/work_precision_pane.hpp"
 
 // Q_INIT_RESOURCE must stand outside any namespace.
@@ -232,6 +233,7 @@ void MainWindow::buildFeatures() {
     ghost_ = std::make_unique<GhostRun>(doc_, parts_);
     tuning_ = std::make_unique<ControlTuning>(doc_, parts_);
     exercise_ = std::make_unique<ExerciseMode>(doc_, selection_, *linking_, shown_, parts_, *parts_.exercise);
+    views_ = new ViewState(*this, parts_);  // a child: gone after the features it reads
 
     connect(files_.get(), &SceneFiles::opened, this, [this](const QString& path) {
         autosave_->discard();  // the copy of the scene open before, if it was not saved: asked in maybeSave
@@ -318,6 +320,7 @@ void MainWindow::buildMenus() {
     QMenu* view = menu(QT_TR_NOOP("&View"));
     view->addAction(presentationMode_->toggleAction());
     labelled(view->addAction(QString(), parts_.view, &SceneView::fit), QT_TR_NOOP("Fit view"));
+    views_->addTo(view);
     view->addSeparator();
     language_->addTo(view);
 
@@ -584,9 +587,7 @@ void MainWindow::keyPressEvent(QKeyEvent* e) {
         case Qt::Key_F: parts_.view->fit(); return;
         case Qt::Key_Plus: parts_.playback->faster(); return;
         case Qt::Key_Minus: parts_.playback->slower(); return;
-        case Qt::Key_Escape:
-            if (presentationMode_->on()) presentationMode_->setOn(false);
-            return;
+        case Qt::Key_Escape: presentationMode_->setOn(false); return;
         default: QMainWindow::keyPressEvent(e);
     }
 }

@@ -17,6 +17,7 @@
 //   ControlTuning     the Tracking tab's sliders: the controller's gains and believed payload
 //   TeachMode         the robot at a pose of the sliders, B, C, g evaluated there
 //   ExerciseMode      the student's own answers, hidden entries, checked with hints
+//   ViewState         what the window shows saved as a view and restored
 #include <memory>
 
 #include <Eigen/Core>
@@ -46,6 +47,7 @@ class PresentationMode;
 class Relabel;
 class SceneFiles;
 class TeachMode;
+class ViewState;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -99,6 +101,7 @@ public:
     GhostRun& ghost() { return *ghost_; }
     ExerciseMode& exercise() { return *exercise_; }
     ExercisePanel& exercisePanel() { return *parts_.exercise; }
+    ViewState& views() { return *views_; }
 
     // What is on screen (null before the first result).
     const LiveResult* result() const { return shown_.result.get(); }
@@ -165,6 +168,7 @@ private:
     std::unique_ptr<ControlTuning> tuning_;
     std::unique_ptr<TeachMode> teachMode_;
     std::unique_ptr<ExerciseMode> exercise_;
+    ViewState* views_ = nullptr;
 
     bool remembersLayout_ = false;
     bool runFailed_ = false;   // the status line says why the newest run failed

@@ -103,6 +103,14 @@ bool SceneFiles::importUrdf(const QString& path, QStringList* errors, bool quiet
     return loaded;
 }
 
+bool SceneFiles::openText(const std::string& text, const QString& name, QStringList* errors, bool quiet) {
+    const bool loaded = load(
+        name, [&](std::function<void(bool, const QStringList&)> done) { doc_.loadUnsavedInBackground(text, name, std::move(done)); },
+        errors, quiet);
+    if (loaded) emit opened(QString());
+    return loaded;
+}
+
 bool SceneFiles::load(const QString& name, const std::function<void(std::function<void(bool, const QStringList&)>)>& start, QStringList* errors,
                       bool quiet) {
     if (opening_) {

@@ -3,6 +3,7 @@
 // with errors is refused and the open one kept), save and save as (atomic, PATH.bak),
 // the recent files, the examples, and a question before unsaved work is closed.
 #include <functional>
+#include <string>
 
 #include <QObject>
 #include <QString>
@@ -28,6 +29,9 @@ public:
     // File → Import URDF…: the robot in `path` as a new scene (lagrangelab import's), unsaved
     // (Save asks for its name); refused as openFile refuses, the open scene kept.
     bool importUrdf(const QString& path, QStringList* errors = nullptr, bool quiet = false);
+    // A scene's text (a view's or lesson's embedded scene) as the document, unsaved, named
+    // `name`; refused as openFile refuses.
+    bool openText(const std::string& text, const QString& name, QStringList* errors = nullptr, bool quiet = false);
     bool saveTo(const QString& path, QString* error = nullptr);
     // Asks what to do with unsaved edits: true when the caller may go on.
     bool maybeSave();

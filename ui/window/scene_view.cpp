@@ -142,7 +142,7 @@ void SceneView::rebuild() {
     if (visual_) {
         osg_ = std::make_unique<OsgScene>(*visual_, options_);
         root_->addChild(osg_->root());
-        showComs();
+        drawComs();
         if (options_.trail) osg_->setTrail(trail_);
         if (emphasis_.strength.size() == visual_->parts.size()) osg_->setEmphasis(emphasis_);
         updateMovingFrame();
@@ -204,25 +204,33 @@ void SceneView::setGhostPose(const Eigen::VectorXd& q, double t) {
 }
 
 void SceneView::setShowFrames(bool on) {
+    if (options_.frames == on) return;
     options_.frames = on;
+    emit partsShownChanged();
     rebuild();
     requestFrame();
 }
 
 void SceneView::setShowLabels(bool on) {
+    if (options_.frameLabels == on) return;
     options_.frameLabels = on;
+    emit partsShownChanged();
     rebuild();
     requestFrame();
 }
 
 void SceneView::setShowComs(bool on) {
+    if (coms_ == on) return;
     coms_ = on;
+    emit partsShownChanged();
     rebuild();
     requestFrame();
 }
 
 void SceneView::setShowLook(bool on) {
+    if (options_.look == on) return;
     options_.look = on;
+    emit partsShownChanged();
     rebuild();
     requestFrame();
 }
@@ -232,7 +240,9 @@ void SceneView::setMeshDirectory(const QString& folder) { options_.meshDirectory
 bool SceneView::showsLook() const { return osg_ && osg_->showsLook(); }
 
 void SceneView::setShowTrail(bool on) {
+    if (options_.trail == on) return;
     options_.trail = on;
+    emit partsShownChanged();
     if (!on) trail_.clear();
     rebuild();
     requestFrame();
@@ -320,7 +330,7 @@ void SceneView::updateMovingFrame() {
 
 // The centres of mass as the toggle says, but not while the frames are being found (the
 // construction's lines would hide behind them).
-void SceneView::showComs() {
+void SceneView::drawComs() {
     const bool on = coms_ && construction_.empty();
     for (std::size_t i = 0; i < visual_->parts.size(); ++i)
         if (visual_->parts[i].role == PartRole::CentreOfMass) osg_->setPartVisible(static_cast<int>(i), on);
@@ -330,7 +340,7 @@ void SceneView::showComs() {
 void SceneView::setConstruction(std::vector<ConstructionMark> marks) {
     construction_ = std::move(marks);
     if (osg_) osg_->setConstruction(construction_.empty() ? nullptr : &construction_);
-    if (osg_ && visual_) showComs();
+    if (osg_ && visual_) drawComs();
     updateMovingFrame();
     requestFrame();
 }

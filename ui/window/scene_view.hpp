@@ -50,6 +50,10 @@ public:
     // The camera as last applied (its eye moved by any pan), and the share of the view's
     // height the scene takes at its current pose (core/visual/camera_view.hpp).
     const CameraView& camera() const { return camera_; }
+    // Puts the camera exactly at `view` (a saved view): its eye, target and field of view;
+    // its up is the scene's, as orbiting keeps it. The camera is then the user's (an edit
+    // does not refit it); F fits again.
+    void setCamera(const CameraView& view);
     double sceneHeightInView() const;
     // Presentation framing: the camera fits the robot as it stands (not its whole motion,
     // which would leave a falling Panda half the height), then backs away as far as the
@@ -75,6 +79,7 @@ public:
     // relative mesh paths start at `folder` (the scene file's).
     void setShowLook(bool on);
     bool showsLook() const;
+    bool lookWanted() const { return options_.look; }  // the meshes toggle (shown where the scene has them)
     void setMeshDirectory(const QString& folder);
     bool showFrames() const { return options_.frames; }
     bool showComs() const { return coms_; }
@@ -129,6 +134,7 @@ signals:
     void jointHovered(int joint);
     void jointClicked(int joint);
     void meshesNotRead(const QStringList& failures);
+    void partsShownChanged();  // a toggle of frames, labels, COMs, trail or meshes changed
     void lookAvailable(bool available);  // whether the scene shown has a look of its own (meshes)  // "path: why" each; the DH drawing is shown
 
 private:
@@ -141,8 +147,9 @@ private:
     void wheel(QWheelEvent* e);
     void rebuild();
     void applyCamera();
+    CameraView unpannedView() const;  // cameraView at the angles and distance (0: fitted), before the pan
     void applyHighlight();
-    void showComs();
+    void drawComs();  // the COM markers, as coms_ says
 
     GlWindow* gl_ = nullptr;  // owned by its container, a child of this widget
     osg::ref_ptr<osgViewer::Viewer> viewer_;
@@ -155,7 +162,7 @@ private:
     bool coms_ = true;
     std::vector<Eigen::Vector3d> trail_;
     // Camera: angles [deg] in the scene's basis, distance [m], pan offset of the centre.
-    double azimuth_ = 45, elevation_ = 30, distance_ = 0;
+    double azimuth_ = 45, elevation_ = 30, distance_ = 0, fovy_ = 30;
     // Whether the user turned, panned or zoomed since the last fit (then an edit keeps the
     // camera), and the scene radius the camera was last fitted to (an edit that changes it
     // by more than 5 % refits an untouched camera: a1 = 1.5 on the 2R stays in view).

@@ -12,6 +12,7 @@ namespace ll::ui {
 
 void SceneView::fit() {
     distance_ = 0;
+    fovy_ = 30;
     pan_.setZero();
     userMoved_ = false;
     applyCamera();
@@ -29,27 +30,49 @@ void SceneView::setStandardView(const QString& name) {
     fit();
 }
 
-void SceneView::applyCamera() {
-    if (!visual_ || !viewer_) return;
+CameraView SceneView::unpannedView() const {
     CameraSpec spec;
     spec.preset = CameraSpec::Preset::Angles;
     spec.azimuth = azimuth_;
     spec.elevation = elevation_;
     spec.distance = distance_;
     const double aspect = double(std::max(width(), 1)) / std::max(height(), 1);
+    return cameraView(*visual_, spec, aspect, framePose_ ? &framed_ : nullptr);
+}
+
+void SceneView::applyCamera() {
+    if (!visual_ || !viewer_) return;
+    const double aspect = double(std::max(width(), 1)) / std::max(height(), 1);
     if (framePose_ && distance_ <= 0) visual_->currentExtent(framed_);  // fitting now: to the pose shown
-    CameraView view = cameraView(*visual_, spec, aspect, framePose_ ? &framed_ : nullptr);
+    CameraView view = unpannedView();
     if (distance_ <= 0) {  // fitted now
         distance_ = (view.eye - view.centre).norm();
         fittedRadius_ = visual_->bounds.radius();
     }
     view.eye += pan_;
     view.centre += pan_;
+    view.fovy = fovy_;
     const double radius = std::max(visual_->bounds.radius(), 1e-6);
     view.zNear = std::max(1e-3 * distance_, distance_ - 3 * radius);
     view.zFar = distance_ + 4 * radius + pan_.norm();
     applyCameraView(*viewer_->getCamera(), view, aspect);
     camera_ = view;
+}
+
+void SceneView::setCamera(const CameraView& wanted) {
+    if (!visual_) return;
+    // The angles and distance of the eye from the target, and the pan that moves the
+    // centre cameraView picks for those angles onto the target.
+    const Eigen::Vector3d toEye = wanted.eye - wanted.centre;
+    const auto [azimuth, elevation] = viewAngles(*visual_, toEye);
+    azimuth_ = azimuth;
+    elevation_ = std::clamp(elevation, -89.9, 89.9);
+    distance_ = toEye.norm();
+    fovy_ = wanted.fovy;
+    pan_ = wanted.centre - unpannedView().centre;
+    userMoved_ = true;
+    applyCamera();
+    requestFrame();
 }
 
 double SceneView::sceneHeightInView() const {
@@ -97,7 +120,7 @@ void SceneView::move(QMouseEvent* e) {
         osg::Vec3d right = forward ^ up;
         right.normalize();
         const osg::Vec3d pictureUp = right ^ forward;
-        const double perPixel = 2 * distance_ * std::tan(15.0 * M_PI / 180) / std::max(height(), 1);
+        const double perPixel = 2 * distance_ * std::tan(fovy_ / 2 * M_PI / 180) / std::max(height(), 1);
         const osg::Vec3d shift = (right * -delta.x() + pictureUp * delta.y()) * perPixel;
         pan_ += Eigen::Vector3d(shift.x(), shift.y(), shift.z());
         applyCamera();

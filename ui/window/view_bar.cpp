@@ -2,6 +2,7 @@
 
 #include <QAction>
 #include <QFrame>
+#include <QSignalBlocker>
 #include <QToolButton>
 #include <utility>
 
@@ -50,6 +51,16 @@ ViewBar::ViewBar(SceneView* view, QWidget* parent) : QWidget(parent) {
         a->setCheckable(true);
         a->setChecked(true);
         connect(a, &QAction::toggled, view, slot);
+        // A toggle set elsewhere (a saved view restored) shows in its button.
+        bool (SceneView::*shown)() const = slot == &SceneView::setShowFrames   ? &SceneView::showFrames
+                                           : slot == &SceneView::setShowLabels ? &SceneView::showLabels
+                                           : slot == &SceneView::setShowComs   ? &SceneView::showComs
+                                           : slot == &SceneView::setShowTrail  ? &SceneView::showTrail
+                                                                               : &SceneView::lookWanted;
+        connect(view, &SceneView::partsShownChanged, a, [a, view, shown] {
+            const QSignalBlocker quiet(a);
+            a->setChecked((view->*shown)());
+        });
         relabel([a, name = name] { a->setText(tr(name)); });
         QToolButton* b = button(a);
         // The meshes button only for a robot that has meshes (one imported from URDF).
