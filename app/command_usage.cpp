@@ -11,7 +11,7 @@ struct CommandText {
     const char* summary;
 };
 
-constexpr std::array<CommandText, 17> commands{{
+constexpr std::array<CommandText, 18> commands{{
     {"eval", "SCENE --q v1,... --qd v1,... [--t T] [--tau v1,...]", "B, C, g, Q, q̈, E_kin, E_pot at one state, as JSON"},
     {"simulate",
      "SCENE [--duration T] [--integrator NAME] [--abs-tol X] [--rel-tol X] [--dt X]\n"
@@ -65,6 +65,10 @@ constexpr std::array<CommandText, 17> commands{{
     {"export-urdf", "SCENE --out ROBOT.urdf",
      "a robot scene as URDF: a link per DH link with its inertial, a joint per DH row, friction as\n"
      "<dynamics>; import gives the same B, C and g back"},
+    {"lesson", "LESSON.json --out DIR [--format pdf|png|mp4] [--size WxH] [--notes] | --embed OUT.json",
+     "a lesson's views as the presented window shows them (16:9, 1920x1080 unless --size): lesson.pdf with\n"
+     "a page per view (--notes: its title and speaker's note below), a PNG per view, or an MP4 per view\n"
+     "that plays; --embed: the lesson with every view's scene inside it (needs a display: xvfb-run)"},
     {"integrators", "", "the integrators with order, kind and when to use each"},
     {"accuracy",
      "SCENE [--integrators a,b,...] [--tolerances 1e-3..1e-12] [--steps dt1,dt2,...] [--duration T]\n"

@@ -31,6 +31,8 @@ int exerciseCommand(const Args& args);
 int gradeCommand(const Args& args);
 int importCommand(const Args& args);
 int exportUrdfCommand(const Args& args);
+// A lesson's views as a PDF, PNGs or videos of the presented window (app/command_lesson.cpp).
+int lessonCommand(const Args& args);
 // The painting parts: each starts Qt (offscreen without a display) for its own work.
 // derive --format pdf|svg|png: the typeset pages of a display document (app/derive_pages.cpp).
 int writeDerivationPages(const present::DisplayDocument& display, const std::string& format, const std::string& outPath, bool timings);

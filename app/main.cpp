@@ -22,7 +22,7 @@ namespace {
 bool isHelp(const std::string& arg) { return arg == "--help" || arg == "-h"; }
 
 const char* const kCommands[] = {"eval",  "simulate",     "integrators", "accuracy", "derive", "render", "report",  "codegen",
-                                 "check", "compare-laws", "check-answer", "exercise",    "grade",    "import", "export-urdf", "help",   "version", "--version"};
+                                 "check", "compare-laws", "check-answer", "exercise",    "grade",    "import", "export-urdf", "lesson", "help",   "version", "--version"};
 
 // `lagrangelab`, `lagrangelab SCENE …` and `lagrangelab --screenshot …` open the window:
 // no arguments, or a first argument that is no command but a scene file or an option.
@@ -131,6 +131,7 @@ int main(int argc, char** argv) {
         if (command == "grade") return gradeCommand(args);
         if (command == "import") return importCommand(args);
         if (command == "export-urdf") return exportUrdfCommand(args);
+        if (command == "lesson") return lessonCommand(args);
         std::cerr << usageErrorLine(usageMessage(UsageId::UnknownCommand, command), presentation().language) << "\n\n" << overviewUsage();
         return 2;
     });

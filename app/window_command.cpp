@@ -31,6 +31,7 @@
 #include "app/commands.hpp"
 #include "app/event_wait.hpp"
 #include "app/output_file.hpp"
+#include "app/settled_screenshot.hpp"
 #include "ui/window/scene_files.hpp"
 #include "app/offscreen_gui.hpp"
 #include "app/pixel_size.hpp"
@@ -260,12 +261,7 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
         std::fprintf(stderr, "view written to %s\n", saveView.c_str());
         if (screenshot.empty()) return 0;
     }
-    // Let the last frame reach the screen before grabbing it.
-    const long frames = window.sceneView().framesDrawn();
-    window.sceneView().requestFrame();
-    waitFor([&] { return window.sceneView().framesDrawn() > frames; }, 5);
-    pauseFor(0.3);
-    const QImage image = window.screenshot();
+    const QImage image = settledScreenshot(window);
     QByteArray bytes;
     QBuffer buffer(&bytes);
     buffer.open(QIODevice::WriteOnly);

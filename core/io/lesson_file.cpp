@@ -122,7 +122,7 @@ void saveLesson(const Lesson& lesson, const std::string& path, bool embed) {
 WindowView viewOfLesson(const Lesson& lesson, const std::string& name, const std::string& path) {
     const LessonView* found = nullptr;
     for (const LessonView& lv : lesson.views)
-        if (lv.view.name == name) found = found ? found : &lv;
+        if (!name.empty() && lv.view.name == name) found = found ? found : &lv;  // no name: the first, not the first unnamed
     if (!found && !name.empty() && std::all_of(name.begin(), name.end(), [](char c) { return c >= '0' && c <= '9'; })) {
         const std::size_t k = std::stoul(name.substr(0, 6));
         if (k >= 1 && k <= lesson.views.size()) found = &lesson.views[k - 1];

@@ -857,8 +857,6 @@ private:
         readNumber(simulation, "simulation", "output_rate", s.outputRate);
     }
 
-    // The entries asked and the answers typed (core/model/exercise.hpp). Entry names are
-    // the answer key's to judge (they need the derivation): here only their shape.
     // Named views of the scene (core/io/window_view.hpp): checked here, kept by the
     // document as written, restored by the window.
     void readViews(const Json& views) {
@@ -875,6 +873,8 @@ private:
         }
     }
 
+    // The entries asked and the answers typed (core/model/exercise.hpp). Entry names are
+    // the answer key's to judge (they need the derivation): here only their shape.
     void readExercise(const Json& exercise) {
         if (!checkObject(exercise, "exercise", {"entries", "answers"})) return;
         Exercise& e = scene_.exercise;

@@ -318,7 +318,12 @@ Json windowViewJson(const WindowView& view, bool withFormat) {
         out["dh"] = dh;
     }
     if (view.teach) out["teach"] = *view.teach;
-    merge(out, view.kept);
+    // A camera or dh the view no longer has: its kept fields alone would not read again
+    // (a camera needs its eye and target) or would bring back a default one.
+    Json kept = view.kept;
+    if (!view.camera) kept.erase("camera");
+    if (!view.dh) kept.erase("dh");
+    merge(out, kept);
     return out;
 }
 

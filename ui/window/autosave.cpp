@@ -1,5 +1,7 @@
 #include "ui/window/autosave.hpp"
 
+#include "ui/window/scene_files.hpp"
+
 #include <QCoreApplication>
 #include <QFile>
 #include <QFileInfo>
@@ -21,6 +23,14 @@ Autosave::Autosave(SceneDocument& document, QMainWindow& window) : doc_(document
         if (doc_.isModified()) write();
     });
     timer_.start();
+}
+
+void Autosave::follow(SceneFiles& files) {
+    for (auto signal : {&SceneFiles::opened, &SceneFiles::saved})
+        connect(&files, signal, this, [this](const QString& path) {
+            discard();
+            setOriginal(path);
+        });
 }
 
 void Autosave::setOriginal(const QString& path) { originalHash_ = CrashRecovery::hashOfFile(path); }

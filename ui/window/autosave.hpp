@@ -17,6 +17,8 @@ class QMainWindow;
 
 namespace ll::ui {
 
+class SceneFiles;
+
 class Autosave : public QObject {
     Q_OBJECT
 public:
@@ -24,6 +26,9 @@ public:
 
     // The scene file as opened or saved now (its bytes' hash: a later change on disk is told).
     void setOriginal(const QString& path);
+    // Each file `files` opens or saves: the copy of the scene before discarded (asked about
+    // in maybeSave), the new file its original.
+    void follow(SceneFiles& files);
     void write();
     void discard();
     QString ownFile() const { return recovery_.ownFile(); }

@@ -35,6 +35,7 @@
 #include "ui/window/export_actions.hpp"
 #include "ui/window/ghost_run.hpp"
 #include "ui/window/language_menu.hpp"
+#include "ui/window/lesson_mode.hpp"
 #include "ui/window/model_editor.hpp"
 #include "ui/window/playback_bar.hpp"
 #include "ui/window/presentation_mode.hpp"
@@ -233,20 +234,16 @@ void MainWindow::buildFeatures() {
     ghost_ = std::make_unique<GhostRun>(doc_, parts_);
     tuning_ = std::make_unique<ControlTuning>(doc_, parts_);
     exercise_ = std::make_unique<ExerciseMode>(doc_, selection_, *linking_, shown_, parts_, *parts_.exercise);
-    views_ = new ViewState(*this, parts_);  // a child: gone after the features it reads
+    views_ = new ViewState(*this, parts_);  // children: gone after the features they read
+    lessons_ = new LessonMode(*this, parts_);
 
-    connect(files_.get(), &SceneFiles::opened, this, [this](const QString& path) {
-        autosave_->discard();  // the copy of the scene open before, if it was not saved: asked in maybeSave
-        autosave_->setOriginal(path);
+    autosave_->follow(*files_);
+    connect(files_.get(), &SceneFiles::opened, this, [this] {
         parts_.editor->showTabForOpenedScene();
         parts_.playback->setTime(0);
         updateTitle();
     });
-    connect(files_.get(), &SceneFiles::saved, this, [this](const QString& path) {
-        autosave_->discard();
-        autosave_->setOriginal(path);
-        updateTitle();
-    });
+    connect(files_.get(), &SceneFiles::saved, this, &MainWindow::updateTitle);
     const auto showAgain = [this] {
         if (derivedAsDerived_) showDerivation(derivedAsDerived_);
     };
@@ -323,6 +320,7 @@ void MainWindow::buildMenus() {
     views_->addTo(view);
     view->addSeparator();
     language_->addTo(view);
+    lessons_->addMenu(menuBar());
 
     auto* tools = addToolBar(QString());
     tools->setObjectName("main");

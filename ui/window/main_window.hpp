@@ -18,6 +18,7 @@
 //   TeachMode         the robot at a pose of the sliders, B, C, g evaluated there
 //   ExerciseMode      the student's own answers, hidden entries, checked with hints
 //   ViewState         what the window shows saved as a view and restored
+//   LessonMode        views strung into a lesson, presented with a clicker and notes
 #include <memory>
 
 #include <Eigen/Core>
@@ -43,6 +44,7 @@ class ExportActions;
 class ControlTuning;
 class GhostRun;
 class LanguageMenu;
+class LessonMode;
 class PresentationMode;
 class Relabel;
 class SceneFiles;
@@ -102,6 +104,7 @@ public:
     ExerciseMode& exercise() { return *exercise_; }
     ExercisePanel& exercisePanel() { return *parts_.exercise; }
     ViewState& views() { return *views_; }
+    LessonMode& lessons() { return *lessons_; }
 
     // What is on screen (null before the first result).
     const LiveResult* result() const { return shown_.result.get(); }
@@ -169,6 +172,7 @@ private:
     std::unique_ptr<TeachMode> teachMode_;
     std::unique_ptr<ExerciseMode> exercise_;
     ViewState* views_ = nullptr;
+    LessonMode* lessons_ = nullptr;
 
     bool remembersLayout_ = false;
     bool runFailed_ = false;   // the status line says why the newest run failed

@@ -38,9 +38,10 @@ PresentationMode::PresentationMode(const WindowParts& parts) : parts_(parts) {
     // view bar's shortcut, always on.
     for (auto [key, slot] :
          std::initializer_list<std::pair<QKeySequence, std::function<void()>>>{{Qt::Key_Space, [this] { parts_.playback->togglePlay(); }},
-                                                                               {Qt::Key_Right, [this] { parts_.derivation->nextStep(); }},
-                                                                               {Qt::Key_Left,
-                                                                                [this] { parts_.derivation->previousStep(); }},
+                                                                               {Qt::Key_Right, [this] { step(1); }},
+                                                                               {Qt::Key_PageDown, [this] { step(1); }},
+                                                                               {Qt::Key_Left, [this] { step(-1); }},
+                                                                               {Qt::Key_PageUp, [this] { step(-1); }},
                                                                                {Qt::Key_Plus, [this] { parts_.playback->faster(); }},
                                                                                {Qt::Key_Minus, [this] { parts_.playback->slower(); }},
                                                                                {Qt::Key_Escape, [this] { setOn(false); }}}) {
@@ -59,6 +60,12 @@ PresentationMode::PresentationMode(const WindowParts& parts) : parts_(parts) {
                 if (auto* title = qobject_cast<QLabel*>(dock->titleBarWidget())) title->setText(dock->windowTitle());
         });
     });
+}
+
+void PresentationMode::step(int delta) {
+    if (stepper_) stepper_(delta);
+    else if (delta > 0) parts_.derivation->nextStep();
+    else parts_.derivation->previousStep();
 }
 
 QByteArray PresentationMode::layoutToRemember() const { return on_ ? layoutBefore_ : parts_.window->saveState(); }
@@ -109,6 +116,7 @@ void PresentationMode::setOn(bool on) {
         }
     }
     for (QAction* key : keys_) key->setEnabled(on);
+    emit changed(on);
     if (on) {
         if (size_.isValid()) {
             window->showNormal();

@@ -167,22 +167,26 @@ void ViewState::finish(int generation, int settle) {
     emit restored(problems_);
 }
 
+// Every part of the window a view decides: what it leaves out takes its default (the
+// typeset derivation at its first step, nothing picked, t = 0 paused at 1× looping, every
+// toggle on, the Energy tab at joint 1, the camera fitted), so a view looks the same
+// whatever was shown before it. The language and notation left out stay as they are.
 void ViewState::applyShown() {
     MainWindow& w = window_;
     const WindowView& v = view_;
     const int n = w.document().validScene().dof();
 
-    if (v.derivation.tab) w.showDerivationView(QString::fromStdString(*v.derivation.tab));
+    w.showDerivationView(QString::fromStdString(v.derivation.tab.value_or("typeset")));
     PlaybackBar& playback = w.playback();
-    if (v.playback.speed) playback.setSpeed(*v.playback.speed);
-    if (v.playback.loop) playback.setLoop(*v.playback.loop);
-    if (v.playback.time) {
-        playback.pause();
-        if (*v.playback.time > playback.endTime() + 1e-9)
-            problems_ << tr("The time %1 s is after the run's end (%2 s): the end is shown.").arg(*v.playback.time).arg(playback.endTime());
-        playback.setTime(std::min(*v.playback.time, playback.endTime()));
-    }
+    playback.setSpeed(v.playback.speed.value_or(1.0));
+    playback.setLoop(v.playback.loop.value_or(true));
+    playback.pause();
+    const double time = v.playback.time.value_or(v.playback.play ? (*v.playback.play)[0] : 0.0);
+    if (time > playback.endTime() + 1e-9)
+        problems_ << tr("The time %1 s is after the run's end (%2 s): the end is shown.").arg(time).arg(playback.endTime());
+    playback.setTime(std::min(time, playback.endTime()));
 
+    w.selection().clear();
     if (v.pick.entry && !w.linking().selectEntry(QString::fromStdString(*v.pick.entry)))
         problems_ << tr("The derivation has no entry %1 any more: nothing is picked.").arg(QString::fromStdString(*v.pick.entry));
     if (v.pick.link) {
@@ -192,27 +196,26 @@ void ViewState::applyShown() {
     applyPlots();
 
     // The step after the tabs (the teach pose shows its results as step 10).
-    if (v.derivation.step) {
-        const std::vector<int>& steps = w.derivationPanel().steps();
-        const int step = *v.derivation.step;
-        const bool listed = std::find(steps.begin(), steps.end(), step) != steps.end() || (step == poseStepNumber && v.teach);
-        if (listed) w.showDerivationStep(step);
-        else problems_ << tr("The derivation has no step %1 (its steps: %2 to %3): its first step is shown.")
-                              .arg(step)
-                              .arg(steps.empty() ? 0 : steps.front())
-                              .arg(steps.empty() ? 0 : steps.back());
+    const std::vector<int>& steps = w.derivationPanel().steps();
+    const int step = v.derivation.step.value_or(steps.empty() ? 0 : steps.front());
+    const bool listed = std::find(steps.begin(), steps.end(), step) != steps.end() || (step == poseStepNumber && v.teach);
+    if (listed) w.showDerivationStep(step);
+    else if (!steps.empty()) {
+        problems_ << tr("The derivation has no step %1 (its steps: %2 to %3): its first step is shown.").arg(step).arg(steps.front()).arg(steps.back());
+        w.showDerivationStep(steps.front());
     }
-    if (v.derivation.zoom) w.derivationView().setZoom(*v.derivation.zoom);
-    if (v.derivation.scroll) w.derivationView().setScrollFraction(*v.derivation.scroll);
+    w.derivationView().setZoom(v.derivation.zoom.value_or(w.presentationMode().on() ? 1.6 : 1.0));
+    w.derivationView().setScrollFraction(v.derivation.scroll.value_or(0.0));
 
     SceneView& view = w.sceneView();
-    if (v.show.frames) view.setShowFrames(*v.show.frames);
-    if (v.show.labels) view.setShowLabels(*v.show.labels);
-    if (v.show.coms) view.setShowComs(*v.show.coms);
-    if (v.show.trail) view.setShowTrail(*v.show.trail);
-    if (v.show.look) view.setShowLook(*v.show.look);
+    view.setShowFrames(v.show.frames.value_or(true));
+    view.setShowLabels(v.show.labels.value_or(true));
+    view.setShowComs(v.show.coms.value_or(true));
+    view.setShowTrail(v.show.trail.value_or(true));
+    view.setShowLook(v.show.look.value_or(true));
     if (v.camera) view.setCamera(CameraView{v.camera->eye, v.camera->target, v.camera->up, v.camera->fov});
-    if (v.playback.playing && *v.playback.playing) playback.play();
+    else view.fit();
+    if (v.playback.playing.value_or(false)) playback.play();
 }
 
 void ViewState::applyPlots() {
@@ -220,19 +223,16 @@ void ViewState::applyPlots() {
     const WindowView& v = view_;
     const int n = w.document().validScene().dof();
     const bool robot = !w.document().validScene().lagrangian;
-    if (v.plots.tab && !w.showPlotTab(QString::fromStdString(*v.plots.tab)))
-        problems_ << tr("The scene has no controller, so no Tracking tab: the plots stay as they are.");
-    if (v.plots.joint) {
-        if (*v.plots.joint <= n) {
-            w.torquePane().setJoint(*v.plots.joint - 1);
-            w.trackingPane().setJoint(*v.plots.joint - 1);
-        } else {
-            problems_ << tr("The scene has no joint %1 (it has %2): the plots show joint 1.").arg(*v.plots.joint).arg(n);
-        }
+    if (!w.showPlotTab(QString::fromStdString(v.plots.tab.value_or("energy")))) {
+        problems_ << tr("The scene has no controller, so no Tracking tab: the Energy tab is shown.");
+        w.showPlotTab("energy");
     }
-    if (v.plots.tracking)
-        for (int i = 0; i < 4; ++i)
-            if (*v.plots.tracking == kTrackings[i]) w.trackingPane().setShow(static_cast<TrackingPane::Show>(i));
+    const int joint = v.plots.joint.value_or(1);
+    if (joint > n) problems_ << tr("The scene has no joint %1 (it has %2): the plots show joint 1.").arg(joint).arg(n);
+    w.torquePane().setJoint(joint <= n ? joint - 1 : 0);
+    w.trackingPane().setJoint(joint <= n ? joint - 1 : 0);
+    for (int i = 0; i < 4; ++i)
+        if (v.plots.tracking.value_or("error") == kTrackings[i]) w.trackingPane().setShow(static_cast<TrackingPane::Show>(i));
     if (v.dh) {
         if (!robot) {
             problems_ << tr("A typed Lagrangian has no DH table to step through.");

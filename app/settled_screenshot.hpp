@@ -1,0 +1,15 @@
+#pragma once
+// The window as it is on screen once its last change has been drawn: a new frame of the 3D
+// view requested and waited for, the events after it let through, then the whole window
+// grabbed (the scripted window's --screenshot, lesson stills and videos).
+#include <QImage>
+
+namespace ll::ui {
+class MainWindow;
+}
+
+namespace ll::cli {
+
+QImage settledScreenshot(ui::MainWindow& window);
+
+}  // namespace ll::cli

@@ -1,0 +1,412 @@
+#include "ui/window/lesson_mode.hpp"
+
+#include <algorithm>
+
+#include <QAction>
+#include <QDir>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QGuiApplication>
+#include <QHBoxLayout>
+#include <QInputDialog>
+#include <QLabel>
+#include <QListWidget>
+#include <QMainWindow>
+#include <QMenu>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QRegularExpression>
+#include <QScreen>
+#include <QSignalBlocker>
+#include <QStatusBar>
+#include <QTimer>
+#include <QVBoxLayout>
+
+#include "core/present/diagnostic_text.hpp"
+#include "ui/document/app_language.hpp"
+#include "ui/window/derivation_panel.hpp"
+#include "ui/window/language_menu.hpp"
+#include "ui/window/main_window.hpp"
+#include "ui/window/presentation_mode.hpp"
+#include "ui/window/relabel.hpp"
+#include "ui/window/view_state.hpp"
+#include "ui/window/window_parts.hpp"
+
+namespace ll::ui {
+
+namespace {
+
+QString problemLines(const std::vector<Diagnostic>& problems, present::Language language) {
+    QStringList lines;
+    for (const Diagnostic& d : problems) lines << QString::fromStdString(present::diagnosticText(d, language));
+    return lines.join('\n');
+}
+
+}  // namespace
+
+LessonMode::LessonMode(MainWindow& window, const WindowParts& parts) : QObject(&window), window_(window), parts_(parts) {
+    dock_ = new QDockWidget(&window);
+    dock_->setObjectName("lesson");
+    auto* page = new QWidget(dock_);
+    auto* layout = new QVBoxLayout(page);
+    layout->setContentsMargins(4, 4, 4, 4);
+    title_ = new QLabel(page);
+    title_->setWordWrap(true);
+    list_ = new QListWidget(page);
+    list_->setObjectName("lesson-views");
+    list_->setDragDropMode(QAbstractItemView::InternalMove);  // reorder by dragging
+    list_->setEditTriggers(QAbstractItemView::EditKeyPressed | QAbstractItemView::SelectedClicked);  // F2 renames
+    note_ = new QPlainTextEdit(page);
+    note_->setObjectName("lesson-note");
+    note_->setMaximumHeight(120);
+    auto* buttons = new QHBoxLayout;
+    auto* add = new QPushButton(page);
+    auto* update = new QPushButton(page);
+    auto* remove = new QPushButton(page);
+    auto* show = new QPushButton(page);
+    for (QPushButton* b : {add, update, remove, show}) buttons->addWidget(b);
+    layout->addWidget(title_);
+    layout->addWidget(list_, 1);
+    layout->addWidget(note_);
+    layout->addLayout(buttons);
+    dock_->setWidget(page);
+    window.addDockWidget(Qt::LeftDockWidgetArea, dock_);
+    window.tabifyDockWidget(parts.modelDock, dock_);
+    dock_->hide();  // until there is a lesson
+    (*new Relabel(page))([this, add, update, remove, show] {
+        dock_->setWindowTitle(tr("Lesson"));
+        add->setText(tr("Add view"));
+        update->setText(tr("Update"));
+        remove->setText(tr("Remove"));
+        show->setText(tr("Present"));
+        note_->setPlaceholderText(tr("The speaker's note for this view"));
+        refreshList();
+    });
+    connect(add, &QPushButton::clicked, this, &LessonMode::addCurrentView);
+    connect(update, &QPushButton::clicked, this, &LessonMode::updateCurrentView);
+    connect(remove, &QPushButton::clicked, this, [this] { removeView(list_->currentRow()); });
+    connect(show, &QPushButton::clicked, this, [this] { present(std::max(0, list_->currentRow())); });
+    connect(list_, &QListWidget::itemDoubleClicked, this, [this](QListWidgetItem* item) { go(list_->row(item)); });
+    connect(list_, &QListWidget::currentRowChanged, this, [this](int row) {
+        const QSignalBlocker quiet(note_);
+        note_->setPlainText(row >= 0 && row < int(lesson_.views.size()) ? QString::fromStdString(lesson_.views[std::size_t(row)].view.note) : QString());
+    });
+    connect(note_, &QPlainTextEdit::textChanged, this, [this] {
+        const int row = list_->currentRow();
+        if (row >= 0 && row < int(lesson_.views.size())) lesson_.views[std::size_t(row)].view.note = note_->toPlainText().toStdString();
+    });
+    connect(list_, &QListWidget::itemChanged, this, [this](QListWidgetItem* item) {
+        QString name = item->text();
+        name.remove(QRegularExpression("^\\d+\\.\\s*"));  // the number shown before it
+        renameView(list_->row(item), name);
+    });
+    // A drag changed the order: the lesson takes the list's.
+    connect(list_->model(), &QAbstractItemModel::rowsMoved, this, [this] {
+        std::vector<LessonView> views;
+        for (int i = 0; i < list_->count(); ++i) views.push_back(lesson_.views[std::size_t(list_->item(i)->data(Qt::UserRole).toInt())]);
+        lesson_.views = std::move(views);
+        QTimer::singleShot(0, this, &LessonMode::refreshList);  // not inside the model's own signal
+    });
+    connect(&window.presentationMode(), &PresentationMode::changed, this, &LessonMode::presentationChanged);
+    // N shows or hides the speaker's window while a lesson is presented (shown from the
+    // start only with a second screen to put it on: on one screen it would cover the slide).
+    notesWanted_ = QGuiApplication::screens().size() > 1;
+    notesKey_ = new QAction(&window);
+    notesKey_->setShortcut(Qt::Key_N);
+    notesKey_->setEnabled(false);
+    connect(notesKey_, &QAction::triggered, this, [this] {
+        notesWanted_ = !notesWanted_;
+        showNotes();
+    });
+    window.addAction(notesKey_);
+}
+
+LessonMode::~LessonMode() { delete notes_; }
+
+void LessonMode::addMenu(QMenuBar* bar) {
+    QMenu* menu = bar->addMenu(QString());
+    QAction* create = menu->addAction(QString(), this, &LessonMode::newLesson);
+    QAction* open = menu->addAction(QString(), this, &LessonMode::openAsked);
+    QAction* save = menu->addAction(QString(), this, [this] { saveAsked(false); });
+    QAction* saveAs = menu->addAction(QString(), this, [this] { saveAsked(true); });
+    menu->addSeparator();
+    QAction* add = menu->addAction(QString(), QKeySequence(Qt::Key_F9), this, &LessonMode::addCurrentView);
+    QAction* update = menu->addAction(QString(), this, &LessonMode::updateCurrentView);
+    QAction* remove = menu->addAction(QString(), this, [this] { removeView(list_->currentRow()); });
+    QAction* rename = menu->addAction(QString(), this, [this] {
+        const int row = list_->currentRow();
+        if (row < 0 || row >= int(lesson_.views.size())) return;
+        bool ok = false;
+        const QString name = QInputDialog::getText(&window_, tr("Rename view"), tr("Title of the view:"), QLineEdit::Normal,
+                                                   QString::fromStdString(lesson_.views[std::size_t(row)].view.name), &ok);
+        if (ok) renameView(row, name);
+    });
+    menu->addSeparator();
+    QAction* show = menu->addAction(QString(), this, [this] { present(std::max(0, list_->currentRow())); });
+    window_.addAction(add);  // F9 while presenting too (the menus are hidden then)
+    (*new Relabel(menu))([=] {
+        menu->setTitle(tr("&Lesson"));
+        create->setText(tr("New lesson"));
+        open->setText(tr("Open lesson…"));
+        save->setText(tr("Save lesson"));
+        saveAs->setText(tr("Save lesson as…"));
+        add->setText(tr("Add the current view"));
+        update->setText(tr("Update the view with the current one"));
+        remove->setText(tr("Remove the view"));
+        rename->setText(tr("Rename the view…"));
+        show->setText(tr("Present the lesson"));
+    });
+}
+
+bool LessonMode::open(const QString& path, QStringList* errors, QStringList* unreadable) {
+    const present::Language language = window_.language().current().language;
+    try {
+        lesson_ = loadLesson(path.toStdString());
+    } catch (const std::exception& e) {
+        if (errors) *errors = QStringList{shownError(e, language)};
+        return false;
+    }
+    path_ = path;
+    current_ = -1;
+    for (std::size_t i = 0; i < lesson_.views.size(); ++i)
+        if (unreadable && !lesson_.views[i].problems.empty())
+            *unreadable << QString("%1. %2: %3").arg(i + 1).arg(QString::fromStdString(lesson_.views[i].view.name),
+                                                              problemLines(lesson_.views[i].problems, language));
+    refreshList();
+    dock_->show();
+    dock_->raise();
+    return true;
+}
+
+bool LessonMode::saveTo(const QString& path, QString* error) {
+    try {
+        saveLesson(lesson_, path.toStdString());
+    } catch (const std::exception& e) {
+        if (error) *error = shownError(e, window_.language().current().language);
+        return false;
+    }
+    // The views' scene paths stay as seen from here; the file has them relative to itself.
+    path_ = path;
+    refreshList();
+    return true;
+}
+
+void LessonMode::newLesson() {
+    lesson_ = Lesson{};
+    lesson_.title = tr("Lesson").toStdString();
+    path_.clear();
+    current_ = -1;
+    refreshList();
+    dock_->show();
+    dock_->raise();
+}
+
+void LessonMode::addCurrentView() {
+    if (dock_->isHidden() && lesson_.views.empty()) newLesson();
+    LessonView lv;
+    lv.view = window_.views().capture();
+    lv.view.present.reset();  // presenting is the lesson's to decide
+    lv.view.name = tr("View %1").arg(lesson_.views.size() + 1).toStdString();
+    const int at = current_ >= 0 ? current_ + 1 : int(lesson_.views.size());
+    lesson_.views.insert(lesson_.views.begin() + at, lv);
+    current_ = at;
+    refreshList();
+    window_.statusBar()->showMessage(tr("Added to the lesson as view %1").arg(at + 1), 4000);
+}
+
+void LessonMode::updateCurrentView() {
+    const int row = list_->currentRow() >= 0 ? list_->currentRow() : current_;
+    if (row < 0 || row >= int(lesson_.views.size())) return;
+    LessonView& lv = lesson_.views[std::size_t(row)];
+    WindowView view = window_.views().capture();
+    view.present.reset();
+    view.name = lv.view.name;
+    view.note = lv.view.note;
+    lv = LessonView{view, {}, {}, {}};  // inline now: what the window shows
+    refreshList();
+}
+
+void LessonMode::removeView(int index) {
+    if (index < 0 || index >= int(lesson_.views.size())) return;
+    lesson_.views.erase(lesson_.views.begin() + index);
+    if (current_ >= int(lesson_.views.size())) current_ = int(lesson_.views.size()) - 1;
+    refreshList();
+}
+
+void LessonMode::renameView(int index, const QString& name) {
+    if (index < 0 || index >= int(lesson_.views.size()) || name.trimmed().isEmpty()) return;
+    lesson_.views[std::size_t(index)].view.name = name.trimmed().toStdString();
+    QTimer::singleShot(0, this, &LessonMode::refreshList);  // may be called from the list's own signal
+}
+
+void LessonMode::moveView(int from, int to) {
+    const int n = int(lesson_.views.size());
+    if (from < 0 || from >= n || to < 0 || to >= n || from == to) return;
+    LessonView moved = lesson_.views[std::size_t(from)];
+    lesson_.views.erase(lesson_.views.begin() + from);
+    lesson_.views.insert(lesson_.views.begin() + to, moved);
+    if (current_ == from) current_ = to;
+    refreshList();
+}
+
+void LessonMode::go(int index) {
+    if (index < 0 || index >= int(lesson_.views.size())) return;
+    const bool forward = index >= current_;
+    current_ = index;
+    {
+        const QSignalBlocker quiet(list_);
+        list_->setCurrentRow(index);
+    }
+    const LessonView& lv = lesson_.views[std::size_t(index)];
+    showNotes();
+    if (!lv.problems.empty()) {  // nothing to restore: say why
+        const QString why = problemLines(lv.problems, window_.language().current().language);
+        window_.statusBar()->showMessage(why, 20000);
+        emit viewShown(index, why.split('\n'));
+        return;
+    }
+    WindowView view = lv.view;
+    view.present = presenting_ || window_.presentationMode().on();
+    // A view stepped through starts at its first step going forward, at its last going back.
+    if (view.derivation.through) view.derivation.step = (*view.derivation.through)[forward ? 0 : 1];
+    auto* once = new QObject(this);
+    connect(&window_.views(), &ViewState::restored, once, [this, index, once](const QStringList& problems) {
+        once->deleteLater();
+        if (!problems.isEmpty()) window_.statusBar()->showMessage(problems.join(' '), 20000);
+        emit viewShown(index, problems);
+    });
+    window_.views().restore(view);
+}
+
+void LessonMode::next() {
+    if (current_ >= 0 && current_ < int(lesson_.views.size())) {
+        const WindowView& view = lesson_.views[std::size_t(current_)].view;
+        if (view.derivation.through && parts_.derivation->step() < (*view.derivation.through)[1]) {
+            parts_.derivation->nextStep();
+            return;
+        }
+    }
+    if (current_ + 1 < int(lesson_.views.size())) go(current_ + 1);
+}
+
+void LessonMode::previous() {
+    if (current_ >= 0 && current_ < int(lesson_.views.size())) {
+        const WindowView& view = lesson_.views[std::size_t(current_)].view;
+        if (view.derivation.through && parts_.derivation->step() > (*view.derivation.through)[0]) {
+            parts_.derivation->previousStep();
+            return;
+        }
+    }
+    if (current_ > 0) go(current_ - 1);
+}
+
+void LessonMode::present(int index) {
+    if (lesson_.views.empty()) return;
+    if (!presenting_) {
+        before_ = window_.views().capture();
+        presenting_ = true;
+        notesKey_->setEnabled(true);
+        window_.presentationMode().setStepper([this](int delta) { delta > 0 ? next() : previous(); });
+        window_.presentationMode().setOn(true);
+    }
+    current_ = -1;
+    go(std::clamp(index, 0, int(lesson_.views.size()) - 1));
+}
+
+void LessonMode::presentationChanged(bool on) {
+    if (on) {
+        dock_->setVisible(false);
+        return;
+    }
+    dock_->setVisible(!lesson_.views.empty() || !path_.isEmpty());
+    if (!presenting_) return;
+    presenting_ = false;
+    notesKey_->setEnabled(false);
+    window_.presentationMode().setStepper(nullptr);
+    if (notes_) notes_->hide();
+    WindowView back = before_;
+    back.present = false;
+    window_.views().restore(back);  // where the lecturer was before presenting
+}
+
+void LessonMode::refreshList() {
+    const QSignalBlocker quiet(list_);
+    const int row = list_->currentRow();
+    list_->clear();
+    for (std::size_t i = 0; i < lesson_.views.size(); ++i) {
+        const LessonView& lv = lesson_.views[i];
+        auto* item = new QListWidgetItem(QString("%1. %2%3").arg(i + 1).arg(QString::fromStdString(lv.view.name),
+                                                                        lv.problems.empty() ? QString() : QString(" ⚠")),
+                                         list_);
+        item->setData(Qt::UserRole, int(i));
+        item->setFlags(item->flags() | Qt::ItemIsEditable);
+        if (!lv.problems.empty()) item->setToolTip(problemLines(lv.problems, window_.language().current().language));
+        else if (!lv.view.note.empty()) item->setToolTip(QString::fromStdString(lv.view.note));
+    }
+    list_->setCurrentRow(std::min(row >= 0 ? row : current_, list_->count() - 1));
+    const QString name = path_.isEmpty() ? tr("unsaved") : QFileInfo(path_).fileName();
+    title_->setText(tr("<b>%1</b> (%2) · %n view(s)", "", int(lesson_.views.size())).arg(QString::fromStdString(lesson_.title).toHtmlEscaped(), name));
+    const QSignalBlocker quietNote(note_);
+    const int now = list_->currentRow();
+    note_->setPlainText(now >= 0 ? QString::fromStdString(lesson_.views[std::size_t(now)].view.note) : QString());
+}
+
+// The speaker's window: this view's title and note, the next view's title.
+void LessonMode::showNotes() {
+    if (!presenting_) return;
+    if (!notes_) {
+        notes_ = new QWidget(nullptr, Qt::Window);
+        notes_->setObjectName("speaker-notes");
+        notes_->setWindowTitle(tr("Speaker notes — LagrangeLab"));
+        auto* layout = new QVBoxLayout(notes_);
+        notesNow_ = new QLabel(notes_);
+        notesText_ = new QLabel(notes_);
+        notesNext_ = new QLabel(notes_);
+        notesText_->setWordWrap(true);
+        notesText_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+        QFont big = notesText_->font();
+        big.setPointSizeF(big.pointSizeF() * 1.4);
+        notesText_->setFont(big);
+        layout->addWidget(notesNow_);
+        layout->addWidget(notesText_, 1);
+        layout->addWidget(notesNext_);
+        notes_->resize(520, 320);
+        // On a second screen when there is one; else a small window the lecturer places.
+        const QList<QScreen*> screens = QGuiApplication::screens();
+        for (QScreen* screen : screens)
+            if (screens.size() > 1 && screen != window_.screen()) {
+                notes_->move(screen->availableGeometry().topLeft() + QPoint(40, 40));
+                break;
+            }
+    }
+    const int n = int(lesson_.views.size());
+    const LessonView& lv = lesson_.views[std::size_t(current_)];
+    notesNow_->setText(tr("<b>%1</b> — view %2 of %3").arg(QString::fromStdString(lv.view.name).toHtmlEscaped()).arg(current_ + 1).arg(n));
+    notesText_->setText(lv.view.note.empty() ? tr("(no note)") : QString::fromStdString(lv.view.note));
+    notesNext_->setText(current_ + 1 < n ? tr("Next: %1").arg(QString::fromStdString(lesson_.views[std::size_t(current_ + 1)].view.name))
+                                         : tr("Last view"));
+    notes_->setVisible(notesWanted_);
+}
+
+void LessonMode::openAsked() {
+    const QString path = QFileDialog::getOpenFileName(&window_, tr("Open lesson"), QDir::homePath(), tr("Lessons (*.json)"));
+    if (path.isEmpty()) return;
+    QStringList errors, unreadable;
+    if (!open(path, &errors, &unreadable)) QMessageBox::warning(&window_, tr("Cannot open the lesson"), errors.join('\n'));
+    else if (!unreadable.isEmpty())
+        QMessageBox::information(&window_, tr("Some views could not be read"),
+                                 tr("They are kept in the lesson as they are written:\n%1").arg(unreadable.join('\n')));
+}
+
+void LessonMode::saveAsked(bool as) {
+    QString path = path_;
+    if (as || path.isEmpty()) path = QFileDialog::getSaveFileName(&window_, tr("Save lesson"), QDir::homePath() + "/lesson.json", tr("Lessons (*.json)"));
+    if (path.isEmpty()) return;
+    QString error;
+    if (!saveTo(path, &error)) QMessageBox::warning(&window_, tr("Cannot save the lesson"), error);
+}
+
+}  // namespace ll::ui
