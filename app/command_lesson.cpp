@@ -1,5 +1,5 @@
-// `lagrangelab lesson LESSON.json --out DIR [--format pdf|png|mp4] [--size WxH] [--notes]`
-// `lagrangelab lesson LESSON.json --embed OUT.json`
+// `lagrangelab lesson LESSON.lesson --out DIR [--format pdf|png|mp4] [--size WxH] [--notes]`
+// `lagrangelab lesson LESSON.lesson --embed OUT.json`
 // A lesson (core/io/lesson_file.hpp) exported as the lecture shows it: the window presents
 // the lesson at --size (16:9, 1920x1080 by default) and each view, restored as the clicker
 // restores it (ui/window/lesson_mode.hpp), is grabbed whole: a PDF with a page per view (its
@@ -23,6 +23,7 @@
 #include "app/commands.hpp"
 #include "app/event_wait.hpp"
 #include "app/offscreen_gui.hpp"
+#include "app/output_file.hpp"
 #include "app/output_folder.hpp"
 #include "app/pixel_size.hpp"
 #include "app/settled_screenshot.hpp"
@@ -74,7 +75,9 @@ int lessonCommand(const Args& args) {
     const std::string file = options.positional()[0];
     if (options.has("embed")) {
         const std::string embed = options.text("embed");
-        if (QFileInfo(QString::fromStdString(embed)).suffix().toLower() != "json") throw UsageError(UsageId::SaveViewNotJson, embed);
+        const QString suffix = QFileInfo(QString::fromStdString(embed)).suffix().toLower();
+        if (suffix != "json" && suffix != "lesson") throw UsageError(UsageId::EmbedNotLesson, embed);
+        requireWritableOutputFile(embed);
         const Lesson lesson = loadLesson(file);
         for (const LessonView& lv : lesson.views)
             if (!lv.problems.empty()) throw InputError(lv.problems);  // a self-contained lesson holds every view whole
@@ -103,6 +106,8 @@ int lessonCommand(const Args& args) {
     window.resize(size.width, size.height);
     window.presentationMode().setSize(QSize(size.width, size.height));
     window.show();
+    if (window.width() != size.width || window.height() != size.height)  // the layout's minimum
+        std::fprintf(stderr, "warning: the window cannot be %dx%d; the pictures are %dx%d\n", size.width, size.height, window.width(), window.height());
     QStringList errors, unreadable;
     if (!window.lessons().open(QString::fromStdString(file), &errors, &unreadable)) {
         for (const QString& e : errors) std::cerr << e.toStdString() << '\n';

@@ -65,7 +65,7 @@ constexpr std::array<CommandText, 18> commands{{
     {"export-urdf", "SCENE --out ROBOT.urdf",
      "a robot scene as URDF: a link per DH link with its inertial, a joint per DH row, friction as\n"
      "<dynamics>; import gives the same B, C and g back"},
-    {"lesson", "LESSON.json --out DIR [--format pdf|png|mp4] [--size WxH] [--notes] | --embed OUT.json",
+    {"lesson", "LESSON.lesson --out DIR [--format pdf|png|mp4] [--size WxH] [--notes] | --embed OUT.lesson",
      "a lesson's views as the presented window shows them (16:9, 1920x1080 unless --size): lesson.pdf with\n"
      "a page per view (--notes: its title and speaker's note below), a PNG per view, or an MP4 per view\n"
      "that plays; --embed: the lesson with every view's scene inside it (needs a display: xvfb-run)"},

@@ -1,7 +1,7 @@
 #pragma once
 // The window as it is on screen once its last change has been drawn: a new frame of the 3D
-// view requested and waited for, the events after it let through, then the whole window
-// grabbed (the scripted window's --screenshot, lesson stills and videos).
+// view requested and waited for, then the whole window grabbed until the picture no longer
+// changes (the scripted window's --screenshot, lesson stills and videos).
 #include <QImage>
 
 namespace ll::ui {

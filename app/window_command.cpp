@@ -52,6 +52,7 @@
 #include "ui/window/tracking_pane.hpp"
 #include "ui/window/work_precision_pane.hpp"
 #include "ui/window/view_state.hpp"
+#include "ui/window/lesson_mode.hpp"
 
 namespace ll::cli {
 
@@ -63,9 +64,12 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
     if (options.positional().size() > 1) throw UsageError(UsageId::WindowTakesOneScene, options.positional().size());
     // A saved view: its scene, size, language and state (the other options override them).
     std::optional<WindowView> view;
-    if (options.has("view")) {
-        if (!options.positional().empty()) throw UsageError(UsageId::ViewAndScene, options.text("view"));
-        view = loadWindowView(options.text("view"));
+    // A lesson (a .lesson file) opens at its first view, its views in the Lesson dock.
+    const std::string lesson =
+        !options.positional().empty() && options.positional()[0].ends_with(".lesson") ? options.positional()[0] : std::string();
+    if (options.has("view") || !lesson.empty()) {
+        if (options.has("view") && !options.positional().empty()) throw UsageError(UsageId::ViewAndScene, options.text("view"));
+        view = loadWindowView(lesson.empty() ? options.text("view") : lesson);
         for (const std::string& kept : view->keptPaths())
             std::cerr << present::messageText(MessageId::WarningLine, presentation().language)
                       << present::messageText(message(MessageId::FieldsKept, kept), presentation().language) << '\n';
@@ -78,7 +82,7 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
         requireWritableOutputFile(saveView);
     }
     const std::string scene = view && !view->scenePath.empty() ? view->scenePath
-                              : !options.positional().empty() ? options.positional()[0]
+                              : !options.positional().empty() && lesson.empty() ? options.positional()[0]
                                                               : (examplesDirectory() / "double_pendulum.json").string();
     const std::string screenshot = options.text("screenshot");
     if (!screenshot.empty() && QFileInfo(QString::fromStdString(screenshot)).suffix().toLower() != "png")
@@ -141,6 +145,7 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
         for (const QString& p : problems)
             std::cerr << present::messageText(MessageId::WarningLine, presentation().language) << p.toStdString() << '\n';
     });
+    if (!lesson.empty()) window.lessons().open(QString::fromStdString(lesson));
     if (view && options.has("present")) view->present = true;
     if (view && !scripted) window.views().restore(*view);
     if (options.has("present")) {

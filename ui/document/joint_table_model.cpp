@@ -145,6 +145,14 @@ QVariant JointTableModel::headerData(int section, Qt::Orientation orientation, i
 
 Qt::ItemFlags JointTableModel::flags(const QModelIndex& index) const { return QAbstractTableModel::flags(index) | Qt::ItemIsEditable; }
 
+void JointTableModel::relabel() {
+    emit headerDataChanged(Qt::Horizontal, 0, columnCount() - 1);
+    if (rows_ > 0) {
+        emit headerDataChanged(Qt::Vertical, 0, rows_ - 1);
+        emit dataChanged(index(0, 0), index(rows_ - 1, columnCount() - 1));
+    }
+}
+
 void JointTableModel::setDegrees(bool on) {
     if (on == degrees_) return;
     degrees_ = on;

@@ -32,6 +32,8 @@ public:
 
     bool degrees() const { return degrees_; }
     void setDegrees(bool on);
+    // The language changed: every header and cell is text again (the views size to it).
+    void relabel();
 
     // Undoable edits of the joint list (initial q and q̇ follow the joints).
     void addJoint(int after);  // a copy of joint `after` (a revolute joint when none)

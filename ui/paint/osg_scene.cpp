@@ -16,6 +16,7 @@
 #include <osg/Point>
 #include <osg/ShapeDrawable>
 #include <osgDB/ReadFile>
+#include <osgDB/Options>
 #include <osgText/Text>
 
 namespace ll::ui {
@@ -129,12 +130,17 @@ osg::ref_ptr<osg::Group> triad(double L) {
     return group;
 }
 
+// A font of the scene's own, not the one osgDB caches for the process: its glyph texture
+// then holds only this scene's labels, so a label's pixels do not depend on the text drawn
+// before (a lesson's view looked 6 pixels different after other scenes' labels).
 osg::ref_ptr<osgText::Font> labelFont() {
     static const char* const candidates[] = {"/usr/share/fonts/truetype/dejavu/DejaVuSans-Bold.ttf",
                                              "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf"};
+    osg::ref_ptr<osgDB::Options> own = new osgDB::Options;
+    own->setObjectCacheHint(osgDB::Options::CACHE_NONE);
     for (const char* path : candidates)
         if (std::filesystem::exists(path))
-            if (osg::ref_ptr<osgText::Font> font = osgText::readRefFontFile(path)) return font;
+            if (osg::ref_ptr<osgText::Font> font = osgText::readRefFontFile(path, own.get())) return font;
     return osgText::Font::getDefaultFont();
 }
 
@@ -203,6 +209,11 @@ osg::ref_ptr<osg::Geode> grid(const VisualScene& scene) {
     osg::StateSet* state = geode->getOrCreateStateSet();
     state->setMode(GL_LIGHTING, osg::StateAttribute::OFF | osg::StateAttribute::PROTECTED);
     state->setAttributeAndModes(new osg::LineWidth(1.5f));
+    // Drawn first and writing no depth: where two of its lines cross, the later one is on
+    // top, always. With depth written the crossing pixels went to whichever line's depth
+    // rounded nearer, and the same view of a lesson differed in 2 pixels between two runs.
+    state->setRenderBinDetails(-1, "RenderBin");
+    state->setAttributeAndModes(new osg::Depth(osg::Depth::LESS, 0, 1, false));
     return geode;
 }
 

@@ -358,7 +358,9 @@ void LessonMode::refreshList() {
 void LessonMode::showNotes() {
     if (!presenting_) return;
     if (!notes_) {
-        notes_ = new QWidget(nullptr, Qt::Window);
+        // It never takes the focus: the clicker's keys stay with the presentation.
+        notes_ = new QWidget(nullptr, Qt::Window | Qt::WindowDoesNotAcceptFocus);
+        notes_->setAttribute(Qt::WA_ShowWithoutActivating);
         notes_->setObjectName("speaker-notes");
         notes_->setWindowTitle(tr("Speaker notes — LagrangeLab"));
         auto* layout = new QVBoxLayout(notes_);
@@ -392,7 +394,7 @@ void LessonMode::showNotes() {
 }
 
 void LessonMode::openAsked() {
-    const QString path = QFileDialog::getOpenFileName(&window_, tr("Open lesson"), QDir::homePath(), tr("Lessons (*.json)"));
+    const QString path = QFileDialog::getOpenFileName(&window_, tr("Open lesson"), QDir::homePath(), tr("Lessons (*.lesson *.json)"));
     if (path.isEmpty()) return;
     QStringList errors, unreadable;
     if (!open(path, &errors, &unreadable)) QMessageBox::warning(&window_, tr("Cannot open the lesson"), errors.join('\n'));
@@ -403,7 +405,7 @@ void LessonMode::openAsked() {
 
 void LessonMode::saveAsked(bool as) {
     QString path = path_;
-    if (as || path.isEmpty()) path = QFileDialog::getSaveFileName(&window_, tr("Save lesson"), QDir::homePath() + "/lesson.json", tr("Lessons (*.json)"));
+    if (as || path.isEmpty()) path = QFileDialog::getSaveFileName(&window_, tr("Save lesson"), QDir::homePath() + "/lecture.lesson", tr("Lessons (*.lesson *.json)"));
     if (path.isEmpty()) return;
     QString error;
     if (!saveTo(path, &error)) QMessageBox::warning(&window_, tr("Cannot save the lesson"), error);

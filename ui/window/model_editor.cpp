@@ -51,6 +51,7 @@ ModelEditor::ModelEditor(SceneDocument& document, QWidget* parent) : QWidget(par
     lagrangian_ = new FieldListModel(doc_, lagrangianRows, this);
 
     relabel_ = new Relabel(this);
+    (*relabel_)([this] { joints_->relabel(); });  // "joint 1" / "led 1": the header takes the new width
     tabs_ = new QTabWidget(this);
     tabs_->addTab(buildDhPage(), QString());
     tabs_->addTab(buildInertialPage(), QString());

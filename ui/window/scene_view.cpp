@@ -351,6 +351,9 @@ void SceneView::resizeGL(int w, int h) {
     window_->resized(0, 0, pw, ph);
     window_->getEventQueue()->windowResize(0, 0, pw, ph);
     viewer_->getCamera()->setViewport(0, 0, pw, ph);
+    // A camera nobody moved stays fitted to the view's new shape (a dock laid out again
+    // after the fit would otherwise leave it fitted to a shape the view no longer has).
+    if (!userMoved_ && framePose_) distance_ = 0;
     applyCamera();
 }
 

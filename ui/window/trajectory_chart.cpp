@@ -209,7 +209,8 @@ void TrajectoryChart::fitAxes() {
     axisX_->setTickType(QValueAxis::TicksFixed);
     axisX_->setRange(times_.empty() ? 0 : times_.front(), std::max(tEnd, 1e-6));
     fitTicks();
-    setCursorTime(times_.empty() ? 0 : times_.front());
+    // The cursor stays at the time shown (new curves for another joint are of the same run).
+    setCursorTime(cursor_->count() ? cursor_->at(0).x() : times_.empty() ? 0 : times_.front());
 }
 
 void TrajectoryChart::fitTicks() {
@@ -248,6 +249,9 @@ void TrajectoryChart::fitTicks() {
     axisY_->setTickCount(std::clamp(static_cast<int>(area.height() / (QFontMetricsF(axisY_->labelsFont()).height() * 2.0)) + 1, 2, 9));
     axisY_->applyNiceNumbers();  // ticks at round values (no "−0.0" for a 10⁻¹⁵ bound)
     yMin_ = axisY_->min(), yMax_ = axisY_->max();
+    // Qt Charts repaints only the regions it thinks changed: an axis given other ticks left
+    // its old labels on screen beside the new ones (seen going from view to view of a lesson).
+    viewport()->update();
 }
 
 void TrajectoryChart::resizeEvent(QResizeEvent* e) {

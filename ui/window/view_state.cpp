@@ -121,6 +121,13 @@ void ViewState::restore(const WindowView& view) {
     restoring_ = true;
     const int generation = ++generation_;
 
+    // What needs no result: the language (first, so the scene opens in it, as it would at
+    // start), presentation mode.
+    present::Presentation presentation = w.language().current();
+    if (view.language) presentation.language = present::languageNamed(*view.language).value_or(presentation.language);
+    if (view.notation) presentation.notation = present::notationNamed(*view.notation).value_or(presentation.notation);
+    w.language().set(presentation);
+    if (view.present && *view.present != w.presentationMode().on()) w.presentationMode().setOn(*view.present);
     // The scene: opened when it is not the one open (an edited scene is asked about first).
     QStringList errors;
     if (view.sceneEmbedded) {
@@ -135,12 +142,6 @@ void ViewState::restore(const WindowView& view) {
                       << errors;
         else embedded_.clear();
     }
-    // What needs no result: the language, presentation mode.
-    present::Presentation presentation = w.language().current();
-    if (view.language) presentation.language = present::languageNamed(*view.language).value_or(presentation.language);
-    if (view.notation) presentation.notation = present::notationNamed(*view.notation).value_or(presentation.notation);
-    w.language().set(presentation);
-    if (view.present && *view.present != w.presentationMode().on()) w.presentationMode().setOn(*view.present);
     finish(generation, 0);
 }
 
@@ -276,7 +277,7 @@ void ViewState::saveAs() {
 }
 
 void ViewState::openFile() {
-    const QString path = QFileDialog::getOpenFileName(&window_, tr("Open view"), QDir::homePath(), tr("Views, lessons and scenes (*.json)"));
+    const QString path = QFileDialog::getOpenFileName(&window_, tr("Open view"), QDir::homePath(), tr("Views, lessons and scenes (*.json *.lesson)"));
     if (path.isEmpty()) return;
     try {
         const WindowView view = loadWindowView(path.toStdString());
