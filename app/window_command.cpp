@@ -21,6 +21,8 @@
 #include <QTimer>
 
 #include "core/io/data_directory.hpp"
+#include "core/io/json_file.hpp"
+#include "core/io/lesson_file.hpp"
 #include "core/io/window_view.hpp"
 #include "core/present/language.hpp"
 #include "core/present/notation.hpp"
@@ -56,6 +58,21 @@
 
 namespace ll::cli {
 
+namespace {
+
+// The "format" a JSON file declares ("lagrangelab-lesson/1"); empty when it declares none
+// or is no JSON (the scene loader then says what is wrong with it).
+std::string fileFormat(const std::string& path) {
+    try {
+        const scene_json::Json root = readJsonFile(path);
+        return root.contains("format") && root["format"].is_string() ? root["format"].get<std::string>() : std::string();
+    } catch (const std::exception&) {
+        return {};
+    }
+}
+
+}  // namespace
+
 int windowCommand(const Args& args, const std::chrono::steady_clock::time_point& processStart) {
     const Options options(args,
                           {"screenshot", "play", "step", "teach", "size", "first-frame", "select", "pick-link", "at", "tab", "joint",
@@ -64,12 +81,14 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
     if (options.positional().size() > 1) throw UsageError(UsageId::WindowTakesOneScene, options.positional().size());
     // A saved view: its scene, size, language and state (the other options override them).
     std::optional<WindowView> view;
-    // A lesson (a .lesson file) opens at its first view, its views in the Lesson dock.
-    const std::string lesson =
-        !options.positional().empty() && options.positional()[0].ends_with(".lesson") ? options.positional()[0] : std::string();
-    if (options.has("view") || !lesson.empty()) {
+    // A file opened (a double click): a lesson opens at its first view, its views in the
+    // Lesson dock; a view file as --view; anything else is a scene.
+    const std::string opened = options.positional().empty() ? std::string() : options.positional()[0];
+    const std::string format = opened.ends_with(".urdf") ? std::string() : fileFormat(opened);
+    const std::string lesson = format == kLessonFormat ? opened : std::string();
+    if (options.has("view") || !lesson.empty() || format == kViewFormat) {
         if (options.has("view") && !options.positional().empty()) throw UsageError(UsageId::ViewAndScene, options.text("view"));
-        view = loadWindowView(lesson.empty() ? options.text("view") : lesson);
+        view = loadWindowView(options.has("view") ? options.text("view") : opened);
         for (const std::string& kept : view->keptPaths())
             std::cerr << present::messageText(MessageId::WarningLine, presentation().language)
                       << present::messageText(message(MessageId::FieldsKept, kept), presentation().language) << '\n';
@@ -82,7 +101,7 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
         requireWritableOutputFile(saveView);
     }
     const std::string scene = view && !view->scenePath.empty() ? view->scenePath
-                              : !options.positional().empty() && lesson.empty() ? options.positional()[0]
+                              : !opened.empty() && !view ? opened
                                                               : (examplesDirectory() / "double_pendulum.json").string();
     const std::string screenshot = options.text("screenshot");
     if (!screenshot.empty() && QFileInfo(QString::fromStdString(screenshot)).suffix().toLower() != "png")
@@ -125,10 +144,10 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
     ui::MainWindow window;
     window.language().set({language, notationGiven() ? presentation().notation : ui::rememberedNotation()});
     QStringList errors;
-    const QString opened = QString::fromStdString(scene);  // a URDF robot is imported (File → Import URDF…)
+    const QString sceneFile = QString::fromStdString(scene);  // a URDF robot is imported (File → Import URDF…)
     const bool loaded = view && view->sceneEmbedded ? window.files().openText(view->sceneEmbedded->dump(), "view", &errors, true)
-                        : opened.endsWith(".urdf")  ? window.files().importUrdf(opened, &errors, true)
-                                                    : window.openFile(opened, &errors, true);
+                        : sceneFile.endsWith(".urdf") ? window.files().importUrdf(sceneFile, &errors, true)
+                                                      : window.openFile(sceneFile, &errors, true);
     if (!loaded) {
         const std::string error = present::messageText(MessageId::ErrorLine, language);
         for (const QString& e : errors) std::cerr << error << e.toStdString() << '\n';
@@ -147,7 +166,13 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
     });
     if (!lesson.empty()) window.lessons().open(QString::fromStdString(lesson));
     if (view && options.has("present")) view->present = true;
-    if (view && !scripted) window.views().restore(*view);
+    // A lesson opens at its first view (presented with --present), selected in its dock.
+    const auto restoreView = [&] {
+        if (lesson.empty() || options.has("view")) window.views().restore(*view);
+        else if (options.has("present") && !scripted) window.lessons().present(0);
+        else window.lessons().go(0);
+    };
+    if (view && !scripted) restoreView();
     if (options.has("present")) {
         // A scripted picture presents in a window of --size (the projector's pixels), the
         // window full screen otherwise.
@@ -174,7 +199,7 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
         return 1;
     }
     if (view) {
-        window.views().restore(*view);
+        restoreView();
         if (!waitFor([&] { return !window.views().restoring(); }, 120)) {
             std::cerr << "error: " << options.text("view") << ": the view was not restored in 120 s\n";
             return 1;

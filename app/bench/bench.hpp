@@ -28,6 +28,8 @@ int answers(int runs);
 int grade(int runs);
 // --urdf: lagrangelab import of a 7-joint URDF, as a process and in this one (bench_urdf.cpp).
 int urdf(int runs);
+// --lesson: the next view of a lesson on screen, its scene loaded or not (bench_lesson.cpp).
+int lesson(int runs);
 // --linked: the entry catalogue, per-frame evaluation and the run's analysis (bench_linked.cpp).
 int linked(const std::vector<std::string>& scenes, int runs);
 

@@ -28,6 +28,7 @@
 #include "core/io/data_directory.hpp"
 #include "app/bench/bench.hpp"
 #include "app/bench/bench_timing.hpp"
+#include "app/bench/window_bench.hpp"
 #include "app/commands.hpp"
 #include "app/bench/program_run.hpp"
 #include "app/event_wait.hpp"
@@ -297,21 +298,9 @@ void firstFrame(int runs) {
 }  // namespace
 
 int gui(const std::vector<std::string>& scenes, int runs) {
-    if (!hasDisplay()) {
-        std::fprintf(stderr, "error: bench --gui: no display (run it under xvfb-run -a -s '-screen 0 1280x800x24')\n");
-        return 2;
-    }
-    // The windows edit without saving and are not closed: their autosaves go to a folder
-    // of their own, not the user's recovery copy (which the next start would offer).
-    QTemporaryDir recovery;
-    if (recovery.isValid()) qputenv("LAGRANGELAB_RECOVERY_DIR", recovery.path().toLocal8Bit());
-    static int argc = 1;
-    static char name[] = "lagrangelab";
-    static char* argv[] = {name, nullptr};
-    QApplication app(argc, argv);
-    // Wall times depend on what else the machine runs: say how loaded it was.
-    QFile loadavg("/proc/loadavg");
-    if (loadavg.open(QIODevice::ReadOnly)) std::printf("load average at start: %s", loadavg.readLine().constData());
+    const QTemporaryDir recovery;
+    const auto app = windowBenchApplication("gui", recovery);
+    if (!app) return 2;
     const std::string examples = examplesDirectory().string();
     std::vector<std::string> latencyScenes = scenes;
     if (latencyScenes.empty()) latencyScenes = {examples + "/planar_2r.json", examples + "/puma560.json"};

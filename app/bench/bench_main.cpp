@@ -192,7 +192,7 @@ int dynamics(std::vector<std::string> scenes, int batches) {
 
 const char* const usage =
     "usage: lagrangelab-bench [SCENE...] [--batches N] [--rhs | --derive | --cancel | --render | --typeset | --gui | --process | --linked |\n"
-    "                         --entries | --answers | --grade | --urdf]\n"
+    "                         --entries | --answers | --grade | --urdf | --lesson]\n"
     "                         [--chains A..B] [--cap S] [--form auto|structured|expanded]\n"
     "  median times of B, C, g, forward/inverse dynamics and one simulated second (default scenes:\n"
     "  the PUMA 560, Stanford arm, UR5, Panda and planar 2R); or\n"
@@ -211,16 +211,18 @@ const char* const usage =
     "  --answers  check-answer of the PUMA 560's b11 as a process and against a built key; 300 checks of a 2R sheet\n"
     "  --grade    lagrangelab grade of 30 students' answer files of 10 entries, each against its own robot\n"
     "  --urdf     lagrangelab import of a 7-joint URDF as a process, and the import alone\n"
+    "  --lesson   a lesson's next view on screen in presentation mode, its scene loaded (2R) or not (Panda); needs a display\n"
     "Built in the tree, not installed; docs/benchmarks.md records what it measured.\n";
 
 int run(const std::vector<std::string>& args) {
     const Options options(args, {"batches", "chains", "cap", "form"},
-                          {"rhs", "derive", "cancel", "render", "typeset", "gui", "process", "linked", "entries", "answers", "grade", "urdf"});
+                          {"rhs", "derive", "cancel", "render", "typeset", "gui", "process", "linked", "entries", "answers", "grade", "urdf", "lesson"});
     // --batches N, or each mode's default: a whole number from 1 to 1000 (0 batches have
     // no median).
     const auto batchesOr = [&](int fallback) { return checkedBatches(options.number("batches", fallback), options.text("batches")); };
     std::vector<std::string> scenes = options.positional();
     if (options.has("gui")) return gui(scenes, batchesOr(9));
+    if (options.has("lesson")) return lesson(batchesOr(5));
     if (options.has("answers")) return answers(batchesOr(5));
     if (options.has("urdf")) return urdf(batchesOr(9));
     if (options.has("grade")) return grade(batchesOr(5));

@@ -4,7 +4,7 @@
 <context>
     <name>Autosave</name>
     <message>
-        <location filename="../../ui/window/autosave.cpp" line="+33" />
+        <location filename="../../ui/window/autosave.cpp" line="+43" />
         <source>Autosave failed: %1</source>
         <translation>Automatisk gemning mislykkedes: %1</translation>
     </message>
@@ -115,7 +115,7 @@
 <context>
     <name>DerivationView</name>
     <message>
-        <location filename="../../ui/window/derivation_view.cpp" line="+57" />
+        <location filename="../../ui/window/derivation_view.cpp" line="+59" />
         <source>Previous</source>
         <translation>Forrige</translation>
     </message>
@@ -125,7 +125,7 @@
         <translation>Næste</translation>
     </message>
     <message>
-        <location line="+108" />
+        <location line="+118" />
         <source>No scene</source>
         <translation>Ingen scene</translation>
     </message>
@@ -1016,7 +1016,7 @@
         <translation>Iyz [kg·m²]</translation>
     </message>
     <message>
-        <location line="+37" />
+        <location line="+45" />
         <source>Add joint %1</source>
         <translation>Tilføj led %1</translation>
     </message>
@@ -1095,9 +1095,185 @@
     </message>
 </context>
 <context>
+    <name>LessonMode</name>
+    <message>
+        <location filename="../../ui/window/lesson_mode.cpp" line="+80" />
+        <location line="+119" />
+        <source>Lesson</source>
+        <translation>Lektion</translation>
+    </message>
+    <message>
+        <location line="-118" />
+        <source>Add view</source>
+        <translation>Tilføj visning</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Update</source>
+        <translation>Opdatér</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Remove</source>
+        <translation>Fjern</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Present</source>
+        <translation>Præsentér</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The speaker's note for this view</source>
+        <translation>Talerens note til denne visning</translation>
+    </message>
+    <message>
+        <location line="+58" />
+        <source>Rename view</source>
+        <translation>Omdøb visning</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Title of the view:</source>
+        <translation>Visningens titel:</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>&amp;Lesson</source>
+        <translation>&amp;Lektion</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>New lesson</source>
+        <translation>Ny lektion</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Open lesson…</source>
+        <translation>Åbn lektion…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <location line="+254" />
+        <source>Save lesson</source>
+        <translation>Gem lektion</translation>
+    </message>
+    <message>
+        <location line="-253" />
+        <source>Save lesson as…</source>
+        <translation>Gem lektion som…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Add the current view</source>
+        <translation>Tilføj den aktuelle visning</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Update the view with the current one</source>
+        <translation>Erstat visningen med den aktuelle</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Remove the view</source>
+        <translation>Fjern visningen</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Rename the view…</source>
+        <translation>Omdøb visningen…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Present the lesson</source>
+        <translation>Præsentér lektionen</translation>
+    </message>
+    <message>
+        <location line="+52" />
+        <source>View %1</source>
+        <translation>Visning %1</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Added to the lesson as view %1</source>
+        <translation>Tilføjet til lektionen som visning %1</translation>
+    </message>
+    <message>
+        <location line="+133" />
+        <source>unsaved</source>
+        <translation>ikke gemt</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1" />
+        <source>&lt;b&gt;%1&lt;/b&gt; (%2) · %n view(s)</source>
+        <translation>
+            <numerusform>&lt;b&gt;%1&lt;/b&gt; (%2) · %n visning</numerusform>
+            <numerusform>&lt;b&gt;%1&lt;/b&gt; (%2) · %n visninger</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>Speaker notes — LagrangeLab</source>
+        <translation>Talernoter — LagrangeLab</translation>
+    </message>
+    <message>
+        <location line="+24" />
+        <source>&lt;b&gt;%1&lt;/b&gt; — view %2 of %3</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt; — visning %2 af %3</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>(no note)</source>
+        <translation>(ingen note)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Next: %1</source>
+        <translation>Næste: %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Last view</source>
+        <translation>Sidste visning</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Open lesson</source>
+        <translation>Åbn lektion</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <location line="+11" />
+        <source>Lessons (*.lesson *.json)</source>
+        <translation>Lektioner (*.lesson *.json)</translation>
+    </message>
+    <message>
+        <location line="-8" />
+        <source>Cannot open the lesson</source>
+        <translation>Lektionen kan ikke åbnes</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Some views could not be read</source>
+        <translation>Nogle visninger kunne ikke læses</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>They are kept in the lesson as they are written:
+%1</source>
+        <translation>De bevares i lektionen, som de er skrevet:
+%1</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>Cannot save the lesson</source>
+        <translation>Lektionen kan ikke gemmes</translation>
+    </message>
+</context>
+<context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../ui/window/main_window.cpp" line="+126" />
+        <location filename="../../ui/window/main_window.cpp" line="+128" />
         <source>Model</source>
         <translation>Model</translation>
     </message>
@@ -1158,12 +1334,12 @@
     </message>
     <message>
         <location line="+0" />
-        <location line="+124" />
+        <location line="+123" />
         <source>Teach</source>
         <translation>Teach</translation>
     </message>
     <message>
-        <location line="-124" />
+        <location line="-123" />
         <source>Torques</source>
         <translation>Momenter</translation>
     </message>
@@ -1193,7 +1369,7 @@
         <translation>Mesh-filer kunne ikke læses, så DH-tegningen vises: %1</translation>
     </message>
     <message>
-        <location line="+61" />
+        <location line="+58" />
         <source>&amp;File</source>
         <translation>&amp;Filer</translation>
     </message>
@@ -1258,7 +1434,7 @@
         <translation>Tilpas visning</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+8" />
         <source>Main</source>
         <translation>Hovedværktøjslinje</translation>
     </message>
@@ -1321,7 +1497,7 @@
         <translation> · modellen har fejl: viser den seneste gyldige</translation>
     </message>
     <message>
-        <location line="+87" />
+        <location line="+85" />
         <source>%1%2 — LagrangeLab</source>
         <translation>%1%2 — LagrangeLab</translation>
     </message>
@@ -1329,7 +1505,7 @@
 <context>
     <name>ModelEditor</name>
     <message>
-        <location filename="../../ui/window/model_editor.cpp" line="+66" />
+        <location filename="../../ui/window/model_editor.cpp" line="+67" />
         <source>DH</source>
         <translation>DH</translation>
     </message>
@@ -1741,7 +1917,7 @@
         <translation>Kan ikke importere %1</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+22" />
         <source>%1: another file is being opened</source>
         <translation>%1: en anden fil er ved at blive åbnet</translation>
     </message>
@@ -2057,7 +2233,7 @@
 <context>
     <name>ViewBar</name>
     <message>
-        <location filename="../../ui/window/view_bar.cpp" line="+32" />
+        <location filename="../../ui/window/view_bar.cpp" line="+33" />
         <source>Fit</source>
         <translation>Tilpas</translation>
     </message>
@@ -2105,6 +2281,119 @@
         <location line="+1" />
         <source>meshes</source>
         <translation>mesh-filer</translation>
+    </message>
+</context>
+<context>
+    <name>ViewState</name>
+    <message>
+        <location filename="../../ui/window/view_state.cpp" line="+137" />
+        <source>The view's own scene could not be opened; it is shown on the scene open now:</source>
+        <translation>Visningens egen scene kunne ikke åbnes; den vises på den scene, der er åben nu:</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The scene %1 could not be opened; the view is shown on the scene open now:</source>
+        <translation>Scenen %1 kunne ikke åbnes; visningen vises på den scene, der er åben nu:</translation>
+    </message>
+    <message>
+        <location line="+25" />
+        <source>The view is shown as far as it could be</source>
+        <translation>Visningen er vist, så langt det var muligt</translation>
+    </message>
+    <message>
+        <location line="+21" />
+        <source>The time %1 s is after the run's end (%2 s): the end is shown.</source>
+        <translation>Tiden %1 s ligger efter kørslens slutning (%2 s): slutningen vises.</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>The derivation has no entry %1 any more: nothing is picked.</source>
+        <translation>Udledningen har ikke længere elementet %1: intet er valgt.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The scene has no link %1 (it has %2): no link is picked.</source>
+        <translation>Scenen har intet link %1 (den har %2): intet link er valgt.</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>The derivation has no step %1 (its steps: %2 to %3): its first step is shown.</source>
+        <translation>Udledningen har intet trin %1 (dens trin: %2 til %3): dens første trin vises.</translation>
+    </message>
+    <message>
+        <location line="+23" />
+        <source>The scene has no controller, so no Tracking tab: the Energy tab is shown.</source>
+        <translation>Scenen har ingen regulator og derfor ingen fane Banefølgning: fanen Energi vises.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The scene has no joint %1 (it has %2): the plots show joint 1.</source>
+        <translation>Scenen har intet led %1 (den har %2): graferne viser led 1.</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>A typed Lagrangian has no DH table to step through.</source>
+        <translation>En indtastet Lagrange-funktion har ingen DH-tabel at gennemgå.</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>The robot has no frame %1 (its frames: 0 to %2).</source>
+        <translation>Robotten har intet koordinatsystem %1 (dens koordinatsystemer: 0 til %2).</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>The robot has no joint %1 (it has %2): the DH step-through shows joint 1.</source>
+        <translation>Robotten har intet led %1 (den har %2): DH-gennemgangen viser led 1.</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>The teach pose has %1 values, the scene %2 joints: the robot is not posed.</source>
+        <translation>Teach-stillingen har %1 værdier, scenen %2 led: robotten stilles ikke.</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>Save view…</source>
+        <translation>Gem visning…</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Open view…</source>
+        <translation>Åbn visning…</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Save view</source>
+        <translation>Gem visning</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Views (*.json)</source>
+        <translation>Visninger (*.json)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>View saved to %1</source>
+        <translation>Visningen er gemt i %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Cannot save the view</source>
+        <translation>Visningen kan ikke gemmes</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Open view</source>
+        <translation>Åbn visning</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Views, lessons and scenes (*.json *.lesson)</source>
+        <translation>Visninger, lektioner og scener (*.json *.lesson)</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>Cannot open the view</source>
+        <translation>Visningen kan ikke åbnes</translation>
     </message>
 </context>
 <context>

@@ -19,6 +19,7 @@
 #include <unistd.h>
 
 #include "core/io/scene_file.hpp"
+#include "core/io/window_view.hpp"
 #include "process_run.hpp"
 
 // A namespace of its own: a folder's tests are compiled together (tests/test_registry.hpp).
@@ -226,7 +227,7 @@ private slots:
             if (const int eq = line.indexOf('='); eq > 0) entry[line.left(eq)] = line.mid(eq + 1);
         QCOMPARE(entry["Exec"], QString("lagrangelab %f"));
         QCOMPARE(entry["Icon"], kAppId);
-        QCOMPARE(entry["MimeType"], kSceneType + ";");
+        QCOMPARE(entry["MimeType"], kSceneType + ";application/x-lagrangelab-view;application/x-lagrangelab-lesson;");
         if (QStandardPaths::findExecutable("desktop-file-validate").isEmpty())
             QSKIP("desktop-file-validate is not installed (desktop-file-utils)");
         const ProcessRun r = runProcess("desktop-file-validate", {desktop});
@@ -280,6 +281,14 @@ private slots:
         ll::saveScene(scene, (work_ + "/saved.json").toStdString());
         QCOMPARE(filetype("saved.lagrange"), kSceneType);
         QCOMPARE(filetype("saved.json"), kSceneType);
+        // A lesson by its extension, a view as LagrangeLab writes it by its header.
+        QVERIFY(QFile::copy(example("lessons/euler_lagrange_intro.lesson"), work_ + "/intro.lesson"));
+        QCOMPARE(filetype("intro.lesson"), QString("application/x-lagrangelab-lesson"));
+        ll::WindowView view;
+        view.scenePath = example("simple_pendulum.json").toStdString();
+        view.derivation.step = 6;
+        ll::saveWindowView(view, (work_ + "/view.json").toStdString());
+        QCOMPARE(filetype("view.json"), QString("application/x-lagrangelab-view"));
         // With freedesktop.org's types only (the system's, built alone into a database of
         // its own) the same files are plain text and JSON.
         const QString freedesktop = "/usr/share/mime/packages/freedesktop.org.xml";

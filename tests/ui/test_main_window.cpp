@@ -1087,14 +1087,14 @@ private slots:
         flushEvents();
         const auto layout = [&] {
             QStringList out{QString("window %1x%2").arg(w.width()).arg(w.height())};
-            for (QDockWidget* dock : w.findChildren<QDockWidget*>())
-                out << QString("%1 %2,%3 %4x%5 %6")
-                           .arg(dock->objectName())
-                           .arg(dock->x())
-                           .arg(dock->y())
-                           .arg(dock->width())
-                           .arg(dock->height())
-                           .arg(dock->isVisible());
+            for (QDockWidget* dock : w.findChildren<QDockWidget*>())  // a hidden dock (the Lesson's) has no place to keep
+                out << (dock->isVisible() ? QString("%1 %2,%3 %4x%5")
+                                                .arg(dock->objectName())
+                                                .arg(dock->x())
+                                                .arg(dock->y())
+                                                .arg(dock->width())
+                                                .arg(dock->height())
+                                          : dock->objectName() + " hidden");
             return out.join("; ");
         };
         const QString before = layout();

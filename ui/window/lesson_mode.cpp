@@ -30,6 +30,7 @@
 #include "ui/window/derivation_panel.hpp"
 #include "ui/window/language_menu.hpp"
 #include "ui/window/main_window.hpp"
+#include "ui/window/playback_bar.hpp"
 #include "ui/window/presentation_mode.hpp"
 #include "ui/window/relabel.hpp"
 #include "ui/window/view_state.hpp"
@@ -111,6 +112,15 @@ LessonMode::LessonMode(MainWindow& window, const WindowParts& parts) : QObject(&
         QTimer::singleShot(0, this, &LessonMode::refreshList);  // not inside the model's own signal
     });
     connect(&window.presentationMode(), &PresentationMode::changed, this, &LessonMode::presentationChanged);
+    // A view that says "play from t₀ to t₁" stops at t₁ (Space plays it again from t₀).
+    connect(&window.playback(), &PlaybackBar::timeChanged, this, [this](double t) {
+        if (!stopAt_ || t < (*stopAt_)[1] - 1e-9 || !window_.playback().isPlaying()) return;
+        window_.playback().pause();
+        window_.playback().setTime((*stopAt_)[1]);
+    });
+    connect(&window.playback(), &PlaybackBar::playingChanged, this, [this](bool playing) {
+        if (playing && stopAt_ && window_.playback().time() >= (*stopAt_)[1] - 1e-9) window_.playback().setTime((*stopAt_)[0]);
+    });
     // N shows or hides the speaker's window while a lesson is presented (shown from the
     // start only with a second screen to put it on: on one screen it would cover the slide).
     notesWanted_ = QGuiApplication::screens().size() > 1;
@@ -256,12 +266,14 @@ void LessonMode::go(int index) {
     if (index < 0 || index >= int(lesson_.views.size())) return;
     const bool forward = index >= current_;
     current_ = index;
-    {
-        const QSignalBlocker quiet(list_);
-        list_->setCurrentRow(index);
-    }
     const LessonView& lv = lesson_.views[std::size_t(index)];
+    {
+        const QSignalBlocker quiet(list_), quietNote(note_);
+        list_->setCurrentRow(index);
+        note_->setPlainText(QString::fromStdString(lv.view.note));
+    }
     showNotes();
+    stopAt_.reset();
     if (!lv.problems.empty()) {  // nothing to restore: say why
         const QString why = problemLines(lv.problems, window_.language().current().language);
         window_.statusBar()->showMessage(why, 20000);
@@ -270,6 +282,7 @@ void LessonMode::go(int index) {
     }
     WindowView view = lv.view;
     view.present = presenting_ || window_.presentationMode().on();
+    stopAt_ = view.playback.play;
     // A view stepped through starts at its first step going forward, at its last going back.
     if (view.derivation.through) view.derivation.step = (*view.derivation.through)[forward ? 0 : 1];
     auto* once = new QObject(this);
@@ -376,13 +389,19 @@ void LessonMode::showNotes() {
         layout->addWidget(notesText_, 1);
         layout->addWidget(notesNext_);
         notes_->resize(520, 320);
-        // On a second screen when there is one; else a small window the lecturer places.
+        // On a second screen when there is one; else beside the window where the screen has
+        // room, or in its lower right corner (a small window the lecturer moves).
         const QList<QScreen*> screens = QGuiApplication::screens();
+        const QRect room = window_.screen() ? window_.screen()->availableGeometry() : QRect();
+        QPoint at = room.bottomRight() - QPoint(notes_->width() + 20, notes_->height() + 40);
+        if (room.right() - window_.frameGeometry().right() >= notes_->width() + 20)
+            at = QPoint(window_.frameGeometry().right() + 10, window_.frameGeometry().top());
         for (QScreen* screen : screens)
-            if (screens.size() > 1 && screen != window_.screen()) {
-                notes_->move(screen->availableGeometry().topLeft() + QPoint(40, 40));
+            if (screen != window_.screen()) {
+                at = screen->availableGeometry().topLeft() + QPoint(40, 40);
                 break;
             }
+        notes_->move(at);
     }
     const int n = int(lesson_.views.size());
     const LessonView& lv = lesson_.views[std::size_t(current_)];

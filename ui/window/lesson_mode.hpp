@@ -6,7 +6,8 @@
 //
 // Presenting a lesson: Page Down / Page Up (what a clicker sends) and → / ← go to the next and
 // previous view; a view that says "derivation.through": [a, b] is stepped through from a to b
-// first. Each view is restored whole (ui/window/view_state.hpp), its camera kept as saved.
+// first, and one that says "playback.play": [t₀, t₁] plays (Space) from t₀ and stops at t₁.
+// Each view is restored whole (ui/window/view_state.hpp), its camera kept as saved.
 // The speaker's notes, the next view's title and where the lecture stands show in a small
 // window of their own, on a second screen when there is one (N shows or hides it; on one
 // screen it starts hidden, as it would cover the slide). Leaving presentation mode
@@ -15,6 +16,9 @@
 // A lesson whose views cannot all be read opens with the others and lists the ones it could
 // not; a view that no longer fits its scene is shown as far as it can be, with what it could
 // not restore listed in the status line.
+#include <array>
+#include <optional>
+
 #include <QObject>
 #include <QString>
 
@@ -91,6 +95,7 @@ private:
     QWidget* notes_ = nullptr;        // the speaker's window
     QAction* notesKey_ = nullptr;     // N: the speaker's window shown or hidden
     bool notesWanted_ = false;
+    std::optional<std::array<double, 2>> stopAt_;  // the view's play range: playing stops at its end
     QLabel *notesNow_ = nullptr, *notesText_ = nullptr, *notesNext_ = nullptr;
 };
 
