@@ -33,9 +33,10 @@ constexpr std::array<CommandText, 18> commands{{
      "simulate and render the 3D scene headless (no X server needed) to a video, a still or PNG frames;\n"
      "--layout composite: one slide with the 3D view, derivation step N's key equation (default 8) and\n"
      "the energy plot with a moving cursor"},
-    {"report", "SCENE --out DIR [--duration T] [--lang da|en] [--notation notes|siciliano|spong|craig]",
+    {"report", "SCENE --out DIR [--duration T] [--lesson LESSON] [--lang da|en] [--notation notes|siciliano|spong|craig]",
      "the lab-report bundle in one folder: derivation.pdf, trajectory.csv (units in its header),\n"
-     "energy.svg and joints.svg, the scene file, slide.mp4 (the composite slide) and index.md"},
+     "energy.svg and joints.svg, the scene file, slide.mp4 (the composite slide) and index.md;\n"
+     "--lesson: the lesson's stills in lesson/, shown in index.md (needs a display)"},
     {"check", "SCENE [--duration T] [--format text|json]",
      "the model's properties along a simulated run: B positive definite and its condition, Ḃ − 2C\n"
      "skew, power balance, Newton–Euler against B q̈ + C q̇ + g, energy; exit 1 when one fails"},

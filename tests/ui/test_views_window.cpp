@@ -329,6 +329,17 @@ private slots:
         QVERIFY(probe.waitForFinished(60000));
         // play [0.5, 2.5] s at 25 frames per second of the run: 51 frames
         QCOMPARE(QString(probe.readAllStandardOutput()).trimmed(), QString("1280,720,51"));
+        // The lab report with the lesson's stills, each shown in its index with its title.
+        const QString report = dir_.filePath("report");
+        p.start(LL_CLI, {"report", example("planar_2r.json"), "--out", report, "--lesson", lesson, "--duration", "2"});
+        QVERIFY(p.waitForFinished(600000));
+        QVERIFY2(p.exitCode() == 0, p.readAllStandardError().constData());
+        QFile index(report + "/index.md");
+        QVERIFY(index.open(QIODevice::ReadOnly));
+        const QString text = QString::fromUtf8(index.readAll());
+        QCOMPARE(text.count("](lesson/"), 10);
+        QVERIFY(text.contains("![3. Where b11 comes from](lesson/03-where-b11-comes-from.png)"));
+        QCOMPARE(QImage(report + "/lesson/03-where-b11-comes-from.png").size(), QSize(1280, 720));
     }
 
     void theCommandLine() {
