@@ -1097,13 +1097,13 @@
 <context>
     <name>LessonMode</name>
     <message>
-        <location filename="../../ui/window/lesson_mode.cpp" line="+80" />
-        <location line="+119" />
+        <location filename="../../ui/window/lesson_mode.cpp" line="+113" />
+        <location line="+144" />
         <source>Lesson</source>
         <translation>Lektion</translation>
     </message>
     <message>
-        <location line="-118" />
+        <location line="-143" />
         <source>Add view</source>
         <translation>Tilføj visning</translation>
     </message>
@@ -1128,7 +1128,37 @@
         <translation>Talerens note til denne visning</translation>
     </message>
     <message>
-        <location line="+58" />
+        <location line="+16" />
+        <source>Edit the note of view %1</source>
+        <translation>Redigér noten til visning %1</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>Move a view</source>
+        <translation>Flyt en visning</translation>
+    </message>
+    <message>
+        <location line="+39" />
+        <source>Undo in the lesson</source>
+        <translation>Fortryd i lektionen</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Undo in the lesson: %1</source>
+        <translation>Fortryd i lektionen: %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Redo in the lesson</source>
+        <translation>Gentag i lektionen</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Redo in the lesson: %1</source>
+        <translation>Gentag i lektionen: %1</translation>
+    </message>
+    <message>
+        <location line="+13" />
         <source>Rename view</source>
         <translation>Omdøb visning</translation>
     </message>
@@ -1138,7 +1168,7 @@
         <translation>Visningens titel:</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+9" />
         <source>&amp;Lesson</source>
         <translation>&amp;Lektion</translation>
     </message>
@@ -1154,12 +1184,12 @@
     </message>
     <message>
         <location line="+1" />
-        <location line="+254" />
+        <location line="+266" />
         <source>Save lesson</source>
         <translation>Gem lektion</translation>
     </message>
     <message>
-        <location line="-253" />
+        <location line="-265" />
         <source>Save lesson as…</source>
         <translation>Gem lektion som…</translation>
     </message>
@@ -1189,17 +1219,42 @@
         <translation>Præsentér lektionen</translation>
     </message>
     <message>
-        <location line="+52" />
+        <location line="+54" />
         <source>View %1</source>
         <translation>Visning %1</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+3" />
+        <source>Add view %1</source>
+        <translation>Tilføj visning %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>Added to the lesson as view %1</source>
         <translation>Tilføjet til lektionen som visning %1</translation>
     </message>
     <message>
-        <location line="+133" />
+        <location line="+10" />
+        <source>Update view %1</source>
+        <translation>Opdatér visning %1</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Remove view %1</source>
+        <translation>Fjern visning %1</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>Rename view %1</source>
+        <translation>Omdøb visning %1</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>Move view %1</source>
+        <translation>Flyt visning %1</translation>
+    </message>
+    <message>
+        <location line="+106" />
         <source>unsaved</source>
         <translation>ikke gemt</translation>
     </message>
@@ -1212,12 +1267,12 @@
         </translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+15" />
         <source>Speaker notes — LagrangeLab</source>
         <translation>Talernoter — LagrangeLab</translation>
     </message>
     <message>
-        <location line="+24" />
+        <location line="+30" />
         <source>&lt;b&gt;%1&lt;/b&gt; — view %2 of %3</source>
         <translation>&lt;b&gt;%1&lt;/b&gt; — visning %2 af %3</translation>
     </message>

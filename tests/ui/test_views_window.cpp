@@ -15,10 +15,13 @@
 #include <QFile>
 #include <QImage>
 #include <QLabel>
+#include <QListWidget>
+#include <QPlainTextEdit>
 #include <QProcess>
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QUndoStack>
 
 #include "core/io/lesson_file.hpp"
 #include "core/io/window_view.hpp"
@@ -305,6 +308,52 @@ private slots:
         QVERIFY(!w->presentationMode().on());
         QCOMPARE(QFileInfo(w->document().path()).fileName(), QString("simple_pendulum.json"));
         QCOMPARE(w->derivationView().step(), *before.derivation.step);
+    }
+
+    // Making a lesson in the window: add, rename, move, remove, a note typed; each one undo
+    // step in the lesson's own stack (the scene's stays as it was), and redo brings it back.
+    void aLessonMadeAndUndone() {
+        auto w = test::openedWindow(example("planar_2r.json"), [](MainWindow& m) { return test::settled(m, 120); });
+        const auto titles = [&] {
+            QStringList out;
+            for (const LessonView& lv : w->lessons().lesson().views) out << QString::fromStdString(lv.view.name);
+            return out.join(", ");
+        };
+        w->lessons().newLesson();
+        w->showDerivationStep(7);
+        w->lessons().addCurrentView();
+        QVERIFY(w->linking().selectEntry("b12"));
+        w->lessons().addCurrentView();
+        QCOMPARE(titles(), QString("View 1, View 2"));
+        QCOMPARE(w->lessons().lesson().views[1].view.pick.entry.value_or(""), std::string("b12"));
+        w->lessons().renameView(1, "b12 picked");
+        QVERIFY(test::waitUntil([&] { return titles() == "View 1, b12 picked"; }, 5000));
+        w->lessons().moveView(1, 0);
+        QCOMPARE(titles(), QString("b12 picked, View 1"));
+        auto* note = w->findChild<QPlainTextEdit*>("lesson-note");
+        QVERIFY(note);
+        auto* list = w->findChild<QListWidget*>("lesson-views");
+        list->setCurrentRow(0);
+        QTest::keyClicks(note, "Ask first");
+        QCOMPARE(w->lessons().lesson().views[0].view.note, std::string("Ask first"));
+        w->lessons().removeView(1);
+        QCOMPARE(titles(), QString("b12 picked"));
+        QUndoStack& undo = *w->lessons().undoStack();
+        QCOMPARE(undo.count(), 6);  // two adds, rename, move, the note (its keys one step), remove
+        undo.undo();
+        QCOMPARE(titles(), QString("b12 picked, View 1"));
+        undo.undo();  // the note
+        QCOMPARE(w->lessons().lesson().views[0].view.note, std::string());
+        undo.undo();
+        QCOMPARE(titles(), QString("View 1, b12 picked"));
+        undo.undo();
+        QCOMPARE(titles(), QString("View 1, View 2"));
+        undo.redo();  // the name, the move, the note again
+        undo.redo();
+        undo.redo();
+        QCOMPARE(titles(), QString("b12 picked, View 1"));
+        QCOMPARE(w->lessons().lesson().views[0].view.note, std::string("Ask first"));
+        QVERIFY(!w->document().isModified());  // the scene's undo is untouched
     }
 
     void aLessonExportsAsPdfAndVideo() {

@@ -23,6 +23,7 @@
 #include <QSignalBlocker>
 #include <QStatusBar>
 #include <QTimer>
+#include <QUndoStack>
 #include <QVBoxLayout>
 
 #include "core/present/diagnostic_text.hpp"
@@ -46,9 +47,40 @@ QString problemLines(const std::vector<Diagnostic>& problems, present::Language 
     return lines.join('\n');
 }
 
+// One edit of the lesson: the lesson before and after it (a lesson is a few views: copies
+// are cheap, and undo never has to know what an edit did).
+class LessonEdit : public QUndoCommand {
+public:
+    LessonEdit(const QString& text, Lesson before, Lesson after, int merge, std::function<void(const Lesson&)> show)
+        : QUndoCommand(text), before_(std::move(before)), after_(std::move(after)), merge_(merge), show_(std::move(show)) {}
+    void redo() override { show_(after_); }
+    void undo() override { show_(before_); }
+    int id() const override { return merge_; }
+    bool mergeWith(const QUndoCommand* other) override {
+        after_ = static_cast<const LessonEdit*>(other)->after_;
+        return true;
+    }
+
+private:
+    Lesson before_, after_;
+    int merge_;
+    std::function<void(const Lesson&)> show_;
+};
+
 }  // namespace
 
+void LessonMode::edit(const QString& what, const std::function<void(Lesson&)>& change, int merge) {
+    Lesson after = lesson_;
+    change(after);
+    undo_->push(new LessonEdit(what, lesson_, std::move(after), merge > 0 ? merge : -1, [this](const Lesson& l) {
+        lesson_ = l;
+        current_ = std::min(current_, int(lesson_.views.size()) - 1);
+        refreshList();
+    }));
+}
+
 LessonMode::LessonMode(MainWindow& window, const WindowParts& parts) : QObject(&window), window_(window), parts_(parts) {
+    undo_ = new QUndoStack(this);
     dock_ = new QDockWidget(&window);
     dock_->setObjectName("lesson");
     auto* page = new QWidget(dock_);
@@ -97,7 +129,9 @@ LessonMode::LessonMode(MainWindow& window, const WindowParts& parts) : QObject(&
     });
     connect(note_, &QPlainTextEdit::textChanged, this, [this] {
         const int row = list_->currentRow();
-        if (row >= 0 && row < int(lesson_.views.size())) lesson_.views[std::size_t(row)].view.note = note_->toPlainText().toStdString();
+        const std::string note = note_->toPlainText().toStdString();
+        if (row >= 0 && row < int(lesson_.views.size()))  // the keys typed into one note are one undo step
+            edit(tr("Edit the note of view %1").arg(row + 1), [row, note](Lesson& l) { l.views[std::size_t(row)].view.note = note; }, 1000 + row);
     });
     connect(list_, &QListWidget::itemChanged, this, [this](QListWidgetItem* item) {
         QString name = item->text();
@@ -108,8 +142,9 @@ LessonMode::LessonMode(MainWindow& window, const WindowParts& parts) : QObject(&
     connect(list_->model(), &QAbstractItemModel::rowsMoved, this, [this] {
         std::vector<LessonView> views;
         for (int i = 0; i < list_->count(); ++i) views.push_back(lesson_.views[std::size_t(list_->item(i)->data(Qt::UserRole).toInt())]);
-        lesson_.views = std::move(views);
-        QTimer::singleShot(0, this, &LessonMode::refreshList);  // not inside the model's own signal
+        QTimer::singleShot(0, this, [this, views] {  // not inside the model's own signal
+            edit(tr("Move a view"), [views](Lesson& l) { l.views = views; });
+        });
     });
     connect(&window.presentationMode(), &PresentationMode::changed, this, &LessonMode::presentationChanged);
     // A view that says "play from t₀ to t₁" stops at t₁ (Space plays it again from t₀).
@@ -143,6 +178,17 @@ void LessonMode::addMenu(QMenuBar* bar) {
     QAction* save = menu->addAction(QString(), this, [this] { saveAsked(false); });
     QAction* saveAs = menu->addAction(QString(), this, [this] { saveAsked(true); });
     menu->addSeparator();
+    // The lesson's own undo (its edits are not the scene's: Edit → Undo stays the scene's).
+    QAction* undo = menu->addAction(QString(), undo_, &QUndoStack::undo);
+    QAction* redo = menu->addAction(QString(), undo_, &QUndoStack::redo);
+    const auto name = [this, undo, redo] {
+        undo->setText(undo_->undoText().isEmpty() ? tr("Undo in the lesson") : tr("Undo in the lesson: %1").arg(undo_->undoText()));
+        redo->setText(undo_->redoText().isEmpty() ? tr("Redo in the lesson") : tr("Redo in the lesson: %1").arg(undo_->redoText()));
+        undo->setEnabled(undo_->canUndo());
+        redo->setEnabled(undo_->canRedo());
+    };
+    connect(undo_, &QUndoStack::indexChanged, undo, name);
+    connect(undo_, &QUndoStack::cleanChanged, undo, name);
     QAction* add = menu->addAction(QString(), QKeySequence(Qt::Key_F9), this, &LessonMode::addCurrentView);
     QAction* update = menu->addAction(QString(), this, &LessonMode::updateCurrentView);
     QAction* remove = menu->addAction(QString(), this, [this] { removeView(list_->currentRow()); });
@@ -158,6 +204,7 @@ void LessonMode::addMenu(QMenuBar* bar) {
     QAction* show = menu->addAction(QString(), this, [this] { present(std::max(0, list_->currentRow())); });
     window_.addAction(add);  // F9 while presenting too (the menus are hidden then)
     (*new Relabel(menu))([=] {
+        name();
         menu->setTitle(tr("&Lesson"));
         create->setText(tr("New lesson"));
         open->setText(tr("Open lesson…"));
@@ -181,6 +228,7 @@ bool LessonMode::open(const QString& path, QStringList* errors, QStringList* unr
     }
     path_ = path;
     current_ = -1;
+    undo_->clear();
     for (std::size_t i = 0; i < lesson_.views.size(); ++i)
         if (unreadable && !lesson_.views[i].problems.empty())
             *unreadable << QString("%1. %2: %3").arg(i + 1).arg(QString::fromStdString(lesson_.views[i].view.name),
@@ -209,6 +257,7 @@ void LessonMode::newLesson() {
     lesson_.title = tr("Lesson").toStdString();
     path_.clear();
     current_ = -1;
+    undo_->clear();
     refreshList();
     dock_->show();
     dock_->raise();
@@ -221,45 +270,45 @@ void LessonMode::addCurrentView() {
     lv.view.present.reset();  // presenting is the lesson's to decide
     lv.view.name = tr("View %1").arg(lesson_.views.size() + 1).toStdString();
     const int at = current_ >= 0 ? current_ + 1 : int(lesson_.views.size());
-    lesson_.views.insert(lesson_.views.begin() + at, lv);
     current_ = at;
-    refreshList();
+    edit(tr("Add view %1").arg(at + 1), [at, lv](Lesson& l) { l.views.insert(l.views.begin() + at, lv); });
     window_.statusBar()->showMessage(tr("Added to the lesson as view %1").arg(at + 1), 4000);
 }
 
 void LessonMode::updateCurrentView() {
     const int row = list_->currentRow() >= 0 ? list_->currentRow() : current_;
     if (row < 0 || row >= int(lesson_.views.size())) return;
-    LessonView& lv = lesson_.views[std::size_t(row)];
     WindowView view = window_.views().capture();
     view.present.reset();
-    view.name = lv.view.name;
-    view.note = lv.view.note;
-    lv = LessonView{view, {}, {}, {}};  // inline now: what the window shows
-    refreshList();
+    view.name = lesson_.views[std::size_t(row)].view.name;
+    view.note = lesson_.views[std::size_t(row)].view.note;
+    edit(tr("Update view %1").arg(row + 1), [row, view](Lesson& l) { l.views[std::size_t(row)] = LessonView{view, {}, {}, {}}; });  // inline now
 }
 
 void LessonMode::removeView(int index) {
     if (index < 0 || index >= int(lesson_.views.size())) return;
-    lesson_.views.erase(lesson_.views.begin() + index);
+    edit(tr("Remove view %1").arg(index + 1), [index](Lesson& l) { l.views.erase(l.views.begin() + index); });
     if (current_ >= int(lesson_.views.size())) current_ = int(lesson_.views.size()) - 1;
-    refreshList();
 }
 
 void LessonMode::renameView(int index, const QString& name) {
     if (index < 0 || index >= int(lesson_.views.size()) || name.trimmed().isEmpty()) return;
-    lesson_.views[std::size_t(index)].view.name = name.trimmed().toStdString();
-    QTimer::singleShot(0, this, &LessonMode::refreshList);  // may be called from the list's own signal
+    const std::string title = name.trimmed().toStdString();
+    if (title == lesson_.views[std::size_t(index)].view.name) return;
+    QTimer::singleShot(0, this, [this, index, title] {  // may be called from the list's own signal
+        edit(tr("Rename view %1").arg(index + 1), [index, title](Lesson& l) { l.views[std::size_t(index)].view.name = title; });
+    });
 }
 
 void LessonMode::moveView(int from, int to) {
     const int n = int(lesson_.views.size());
     if (from < 0 || from >= n || to < 0 || to >= n || from == to) return;
-    LessonView moved = lesson_.views[std::size_t(from)];
-    lesson_.views.erase(lesson_.views.begin() + from);
-    lesson_.views.insert(lesson_.views.begin() + to, moved);
+    edit(tr("Move view %1").arg(from + 1), [from, to](Lesson& l) {
+        LessonView moved = l.views[std::size_t(from)];
+        l.views.erase(l.views.begin() + from);
+        l.views.insert(l.views.begin() + to, moved);
+    });
     if (current_ == from) current_ = to;
-    refreshList();
 }
 
 void LessonMode::go(int index) {
@@ -364,7 +413,8 @@ void LessonMode::refreshList() {
     title_->setText(tr("<b>%1</b> (%2) · %n view(s)", "", int(lesson_.views.size())).arg(QString::fromStdString(lesson_.title).toHtmlEscaped(), name));
     const QSignalBlocker quietNote(note_);
     const int now = list_->currentRow();
-    note_->setPlainText(now >= 0 ? QString::fromStdString(lesson_.views[std::size_t(now)].view.note) : QString());
+    const QString note = now >= 0 ? QString::fromStdString(lesson_.views[std::size_t(now)].view.note) : QString();
+    if (note_->toPlainText() != note) note_->setPlainText(note);  // not while it is being typed (the cursor stays)
 }
 
 // The speaker's window: this view's title and note, the next view's title.

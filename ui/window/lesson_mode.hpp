@@ -1,8 +1,8 @@
 #pragma once
 // A lesson in the window (core/io/lesson_file.hpp): the Lesson dock lists its views (drag to
 // reorder, double click to go, F2 to rename), with the selected view's note below, and the
-// Lesson menu makes one: New, Open…, Save, Save as…, Add the current view (Ctrl+Shift+A),
-// Update it, Remove, Rename, Present.
+// Lesson menu makes one: New, Open…, Save, Save as…, Add the current view (F9), Update it,
+// Remove, Rename, Present; every edit can be undone (the Lesson menu's own undo).
 //
 // Presenting a lesson: Page Down / Page Up (what a clicker sends) and → / ← go to the next and
 // previous view; a view that says "derivation.through": [a, b] is stepped through from a to b
@@ -17,6 +17,7 @@
 // not; a view that no longer fits its scene is shown as far as it can be, with what it could
 // not restore listed in the status line.
 #include <array>
+#include <functional>
 #include <optional>
 
 #include <QObject>
@@ -32,6 +33,7 @@ class QListWidget;
 class QMenu;
 class QMenuBar;
 class QPlainTextEdit;
+class QUndoStack;
 class QWidget;
 
 namespace ll::ui {
@@ -60,6 +62,8 @@ public:
     void removeView(int index);
     void renameView(int index, const QString& name);
     void moveView(int from, int to);
+    // The lesson's own undo stack: every edit above (and the notes typed) is one step.
+    QUndoStack* undoStack() const { return undo_; }
 
     // The view shown (−1: none yet) and going to one; next/previous as the keys do.
     int current() const { return current_; }
@@ -75,6 +79,9 @@ signals:
     void viewShown(int index, const QStringList& problems);  // a view is on screen; what of it could not be restored
 
 private:
+    // `change` applied to the lesson as one undoable edit called `what`; successive edits
+    // with the same `merge` (> 0: the keys typed into one note) are one step.
+    void edit(const QString& what, const std::function<void(Lesson&)>& change, int merge = 0);
     void refreshList();
     void showNotes();
     void presentationChanged(bool on);
@@ -84,6 +91,7 @@ private:
     MainWindow& window_;
     const WindowParts& parts_;
     Lesson lesson_;
+    QUndoStack* undo_ = nullptr;
     QString path_;
     int current_ = -1;
     bool presenting_ = false;        // presentation mode began with the lesson
