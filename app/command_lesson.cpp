@@ -7,6 +7,7 @@
 // (playback.play [t0, t1], or playing), an MP4 of the presented window from t0 to t1 at
 // 25 frames per second of the run's time (each frame set to its time, not filmed in real
 // time). --embed writes the lesson with every view's scene inside it.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -91,6 +92,12 @@ int lessonCommand(const Args& args) {
     if (format != "pdf" && format != "png" && format != "mp4") throw UsageError(UsageId::ValueExpectedOneOf, "format", format, "pdf, png", "mp4");
     const PixelSize size = parsePixelSize(options.text("size", "1920x1080"));
     const Lesson lesson = loadLesson(file);  // the file itself broken: exit 2 before any window
+    if (std::none_of(lesson.views.begin(), lesson.views.end(), [](const LessonView& lv) { return lv.problems.empty(); })) {
+        for (const LessonView& lv : lesson.views)
+            for (const Diagnostic& d : lv.problems)
+                std::cerr << present::messageText(MessageId::WarningLine, presentation().language) << present::diagnosticText(d, presentation().language) << '\n';
+        throw UsageError(UsageId::LessonNothingToExport, file);
+    }
     prepareOutputFolder(out);
     if (!hasDisplay()) throw UsageError(UsageId::NoDisplay);
 
@@ -202,7 +209,7 @@ int lessonCommand(const Args& args) {
         pdfOwner.reset();
         std::fprintf(stderr, "%s: %d pages\n", (folder / "lesson.pdf").string().c_str(), written);
     } else {
-        std::fprintf(stderr, "%d %s written to %s\n", written, format == "png" ? "stills" : "videos", out.c_str());
+        std::fprintf(stderr, "%d %s written to %s\n", written, format == "png" ? "stills" : written == 1 ? "video" : "videos", out.c_str());
     }
     return 0;
 }

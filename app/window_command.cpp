@@ -86,8 +86,13 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
     const std::string opened = options.positional().empty() ? std::string() : options.positional()[0];
     const std::string format = opened.ends_with(".urdf") ? std::string() : fileFormat(opened);
     const std::string lesson = format == kLessonFormat ? opened : std::string();
-    if (options.has("view") || !lesson.empty() || format == kViewFormat) {
-        if (options.has("view") && !options.positional().empty()) throw UsageError(UsageId::ViewAndScene, options.text("view"));
+    int lessonStart = 0;  // the lesson's first view that can be read (an empty or broken lesson opens too)
+    if (options.has("view") && !options.positional().empty()) throw UsageError(UsageId::ViewAndScene, options.text("view"));
+    if (!lesson.empty() && !options.has("view")) {
+        const Lesson read = loadLesson(lesson);
+        while (lessonStart < int(read.views.size()) && !read.views[std::size_t(lessonStart)].problems.empty()) ++lessonStart;
+        view = lessonStart < int(read.views.size()) ? read.views[std::size_t(lessonStart)].view : WindowView{};
+    } else if (options.has("view") || format == kViewFormat) {
         view = loadWindowView(options.has("view") ? options.text("view") : opened);
         for (const std::string& kept : view->keptPaths())
             std::cerr << present::messageText(MessageId::WarningLine, presentation().language)
@@ -169,8 +174,9 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
     // A lesson opens at its first view (presented with --present), selected in its dock.
     const auto restoreView = [&] {
         if (lesson.empty() || options.has("view")) window.views().restore(*view);
-        else if (options.has("present") && !scripted) window.lessons().present(0);
-        else window.lessons().go(0);
+        else if (options.has("present") && !scripted) window.lessons().present(lessonStart);
+        else if (lessonStart < int(window.lessons().lesson().views.size())) window.lessons().go(lessonStart);
+        else window.views().restore(*view);  // no view to go to: the lesson's dock beside the default scene
     };
     if (view && !scripted) restoreView();
     if (options.has("present")) {
@@ -201,7 +207,7 @@ int windowCommand(const Args& args, const std::chrono::steady_clock::time_point&
     if (view) {
         restoreView();
         if (!waitFor([&] { return !window.views().restoring(); }, 120)) {
-            std::cerr << "error: " << options.text("view") << ": the view was not restored in 120 s\n";
+            std::cerr << "error: " << (lesson.empty() ? options.text("view", opened) : lesson) << ": the view was not restored in 120 s\n";
             return 1;
         }
     }

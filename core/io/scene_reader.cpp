@@ -858,17 +858,21 @@ private:
     }
 
     // Named views of the scene (core/io/window_view.hpp): checked here, kept by the
-    // document as written, restored by the window.
+    // document as written, restored by the window. A broken view is a warning: the scene
+    // opens whatever its views say (opening that view says what is wrong with it).
     void readViews(const Json& views) {
         if (!views.is_object()) {
-            error("views", expectedGot(MessageId::WantedObject, views));
+            warnings_.push_back({Severity::Warning, "views", expectedGot(MessageId::WantedObject, views)});
             return;
         }
         for (const auto& [name, view] : views.items()) {
             try {
                 readWindowView(view, child("views", name));
             } catch (const InputError& e) {
-                errors_.insert(errors_.end(), e.diagnostics().begin(), e.diagnostics().end());
+                for (Diagnostic d : e.diagnostics()) {
+                    d.severity = Severity::Warning;
+                    warnings_.push_back(std::move(d));
+                }
             }
         }
     }

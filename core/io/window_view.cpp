@@ -351,7 +351,8 @@ std::string resolvedPath(const std::string& path, const std::string& folder) {
 }
 
 WindowView loadWindowView(const std::string& spec) {
-    const auto hash = spec.rfind('#');
+    // PATH#NAME; a file whose own name holds '#' ("Lecture #2.lesson") is that file.
+    const auto hash = std::filesystem::exists(spec) ? std::string::npos : spec.rfind('#');
     const std::string path = hash == std::string::npos ? spec : spec.substr(0, hash);
     const std::string name = hash == std::string::npos ? std::string() : spec.substr(hash + 1);
     const std::string folder = std::filesystem::path(path).parent_path().string();

@@ -284,10 +284,11 @@ private slots:
 
         json["views"]["intro"]["derivation"]["step"] = 99;
         writeFile(file, json.dump(2));
-        errors = errorsOf([&] { loadScene(file); });
-        QVERIFY(!errors.empty());
-        QVERIFY2(contains(errors[0].field, "views.intro.derivation.step"), text(errors).c_str());
-        QVERIFY2(contains(errors[0].message.english(), "99"), text(errors).c_str());
+        // A broken view does not stop its scene from opening: a warning names it.
+        const LoadedScene loaded = loadScene(file);
+        const auto warning = std::find_if(loaded.warnings.begin(), loaded.warnings.end(),
+                                          [](const Diagnostic& d) { return contains(d.field, "views.intro.derivation.step"); });
+        QVERIFY2(warning != loaded.warnings.end() && contains(warning->message.english(), "99"), text(loaded.warnings).c_str());
         errors = errorsOf([&] { loadWindowView(file + "#intro"); });
         QVERIFY2(!errors.empty() && contains(errors[0].field, "views.intro.derivation.step"), text(errors).c_str());
     }

@@ -401,6 +401,20 @@ private slots:
         QCOMPARE(saved.pick.entry.value_or(""), std::string("b12"));
         QCOMPARE(saved.derivation.step.value_or(-1), 7);
         QCOMPARE(saved.playback.time.value_or(-1), 0.5);
+        // A lesson with no view that can be read: the window opens it (beside the default
+        // scene); the export has nothing to export and says so.
+        const QString empty = dir_.filePath("empty.lesson");
+        QFile file(empty);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(R"({"format": "lagrangelab-lesson/1", "views": [{"include": "gone.json"}]})");
+        file.close();
+        p.start(LL_CLI, {empty, "--screenshot", dir_.filePath("empty.png")});
+        QVERIFY(p.waitForFinished(120000));
+        QVERIFY2(p.exitCode() == 0, p.readAllStandardError().constData());
+        p.start(LL_CLI, {"lesson", empty, "--out", dir_.filePath("nothing")});
+        QVERIFY(p.waitForFinished(60000));
+        QCOMPARE(p.exitCode(), 2);
+        QVERIFY(p.readAllStandardError().contains("no view to export"));
         for (const QStringList& bad : {QStringList{"--view", dir_.filePath("none.json"), "--screenshot", dir_.filePath("x.png")},
                                        QStringList{"--view", example("lessons/euler_lagrange_intro.lesson#nope"), "--screenshot", dir_.filePath("x.png")},
                                        QStringList{example("planar_2r.json"), "--save-view", dir_.filePath("v.txt")}}) {

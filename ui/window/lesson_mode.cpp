@@ -34,6 +34,7 @@
 #include "ui/window/playback_bar.hpp"
 #include "ui/window/presentation_mode.hpp"
 #include "ui/window/relabel.hpp"
+#include "ui/window/scene_files.hpp"
 #include "ui/window/view_state.hpp"
 #include "ui/window/window_parts.hpp"
 
@@ -173,7 +174,9 @@ LessonMode::~LessonMode() { delete notes_; }
 
 void LessonMode::addMenu(QMenuBar* bar) {
     QMenu* menu = bar->addMenu(QString());
-    QAction* create = menu->addAction(QString(), this, &LessonMode::newLesson);
+    QAction* create = menu->addAction(QString(), this, [this] {
+        if (maybeSave()) newLesson();
+    });
     QAction* open = menu->addAction(QString(), this, &LessonMode::openAsked);
     QAction* save = menu->addAction(QString(), this, [this] { saveAsked(false); });
     QAction* saveAs = menu->addAction(QString(), this, [this] { saveAsked(true); });
@@ -248,8 +251,20 @@ bool LessonMode::saveTo(const QString& path, QString* error) {
     }
     // The views' scene paths stay as seen from here; the file has them relative to itself.
     path_ = path;
+    undo_->setClean();
     refreshList();
     return true;
+}
+
+bool LessonMode::maybeSave() {
+    if (undo_->isClean() || lesson_.views.empty() || !window_.files().asksBeforeClosing()) return true;
+    const auto answer = QMessageBox::warning(&window_, tr("Unsaved lesson"), tr("The lesson has unsaved changes. Save them?"),
+                                             QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+    if (answer == QMessageBox::Save) {
+        saveAsked(path_.isEmpty());
+        return undo_->isClean();
+    }
+    return answer == QMessageBox::Discard;
 }
 
 void LessonMode::newLesson() {
@@ -331,35 +346,44 @@ void LessonMode::go(int index) {
     }
     WindowView view = lv.view;
     view.present = presenting_ || window_.presentationMode().on();
-    stopAt_ = view.playback.play;
+    // Presenting, a view that names no language or notation is shown in the lecture's (those
+    // on screen when it began), whichever view came before it.
+    if (presenting_ && !view.language) view.language = before_.language;
+    if (presenting_ && !view.notation) view.notation = before_.notation;
     // A view stepped through starts at its first step going forward, at its last going back.
     if (view.derivation.through) view.derivation.step = (*view.derivation.through)[forward ? 0 : 1];
-    auto* once = new QObject(this);
-    connect(&window_.views(), &ViewState::restored, once, [this, index, once](const QStringList& problems) {
-        once->deleteLater();
+    disconnect(pending_);  // the view restored last is the one pressed for last
+    pending_ = connect(&window_.views(), &ViewState::restored, this, [this, index, play = view.playback.play](const QStringList& problems) {
+        disconnect(pending_);
+        stopAt_ = play;
         if (!problems.isEmpty()) window_.statusBar()->showMessage(problems.join(' '), 20000);
         emit viewShown(index, problems);
     });
     window_.views().restore(view);
 }
 
+// A key while a view is still being restored does nothing: it would act on the view before.
 void LessonMode::next() {
+    if (window_.views().restoring()) return;
     if (current_ >= 0 && current_ < int(lesson_.views.size())) {
         const WindowView& view = lesson_.views[std::size_t(current_)].view;
-        if (view.derivation.through && parts_.derivation->step() < (*view.derivation.through)[1]) {
+        const int before = parts_.derivation->step();
+        if (view.derivation.through && before < (*view.derivation.through)[1]) {
             parts_.derivation->nextStep();
-            return;
+            if (parts_.derivation->step() != before) return;  // else no step left: the next view
         }
     }
     if (current_ + 1 < int(lesson_.views.size())) go(current_ + 1);
 }
 
 void LessonMode::previous() {
+    if (window_.views().restoring()) return;
     if (current_ >= 0 && current_ < int(lesson_.views.size())) {
         const WindowView& view = lesson_.views[std::size_t(current_)].view;
-        if (view.derivation.through && parts_.derivation->step() > (*view.derivation.through)[0]) {
+        const int before = parts_.derivation->step();
+        if (view.derivation.through && before > (*view.derivation.through)[0]) {
             parts_.derivation->previousStep();
-            return;
+            if (parts_.derivation->step() != before) return;
         }
     }
     if (current_ > 0) go(current_ - 1);
@@ -386,6 +410,7 @@ void LessonMode::presentationChanged(bool on) {
     dock_->setVisible(!lesson_.views.empty() || !path_.isEmpty());
     if (!presenting_) return;
     presenting_ = false;
+    stopAt_.reset();
     notesKey_->setEnabled(false);
     window_.presentationMode().setStepper(nullptr);
     if (notes_) notes_->hide();
@@ -463,6 +488,7 @@ void LessonMode::showNotes() {
 }
 
 void LessonMode::openAsked() {
+    if (!maybeSave()) return;
     const QString path = QFileDialog::getOpenFileName(&window_, tr("Open lesson"), QDir::homePath(), tr("Lessons (*.lesson *.json)"));
     if (path.isEmpty()) return;
     QStringList errors, unreadable;

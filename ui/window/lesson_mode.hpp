@@ -57,6 +57,8 @@ public:
     bool open(const QString& path, QStringList* errors = nullptr, QStringList* unreadable = nullptr);
     bool saveTo(const QString& path, QString* error = nullptr);
     void newLesson();
+    // Whether the lesson's unsaved edits may go (asks: save, discard, cancel); true when none.
+    bool maybeSave();
     void addCurrentView();
     void updateCurrentView();
     void removeView(int index);
@@ -103,7 +105,8 @@ private:
     QWidget* notes_ = nullptr;        // the speaker's window
     QAction* notesKey_ = nullptr;     // N: the speaker's window shown or hidden
     bool notesWanted_ = false;
-    std::optional<std::array<double, 2>> stopAt_;  // the view's play range: playing stops at its end
+    std::optional<std::array<double, 2>> stopAt_;
+    QMetaObject::Connection pending_;  // the restore go() waits for  // the view's play range: playing stops at its end
     QLabel *notesNow_ = nullptr, *notesText_ = nullptr, *notesNext_ = nullptr;
 };
 

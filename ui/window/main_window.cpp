@@ -549,7 +549,7 @@ void MainWindow::rememberLayout() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* e) {
-    if (!files_->maybeSave()) {
+    if (!files_->maybeSave() || !lessons_->maybeSave()) {
         e->ignore();
         return;
     }

@@ -36,6 +36,7 @@ public:
     // Asks what to do with unsaved edits: true when the caller may go on.
     bool maybeSave();
     void setAskBeforeClosing(bool on) { askBeforeClosing_ = on; }
+    bool asksBeforeClosing() const { return askBeforeClosing_; }
 
     // File menu entries: Open, Examples, Recent files, Save, Save as.
     void addOpenEntries(QMenu* file);

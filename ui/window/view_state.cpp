@@ -53,7 +53,10 @@ QString absolute(const std::string& path) {
 
 }  // namespace
 
-ViewState::ViewState(MainWindow& window, const WindowParts& parts) : QObject(&window), window_(window), parts_(parts) {}
+ViewState::ViewState(MainWindow& window, const WindowParts& parts) : QObject(&window), window_(window), parts_(parts) {
+    // Another scene opened (File → Open, or a view's own): the embedded one is no longer on screen.
+    connect(&window.files(), &SceneFiles::opened, this, [this] { embedded_.clear(); });
+}
 
 WindowView ViewState::capture() const {
     MainWindow& w = window_;
@@ -81,7 +84,8 @@ WindowView ViewState::capture() const {
     v.playback.loop = playback.loops();
 
     const CameraView& camera = w.sceneView().camera();
-    v.camera = WindowView::Camera{camera.eye, camera.centre, camera.up, camera.fovy};
+    if (w.sceneView().visualScene() && (camera.eye - camera.centre).norm() > 0)  // none before a first run is shown
+        v.camera = WindowView::Camera{camera.eye, camera.centre, camera.up, camera.fovy};
     SceneView& view = w.sceneView();
     v.show.frames = view.showFrames();
     v.show.labels = view.showLabels();
@@ -91,7 +95,7 @@ WindowView ViewState::capture() const {
 
     const QString tab = kPlotTabs.value(parts_.plotTabs->currentIndex(), "energy");
     v.plots.tab = tab.toStdString();
-    v.plots.joint = w.torquePane().joint() + 1;
+    if (w.torquePane().joint() >= 0) v.plots.joint = w.torquePane().joint() + 1;
     if (tab == "tracking") v.plots.tracking = kTrackings[static_cast<int>(w.trackingPane().show())];
     if (tab == "dh-steps") {
         WindowView::DhSteps dh;
@@ -132,9 +136,13 @@ void ViewState::restore(const WindowView& view) {
     QStringList errors;
     if (view.sceneEmbedded) {
         const std::string text = view.sceneEmbedded->dump();
-        if (text != embedded_ && w.files().maybeSave()) {
-            if (w.files().openText(text, QString::fromStdString(view.name.empty() ? "view" : view.name), &errors, true)) embedded_ = text;
-            else problems_ << tr("The view's own scene could not be opened; it is shown on the scene open now:") << errors;
+        if (text != embedded_ || w.document().isModified()) {
+            if (!w.files().maybeSave())
+                problems_ << tr("The scene open now was kept (its changes are not saved): the view is shown on it.");
+            else if (w.files().openText(text, QString::fromStdString(view.name.empty() ? "view" : view.name), &errors, true))
+                embedded_ = text;
+            else
+                problems_ << tr("The view's own scene could not be opened; it is shown on the scene open now:") << errors;
         }
     } else if (!view.scenePath.empty() && absolute(view.scenePath) != absolute(w.document().path().toStdString())) {
         if (!w.files().maybeSave() || !w.files().openFile(absolute(view.scenePath), &errors, true))
@@ -145,10 +153,11 @@ void ViewState::restore(const WindowView& view) {
     finish(generation, 0);
 }
 
+// The scene's run and derivation are on screen, or nothing is left to come (a run that
+// failed shows no result: the view is then restored without it, and says so).
 bool ViewState::sceneShown() const {
     MainWindow& w = window_;
-    return w.result() && w.result()->request >= w.liveSimulation().latestRequest() && !w.document().validating() && !w.liveDerivation().busy() &&
-           w.derivation() && !w.exercise().judging();
+    return !w.document().validating() && !w.liveSimulation().busy() && !w.liveDerivation().busy() && !w.exercise().judging();
 }
 
 // Waits (through the event loop, never blocking it) for the scene's results, then lets the
@@ -176,6 +185,8 @@ void ViewState::applyShown() {
     MainWindow& w = window_;
     const WindowView& v = view_;
     const int n = w.document().validScene().dof();
+    if (!w.result() || w.result()->request < w.liveSimulation().latestRequest())
+        problems_ << tr("The scene's simulation failed (the status line says why): the view is shown without its run.");
 
     w.showDerivationView(QString::fromStdString(v.derivation.tab.value_or("typeset")));
     PlaybackBar& playback = w.playback();
