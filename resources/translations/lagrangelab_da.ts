@@ -1097,13 +1097,13 @@
 <context>
     <name>LessonMode</name>
     <message>
-        <location filename="../../ui/window/lesson_mode.cpp" line="+113" />
-        <location line="+144" />
+        <location filename="../../ui/window/lesson_mode.cpp" line="+114" />
+        <location line="+158" />
         <source>Lesson</source>
         <translation>Lektion</translation>
     </message>
     <message>
-        <location line="-143" />
+        <location line="-157" />
         <source>Add view</source>
         <translation>Tilføj visning</translation>
     </message>
@@ -1138,7 +1138,7 @@
         <translation>Flyt en visning</translation>
     </message>
     <message>
-        <location line="+39" />
+        <location line="+41" />
         <source>Undo in the lesson</source>
         <translation>Fortryd i lektionen</translation>
     </message>
@@ -1184,12 +1184,12 @@
     </message>
     <message>
         <location line="+1" />
-        <location line="+266" />
+        <location line="+289" />
         <source>Save lesson</source>
         <translation>Gem lektion</translation>
     </message>
     <message>
-        <location line="-265" />
+        <location line="-288" />
         <source>Save lesson as…</source>
         <translation>Gem lektion som…</translation>
     </message>
@@ -1219,7 +1219,17 @@
         <translation>Præsentér lektionen</translation>
     </message>
     <message>
-        <location line="+54" />
+        <location line="+41" />
+        <source>Unsaved lesson</source>
+        <translation>Lektion ikke gemt</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>The lesson has unsaved changes. Save them?</source>
+        <translation>Lektionen har ændringer, der ikke er gemt. Vil du gemme dem?</translation>
+    </message>
+    <message>
+        <location line="+25" />
         <source>View %1</source>
         <translation>Visning %1</translation>
     </message>
@@ -1254,7 +1264,7 @@
         <translation>Flyt visning %1</translation>
     </message>
     <message>
-        <location line="+106" />
+        <location line="+116" />
         <source>unsaved</source>
         <translation>ikke gemt</translation>
     </message>
@@ -1292,7 +1302,7 @@
         <translation>Sidste visning</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+6" />
         <source>Open lesson</source>
         <translation>Åbn lektion</translation>
     </message>
@@ -2341,7 +2351,12 @@
 <context>
     <name>ViewState</name>
     <message>
-        <location filename="../../ui/window/view_state.cpp" line="+137" />
+        <location filename="../../ui/window/view_state.cpp" line="+141" />
+        <source>The scene open now was kept (its changes are not saved): the view is shown on it.</source>
+        <translation>Scenen, der er åben nu, blev beholdt (dens ændringer er ikke gemt): visningen vises på den.</translation>
+    </message>
+    <message>
+        <location line="+4" />
         <source>The view's own scene could not be opened; it is shown on the scene open now:</source>
         <translation>Visningens egen scene kunne ikke åbnes; den vises på den scene, der er åben nu:</translation>
     </message>
@@ -2351,12 +2366,17 @@
         <translation>Scenen %1 kunne ikke åbnes; visningen vises på den scene, der er åben nu:</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+26" />
         <source>The view is shown as far as it could be</source>
         <translation>Visningen er vist, så langt det var muligt</translation>
     </message>
     <message>
-        <location line="+21" />
+        <location line="+14" />
+        <source>The scene's simulation failed (the status line says why): the view is shown without its run.</source>
+        <translation>Scenens simulering mislykkedes (statuslinjen siger hvorfor): visningen vises uden dens kørsel.</translation>
+    </message>
+    <message>
+        <location line="+9" />
         <source>The time %1 s is after the run's end (%2 s): the end is shown.</source>
         <translation>Tiden %1 s ligger efter kørslens slutning (%2 s): slutningen vises.</translation>
     </message>
