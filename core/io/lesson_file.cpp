@@ -42,6 +42,7 @@ Lesson loadLesson(const std::string& path) {
         throw InputError(path + ": format", format ? expectedGot(alternatives({kLessonFormat}), *format)
                                                    : message(MessageId::RequiredFieldMissing, alternatives({kLessonFormat})));
     Lesson lesson;
+    lesson.folder = folder;
     for (const auto& [key, value] : root.items())
         if (key != "format" && key != "title" && key != "views") lesson.kept[key] = value;
     if (root.contains("title")) {
@@ -86,6 +87,19 @@ Lesson loadLesson(const std::string& path) {
     return lesson;
 }
 
+namespace {
+
+// `spec` (PATH or PATH#NAME, relative to `from`) relative to `to`; a resource or absolute path stays.
+std::string rebased(const std::string& spec, const std::string& from, const std::string& to) {
+    const auto hash = spec.rfind('#');
+    const std::string file = hash == std::string::npos ? spec : spec.substr(0, hash);
+    const std::string name = hash == std::string::npos ? std::string() : spec.substr(hash);
+    if (file.empty() || file.rfind(":/", 0) == 0 || fs::path(file).is_absolute()) return spec;
+    return relativePath(resolvedPath(file, from), to) + name;
+}
+
+}  // namespace
+
 void saveLesson(const Lesson& lesson, const std::string& path, bool embed) {
     const std::string folder = fs::path(path).parent_path().string();
     Json root = Json::object();
@@ -93,12 +107,16 @@ void saveLesson(const Lesson& lesson, const std::string& path, bool embed) {
     if (!lesson.title.empty()) root["title"] = lesson.title;
     Json views = Json::array();
     for (const LessonView& lv : lesson.views) {
-        if (!lv.problems.empty()) {  // as it was written: nothing of it is lost
-            views.push_back(lv.written);
+        if (!lv.problems.empty()) {  // as it was written (its paths from here): nothing of it is lost
+            Json written = lv.written;
+            for (const char* key : {"include", "scene"})
+                if (written.is_object() && written.contains(key) && written[key].is_string())
+                    written[key] = rebased(written[key].get<std::string>(), lesson.folder, folder);
+            views.push_back(written);
             continue;
         }
         if (!lv.include.empty() && !embed) {
-            Json entry{{"include", lv.include}};
+            Json entry{{"include", rebased(lv.include, lesson.folder, folder)}};
             if (!lv.view.name.empty()) entry["name"] = lv.view.name;
             if (!lv.view.note.empty()) entry["note"] = lv.view.note;
             views.push_back(entry);

@@ -28,6 +28,7 @@ struct LessonView {
 
 struct Lesson {
     std::string title;
+    std::string folder;  // the folder its file was read from: includes are relative to it
     std::vector<LessonView> views;
     scene_json::Json kept = scene_json::Json::object();  // top-level fields unknown to this version
 };
@@ -36,7 +37,8 @@ struct Lesson {
 // lesson (unreadable, not JSON, wrong format, no "views" array); a broken view does not throw.
 Lesson loadLesson(const std::string& path);
 // Writes the lesson to `path` (atomically, PATH.bak kept): inline views with their scene
-// paths relative to the file's folder, includes as written. `embed`: every view inline
+// paths relative to the file's folder, includes (and the paths in views kept as written)
+// made relative to it from the folder the lesson was read from. `embed`: every view inline
 // with its scene inside, so the file is all a student needs.
 void saveLesson(const Lesson& lesson, const std::string& path, bool embed = false);
 

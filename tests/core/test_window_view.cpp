@@ -364,6 +364,16 @@ private slots:
         QCOMPARE(again.kept["extra"], Json(1));
         expectSame(again.views[1].view, lesson.views[1].view);
 
+        // Saved into another folder: the includes (and a broken view's) point at the same files.
+        std::filesystem::create_directory(folder + "/sub");
+        saveLesson(lesson, folder + "/sub/moved.json");
+        const Lesson moved = loadLesson(folder + "/sub/moved.json");
+        QCOMPARE(moved.views[1].include, std::string("../v.json"));
+        QVERIFY(moved.views[1].problems.empty());
+        expectSame(moved.views[1].view, lesson.views[1].view);
+        QCOMPARE(moved.views[2].written["include"], Json("../missing.json"));
+        QVERIFY(std::filesystem::equivalent(moved.views[0].view.scenePath, lesson.views[0].view.scenePath));
+
         // Embedded: every good view holds its scene, and opens with it.
         const std::string embedded = folder + "/embedded.json";
         saveLesson(lesson, embedded, true);

@@ -142,7 +142,13 @@ LessonMode::LessonMode(MainWindow& window, const WindowParts& parts) : QObject(&
     // A drag changed the order: the lesson takes the list's.
     connect(list_->model(), &QAbstractItemModel::rowsMoved, this, [this] {
         std::vector<LessonView> views;
-        for (int i = 0; i < list_->count(); ++i) views.push_back(lesson_.views[std::size_t(list_->item(i)->data(Qt::UserRole).toInt())]);
+        int current = current_;
+        for (int i = 0; i < list_->count(); ++i) {
+            const int was = list_->item(i)->data(Qt::UserRole).toInt();
+            views.push_back(lesson_.views[std::size_t(was)]);
+            if (was == current_) current = i;  // the view shown keeps being the one Page Down starts from
+        }
+        current_ = current;
         QTimer::singleShot(0, this, [this, views] {  // not inside the model's own signal
             edit(tr("Move a view"), [views](Lesson& l) { l.views = views; });
         });
